@@ -1,0 +1,50 @@
+"""Command line: ``fuzzynav <command> ...``.
+
+Each sub-command lives in its own module under :mod:`fuzzynav.cli` and exposes
+``register(subparsers)``, which adds its parser and sets ``func(args) -> int``. Bad input
+raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the exit status is 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from importlib import import_module
+
+from fuzzynav import __version__
+from fuzzynav.errors import InputError
+
+# Sub-command modules, in the order ``fuzzynav --help`` lists them.
+COMMAND_MODULES: list[str] = []
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="fuzzynav",
+        description="Neuro-fuzzy navigation of a simulated tricycle robot (Cherroun, 2014).",
+    )
+    parser.add_argument("--version", action="version", version=f"fuzzynav {__version__}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for module_name in COMMAND_MODULES:
+        import_module(f"fuzzynav.cli.{module_name}").register(subparsers)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args) or 0)
+    except InputError as error:
+        print(f"fuzzynav {args.command}: error: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

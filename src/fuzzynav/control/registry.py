@@ -1,0 +1,37 @@
+"""Controllers by name: ``fuzzynav run SCENARIO --controller NAME`` looks names up here.
+
+Each entry maps a command-line name to ``"module:factory"``; the module is imported only when
+the controller is made, so listing names stays cheap. A factory takes keyword options and
+returns a :class:`~fuzzynav.control.base.Controller`.
+"""
+
+from __future__ import annotations
+
+import difflib
+from importlib import import_module
+
+from fuzzynav.control.base import Controller
+from fuzzynav.errors import InputError
+
+# name -> ("module:factory", one-line description)
+CONTROLLERS: dict[str, tuple[str, str]] = {}
+
+
+def available() -> dict[str, str]:
+    """Names of the built-in controllers with their one-line descriptions."""
+    return {name: description for name, (_, description) in sorted(CONTROLLERS.items())}
+
+
+def make_controller(name: str, **options) -> Controller:
+    """Build the controller registered as ``name`` (an :class:`InputError` names close matches)."""
+    if name not in CONTROLLERS:
+        close = difflib.get_close_matches(name, CONTROLLERS, n=3)
+        hint = f" (did you mean {', '.join(close)}?)" if close else ""
+        raise InputError(
+            f"unknown controller {name!r}{hint}; known: {', '.join(sorted(CONTROLLERS))}",
+            field="--controller",
+        )
+    target, _ = CONTROLLERS[name]
+    module_name, factory_name = target.split(":")
+    factory = getattr(import_module(module_name), factory_name)
+    return factory(**options)

@@ -1,0 +1,83 @@
+"""Trained-model files: every model file says what it is, and this module loads it safely.
+
+A model file is JSON (``.json``) or NumPy ``.npz`` loaded with ``allow_pickle=False``; both
+carry a ``kind`` field. ``fuzzynav run SCENARIO --model FILE`` calls :func:`load_controller`.
+:func:`save_json_atomic` / :func:`save_npz_atomic` write a temporary file and rename it, so a
+crash while saving never corrupts the previous model.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from importlib import import_module
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+
+# kind -> "module:loader"; a loader takes (the parsed document, the path) and returns a Controller.
+MODEL_LOADERS: dict[str, str] = {}
+
+
+def _atomic_write(path: Path, write) -> None:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            write(handle)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def save_json_atomic(path, document: dict) -> None:
+    """Write ``document`` as JSON to ``path`` atomically (temporary file, then rename)."""
+    data = json.dumps(document, indent=2, sort_keys=False).encode()
+    _atomic_write(Path(path), lambda handle: handle.write(data))
+
+
+def save_npz_atomic(path, **arrays) -> None:
+    """Write arrays as ``.npz`` atomically; strings are stored as 0-d unicode arrays."""
+    _atomic_write(Path(path), lambda handle: np.savez(handle, **arrays))
+
+
+def read_model(path) -> dict:
+    """Read a model file into a dict (JSON object, or the arrays of an ``.npz``) with its ``kind``."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("no such model file", source=str(path))
+    try:
+        if path.suffix == ".npz":
+            with np.load(path, allow_pickle=False) as data:
+                document = {key: data[key] for key in data.files}
+            if "kind" in document:
+                document["kind"] = str(document["kind"])
+        else:
+            document = json.loads(path.read_text())
+    except (OSError, ValueError) as error:
+        raise InputError(f"cannot read model file ({error})", source=str(path)) from None
+    if not isinstance(document, dict) or "kind" not in document:
+        raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
+    return document
+
+
+def load_controller(path):
+    """Build the controller stored in a model file, whatever its kind."""
+    document = read_model(path)
+    kind = document["kind"]
+    if kind not in MODEL_LOADERS:
+        raise InputError(
+            f"unknown model kind {kind!r}; known: {', '.join(sorted(MODEL_LOADERS)) or 'none'}",
+            source=str(path),
+            field="kind",
+        )
+    module_name, loader_name = MODEL_LOADERS[kind].split(":")
+    return getattr(import_module(module_name), loader_name)(document, Path(path))

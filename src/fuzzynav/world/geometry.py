@@ -1,0 +1,11 @@
+"""Small geometric helpers shared by the robot, world and control layers."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def wrap_angle(angle):
+    """Wrap an angle (scalar or array, radians) to (−π, π] (SPEC §0)."""
+    wrapped = np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
+    return float(wrapped) if np.ndim(wrapped) == 0 else wrapped
