@@ -15,7 +15,10 @@ from fuzzynav import __version__
 from fuzzynav.errors import InputError
 
 # Sub-command modules, in the order ``fuzzynav --help`` lists them.
-COMMAND_MODULES: list[str] = []
+COMMAND_MODULES: list[str] = [
+    "train",
+    "reproduce",
+]
 
 
 def build_parser() -> argparse.ArgumentParser:

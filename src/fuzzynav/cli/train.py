@@ -1,0 +1,52 @@
+"""``fuzzynav train TASK [--episodes N] [--seed S] [--out FILE] [--resume]`` — train a controller."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from fuzzynav import training
+from fuzzynav.errors import InputError
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "train",
+        help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
+        description="Train a learning controller and write its model file (atomically). Tasks: "
+        + ", ".join(f"{name} ({text})" for name, text in training.available().items()),
+    )
+    parser.add_argument("task", metavar="TASK", help="training task name")
+    parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
+    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    parser.add_argument("--out", type=Path, help="model file to write (default TASK.json)")
+    parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
+    parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
+    parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
+    parser.set_defaults(func=run)
+
+
+def run(args) -> int:
+    train = training.trainer(args.task)
+    if args.episodes is not None and args.episodes <= 0:
+        raise InputError("must be a positive integer", field="--episodes")
+    if args.checkpoint_every is not None and args.checkpoint_every <= 0:
+        raise InputError("must be a positive integer", field="--checkpoint-every")
+    request = training.TrainRequest(
+        out=args.out or Path(f"{args.task}.json"),
+        episodes=args.episodes,
+        seed=args.seed,
+        resume=args.resume,
+        checkpoint_every=args.checkpoint_every,
+        curve=args.curve,
+        progress=not (args.quiet or args.json),
+    )
+    result = train(request)
+    if args.json:
+        print(json.dumps(result, default=str))
+    else:
+        for key, value in result.items():
+            print(f"{key}: {value}")
+    return 0

@@ -1,0 +1,50 @@
+"""Training tasks by name: ``fuzzynav train TASK`` looks them up here.
+
+Each entry maps a task name (``anfis-tracker``, ``fql-goal``…) to ``("module:function",
+description)``. The function takes a :class:`TrainRequest` and returns a dict of results
+(at least ``model`` — the path written — and whatever it measured). Models are written
+atomically with :func:`fuzzynav.models.save_json_atomic` / ``save_npz_atomic`` and carry a ``kind``
+that :func:`fuzzynav.models.load_controller` understands.
+"""
+
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+from importlib import import_module
+from pathlib import Path
+
+from fuzzynav.errors import InputError
+
+TRAINERS: dict[str, tuple[str, str]] = {}
+
+
+@dataclass(frozen=True)
+class TrainRequest:
+    """What the user asked of one training run (defaults are each task's own when ``None``)."""
+
+    out: Path
+    episodes: int | None = None
+    seed: int = 0
+    resume: bool = False
+    checkpoint_every: int | None = None
+    curve: Path | None = None  # learning-curve plot to write, if any
+    progress: bool = True
+
+
+def available() -> dict[str, str]:
+    """Task names with their descriptions."""
+    return {key: description for key, (_, description) in sorted(TRAINERS.items())}
+
+
+def trainer(task: str):
+    """The function that trains ``task``."""
+    if task not in TRAINERS:
+        close = difflib.get_close_matches(task, TRAINERS, n=3)
+        hint = f" (did you mean {', '.join(close)}?)" if close else ""
+        raise InputError(
+            f"unknown training task {task!r}{hint}; known: {', '.join(sorted(TRAINERS)) or 'none'}",
+            field="TASK",
+        )
+    module_name, function_name = TRAINERS[task][0].split(":")
+    return getattr(import_module(module_name), function_name)
