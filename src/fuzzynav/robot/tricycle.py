@@ -1,0 +1,91 @@
+"""Tricycle (car-like) robot kinematics, SPEC §1 / thesis §IV.4, eq IV.1–IV.2.
+
+Two rear driving wheels on one motor, one steered front wheel. Controls: steering α (rad,
+α > 0 turns left) and linear speed V (m/s). State: pose (x, y, θ), θ CCW from +x.
+
+The thesis gives neither Δt, the wheelbase l nor the width D; :class:`TricycleParams` holds the
+defaults fixed in docs/ARCHITECTURE.md (Δt = 0.1 s, l = 0.5 m, D = 0.5 m, footprint disc of
+radius 0.3 m, |α| ≤ π/4, 0 ≤ V ≤ 4 m/s), under which the figures of chapter IV are plausible
+(episodes of ~25 s over 20 m at up to ~4 m/s).
+
+Everything is vectorised over a batch of robots: poses ``(N, 3)``, commands ``(N,)``; a single
+pose ``(3,)`` with scalar commands works too.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+from fuzzynav.world.geometry import wrap_angle
+
+INTEGRATORS = ("euler", "arc")
+
+
+@dataclass(frozen=True)
+class TricycleParams:
+    """Physical parameters and limits of the robot (defaults: docs/ARCHITECTURE.md).
+
+    ``integrator`` is ``"euler"`` (eq IV.2, the thesis' discrete model) or ``"arc"`` (exact
+    integration of eq IV.1 for α, V constant over the step: the robot moves on a circular arc).
+    """
+
+    dt: float = 0.1  # integration step Δt (s)
+    wheelbase: float = 0.5  # l: distance rear axle – front wheel (m)
+    width: float = 0.5  # D: robot width (m), used for drawing
+    radius: float = 0.3  # collision footprint: disc of this radius centred on (x, y) (m)
+    max_steering: float = np.pi / 4  # |α| ≤ max_steering (rad), Fig V.6 range of the trackers
+    min_speed: float = 0.0  # V ≥ min_speed (m/s)
+    max_speed: float = 4.0  # V ≤ max_speed (m/s), the TG singleton of Table IV.1
+    integrator: str = "euler"
+
+    def __post_init__(self):
+        for name in ("dt", "wheelbase", "width", "radius", "max_steering", "max_speed"):
+            value = getattr(self, name)
+            if not np.isfinite(value) or value <= 0:
+                raise InputError(f"must be a finite number > 0, got {value!r}", field=name)
+        if not np.isfinite(self.min_speed) or self.min_speed > self.max_speed:
+            raise InputError("must be finite and ≤ max_speed", field="min_speed")
+        if self.integrator not in INTEGRATORS:
+            raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
+
+    def clip(self, steering, speed):
+        """Clip commands to the limits: |α| ≤ max_steering, min_speed ≤ V ≤ max_speed."""
+        steering = np.clip(steering, -self.max_steering, self.max_steering)
+        speed = np.clip(speed, self.min_speed, self.max_speed)
+        return steering, speed
+
+
+DEFAULT_PARAMS = TricycleParams()
+
+
+def step(pose, steering, speed, params: TricycleParams = DEFAULT_PARAMS, integrator: str | None = None):
+    """Advance poses by one step Δt under (α, V); commands are used as given (clip first).
+
+    ``pose`` is ``(3,)`` or ``(N, 3)``; ``steering`` and ``speed`` are scalars or ``(N,)``.
+    ``"euler"`` is eq IV.2: x += Δt V cos θ, y += Δt V sin θ, θ += Δt V tan(α) / l.
+    ``"arc"`` integrates eq IV.1 exactly: with ω = V tan(α) / l and θ' = θ + ω Δt,
+    x += V (sin θ' − sin θ) / ω, y −= V (cos θ' − cos θ) / ω (the straight line when ω → 0).
+    Returns the new poses (same shape), θ wrapped to (−π, π].
+    """
+    pose = np.asarray(pose, dtype=float)
+    x, y, theta = pose[..., 0], pose[..., 1], pose[..., 2]
+    dt = params.dt
+    omega = speed * np.tan(steering) / params.wheelbase
+    new_theta = theta + omega * dt
+    method = integrator or params.integrator
+    if method == "euler":
+        dx = dt * speed * np.cos(theta)
+        dy = dt * speed * np.sin(theta)
+    elif method == "arc":
+        # sin/cos differences written with half-angles: exact, and well conditioned as ω → 0.
+        half = 0.5 * omega * dt
+        chord = dt * speed * np.sinc(half / np.pi)  # = 2 V sin(half) / ω
+        mid = theta + half
+        dx = chord * np.cos(mid)
+        dy = chord * np.sin(mid)
+    else:
+        raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
+    return np.stack([x + dx, y + dy, wrap_angle(new_theta)], axis=-1)

@@ -1,0 +1,77 @@
+"""Numbers of one episode (issue 3, `fuzzynav run --json`): a flat JSON-safe dict.
+
+Always: ``scenario``, ``controller``, ``task``, ``outcome``, ``reached_goal`` (goal reached, path
+completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``,
+``path_length_m`` (length of the driven polyline), ``min_clearance_m`` (smallest gap between
+the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
+``mean_speed_mps``, ``final_distance_m`` (to the goal / current waypoint / target),
+``steering_effort_rad`` (mean |α|) and ``steering_variation_rad`` (Σ |Δα|).
+Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
+``max_cross_track_m`` (distance from each visited position to the path polyline, SPEC §4).
+Target tasks add ``captured``, ``capture_time_s`` (None when not captured) and
+``final_error_m`` (robot–target distance at the end).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.sim.trace import Trace
+from fuzzynav.world import collision
+from fuzzynav.world.scenario import Scenario
+
+
+def _number(value) -> float | None:
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def cross_track(positions, waypoints) -> np.ndarray:
+    """Distance ``(T,)`` from each position ``(T, 2)`` to the polyline through ``waypoints``."""
+    waypoints = np.asarray(waypoints, dtype=float)
+    if len(waypoints) == 1:
+        return np.hypot(*(positions - waypoints[0]).T)
+    distance, _ = collision.segment_distance(np.asarray(positions, dtype=float), waypoints[:-1], waypoints[1:])
+    return distance.min(axis=1)
+
+
+def metrics(trace: Trace, scenario: Scenario) -> dict:
+    """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
+    xy = trace.pose[:, :2]
+    steps = np.diff(xy, axis=0)
+    clearance = scenario.world.clearance(xy) - trace.robot_radius
+    final_distance = np.hypot(*(trace.target[-1] - xy[-1]))
+    result = {
+        "scenario": trace.scenario,
+        "controller": trace.controller,
+        "task": trace.task,
+        "outcome": trace.outcome,
+        "reached_goal": trace.reached,
+        "collision": trace.collision,
+        "timeout": trace.outcome == "timeout",
+        "time_s": round(trace.time, 10),
+        "steps": trace.steps,
+        "path_length_m": float(np.hypot(steps[:, 0], steps[:, 1]).sum()),
+        "min_clearance_m": float(clearance.min()),
+        "mean_speed_mps": float(trace.speed.mean()) if trace.steps else 0.0,
+        "final_distance_m": float(final_distance),
+        "steering_effort_rad": float(np.abs(trace.steering).mean()) if trace.steps else 0.0,
+        "steering_variation_rad": float(np.abs(np.diff(trace.steering)).sum()) if trace.steps > 1 else 0.0,
+    }
+    if trace.task == "path":
+        errors = cross_track(xy, scenario.path.waypoints)
+        result.update({
+            "completed": trace.reached,
+            "waypoints_reached": int(trace.waypoint_index[-1]) + (1 if trace.reached else 0),
+            "mean_cross_track_m": float(errors.mean()),
+            "max_cross_track_m": float(errors.max()),
+        })
+    elif trace.task == "target":
+        result.update({
+            "captured": trace.reached,
+            "capture_time_s": round(trace.time, 10) if trace.reached else None,
+            "final_error_m": float(final_distance),
+        })
+    return {key: _number(value) if isinstance(value, float) else value for key, value in result.items()}

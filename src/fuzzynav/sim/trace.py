@@ -1,0 +1,59 @@
+"""The record of one episode: arrays over time (DESIGN.md, data flow of one run).
+
+Row k of the *state* arrays (``t``, ``pose``, ``ranges``, ``target``, ``waypoint_index``) is the
+state at t_k = k Δt, k = 0 … K; row k of the *command* arrays (``steering``, ``speed``,
+``behaviour``) is the clipped command applied from t_k to t_{k+1}, k = 0 … K − 1. So states
+have one row more than commands, and ``steps`` = K.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+OUTCOMES = ("reached", "collision", "timeout")
+
+
+@dataclass(frozen=True)
+class Trace:
+    """One robot's episode. ``outcome`` is ``"reached"`` (goal reached, path completed or target
+    captured), ``"collision"`` (footprint touched an obstacle or the boundary) or ``"timeout"``."""
+
+    scenario: str
+    controller: str
+    task: str
+    dt: float
+    t: np.ndarray  # (K+1,)
+    pose: np.ndarray  # (K+1, 3)
+    ranges: np.ndarray  # (K+1, S) readings sensed at each state
+    target: np.ndarray  # (K+1, 2) point aimed at (goal, current waypoint, target position)
+    waypoint_index: np.ndarray  # (K+1,) int (0 outside path tasks)
+    steering: np.ndarray  # (K,) rad
+    speed: np.ndarray  # (K,) m/s
+    behaviour: np.ndarray  # (K,) str: active behaviour label (Fig IV.15 A…H)
+    sensor_angles: np.ndarray  # (S,)
+    max_range: float
+    outcome: str
+    robot_radius: float
+
+    @property
+    def steps(self) -> int:
+        return int(len(self.steering))
+
+    @property
+    def time(self) -> float:
+        return float(self.t[-1])
+
+    @property
+    def reached(self) -> bool:
+        return self.outcome == "reached"
+
+    @property
+    def collision(self) -> bool:
+        return self.outcome == "collision"
+
+    def behaviour_changes(self) -> list[int]:
+        """Command indices k where the active behaviour differs from the one at k − 1."""
+        labels = self.behaviour
+        return [k for k in range(1, len(labels)) if labels[k] != labels[k - 1]]

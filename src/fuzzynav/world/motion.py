@@ -1,0 +1,80 @@
+"""Motions of a moving target, SPEC §4.4 / thesis §V.5 (Figs V.29–V.34).
+
+The target starts at its scenario position p0 and moves along a straight line, a circle or a
+sinusoid; its position (and velocity) are known at all times. Every motion is a closed-form
+function of time, vectorised over ``t``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+# scenario-file parameters of each motion type: name -> (default or None when required)
+MOTION_PARAMS: dict[str, dict[str, object]] = {
+    "static": {},
+    "line": {"velocity": None},  # [vx, vy] m/s
+    "circle": {"center": None, "speed": None},  # centre of the circle, linear speed (m/s, > 0 CCW)
+    "sinusoid": {"velocity": None, "amplitude": None, "period": None},  # carrier [vx, vy], m, s
+}
+
+
+@dataclass(frozen=True)
+class TargetMotion:
+    """Trajectory p(t) of the target from its start p0 (``type`` is a key of MOTION_PARAMS).
+
+    - ``static``: p(t) = p0.
+    - ``line``: p(t) = p0 + v t.
+    - ``circle``: around ``center`` at linear ``speed`` (> 0 counter-clockwise); the radius is
+      |p0 − center|.
+    - ``sinusoid``: p(t) = p0 + v t + n A sin(2π t / T), n the unit left normal of v.
+    """
+
+    type: str = "static"
+    start: np.ndarray = None
+    velocity: np.ndarray | None = None
+    center: np.ndarray | None = None
+    speed: float = 0.0
+    amplitude: float = 0.0
+    period: float = 1.0
+
+    def __post_init__(self):
+        object.__setattr__(self, "start", np.asarray(self.start, dtype=float).reshape(2))
+
+    def _normal(self):
+        v = np.asarray(self.velocity, dtype=float)
+        norm = np.hypot(*v)
+        return np.array([-v[1], v[0]]) / norm if norm > 0 else np.zeros(2)
+
+    def position(self, t):
+        """Target position at time(s) ``t``: ``(2,)`` for a scalar, ``(T, 2)`` for an array."""
+        t = np.asarray(t, dtype=float)
+        tt = t[..., None]
+        if self.type == "static":
+            return np.broadcast_to(self.start, tt.shape[:-1] + (2,)).copy()
+        if self.type == "line":
+            return self.start + tt * np.asarray(self.velocity)
+        if self.type == "circle":
+            rel = self.start - self.center
+            radius = np.hypot(*rel)
+            phase = np.arctan2(rel[1], rel[0]) + self.speed / radius * t
+            return self.center + radius * np.stack([np.cos(phase), np.sin(phase)], axis=-1)
+        omega = 2.0 * np.pi / self.period
+        return self.start + tt * np.asarray(self.velocity) + self.amplitude * np.sin(omega * tt) * self._normal()
+
+    def velocity_at(self, t):
+        """Target velocity dp/dt at time(s) ``t`` (same shapes as :meth:`position`)."""
+        t = np.asarray(t, dtype=float)
+        tt = t[..., None]
+        if self.type == "static":
+            return np.zeros(tt.shape[:-1] + (2,))
+        if self.type == "line":
+            return np.broadcast_to(np.asarray(self.velocity, dtype=float), tt.shape[:-1] + (2,)).copy()
+        if self.type == "circle":
+            rel = self.start - self.center
+            radius = np.hypot(*rel)
+            phase = np.arctan2(rel[1], rel[0]) + self.speed / radius * t
+            return self.speed * np.stack([-np.sin(phase), np.cos(phase)], axis=-1)
+        omega = 2.0 * np.pi / self.period
+        return np.asarray(self.velocity) + self.amplitude * omega * np.cos(omega * tt) * self._normal()

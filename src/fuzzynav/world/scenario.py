@@ -1,0 +1,349 @@
+"""Scenario files: world, robot start and task, validated (issue 3; schema in docs/ARCHITECTURE.md).
+
+```yaml
+name: fig-IV-15a                      # optional (default: the file name)
+description: one line for `fuzzynav scenarios`   # optional
+world: {width: 20.0, height: 20.0}    # optional, default 20 x 20; origin bottom-left
+robot: {x: 1.0, y: 1.0, theta: 0.0}   # metres, radians CCW from +x (theta optional, 0)
+goal: {x: 18.0, y: 18.0, tolerance: 0.3}
+obstacles:
+  - circle: {center: [5, 5], radius: 1.0}
+  - polygon: {points: [[8, 8], [10, 8], [10, 10]]}
+  - wall: {start: [2, 12], end: [10, 12], thickness: 0.2}
+  - ellipse: {center: [14, 6], radii: [2.0, 1.0], angle: 0.3}
+max_time: 120                         # seconds, optional
+```
+Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` with optional
+``path_tolerance`` (the waypoint tolerance zone, SPEC §4, default 0.5 m) and ``speed`` (the
+constant tracking speed, default 1 m/s), or ``target: {x, y, tolerance, motion: {type: static |
+line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.world.motion`).
+
+Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
+``obstacles[2].circle.radius``) and what is wrong; unknown keys get the closest known key as a
+hint. YAML is read with ``yaml.safe_load`` semantics (plus a duplicate-key check).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from fuzzynav.errors import InputError
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
+from fuzzynav.world.shapes import SHAPES, Circle, Ellipse, Polygon, Wall, polygon_self_intersects
+from fuzzynav.world.world import World
+
+BUILTIN_DIR = Path(__file__).with_name("scenarios")
+DEFAULT_MAX_TIME = 120.0
+DEFAULT_GOAL_TOLERANCE = 0.3
+DEFAULT_PATH_TOLERANCE = 0.5
+DEFAULT_PATH_SPEED = 1.0
+
+TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "speed",
+            "target", "obstacles", "max_time")
+SHAPE_KEYS = {
+    "circle": {"center": None, "radius": None},
+    "polygon": {"points": None},
+    "wall": {"start": None, "end": None, "thickness": 0.2},
+    "ellipse": {"center": None, "radii": None, "angle": 0.0},
+}
+
+
+@dataclass(frozen=True)
+class Goal:
+    """Goal-seeking task (chapter IV): reach ``position`` within ``tolerance`` (m)."""
+
+    position: np.ndarray
+    tolerance: float = DEFAULT_GOAL_TOLERANCE
+
+
+@dataclass(frozen=True)
+class PathTask:
+    """Path tracking (SPEC §4): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s)."""
+
+    waypoints: np.ndarray
+    tolerance: float = DEFAULT_PATH_TOLERANCE
+    speed: float = DEFAULT_PATH_SPEED
+
+
+@dataclass(frozen=True)
+class TargetTask:
+    """Moving-target pursuit (SPEC §4.4): captured when within ``tolerance`` (m) of the target."""
+
+    motion: TargetMotion
+    tolerance: float = DEFAULT_GOAL_TOLERANCE
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """A validated scenario: the world, the robot's start pose ``(3,)`` and exactly one task."""
+
+    name: str
+    world: World
+    start: np.ndarray
+    goal: Goal | None = None
+    path: PathTask | None = None
+    target: TargetTask | None = None
+    max_time: float = DEFAULT_MAX_TIME
+    description: str = ""
+    source: str | None = None
+
+    @property
+    def task(self) -> str:
+        """``"goal"``, ``"path"`` or ``"target"``."""
+        return "goal" if self.goal is not None else "path" if self.path is not None else "target"
+
+    def to_dict(self) -> dict:
+        """The scenario-file form (round-trips through :func:`scenario_from_dict`)."""
+        doc: dict = {"name": self.name}
+        if self.description:
+            doc["description"] = self.description
+        doc["world"] = {"width": self.world.width, "height": self.world.height}
+        doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
+        if self.goal is not None:
+            doc["goal"] = {"x": float(self.goal.position[0]), "y": float(self.goal.position[1]),
+                           "tolerance": self.goal.tolerance}
+        if self.path is not None:
+            doc["path"] = self.path.waypoints.tolist()
+            doc["path_tolerance"] = self.path.tolerance
+            doc["speed"] = self.path.speed
+        if self.target is not None:
+            m = self.target.motion
+            motion = {"type": m.type}
+            for key in MOTION_PARAMS[m.type]:
+                value = getattr(m, key)
+                motion[key] = value.tolist() if isinstance(value, np.ndarray) else value
+            doc["target"] = {"x": float(m.start[0]), "y": float(m.start[1]),
+                             "tolerance": self.target.tolerance, "motion": motion}
+        doc["obstacles"] = [shape.to_dict() for shape in self.world.obstacles]
+        doc["max_time"] = self.max_time
+        return doc
+
+
+class _Checker:
+    """Type and value checks that raise InputError naming the source and the field."""
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, field: str, problem: str):
+        raise InputError(problem, source=self.source, field=field)
+
+    def mapping(self, value, field: str, known, required=()) -> dict:
+        if not isinstance(value, dict):
+            self.fail(field, f"must be a mapping, got {type(value).__name__}")
+        for key in value:
+            if not isinstance(key, str) or key not in known:
+                close = difflib.get_close_matches(str(key), list(known), n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else ""
+                self.fail(f"{field}.{key}" if field else str(key),
+                          f"unknown key {key!r}{hint}; known: {', '.join(known)}")
+        for key in required:
+            if key not in value:
+                self.fail(f"{field}.{key}" if field else key, "missing")
+        return value
+
+    def number(self, value, field: str, positive: bool = False) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            self.fail(field, f"must be a number, got {type(value).__name__} {value!r}")
+        if not math.isfinite(value):
+            self.fail(field, f"must be finite, got {value!r}")
+        if positive and value <= 0:
+            self.fail(field, f"must be > 0, got {value!r}")
+        return float(value)
+
+    def point(self, value, field: str, positive: bool = False) -> np.ndarray:
+        if not isinstance(value, (list, tuple)) or len(value) != 2:
+            self.fail(field, f"must be a list of two numbers [x, y], got {value!r}")
+        return np.array([self.number(v, f"{field}[{i}]", positive) for i, v in enumerate(value)])
+
+    def points(self, value, field: str, minimum: int) -> np.ndarray:
+        if not isinstance(value, (list, tuple)):
+            self.fail(field, f"must be a list of [x, y] points, got {type(value).__name__}")
+        if len(value) < minimum:
+            self.fail(field, f"needs at least {minimum} points, got {len(value)}")
+        return np.array([self.point(v, f"{field}[{i}]") for i, v in enumerate(value)])
+
+    def text(self, value, field: str) -> str:
+        if not isinstance(value, str):
+            self.fail(field, f"must be a string, got {type(value).__name__}")
+        return value
+
+
+def _shape(check: _Checker, entry, field: str):
+    if not isinstance(entry, dict) or len(entry) != 1:
+        check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPE_KEYS))
+    (kind, params), = entry.items()
+    check.mapping(entry, field, SHAPE_KEYS)
+    keys = SHAPE_KEYS[kind]
+    f = f"{field}.{kind}"
+    params = check.mapping(params, f, keys, required=[k for k, v in keys.items() if v is None])
+    get = {k: params.get(k, default) for k, default in keys.items()}
+    if kind == "circle":
+        return Circle(check.point(get["center"], f"{f}.center"), check.number(get["radius"], f"{f}.radius", True))
+    if kind == "ellipse":
+        return Ellipse(check.point(get["center"], f"{f}.center"), check.point(get["radii"], f"{f}.radii", True),
+                       check.number(get["angle"], f"{f}.angle"))
+    if kind == "wall":
+        start, end = check.point(get["start"], f"{f}.start"), check.point(get["end"], f"{f}.end")
+        if np.array_equal(start, end):
+            check.fail(f"{f}.end", "must differ from start (zero-length wall)")
+        return Wall(start, end, check.number(get["thickness"], f"{f}.thickness", True))
+    points = check.points(get["points"], f"{f}.points", 3)
+    if polygon_self_intersects(points):
+        check.fail(f"{f}.points", "polygon is self-intersecting (or has repeated points / zero area)")
+    return Polygon(points)
+
+
+def _place(check: _Checker, world: World, point, field: str, what: str, radius: float = 0.0):
+    """A point must lie in the world and outside every obstacle (a disc of ``radius`` around it)."""
+    point = np.asarray(point, dtype=float).reshape(1, 2)
+    if not world.contains(point)[0]:
+        check.fail(field, f"{what} ({point[0, 0]:g}, {point[0, 1]:g}) is outside the "
+                          f"{world.width:g} x {world.height:g} m world")
+    dist, _, index = world.nearest_obstacle(point)
+    if dist[0] < radius:
+        where = "inside" if dist[0] < 0 else f"within the robot footprint ({radius:g} m) of"
+        kind = world.obstacles[index[0]].kind
+        check.fail(field, f"{what} ({point[0, 0]:g}, {point[0, 1]:g}) is {where} obstacles[{index[0]}] ({kind})")
+
+
+def scenario_from_dict(document, source: str = "<scenario>", name: str | None = None,
+                       robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
+    """Validate a parsed scenario document and build the :class:`Scenario`.
+
+    ``robot_radius`` is the footprint that must fit at the start pose (default: the robot's).
+    """
+    check = _Checker(source)
+    doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
+    tasks = [key for key in ("goal", "path", "target") if key in doc]
+    if len(tasks) != 1:
+        check.fail("goal", "a scenario needs exactly one task: goal, path or target"
+                   + (f" (found {', '.join(tasks)})" if tasks else ""))
+    for key in ("path_tolerance", "speed"):
+        if key in doc and "path" not in doc:
+            check.fail(key, "only allowed with a path task")
+
+    world_doc = check.mapping(doc.get("world", {}), "world", ("width", "height"))
+    width = check.number(world_doc.get("width", 20.0), "world.width", True)
+    height = check.number(world_doc.get("height", 20.0), "world.height", True)
+    obstacles_doc = doc.get("obstacles", []) or []
+    if not isinstance(obstacles_doc, list):
+        check.fail("obstacles", f"must be a list, got {type(obstacles_doc).__name__}")
+    world = World(width, height, tuple(_shape(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc)))
+
+    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta"), required=("x", "y"))
+    start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
+                      check.number(robot.get("theta", 0.0), "robot.theta")])
+    _place(check, world, start[:2], "robot", "start", robot_radius)
+
+    goal = path = target = None
+    if "goal" in doc:
+        g = check.mapping(doc["goal"], "goal", ("x", "y", "tolerance"), required=("x", "y"))
+        position = np.array([check.number(g["x"], "goal.x"), check.number(g["y"], "goal.y")])
+        _place(check, world, position, "goal", "goal")
+        goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
+    elif "path" in doc:
+        waypoints = check.points(doc["path"], "path", 1)
+        for i, waypoint in enumerate(waypoints):
+            _place(check, world, waypoint, f"path[{i}]", "waypoint")
+        path = PathTask(waypoints,
+                        check.number(doc.get("path_tolerance", DEFAULT_PATH_TOLERANCE), "path_tolerance", True),
+                        check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True))
+    else:
+        t = check.mapping(doc["target"], "target", ("x", "y", "tolerance", "motion"), required=("x", "y"))
+        position = np.array([check.number(t["x"], "target.x"), check.number(t["y"], "target.y")])
+        _place(check, world, position, "target", "target")
+        motion_doc = t.get("motion", {"type": "static"})
+        if not isinstance(motion_doc, dict) or "type" not in motion_doc:
+            check.fail("target.motion.type", "missing (one of: " + ", ".join(MOTION_PARAMS) + ")")
+        kind = motion_doc["type"]
+        if kind not in MOTION_PARAMS:
+            close = difflib.get_close_matches(str(kind), list(MOTION_PARAMS), n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            check.fail("target.motion.type", f"unknown motion {kind!r}{hint}; known: {', '.join(MOTION_PARAMS)}")
+        params = MOTION_PARAMS[kind]
+        check.mapping(motion_doc, "target.motion", ("type", *params), required=list(params))
+        values = {}
+        for key in params:
+            field = f"target.motion.{key}"
+            if key in ("velocity", "center"):
+                values[key] = check.point(motion_doc[key], field)
+            else:
+                values[key] = check.number(motion_doc[key], field, positive=key == "period")
+        if kind == "circle" and np.allclose(values["center"], position):
+            check.fail("target.motion.center", "must differ from the target start (zero radius)")
+        target = TargetTask(TargetMotion(type=kind, start=position, **values),
+                            check.number(t.get("tolerance", DEFAULT_GOAL_TOLERANCE), "target.tolerance", True))
+
+    return Scenario(
+        name=check.text(doc.get("name", name or "scenario"), "name"),
+        world=world,
+        start=start,
+        goal=goal,
+        path=path,
+        target=target,
+        max_time=check.number(doc.get("max_time", DEFAULT_MAX_TIME), "max_time", True),
+        description=check.text(doc.get("description", ""), "description"),
+        source=source,
+    )
+
+
+class _UniqueKeyLoader(yaml.SafeLoader):
+    """``yaml.SafeLoader`` that rejects duplicate keys instead of keeping the last one."""
+
+    def construct_mapping(self, node, deep=False):
+        seen = set()
+        for key_node, _ in node.value:
+            key = self.construct_object(key_node, deep=deep)
+            if key in seen:
+                raise yaml.constructor.ConstructorError(
+                    None, None, f"duplicate key {key!r}", key_node.start_mark)
+            seen.add(key)
+        return super().construct_mapping(node, deep=deep)
+
+
+def read_yaml(path: Path):
+    """Parse a YAML file safely; unreadable files raise InputError naming the file (and line)."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        raise InputError(f"cannot read file ({error})", source=str(path)) from None
+    try:
+        return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 — a SafeLoader subclass
+    except yaml.YAMLError as error:
+        mark = getattr(error, "problem_mark", None)
+        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = getattr(error, "problem", None) or str(error)
+        raise InputError(f"unreadable YAML{where}: {problem}", source=str(path)) from None
+
+
+def list_scenarios() -> dict[str, str]:
+    """Built-in scenarios (``world/scenarios/*.yaml``): name -> one-line description."""
+    listing = {}
+    for file in sorted(BUILTIN_DIR.glob("*.yaml")):
+        doc = read_yaml(file)
+        listing[file.stem] = str(doc.get("description", "")) if isinstance(doc, dict) else ""
+    return listing
+
+
+def load_scenario(path_or_name) -> Scenario:
+    """Load a scenario file, or a built-in scenario by name (see :func:`list_scenarios`)."""
+    path = Path(path_or_name)
+    if not path.is_file():
+        builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
+        if not builtin.is_file():
+            names = sorted(f.stem for f in BUILTIN_DIR.glob("*.yaml"))
+            close = difflib.get_close_matches(str(path_or_name), names, n=3)
+            hint = f" (did you mean {', '.join(close)}?)" if close else ""
+            raise InputError(f"no such scenario file or built-in scenario{hint}; "
+                             f"`fuzzynav scenarios` lists the built-ins", source=str(path_or_name),
+                             field="SCENARIO")
+        path = builtin
+    return scenario_from_dict(read_yaml(path), source=str(path), name=path.stem)

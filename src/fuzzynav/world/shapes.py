@@ -1,0 +1,140 @@
+"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (issue 3, SPEC §3).
+
+Plain frozen records; the vectorised geometry on many shapes at once lives in
+:mod:`fuzzynav.world.collision` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
+rectangle of its given thickness around the segment start–end (its ends are square, so two walls
+meeting at a corner leave a notch of thickness/2 unless they overlap). ``to_dict`` gives the
+scenario-file form (docs/ARCHITECTURE.md), so generated worlds can be written back as YAML.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+def _point(values) -> np.ndarray:
+    return np.asarray(values, dtype=float).reshape(2)
+
+
+@dataclass(frozen=True)
+class Circle:
+    """Disc of ``radius`` (m) around ``center``; the obstacle of Table IV.2 / Fig IV.15."""
+
+    center: np.ndarray
+    radius: float
+    kind = "circle"
+
+    def __post_init__(self):
+        object.__setattr__(self, "center", _point(self.center))
+        object.__setattr__(self, "radius", float(self.radius))
+
+    def to_dict(self) -> dict:
+        return {"circle": {"center": self.center.tolist(), "radius": self.radius}}
+
+
+@dataclass(frozen=True)
+class Polygon:
+    """Simple polygon given by its vertices ``(n, 2)`` (n ≥ 3, either orientation)."""
+
+    points: np.ndarray
+    kind = "polygon"
+
+    def __post_init__(self):
+        object.__setattr__(self, "points", np.asarray(self.points, dtype=float).reshape(-1, 2))
+
+    @property
+    def vertices(self) -> np.ndarray:
+        return self.points
+
+    def to_dict(self) -> dict:
+        return {"polygon": {"points": self.points.tolist()}}
+
+
+@dataclass(frozen=True)
+class Wall:
+    """Thick segment: the rectangle of width ``thickness`` (m) centred on ``start``–``end``."""
+
+    start: np.ndarray
+    end: np.ndarray
+    thickness: float = 0.2
+    kind = "wall"
+
+    def __post_init__(self):
+        object.__setattr__(self, "start", _point(self.start))
+        object.__setattr__(self, "end", _point(self.end))
+        object.__setattr__(self, "thickness", float(self.thickness))
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """The four corners of the rectangle, counter-clockwise."""
+        direction = self.end - self.start
+        length = np.hypot(*direction)
+        normal = np.array([-direction[1], direction[0]]) / length * (0.5 * self.thickness)
+        return np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
+
+    def to_dict(self) -> dict:
+        return {"wall": {"start": self.start.tolist(), "end": self.end.tolist(), "thickness": self.thickness}}
+
+
+@dataclass(frozen=True)
+class Ellipse:
+    """Ellipse with semi-axes ``radii`` = (a, b) (m) around ``center``, rotated by ``angle`` (rad)."""
+
+    center: np.ndarray
+    radii: np.ndarray
+    angle: float = 0.0
+    kind = "ellipse"
+
+    def __post_init__(self):
+        object.__setattr__(self, "center", _point(self.center))
+        object.__setattr__(self, "radii", _point(self.radii))
+        object.__setattr__(self, "angle", float(self.angle))
+
+    def to_dict(self) -> dict:
+        return {"ellipse": {"center": self.center.tolist(), "radii": self.radii.tolist(), "angle": self.angle}}
+
+
+Shape = Circle | Polygon | Wall | Ellipse
+SHAPES: dict[str, type] = {"circle": Circle, "polygon": Polygon, "wall": Wall, "ellipse": Ellipse}
+
+
+def polygon_self_intersects(points) -> bool:
+    """True when two edges of the closed polygon ``points`` cross or touch (other than neighbours
+    at their shared vertex), or when it has a repeated vertex or zero area."""
+    pts = np.asarray(points, dtype=float)
+    n = len(pts)
+    a, b = pts, np.roll(pts, -1, axis=0)
+    if np.any(np.hypot(*(b - a).T) == 0.0):
+        return True
+    area = 0.5 * np.sum(a[:, 0] * b[:, 1] - b[:, 0] * a[:, 1])
+    if area == 0.0:
+        return True
+
+    def orient(p, q, r):
+        return np.sign((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
+
+    i, j = np.triu_indices(n, k=1)
+    keep = (j - i != 1) & ~((i == 0) & (j == n - 1))  # skip neighbouring edges
+    i, j = i[keep], j[keep]
+    p1, p2, q1, q2 = a[i], b[i], a[j], b[j]
+    o1, o2 = orient(p1, p2, q1), orient(p1, p2, q2)
+    o3, o4 = orient(q1, q2, p1), orient(q1, q2, p2)
+    proper = (o1 * o2 < 0) & (o3 * o4 < 0)
+
+    def on_segment(p, q, r):  # r collinear with p–q and within its box
+        return (
+            (orient(p, q, r) == 0)
+            & (np.minimum(p[:, 0], q[:, 0]) <= r[:, 0]) & (r[:, 0] <= np.maximum(p[:, 0], q[:, 0]))
+            & (np.minimum(p[:, 1], q[:, 1]) <= r[:, 1]) & (r[:, 1] <= np.maximum(p[:, 1], q[:, 1]))
+        )
+
+    touching = on_segment(p1, p2, q1) | on_segment(p1, p2, q2) | on_segment(q1, q2, p1) | on_segment(q1, q2, p2)
+    # neighbours share a vertex; they only "touch" badly when they fold back onto each other
+    k = np.arange(n)
+    prev_, cur, next_ = a[k], b[k], b[(k + 1) % n]
+    folds = (orient(prev_, cur, next_) == 0) & (
+        np.einsum("ij,ij->i", cur - prev_, next_ - cur) < 0
+    )
+    return bool(np.any(proper | touching) or np.any(folds))

@@ -1,0 +1,157 @@
+"""The world: a rectangle [0, W] × [0, H] bounded by walls, with obstacles (issue 3, SPEC §0).
+
+Every figure of the thesis uses a 20 m × 20 m workspace with the origin bottom-left. All queries
+are vectorised over many points / robots and over all obstacles at once: the shapes are packed
+into arrays (circles, polygon edges — walls are rectangles —, ellipses) when the world is built.
+
+Distances are *signed*: negative inside an obstacle (or outside the world for the boundary).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from fuzzynav.world import collision
+from fuzzynav.world.shapes import Circle, Ellipse, Shape
+
+
+@dataclass(frozen=True)
+class World:
+    """Workspace ``width`` × ``height`` (m) with ``obstacles`` (the boundary is not one of them)."""
+
+    width: float = 20.0
+    height: float = 20.0
+    obstacles: tuple[Shape, ...] = ()
+    _packed: dict = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "obstacles", tuple(self.obstacles))
+        circles = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Circle)]
+        ellipses = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Ellipse)]
+        polygons = [(i, s) for i, s in enumerate(self.obstacles) if not isinstance(s, (Circle, Ellipse))]
+        verts = [s.vertices for _, s in polygons]
+        starts = np.cumsum([0] + [len(v) for v in verts[:-1]]).astype(int) if verts else np.zeros(0, int)
+        seg_a = np.concatenate(verts) if verts else np.zeros((0, 2))
+        seg_b = np.concatenate([np.roll(v, -1, axis=0) for v in verts]) if verts else np.zeros((0, 2))
+        owner = np.repeat(np.arange(len(verts)), [len(v) for v in verts]) if verts else np.zeros(0, int)
+        packed = {
+            "circle_index": np.array([i for i, _ in circles], dtype=int),
+            "circle_center": np.array([s.center for _, s in circles]).reshape(-1, 2),
+            "circle_radius": np.array([s.radius for _, s in circles], dtype=float),
+            "ellipse_index": np.array([i for i, _ in ellipses], dtype=int),
+            "ellipse_center": np.array([s.center for _, s in ellipses]).reshape(-1, 2),
+            "ellipse_radii": np.array([s.radii for _, s in ellipses]).reshape(-1, 2),
+            "ellipse_angle": np.array([s.angle for _, s in ellipses], dtype=float),
+            "polygon_index": np.array([i for i, _ in polygons], dtype=int),
+            "polygon_start": starts,
+            "seg_a": seg_a,
+            "seg_b": seg_b,
+            "seg_owner": owner,
+        }
+        order = np.concatenate([packed["circle_index"], packed["polygon_index"], packed["ellipse_index"]])
+        packed["order"] = order.astype(int)  # column k of the (N, K) distance matrix -> obstacle index
+        object.__setattr__(self, "_packed", packed)
+
+    # -- distances ---------------------------------------------------------------------------
+    def obstacle_distances(self, points):
+        """Signed distances ``(N, K)`` and nearest surface points ``(N, K, 2)`` to every obstacle,
+        columns in ``self._packed["order"]`` order (circles, polygons and walls, ellipses)."""
+        p = self._packed
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        n = len(points)
+        dist, near = [], []
+        if len(p["circle_radius"]):
+            rel = points[:, None, :] - p["circle_center"][None]
+            norm = np.hypot(rel[..., 0], rel[..., 1])
+            unit = rel / np.where(norm > 0, norm, 1.0)[..., None]
+            unit[norm == 0] = (1.0, 0.0)
+            dist.append(norm - p["circle_radius"][None])
+            near.append(p["circle_center"][None] + p["circle_radius"][None, :, None] * unit)
+        if len(p["polygon_start"]):
+            edge_d, edge_near = collision.segment_distance(points, p["seg_a"], p["seg_b"])
+            starts = p["polygon_start"]
+            inside = np.add.reduceat(collision.crossings(points, p["seg_a"], p["seg_b"]), starts, axis=1) % 2 == 1
+            poly_d = np.minimum.reduceat(edge_d, starts, axis=1)
+            # nearest edge of each polygon: mask the other polygons' edges
+            mine = p["seg_owner"][None, None, :] == np.arange(len(starts))[None, :, None]  # (1, P, M)
+            masked = np.where(mine, edge_d[:, None, :], np.inf)
+            best = np.argmin(masked, axis=2)  # (N, P)
+            dist.append(np.where(inside, -poly_d, poly_d))
+            near.append(np.take_along_axis(edge_near, best[..., None], axis=1))
+        if len(p["ellipse_angle"]):
+            local = collision.ellipse_frame(points, p["ellipse_center"], p["ellipse_angle"])
+            foot = collision.ellipse_nearest(local, p["ellipse_radii"])
+            gap = np.hypot(*(local - foot).transpose(2, 0, 1))
+            inside = np.sum((local / p["ellipse_radii"][None]) ** 2, axis=-1) < 1.0
+            c, s = np.cos(p["ellipse_angle"]), np.sin(p["ellipse_angle"])
+            world_foot = np.stack([c * foot[..., 0] - s * foot[..., 1], s * foot[..., 0] + c * foot[..., 1]], -1)
+            dist.append(np.where(inside, -gap, gap))
+            near.append(world_foot + p["ellipse_center"][None])
+        if not dist:
+            return np.zeros((n, 0)), np.zeros((n, 0, 2))
+        return np.concatenate(dist, axis=1), np.concatenate(near, axis=1)
+
+    def nearest_obstacle(self, points):
+        """Nearest obstacle (boundary excluded) to each point: ``(distance (N,), point (N, 2),
+        index (N,))`` — signed distance to its surface (inf / nan / −1 in a world without
+        obstacles). D_ro and θ_o of Table IV.2 are measured to this point."""
+        dist, near = self.obstacle_distances(points)
+        n = dist.shape[0]
+        if dist.shape[1] == 0:
+            return np.full(n, np.inf), np.full((n, 2), np.nan), np.full(n, -1)
+        k = np.argmin(dist, axis=1)
+        rows = np.arange(n)
+        return dist[rows, k], near[rows, k], self._packed["order"][k]
+
+    def boundary_distance(self, points):
+        """Signed distance ``(N,)`` to the boundary walls (negative outside the world)."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        return np.minimum.reduce(
+            [points[:, 0], self.width - points[:, 0], points[:, 1], self.height - points[:, 1]]
+        )
+
+    def clearance(self, points):
+        """Signed distance ``(N,)`` from points to the nearest obstacle surface or boundary."""
+        dist, _ = self.obstacle_distances(points)
+        bound = self.boundary_distance(points)
+        return np.minimum(bound, dist.min(axis=1)) if dist.shape[1] else bound
+
+    def collides(self, points, radius: float = 0.0):
+        """``(N,)`` bool: does a disc of ``radius`` at each point overlap an obstacle or the boundary."""
+        return self.clearance(points) < radius
+
+    def contains(self, points):
+        """``(N,)`` bool: is each point inside the world rectangle (boundary included)."""
+        return self.boundary_distance(points) >= 0.0
+
+    # -- range sensors -----------------------------------------------------------------------
+    def ranges(self, poses, angles, max_range: float, noise_std: float = 0.0, rng: np.random.Generator | None = None):
+        """Range readings ``(N, S)``: rays from each pose's (x, y) at heading θ + angle, cast
+        against every obstacle and the boundary at once, capped at ``max_range`` (SPEC §3.3).
+
+        ``noise_std`` > 0 adds Gaussian noise from ``rng`` (required then), clipped to
+        [0, max_range]. A ray starting inside an obstacle measures the distance to its surface.
+        """
+        poses = np.asarray(poses, dtype=float).reshape(-1, 3)
+        angles = np.asarray(angles, dtype=float).reshape(-1)
+        n, s = len(poses), len(angles)
+        heading = poses[:, 2:3] + angles[None, :]
+        directions = np.stack([np.cos(heading), np.sin(heading)], axis=-1).reshape(-1, 2)
+        origins = np.repeat(poses[:, :2], s, axis=0)
+        p = self._packed
+        best = collision.ray_box(origins, directions, self.width, self.height)
+        if len(p["circle_radius"]):
+            best = np.minimum(best, collision.ray_circles(origins, directions, p["circle_center"], p["circle_radius"]).min(axis=1))
+        if len(p["seg_a"]):
+            best = np.minimum(best, collision.ray_segments(origins, directions, p["seg_a"], p["seg_b"]).min(axis=1))
+        if len(p["ellipse_angle"]):
+            hits = collision.ray_ellipses(origins, directions, p["ellipse_center"], p["ellipse_radii"], p["ellipse_angle"])
+            best = np.minimum(best, hits.min(axis=1))
+        readings = np.minimum(best, max_range).reshape(n, s)
+        if noise_std > 0.0:
+            if rng is None:
+                raise ValueError("noisy ranges need an explicit numpy.random.Generator (rng)")
+            readings = np.clip(readings + rng.normal(0.0, noise_std, readings.shape), 0.0, max_range)
+        return readings
