@@ -60,7 +60,7 @@ class BatchSimulator:
         self.seed = seed
         self.record = record
         if hasattr(controller, "act") or hasattr(controller, "act_batch"):
-            self.batch = hasattr(controller, "act_batch")
+            self.batch = callable(getattr(controller, "act_batch", None))
             copies = [controller] if self.batch or self.n == 1 else [copy.deepcopy(controller) for _ in range(self.n)]
         else:
             copies = list(controller)
