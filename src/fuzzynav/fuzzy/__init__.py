@@ -1,0 +1,27 @@
+"""Fuzzy-logic library (thesis chapter II, §IV.3): membership functions, linguistic variables,
+rule bases and TS0 / TS1 / Mamdani / Tsukamoto inference, vectorised with NumPy.
+
+Knows nothing of robots. The thesis' own systems are in :mod:`fuzzynav.fuzzy.systems`.
+"""
+
+from fuzzynav.fuzzy.membership import (
+    Bell,
+    Gaussian,
+    Linear,
+    MembershipFunction,
+    Ramp,
+    Sigmoid,
+    Singleton,
+    Trapezoidal,
+    Triangular,
+)
+from fuzzynav.fuzzy.partition import PartitionReport, check_strong_partition, strong_partition
+from fuzzynav.fuzzy.rules import Rule, parse_rule, rules_from_grid
+from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.variable import Variable
+
+__all__ = [
+    "Bell", "FuzzySystem", "Gaussian", "Linear", "MembershipFunction", "PartitionReport", "Ramp", "Rule",
+    "Sigmoid", "Singleton", "Trapezoidal", "Triangular", "Variable", "check_strong_partition", "parse_rule",
+    "rules_from_grid", "strong_partition",
+]

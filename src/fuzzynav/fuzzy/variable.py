@@ -1,0 +1,81 @@
+"""Linguistic variables (thesis §II.2.3, Fig II.3): a name, a universe of discourse and named terms.
+
+Inputs are clamped to the universe before fuzzification (§II.4.1): a controller fed a distance
+beyond its sensor range or an angle beyond the last shoulder sees the value at the border, where
+a strong partition's outer shoulder is 1. This is the documented behaviour of every evaluation
+path of :class:`~fuzzynav.fuzzy.system.FuzzySystem`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.membership import MembershipFunction
+
+
+class Variable:
+    """A linguistic variable: ``Variable("drg", (0, 28.3), {"Z": mf, "P": mf, ...})``.
+
+    Term order is the insertion order of ``terms``; rule tables and fuzzified columns use it.
+    """
+
+    def __init__(self, name: str, universe: tuple[float, float], terms: Mapping[str, MembershipFunction]):
+        if not name or not str(name).isidentifier():
+            raise InputError(f"variable name must be an identifier, got {name!r}", field="name")
+        lo, hi = (float(v) for v in universe)
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise InputError(f"universe must be finite with lo < hi, got {tuple(universe)!r}", field=f"{name}.universe")
+        if not terms:
+            raise InputError("variable has no terms", field=name)
+        for label, mf in terms.items():
+            field = f"{name}.{label}"
+            if not str(label).isidentifier():
+                raise InputError(f"term label must be an identifier, got {label!r}", field=field)
+            if not isinstance(mf, MembershipFunction):
+                raise InputError(f"{mf!r} is not a membership function", field=field)
+            s_lo, s_hi = mf.support()
+            if s_hi < lo or s_lo > hi:
+                raise InputError(f"term {mf!r} lies outside the universe [{lo!r}, {hi!r}]", field=field)
+        self.name = str(name)
+        self.universe = (lo, hi)
+        self.terms: dict[str, MembershipFunction] = dict(terms)
+
+    @property
+    def labels(self) -> list[str]:
+        """Term labels, in order."""
+        return list(self.terms)
+
+    def index(self, label: str) -> int:
+        """Position of ``label`` among the terms (KeyError if unknown)."""
+        return self.labels.index(label)
+
+    def clamp(self, x):
+        """``x`` clipped to the universe (see module docstring)."""
+        return np.clip(np.asarray(x, dtype=float), *self.universe)
+
+    def fuzzify(self, x, *, clamp: bool = True) -> np.ndarray:
+        """Membership degrees of a batch: ``x`` of shape (N,) -> (N, n_terms), columns in term order."""
+        x = np.atleast_1d(np.asarray(x, dtype=float))
+        if x.ndim != 1:
+            raise ValueError(f"variable {self.name!r}: fuzzify takes a 1-D batch, got shape {x.shape}")
+        if clamp:
+            x = self.clamp(x)
+        out = np.empty((x.shape[0], len(self.terms)))
+        for j, mf in enumerate(self.terms.values()):
+            out[:, j] = mf(x)
+        return out
+
+    def __eq__(self, other) -> bool:
+        return (
+            isinstance(other, Variable)
+            and self.name == other.name
+            and self.universe == other.universe
+            and list(self.terms.items()) == list(other.terms.items())
+        )
+
+    def __repr__(self) -> str:
+        return f"Variable({self.name!r}, {self.universe!r}, {self.terms!r})"
