@@ -1,0 +1,177 @@
+"""Resumable training: checkpoints of a learner + RNG + episode counter + curve, and a train loop.
+
+A checkpoint is one JSON document (``.json``, or the same document stored as a 0-d string in an
+``.npz``) written atomically (temporary file, then rename — :mod:`fuzzynav.models`), so an
+interrupted run (Ctrl-C, crash) always leaves the previous checkpoint intact. It holds
+
+- ``learner``: the learner's :meth:`to_dict` (qualities, visit counts, its episode counter),
+- ``rng``: ``Generator.bit_generator.state`` (JSON-safe: big integers are exact in JSON),
+- ``episode``: batches of episodes completed, and ``curve``: the per-episode records so far.
+
+Checkpoints are taken between batches of episodes only, so no environment state needs saving;
+:func:`train_loop` resumed from a checkpoint therefore continues *exactly* where it stopped: the
+same qualities and curve, bit for bit, as an uninterrupted run with the same seed — provided the
+environment draws all its randomness from the ``rng`` it is given.
+
+The environment protocol of :func:`train_loop` (a batch of B episodes, Gymnasium-like)::
+
+    env.reset(rng) -> obs                                   # B new episodes
+    env.step(action, rng) -> obs, reward, terminated, truncated, info
+
+with ``reward`` (B,) or (B, H), ``terminated`` / ``truncated`` (B,) booleans and ``info`` a dict
+that may hold ``"success"`` (B,) booleans. Rows whose episode has ended keep being stepped with
+the others until the whole batch is done; their results are ignored.
+"""
+
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from fuzzynav.errors import InputError
+from fuzzynav.models import read_model, save_json_atomic, save_npz_atomic
+
+KIND = "fuzzynav-checkpoint"
+_STATE_FIELDS = ("q", "visits", "episode", "premise")
+
+
+def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve: dict,
+                    extra: dict | None = None) -> None:
+    """Write a checkpoint atomically (``.npz`` suffix → NPZ, anything else → JSON)."""
+    document = {
+        "kind": KIND,
+        "episode": int(episode),
+        "rng": rng.bit_generator.state,
+        "learner": learner.to_dict(),
+        "curve": curve,
+        "extra": extra or {},
+        "saved_at": time.time(),
+    }
+    path = Path(path)
+    if path.suffix == ".npz":
+        save_npz_atomic(path, kind=np.array(KIND), document=np.array(json.dumps(document)))
+    else:
+        save_json_atomic(path, document)
+
+
+def load_checkpoint(path) -> dict:
+    """Read a checkpoint document written by :func:`save_checkpoint`."""
+    document = read_model(path)
+    if document["kind"] != KIND:
+        raise InputError(f"not a training checkpoint (kind {document['kind']!r})", source=str(path),
+                         field="kind")
+    if "document" in document:
+        document = json.loads(str(document["document"]))
+    for name in ("episode", "rng", "learner", "curve"):
+        if name not in document:
+            raise InputError("missing field in checkpoint", source=str(path), field=name)
+    return document
+
+
+def restore(learner, rng: np.random.Generator, document: dict, source: str = "checkpoint") -> None:
+    """Put a checkpoint's learner state and RNG state into ``learner`` and ``rng`` (in place).
+
+    The learner must have been built with the same settings as the one saved (its non-state
+    fields must match); otherwise the checkpoint belongs to another run and is refused.
+    """
+    saved, current = document["learner"], learner.to_dict()
+    for name in current.keys() | saved.keys():
+        if name not in _STATE_FIELDS and current.get(name) != saved.get(name):
+            raise InputError(f"the checkpoint was written with another setting ({saved.get(name)!r} "
+                             f"instead of {current.get(name)!r})", source=source, field=f"learner.{name}")
+    q = np.asarray(saved["q"], dtype=float)
+    if q.shape != learner.q.shape:
+        raise InputError(f"table shape {q.shape} does not match {learner.q.shape}", source=source,
+                         field="learner.q")
+    learner.q = q
+    learner.visits = np.asarray(saved["visits"], dtype=float)
+    learner.episode = int(saved["episode"])
+    try:
+        rng.bit_generator.state = document["rng"]
+    except (TypeError, ValueError, KeyError) as error:
+        raise InputError(f"bad RNG state ({error})", source=source, field="rng") from None
+
+
+@dataclass
+class TrainResult:
+    """What :func:`train_loop` returns: the learner (trained in place), curve and episodes done."""
+
+    learner: object
+    curve: dict = field(default_factory=dict)
+    episode: int = 0
+    resumed_from: int | None = None
+
+
+def run_episodes(env, learner, rng: np.random.Generator) -> dict:
+    """Run one batch of B episodes with learning; per-row mean reward, steps and success."""
+    obs = env.reset(rng)
+    action = learner.begin(obs, rng)
+    active = None
+    total = steps = success = None
+    while active is None or active.any():
+        obs, reward, terminated, truncated, info = env.step(action, rng)
+        reward = np.asarray(reward, dtype=float)
+        terminated = np.asarray(terminated, dtype=bool)
+        if active is None:
+            active = np.ones(terminated.shape, dtype=bool)
+            total, steps = np.zeros(reward.shape), np.zeros(terminated.shape)
+            success = np.zeros(terminated.shape, dtype=bool)
+        action = learner.step(reward, obs, terminated, rng, active)
+        live = active.reshape(active.shape + (1,) * (reward.ndim - 1))
+        total += reward * live
+        steps += active
+        finished = active & (terminated | np.asarray(truncated, dtype=bool))
+        if "success" in info:
+            success |= finished & np.asarray(info["success"], dtype=bool)
+        active = active & ~finished
+    learner.end_episode()
+    mean = total / steps.reshape(steps.shape + (1,) * (total.ndim - 1))
+    return {"mean_reward": mean.tolist(), "steps": steps.astype(int).tolist(),
+            "success": success.tolist()}
+
+
+def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpoint=None,
+               checkpoint_every: int = 0, resume: bool = False, progress: bool = False,
+               extra: dict | None = None) -> TrainResult:
+    """Train ``learner`` for ``episodes`` batches of episodes on ``env``, resumably.
+
+    With ``checkpoint`` (a path), a checkpoint is written every ``checkpoint_every`` batches
+    (0: only at the end) and at the end; ``resume`` continues from it when it exists (the
+    learner and ``rng`` are restored in place). ``progress`` shows a tqdm bar with the episode,
+    the mean reward and the success rate of the last batch. The curve maps ``mean_reward``,
+    ``steps`` and ``success`` to one entry per batch (a list over its B rows).
+    """
+    if int(episodes) != episodes or episodes < 0:
+        raise InputError(f"must be a non-negative integer, got {episodes!r}", field="episodes")
+    curve = {"mean_reward": [], "steps": [], "success": []}
+    start = resumed_from = None
+    if resume and checkpoint is not None and Path(checkpoint).exists():
+        document = load_checkpoint(checkpoint)
+        restore(learner, rng, document, str(checkpoint))
+        curve = document["curve"]
+        start = resumed_from = int(document["episode"])
+    start = start or 0
+    bar = tqdm(total=int(episodes), initial=min(start, int(episodes)), disable=not progress,
+               unit="episode", dynamic_ncols=True)
+    episode = start
+    try:
+        while episode < episodes:
+            record = run_episodes(env, learner, rng)
+            for name, value in record.items():
+                curve[name].append(value)
+            episode += 1
+            bar.update(1)
+            bar.set_postfix(reward=f"{np.mean(record['mean_reward']):.3f}",
+                            success=f"{np.mean(record['success']):.0%}")
+            if checkpoint is not None and checkpoint_every and episode % checkpoint_every == 0:
+                save_checkpoint(checkpoint, learner, rng, episode, curve, extra)
+    finally:
+        bar.close()
+    if checkpoint is not None:
+        save_checkpoint(checkpoint, learner, rng, episode, curve, extra)
+    return TrainResult(learner, curve, episode, resumed_from)

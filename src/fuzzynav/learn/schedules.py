@@ -1,0 +1,118 @@
+"""Schedules for exploration parameters and learning rates (thesis §III.4.9.1, eq III.24).
+
+A schedule maps a counter ``t`` (a scalar episode index, or an array of visit counts) to a value;
+every schedule is vectorised over ``t``. Exploration parameters (ε, τ) are functions of the episode
+index; the learning rate β is either a function of the episode index or, for
+:class:`InverseVisits`, of the number of updates already applied to each (state, action) pair
+(eq III.24: β = 1 / (1 + visits), which satisfies Σβ = ∞, Σβ² < ∞ — the convergence conditions
+of TD(0) and Q-learning quoted in §III.4.9.1 [WAT89, SUT98]).
+
+The thesis counts the visits "since the start of the episode"; counting them since the start of
+learning, as here, is what the quoted convergence conditions require (a per-episode count would
+reset β to 1 every episode).
+
+Schedules are plain dataclasses; :func:`schedule_to_dict` / :func:`schedule_from_dict` make them
+JSON-safe for checkpoints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+
+
+@dataclass(frozen=True)
+class Constant:
+    """β, ε or τ fixed for the whole run."""
+
+    value: float
+    kind: ClassVar[str] = "constant"
+    per_visit: ClassVar[bool] = False
+
+    def __call__(self, t):
+        return np.full(np.shape(t), float(self.value)) if np.ndim(t) else float(self.value)
+
+
+@dataclass(frozen=True)
+class ExponentialDecay:
+    """``max(floor, start · rate**t)`` — the usual decaying ε (§III.4.10) or learning rate."""
+
+    start: float
+    rate: float
+    floor: float = 0.0
+    kind: ClassVar[str] = "exponential"
+    per_visit: ClassVar[bool] = False
+
+    def __post_init__(self):
+        if not 0.0 < self.rate <= 1.0:
+            raise InputError(f"decay rate must be in (0, 1], got {self.rate}", field="rate")
+
+    def __call__(self, t):
+        return np.maximum(self.floor, self.start * np.power(self.rate, t))
+
+
+@dataclass(frozen=True)
+class InverseVisits:
+    """Eq III.24: ``scale / (1 + visits)**power`` per (state, action) pair, at least ``floor``.
+
+    ``power`` = 1 is eq III.24; any power in (0.5, 1] keeps Σβ = ∞, Σβ² < ∞ and converges much
+    faster with a discounted bootstrap (polynomial rates, Even-Dar & Mansour 2003).
+    """
+
+    scale: float = 1.0
+    power: float = 1.0
+    floor: float = 0.0
+    kind: ClassVar[str] = "inverse_visits"
+    per_visit: ClassVar[bool] = True
+
+    def __post_init__(self):
+        if not 0.5 < self.power <= 1.0:
+            raise InputError(f"power must be in (0.5, 1], got {self.power}", field="power")
+
+    def __call__(self, visits):
+        rate = self.scale / np.power(1.0 + np.asarray(visits, dtype=float), self.power)
+        return np.maximum(self.floor, rate)
+
+
+def unit_interval(value, field: str) -> float:
+    """``value`` as a float in [0, 1] (discount γ, trace decay λ), else :class:`InputError`."""
+    value = float(value)
+    if not 0.0 <= value <= 1.0:
+        raise InputError(f"must be in [0, 1], got {value}", field=field)
+    return value
+
+
+Schedule = Constant | ExponentialDecay | InverseVisits
+SCHEDULES = {cls.kind: cls for cls in (Constant, ExponentialDecay, InverseVisits)}
+
+
+def as_schedule(value, field: str = "schedule") -> Schedule:
+    """A schedule from a schedule, a number (→ :class:`Constant`) or a dict (checkpoint form)."""
+    if isinstance(value, tuple(SCHEDULES.values())):
+        return value
+    if isinstance(value, dict):
+        return schedule_from_dict(value, field)
+    if isinstance(value, (int, float, np.floating, np.integer)) and not isinstance(value, bool):
+        return Constant(float(value))
+    raise InputError(f"expected a number or a schedule, got {value!r}", field=field)
+
+
+def schedule_to_dict(schedule: Schedule) -> dict:
+    """JSON-safe form ``{"kind": ..., parameters...}``."""
+    return {"kind": schedule.kind, **asdict(schedule)}
+
+
+def schedule_from_dict(document: dict, field: str = "schedule") -> Schedule:
+    """Inverse of :func:`schedule_to_dict`."""
+    parameters = dict(document)
+    kind = parameters.pop("kind", None)
+    if kind not in SCHEDULES:
+        raise InputError(f"unknown schedule kind {kind!r}; known: {', '.join(SCHEDULES)}", field=field)
+    try:
+        return SCHEDULES[kind](**parameters)
+    except TypeError as error:
+        raise InputError(f"bad parameters for schedule {kind!r} ({error})", field=field) from None
