@@ -58,3 +58,8 @@ class CountingController(Controller):
     def act(self, obs):
         self.calls += 1
         return Command(0.0, 0.5, f"call{self.calls}")
+
+
+def load_heading_model(document, path):
+    """Model loader for the CLI tests: a JSON document {"kind": ..., "gain": g}."""
+    return HeadingController(gain=float(document["gain"]))

@@ -1,0 +1,139 @@
+"""Trajectory and command plots of an episode, like Figs IV.12–IV.15 and IV.22–IV.23.
+
+- :func:`draw_world`: boundary, obstacles, start pose, goal (with its tolerance), path
+  waypoints or the moving target's course.
+- :func:`plot_trajectory`: the driven path coloured by active behaviour, with the points where
+  the behaviour changes lettered A, B, C… as in Fig IV.15, the robot footprint at the end, and
+  optionally the sensor rays every few steps.
+- :func:`plot_commands`: steering α and speed V_r against time (Fig IV.14).
+- :func:`plot_episode`: both side by side, saved to a PNG.
+
+Figures are built with :class:`matplotlib.figure.Figure` (no pyplot state, no GUI backend).
+"""
+
+from __future__ import annotations
+
+import string
+from pathlib import Path
+
+import numpy as np
+from matplotlib import patches
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
+
+from fuzzynav.sim.trace import Trace
+from fuzzynav.world.scenario import Scenario
+from fuzzynav.world.shapes import Circle, Ellipse
+
+OBSTACLE_STYLE = {"facecolor": "0.55", "edgecolor": "0.2", "linewidth": 0.8}
+BEHAVIOUR_COLOURS = ("tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown", "tab:pink")
+
+
+def change_labels(n: int) -> list[str]:
+    """Marker names A, B, …, Z, AA, AB, … for ``n`` behaviour changes (Fig IV.15)."""
+    letters = string.ascii_uppercase
+    return [letters[i] if i < 26 else letters[i // 26 - 1] + letters[i % 26] for i in range(n)]
+
+
+def draw_world(ax, scenario: Scenario, trace: Trace | None = None) -> None:
+    """Draw the world of ``scenario`` on ``ax`` (equal axes, metres)."""
+    world = scenario.world
+    ax.add_patch(patches.Rectangle((0, 0), world.width, world.height, fill=False, edgecolor="k", linewidth=1.5))
+    for shape in world.obstacles:
+        if isinstance(shape, Circle):
+            ax.add_patch(patches.Circle(shape.center, shape.radius, **OBSTACLE_STYLE))
+        elif isinstance(shape, Ellipse):
+            ax.add_patch(patches.Ellipse(shape.center, 2 * shape.radii[0], 2 * shape.radii[1],
+                                         angle=np.degrees(shape.angle), **OBSTACLE_STYLE))
+        else:
+            ax.add_patch(patches.Polygon(shape.vertices, closed=True, **OBSTACLE_STYLE))
+    x, y, theta = scenario.start
+    ax.plot(x, y, "ks", markersize=6, label="start")
+    ax.annotate("", xy=(x + 0.8 * np.cos(theta), y + 0.8 * np.sin(theta)), xytext=(x, y),
+                arrowprops={"arrowstyle": "->", "color": "k"})
+    if scenario.goal is not None:
+        gx, gy = scenario.goal.position
+        ax.add_patch(patches.Circle((gx, gy), scenario.goal.tolerance, fill=False, edgecolor="tab:green"))
+        ax.plot(gx, gy, "*", color="tab:green", markersize=12, label="goal")
+    if scenario.path is not None:
+        w = scenario.path.waypoints
+        ax.plot(w[:, 0], w[:, 1], "--", color="0.3", linewidth=1.0, label="path")
+        ax.plot(w[:, 0], w[:, 1], "o", color="0.3", markersize=3)
+    if scenario.target is not None:
+        course = trace.target if trace is not None else scenario.target.motion.position(np.array([0.0]))
+        ax.plot(course[:, 0], course[:, 1], ":", color="tab:green", linewidth=1.2, label="target")
+        ax.plot(course[-1, 0], course[-1, 1], "*", color="tab:green", markersize=12)
+    ax.set_xlim(-0.5, world.width + 0.5)
+    ax.set_ylim(-0.5, world.height + 0.5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+
+
+def sensor_segments(pose, angles, ranges) -> np.ndarray:
+    """Ray segments ``(S, 2, 2)`` from the robot centre to each reading."""
+    heading = pose[2] + np.asarray(angles)
+    ends = pose[:2] + np.asarray(ranges)[:, None] * np.stack([np.cos(heading), np.sin(heading)], axis=1)
+    return np.stack([np.broadcast_to(pose[:2], ends.shape), ends], axis=1)
+
+
+def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = False, ray_every: int = 20,
+                    markers: bool = True):
+    """Trajectory of ``trace`` on the world; returns the axes."""
+    if ax is None:
+        ax = Figure(figsize=(6, 6)).add_subplot(111)
+    draw_world(ax, scenario, trace)
+    xy = trace.pose[:, :2]
+    labels = list(dict.fromkeys(trace.behaviour))  # behaviours in order of first use
+    if len(labels) > 1 or (labels and labels[0]):
+        colour = {b: BEHAVIOUR_COLOURS[i % len(BEHAVIOUR_COLOURS)] for i, b in enumerate(labels)}
+        segments = np.stack([xy[:-1], xy[1:]], axis=1)
+        ax.add_collection(LineCollection(segments, colors=[colour[b] for b in trace.behaviour], linewidths=1.8))
+        for b in labels:
+            ax.plot([], [], color=colour[b], label=b or "(none)")
+    else:
+        ax.plot(xy[:, 0], xy[:, 1], color="tab:blue", linewidth=1.8, label="robot")
+    if rays:
+        for k in range(0, len(trace.pose), max(1, ray_every)):
+            segs = sensor_segments(trace.pose[k], trace.sensor_angles, trace.ranges[k])
+            ax.add_collection(LineCollection(segs, colors="tab:orange", linewidths=0.5, alpha=0.6))
+    if markers:
+        changes = trace.behaviour_changes()
+        for name, k in zip(change_labels(len(changes)), changes):
+            ax.plot(*xy[k], "k.", markersize=5)
+            ax.annotate(name, xy[k], xytext=(4, 4), textcoords="offset points", fontsize=9, weight="bold")
+    end = trace.pose[-1]
+    colour = "tab:red" if trace.collision else "k"
+    ax.add_patch(patches.Circle(end[:2], trace.robot_radius, fill=False, edgecolor=colour))
+    ax.set_title(f"{trace.scenario} — {trace.controller}: {trace.outcome} at t = {trace.time:.1f} s", fontsize=9)
+    ax.legend(loc="upper left", fontsize=7, framealpha=0.8)
+    return ax
+
+
+def plot_commands(trace: Trace, axes=None):
+    """Steering α (degrees) and speed V_r (m/s) against time, as in Fig IV.14; returns the axes."""
+    if axes is None:
+        figure = Figure(figsize=(6, 5))
+        axes = figure.subplots(2, 1, sharex=True)
+    t = trace.t[:-1]
+    axes[0].step(t, np.degrees(trace.steering), where="post", color="tab:blue")
+    axes[0].set_ylabel("steering α (°)")
+    axes[0].axhline(0.0, color="0.7", linewidth=0.6)
+    axes[1].step(t, trace.speed, where="post", color="tab:red")
+    axes[1].set_ylabel("speed V (m/s)")
+    axes[1].set_xlabel("time (s)")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    return axes
+
+
+def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = False) -> Figure:
+    """Trajectory (left) and commands (right) in one figure; saved to ``path`` (PNG) if given."""
+    figure = Figure(figsize=(12, 6), layout="constrained")
+    left, right = figure.subfigures(1, 2, width_ratios=[1.1, 1.0])
+    plot_trajectory(trace, scenario, left.add_subplot(111), rays=rays)
+    plot_commands(trace, right.subplots(2, 1, sharex=True))
+    if path is not None:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        figure.savefig(path, dpi=110)
+    return figure
