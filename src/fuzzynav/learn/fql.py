@@ -46,6 +46,13 @@ from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict
 from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
 
 
+def _n_rules(premise) -> int | None:
+    """Number of rules of a premise: its ``n_rules``, else ``len(premise.rules)``, else unknown."""
+    if hasattr(premise, "n_rules"):
+        return int(premise.n_rules)
+    return len(premise.rules) if hasattr(premise, "rules") else None
+
+
 def _as_candidates(candidates, n_rules: int | None) -> np.ndarray:
     """Candidates as (H, R, N, D); (N,) and (R, N) mean one scalar head."""
     values = np.asarray(candidates, dtype=float)
@@ -79,7 +86,7 @@ class FuzzyQLearner:
                  alpha=0.1, policy: Policy | None = None, lam: float = 0.0, n_learners: int = 1,
                  prior=None, normalise: bool = True, initial_q: float = 0.0):
         if n_rules is None:
-            n_rules = getattr(premise, "n_rules", None)
+            n_rules = _n_rules(premise)
         self.premise = premise
         self.candidates = _as_candidates(candidates, n_rules)
         n_heads, n_rules, n_candidates, _ = self.candidates.shape
@@ -98,12 +105,12 @@ class FuzzyQLearner:
         self.q = np.full((int(n_learners), n_heads, n_rules, n_candidates), float(initial_q))
         self.visits = np.zeros(self.q.shape)
         self.episode = 0
-        self._traces = self._w = self._j = self._quality = None
+        self._traces = self._shares_now = self._quality = None
 
     @classmethod
     def separate(cls, premise, outputs, **options) -> "FuzzyQLearner":
         """One head per output, each a candidate set (N,) or (R, N) with the same N."""
-        n_rules = options.pop("n_rules", getattr(premise, "n_rules", None))
+        n_rules = options.pop("n_rules", None) or _n_rules(premise)
         heads = [_as_candidates(c, n_rules)[0] for c in outputs]
         if len({head.shape for head in heads}) != 1:
             raise InputError("separately learned outputs need the same number of candidates",
@@ -113,7 +120,7 @@ class FuzzyQLearner:
     @classmethod
     def joint(cls, premise, candidates, **options) -> "FuzzyQLearner":
         """One head whose candidates are vectors: (N, D) for every rule, or (R, N, D)."""
-        n_rules = options.pop("n_rules", getattr(premise, "n_rules", None))
+        n_rules = options.pop("n_rules", None) or _n_rules(premise)
         values = np.asarray(candidates, dtype=float)
         if values.ndim == 2:
             if n_rules is None:
@@ -150,17 +157,19 @@ class FuzzyQLearner:
                              f"{self.candidates.shape[1]})", field="premise")
         return w
 
-    def _infer(self, w, j) -> np.ndarray:
-        """A = Σ_i w_i a[i, j_i] (VI.10) for chosen indices j (B, H, R); returns (B, H·D)."""
-        chosen = np.take_along_axis(self.candidates[None], j[..., None, None], axis=3)[:, :, :, 0]
-        return np.einsum("br,bhrd->bhd", w, chosen).reshape(w.shape[0], -1)
+    def _shares(self, w, j) -> np.ndarray:
+        """w_i(s)·[j = j_i] for chosen indices j (B, H, R): each rule's share of each candidate."""
+        return (j[..., None] == np.arange(self.q.shape[-1])) * w[:, None, :, None]
+
+    def _infer(self, shares) -> np.ndarray:
+        """A = Σ_i w_i a[i, j_i] (VI.10) from the shares (B, H, R, N); returns (B, H·D)."""
+        return np.einsum("bhrn,hrnd->bhd", shares, self.candidates).reshape(shares.shape[0], -1)
 
     def _choose(self, w, rng) -> np.ndarray:
         tables = self._tables(w.shape[0])
-        j = self.policy.choose(tables, rng, self.episode)
-        self._w, self._j = w, j
-        self._quality = np.einsum("br,bhr->bh", w, np.take_along_axis(tables, j[..., None], -1)[..., 0])
-        return self._infer(w, j)
+        self._shares_now = self._shares(w, self.policy.choose(tables, rng, self.episode))
+        self._quality = (self._shares_now * tables).sum(axis=(2, 3))  # Q(s, A), eq VI.11
+        return self._infer(self._shares_now)
 
     def begin(self, X, rng: np.random.Generator) -> np.ndarray:
         """Start a batch of episodes at inputs X: clear the traces, return the first actions."""
@@ -178,7 +187,7 @@ class FuzzyQLearner:
         v_star = np.einsum("br,bhr->bh", w_next, tables.max(axis=-1))
         r = np.asarray(r, dtype=float).reshape(batch, -1)
         delta = (r + bootstrap[:, None] * v_star - self._quality) * live[:, None]
-        credit = (np.arange(self.q.shape[-1]) == self._j[..., None]) * (self._w * live[:, None])[:, None, :, None]
+        credit = self._shares_now * live[:, None, None, None]
         self._traces *= self.gamma * self.lam
         self._traces += credit
         change = delta[:, :, None, None] * self._traces
@@ -212,13 +221,19 @@ class FuzzyQLearner:
         j = self.greedy_indices(tolerance, prior)
         return np.take_along_axis(self.candidates[None], j[..., None, None], axis=3)[:, :, :, 0]
 
-    def greedy_action(self, X, tolerance: float = 0.0, prior=None) -> np.ndarray:
-        """Output of the extracted controller(s) for inputs X (B, n_in) → (B, H·D), no learning."""
+    def greedy_action(self, X, tolerance: float = 0.0, prior=None, learner: int | None = None) -> np.ndarray:
+        """Output of the extracted controller for inputs X (B, n_in) → (B, H·D), no learning.
+
+        Row b uses learner b (or the shared one); with ``learner = k`` every row uses learner k
+        (e.g. to evaluate one seed's controller on many starts).
+        """
         w = self.strengths(X)
         j = self.greedy_indices(tolerance, prior)
-        if self.n_learners == 1:
-            j = np.broadcast_to(j, (w.shape[0],) + j.shape[1:])
-        return self._infer(w, j)
+        if learner is not None:
+            j = j[learner : learner + 1]
+        if j.shape[0] not in (1, w.shape[0]):
+            raise InputError(f"{w.shape[0]} rows for {j.shape[0]} learners; pass learner=k", field="X")
+        return self._infer(self._shares(w, j))
 
     def to_dict(self) -> dict:
         """JSON-safe learner state (the premise is stored by its owner, or via its ``to_dict``)."""
