@@ -1,0 +1,85 @@
+"""Save / load fuzzy systems as JSON, YAML or FLL, chosen by the file suffix (thesis-independent).
+
+JSON and YAML hold the document of :mod:`fuzzynav.fuzzy.io.document` (exact round trip);
+``.fll`` is the fuzzylite language (:mod:`fuzzynav.fuzzy.io.fll`). YAML is read with
+``yaml.safe_load`` only. Syntax errors name the file and the line.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import yaml
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.io.document import from_document, to_document
+from fuzzynav.fuzzy.io.fll import from_fll, to_fll
+from fuzzynav.fuzzy.system import FuzzySystem
+
+FORMATS = ("json", "yaml", "fll")
+_SUFFIX = {".json": "json", ".yaml": "yaml", ".yml": "yaml", ".fll": "fll"}
+
+
+def format_of(path) -> str:
+    """``json`` / ``yaml`` / ``fll`` from the file suffix (InputError otherwise)."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in _SUFFIX:
+        raise InputError(f"unknown fuzzy-system file type {suffix!r} (use .json, .yaml, .yml or .fll)",
+                         source=str(path))
+    return _SUFFIX[suffix]
+
+
+def dumps(system: FuzzySystem, fmt: str) -> str:
+    """``system`` as text in ``fmt`` (json, yaml or fll)."""
+    if fmt == "json":
+        return json.dumps(to_document(system), indent=2, allow_nan=False) + "\n"
+    if fmt == "yaml":
+        return yaml.safe_dump(to_document(system), sort_keys=False, allow_unicode=True, width=120)
+    if fmt == "fll":
+        return to_fll(system)
+    raise InputError(f"unknown format {fmt!r} (one of {', '.join(FORMATS)})", field="format")
+
+
+def loads(text: str, fmt: str, source: str | None = None) -> FuzzySystem:
+    """Parse ``text`` in ``fmt``; errors name ``source``."""
+    if fmt == "fll":
+        return from_fll(text, source=source)
+    if fmt == "json":
+        try:
+            doc = json.loads(text)
+        except json.JSONDecodeError as error:
+            raise InputError(f"invalid JSON: {error.msg}", source=source,
+                             field=f"line {error.lineno}, column {error.colno}") from None
+    elif fmt == "yaml":
+        try:
+            doc = yaml.safe_load(text)
+        except yaml.YAMLError as error:
+            mark = getattr(error, "problem_mark", None)
+            where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else None
+            raise InputError(f"invalid YAML: {getattr(error, 'problem', None) or error}", source=source,
+                             field=where) from None
+    else:
+        raise InputError(f"unknown format {fmt!r} (one of {', '.join(FORMATS)})", field="format")
+    return from_document(doc, source=source)
+
+
+def save(system: FuzzySystem, path, fmt: str | None = None) -> Path:
+    """Write ``system`` to ``path`` (format from the suffix unless ``fmt``), atomically."""
+    path = Path(path)
+    text = dumps(system, fmt or format_of(path))
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+    return path
+
+
+def load(path, fmt: str | None = None) -> FuzzySystem:
+    """Read a fuzzy system file (``.json``, ``.yaml``/``.yml`` or ``.fll``)."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise InputError(f"cannot read: {error.strerror or error}", source=str(path)) from None
+    return loads(text, fmt or format_of(path), source=str(path))
