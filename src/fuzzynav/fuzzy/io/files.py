@@ -78,8 +78,9 @@ def save(system: FuzzySystem, path, fmt: str | None = None) -> Path:
 def load(path, fmt: str | None = None) -> FuzzySystem:
     """Read a fuzzy system file (``.json``, ``.yaml``/``.yml`` or ``.fll``)."""
     path = Path(path)
+    fmt = fmt or format_of(path)
     try:
         text = path.read_text(encoding="utf-8")
     except OSError as error:
         raise InputError(f"cannot read: {error.strerror or error}", source=str(path)) from None
-    return loads(text, fmt or format_of(path), source=str(path))
+    return loads(text, fmt, source=str(path))
