@@ -16,6 +16,7 @@ from fuzzynav.errors import InputError
 
 # Sub-command modules, in the order ``fuzzynav --help`` lists them.
 COMMAND_MODULES: list[str] = [
+    "demo",
     "run",
     "scenarios",
     "train",

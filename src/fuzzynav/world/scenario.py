@@ -12,6 +12,7 @@ obstacles:
   - wall: {start: [2, 12], end: [10, 12], thickness: 0.2}
   - ellipse: {center: [14, 6], radii: [2.0, 1.0], angle: 0.3}
 max_time: 120                         # seconds, optional
+controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` with optional
 ``path_tolerance`` (the waypoint tolerance zone, SPEC §4, default 0.5 m) and ``speed`` (the
@@ -46,7 +47,7 @@ DEFAULT_PATH_TOLERANCE = 0.5
 DEFAULT_PATH_SPEED = 1.0
 
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "speed",
-            "target", "obstacles", "max_time")
+            "target", "obstacles", "max_time", "controllers")
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
     "polygon": {"points": None},
@@ -93,6 +94,7 @@ class Scenario:
     max_time: float = DEFAULT_MAX_TIME
     description: str = ""
     source: str | None = None
+    controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
 
     @property
     def task(self) -> str:
@@ -104,6 +106,8 @@ class Scenario:
         doc: dict = {"name": self.name}
         if self.description:
             doc["description"] = self.description
+        if self.controllers:
+            doc["controllers"] = list(self.controllers)
         doc["world"] = {"width": self.world.width, "height": self.world.height}
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
         if self.goal is not None:
@@ -292,7 +296,15 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         max_time=check.number(doc.get("max_time", DEFAULT_MAX_TIME), "max_time", True),
         description=check.text(doc.get("description", ""), "description"),
         source=source,
+        controllers=_controller_names(check, doc.get("controllers", [])),
     )
+
+
+def _controller_names(check: _Checker, names) -> tuple[str, ...]:
+    """The optional ``controllers`` key: a list of controller names (checked when they are run)."""
+    if not isinstance(names, list) or not all(isinstance(name, str) and name for name in names):
+        check.fail("controllers", "must be a list of controller names, e.g. [goal-seeking, fuzzy-5b]")
+    return tuple(names)
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
