@@ -53,6 +53,6 @@ def episodes_to_converge(values, window: int = 50, tolerance: float = 0.05, tail
     smooth = moving_average(values, window)
     first_full = min(int(window), values.size) - 1
     final = plateau(values, tail, window)
-    band = tolerance * abs(final - smooth[first_full])
+    band = max(tolerance * abs(final - smooth[first_full]), 1e-9 * (1.0 + abs(final)))  # ≥ rounding
     outside = np.flatnonzero(np.abs(smooth[first_full:] - final) > band)
     return first_full + 1 if outside.size == 0 else first_full + int(outside[-1]) + 2
