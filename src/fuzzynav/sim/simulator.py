@@ -85,6 +85,7 @@ class BatchSimulator:
         self.task = TaskState(self.scenario, self.n)
         self.status = np.full(self.n, RUNNING)
         self.steps = np.zeros(self.n, dtype=int)
+        self._proximity = self.scenario.world.proximity(self.pose[:, :2])
         self._judge(active=np.ones(self.n, dtype=bool))
         self.observation = self.sense()
         self._history = {key: [] for key in ("pose", "ranges", "target", "waypoint", "steering", "speed", "behaviour")}
@@ -100,9 +101,8 @@ class BatchSimulator:
 
     def sense(self) -> BatchObservation:
         """The :class:`BatchObservation` of the current state."""
-        world = self.scenario.world
-        ranges = self.sensors.read(world, self.pose, self.rng)
-        distance, nearest, _ = world.nearest_obstacle(self.pose[:, :2])
+        ranges = self.sensors.read(self.scenario.world, self.pose, self.rng)
+        distance, nearest, _, _ = self._proximity
         rel = nearest - self.pose[:, :2]
         bearing = np.where(np.isfinite(distance), wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - self.pose[:, 2]), 0.0)
         return BatchObservation(
@@ -149,6 +149,7 @@ class BatchSimulator:
         self.pose = np.where(active[:, None], moved, self.pose)
         self.k += 1
         self.steps += active
+        self._proximity = self.scenario.world.proximity(self.pose[:, :2])
         self._judge(active)
         self.observation = self.sense()
         if self.record:
@@ -160,8 +161,8 @@ class BatchSimulator:
 
     def _judge(self, active: np.ndarray) -> None:
         """Stop tests on the current state for the robots in ``active`` (collision first)."""
-        world = self.scenario.world
-        collided = world.collides(self.pose[:, :2], self.params.radius)
+        distance, _, _, boundary = self._proximity
+        collided = np.minimum(distance, boundary) < self.params.radius
         done = self.task.update(self.pose[:, :2], self.k * self.params.dt, active)
         status = np.where(collided, COLLISION, np.where(done, REACHED, RUNNING))
         if self.k >= self.max_steps:

@@ -43,34 +43,37 @@ def ellipse_nearest(local, radii, iterations: int = 4):
     """Nearest points on ellipses (frame coordinates) to ``local`` ``(N, K, 2)``.
 
     A fixed-point iteration on the evolute (the curvature-centre method): it converges from
-    inside and outside in a few steps and needs no branches, so it vectorises.
+    inside and outside in a few steps and needs no branches, so it vectorises. Works in the
+    first quadrant (the ellipse is symmetric) and restores the signs at the end.
     """
-    a, b = radii[None, :, 0], radii[None, :, 1]
+    a, b = radii[:, 0], radii[:, 1]
+    c2 = a * a - b * b
+    ka, kb = c2 / a, -c2 / b
     px, py = np.abs(local[..., 0]), np.abs(local[..., 1])
     tx = np.full(px.shape, np.sqrt(0.5))
     ty = tx.copy()
     for _ in range(iterations):
-        x, y = a * tx, b * ty
-        ex = (a * a - b * b) * tx**3 / a
-        ey = (b * b - a * a) * ty**3 / b
-        r = np.hypot(x - ex, y - ey)
-        q = np.maximum(np.hypot(px - ex, py - ey), 1e-12)
-        tx = np.clip(((px - ex) * r / q + ex) / a, 0.0, 1.0)
-        ty = np.clip(((py - ey) * r / q + ey) / b, 0.0, 1.0)
-        norm = np.maximum(np.hypot(tx, ty), 1e-12)
+        ex, ey = ka * tx * tx * tx, kb * ty * ty * ty  # centre of curvature at (a tx, b ty)
+        qx, qy = px - ex, py - ey
+        ratio = np.hypot(a * tx - ex, b * ty - ey) / np.maximum(np.hypot(qx, qy), 1e-12)
+        tx = np.minimum(np.maximum((qx * ratio + ex) / a, 0.0), 1.0)
+        ty = np.minimum(np.maximum((qy * ratio + ey) / b, 0.0), 1.0)
+        norm = np.hypot(tx, ty)
         tx, ty = tx / norm, ty / norm
     return np.stack([np.copysign(a * tx, local[..., 0]), np.copysign(b * ty, local[..., 1])], axis=-1)
 
 
 def ray_segments(origins, directions, a, b):
-    """Hit distances ``(R, M)`` of rays on segments a–b."""
-    e = b - a
-    denom = directions[:, None, 0] * e[None, :, 1] - directions[:, None, 1] * e[None, :, 0]
-    rel = a[None, :, :] - origins[:, None, :]
+    """Hit distances ``(R, M)`` of rays on segments a–b (2-D broadcasting, no (R, M, 2) temporaries)."""
+    ex, ey = (b[:, 0] - a[:, 0])[None, :], (b[:, 1] - a[:, 1])[None, :]
+    dx, dy = directions[:, 0:1], directions[:, 1:2]
+    rx, ry = a[None, :, 0] - origins[:, 0:1], a[None, :, 1] - origins[:, 1:2]
+    denom = dx * ey - dy * ex
     with np.errstate(divide="ignore", invalid="ignore"):
-        t = (rel[..., 0] * e[None, :, 1] - rel[..., 1] * e[None, :, 0]) / denom
-        u = (rel[..., 0] * directions[:, None, 1] - rel[..., 1] * directions[:, None, 0]) / denom
-    hit = (denom != 0.0) & (t >= 0.0) & (u >= 0.0) & (u <= 1.0)
+        inverse = 1.0 / denom
+        t = (rx * ey - ry * ex) * inverse
+        u = (rx * dy - ry * dx) * inverse
+    hit = (t >= 0.0) & (u >= 0.0) & (u <= 1.0)  # parallel rays give inf/nan and fail these tests
     return np.where(hit, t, np.inf)
 
 

@@ -55,55 +55,88 @@ class World:
         object.__setattr__(self, "_packed", packed)
 
     # -- distances ---------------------------------------------------------------------------
-    def obstacle_distances(self, points):
-        """Signed distances ``(N, K)`` and nearest surface points ``(N, K, 2)`` to every obstacle,
-        columns in ``self._packed["order"]`` order (circles, polygons and walls, ellipses)."""
+    def _distances(self, points):
+        """Signed distances ``(N, K)`` to every obstacle (columns in ``_packed["order"]``: circles,
+        polygons and walls, ellipses) and a function giving the nearest surface points
+        ``(N, 2)`` for one chosen column per point."""
         p = self._packed
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         n = len(points)
-        dist, near = [], []
+        dist, pickers = [], []
         if len(p["circle_radius"]):
             rel = points[:, None, :] - p["circle_center"][None]
             norm = np.hypot(rel[..., 0], rel[..., 1])
-            unit = rel / np.where(norm > 0, norm, 1.0)[..., None]
-            unit[norm == 0] = (1.0, 0.0)
             dist.append(norm - p["circle_radius"][None])
-            near.append(p["circle_center"][None] + p["circle_radius"][None, :, None] * unit)
+
+            def circle_points(rows, k, rel=rel, norm=norm):
+                unit = rel[rows, k] / np.where(norm[rows, k] > 0, norm[rows, k], 1.0)[:, None]
+                unit[norm[rows, k] == 0] = (1.0, 0.0)
+                return p["circle_center"][k] + p["circle_radius"][k, None] * unit
+
+            pickers.append((len(p["circle_radius"]), circle_points))
         if len(p["polygon_start"]):
             edge_d, edge_near = collision.segment_distance(points, p["seg_a"], p["seg_b"])
             starts = p["polygon_start"]
             inside = np.add.reduceat(collision.crossings(points, p["seg_a"], p["seg_b"]), starts, axis=1) % 2 == 1
             poly_d = np.minimum.reduceat(edge_d, starts, axis=1)
-            # nearest edge of each polygon: mask the other polygons' edges
-            mine = p["seg_owner"][None, None, :] == np.arange(len(starts))[None, :, None]  # (1, P, M)
-            masked = np.where(mine, edge_d[:, None, :], np.inf)
-            best = np.argmin(masked, axis=2)  # (N, P)
             dist.append(np.where(inside, -poly_d, poly_d))
-            near.append(np.take_along_axis(edge_near, best[..., None], axis=1))
+
+            def polygon_points(rows, k, edge_d=edge_d, edge_near=edge_near):
+                mine = p["seg_owner"][None, :] == k[:, None]  # the chosen polygon's edges
+                best = np.argmin(np.where(mine, edge_d[rows], np.inf), axis=1)
+                return edge_near[rows, best]
+
+            pickers.append((len(starts), polygon_points))
         if len(p["ellipse_angle"]):
             local = collision.ellipse_frame(points, p["ellipse_center"], p["ellipse_angle"])
             foot = collision.ellipse_nearest(local, p["ellipse_radii"])
-            gap = np.hypot(*(local - foot).transpose(2, 0, 1))
+            gap = np.hypot(local[..., 0] - foot[..., 0], local[..., 1] - foot[..., 1])
             inside = np.sum((local / p["ellipse_radii"][None]) ** 2, axis=-1) < 1.0
-            c, s = np.cos(p["ellipse_angle"]), np.sin(p["ellipse_angle"])
-            world_foot = np.stack([c * foot[..., 0] - s * foot[..., 1], s * foot[..., 0] + c * foot[..., 1]], -1)
             dist.append(np.where(inside, -gap, gap))
-            near.append(world_foot + p["ellipse_center"][None])
+
+            def ellipse_points(rows, k, foot=foot):
+                f = foot[rows, k]
+                c, s = np.cos(p["ellipse_angle"][k]), np.sin(p["ellipse_angle"][k])
+                return p["ellipse_center"][k] + np.stack([c * f[:, 0] - s * f[:, 1], s * f[:, 0] + c * f[:, 1]], -1)
+
+            pickers.append((len(p["ellipse_angle"]), ellipse_points))
         if not dist:
-            return np.zeros((n, 0)), np.zeros((n, 0, 2))
-        return np.concatenate(dist, axis=1), np.concatenate(near, axis=1)
+            return np.zeros((n, 0)), None
+        distances = np.concatenate(dist, axis=1) if len(dist) > 1 else dist[0]
+
+        def nearest_points(columns):
+            out = np.empty((n, 2))
+            offset = 0
+            for count, pick in pickers:
+                rows = np.flatnonzero((columns >= offset) & (columns < offset + count))
+                if len(rows):
+                    out[rows] = pick(rows, columns[rows] - offset)
+                offset += count
+            return out
+
+        return distances, nearest_points
+
+    def obstacle_distances(self, points):
+        """Signed distances ``(N, K)`` from points to every obstacle surface (negative inside),
+        column k being obstacle ``self._packed["order"][k]`` (circles, polygons and walls,
+        ellipses)."""
+        return self._distances(points)[0]
 
     def nearest_obstacle(self, points):
         """Nearest obstacle (boundary excluded) to each point: ``(distance (N,), point (N, 2),
         index (N,))`` — signed distance to its surface (inf / nan / −1 in a world without
         obstacles). D_ro and θ_o of Table IV.2 are measured to this point."""
-        dist, near = self.obstacle_distances(points)
+        dist, nearest_points = self._distances(points)
         n = dist.shape[0]
         if dist.shape[1] == 0:
             return np.full(n, np.inf), np.full((n, 2), np.nan), np.full(n, -1)
         k = np.argmin(dist, axis=1)
-        rows = np.arange(n)
-        return dist[rows, k], near[rows, k], self._packed["order"][k]
+        return dist[np.arange(n), k], nearest_points(k), self._packed["order"][k]
+
+    def proximity(self, points):
+        """:meth:`nearest_obstacle` and :meth:`boundary_distance` in one call:
+        ``(distance, point, index, boundary)``; the clearance is ``min(distance, boundary)``."""
+        return (*self.nearest_obstacle(points), self.boundary_distance(points))
 
     def boundary_distance(self, points):
         """Signed distance ``(N,)`` to the boundary walls (negative outside the world)."""
@@ -114,9 +147,8 @@ class World:
 
     def clearance(self, points):
         """Signed distance ``(N,)`` from points to the nearest obstacle surface or boundary."""
-        dist, _ = self.obstacle_distances(points)
-        bound = self.boundary_distance(points)
-        return np.minimum(bound, dist.min(axis=1)) if dist.shape[1] else bound
+        distance, _, _, boundary = self.proximity(points)
+        return np.minimum(distance, boundary)
 
     def collides(self, points, radius: float = 0.0):
         """``(N,)`` bool: does a disc of ``radius`` at each point overlap an obstacle or the boundary."""
