@@ -59,11 +59,17 @@ def normalised(w: np.ndarray) -> np.ndarray:
 
 
 def tsukamoto_values(w: np.ndarray, terms: list, concl: np.ndarray) -> np.ndarray:
-    """z_r = B_r⁻¹(w_r) for monotone consequents B_r (Tsukamoto, §II.4.3.3); (N, n_rules)."""
+    """z_r = B_r⁻¹(w_r) for monotone consequents B_r (Tsukamoto, §II.4.3.3); (N, n_rules).
+
+    Per rule, as in the textbook method (fuzzylite 8 instead sums the strengths of rules that
+    share a conclusion term before inverting). A rule that does not fire (w_r = 0) gets z_r = 0,
+    so that a sigmoid's infinite inverse at 0 adds nothing.
+    """
     z = np.zeros_like(w)
     for r, t in enumerate(concl):
         if t >= 0:
-            z[:, r] = terms[t].inverse(np.clip(w[:, r], 0.0, 1.0))
+            fired = w[:, r] > 0
+            z[fired, r] = terms[t].inverse(np.clip(w[fired, r], 0.0, 1.0))
     return z
 
 

@@ -15,7 +15,9 @@ mamdani                ``implication: Minimum`` / ``AlgebraicProduct``, ``aggreg
 Export writes every number in full precision (shortest round-trip repr; fuzzylite's own
 exporter rounds to 3 decimals, which shifts the goal-seeking α by ~3e-4 rad) and
 ``lock-range: true`` on inputs, which is fuzzylite's way of clamping them to their range (as
-fuzzynav always does). Import reads files written by fuzzylite itself; anything outside the
+fuzzynav always does). fuzzylite 8's Tsukamoto sums the strengths of rules sharing a
+conclusion term before inverting it, fuzzynav inverts rule by rule (the textbook method): the
+two agree when no two rules share a Tsukamoto conclusion term. Import reads files written by fuzzylite itself; anything outside the
 subset (OR, hedges, other terms or norms) raises :class:`InputError` naming the line.
 """
 
@@ -31,6 +33,7 @@ from fuzzynav.fuzzy.rules import Rule, parse_rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
 
+FUZZYLITE_RESOLUTION = 1000
 _TNORM_OUT = {"product": "AlgebraicProduct", "min": "Minimum"}
 _TNORM_IN = {v: k for k, v in _TNORM_OUT.items()}
 _AGGREGATION_OUT = {"max": "Maximum", "sum": "UnboundedSum"}
@@ -241,8 +244,8 @@ def from_fll(text: str, source: str | None = None) -> FuzzySystem:
     words = defuzz.split()
     if words and words[0] == "Centroid":
         options["method"] = "mamdani"
-        if len(words) > 1:
-            options["resolution"] = int(float(words[1]))
+        # fuzzylite's IntegralDefuzzifier.default_resolution when the file gives none
+        options["resolution"] = int(float(words[1])) if len(words) > 1 else FUZZYLITE_RESOLUTION
         imp, n_imp = setting("implication", "Minimum")
         if imp not in _TNORM_IN:
             bad("implication", imp, n_imp, _TNORM_IN)
