@@ -37,3 +37,8 @@ def test_noise_is_seeded_and_bounded():
 def test_bad_ring(bad):
     with pytest.raises(InputError):
         SensorRing(**bad)
+
+
+def test_noise_needs_an_explicit_generator():
+    with pytest.raises(ValueError, match="Generator"):
+        SensorRing(noise_std=0.1).read(World(), np.array([[10.0, 10.0, 0.0]]))

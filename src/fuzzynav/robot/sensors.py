@@ -45,6 +45,6 @@ class SensorRing:
         return int(self.angles.size)
 
     def read(self, world, poses, rng: np.random.Generator | None = None) -> np.ndarray:
-        """Readings ``(N, S)`` for poses ``(N, 3)`` in ``world`` (a :class:`fuzzynav.world.World`)."""
-        noise = self.noise_std if rng is not None else 0.0
-        return world.ranges(poses, self.angles, self.max_range, noise_std=noise, rng=rng)
+        """Readings ``(N, S)`` for poses ``(N, 3)`` in ``world`` (a :class:`fuzzynav.world.World`);
+        a noisy ring needs ``rng``."""
+        return world.ranges(poses, self.angles, self.max_range, noise_std=self.noise_std, rng=rng)

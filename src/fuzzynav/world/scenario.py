@@ -37,7 +37,7 @@ import yaml
 from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
-from fuzzynav.world.shapes import SHAPES, Circle, Ellipse, Polygon, Wall, polygon_self_intersects
+from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
 from fuzzynav.world.world import World
 
 BUILTIN_DIR = Path(__file__).with_name("scenarios")

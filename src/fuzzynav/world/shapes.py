@@ -97,7 +97,6 @@ class Ellipse:
 
 
 Shape = Circle | Polygon | Wall | Ellipse
-SHAPES: dict[str, type] = {"circle": Circle, "polygon": Polygon, "wall": Wall, "ellipse": Ellipse}
 
 
 def polygon_self_intersects(points) -> bool:
