@@ -121,6 +121,18 @@ def test_batch_matches_single_runs():
         np.testing.assert_array_equal(batch.trace(i).behaviour, single.behaviour)
 
 
+def test_batch_path_tracking_keeps_one_waypoint_index_per_robot():
+    scenario = load_scenario("example-path")
+    starts = np.array([[4, 4, 0.0], [4, 8, 1.0], [9, 12, 0.0]])  # the third starts past waypoint 1
+    batch = BatchSimulator(scenario, HeadingController(gain=3.0), starts=starts).run()
+    assert batch.outcomes() == ["reached"] * 3
+    for i, start in enumerate(starts):
+        single = Simulator(scenario, HeadingController(gain=3.0), start=start).run()
+        np.testing.assert_array_equal(batch.trace(i).waypoint_index, single.waypoint_index)
+        np.testing.assert_allclose(batch.trace(i).pose, single.pose)
+    assert batch.trace(0).steps != batch.trace(2).steps
+
+
 def test_stateful_controllers_are_copied_per_robot():
     scenario = goal_world(max_time=1)
     controller = CountingController()
