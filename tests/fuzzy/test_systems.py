@@ -64,7 +64,7 @@ def test_fast_kernel_equals_generic_kernel():
         system = get_system(name)
         lo = np.array([v.universe[0] for v in system.inputs]) - 1
         hi = np.array([v.universe[1] for v in system.inputs]) + 1
-        X = rng.uniform(lo, hi, (5000, 2))
+        X = rng.uniform(lo, hi, (5000, len(system.inputs)))
         fast = system.evaluate(X)
         generic = system._generic(system._batch(X))
         np.testing.assert_allclose(fast, generic, rtol=0, atol=1e-14)

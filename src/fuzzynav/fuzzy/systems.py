@@ -153,6 +153,12 @@ SYSTEMS = {
     "tracking": tracking,
 }
 
+# The range-sensor systems of §IV.7 and §VI.5.3.1 (FOA, ROA, LOA, VRB, wall follower) live in
+# their own module; registered here so every built-in system is found by name.
+from fuzzynav.fuzzy.systems_navigation import SYSTEMS as _NAVIGATION_SYSTEMS  # noqa: E402
+
+SYSTEMS.update(_NAVIGATION_SYSTEMS)
+
 
 def get_system(name: str) -> FuzzySystem:
     """A new instance of the built-in system ``name`` (one of :data:`SYSTEMS`)."""
