@@ -1,0 +1,211 @@
+"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line (issue 2).
+
+NAME is a built-in system (``goal-seeking``, ``obstacle-avoidance``, ``tracking``) or a file
+(``.json``, ``.yaml``/``.yml``, ``.fll``).
+
+    fuzzynav fis show goal-seeking
+    fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3      # JSON on stdout
+    fuzzynav fis eval tracking --csv inputs.csv -o outputs.csv          # one column per input
+    fuzzynav fis convert goal-seeking --to fll -o gs.fll
+    fuzzynav fis plot tracking --surface -o fig-V7.png
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.io import FORMATS, dumps, load
+from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.systems import SYSTEMS, get_system
+
+
+def resolve(name: str) -> FuzzySystem:
+    """A built-in system by name, or the system stored in the file ``name``."""
+    if name in SYSTEMS:
+        return get_system(name)
+    if Path(name).suffix:
+        return load(name)
+    raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}) nor a .json/.yaml/.fll file", field=name)
+
+
+def describe(system: FuzzySystem) -> str:
+    """Variables, terms and the rule base (as a grid when it is a complete two-input table)."""
+    out = [f"{system.name or '(unnamed)'}: {system.description}".rstrip(": "),
+           f"method {system.method}, t-norm {system.tnorm}, defuzzifier {system.defuzzifier}"
+           + (f", implication {system.implication}, aggregation {system.aggregation}, resolution {system.resolution}"
+              if system.method == "mamdani" else "")]
+    for side, variables in (("input", system.inputs), ("output", system.outputs)):
+        for v in variables:
+            out.append(f"{side} {v.name} in [{v.universe[0]:.6g}, {v.universe[1]:.6g}]")
+            out += [f"    {label:<4} {mf.kind} {' '.join(f'{p:.6g}' for p in mf.params())}" for label, mf in v.terms.items()]
+    grid = _grid(system)
+    if grid:
+        out.append(grid)
+    else:
+        out += [f"rule {i + 1}: {rule.text()}" for i, rule in enumerate(system.rules)]
+    return "\n".join(out)
+
+
+def _grid(system: FuzzySystem) -> str | None:
+    """The rule table, if the rules fill a two-input grid exactly once.
+
+    Rows are the input with more terms (the first input on a tie): the layout of Tables IV.1,
+    IV.2 (rows θ, columns distance) and V.1 (rows θ_er, columns dθ_er).
+    """
+    if len(system.inputs) != 2:
+        return None
+    c = system.compiled
+    if (c.premises < 0).any() or (c.weights != 1).any() or (c.conclusions < 0).any():
+        return None
+    row_i = 0 if len(system.inputs[0].terms) >= len(system.inputs[1].terms) else 1
+    col_i = 1 - row_i
+    cols, rows = system.inputs[col_i], system.inputs[row_i]
+    cells: dict[tuple[int, int], str] = {}
+    for r in range(len(system.rules)):
+        key = (int(c.premises[r, row_i]), int(c.premises[r, col_i]))
+        if key in cells:
+            return None
+        cells[key] = "/".join(v.labels[c.conclusions[r, o]] for o, v in enumerate(system.outputs))
+    if len(cells) != len(rows.labels) * len(cols.labels):
+        return None
+    corner = f"{rows.name} \\ {cols.name}"
+    first_width = max(len(corner), *(len(label) for label in rows.labels)) + 2
+    width = max(len(s) for s in list(cells.values()) + cols.labels) + 2
+    lines = [f"rules ({'/'.join(system.output_names)}):",
+             f"{corner:<{first_width}}" + "".join(f"{label:<{width}}" for label in cols.labels)]
+    for i, label in enumerate(rows.labels):
+        lines.append(f"{label:<{first_width}}" + "".join(f"{cells[i, j]:<{width}}" for j in range(len(cols.labels))))
+    return "\n".join(line.rstrip() for line in lines)
+
+
+def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
+    values = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or name not in system.input_names:
+            raise InputError(f"expected NAME=VALUE with NAME in {', '.join(system.input_names)}", field=f"--input {pair}")
+        try:
+            values[name] = float(value)
+        except ValueError:
+            raise InputError(f"{value!r} is not a number", field=f"--input {pair}") from None
+    missing = [n for n in system.input_names if n not in values]
+    if missing:
+        raise InputError(f"missing input(s) {', '.join(missing)}", field="--input")
+    return np.array([[values[n] for n in system.input_names]])
+
+
+def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
+    try:
+        text = sys.stdin.read() if path == "-" else Path(path).read_text(encoding="utf-8")
+    except OSError as error:
+        raise InputError(f"cannot read: {error.strerror or error}", source=path) from None
+    reader = csv.DictReader(io.StringIO(text))
+    header = reader.fieldnames or []
+    missing = [n for n in system.input_names if n not in header]
+    if missing:
+        raise InputError(f"missing column(s) {', '.join(missing)} (header: {', '.join(header)})", source=path,
+                         field="header")
+    rows = []
+    for line, row in enumerate(reader, start=2):
+        try:
+            rows.append([float(row[n]) for n in system.input_names])
+        except (TypeError, ValueError):
+            raise InputError(f"non-numeric value in {dict((n, row[n]) for n in system.input_names)}",
+                             source=path, field=f"line {line}") from None
+    if not rows:
+        raise InputError("no data rows", source=path)
+    return np.array(rows)
+
+
+def _show(args) -> int:
+    print(describe(resolve(args.system)))
+    return 0
+
+
+def _eval(args) -> int:
+    system = resolve(args.system)
+    if args.csv:
+        if args.input:
+            raise InputError("give either --input or --csv", field="--csv")
+        X = _read_csv(system, args.csv)
+        Y = system.evaluate(X)
+        buffer = io.StringIO()
+        writer = csv.writer(buffer, lineterminator="\n")
+        writer.writerow(system.input_names + system.output_names)
+        for x, y in zip(X, Y):
+            writer.writerow([repr(float(v)) for v in (*x, *y)])
+        _write(buffer.getvalue(), args.output)
+        return 0
+    y = system.evaluate(_parse_inputs(system, args.input or []))[0]
+    result = {name: (None if math.isnan(v) else float(v)) for name, v in zip(system.output_names, y)}
+    _write(json.dumps(result) + "\n", args.output)
+    return 0
+
+
+def _convert(args) -> int:
+    _write(dumps(resolve(args.system), args.to), args.output)
+    return 0
+
+
+def _plot(args) -> int:
+    from fuzzynav.fuzzy.plot import plot_surface, plot_system
+
+    system = resolve(args.system)
+    if args.surface:
+        if args.surface_output and args.surface_output not in system.output_names:
+            raise InputError(f"unknown output (one of {', '.join(system.output_names)})", field="--output-variable")
+        try:
+            fig = plot_surface(system, args.surface_output)
+        except ValueError as error:
+            raise InputError(str(error), field="--surface") from None
+    else:
+        fig = plot_system(system)
+    fig.savefig(args.output, dpi=120)
+    print(args.output)
+    return 0
+
+
+def _write(text: str, output: str | None) -> None:
+    if output and output != "-":
+        Path(output).write_text(text, encoding="utf-8")
+    else:
+        sys.stdout.write(text)
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser("fis", help="show, evaluate, convert or plot a fuzzy system",
+                                   description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)
+    target = "built-in name (" + ", ".join(SYSTEMS) + ") or .json/.yaml/.fll file"
+
+    show = sub.add_parser("show", help="variables, terms and rule table")
+    show.add_argument("system", help=target)
+    show.set_defaults(func=_show)
+
+    ev = sub.add_parser("eval", help="evaluate for one input (--input) or a CSV table (--csv)")
+    ev.add_argument("system", help=target)
+    ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
+    ev.add_argument("--csv", metavar="IN.csv", help="CSV with one column per input ('-' = stdin)")
+    ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
+    ev.set_defaults(func=_eval)
+
+    conv = sub.add_parser("convert", help="write the system as FLL, JSON or YAML")
+    conv.add_argument("system", help=target)
+    conv.add_argument("--to", choices=FORMATS, required=True)
+    conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
+    conv.set_defaults(func=_convert)
+
+    plot = sub.add_parser("plot", help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)")
+    plot.add_argument("system", help=target)
+    plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
+    plot.add_argument("--output-variable", dest="surface_output", help="output drawn by --surface")
+    plot.add_argument("-o", "--output", required=True, metavar="FILE.png")
+    plot.set_defaults(func=_plot)

@@ -1,0 +1,80 @@
+"""Plots of fuzzy systems (matplotlib, Agg backend, imported lazily).
+
+- :func:`plot_variable` — the membership functions of a variable, like Figs IV.5–IV.8 and V.4–V.6
+  (singletons drawn as vertical bars).
+- :func:`plot_surface` — the control surface of a two-input system for one output, like Fig V.7.
+- :func:`plot_system` — every variable of a system on one page.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.fuzzy.membership import Linear, Singleton
+from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.variable import Variable
+
+
+def _figure(**kwargs):
+    from matplotlib.figure import Figure  # lazy: the library does not need matplotlib to compute
+
+    return Figure(**kwargs)
+
+
+def plot_variable(variable: Variable, ax=None, samples: int = 801):
+    """Draw the terms of ``variable`` over its universe on ``ax`` (a new figure if None); returns ax."""
+    if ax is None:
+        ax = _figure(figsize=(6, 2.6), layout="constrained").add_subplot()
+    lo, hi = variable.universe
+    x = np.linspace(lo, hi, samples)
+    for label, mf in variable.terms.items():
+        if isinstance(mf, Singleton):
+            line = ax.vlines(mf.value, 0, 1, linewidth=2)
+            ax.annotate(label, (mf.value, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color()[0])
+        elif isinstance(mf, Linear):
+            continue  # an affine conclusion has no shape on the output axis
+        else:
+            (line,) = ax.plot(x, mf(x), linewidth=1.5)
+            peak = x[np.argmax(mf(x))]
+            ax.annotate(label, (peak, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color())
+    pad = 0.03 * (hi - lo) if any(isinstance(mf, Singleton) for mf in variable.terms.values()) else 0.0
+    ax.set_xlim(lo - pad, hi + pad)
+    ax.set_ylim(0, 1.15)
+    ax.set_xlabel(variable.name)
+    ax.set_ylabel(f"μ({variable.name})")
+    return ax
+
+
+def plot_system(system: FuzzySystem):
+    """One row per variable (inputs, then outputs); returns the figure."""
+    variables = system.inputs + system.outputs
+    fig = _figure(figsize=(6, 2.2 * len(variables)), layout="constrained")
+    axes = fig.subplots(len(variables), 1, squeeze=False)[:, 0]
+    for ax, var in zip(axes, variables):
+        plot_variable(var, ax)
+    fig.suptitle(system.name or "fuzzy system")
+    return fig
+
+
+def surface(system: FuzzySystem, output: str | None = None, n: int = 61):
+    """Grid (x1, x2, y) of ``output`` over the universes of a two-input system, (n, n) each."""
+    if len(system.inputs) != 2:
+        raise ValueError(f"a control surface needs exactly two inputs, {system.name!r} has {len(system.inputs)}")
+    o = system.output_names.index(output) if output else 0
+    (a, b), (c, d) = system.inputs[0].universe, system.inputs[1].universe
+    x1, x2 = np.meshgrid(np.linspace(a, b, n), np.linspace(c, d, n))
+    y = system.evaluate(np.column_stack([x1.ravel(), x2.ravel()]))[:, o].reshape(x1.shape)
+    return x1, x2, y
+
+
+def plot_surface(system: FuzzySystem, output: str | None = None, n: int = 61):
+    """3-D control surface of ``output`` (default: the first) over both inputs (Fig V.7); returns the figure."""
+    x1, x2, y = surface(system, output, n)
+    fig = _figure(figsize=(6, 4.5), layout="constrained")
+    ax = fig.add_subplot(projection="3d")
+    ax.plot_surface(x1, x2, y, cmap="viridis", linewidth=0, antialiased=True)
+    ax.set_xlabel(system.input_names[0])
+    ax.set_ylabel(system.input_names[1])
+    ax.set_zlabel(output or system.output_names[0])
+    ax.set_title(f"{system.name or 'fuzzy system'}: control surface")
+    return fig

@@ -1,0 +1,60 @@
+"""``fuzzynav fis show|eval|convert|plot`` end to end, and the plots."""
+
+import json
+
+import numpy as np
+import pytest
+
+from fuzzynav.cli import main
+from fuzzynav.fuzzy.io import load
+from fuzzynav.fuzzy.plot import plot_surface, plot_system, surface
+from fuzzynav.fuzzy.systems import get_system
+
+
+def test_show_prints_the_table_as_printed(capsys):
+    assert main(["fis", "show", "goal-seeking"]) == 0
+    out = capsys.readouterr().out
+    assert "theta \\ drg" in out
+    assert [line.split() for line in out.splitlines() if line.startswith("NM ")][-1] == \
+        ["NM", "PP/Z", "PG/F", "PM/F", "PP/M", "PM/M"]
+
+
+def test_eval_one_input_as_json(capsys):
+    assert main(["fis", "eval", "goal-seeking", "--input", "drg=5.75", "--input", "theta=-0.5"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["alpha"] == pytest.approx(get_system("goal-seeking").evaluate_one(5.75, -0.5)[0])
+    assert main(["fis", "eval", "goal-seeking", "--input", "drg=5"]) == 2
+    assert "missing input(s) theta" in capsys.readouterr().err
+
+
+def test_eval_csv_table(tmp_path, capsys):
+    src = tmp_path / "in.csv"
+    src.write_text("theta_er,dtheta_er\n0.1,0.2\n-3,1\n")
+    dst = tmp_path / "out.csv"
+    assert main(["fis", "eval", "tracking", "--csv", str(src), "-o", str(dst)]) == 0
+    rows = [line.split(",") for line in dst.read_text().splitlines()]
+    assert rows[0] == ["theta_er", "dtheta_er", "alpha"]
+    expected = get_system("tracking").evaluate(np.array([[0.1, 0.2], [-3, 1]]))[:, 0]
+    np.testing.assert_array_equal([float(r[2]) for r in rows[1:]], expected)
+    src.write_text("theta_er,dtheta_er\n0.1,oops\n")
+    assert main(["fis", "eval", "tracking", "--csv", str(src)]) == 2
+    assert "in.csv: line 2: non-numeric" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("fmt", ["fll", "json", "yaml"])
+def test_convert_round_trips_through_files(fmt, tmp_path, capsys):
+    path = tmp_path / f"gs.{fmt}"
+    assert main(["fis", "convert", "goal-seeking", "--to", fmt, "-o", str(path)]) == 0
+    assert load(path) == get_system("goal-seeking")
+    assert main(["fis", "eval", str(path), "--input", "drg=3", "--input", "theta=0.1"]) == 0
+    assert json.loads(capsys.readouterr().out)["v"] == pytest.approx(get_system("goal-seeking").evaluate_one(3, 0.1)[1])
+    assert main(["fis", "show", "nonsense"]) == 2
+
+
+def test_plots(tmp_path):
+    x1, x2, y = surface(get_system("tracking"), n=21)
+    assert y.shape == (21, 21) and y.max() == pytest.approx(np.pi / 4) and y.min() == pytest.approx(-np.pi / 4)
+    assert len(plot_system(get_system("goal-seeking")).axes) == 4
+    plot_surface(get_system("goal-seeking"), "v").savefig(tmp_path / "s.png")
+    assert main(["fis", "plot", "tracking", "--surface", "-o", str(tmp_path / "v7.png")]) == 0
+    assert (tmp_path / "v7.png").stat().st_size > 10_000
