@@ -21,6 +21,7 @@ COMMAND_MODULES: list[str] = [
     "scenarios",
     "train",
     "reproduce",
+    "fis",
 ]
 
 
