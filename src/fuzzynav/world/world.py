@@ -50,15 +50,23 @@ class World:
             "seg_b": seg_b,
             "seg_owner": owner,
         }
+        # bounding discs for the broad phase: segments (midpoint, half length), ellipses (major)
+        packed["seg_mid"] = 0.5 * (seg_a + seg_b)
+        packed["seg_half"] = 0.5 * np.hypot(*(seg_b - seg_a).T) if len(seg_a) else np.zeros(0)
+        packed["ellipse_reach"] = packed["ellipse_radii"].max(axis=1) if ellipses else np.zeros(0)
         order = np.concatenate([packed["circle_index"], packed["polygon_index"], packed["ellipse_index"]])
         packed["order"] = order.astype(int)  # column k of the (N, K) distance matrix -> obstacle index
         object.__setattr__(self, "_packed", packed)
 
     # -- distances ---------------------------------------------------------------------------
-    def _distances(self, points):
+    def _distances(self, points, prune: bool = False):
         """Signed distances ``(N, K)`` to every obstacle (columns in ``_packed["order"]``: circles,
         polygons and walls, ellipses) and a function giving the nearest surface points
-        ``(N, 2)`` for one chosen column per point."""
+        ``(N, 2)`` for one chosen column per point.
+
+        With ``prune``, ellipses that cannot be the nearest obstacle of any point (their bounding
+        disc is farther than another obstacle) skip the iterative foot-point solve and get a
+        lower bound instead: the row minima stay exact, the other entries do not."""
         p = self._packed
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         n = len(points)
@@ -89,10 +97,19 @@ class World:
             pickers.append((len(starts), polygon_points))
         if len(p["ellipse_angle"]):
             local = collision.ellipse_frame(points, p["ellipse_center"], p["ellipse_angle"])
-            foot = collision.ellipse_nearest(local, p["ellipse_radii"])
+            lower = np.hypot(local[..., 0], local[..., 1]) - p["ellipse_reach"][None]
+            need = np.arange(len(p["ellipse_angle"]))
+            if prune and dist:
+                others = np.min([d.min(axis=1) for d in dist], axis=0)
+                need = np.flatnonzero(np.any(lower < others[:, None], axis=0))
+            foot = np.full(local.shape, np.nan)
+            foot[:, need] = collision.ellipse_nearest(local[:, need], p["ellipse_radii"][need])
             gap = np.hypot(local[..., 0] - foot[..., 0], local[..., 1] - foot[..., 1])
             inside = np.sum((local / p["ellipse_radii"][None]) ** 2, axis=-1) < 1.0
-            dist.append(np.where(inside, -gap, gap))
+            signed = np.where(inside, -gap, gap)
+            skipped = np.setdiff1d(np.arange(signed.shape[1]), need)
+            signed[:, skipped] = lower[:, skipped]
+            dist.append(signed)
 
             def ellipse_points(rows, k, foot=foot):
                 f = foot[rows, k]
@@ -126,7 +143,7 @@ class World:
         """Nearest obstacle (boundary excluded) to each point: ``(distance (N,), point (N, 2),
         index (N,))`` — signed distance to its surface (inf / nan / −1 in a world without
         obstacles). D_ro and θ_o of Table IV.2 are measured to this point."""
-        dist, nearest_points = self._distances(points)
+        dist, nearest_points = self._distances(points, prune=True)
         n = dist.shape[0]
         if dist.shape[1] == 0:
             return np.full(n, np.inf), np.full((n, 2), np.nan), np.full(n, -1)
@@ -174,12 +191,23 @@ class World:
         origins = np.repeat(poses[:, :2], s, axis=0)
         p = self._packed
         best = collision.ray_box(origins, directions, self.width, self.height)
-        if len(p["circle_radius"]):
-            best = np.minimum(best, collision.ray_circles(origins, directions, p["circle_center"], p["circle_radius"]).min(axis=1))
-        if len(p["seg_a"]):
-            best = np.minimum(best, collision.ray_segments(origins, directions, p["seg_a"], p["seg_b"]).min(axis=1))
-        if len(p["ellipse_angle"]):
-            hits = collision.ray_ellipses(origins, directions, p["ellipse_center"], p["ellipse_radii"], p["ellipse_angle"])
+
+        def reachable(centers, radii):  # broad phase: shapes whose bounding disc some robot reaches
+            gap = np.hypot(poses[:, None, 0] - centers[None, :, 0], poses[:, None, 1] - centers[None, :, 1])
+            return np.flatnonzero(np.any(gap - radii[None, :] < max_range, axis=0))
+
+        k = reachable(p["circle_center"], p["circle_radius"])
+        if len(k):
+            hits = collision.ray_circles(origins, directions, p["circle_center"][k], p["circle_radius"][k])
+            best = np.minimum(best, hits.min(axis=1))
+        k = reachable(p["seg_mid"], p["seg_half"])
+        if len(k):
+            hits = collision.ray_segments(origins, directions, p["seg_a"][k], p["seg_b"][k])
+            best = np.minimum(best, hits.min(axis=1))
+        k = reachable(p["ellipse_center"], p["ellipse_reach"])
+        if len(k):
+            hits = collision.ray_ellipses(origins, directions, p["ellipse_center"][k], p["ellipse_radii"][k],
+                                          p["ellipse_angle"][k])
             best = np.minimum(best, hits.min(axis=1))
         readings = np.minimum(best, max_range).reshape(n, s)
         if noise_std > 0.0:
