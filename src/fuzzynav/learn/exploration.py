@@ -36,17 +36,29 @@ from fuzzynav.learn.schedules import (
 )
 
 
-def greedy_choice(q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-    """Index of the largest value of each row of ``q``; exact ties broken uniformly at random."""
+def _shape(q: np.ndarray, batch: int | None) -> tuple[int, ...]:
+    """Shape of the choices: one per row of ``q``, for each of ``batch`` copies if given."""
+    return q.shape[:-1] if batch is None else (int(batch),) + q.shape[:-1]
+
+
+def greedy_choice(q: np.ndarray, rng: np.random.Generator, batch: int | None = None) -> np.ndarray:
+    """Index of the largest value of each row of ``q``; exact ties broken uniformly at random.
+
+    With ``batch``, ``q`` is shared by ``batch`` rows of choices (result (batch,) + q.shape[:-1]),
+    each breaking ties independently; randomness is drawn only when some row has a tie.
+    """
     q = np.asarray(q, dtype=float)
     ties = q >= q.max(axis=-1, keepdims=True)
-    return np.argmax(rng.random(q.shape) * ties, axis=-1)
+    shape = _shape(q, batch)
+    if ties.sum() == ties.size // q.shape[-1]:  # no ties anywhere: the plain argmax
+        return np.broadcast_to(np.argmax(q, axis=-1), shape)
+    return np.argmax(rng.random(shape + q.shape[-1:]) * ties, axis=-1)
 
 
-def sample_rows(p: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+def sample_rows(p: np.ndarray, rng: np.random.Generator, batch: int | None = None) -> np.ndarray:
     """One index per row of (unnormalised, non-negative) probabilities ``p`` by inverse CDF."""
     cumulative = np.cumsum(p, axis=-1)
-    u = rng.random(p.shape[:-1] + (1,)) * cumulative[..., -1:]
+    u = rng.random(_shape(p, batch) + (1,)) * cumulative[..., -1:]
     return np.minimum((cumulative <= u).sum(axis=-1), p.shape[-1] - 1)
 
 
@@ -59,9 +71,14 @@ class Policy:
         """Probability of each action, same shape as ``q``."""
         raise NotImplementedError
 
-    def choose(self, q: np.ndarray, rng: np.random.Generator, t: float = 0) -> np.ndarray:
-        """One action index per row of ``q`` (shape ``q.shape[:-1]``)."""
-        return sample_rows(self.probabilities(q, t), rng)
+    def choose(self, q: np.ndarray, rng: np.random.Generator, t: float = 0,
+               batch: int | None = None) -> np.ndarray:
+        """One action index per row of ``q`` (shape ``q.shape[:-1]``).
+
+        With ``batch``, the same values ``q`` serve ``batch`` independent rows of choices
+        (shape ``(batch,) + q.shape[:-1]``) — a shared table computed once, not copied.
+        """
+        return sample_rows(self.probabilities(q, t), rng, batch)
 
     def to_dict(self) -> dict:
         """JSON-safe form, for checkpoints."""
@@ -82,8 +99,8 @@ class Greedy(Policy):
         ties = (q >= q.max(axis=-1, keepdims=True)).astype(float)
         return ties / ties.sum(axis=-1, keepdims=True)
 
-    def choose(self, q, rng, t=0):
-        return greedy_choice(q, rng)
+    def choose(self, q, rng, t=0, batch=None):
+        return greedy_choice(q, rng, batch)
 
 
 @dataclass
@@ -101,12 +118,16 @@ class EpsilonGreedy(Policy):
         eps = float(self.epsilon(t))
         return eps / q.shape[-1] + (1.0 - eps) * Greedy().probabilities(q)
 
-    def choose(self, q, rng, t=0):
+    def choose(self, q, rng, t=0, batch=None):
+        """One uniform u per choice: explore when u < ε, then ⌊u / ε · N⌋ is the random action."""
         q = np.asarray(q, dtype=float)
-        shape = q.shape[:-1]
-        explore = rng.random(shape) < float(self.epsilon(t))
-        random_action = rng.integers(q.shape[-1], size=shape)
-        return np.where(explore, random_action, greedy_choice(q, rng))
+        eps = float(self.epsilon(t))
+        greedy = greedy_choice(q, rng, batch)
+        if eps <= 0.0:
+            return greedy
+        u = rng.random(_shape(q, batch))
+        random_action = np.minimum((u * (q.shape[-1] / eps)).astype(int), q.shape[-1] - 1)
+        return np.where(u < eps, random_action, greedy)
 
 
 @dataclass

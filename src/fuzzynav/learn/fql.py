@@ -140,14 +140,10 @@ class FuzzyQLearner:
         """Length of an action vector: heads × conclusion size."""
         return self.candidates.shape[0] * self.candidates.shape[3]
 
-    def _tables(self, batch: int) -> np.ndarray:
-        """Qualities seen by each batch row, (B, H, R, N) (a broadcast view when shared)."""
-        if self.n_learners == batch:
-            return self.q
-        if self.n_learners == 1:
-            return np.broadcast_to(self.q, (batch,) + self.q.shape[1:])
-        raise InputError(f"a batch of {batch} rows needs 1 or {batch} learners, the learner has "
-                         f"{self.n_learners}", field="batch")
+    def _check_batch(self, batch: int) -> None:
+        if self.n_learners not in (1, batch):
+            raise InputError(f"a batch of {batch} rows needs 1 or {batch} learners, the learner has "
+                             f"{self.n_learners}", field="batch")
 
     def strengths(self, X) -> np.ndarray:
         """Firing strengths w (B, R) of the premise for inputs X (B, n_in)."""
@@ -166,9 +162,15 @@ class FuzzyQLearner:
         return np.einsum("bhrn,hrnd->bhd", shares, self.candidates).reshape(shares.shape[0], -1)
 
     def _choose(self, w, rng) -> np.ndarray:
-        tables = self._tables(w.shape[0])
-        self._shares_now = self._shares(w, self.policy.choose(tables, rng, self.episode))
-        self._quality = (self._shares_now * tables).sum(axis=(2, 3))  # Q(s, A), eq VI.11
+        self._check_batch(w.shape[0])
+        if self.n_learners == 1:  # one table shared by every row: choose on it without copying
+            j = self.policy.choose(self.q[0], rng, self.episode, batch=w.shape[0])
+            self._shares_now = self._shares(w, j)
+            self._quality = np.einsum("bhrn,hrn->bh", self._shares_now, self.q[0])  # Q(s, A), VI.11
+        else:
+            j = self.policy.choose(self.q, rng, self.episode)
+            self._shares_now = self._shares(w, j)
+            self._quality = np.einsum("bhrn,bhrn->bh", self._shares_now, self.q)
         return self._infer(self._shares_now)
 
     def begin(self, X, rng: np.random.Generator) -> np.ndarray:
@@ -181,26 +183,30 @@ class FuzzyQLearner:
         """Learn from the last actions' outcome (rewards (B,) or (B, H)); return the next actions."""
         w_next = self.strengths(X_next)
         batch = w_next.shape[0]
-        tables = self._tables(batch)
         live = np.ones(batch) if active is None else np.asarray(active, dtype=float)
         bootstrap = self.gamma * (1.0 - np.asarray(terminated, dtype=float))
-        v_star = np.einsum("br,bhr->bh", w_next, tables.max(axis=-1))
+        best = self.q.max(axis=-1)
+        v_star = (np.einsum("br,hr->bh", w_next, best[0]) if self.n_learners == 1
+                  else np.einsum("br,bhr->bh", w_next, best))
         r = np.asarray(r, dtype=float).reshape(batch, -1)
         delta = (r + bootstrap[:, None] * v_star - self._quality) * live[:, None]
         credit = self._shares_now * live[:, None, None, None]
-        self._traces *= self.gamma * self.lam
-        self._traces += credit
-        change = delta[:, :, None, None] * self._traces
+        if self.lam > 0.0:
+            self._traces *= self.gamma * self.lam
+            self._traces += credit
+        else:
+            self._traces = credit
+        shared = self.n_learners == 1
         if self.alpha.per_visit:
-            change *= self.alpha(self.visits if self.n_learners == batch else self.visits[0])
+            change = delta[:, :, None, None] * self._traces * self.alpha(self.visits)
+            self.q += change.sum(axis=0) if shared else change
         else:
-            change *= float(self.alpha(self.episode))
-        if self.n_learners == batch:
-            self.q += change
-            self.visits += credit
-        else:
-            self.q[0] += change.sum(axis=0)
-            self.visits[0] += credit.sum(axis=0)
+            delta *= float(self.alpha(self.episode))
+            if shared:
+                self.q[0] += np.einsum("bh,bhrn->hrn", delta, self._traces)
+            else:
+                self.q += delta[:, :, None, None] * self._traces
+        self.visits += credit.sum(axis=0) if shared else credit
         return self._choose(w_next, rng)
 
     def end_episode(self) -> None:
