@@ -1,0 +1,160 @@
+"""Trajectory trackers of chapter V: fuzzy (CF), neural (CN) and neuro-fuzzy ANFIS (CNF) (§V.3).
+
+The robot aims at a point — the current waypoint of a path (the simulator switches waypoints
+inside the tolerance zone, §V.2) or a moving target (§V.5) — at constant speed; the only command
+is the steering α. With e_x = x_p − x_r, e_y = y_p − y_r, θ_d = atan2(e_y, e_x) (eqs V.1–V.3),
+the angular error fed to the thesis' controllers is θ_er = θ_r − θ_d (eq V.4 with the sign of
+SPEC §0, :func:`~fuzzynav.control.base.thesis_angle_error`).
+
+- :class:`FuzzyTracker` (``fuzzy-tracker``): Table V.1 on (θ_er, dθ_er), dθ_er the change of
+  θ_er over one step (§V.3.1, Figs V.3–V.7).
+- :class:`ModelTracker` (``neural-tracker``, ``anfis-tracker``): a learned inverse model
+  α = f(θ_er) of one input (§V.3.2, §V.3.5); the input is clamped to the range the model was
+  trained on, so the command saturates instead of extrapolating.
+
+Corner anticipation (an addition to the thesis; ``corner_radius = 0`` is the thesis' tracker):
+the thesis switches to the next waypoint inside a fixed tolerance zone, too late for a sharp
+corner (the robot overshoots) and too early for a gentle one (it cuts). With ``corner_radius``
+R > 0 the tracker keeps its own waypoint index and switches to waypoint k + 1 once the distance
+left to waypoint k along the incoming segment is at most R·tan(|φ_k| / 2) + V·Δt, φ_k the
+heading change at k: where an arc of radius R tangent to both segments would begin, plus the
+distance driven before a new command acts. R = 0.45 m (just inside the tightest turn
+l / tan(π/4) = 0.5 m of the default robot) was chosen on the V, N and trapezoid paths of the
+comparison (benchmarks/tracking_bench.py). The scenario's tolerance zone must then be large
+enough for the robot to pass through it (≥ 0.85 m on the 135° corners of the N path).
+"""
+
+from __future__ import annotations
+
+from abc import abstractmethod
+
+import numpy as np
+
+from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.systems import tracking
+from fuzzynav.world.geometry import wrap_angle
+
+DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the issue's comparison
+DEFAULT_CORNER_RADIUS = 0.45  # m, see the module docstring
+
+
+def corner_leads(path: np.ndarray, radius: float, lag: float = 0.0) -> np.ndarray:
+    """Switching distance ``(n,)`` before every waypoint: R·tan(|φ_k| / 2) + lag at interior ones, 0 at the ends."""
+    lead = np.zeros(len(path))
+    if len(path) > 2:
+        d = np.diff(path, axis=0)
+        h = np.arctan2(d[:, 1], d[:, 0])
+        lead[1:-1] = radius * np.tan(np.abs(wrap_angle(np.diff(h))) / 2.0) + lag
+    return lead
+
+
+class AngleErrorTracker(Controller):
+    """Base of the chapter V trackers: θ_er (and its change) → α, constant ``speed``.
+
+    Subclasses implement :meth:`steering` on arrays. Works on batches (``act_batch``) and on one
+    robot (``act``); the state is the previous θ_er and the anticipating waypoint index of
+    every robot.
+    """
+
+    label = "track"
+
+    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS):
+        if not (np.isfinite(speed) and speed > 0):
+            raise InputError(f"must be a finite number > 0, got {speed!r}", field="speed")
+        if not (np.isfinite(corner_radius) and corner_radius >= 0):
+            raise InputError(f"must be a finite number >= 0, got {corner_radius!r}", field="corner_radius")
+        self.speed = float(speed)
+        self.corner_radius = float(corner_radius)
+        self._previous = None
+        self._index = None
+
+    def reset(self, rng: np.random.Generator | None = None) -> None:
+        self._previous = None
+        self._index = None
+
+    @abstractmethod
+    def steering(self, theta_er: np.ndarray, dtheta_er: np.ndarray) -> np.ndarray:
+        """Steering α ``(N,)`` (rad, > 0 left) from θ_er and dθ_er ``(N,)`` (thesis sign)."""
+
+    def aim_points(self, obs) -> np.ndarray:
+        """Point ``(N, 2)`` aimed at: ``obs.target``, or with corner anticipation on a path the
+        waypoint of the tracker's own index (advanced as described in the module docstring)."""
+        target = np.atleast_2d(obs.target)
+        if obs.path is None or self.corner_radius == 0:
+            return target
+        path, xy = obs.path, np.atleast_2d(obs.pose)[:, :2]
+        if self._index is None or len(self._index) != len(xy):
+            self._index = np.atleast_1d(obs.waypoint_index).copy()
+        lead = corner_leads(path, self.corner_radius, self.speed * obs.dt)
+        for _ in range(len(path)):
+            k = self._index
+            incoming = path[k] - path[np.maximum(k - 1, 0)]
+            tangent = incoming / np.maximum(np.hypot(*incoming.T), 1e-12)[:, None]
+            remaining = np.einsum("ij,ij->i", path[k] - xy, tangent)
+            advance = (k >= 1) & (k < len(path) - 1) & (remaining <= lead[k])
+            if not advance.any():
+                break
+            self._index = k + advance
+        return path[self._index]
+
+    def act_batch(self, obs):
+        pose = np.atleast_2d(obs.pose)
+        d = self.aim_points(obs) - pose[:, :2]
+        theta_er = thesis_angle_error(np.arctan2(d[:, 1], d[:, 0]) - pose[:, 2])
+        fresh = self._previous is None or len(self._previous) != len(theta_er)
+        dtheta_er = np.zeros_like(theta_er) if fresh else wrap_angle(theta_er - self._previous)
+        self._previous = theta_er
+        alpha = self.steering(theta_er, dtheta_er)
+        return alpha, np.full(len(alpha), self.speed), [self.label] * len(alpha)
+
+    def act(self, obs) -> Command:
+        alpha, speed, _ = self.act_batch(obs)
+        return Command(float(alpha[0]), float(speed[0]), self.label)
+
+
+class FuzzyTracker(AngleErrorTracker):
+    """Fuzzy tracker CF, §V.3.1: Table V.1 (25 rules, TS0, product, weighted sum) on (θ_er, dθ_er).
+
+    ``system`` defaults to :func:`fuzzynav.fuzzy.systems.tracking` (Figs V.4–V.6); any system
+    with inputs (θ_er, dθ_er) and output α can be passed (e.g. an edited rule table).
+    """
+
+    name = "fuzzy-tracker"
+
+    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS, system=None):
+        super().__init__(speed, corner_radius)
+        self.system = system if system is not None else tracking()
+
+    def steering(self, theta_er, dtheta_er):
+        return self.system.evaluate(np.column_stack([theta_er, dtheta_er]))[:, 0]
+
+
+class ModelTracker(AngleErrorTracker):
+    """A learned inverse model α = f(θ_er) (neural CN §V.3.2, ANFIS CNF §V.3.5).
+
+    ``model`` maps an array ``(N, 1)`` of θ_er to α ``(N,)`` (an estimator's ``predict``);
+    θ_er is clamped to ``input_range`` (the span of the training data) before prediction, and α
+    to ±``max_steering``.
+    """
+
+    def __init__(self, model, input_range, *, name: str, speed: float = DEFAULT_SPEED,
+                 corner_radius: float = DEFAULT_CORNER_RADIUS, max_steering: float = np.pi / 4):
+        super().__init__(speed, corner_radius)
+        lo, hi = (float(v) for v in input_range)
+        if not lo < hi:
+            raise InputError(f"must be an increasing pair, got {input_range!r}", field="input_range")
+        self.model = model
+        self.input_range = (lo, hi)
+        self.max_steering = float(max_steering)
+        self.name = name
+
+    def steering(self, theta_er, dtheta_er):
+        x = np.clip(theta_er, *self.input_range).reshape(-1, 1)
+        alpha = np.asarray(self.model.predict(x), dtype=float).reshape(-1)
+        return np.clip(alpha, -self.max_steering, self.max_steering)
+
+
+def fuzzy_tracker(**options) -> FuzzyTracker:
+    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``system``)."""
+    return FuzzyTracker(**options)
