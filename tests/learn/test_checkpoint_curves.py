@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.errors import InputError
-from fuzzynav.learn.curves import episodes_to_converge, moving_average, plateau
+from fuzzynav.learn.curves import episodes_to_converge, moving_average, plateau, records
 from fuzzynav.viz.curves import plot_learning_curve
 
 
@@ -57,3 +57,12 @@ def test_plot_learning_curve(tmp_path):
     assert len(single.axes[0].get_lines()) == 2
     with pytest.raises(InputError, match="curve"):
         plot_learning_curve(np.zeros((2, 2, 2)))
+
+
+def test_records_from_a_train_loop_curve():
+    curve = {"mean_reward": [[[1.0, 3.0], [2.0, 4.0]], [[0.0, 2.0], [1.0, 1.0]]], "steps": [[5, 6], [7, 8]]}
+    assert records(curve).tolist() == [[2.0, 3.0], [1.0, 1.0]]
+    assert records(curve, head=1).tolist() == [[3.0, 4.0], [2.0, 1.0]]
+    assert records(curve, "steps").ravel().tolist() == [5, 6, 7, 8]
+    with pytest.raises(InputError, match="success"):
+        records(curve, "success")

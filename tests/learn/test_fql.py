@@ -146,3 +146,11 @@ def test_round_trip_and_bad_input():
         FuzzyQLearner(line_premise(), MOVES, prior=3)
     with pytest.raises(InputError, match="batch"):
         make(rows=3).begin(np.zeros((2, 1)), np.random.default_rng(0))
+
+
+def test_reward_columns_must_match_the_heads():
+    learner = make(rows=2)
+    rng = np.random.default_rng(0)
+    learner.begin(np.zeros((2, 1)), rng)
+    with pytest.raises(InputError, match="reward"):
+        learner.step(np.zeros((2, 3)), np.zeros((2, 1)), np.zeros(2, dtype=bool), rng)

@@ -23,6 +23,21 @@ import numpy as np
 from fuzzynav.errors import InputError
 
 
+def records(curve: dict, field: str = "mean_reward", head: int | None = None) -> np.ndarray:
+    """One field of a :func:`fuzzynav.learn.checkpoint.train_loop` curve as an array (batches, B).
+
+    Rows of a batch are independent learners (seeds) or, for a shared learner, consecutive
+    episodes (flatten with ``.ravel()`` to get them in order). ``head`` picks one reward column
+    of a multi-head learner (default: the mean over heads).
+    """
+    if field not in curve:
+        raise InputError(f"no {field!r} in the curve (has {', '.join(curve)})", field=field)
+    values = np.asarray(curve[field], dtype=float)
+    if values.ndim == 3:
+        values = values.mean(axis=2) if head is None else values[:, :, head]
+    return values
+
+
 def moving_average(values, window: int) -> np.ndarray:
     """Trailing mean over ``window`` episodes (the first entries average what exists so far)."""
     values = np.asarray(values, dtype=float)

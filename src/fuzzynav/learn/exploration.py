@@ -51,7 +51,8 @@ def greedy_choice(q: np.ndarray, rng: np.random.Generator, batch: int | None = N
     ties = q >= q.max(axis=-1, keepdims=True)
     shape = _shape(q, batch)
     if ties.sum() == ties.size // q.shape[-1]:  # no ties anywhere: the plain argmax
-        return np.broadcast_to(np.argmax(q, axis=-1), shape)
+        best = np.argmax(q, axis=-1)
+        return best if batch is None else np.repeat(best[None], batch, axis=0)
     return np.argmax(rng.random(shape + q.shape[-1:]) * ties, axis=-1)
 
 

@@ -189,6 +189,9 @@ class FuzzyQLearner:
         v_star = (np.einsum("br,hr->bh", w_next, best[0]) if self.n_learners == 1
                   else np.einsum("br,bhr->bh", w_next, best))
         r = np.asarray(r, dtype=float).reshape(batch, -1)
+        if r.shape[1] not in (1, self.q.shape[1]):
+            raise InputError(f"rewards need 1 or {self.q.shape[1]} columns (one per head), got {r.shape[1]}",
+                             field="reward")
         delta = (r + bootstrap[:, None] * v_star - self._quality) * live[:, None]
         credit = self._shares_now * live[:, None, None, None]
         if self.lam > 0.0:
