@@ -7,7 +7,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import FuzzySystem, Singleton, Variable, strong_partition
 from fuzzynav.learn.checkpoint import train_loop
 from fuzzynav.learn.exploration import EpsilonGreedy
-from fuzzynav.learn.fql import FuzzyQLearner
+from fuzzynav.learn.fql import FuzzyQLearner, extract_system
 from fuzzynav.learn.schedules import InverseVisits
 
 LABELS = ("NG", "NP", "Z", "PP", "PG")
@@ -154,3 +154,20 @@ def test_reward_columns_must_match_the_heads():
     learner.begin(np.zeros((2, 1)), rng)
     with pytest.raises(InputError, match="reward"):
         learner.step(np.zeros((2, 3)), np.zeros((2, 1)), np.zeros(2, dtype=bool), rng)
+
+
+def test_extracted_system_is_an_ordinary_fuzzy_controller():
+    learner = make(rows=2)
+    learner.q[:, 0] = np.eye(3)[BEST_MOVE]  # rule i prefers candidate BEST_MOVE[i]
+    learner.q[:, 1] = np.eye(3)[BEST_LEVEL]
+    system = extract_system(learner, ["u", "level"], learner_index=1)
+    x = np.linspace(-1.5, 1.5, 13)[:, None]
+    np.testing.assert_allclose(system.evaluate(x), learner.greedy_action(x, learner=1))
+    assert [str(rule) for rule in system.rules][0] == "IF x IS NG THEN u IS c2 AND level IS c2"
+    named = Variable("u", (-1, 1), {"L": Singleton(-0.25), "S": Singleton(0.0), "R": Singleton(0.25)})
+    system = extract_system(learner, [named, "level"])
+    assert [rule.conclusions[0][1] for rule in system.rules] == ["R", "R", "S", "L", "L"]
+    with pytest.raises(InputError, match="outputs"):
+        extract_system(learner, ["u"])
+    with pytest.raises(InputError, match="premise"):
+        extract_system(FuzzyQLearner(TwoRules(), MOVES), ["u"])
