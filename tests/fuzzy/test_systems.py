@@ -111,3 +111,25 @@ def test_unknown_names_are_reported():
                     ["IF speed IS NG THEN alpha IS Z"])
     with pytest.raises(InputError, match="unknown fuzzy system"):
         get_system("nope")
+
+
+def test_fast_kernel_three_inputs_partial_weighted_rules():
+    # rules that skip an input, weights, weighted average, trapezoids
+    from fuzzynav.fuzzy import Trapezoidal
+
+    a = Variable("a", (0.0, 4.0), {"P": Trapezoidal(0, 0, 0.5, 1), "M": Trapezoidal(0.5, 1, 2.8, 4),
+                                   "G": Trapezoidal(2.8, 4, math.inf, math.inf)})
+    b = Variable("b", (-1.0, 1.0), strong_partition([-1.0, 0.2, 1.0], ["N", "Z", "P"]))
+    c = Variable("c", (0.0, 10.0), strong_partition([1.0, 9.0], ["L", "H"]))
+    y = Variable("y", (-2.0, 2.0), {"lo": Singleton(-2.0), "mid": Singleton(0.5), "hi": Singleton(2.0)})
+    rules = ["IF a IS P AND b IS N THEN y IS lo", "IF a IS M THEN y IS mid WITH 0.3",
+             "IF b IS P AND c IS H THEN y IS hi WITH 0.8", "IF a IS G AND b IS Z AND c IS L THEN y IS lo"]
+    X = np.random.default_rng(5).uniform([-1, -2, -1], [5, 2, 11], (3000, 3))
+    for tnorm in ("product", "min"):
+        fs = FuzzySystem([a, b, c], [y], rules, tnorm=tnorm, defuzzifier="weighted_average")
+        # a rule skipping input c sums over c's terms in the fast table: exact for product only
+        assert fs.fast == (tnorm == "product")
+        generic = fs._generic(fs._batch(X))
+        np.testing.assert_allclose(fs.evaluate(X), generic, rtol=0, atol=1e-12, equal_nan=True)
+        one = np.array([fs.evaluate_one(*x) for x in X[:300]])
+        np.testing.assert_allclose(one, generic[:300], rtol=0, atol=1e-12, equal_nan=True)

@@ -6,7 +6,10 @@ between the breakpoints of its variable. One bisection per input finds the inter
 terms that are non-zero on it fire (two for a strong triangular partition), so a two-input grid
 evaluates 2 × 2 = 4 of its 35 rules instead of all. The rule base is folded into a dense table
 over the term grid: ``num[o][cell] = Σ_r weight_r b_ro`` and ``den[o][cell] = Σ_r weight_r`` over
-the rules r whose premises select ``cell`` (an input a rule leaves out selects all its terms).
+the rules r whose premises select ``cell`` (an input a rule leaves out selects all its terms,
+which is exact only for the product T-norm over a strong partition of that input; otherwise the
+generic kernel runs). With the product T-norm the output is multilinear inside each cell of the
+breakpoint grid, and the kernel evaluates that polynomial directly.
 
 The same kernel serves the batch path (NumPy, ``evaluate``) and a plain-Python scalar path
 (``evaluate_one``, a few microseconds). Results equal the generic kernels of
@@ -17,13 +20,17 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_right
+from operator import mul
 
 import numpy as np
 
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import Trapezoidal
+from fuzzynav.fuzzy.partition import check_strong_partition
 
 MAX_TABLE_CELLS = 1 << 20
 MAX_LOOKUP_CELLS = 1 << 16
+MAX_MULTILINEAR_INPUTS = 6
 _CHECK_FRACTIONS = np.array([0.25, 0.5, 0.75])
 
 
@@ -35,6 +42,7 @@ class _InputPartition:
         inner = {b for mf in variable.terms.values() for b in mf.breakpoints() if lo < b < hi}
         self.bp = np.array(sorted(inner | {lo, hi}))
         self.lo, self.hi = lo, hi
+        self.name = variable.name
         mu = variable.fuzzify(self.bp, clamp=False)  # (n_bp, n_terms)
         left, right = mu[:-1], mu[1:]
         active = [np.flatnonzero((left[k] > 0) | (right[k] > 0)) for k in range(len(self.bp) - 1)]
@@ -128,6 +136,38 @@ class StrongPartitionKernel:
         self.num, self.den = num, den
         self.num_list = [row.tolist() for row in num]
         self.den_list = [row.tolist() for row in den]
+        self.multilinear = self.product and len(self.parts) <= MAX_MULTILINEAR_INPUTS
+        if self.multilinear:
+            self._build_multilinear()
+
+    def _build_multilinear(self) -> None:
+        """Per interval cell, the coefficients c_S of y = Σ_S c_S Π_{i∈S} t_i (S ⊆ inputs).
+
+        With the product T-norm every firing strength is a product of memberships that are affine
+        in each t_i inside a cell, so numerator and denominator of the TS0 output are multilinear
+        there, fixed by their values at the cell corners (the breakpoint grid). The coefficients
+        are those corner values' finite differences, one axis at a time.
+        """
+        shape = [len(p.bp) for p in self.parts]
+        nodes = np.stack(np.meshgrid(*[p.bp for p in self.parts], indexing="ij"), axis=-1).reshape(-1, len(shape))
+        num, den = self._accumulate(np.ascontiguousarray(nodes.T))
+        self.istride = [int(np.prod([p.n_int for p in self.parts[i + 1 :]], dtype=np.int64))
+                        for i in range(len(self.parts))]
+
+        def coefficients(values: np.ndarray) -> np.ndarray:
+            coefs = {0: values.reshape(shape)}
+            for axis in range(len(shape)):
+                split = {}
+                for subset, arr in coefs.items():
+                    split[subset] = np.delete(arr, -1, axis=axis)
+                    split[subset | (1 << axis)] = np.diff(arr, axis=axis)
+                coefs = split
+            return np.stack([coefs[subset].ravel() for subset in range(1 << len(shape))])  # (2^n, n_cells)
+
+        self.coef_num = [coefficients(row) for row in num]
+        self.coef_den = [coefficients(row) for row in den] if self.average else None
+        self.coef_num_rows = [list(map(tuple, c.T.tolist())) for c in self.coef_num]
+        self.coef_den_rows = [list(map(tuple, c.T.tolist())) for c in self.coef_den] if self.average else None
 
     @classmethod
     def build(cls, system) -> StrongPartitionKernel | None:
@@ -138,52 +178,105 @@ class StrongPartitionKernel:
         if n_cells > MAX_TABLE_CELLS or not all(_InputPartition.exact_for(v) for v in system.inputs):
             return None
         c = system.compiled
+        # a rule that ignores input i is spread over all of i's terms in the table: exact only if
+        # Σ_j μ_ij = 1 (strong partition) and the T-norm is the product
+        skipped = [v for i, v in enumerate(system.inputs) if (c.premises[:, i] < 0).any()]
+        if skipped and (system.tnorm != "product" or not all(check_strong_partition(v).strong for v in skipped)):
+            return None
         return cls(system.inputs, c.premises, c.conclusions, c.weights, c.values, system.tnorm, system.defuzzifier)
 
-    def evaluate(self, X: np.ndarray) -> np.ndarray:
-        """Batch: inputs (N, n_in), clamped here column by column -> outputs (N, n_out).
+    def _locate(self, p: _InputPartition, x: np.ndarray):
+        """Clamp ``x`` in place; its interval index k and position t in [0, 1] inside it."""
+        np.maximum(x, p.lo, out=x)
+        np.minimum(x, p.hi, out=x)
+        k = p.locate(x)
+        return k, (x - np.take(p.bp, k)) * np.take(p.inv_width, k)
+
+    def _accumulate(self, columns: np.ndarray):
+        """Σ_cells f·num and Σ_cells f·den over the active term combinations, (n_out, N) each.
 
         Written as 1-D ``np.take`` gathers and element-wise operations on contiguous columns,
-        the fastest NumPy idiom for this (2-D fancy indexing and small-axis reductions are
-        several times slower).
+        the fastest NumPy idiom here (2-D fancy indexing and small-axis reductions are slower).
         """
-        n = X.shape[0]
-        columns = np.ascontiguousarray(X.T)
+        n = columns.shape[1]
         combos = [(None, None)]  # (cell offset, firing strength) per combination of active slots
         for p, x in zip(self.parts, columns):
-            np.maximum(x, p.lo, out=x)
-            np.minimum(x, p.hi, out=x)
-            k = p.locate(x)
-            t = (x - np.take(p.bp, k)) * np.take(p.inv_width, k)
+            k, t = self._locate(p, x)
             slots = [(np.take(p.term[s], k), np.take(p.ml[s], k) + t * np.take(p.dm[s], k))
                      for s in range(p.term.shape[0])]
             combos = [(c2 if c1 is None else c1 + c2,
                        f2 if f1 is None else (f1 * f2 if self.product else np.minimum(f1, f2)))
                       for c1, f1 in combos for c2, f2 in slots]
-        out = np.empty((n, self.num.shape[0]))
+        num = np.zeros((self.num.shape[0], n))
+        den = np.zeros((self.num.shape[0], n))
         for o in range(self.num.shape[0]):
-            num = np.zeros(n)
-            den = np.zeros(n) if self.average else None
             for cell, f in combos:
-                num += f * np.take(self.num[o], cell)
-                if den is not None:
-                    den += f * np.take(self.den[o], cell)
-            if den is not None:
+                num[o] += f * np.take(self.num[o], cell)
+                den[o] += f * np.take(self.den[o], cell)
+        return num, den
+
+    def _multilinear_batch(self, columns: np.ndarray):
+        cell, prods = None, [None]
+        for p, x, stride in zip(self.parts, columns, self.istride):
+            k, t = self._locate(p, x)
+            cell = k * stride if cell is None else cell + k * stride
+            prods = prods + [t if q is None else q * t for q in prods]
+
+        def value(coef: np.ndarray) -> np.ndarray:
+            y = np.take(coef[0], cell)
+            for subset in range(1, len(prods)):
+                y += np.take(coef[subset], cell) * prods[subset]
+            return y
+
+        num = [value(c) for c in self.coef_num]
+        den = [value(c) for c in self.coef_den] if self.average else None
+        return num, den
+
+    def evaluate(self, X: np.ndarray) -> np.ndarray:
+        """Batch: inputs (N, n_in), clamped here column by column -> outputs (N, n_out)."""
+        columns = np.array(X.T, dtype=float, order="C")
+        num, den = self._multilinear_batch(columns) if self.multilinear else self._accumulate(columns)
+        out = np.empty((X.shape[0], len(num)))
+        for o in range(len(num)):
+            if self.average:
                 with np.errstate(invalid="ignore", divide="ignore"):
-                    num = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.nan)
-            out[:, o] = num
+                    out[:, o] = np.where(den[o] > 0, num[o] / np.where(den[o] > 0, den[o], 1.0), np.nan)
+            else:
+                out[:, o] = num[o]
         return out
 
+    @staticmethod
+    def _locate_one(p: _InputPartition, v) -> tuple[int, float]:
+        v = float(v)
+        if not p.lo <= v <= p.hi:
+            if v != v:
+                raise InputError("NaN input", field=p.name)
+            v = p.lo if v < p.lo else p.hi
+        k = bisect_right(p.bp_list, v, 1, p.n_int) - 1
+        return k, (v - p.bp_list[k]) * p.inv_width_list[k]
+
+    def _multilinear_one(self, x) -> tuple[float, ...]:
+        cell, prods = 0, [1.0]
+        for p, v, stride in zip(self.parts, x, self.istride):
+            k, t = self._locate_one(p, v)
+            cell += k * stride
+            prods += [q * t for q in prods]
+        nums = [sum(map(mul, prods, rows[cell])) for rows in self.coef_num_rows]
+        if not self.average:
+            return tuple(nums)
+        dens = [sum(map(mul, prods, rows[cell])) for rows in self.coef_den_rows]
+        return tuple(n / d if d > 0 else math.nan for n, d in zip(nums, dens))
+
     def evaluate_one(self, x) -> tuple[float, ...]:
-        """Scalar: one clamped input vector (sequence of floats) -> outputs, in plain Python."""
+        """Scalar: one input vector (sequence of numbers) -> outputs, in plain Python.
+
+        Clamps each value to its universe; a NaN raises :class:`InputError` naming the input.
+        """
+        if self.multilinear:
+            return self._multilinear_one(x)
         combos = [(0, 1.0)]
         for p, v in zip(self.parts, x):
-            k = bisect_right(p.bp_list, v) - 1
-            if k >= p.n_int:
-                k = p.n_int - 1
-            elif k < 0:
-                k = 0
-            t = (v - p.bp_list[k]) * p.inv_width_list[k]
+            k, t = self._locate_one(p, v)
             act = p.intervals[k]
             if self.product:
                 combos = [(c1 + c2, f1 * (ml + t * dm)) for c1, f1 in combos for c2, ml, dm in act]

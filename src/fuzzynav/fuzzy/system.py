@@ -239,14 +239,7 @@ class FuzzySystem:
                              field="inputs")
         if self._kernel is None:
             return tuple(self.evaluate(np.array([x], dtype=float))[0].tolist())
-        clamped = []
-        for v, var in zip(x, self.inputs):
-            v = float(v)
-            if v != v:
-                raise InputError("NaN input", field=var.name)
-            lo, hi = var.universe
-            clamped.append(lo if v < lo else hi if v > hi else v)
-        return self._kernel.evaluate_one(clamped)
+        return self._kernel.evaluate_one(x)
 
     def contributions(self, X) -> np.ndarray:
         """Per-rule share of every output, (N, n_rules, n_out), summing over rules to ``evaluate(X)``.
