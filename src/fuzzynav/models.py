@@ -20,6 +20,8 @@ from fuzzynav.errors import InputError
 
 # kind -> "module:loader"; a loader takes (the parsed document, the path) and returns a Controller.
 MODEL_LOADERS: dict[str, str] = {}
+MODEL_LOADERS["neural-tracker"] = "fuzzynav.experiments.train_trackers:load_neural_tracker"
+MODEL_LOADERS["anfis-tracker"] = "fuzzynav.experiments.train_trackers:load_anfis_tracker"
 
 
 def _atomic_write(path: Path, write) -> None:

@@ -17,6 +17,10 @@ from pathlib import Path
 from fuzzynav.errors import InputError
 
 TRAINERS: dict[str, tuple[str, str]] = {}
+TRAINERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:train_neural_tracker",
+                              "MLP tracker by generalized learning (§V.3.2, Fig V.15)")
+TRAINERS["anfis-tracker"] = ("fuzzynav.experiments.train_trackers:train_anfis_tracker",
+                             "ANFIS tracker, 1 input, 5 bell MFs (§V.3.5, Fig V.23)")
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,13 @@ from fuzzynav.errors import InputError
 
 # name -> ("module:factory", one-line description)
 CONTROLLERS: dict[str, tuple[str, str]] = {}
+CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
+CONTROLLERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:neural_tracker",
+                                 "MLP inverse-model tracker (§V.3.2), trained on the fly")
+CONTROLLERS["anfis-tracker"] = ("fuzzynav.experiments.train_trackers:anfis_tracker",
+                                "ANFIS tracker, 1 input, 5 MFs (§V.3.5), trained on the fly")
+CONTROLLERS["pure-pursuit"] = ("fuzzynav.control.baselines:pure_pursuit", "pure pursuit baseline (Coulter 1992)")
+CONTROLLERS["stanley"] = ("fuzzynav.control.baselines:stanley", "Stanley steering baseline (Thrun et al. 2006)")
 
 
 def available() -> dict[str, str]:
