@@ -5,7 +5,7 @@ import pytest
 from scipy import stats
 
 from fuzzynav.errors import InputError
-from fuzzynav.learn.exploration import Boltzmann, EpsilonGreedy, Greedy, Softmax, policy_from_dict
+from fuzzynav.learn.exploration import Boltzmann, EpsilonGreedy, Greedy, Softmax, policy_from_dict, row_max
 from fuzzynav.learn.schedules import (
     Constant,
     ExponentialDecay,
@@ -103,3 +103,11 @@ def test_policy_round_trip_and_bad_parameters():
         Boltzmann(0.0).probabilities(Q_ROW)
     with pytest.raises(InputError, match="policy kind"):
         policy_from_dict({"kind": "ucb"})
+
+
+def test_row_max_and_greedy_on_large_batches_match_numpy():
+    q = np.random.default_rng(2).normal(size=(64, 2, 35, 5))
+    np.testing.assert_array_equal(row_max(q), q.max(axis=-1))
+    assert np.array_equal(Greedy().choose(q, np.random.default_rng(0)), q.argmax(axis=-1))
+    shared = Greedy().choose(q[0], np.random.default_rng(0), batch=3)
+    assert shared.shape == (3, 2, 35) and np.array_equal(shared[2], q[0].argmax(axis=-1))

@@ -171,3 +171,11 @@ def test_extracted_system_is_an_ordinary_fuzzy_controller():
         extract_system(learner, ["u"])
     with pytest.raises(InputError, match="premise"):
         extract_system(FuzzyQLearner(TwoRules(), MOVES), ["u"])
+
+
+def test_large_batches_take_the_scatter_path_with_the_same_result():
+    learner = FuzzyQLearner(line_premise(), MOVES, n_learners=1)
+    x = np.random.default_rng(0).uniform(-1, 1, (400, 1))
+    j = np.random.default_rng(1).integers(0, 3, (400, 1, 5))
+    w = learner.strengths(x)
+    np.testing.assert_array_equal(learner._shares(w, j), (j[..., None] == np.arange(3)) * w[:, None, :, None])
