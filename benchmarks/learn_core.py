@@ -6,7 +6,7 @@ with B = 1, 16 and 256 parallel episodes, it times separately
 - the learner's own work per step (policy, Q(s, A), V*, ΔQ, traces) with the strengths given,
 - and a tabular Watkins Q(λ) step over 19 states × 5 actions (Table VI.1's largest table).
 Then it extrapolates the learner-side cost of 3,000 FQL episodes of 250 steps (issue 5's target:
-under 30 s, simulator excluded). Prints a table and one JSON line (medians of 5 timed chunks).
+under 30 s, simulator excluded). Prints a table and one JSON line (medians of 5 timed chunks, CPU time).
 Run:  python benchmarks/learn_core.py
 """
 
@@ -40,10 +40,10 @@ def median_time(function) -> float:
     """Median seconds per call over CHUNKS chunks of STEPS calls."""
     times = []
     for _ in range(CHUNKS):
-        start = time.perf_counter()
+        start = time.process_time()
         for _ in range(STEPS):
             function()
-        times.append((time.perf_counter() - start) / STEPS)
+        times.append((time.process_time() - start) / STEPS)
     return statistics.median(times)
 
 
