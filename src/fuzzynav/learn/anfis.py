@@ -13,7 +13,7 @@ Training is Jang's hybrid rule (Table V.2), one epoch = one forward and one back
 training set (batch learning):
 
 - forward pass, premises fixed: y is linear in the consequents, so they are the least-squares
-  solution of A θ = y (``numpy.linalg.lstsq``; with ``ridge > 0``, the ridge-stabilised solution);
+  solution of A θ = y (LAPACK's rank-revealing ``gelsy``; with ``ridge > 0``, ridge-stabilised);
 - backward pass, consequents fixed: gradient of E = ½ Σ (y − t)² with respect to the premises,
   analytic (:mod:`fuzzynav.learn.anfis_mf`), then a step of fixed length k along −∇E — Jang's
   normalised step Δα = −k ∇E / ‖∇E‖ — taken in coordinates where widths and centres are measured in
@@ -40,6 +40,7 @@ import numbers
 from collections.abc import Sequence
 
 import numpy as np
+import scipy.linalg
 from sklearn.base import BaseEstimator, RegressorMixin
 from sklearn.utils.validation import check_is_fitted
 
@@ -75,8 +76,8 @@ class ANFIS(RegressorMixin, BaseEstimator):
     tol : float
         Stop as soon as the monitored RMSE is at most ``tol``.
     ridge : float
-        0 for plain least squares (SVD, minimum norm); > 0 adds ``ridge · N · ‖θ‖²`` to the
-        forward-pass objective.
+        0 for plain least squares (minimum norm); > 0 adds ``ridge · N · ‖θ‖²`` to the
+        forward-pass objective (else a rank-revealing QR gives the minimum-norm solution).
     premises : sequence of (n_mfs_i, P) arrays, optional
         Initial premise parameters per input (rows (a, b, c) for bell, (σ, m) for Gaussian);
         when given they fix the number of MFs per input and ``n_mfs`` is not used.
@@ -186,13 +187,14 @@ class ANFIS(RegressorMixin, BaseEstimator):
 
         Xt, yt = X[train], y[train]
         Xv, yv = X[val], y[val]
+        xa_train = grid.augmented(Xt)
         k = float(self.step_size)
         history = {"train_rmse": [], "validation_rmse": [] if n_val else None, "step_size": []}
         steps = _StepRule(self.step_increase, self.step_decrease)
         best = (math.inf, -1, params.copy(), None)
         for epoch in range(self.epochs):
             need_grad = self.learn_premises and epoch < self.epochs - 1
-            fwd = grid.forward(Xt, params, need_grad)
+            fwd = grid.forward(Xt, params, need_grad, xa_train)
             theta = grid.least_squares(fwd, yt, self.ridge)
             f, out = grid.outputs(fwd, theta)
             err = out - yt
@@ -409,8 +411,11 @@ class _Grid:
     def split(self, params: np.ndarray) -> list[np.ndarray]:
         return [params[a:b].copy() for a, b in zip(self.offsets[:-1], self.offsets[1:])]
 
-    def forward(self, X: np.ndarray, params: np.ndarray, with_gradient: bool) -> dict:
-        """Layers 1–3 on a batch: μ, premise degrees per rule, w, Σw, w̄ (and ∂μ/∂params)."""
+    def forward(self, X: np.ndarray, params: np.ndarray, with_gradient: bool, xa: np.ndarray | None = None) -> dict:
+        """Layers 1–3 on a batch: μ, premise degrees per rule, w, Σw, w̄ (and ∂μ/∂params).
+
+        ``xa`` — :meth:`augmented` of ``X`` when the caller keeps it across epochs.
+        """
         xcol = X[:, self.mf_input]
         if with_gradient:
             mu, dmu = anfis_mf.evaluate_with_gradient(self.family, xcol, params)
@@ -419,26 +424,29 @@ class _Grid:
         degrees = mu[:, self.columns]  # (N, R, n)
         w = degrees.prod(axis=2)
         total = np.maximum(w.sum(axis=1), _TINY)
-        return {"X": X, "dmu": dmu, "degrees": degrees, "total": total, "wbar": w / total[:, None]}
+        return {"xa": self.augmented(X) if xa is None else xa, "dmu": dmu, "degrees": degrees, "total": total,
+                "wbar": w / total[:, None]}
 
-    def _augmented(self, X: np.ndarray) -> np.ndarray:
+    def augmented(self, X: np.ndarray) -> np.ndarray:
+        """Regressors of one rule's consequent: [x, 1] (first order) or [1] (order 0)."""
         return np.column_stack([X, np.ones(len(X))]) if self.order == 1 else np.ones((len(X), 1))
 
     def least_squares(self, fwd: dict, y: np.ndarray, ridge: float) -> np.ndarray:
         """Forward pass of Table V.2: consequents (R, n+1 or 1) minimising ‖A θ − y‖² (+ ridge)."""
-        xa = self._augmented(fwd["X"])
+        xa = fwd["xa"]
         n_rules = fwd["wbar"].shape[1]
         design = (fwd["wbar"][:, :, None] * xa[:, None, :]).reshape(len(y), -1)
         if ridge > 0.0:
             k = design.shape[1]
             design = np.vstack([design, math.sqrt(ridge * len(y)) * np.eye(k)])
             y = np.concatenate([y, np.zeros(k)])
-        theta = np.linalg.lstsq(design, y, rcond=None)[0]
+        # rank-revealing QR (LAPACK gelsy): the minimum-norm solution when rules barely fire
+        theta = scipy.linalg.lstsq(design, y, lapack_driver="gelsy", check_finite=False)[0]
         return theta.reshape(n_rules, xa.shape[1])
 
     def outputs(self, fwd: dict, theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Layers 4–5: rule outputs f (N, R) and y (N,)."""
-        f = self._augmented(fwd["X"]) @ theta.T
+        f = fwd["xa"] @ theta.T
         return f, (fwd["wbar"] * f).sum(axis=1)
 
     def predict(self, X: np.ndarray, params: np.ndarray, theta: np.ndarray) -> np.ndarray:
