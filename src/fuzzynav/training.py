@@ -21,6 +21,11 @@ TRAINERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:train_neural_
                               "MLP tracker by generalized learning (§V.3.2, Fig V.15)")
 TRAINERS["anfis-tracker"] = ("fuzzynav.experiments.train_trackers:train_anfis_tracker",
                              "ANFIS tracker, 1 input, 5 bell MFs (§V.3.5, Fig V.23)")
+_RL = "fuzzynav.experiments.train_rl"
+TRAINERS["q-goal"] = (f"{_RL}:train_q_goal", "tabular Q-learning goal seeking, 13 states x 3 actions (§VI.2)")
+TRAINERS["fql-goal"] = (f"{_RL}:train_fql_goal", "FQL goal seeking, 15 rules x 3, steering then speed (§VI.5.1)")
+TRAINERS["fql-goal-35"] = (f"{_RL}:train_fql_goal_35", "FQL goal seeking, 35 rules x 5 (Figs VI.13-VI.14)")
+TRAINERS["fql-goal-traces"] = (f"{_RL}:train_fql_goal_traces", "FQL goal seeking with eligibility traces (VI.16)")
 
 
 @dataclass(frozen=True)

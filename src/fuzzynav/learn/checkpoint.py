@@ -137,14 +137,15 @@ def run_episodes(env, learner, rng: np.random.Generator) -> dict:
 
 def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpoint=None,
                checkpoint_every: int = 0, resume: bool = False, progress: bool = False,
-               extra: dict | None = None) -> TrainResult:
+               extra: dict | None = None, batch_size: int = 1, desc: str | None = None) -> TrainResult:
     """Train ``learner`` for ``episodes`` batches of episodes on ``env``, resumably.
 
     With ``checkpoint`` (a path), a checkpoint is written every ``checkpoint_every`` batches
     (0: only at the end) and at the end; ``resume`` continues from it when it exists (the
     learner and ``rng`` are restored in place). ``progress`` shows a tqdm bar with the episode,
     the mean reward and the success rate of the last batch. The curve maps ``mean_reward``,
-    ``steps`` and ``success`` to one entry per batch (a list over its B rows).
+    ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
+    (B) and ``desc`` only label the bar: it then counts single episodes, B per batch.
     """
     if int(episodes) != episodes or episodes < 0:
         raise InputError(f"must be a non-negative integer, got {episodes!r}", field="episodes")
@@ -156,8 +157,8 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
         curve = document["curve"]
         start = resumed_from = int(document["episode"])
     start = start or 0
-    bar = tqdm(total=int(episodes), initial=min(start, int(episodes)), disable=not progress,
-               unit="episode", dynamic_ncols=True)
+    bar = tqdm(total=int(episodes) * batch_size, initial=min(start, int(episodes)) * batch_size,
+               disable=not progress, unit="episode", dynamic_ncols=True, desc=desc)
     episode = start
     try:
         while episode < episodes:
@@ -165,7 +166,7 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
             for name, value in record.items():
                 curve[name].append(value)
             episode += 1
-            bar.update(1)
+            bar.update(batch_size)
             bar.set_postfix(reward=f"{np.mean(record['mean_reward']):.3f}",
                             success=f"{np.mean(record['success']):.0%}")
             if checkpoint is not None and checkpoint_every and episode % checkpoint_every == 0:

@@ -1,0 +1,229 @@
+"""Controllers built from trained models (thesis chapter VI): learned TS0 rule bases that drive.
+
+After fuzzy Q-learning (Algorithm VI.1) every rule keeps its best conclusion, so a trained model
+is an ordinary zero-order Takagi–Sugeno system (:class:`~fuzzynav.fuzzy.FuzzySystem`). A model
+file is the system's ``fuzzynav-fis`` document (readable by the fuzzy library, printable as a rule
+table) plus a ``kind`` that says how the controller reads its inputs:
+
+- ``fql-goal`` — goal seeking (§VI.5.1, Figs VI.7–VI.16): inputs ``drg`` (d_rg, eq IV.6) and
+  ``theta`` (θ_r − θ_d, fed through :func:`~fuzzynav.control.base.thesis_angle_error` so a
+  learned table reads like Table IV.1); outputs ``alpha`` and optionally ``v`` (else the model's
+  ``constant_speed``) — :class:`FuzzyGoalSeeker`;
+- ``fql-avoid`` — the learned obstacle avoider of §VI.5.2 (Figs VI.17–VI.22) as a complete
+  navigator (Figs VI.20, VI.24) — :class:`LearnedAvoidanceNavigator`;
+- ``fql-wall`` — the FQL-optimised wall follower of §VI.5.3 (Figs VI.29–VI.30) —
+  :class:`LearnedWallFollower`.
+
+The tabular Q-learning goal seeker (§VI.2, Figs VI.1–VI.4) is :class:`TabularGoalSeeker`; its
+model (kind ``q-goal``) holds a Q table and is loaded by :mod:`fuzzynav.experiments.train_rl`,
+which owns the (d_rg, θ_rg) discretiser.
+
+The input features — :func:`goal_inputs` and :func:`side_distances` — are defined here once and
+used by the training environments too (:mod:`fuzzynav.learn.envs`), so a controller sees exactly
+what its learner saw.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.errors import InputError
+from fuzzynav.world.geometry import wrap_angle
+
+# Sensor groups of the seven-sensor ring C1…C7 at 0°, −30°, +30°, −60°, +60°, −90°, +90°
+# (fuzzynav.robot.sensors): front = C1; right = C2, C4, C6 (the ROA module, §IV.7);
+# left = C3, C5, C7 (the LOA module).
+FRONT, RIGHT, LEFT = (0,), (1, 3, 5), (2, 4, 6)
+N_SENSORS = 7
+
+
+def goal_inputs(pose, target) -> np.ndarray:
+    """(d_rg, θ_r − θ_d) of robots ``pose`` (B, 3) towards ``target`` (B, 2) → (B, 2).
+
+    d_rg is eq IV.6; the angle is the thesis' table input (SPEC §0, eq IV.8 with the sign that
+    makes its tables steer towards the goal): negative when the goal is on the left.
+    """
+    pose = np.asarray(pose, dtype=float).reshape(-1, 3)
+    rel = np.asarray(target, dtype=float).reshape(-1, 2) - pose[:, :2]
+    bearing = wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - pose[:, 2])
+    return np.column_stack([np.hypot(rel[:, 0], rel[:, 1]), thesis_angle_error(bearing)])
+
+
+def side_distances(ranges) -> np.ndarray:
+    """Front, right and left distances (B, 3) from the seven range readings (B, 7) (§VI.5.2).
+
+    The thesis' FQL avoider and wall follower read "the distances in three directions" (Fig VI.17);
+    with the ring of §IV.7 the front is C1 and each side the nearest of its three sensors.
+    """
+    ranges = np.asarray(ranges, dtype=float)
+    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
+        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
+                         f"{ranges.shape}", field="ranges")
+    return np.column_stack([ranges[:, FRONT[0]], ranges[:, list(RIGHT)].min(axis=1),
+                            ranges[:, list(LEFT)].min(axis=1)])
+
+
+def _batch(obs):
+    """(pose (B, 3), target (B, 2) or None, ranges (B, S) or None) of an Observation or a batch."""
+    pose = np.asarray(obs.pose, dtype=float).reshape(-1, 3)
+    target = None if obs.target is None else np.asarray(obs.target, dtype=float).reshape(-1, 2)
+    ranges = None if obs.ranges is None else np.asarray(obs.ranges, dtype=float).reshape(pose.shape[0], -1)
+    return pose, target, ranges
+
+
+class _Learned(Controller):
+    """Common part: a batch policy ``_commands(obs) -> (steering, speed, labels)`` and its scalar form."""
+
+    def act_batch(self, obs):
+        return self._commands(obs)
+
+    def act(self, obs) -> Command:
+        steering, speed, labels = self._commands(obs)
+        return Command(float(steering[0]), float(speed[0]), labels[0])
+
+    def _commands(self, obs):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+
+def _outputs(system, names: tuple[str, ...]) -> list[int]:
+    found = [system.output_names.index(n) if n in system.output_names else -1 for n in names]
+    if found[0] < 0:
+        raise InputError(f"the rule base has no output {names[0]!r} (outputs: {system.output_names})",
+                         field="outputs")
+    return found
+
+
+class FuzzyGoalSeeker(_Learned):
+    """Learned TS0 goal seeker (§VI.5.1): system(drg, theta) → α [, V_r]; Figs VI.10, VI.14, VI.15."""
+
+    def __init__(self, system, constant_speed: float = 1.0, name: str = "fql-goal"):
+        if system.input_names != ["drg", "theta"]:
+            raise InputError(f"a goal seeker reads inputs ['drg', 'theta'], got {system.input_names}",
+                             field="inputs")
+        self.system = system
+        self.alpha_index, self.speed_index = _outputs(system, ("alpha", "v"))
+        self.constant_speed = float(constant_speed)
+        self.name = name
+
+    def _commands(self, obs):
+        pose, target, _ = _batch(obs)
+        if target is None:
+            raise InputError("goal seeking needs a goal (a goal task)", field="target")
+        out = self.system.evaluate(goal_inputs(pose, target))
+        speed = out[:, self.speed_index] if self.speed_index >= 0 else np.full(len(out), self.constant_speed)
+        return out[:, self.alpha_index], speed, ["goal seeking"] * len(out)
+
+
+class TabularGoalSeeker(_Learned):
+    """Greedy policy of a Q table over (d_rg, θ_rg) states (§VI.2, Figs VI.2–VI.3).
+
+    ``state_of(d_rg, angle) -> state indices`` is the discretiser the table was learned on,
+    ``greedy`` the best action of every state and ``steering`` the value of each action
+    (forward, right, left, …) applied at the constant ``speed``.
+    """
+
+    def __init__(self, state_of, greedy, steering, speed: float, name: str = "q-goal"):
+        self.state_of = state_of
+        self.greedy = np.asarray(greedy, dtype=int)
+        self.steering = np.asarray(steering, dtype=float)
+        if self.greedy.min() < 0 or self.greedy.max() >= self.steering.size:
+            raise InputError("greedy actions outside the action set", field="greedy")
+        self.speed = float(speed)
+        self.name = name
+
+    def _commands(self, obs):
+        pose, target, _ = _batch(obs)
+        x = goal_inputs(pose, target)
+        actions = self.greedy[self.state_of(x[:, 0], x[:, 1])]
+        return self.steering[actions], np.full(len(x), self.speed), ["goal seeking"] * len(x)
+
+
+class LearnedAvoidanceNavigator(_Learned):
+    """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
+
+    ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances with
+    the rules of every situation in which an obstacle is near (7 of the 8 rules of Fig VI.17).
+    The eighth situation — all three distances far — is goal seeking (``goal``: the chapter IV
+    behaviour of Table IV.1 by default): with w_free = 1 − Σ w_i the share of that situation,
+
+        α = Σ_i w_i α_i + w_free · α_GS,     V_r = Σ_i w_i V_i + w_free · V_GS.
+
+    When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
+    obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
+    the fuzzy partition of Fig VI.17.
+    """
+
+    def __init__(self, avoidance, goal=None, constant_speed: float = 1.0, name: str = "fql-avoid"):
+        if avoidance.input_names != ["front", "right", "left"]:
+            raise InputError(f"the avoider reads ['front', 'right', 'left'], got {avoidance.input_names}",
+                             field="inputs")
+        if goal is None:
+            from fuzzynav.fuzzy.systems import goal_seeking
+
+            goal = goal_seeking()
+        self.avoidance = avoidance
+        self.goal = goal
+        self.alpha_index, self.speed_index = _outputs(avoidance, ("alpha", "v"))
+        self.constant_speed = float(constant_speed)
+        self.name = name
+
+    def blend(self, distances, goal_command):
+        """(α, V_r, w_free) from side distances (B, 3) and the goal seeker's (α, V_r) (B, 2)."""
+        out = self.avoidance.evaluate(distances)
+        free = np.clip(1.0 - self.avoidance.firing_strengths(distances, normalise=False).sum(axis=1), 0.0, 1.0)
+        speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
+        return out[:, self.alpha_index] + free * goal_command[:, 0], speed + free * goal_command[:, 1], free
+
+    def _commands(self, obs):
+        pose, target, ranges = _batch(obs)
+        if target is None or ranges is None:
+            raise InputError("the navigator needs a goal and the range readings", field="observation")
+        steering, speed, free = self.blend(side_distances(ranges), self.goal.evaluate(goal_inputs(pose, target)))
+        labels = ["goal seeking" if f >= 0.5 else "obstacle avoidance" for f in free]
+        return steering, speed, labels
+
+
+class LearnedWallFollower(_Learned):
+    """The FQL-optimised wall follower (§VI.5.3.2): system(dd, dg, df) → α, V_r (Figs VI.29–VI.30).
+
+    Inputs as in Table VI.2: d_d (right), d_g (left), d_f (front) from :func:`side_distances`.
+    """
+
+    def __init__(self, system, name: str = "fql-wall"):
+        if system.input_names != ["dd", "dg", "df"]:
+            raise InputError(f"a wall follower reads ['dd', 'dg', 'df'], got {system.input_names}", field="inputs")
+        self.system = system
+        self.alpha_index, self.speed_index = _outputs(system, ("alpha", "v"))
+        if self.speed_index < 0:
+            raise InputError("a wall follower concludes on both 'alpha' and 'v'", field="outputs")
+        self.name = name
+
+    def _commands(self, obs):
+        _, _, ranges = _batch(obs)
+        if ranges is None:
+            raise InputError("wall following needs the range readings", field="ranges")
+        front, right, left = side_distances(ranges).T
+        out = self.system.evaluate(np.column_stack([right, left, front]))
+        return out[:, self.alpha_index], out[:, self.speed_index], ["wall following"] * len(out)
+
+
+def load_fuzzy_model(document: dict, path) -> Controller:
+    """Loader of the ``fql-goal``, ``fql-avoid`` and ``fql-wall`` model kinds (fuzzynav.models)."""
+    from fuzzynav.fuzzy.io.document import from_document
+
+    kind = document.get("kind")
+    system = from_document(document, source=str(path))
+    speed = document.get("constant_speed", 1.0)
+    if not isinstance(speed, (int, float)) or isinstance(speed, bool) or not 0 <= speed <= 4:
+        raise InputError(f"must be a speed in [0, 4] m/s, got {speed!r}", source=str(path), field="constant_speed")
+    try:
+        if kind == "fql-goal":
+            return FuzzyGoalSeeker(system, speed, name=f"fql-goal ({system.name})")
+        if kind == "fql-avoid":
+            return LearnedAvoidanceNavigator(system, constant_speed=speed)
+        if kind == "fql-wall":
+            return LearnedWallFollower(system)
+    except InputError as error:
+        raise InputError(error.problem, source=str(path), field=error.field) from None
+    raise InputError(f"not a learned fuzzy controller (kind {kind!r})", source=str(path), field="kind")

@@ -1,0 +1,358 @@
+"""The learning tasks of chapter VI and ``fuzzynav train`` for them (thesis §VI.2, §VI.5).
+
+Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, actions, reward of
+:mod:`fuzzynav.learn.rewards`) and a learner of :mod:`fuzzynav.learn`, trains it resumably with
+:func:`~fuzzynav.learn.checkpoint.train_loop`, extracts the controller and writes its model file:
+
+======================  =====================================================================
+``q-goal``              tabular Q-learning goal seeking, zones × sectors of (d_rg, θ_rg), 3
+                        actions, reward VI.2 (§VI.2, Figs VI.1–VI.4, Table VI.1)
+``fql-goal``            FQL, 15 rules × 3 conclusions, steering (VI.2) then speed (VI.14),
+                        random starts (§VI.5.1, Figs VI.7–VI.10)
+``fql-goal-35``         FQL on the chapter IV partition, 35 rules × 5 conclusions (VI.13–VI.14)
+``fql-goal-traces``     ``fql-goal``'s steering with eligibility traces (Figs VI.15–VI.16)
+======================  =====================================================================
+
+Episodes. B episodes run in parallel (:data:`BATCH`) and feed one shared rule base (or Q table)
+— synchronous data collection; every count of episodes here (``--episodes``, checkpoints, the
+learning curve, episodes to converge) counts single episodes, B per batch. ``--episodes N`` is
+the total of a task; a two-phase task (steering, then speed) gives the speed phase the share
+:data:`SPEED_SHARE` (the thesis' ~3,000 : ~900 episodes of Fig VI.9). A task writes one
+checkpoint per phase next to ``--out`` (``OUT.steering.checkpoint.json``, …).
+
+Extraction. Each rule keeps its best conclusion unless its gain over the neutral prior (the
+middle candidate: straight ahead / medium speed) is within :data:`TOLERANCE` — so that quality
+differences at the noise level cannot flip the extracted controller (issue 5).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav.control.learned import FuzzyGoalSeeker, TabularGoalSeeker
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.io.document import to_document
+from fuzzynav.fuzzy.membership import Singleton, Trapezoidal, Triangular
+from fuzzynav.fuzzy.partition import strong_partition
+from fuzzynav.fuzzy.rules import Rule
+from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.systems import D_MAX_GOAL, goal_seeking
+from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.learn.checkpoint import train_loop
+from fuzzynav.learn.curves import episodes_to_converge
+from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
+from fuzzynav.learn.exploration import EpsilonGreedy
+from fuzzynav.learn.fql import FuzzyQLearner
+from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
+from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
+from fuzzynav.learn.tabular import TabularLearner, ZoneSectorDiscretiser
+from fuzzynav.models import save_json_atomic
+
+PI = math.pi
+BATCH = 50  # parallel episodes per batch
+SPEED_SHARE = 0.25  # share of a two-phase task's episodes given to the speed phase
+TOLERANCE = 0.05  # extraction: minimum quality gain over the prior conclusion
+GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
+STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
+MAX_STEPS = 300  # 30 s per episode
+CONVERGENCE_WINDOW = 250  # episodes of the moving mean of the convergence criterion (learn.curves)
+
+STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
+STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
+SPEED3 = {"F": 1.0, "M": 1.8, "G": 3.0}  # eq VI.13, the F, M, G singletons of Fig IV.8
+
+
+# -- rule bases ------------------------------------------------------------------------------
+def goal_partition_15() -> list[Variable]:
+    """Inputs of the 15-rule goal seeker (Figs VI.5–VI.6).
+
+    d_rg: P, M, G with breakpoints 0, 0.3, 1, 3, D_max (P flat to 0.3 m, M peaking at 1 m, G
+    flat from 3 m); θ_rg: NG, NM, Z, PM, PG peaking at −π/2, −π/6, 0, π/6, π/2 (shoulders to ±π).
+    """
+    drg = Variable("drg", (0.0, D_MAX_GOAL), {
+        "P": Trapezoidal(0.0, 0.0, 0.3, 1.0),
+        "M": Triangular(0.3, 1.0, 3.0),
+        "G": Trapezoidal(1.0, 3.0, D_MAX_GOAL, D_MAX_GOAL),
+    })
+    peaks = (-PI / 2, -PI / 6, 0.0, PI / 6, PI / 2)
+    theta = Variable("theta", (-PI, PI), strong_partition(peaks, ("NG", "NM", "Z", "PM", "PG"), (-PI, PI)))
+    return [drg, theta]
+
+
+def goal_partition_35() -> list[Variable]:
+    """Inputs of the 35-rule goal seeker: the chapter IV partition (Figs VI.11–VI.12 = IV.5–IV.6)."""
+    return list(goal_seeking().inputs)
+
+
+def output_variable(name: str, values: dict[str, float], universe) -> Variable:
+    return Variable(name, universe, {label: Singleton(v) for label, v in values.items()})
+
+
+def grid_system(inputs, outputs, conclusions, name: str, description: str) -> FuzzySystem:
+    """TS0 system over the full term grid of ``inputs`` (first input varying slowest), product
+    T-norm, weighted sum (eq IV.4); ``conclusions[o][r]`` is the label of output o for rule r."""
+    grids = np.meshgrid(*[np.arange(len(v.terms)) for v in inputs], indexing="ij")
+    cells = np.column_stack([g.ravel() for g in grids])
+    rules = [Rule(tuple((v.name, v.labels[c]) for v, c in zip(inputs, cell)),
+                  tuple((out.name, labels[r]) for out, labels in zip(outputs, conclusions)))
+             for r, cell in enumerate(cells)]
+    return FuzzySystem(inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
+                       name=name, description=description)
+
+
+# -- running a phase -------------------------------------------------------------------------
+@dataclass
+class Phase:
+    """One learning run: its env, learner, episode budget and checkpoint file."""
+
+    name: str
+    env: RobotEnv
+    learner: object
+    episodes: int
+    checkpoint: Path
+
+
+def checkpoint_path(out: Path, phase: str) -> Path:
+    return Path(out).with_name(f"{Path(out).name}.{phase}.checkpoint.json")
+
+
+def run_phase(phase: Phase, request, seed_offset: int) -> dict:
+    """Train one phase resumably; returns its per-episode curves and convergence."""
+    batches = max(1, math.ceil(phase.episodes / phase.env.batch))
+    every = math.ceil(request.checkpoint_every / phase.env.batch) if request.checkpoint_every else 0
+    rng = np.random.default_rng([int(request.seed), seed_offset])
+    result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint, checkpoint_every=every,
+                        resume=request.resume, progress=request.progress, batch_size=phase.env.batch,
+                        desc=phase.name, extra={"phase": phase.name, "seed": int(request.seed)})
+    reward = np.ravel(np.asarray(result.curve["mean_reward"], dtype=float))
+    success = np.ravel(np.asarray(result.curve["success"], dtype=float))
+    continued = result.resumed_from != result.episode  # trained further (or afresh) in this run
+    return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
+            "converged_at": episodes_to_converge(reward, window=CONVERGENCE_WINDOW),
+            "final_success": float(success[-min(success.size, 5 * phase.env.batch):].mean())}
+
+
+def _summary(phases: dict) -> dict:
+    return {name: {"episodes": r["episodes"], "converged_at": r["converged_at"],
+                   "final_training_success": round(r["final_success"], 4)} for name, r in phases.items()}
+
+
+def _episodes(request, default: int) -> int:
+    episodes = default if request.episodes is None else int(request.episodes)
+    if episodes < 1:
+        raise InputError("must be a positive integer", field="--episodes")
+    return episodes
+
+
+def _write_curve(request, phases: dict, title: str) -> None:
+    if request.curve is None:
+        return
+    import matplotlib.pyplot as plt
+
+    from fuzzynav.viz.curves import plot_learning_curve
+
+    figure, axes = plt.subplots(1, len(phases), figsize=(6.4 * len(phases), 4.0), squeeze=False)
+    for ax, (name, result) in zip(axes[0], phases.items()):
+        plot_learning_curve(result["mean_reward"], ax=ax, title=f"{title}: {name}", label=name)
+    Path(request.curve).parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(request.curve, dpi=120, bbox_inches="tight")
+    plt.close(figure)
+
+
+# -- goal seeking, tabular (§VI.2) -----------------------------------------------------------
+Q_STEERING = (0.0, -PI / 5, PI / 5)  # forward (α1), right (α2), left (α3)
+Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
+
+
+def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
+    """States of Table VI.1: 1 + 2 × sectors (inner zone merged), zone edges 1 m and 4 m..."""
+    sectors = {9: 4, 11: 5, 13: 6, 19: 9}
+    if n_states not in sectors:
+        raise InputError(f"Table VI.1 has 9, 11, 13 or 19 states, got {n_states}", field="n_states")
+    return ZoneSectorDiscretiser([1.0, 4.0], sectors[n_states], merge_inner=True)
+
+
+def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int = BATCH):
+    """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1)."""
+    disc = q_discretiser(n_states)
+    steering = Q_STEERING if n_actions == 3 else (0.0, -PI / 10, PI / 10, -PI / 5, PI / 5)
+    actions = np.asarray(steering)
+    env = RobotEnv(FixedGoal() if fixed else RandomGoal(), lambda s: disc(s.goal[:, 0], s.goal[:, 1]),
+                   lambda a, s: (actions[a], Q_SPEED), GoalSteeringReward(), batch=batch, max_steps=500,
+                   tolerance=GOAL_TOLERANCE)
+    learner = TabularLearner(disc.n_states, len(steering), gamma=0.9, alpha=InverseVisits(1.0, 0.8, 0.01),
+                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9, 0.02)))
+    return env, learner, disc, steering
+
+
+def q_goal_controller(learner, disc, steering) -> TabularGoalSeeker:
+    return TabularGoalSeeker(disc, learner.greedy()[0], steering, Q_SPEED)
+
+
+def train_q_goal(request) -> dict:
+    """``fuzzynav train q-goal``: 13 states × 3 actions, random starts (Figs VI.3–VI.4)."""
+    env, learner, disc, steering = q_goal_parts()
+    phases, _ = run_phases([Phase("steering", env, learner, _episodes(request, 3000),
+                                  checkpoint_path(request.out, "steering"))], request)
+    document = {"kind": "q-goal", "zone_edges": disc.zone_edges.tolist(), "n_sectors": disc.n_sectors,
+                "merge_inner": disc.merge_inner, "steering": list(steering), "speed": Q_SPEED,
+                "q": learner.q[0].tolist(), "training": {"task": "q-goal", "seed": request.seed, **_summary(phases)}}
+    save_json_atomic(request.out, document)
+    _write_curve(request, phases, "q-goal")
+    return {"model": str(request.out), **_summary(phases)}
+
+
+def load_q_goal(document: dict, path) -> TabularGoalSeeker:
+    """Model loader of kind ``q-goal`` (fuzzynav.models.MODEL_LOADERS)."""
+    try:
+        disc = ZoneSectorDiscretiser(document["zone_edges"], document["n_sectors"], document["merge_inner"])
+        q = np.asarray(document["q"], dtype=float)
+        steering, speed = document["steering"], float(document["speed"])
+    except KeyError as error:
+        raise InputError("missing field", source=str(path), field=str(error.args[0])) from None
+    except (TypeError, ValueError) as error:
+        raise InputError(f"bad value ({error})", source=str(path), field="q") from None
+    if q.shape != (disc.n_states, len(steering)):
+        raise InputError(f"Q table of shape {q.shape}, expected {(disc.n_states, len(steering))}",
+                         source=str(path), field="q")
+    return TabularGoalSeeker(disc, np.argmax(q, axis=1), steering, speed)
+
+
+# -- goal seeking, fuzzy Q-learning (§VI.5.1) ------------------------------------------------
+@dataclass(frozen=True)
+class GoalFQL:
+    """Settings of one FQL goal-seeking task."""
+
+    name: str
+    inputs: callable
+    steering: dict
+    lam: float = 0.0
+    learn_speed: bool = True
+    episodes: int = 3000
+    fixed: bool = False
+
+
+GOAL_TASKS = {
+    "fql-goal": GoalFQL("fql-goal", goal_partition_15, STEERING3),
+    "fql-goal-35": GoalFQL("fql-goal-35", goal_partition_35, STEERING5, episodes=4000),
+    "fql-goal-traces": GoalFQL("fql-goal-traces", goal_partition_15, STEERING3, lam=0.7, learn_speed=False,
+                               episodes=1500),
+}
+
+
+def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None) -> FuzzyQLearner:
+    """The FQL settings of every task: γ = 0.9, β = 1 / (1 + visits) (eq III.24) floored so the
+    B parallel corrections stay small, ε-greedy per rule with ε decaying 0.3 → 0.02 (× 0.85 per batch)."""
+    return FuzzyQLearner(premise, candidates, gamma=0.9, alpha=InverseVisits(1.0, 1.0, 0.2 / batch),
+                         policy=EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02)), lam=lam,
+                         normalise=False, prior=prior)
+
+
+def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = BATCH):
+    """Yields the phases of an FQL goal task; the speed phase is built from the trained steering."""
+    inputs = task.inputs()
+    alpha = output_variable("alpha", task.steering, (-PI / 5, PI / 5))
+    template = grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
+                           task.name, "premise")
+    premise = GridPremise(template)
+    layout = FixedGoal() if task.fixed else RandomGoal()
+    steer_values = np.array(list(task.steering.values()))
+    n_steer = episodes - (round(SPEED_SHARE * episodes) if task.learn_speed else 0)
+    steer = fql_learner(premise, steer_values, task.lam, batch)
+    env = RobotEnv(layout, lambda s: s.goal, lambda a, s: (a[:, 0], STEERING_SPEED), GoalSteeringReward(),
+                   batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
+    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+    if task.learn_speed:
+        speed_values = np.array(list(SPEED3.values()))
+        speed = fql_learner(premise, speed_values, 0.0, batch)
+        env = RobotEnv(layout, lambda s: s.goal,
+                       lambda a, s: (steer.greedy_action(s.goal, TOLERANCE)[:, 0], a[:, 0]), GoalSpeedReward(),
+                       batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
+        yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
+
+
+def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
+    """The extracted controller: every rule with its best conclusion(s), as a TS0 system."""
+    inputs = task.inputs()
+    outputs, conclusions = [], []
+    for name, values, universe in (("steering", task.steering, (-PI / 5, PI / 5)), ("speed", SPEED3, (0.0, 4.0))):
+        if name in learners:
+            variable = output_variable("alpha" if name == "steering" else "v", values, universe)
+            outputs.append(variable)
+            conclusions.append([variable.labels[j] for j in learners[name].greedy_indices(TOLERANCE)[0, 0]])
+    rules = math.prod(len(v.terms) for v in inputs)
+    return grid_system(inputs, outputs, conclusions, task.name,
+                       f"Goal seeking learned by fuzzy Q-learning (thesis §VI.5.1, Algorithm VI.1): {rules} rules, "
+                       f"{len(task.steering)} steering conclusions" + (", speed learned" if "speed" in learners else ""))
+
+
+def run_phases(phases, request) -> tuple[dict, dict]:
+    """Run the phases in order; a later phase resumes only if every earlier one was already
+    complete in its checkpoint (otherwise it is retrained on the changed earlier result)."""
+    results, learners = {}, {}
+    for offset, phase in enumerate(phases):
+        results[phase.name] = run_phase(phase, request, offset)
+        learners[phase.name] = phase.learner
+        if results[phase.name].pop("continued"):
+            request = replace(request, resume=False)
+    return results, learners
+
+
+def train_goal_fql(task: GoalFQL, request) -> dict:
+    phases, learners = run_phases(goal_fql_phases(task, request.out, _episodes(request, task.episodes)), request)
+    system = goal_system(task, learners)
+    document = {"kind": "fql-goal", **to_document(system), "constant_speed": STEERING_SPEED,
+                "training": {"task": task.name, "seed": request.seed, **_summary(phases)}}
+    save_json_atomic(request.out, document)
+    _write_curve(request, phases, task.name)
+    return {"model": str(request.out), **_summary(phases)}
+
+
+def train_fql_goal(request) -> dict:
+    """``fuzzynav train fql-goal``: 15 rules × 3 conclusions, steering then speed (Figs VI.9–VI.10)."""
+    return train_goal_fql(GOAL_TASKS["fql-goal"], request)
+
+
+def train_fql_goal_35(request) -> dict:
+    """``fuzzynav train fql-goal-35``: 35 rules × 5 conclusions (Figs VI.13–VI.14)."""
+    return train_goal_fql(GOAL_TASKS["fql-goal-35"], request)
+
+
+def train_fql_goal_traces(request) -> dict:
+    """``fuzzynav train fql-goal-traces``: 15 rules × 3, eligibility traces λ = 0.7 (Figs VI.15–VI.16)."""
+    return train_goal_fql(GOAL_TASKS["fql-goal-traces"], request)
+
+
+def goal_controller(system: FuzzySystem) -> FuzzyGoalSeeker:
+    return FuzzyGoalSeeker(system, STEERING_SPEED)
+
+
+# -- evaluation in the simulator -------------------------------------------------------------
+def _scenario(world, start, goal, name: str, max_time: float):
+    from fuzzynav.world.scenario import Goal, Scenario
+
+    return Scenario(name=name, world=world, start=np.asarray(start, dtype=float),
+                    goal=Goal(np.asarray(goal, dtype=float), GOAL_TOLERANCE), max_time=max_time)
+
+
+def evaluate_goal(controller, n: int = 100, seed: int = 12345, goals: int = 10, max_time: float = 60.0) -> dict:
+    """Success of a goal seeker in the simulator from ``n`` random starts (≥ 3 m from their goal)
+    towards ``goals`` random goals in the empty 20 m × 20 m workspace (Figs VI.3, VI.10, VI.14)."""
+    from fuzzynav.sim.simulator import BatchSimulator
+
+    rng = np.random.default_rng(seed)
+    layout = RandomGoal()
+    outcomes = []
+    for g in range(goals):
+        world, candidates, targets = layout.sample(rng, 8 * math.ceil(n / goals))
+        far = np.hypot(*(candidates[:, :2] - targets[0]).T) >= layout.min_distance
+        starts = candidates[far][: n // goals + (g < n % goals)]
+        scenario = _scenario(world, starts[0], targets[0], f"random-goal-{g}", max_time)
+        outcomes += BatchSimulator(scenario, controller, starts=starts, record=False).run().outcomes()
+    outcomes = outcomes[:n]
+    return {"runs": len(outcomes), "success": outcomes.count("reached") / len(outcomes),
+            "collisions": outcomes.count("collision"), "timeouts": outcomes.count("timeout")}

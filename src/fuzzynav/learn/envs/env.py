@@ -1,0 +1,107 @@
+"""B robot episodes stepped together with NumPy: the training environment of chapter VI.
+
+Built directly on :mod:`fuzzynav.robot` (tricycle kinematics eq IV.2, the seven-sensor ring)
+and :mod:`fuzzynav.world` (collisions, ray casting), without the per-step bookkeeping of the
+simulator. It follows the protocol of :func:`fuzzynav.learn.checkpoint.train_loop`::
+
+    env.reset(rng) -> obs
+    env.step(action, rng) -> obs, reward, terminated, truncated, info
+
+Three plug-ins make one environment per task:
+
+- a *layout* (:mod:`.layouts`) draws the world, start poses and goals of a batch of episodes;
+- ``observe(state) -> obs`` maps the :class:`RobotState` to what the learner sees (zone/sector
+  indices for tabular Q-learning, input vectors for fuzzy Q-learning);
+- ``command(action, state) -> (steering, speed)`` maps the learner's action to the robot's
+  commands (e.g. steering learned at a constant speed, or speed learned under a fixed steering);
+- ``reward(before, after, collided, reached)`` is one of :mod:`fuzzynav.learn.rewards`.
+
+An episode ends (``terminated``) on a collision — the footprint disc touching an obstacle or the
+workspace boundary ("the walls of the workspace", eq VI.2) — or when the goal is within
+``tolerance``; it is ``truncated`` after ``max_steps``. Success (``info["success"]``) is reaching
+the goal in goal tasks, and lasting ``max_steps`` without collision in tasks without a goal.
+Rows whose episode has ended stand still until the whole batch is done.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fuzzynav.control.learned import goal_inputs, side_distances
+from fuzzynav.robot import tricycle
+from fuzzynav.robot.sensors import SensorRing
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
+from fuzzynav.world.world import World
+
+
+@dataclass(frozen=True)
+class RobotState:
+    """What the plug-ins see of a batch after a step. ``goal`` (B, 2) holds (d_rg, θ_r − θ_d)
+    (:func:`~fuzzynav.control.learned.goal_inputs`), ``sides`` (B, 3) the front/right/left
+    distances (:func:`~fuzzynav.control.learned.side_distances`); either is ``None`` when the
+    task has no goal / no sensors."""
+
+    world: World
+    pose: np.ndarray  # (B, 3)
+    speed: np.ndarray  # (B,) applied at the last step
+    steering: np.ndarray  # (B,)
+    target: np.ndarray | None = None  # (B, 2)
+    ranges: np.ndarray | None = None  # (B, 7)
+    goal: np.ndarray | None = None  # (B, 2)
+    sides: np.ndarray | None = None  # (B, 3)
+
+
+class RobotEnv:
+    """``batch`` episodes of a task in lock-step (see the module docstring)."""
+
+    def __init__(self, layout, observe, command, reward, *, batch: int, max_steps: int,
+                 tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None):
+        self.layout, self.observe, self.command, self.reward = layout, observe, command, reward
+        self.batch = int(batch)
+        self.max_steps = int(max_steps)
+        self.tolerance = float(tolerance)
+        self.params = params
+        self.sensors = sensors
+        self.state: RobotState | None = None
+
+    def _state(self, world, pose, speed, steering, target) -> RobotState:
+        ranges = sides = goal = None
+        if self.sensors is not None:
+            ranges = self.sensors.read(world, pose)
+            sides = side_distances(ranges)
+        if target is not None:
+            goal = goal_inputs(pose, target)
+        return RobotState(world, pose, speed, steering, target, ranges, goal, sides)
+
+    def reset(self, rng: np.random.Generator):
+        """New episodes: the layout's world, starts and goals; zero speed and steering."""
+        world, pose, target = self.layout.sample(rng, self.batch)
+        zeros = np.zeros(self.batch)
+        self.state = self._state(world, pose, zeros, zeros.copy(), target)
+        self.k = 0
+        self.done = np.zeros(self.batch, dtype=bool)
+        return self.observe(self.state)
+
+    def step(self, action, rng: np.random.Generator):
+        """Apply the learner's actions for one step Δt (rows already finished stand still)."""
+        before = self.state
+        steering, speed = self.command(action, before)
+        steering, speed = self.params.clip(np.broadcast_to(steering, (self.batch,)),
+                                           np.broadcast_to(speed, (self.batch,)))
+        live = ~self.done
+        speed = np.where(live, speed, 0.0)
+        moved = tricycle.step(before.pose, steering, speed, self.params)
+        pose = np.where(live[:, None], moved, before.pose)
+        after = self._state(before.world, pose, speed, steering, before.target)
+        collided = before.world.clearance(pose[:, :2]) < self.params.radius
+        reached = (after.goal[:, 0] <= self.tolerance) & ~collided if after.goal is not None else np.zeros_like(collided)
+        reward = self.reward(before, after, collided, reached)
+        self.k += 1
+        terminated = collided | reached
+        truncated = np.full(self.batch, self.k >= self.max_steps)
+        success = reached if after.goal is not None else truncated & ~collided
+        self.done = self.done | terminated | truncated
+        self.state = after
+        return self.observe(after), reward, terminated, truncated, {"success": success, "collision": collided}

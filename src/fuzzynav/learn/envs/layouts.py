@@ -1,0 +1,138 @@
+"""Where a batch of training episodes starts: worlds, start poses and goals (§VI.2, §VI.5).
+
+A layout has ``sample(rng, batch) -> (world, poses (B, 3), targets (B, 2) or None)`` and draws
+all its randomness from ``rng``, so training resumed from a checkpoint replays the same episodes.
+
+- :class:`FixedGoal` — the same start and goal every episode (Figs VI.1–VI.2, VI.7–VI.8);
+- :class:`RandomGoal` — random start pose and goal in the empty workspace (Figs VI.3–VI.4,
+  VI.9–VI.16: "each episode starts from a random position");
+- :class:`RandomObstacles` — a new random world of obstacles per batch, the robot starting in
+  free space heading towards its goal (§VI.5.2: "the robot starts in a zone free of obstacles
+  and heads towards the goal");
+- :class:`WallCourse` — a new random course of walls and sharp-cornered polygons per batch, the
+  robot starting beside a wall, parallel to it (§VI.5.3, Figs VI.27–VI.30).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fuzzynav.world.shapes import Circle, Polygon, Wall
+from fuzzynav.world.world import World
+
+EMPTY = World()
+
+
+@dataclass(frozen=True)
+class FixedGoal:
+    """Every episode from ``start`` (x, y, θ) to ``goal`` (x, y) in ``world``."""
+
+    start: tuple = (2.0, 2.0, 0.0)
+    goal: tuple = (16.0, 16.0)
+    world: World = EMPTY
+
+    def sample(self, rng, batch):
+        return (self.world, np.tile(np.asarray(self.start, dtype=float), (batch, 1)),
+                np.tile(np.asarray(self.goal, dtype=float), (batch, 1)))
+
+
+def _free_points(rng, world: World, batch: int, margin: float, clearance: float, tries: int = 64) -> np.ndarray:
+    """``batch`` points uniform in the workspace shrunk by ``margin``, ≥ ``clearance`` from obstacles."""
+    lo = np.array([margin, margin])
+    hi = np.array([world.width - margin, world.height - margin])
+    points = lo + rng.random((batch, tries, 2)) * (hi - lo)
+    ok = (world.clearance(points.reshape(-1, 2)) >= clearance).reshape(batch, tries)
+    return points[np.arange(batch), np.argmax(ok, axis=1)]
+
+
+@dataclass(frozen=True)
+class RandomGoal:
+    """Uniform start position and heading, and a goal at least ``min_distance`` away."""
+
+    margin: float = 1.5
+    min_distance: float = 3.0
+    world: World = EMPTY
+
+    def sample(self, rng, batch):
+        lo = np.array([self.margin, self.margin])
+        hi = np.array([self.world.width - self.margin, self.world.height - self.margin])
+        points = lo + rng.random((2, batch, 8, 2)) * (hi - lo)
+        far = np.hypot(*(points[1] - points[0]).transpose(2, 0, 1)) >= self.min_distance
+        pick = np.argmax(far, axis=1)
+        start, goal = points[0, np.arange(batch), pick], points[1, np.arange(batch), pick]
+        theta = rng.uniform(-np.pi, np.pi, batch)
+        return self.world, np.column_stack([start, theta]), goal
+
+
+def random_obstacle_world(rng, n_obstacles=(4, 8), size=(0.5, 1.6), area=(4.0, 16.0)) -> World:
+    """A 20 m × 20 m world with random discs and rotated boxes (the evaluation worlds of §VI.5.2)."""
+    count = int(rng.integers(n_obstacles[0], n_obstacles[1] + 1))
+    shapes = []
+    for _ in range(count):
+        center = rng.uniform(area[0], area[1], 2)
+        if rng.random() < 0.5:
+            shapes.append(Circle(center, rng.uniform(*size)))
+        else:
+            half = rng.uniform(size[0], size[1], 2)
+            c, s = np.cos(angle := rng.uniform(0, np.pi)), np.sin(angle)
+            corners = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * half
+            shapes.append(Polygon(center + corners @ np.array([[c, s], [-s, c]])))
+    return World(20.0, 20.0, tuple(shapes))
+
+
+@dataclass(frozen=True)
+class RandomObstacles:
+    """A random obstacle world per batch; starts and goals ≥ ``clearance`` from obstacles and
+    ≥ ``min_distance`` apart, the robot heading towards its goal."""
+
+    clearance: float = 1.2
+    min_distance: float = 8.0
+    margin: float = 1.5
+
+    def sample(self, rng, batch):
+        world = random_obstacle_world(rng)
+        start = _free_points(rng, world, batch, self.margin, self.clearance)
+        goal = _free_points(rng, world, batch, self.margin, self.clearance)
+        near = np.hypot(*(goal - start).T) < self.min_distance
+        goal[near] = np.array([world.width, world.height]) - start[near]  # mirror: far across the world
+        bad = world.clearance(goal) < self.clearance
+        goal[bad] = _free_points(rng, world, int(bad.sum()), self.margin, self.clearance)
+        theta = np.arctan2(goal[:, 1] - start[:, 1], goal[:, 0] - start[:, 0])
+        return world, np.column_stack([start, theta]), goal
+
+
+def wall_course(rng, thickness: float = 0.2) -> World:
+    """A course for wall following: a closed polygonal room with reflex (sharp) corners."""
+    n = int(rng.integers(5, 9))
+    angles = np.sort(rng.uniform(0, 2 * np.pi, n)) + rng.uniform(0, 2 * np.pi)
+    radius = rng.uniform(4.0, 8.5, n)
+    points = np.column_stack([10 + radius * np.cos(angles), 10 + radius * np.sin(angles)])
+    walls = tuple(Wall(points[i], points[(i + 1) % n], thickness) for i in range(n))
+    return World(20.0, 20.0, walls)
+
+
+@dataclass(frozen=True)
+class WallCourse:
+    """A random wall course per batch; each robot starts ``offset`` from a wall, parallel to it,
+    either side and direction at random."""
+
+    offset: float = 1.0
+
+    def sample(self, rng, batch):
+        world = wall_course(rng)
+        walls = world.obstacles
+        which = rng.integers(len(walls), size=batch)
+        a = np.array([walls[i].start for i in which])
+        b = np.array([walls[i].end for i in which])
+        u = rng.uniform(0.3, 0.7, batch)[:, None]
+        direction = (b - a) / np.hypot(*(b - a).T)[:, None]
+        normal = np.column_stack([-direction[:, 1], direction[:, 0]])
+        side = np.where(rng.random(batch) < 0.5, 1.0, -1.0)[:, None]
+        position = a + u * (b - a) + side * self.offset * normal
+        reverse = rng.random(batch) < 0.5
+        heading = np.where(reverse[:, None], -direction, direction)
+        inside = world.clearance(position) >= 0.6
+        position = np.where(inside[:, None], position, a + u * (b - a) - side * self.offset * normal)
+        return world, np.column_stack([position, np.arctan2(heading[:, 1], heading[:, 0])]), None

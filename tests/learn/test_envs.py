@@ -1,0 +1,85 @@
+"""The vectorised training environments of chapter VI: physics, termination, layouts, fast premise."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fuzzynav.fuzzy import systems
+from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RandomObstacles, RobotEnv, WallCourse
+from fuzzynav.learn.rewards import GoalSteeringReward
+from fuzzynav.robot import tricycle
+from fuzzynav.robot.sensors import SensorRing
+
+
+def goal_env(layout, batch=3, max_steps=200, speed=1.0):
+    return RobotEnv(layout, lambda s: s.goal, lambda a, s: (np.asarray(a, float), speed), GoalSteeringReward(),
+                    batch=batch, max_steps=max_steps, tolerance=0.3)
+
+
+def test_grid_premise_equals_the_fuzzy_library():
+    system = systems.goal_seeking()
+    premise = GridPremise(system)
+    rng = np.random.default_rng(0)
+    X = np.column_stack([rng.uniform(-1, 35, 500), rng.uniform(-4, 4, 500)])  # outside the universes too
+    assert np.allclose(premise.firing_strengths(X), system.firing_strengths(X), atol=1e-12)
+    assert np.allclose(premise.firing_strengths(X, normalise=False).sum(axis=1), 1.0)  # strong partitions
+
+
+def test_straight_run_to_an_aligned_goal_is_rewarded_and_succeeds():
+    env = goal_env(FixedGoal(start=(2.0, 10.0, 0.0), goal=(8.0, 10.0)), batch=2)
+    rng = np.random.default_rng(0)
+    env.reset(rng)
+    rewards = []
+    while True:
+        _, r, terminated, truncated, info = env.step(np.zeros(2), rng)
+        rewards.append(r[0])
+        if terminated.all() or truncated.all():
+            break
+    assert info["success"].all() and not info["collision"].any()
+    assert set(rewards[:-1]) == {3.0} and rewards[-1] == 4.0
+    assert abs(len(rewards) - (6.0 - 0.3) / 0.1) <= 1  # 1 m/s, Δt = 0.1 s: d_rg ≤ 0.3 m after ~57 steps
+
+
+def test_wall_hit_ends_the_episode_and_finished_rows_stand_still():
+    env = goal_env(FixedGoal(start=(1.0, 10.0, math.pi), goal=(15.0, 10.0)), batch=2)
+    rng = np.random.default_rng(0)
+    env.reset(rng)
+    _, r, terminated, _, info = env.step(np.zeros(2), rng)
+    for _ in range(8):
+        _, r, terminated, _, info = env.step(np.zeros(2), rng)
+        if terminated.any():
+            break
+    assert terminated.all() and info["collision"].all() and (r == -3).all()
+    pose = env.state.pose.copy()
+    env.step(np.zeros(2), rng)
+    assert np.array_equal(env.state.pose, pose)
+
+
+def test_env_kinematics_are_the_robot_layers():
+    env = goal_env(FixedGoal(start=(5.0, 5.0, 0.3), goal=(15.0, 15.0)), batch=1)
+    rng = np.random.default_rng(0)
+    env.reset(rng)
+    env.step(np.array([0.4]), rng)
+    assert np.allclose(env.state.pose, tricycle.step(np.array([[5.0, 5.0, 0.3]]), 0.4, 1.0))
+
+
+def test_layouts_draw_valid_reproducible_starts():
+    for layout in (RandomGoal(), RandomObstacles(), WallCourse()):
+        a = layout.sample(np.random.default_rng(4), 20)
+        b = layout.sample(np.random.default_rng(4), 20)
+        world, poses, targets = a
+        assert np.array_equal(poses, b[1])
+        assert (world.clearance(poses[:, :2]) > 0.3).all()
+        if targets is not None:
+            assert (world.clearance(targets) > 0.3).all()
+    _, poses, goals = RandomGoal(min_distance=3.0).sample(np.random.default_rng(1), 200)
+    assert (np.hypot(*(goals - poses[:, :2]).T) >= 3.0).mean() > 0.99
+
+
+@pytest.mark.parametrize("layout", [RandomObstacles(), WallCourse()])
+def test_sensing_layouts_give_side_distances(layout):
+    env = RobotEnv(layout, lambda s: s.sides, lambda a, s: (0.0, 1.0), lambda b, a, c, r: np.zeros(len(c)),
+                   batch=4, max_steps=5, sensors=SensorRing())
+    obs = env.reset(np.random.default_rng(2))
+    assert obs.shape == (4, 3) and (obs <= 4.0).all() and (obs > 0).all()
