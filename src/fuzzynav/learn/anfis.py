@@ -355,7 +355,10 @@ class ANFIS(RegressorMixin, BaseEstimator):
         model.premises_ = premises
         model.n_features_in_ = n
         model.best_epoch_ = int(document.get("best_epoch", -1))
-        model.history_ = document.get("history", {"train_rmse": [], "validation_rmse": None, "step_size": []})
+        history = document.get("history", {"train_rmse": [], "validation_rmse": None, "step_size": []})
+        if not isinstance(history, dict) or not isinstance(history.get("train_rmse"), list):
+            raise InputError("must be an object with a 'train_rmse' list", source=source, field="history")
+        model.history_ = history
         model.n_epochs_ = len(model.history_.get("train_rmse", []))
         model._compile_scalar()
         return model

@@ -10,8 +10,8 @@ The network is the thesis' multilayer perceptron (Fig V.13): tanh ("tansig") hid
 by default — and one linear output neuron, trained by back-propagation of the squared error with
 scikit-learn's :class:`~sklearn.neural_network.MLPRegressor`. Solver: ``"lbfgs"`` by default — the
 gradient is back-propagated and the step is quasi-Newton, which on a few hundred pairs converges
-far better than first-order descent (scikit-learn's advice for small data sets; the thesis' MATLAB
-toolbox also trains with a second-order method by default); ``"sgd"`` gives the textbook
+far better than first-order descent (scikit-learn's advice for small data sets; MATLAB's toolbox,
+whose "tansig" name the thesis uses, also defaults to a second-order method); ``"sgd"`` gives the textbook
 gradient-descent back-propagation with momentum, ``"adam"`` its adaptive variant.
 
 Inputs and targets are standardised for training and the scaling is folded back into the first
