@@ -14,6 +14,14 @@ from importlib import import_module
 from fuzzynav.errors import InputError
 
 EXPERIMENTS: dict[str, tuple[str, str]] = {}
+_CH5 = "fuzzynav.experiments.chapter5"
+EXPERIMENTS["fig-V-7"] = (f"{_CH5}:fig_v_7", "control surface of the fuzzy tracker, Table V.1")
+EXPERIMENTS["fig-V-15"] = (f"{_CH5}:fig_v_15", "MLP tracker: validation on unseen pairs and training loss (§V.3.2)")
+EXPERIMENTS["fig-V-23"] = (f"{_CH5}:fig_v_23", "ANFIS tracker: validation and training curve (§V.3.5)")
+EXPERIMENTS["fig-V-28"] = (f"{_CH5}:fig_v_28", "V path by CF, CN, CNF with a zoom on the corner (§V.4)")
+EXPERIMENTS["fig-V-29"] = (f"{_CH5}:fig_v_29", "pursuit of a target on a line by CF, CN, CNF (§V.5)")
+EXPERIMENTS["fig-V-30"] = (f"{_CH5}:fig_v_30", "pursuit of a target on a circle by CF, CN, CNF (§V.5)")
+EXPERIMENTS["fig-V-31"] = (f"{_CH5}:fig_v_31", "pursuit of a target on a sinusoid by CF, CN, CNF (§V.5)")
 
 
 def available() -> dict[str, str]:

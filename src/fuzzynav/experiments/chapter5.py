@@ -1,0 +1,161 @@
+"""Figures of chapter V (§V.3–V.5): control surface, training curves, tracking comparison, pursuit.
+
+- ``fig-V-7``: control surface α(θ_er, dθ_er) of the fuzzy tracker (Table V.1);
+- ``fig-V-15``: the MLP inverse model on 100 unseen generalized-learning pairs (desired vs network
+  output, and their error) with its training loss;
+- ``fig-V-23``: the same for the ANFIS tracker, with its training / validation RMSE per epoch;
+- ``fig-V-28``: the V path (scenario ``fig-V-28``, robot at (2,14) heading 0) tracked by the
+  fuzzy (CF), neural (CN) and ANFIS (CNF) controllers as in the thesis (tolerance-zone
+  switching, ``corner_radius=0``), overlaid, with a zoom on the corner (panel d);
+- ``fig-V-29`` … ``fig-V-31``: pursuit of a target on a line, a circle and a sinusoid (robot at
+  (4,4) heading 0, target from (4,12)) by the three controllers, panels (a–c).
+
+Every function has the registry signature ``(out_dir, quick, seed) -> dict`` and writes PNGs;
+the episodes are short (a few seconds in all), so ``quick`` changes nothing but the ANFIS epochs.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from fuzzynav.control.registry import make_controller
+from fuzzynav.experiments import train_trackers as tt
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.viz.trajectories import draw_world
+from fuzzynav.world.scenario import load_scenario
+
+TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
+COLOURS = {"fuzzy-tracker": "tab:blue", "neural-tracker": "tab:red", "anfis-tracker": "tab:green"}
+
+
+def _save(figure: Figure, out_dir, name: str) -> str:
+    path = Path(out_dir) / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(path, dpi=110)
+    return str(path)
+
+
+def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
+    """Figs V.15 / V.23: (a) desired and model output on the validation pairs, (b) their error,
+    (c) the training curve (MLP loss per iteration, or ANFIS RMSE per epoch)."""
+    figure = Figure(figsize=(13, 3.8), layout="constrained")
+    a, b, c = figure.subplots(1, 3)
+    order = np.argsort(data.x_val[:, 0])
+    predicted = model.predict(data.x_val)
+    k = np.arange(len(order))
+    a.plot(k, data.y_val[order], "o", markersize=3, label="desired output")
+    a.plot(k, predicted[order], "-", label="real output")
+    a.set(xlabel="validation sample (sorted by θ_er)", ylabel="α (rad)", title="(a) outputs")
+    a.legend()
+    b.plot(k, (data.y_val - predicted)[order])
+    b.set(xlabel="validation sample", ylabel="error (rad)", title="(b) learning error")
+    if kind == "anfis-tracker":
+        c.semilogy(model.history_["train_rmse"], label="training RMSE")
+        if model.history_["validation_rmse"] is not None:
+            c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
+        c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
+        c.legend()
+    else:
+        c.semilogy(model.loss_curve if len(model.loss_curve) > 1 else model.loss_curve * 2)
+        c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
+    figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
+    if path is not None:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        figure.savefig(path, dpi=110)
+    return figure
+
+
+def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.7: control surface of Table V.1."""
+    from fuzzynav.fuzzy.plot import plot_surface, surface
+    from fuzzynav.fuzzy.systems import tracking
+
+    system = tracking()
+    _, _, alpha = surface(system)
+    figure = plot_surface(system)
+    return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
+            "alpha_max_rad": float(alpha.max())}
+
+
+def _training_figure(kind: str, out_dir, quick: bool, seed: int) -> dict:
+    data = tt.tracker_data(seed)
+    model = tt.fit_neural(data, seed) if kind == "neural-tracker" else tt.fit_anfis(
+        data, seed, epochs=50 if quick else tt.ANFIS_EPOCHS)
+    name = "fig-V-15.png" if kind == "neural-tracker" else "fig-V-23.png"
+    figure = plot_training(kind, model, data, None)
+    residual = data.y_val - model.predict(data.x_val)
+    return {"figure": _save(figure, out_dir, name), "validation_rmse_rad": float(np.sqrt(np.mean(residual ** 2))),
+            "validation_max_error_rad": float(np.abs(residual).max())}
+
+
+def fig_v_15(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.15: validation of the MLP inverse model (and its training loss)."""
+    return _training_figure("neural-tracker", out_dir, quick, seed)
+
+
+def fig_v_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.23: validation of the ANFIS tracker (and its training curve)."""
+    return _training_figure("anfis-tracker", out_dir, quick, seed)
+
+
+def _runs(scenario_name: str, seed: int, **options):
+    scenario = load_scenario(scenario_name)
+    runs = {}
+    for name in TRACKERS:
+        trace = run_episode(scenario, make_controller(name, seed=seed, **options) if name != "fuzzy-tracker"
+                            else make_controller(name, **options), seed=seed)
+        runs[name] = (trace, metrics(trace, scenario))
+    return scenario, runs
+
+
+def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.28: the V path by CF, CN, CNF (a–c) and the overlay zoomed on the corner (d)."""
+    scenario, runs = _runs("fig-V-28", seed, corner_radius=0.0)
+    figure = Figure(figsize=(16, 4.4), layout="constrained")
+    axes = figure.subplots(1, 4)
+    for ax, (name, (trace, _)) in zip(axes, runs.items()):
+        draw_world(ax, scenario, trace)
+        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+        ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
+    zoom = axes[3]
+    corner = scenario.path.waypoints[1]
+    w = scenario.path.waypoints
+    zoom.plot(w[:, 0], w[:, 1], "--", color="0.3", label="reference")
+    for name, (trace, _) in runs.items():
+        zoom.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+    zoom.set(xlim=(corner[0] - 1.5, corner[0] + 1.5), ylim=(corner[1] - 1.0, corner[1] + 2.0),
+             aspect="equal", title="(d) comparison at the corner", xlabel="x (m)", ylabel="y (m)")
+    zoom.legend()
+    return {"figure": _save(figure, out_dir, "fig-V-28.png"),
+            **{name: {k: m[k] for k in ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")}
+               for name, (_, m) in runs.items()}}
+
+
+def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
+    scenario, runs = _runs(scenario_name, seed)
+    figure = Figure(figsize=(13, 4.4), layout="constrained")
+    for ax, (name, (trace, _)) in zip(figure.subplots(1, 3), runs.items()):
+        draw_world(ax, scenario, trace)
+        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label="robot")
+        ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
+        ax.legend(loc="upper right", fontsize=7)
+    return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
+            **{name: {k: m[k] for k in ("captured", "capture_time_s", "path_length_m")} for name, (_, m) in runs.items()}}
+
+
+def fig_v_29(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.29: pursuit of a target moving on a straight line."""
+    return _pursuit("fig-V-29", out_dir, seed)
+
+
+def fig_v_30(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.30: pursuit of a target moving on a circle."""
+    return _pursuit("fig-V-30", out_dir, seed)
+
+
+def fig_v_31(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.31: pursuit of a target moving on a sinusoid."""
+    return _pursuit("fig-V-31", out_dir, seed)
