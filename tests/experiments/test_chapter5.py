@@ -1,0 +1,29 @@
+"""Chapter V figures: every experiment writes its figure and measures what the thesis shows."""
+
+import pytest
+
+from fuzzynav.experiments.registry import experiment
+
+pytestmark = pytest.mark.slow
+
+
+def test_control_surface_spans_the_steering_range(tmp_path):
+    result = experiment("fig-V-7")(tmp_path, True, 0)
+    assert result["alpha_min_rad"] == pytest.approx(-0.7854, abs=1e-3)
+    assert result["alpha_max_rad"] == pytest.approx(0.7854, abs=1e-3)
+    assert (tmp_path / "fig-V-7.png").stat().st_size > 0
+
+
+def test_training_figures(tmp_path):
+    assert experiment("fig-V-15")(tmp_path, True, 0)["validation_rmse_rad"] < 2e-3
+    assert experiment("fig-V-23")(tmp_path, True, 0)["validation_rmse_rad"] < 1e-3
+    assert (tmp_path / "fig-V-15.png").is_file() and (tmp_path / "fig-V-23.png").is_file()
+
+
+def test_fig_v_28_and_pursuit(tmp_path):
+    result = experiment("fig-V-28")(tmp_path, True, 0)
+    assert all(result[name]["completed"] for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker"))
+    for key in ("fig-V-29", "fig-V-30", "fig-V-31"):
+        result = experiment(key)(tmp_path, True, 0)
+        assert all(result[name]["captured"] for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker"))
+        assert (tmp_path / f"{key}.png").is_file()
