@@ -105,8 +105,8 @@ def _runs(scenario_name: str, seed: int, **options):
     scenario = load_scenario(scenario_name)
     runs = {}
     for name in TRACKERS:
-        trace = run_episode(scenario, make_controller(name, seed=seed, **options) if name != "fuzzy-tracker"
-                            else make_controller(name, **options), seed=seed)
+        training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}  # the learned ones train with it
+        trace = run_episode(scenario, make_controller(name, **training_seed, **options), seed=seed)
         runs[name] = (trace, metrics(trace, scenario))
     return scenario, runs
 
