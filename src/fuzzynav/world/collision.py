@@ -8,6 +8,8 @@ gives ``t = inf``. Used by :class:`fuzzynav.world.world.World`.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 
@@ -114,3 +116,180 @@ def ray_box(origins, directions, width, height):
         ty = np.where(directions[:, 1] > 0, (height - origins[:, 1]) / directions[:, 1],
                       np.where(directions[:, 1] < 0, -origins[:, 1] / directions[:, 1], np.inf))
     return np.maximum(np.minimum(tx, ty), 0.0)
+
+
+class ScalarScene:
+    """The packed shapes of a world as plain Python floats, for queries of one point / one
+    robot at a time, where NumPy's fixed cost per call would dominate (the one-robot simulator
+    step). Same formulas and the same tie-breaking as the vectorised kernels above
+    (``tests/world/test_scalar_scene.py`` checks them against each other); a bounding-disc
+    broad phase skips the shapes that cannot change an answer.
+
+    Columns ``k`` follow :class:`~fuzzynav.world.world.World`'s ``_packed["order"]``: circles,
+    then polygons and walls, then ellipses.
+    """
+
+    def __init__(self, packed: dict, width: float, height: float):
+        self.width, self.height = float(width), float(height)
+        k = 0
+        self.circles = []  # (column, cx, cy, r)
+        for (cx, cy), r in zip(packed["circle_center"].tolist(), packed["circle_radius"].tolist()):
+            self.circles.append((k, cx, cy, r))
+            k += 1
+        self.polygons = []  # (column, mx, my, reach, edges); edge = (ax, ay, bx, by, ex, ey, |e|²)
+        ends = list(packed["polygon_start"][1:]) + [len(packed["seg_a"])]
+        for start, end in zip(packed["polygon_start"].tolist(), ends):
+            a, b = packed["seg_a"][start:end], packed["seg_b"][start:end]
+            mid = a.mean(axis=0)
+            reach = float(np.hypot(*(a - mid).T).max())
+            edges = tuple((ax, ay, bx, by, bx - ax, by - ay, (bx - ax) ** 2 + (by - ay) ** 2)
+                          for (ax, ay), (bx, by) in zip(a.tolist(), b.tolist()))
+            self.polygons.append((k, float(mid[0]), float(mid[1]), reach, edges))
+            k += 1
+        self.ellipses = []  # (column, cx, cy, a, b, cos, sin, reach)
+        for (cx, cy), (ra, rb), angle, reach in zip(packed["ellipse_center"].tolist(), packed["ellipse_radii"].tolist(),
+                                                    packed["ellipse_angle"].tolist(), packed["ellipse_reach"].tolist()):
+            self.ellipses.append((k, cx, cy, ra, rb, math.cos(angle), math.sin(angle), reach))
+            k += 1
+        # (kind, shape, cx, cy, bounding radius) for the ray broad phase; kind 0 circle, 1 polygon, 2 ellipse
+        self.discs = ([(0, s, s[1], s[2], s[3]) for s in self.circles]
+                      + [(1, s, s[1], s[2], s[3]) for s in self.polygons]
+                      + [(2, s, s[1], s[2], s[7]) for s in self.ellipses])
+
+    # -- distances ---------------------------------------------------------------------------
+    def nearest(self, px: float, py: float):
+        """Nearest obstacle to (px, py): ``(signed distance, x, y, column)``, or
+        ``(inf, nan, nan, -1)`` without obstacles — :meth:`World.nearest_obstacle` for one point."""
+        best, bx, by, col = math.inf, math.nan, math.nan, -1
+        hypot = math.hypot
+        for k, cx, cy, r in self.circles:
+            rx, ry = px - cx, py - cy
+            norm = hypot(rx, ry)
+            if norm - r < best:
+                best, col = norm - r, k
+                if norm > 0:
+                    bx, by = cx + r * (rx / norm), cy + r * (ry / norm)
+                else:
+                    bx, by = cx + r, cy
+        for k, mx, my, reach, edges in self.polygons:
+            if hypot(px - mx, py - my) - reach > best + 1e-9:  # lower bound of the signed distance
+                continue
+            d, nx, ny, inside = polygon_distance(px, py, edges)
+            d = -d if inside else d
+            if d < best:
+                best, bx, by, col = d, nx, ny, k
+        others = best  # ellipses whose bounding disc is beyond every circle and polygon are skipped
+        for k, cx, cy, ra, rb, c, s, reach in self.ellipses:
+            rx, ry = px - cx, py - cy
+            lx, ly = c * rx + s * ry, -s * rx + c * ry
+            lower = hypot(lx, ly) - reach
+            if not lower < others:  # never below ``best``: the vectorised path's pruning
+                continue
+            fx, fy = ellipse_foot(lx, ly, ra, rb)
+            gap = hypot(lx - fx, ly - fy)
+            d = -gap if (lx / ra) ** 2 + (ly / rb) ** 2 < 1.0 else gap
+            if d < best:
+                best, col = d, k
+                bx, by = cx + (c * fx - s * fy), cy + (s * fx + c * fy)
+        return best, bx, by, col
+
+    # -- rays --------------------------------------------------------------------------------
+    def ranges(self, x: float, y: float, theta: float, angles, max_range: float) -> list[float]:
+        """Readings of rays from (x, y) at headings θ + angle, capped at ``max_range`` —
+        :meth:`World.ranges` for one pose without noise."""
+        near = []  # shapes whose bounding disc the range disc reaches: (kind, shape, rx, ry, |r|², R)
+        for kind, shape, cx, cy, radius in self.discs:
+            rx, ry = cx - x, cy - y
+            if math.hypot(rx, ry) - radius < max_range:
+                grown = radius * (1.0 + 1e-9) + 1e-9  # rounding margin of the narrow tests below
+                near.append((kind, shape, rx, ry, rx * rx + ry * ry, grown))
+        width, height = self.width, self.height
+        out = []
+        for angle in angles:
+            heading = theta + angle
+            dx, dy = math.cos(heading), math.sin(heading)
+            tx = (width - x) / dx if dx > 0 else (-x / dx if dx < 0 else math.inf)
+            ty = (height - y) / dy if dy > 0 else (-y / dy if dy < 0 else math.inf)
+            best = max(min(tx, ty), 0.0)
+            for kind, shape, rx, ry, rr, grown in near:
+                along = rx * dx + ry * dy
+                if along + grown < 0.0 or along - grown >= best or rr - along * along > grown * grown:
+                    continue  # the ray misses the bounding disc, or meets it beyond the best hit
+                if kind == 1:
+                    t = ray_polygon(x, y, dx, dy, shape[4])
+                elif kind == 0:
+                    fx, fy = x - shape[1], y - shape[2]
+                    t = quadratic_first_hit(fx * dx + fy * dy, fx * fx + fy * fy - shape[3] ** 2, 1.0)
+                else:
+                    _, cx, cy, ra, rb, c, s, _ = shape
+                    fx, fy = x - cx, y - cy
+                    ox, oy = (c * fx + s * fy) / ra, (-s * fx + c * fy) / rb
+                    ux, uy = (c * dx + s * dy) / ra, (-s * dx + c * dy) / rb
+                    t = quadratic_first_hit(ox * ux + oy * uy, ox * ox + oy * oy - 1.0, ux * ux + uy * uy)
+                if t < best:
+                    best = t
+            out.append(min(best, max_range))
+        return out
+
+
+def quadratic_first_hit(half_b: float, c: float, a: float) -> float:
+    """Scalar :func:`_quadratic_first_hit`: smallest t ≥ 0 of a t² + 2 half_b t + c = 0, or inf."""
+    disc = half_b * half_b - a * c
+    if disc < 0.0:
+        return math.inf
+    root = math.sqrt(disc)
+    t = (-half_b - root) / a
+    if t < 0.0:
+        t = (-half_b + root) / a
+    return t if t >= 0.0 else math.inf
+
+
+def ray_polygon(x, y, dx, dy, edges) -> float:
+    """Scalar :func:`ray_segments` over one polygon's edges: the nearest hit (inf when none)."""
+    best = math.inf
+    for ax, ay, _, _, ex, ey, _ in edges:
+        denom = dx * ey - dy * ex
+        if denom == 0.0:
+            continue
+        inverse = 1.0 / denom
+        rx, ry = ax - x, ay - y
+        t = (rx * ey - ry * ex) * inverse
+        if 0.0 <= t < best:
+            u = (rx * dy - ry * dx) * inverse
+            if 0.0 <= u <= 1.0:
+                best = t
+    return best
+
+
+def polygon_distance(px, py, edges):
+    """Scalar :func:`segment_distance` and :func:`crossings` over one polygon's edges:
+    ``(distance to the boundary, nearest x, nearest y, inside)`` (first nearest edge on ties)."""
+    best, bx, by, crossing = math.inf, math.nan, math.nan, False
+    for ax, ay, bx_, by_, ex, ey, length2 in edges:
+        u = ((px - ax) * ex + (py - ay) * ey) / length2
+        u = 0.0 if u < 0.0 else (1.0 if u > 1.0 else u)
+        nx, ny = ax + u * ex, ay + u * ey
+        d = math.hypot(px - nx, py - ny)
+        if d < best:
+            best, bx, by = d, nx, ny
+        if (ay > py) != (by_ > py) and px < ax + (py - ay) * (bx_ - ax) / (by_ - ay):
+            crossing = not crossing
+    return best, bx, by, crossing
+
+
+def ellipse_foot(lx: float, ly: float, a: float, b: float, iterations: int = 4):
+    """Scalar :func:`ellipse_nearest`: foot point on the ellipse (frame coordinates) nearest to
+    (lx, ly), by the same curvature-centre iteration."""
+    c2 = a * a - b * b
+    ka, kb = c2 / a, -c2 / b
+    px, py = abs(lx), abs(ly)
+    tx = ty = math.sqrt(0.5)
+    for _ in range(iterations):
+        ex, ey = ka * tx * tx * tx, kb * ty * ty * ty
+        qx, qy = px - ex, py - ey
+        ratio = math.hypot(a * tx - ex, b * ty - ey) / max(math.hypot(qx, qy), 1e-12)
+        tx = min(max((qx * ratio + ex) / a, 0.0), 1.0)
+        ty = min(max((qy * ratio + ey) / b, 0.0), 1.0)
+        norm = math.hypot(tx, ty)
+        tx, ty = tx / norm, ty / norm
+    return math.copysign(a * tx, lx), math.copysign(b * ty, ly)

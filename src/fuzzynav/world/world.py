@@ -25,6 +25,8 @@ class World:
     height: float = 20.0
     obstacles: tuple[Shape, ...] = ()
     _packed: dict = field(init=False, repr=False, compare=False)
+    _scalar: collision.ScalarScene = field(init=False, repr=False, compare=False)
+    _order: list = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         object.__setattr__(self, "obstacles", tuple(self.obstacles))
@@ -57,6 +59,8 @@ class World:
         order = np.concatenate([packed["circle_index"], packed["polygon_index"], packed["ellipse_index"]])
         packed["order"] = order.astype(int)  # column k of the (N, K) distance matrix -> obstacle index
         object.__setattr__(self, "_packed", packed)
+        object.__setattr__(self, "_scalar", collision.ScalarScene(packed, self.width, self.height))
+        object.__setattr__(self, "_order", packed["order"].tolist())
 
     # -- distances ---------------------------------------------------------------------------
     def _distances(self, points, prune: bool = False):
@@ -142,7 +146,14 @@ class World:
     def nearest_obstacle(self, points):
         """Nearest obstacle (boundary excluded) to each point: ``(distance (N,), point (N, 2),
         index (N,))`` — signed distance to its surface (inf / nan / −1 in a world without
-        obstacles). D_ro and θ_o of Table IV.2 are measured to this point."""
+        obstacles). D_ro and θ_o of Table IV.2 are measured to this point.
+
+        One point goes through the scalar path (:class:`~fuzzynav.world.collision.ScalarScene`),
+        many through the vectorised one; both give the same answers."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
+        if len(points) == 1:
+            d, x, y, k = self._scalar.nearest(float(points[0, 0]), float(points[0, 1]))
+            return np.array([d]), np.array([[x, y]]), np.array([self._order[k] if k >= 0 else -1])
         dist, nearest_points = self._distances(points, prune=True)
         n = dist.shape[0]
         if dist.shape[1] == 0:
@@ -186,6 +197,10 @@ class World:
         poses = np.asarray(poses, dtype=float).reshape(-1, 3)
         angles = np.asarray(angles, dtype=float).reshape(-1)
         n, s = len(poses), len(angles)
+        if n == 1:  # one robot: the scalar path (NumPy's per-call cost would dominate)
+            x, y, theta = poses[0].tolist()
+            readings = np.array([self._scalar.ranges(x, y, theta, angles.tolist(), max_range)])
+            return self._add_noise(readings, max_range, noise_std, rng)
         heading = poses[:, 2:3] + angles[None, :]
         directions = np.stack([np.cos(heading), np.sin(heading)], axis=-1).reshape(-1, 2)
         origins = np.repeat(poses[:, :2], s, axis=0)
@@ -209,7 +224,11 @@ class World:
             hits = collision.ray_ellipses(origins, directions, p["ellipse_center"][k], p["ellipse_radii"][k],
                                           p["ellipse_angle"][k])
             best = np.minimum(best, hits.min(axis=1))
-        readings = np.minimum(best, max_range).reshape(n, s)
+        return self._add_noise(np.minimum(best, max_range).reshape(n, s), max_range, noise_std, rng)
+
+    @staticmethod
+    def _add_noise(readings, max_range, noise_std, rng):
+        """Readings plus Gaussian noise of ``noise_std`` from ``rng``, clipped to [0, max_range]."""
         if noise_std > 0.0:
             if rng is None:
                 raise ValueError("noisy ranges need an explicit numpy.random.Generator (rng)")
