@@ -15,6 +15,12 @@ from fuzzynav.errors import InputError
 
 # name -> ("module:factory", one-line description)
 CONTROLLERS: dict[str, tuple[str, str]] = {}
+CONTROLLERS["goal-seeking"] = ("fuzzynav.control.goal_seeking:make", "goal seeking alone, Table IV.1 (§IV.5.1)")
+CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.avoidance:make",
+                           "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
+CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.five_behaviours:make",
+                           "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
+CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:neural_tracker",
                                  "MLP inverse-model tracker (§V.3.2), trained on the fly")

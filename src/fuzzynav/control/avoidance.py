@@ -1,0 +1,68 @@
+"""``fuzzy-2b``: goal seeking + obstacle avoidance by distance and angle (thesis §IV.5.2.1,
+Figs IV.9–IV.11, Table IV.2), the two-behaviour navigator of Fig IV.15.
+
+Inputs of the avoider: D_ro, the clearance from the robot centre to the nearest obstacle surface
+(:attr:`Observation.obstacle_distance`), and θ_o, the angle between the robot axis and that
+point, fed to the table through :func:`~fuzzynav.control.base.thesis_angle_error` like θ_rg
+(with the thesis' sign the table turns left when the obstacle is on the right, and steers right
+with an obstacle dead ahead — rule R1 of §IV.5.2.1).
+
+The thesis treats the robot as a point and puts a risk zone around each circular obstacle
+(§IV.5.2, Fig IV.3); here D_ro is the clearance minus ``risk`` (default 0.3 m, the robot's
+footprint radius), i.e. the gap between the robot's body and the obstacle, so the P set of
+Fig IV.10 (fully near below 0.5 m) leaves room to turn.
+
+The switch of Fig IV.9 activates the avoider when an obstacle is detected "in front, on the
+right or on the left" (§IV.6.2) and stands between the robot and its goal: D_ro below
+``detection`` (default 2 m), the obstacle within ``sector`` (default 90°) of the heading and
+within ``sector`` of the goal direction, and the goal farther than the obstacle. An obstacle
+beside or behind the robot, or on the side away from the goal, leaves the guarded goal-seeking
+behaviour of :mod:`fuzzynav.control.goal_seeking` in charge (it turns away from such an
+obstacle anyway). Behaviour labels: ``GSB``, ``OA``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.control.base import thesis_angle_error
+from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.goal_seeking import GuardedGoalSeeking
+from fuzzynav.fuzzy.systems import obstacle_avoidance
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.world.geometry import wrap_angle
+
+
+class TwoBehaviourNavigator(BatchedController):
+    """GSB (Table IV.1) and OA (Table IV.2) with the switch of Fig IV.9."""
+
+    name = "fuzzy-2b"
+
+    def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, risk: float = 0.3,
+                 wheelbase: float = DEFAULT_PARAMS.wheelbase):
+        self.detection = float(detection)
+        self.risk = float(risk)
+        self.sector = float(sector)
+        self.gsb = GuardedGoalSeeking(wheelbase)
+        self.oa = obstacle_avoidance()
+
+    def act_batch(self, obs):
+        steering, speed, _ = self.gsb(obs.target_distance, obs.target_bearing)
+        d_ro = np.asarray(obs.obstacle_distance, dtype=float) - self.risk
+        theta_o = np.asarray(obs.obstacle_bearing, dtype=float)
+        ahead = np.abs(theta_o) <= self.sector
+        towards_goal = np.abs(wrap_angle(theta_o - obs.target_bearing)) <= self.sector
+        avoid = (d_ro < self.detection) & (ahead & towards_goal) & (obs.target_distance > d_ro)
+        if avoid.any():
+            out = self.oa.evaluate(np.column_stack([np.where(np.isfinite(d_ro), d_ro, 1e3),
+                                                    thesis_angle_error(theta_o)]))
+            steering = np.where(avoid, out[:, 0], steering)
+            speed = np.where(avoid, out[:, 1], speed)
+        return steering, speed, np.where(avoid, "OA", "GSB")
+
+
+def make(**options) -> TwoBehaviourNavigator:
+    """Factory of the ``fuzzy-2b`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    return TwoBehaviourNavigator(**options)

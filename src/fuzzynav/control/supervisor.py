@@ -1,0 +1,58 @@
+"""The supervisor of the five-behaviour navigator (thesis §IV.7, Fig IV.16): which behaviour drives.
+
+The thesis states it in words: with no obstacle sensed, goal seeking alone; otherwise "one of
+the behaviours is activated according to the perceived situation" (FOA, ROA or LOA), with the
+velocity reducing behaviour VRB in parallel; and (Fig IV.23) the robot runs along a wall "until
+the orientation error enters a predefined vision interval", then heads for the goal. Made
+precise here, per robot, from the seven readings d1…d7 (SPEC §3.3: d1 ahead; d2, d4, d6 at
+−30°, −60°, −90°; d3, d5, d7 at +30°, +60°, +90°):
+
+1. **GSB** when no reading is below ``detection`` (an obstacle-free neighbourhood), or when the
+   goal direction is clear: no reading is below ``keep`` and every ray of the sector the robot
+   sweeps while turning to the goal — from the heading to the goal bearing (clipped to the ±90°
+   the ring covers), widened by ``vision`` on both sides — reads at least min(d_rg, ``clear``).
+2. Otherwise the avoider of the nearest reading: **FOA** when it is d1 (an obstacle dead
+   ahead), **ROA** when it is on the right (d2, d4, d6), **LOA** when on the left (d3, d5, d7).
+
+:func:`select` returns one code per robot (:data:`GSB`, :data:`FOA`, :data:`ROA`, :data:`LOA`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+GSB, FOA, ROA, LOA = 0, 1, 2, 3
+NAMES = ("GSB", "FOA", "ROA", "LOA")
+THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (SPEC §3.3)
+RIGHT = (1, 3, 5)  # columns of d2, d4, d6 (the left side d3, d5, d7 is 2, 4, 6)
+
+
+@dataclass(frozen=True)
+class SupervisorParams:
+    """Thresholds of the supervisor (m, rad): d_s and d_m of Fig IV.18, a 30° half-window."""
+
+    detection: float = 2.0  # a reading below this means "an obstacle is sensed"
+    keep: float = 1.0  # GSB is not handed the robot while any reading is below this (d_m of Fig IV.18)
+    clear: float = 2.0  # free distance asked of the goal direction and of the front
+    vision: float = math.radians(30.0)  # half-width of the "vision interval" around the goal bearing
+
+
+def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams = SupervisorParams()) -> np.ndarray:
+    """Behaviour codes ``(N,)`` from readings ``d`` ``(N, 7)`` in C1…C7 order and the goal's
+    distance and bearing ``(N,)`` (bearing CCW, > 0 on the left)."""
+    d = np.asarray(d, dtype=float)
+    angles = np.deg2rad(THESIS_ANGLES_DEG)
+    look = np.clip(np.asarray(goal_bearing, dtype=float), -math.pi / 2, math.pi / 2)
+    low = np.minimum(look, 0.0) - params.vision - 1e-9
+    high = np.maximum(look, 0.0) + params.vision + 1e-9
+    window = (angles[None, :] >= low[:, None]) & (angles[None, :] <= high[:, None])  # (N, 7)
+    need = np.minimum(np.asarray(goal_distance, dtype=float), params.clear)
+    nearest = d.min(axis=1)
+    goal_clear = np.all(~window | (d >= need[:, None]), axis=1) & (nearest >= params.keep)
+    quiet = nearest >= params.detection
+    k = np.argmin(d, axis=1)
+    avoider = np.where(k == 0, FOA, np.where(np.isin(k, RIGHT), ROA, LOA))
+    return np.where(quiet | goal_clear, GSB, avoider)
