@@ -32,9 +32,9 @@ from fuzzynav.errors import InputError
 from fuzzynav.world.geometry import wrap_angle
 
 # Sensor groups of the seven-sensor ring C1…C7 at 0°, −30°, +30°, −60°, +60°, −90°, +90°
-# (fuzzynav.robot.sensors): front = C1; right = C2, C4, C6 (the ROA module, §IV.7);
-# left = C3, C5, C7 (the LOA module).
-FRONT, RIGHT, LEFT = (0,), (1, 3, 5), (2, 4, 6)
+# (fuzzynav.robot.sensors), as the modules of §IV.7: front = C1, C2, C3 (FOA); right = C2, C4,
+# C6 (ROA); left = C3, C5, C7 (LOA). A single ray ahead would miss a post ±15° off the axis.
+FRONT, RIGHT, LEFT = (0, 1, 2), (1, 3, 5), (2, 4, 6)
 N_SENSORS = 7
 
 
@@ -54,14 +54,13 @@ def side_distances(ranges) -> np.ndarray:
     """Front, right and left distances (B, 3) from the seven range readings (B, 7) (§VI.5.2).
 
     The thesis' FQL avoider and wall follower read "the distances in three directions" (Fig VI.17);
-    with the ring of §IV.7 the front is C1 and each side the nearest of its three sensors.
+    with the ring of §IV.7 each direction is the nearest reading of its module's three sensors.
     """
     ranges = np.asarray(ranges, dtype=float)
     if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
         raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
                          f"{ranges.shape}", field="ranges")
-    return np.column_stack([ranges[:, FRONT[0]], ranges[:, list(RIGHT)].min(axis=1),
-                            ranges[:, list(LEFT)].min(axis=1)])
+    return np.column_stack([ranges[:, list(group)].min(axis=1) for group in (FRONT, RIGHT, LEFT)])
 
 
 def _batch(obs):
@@ -144,8 +143,9 @@ class LearnedAvoidanceNavigator(_Learned):
 
     ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances with
     the rules of every situation in which an obstacle is near (7 of the 8 rules of Fig VI.17).
-    The eighth situation — all three distances far — is goal seeking (``goal``: the chapter IV
-    behaviour of Table IV.1 by default): with w_free = 1 − Σ w_i the share of that situation,
+    The eighth situation — all three distances far — is goal seeking (``goal``: the guarded
+    chapter IV behaviour of Table IV.1 by default, :mod:`fuzzynav.control.goal_seeking`): with
+    w_free = 1 − Σ w_i the share of that situation,
 
         α = Σ_i w_i α_i + w_free · α_GS,     V_r = Σ_i w_i V_i + w_free · V_GS.
 
@@ -159,19 +159,24 @@ class LearnedAvoidanceNavigator(_Learned):
             raise InputError(f"the avoider reads ['front', 'right', 'left'], got {avoidance.input_names}",
                              field="inputs")
         if goal is None:
-            from fuzzynav.fuzzy.systems import goal_seeking
+            from fuzzynav.control.goal_seeking import GuardedGoalSeeking
 
-            goal = goal_seeking()
+            goal = GuardedGoalSeeking()
         self.avoidance = avoidance
-        self.goal = goal
+        self.goal = goal  # (d_rg, bearing) -> (α, V_r, ...): the guarded GSB of chapter IV
         self.alpha_index, self.speed_index = _outputs(avoidance, ("alpha", "v"))
         self.constant_speed = float(constant_speed)
         self.name = name
 
+    def free_share(self, distances) -> np.ndarray:
+        """w_free = 1 − Σ_i w_i (B,): the share of "all three distances far"."""
+        covered = self.avoidance.firing_strengths(distances, normalise=False).sum(axis=1)
+        return np.clip(1.0 - covered, 0.0, 1.0)
+
     def blend(self, distances, goal_command):
         """(α, V_r, w_free) from side distances (B, 3) and the goal seeker's (α, V_r) (B, 2)."""
         out = self.avoidance.evaluate(distances)
-        free = np.clip(1.0 - self.avoidance.firing_strengths(distances, normalise=False).sum(axis=1), 0.0, 1.0)
+        free = self.free_share(distances)
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
         return out[:, self.alpha_index] + free * goal_command[:, 0], speed + free * goal_command[:, 1], free
 
@@ -179,7 +184,9 @@ class LearnedAvoidanceNavigator(_Learned):
         pose, target, ranges = _batch(obs)
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
-        steering, speed, free = self.blend(side_distances(ranges), self.goal.evaluate(goal_inputs(pose, target)))
+        x = goal_inputs(pose, target)
+        alpha, speed = self.goal(x[:, 0], -x[:, 1])[:2]
+        steering, speed, free = self.blend(side_distances(ranges), np.column_stack([alpha, speed]))
         labels = ["goal seeking" if f >= 0.5 else "obstacle avoidance" for f in free]
         return steering, speed, labels
 

@@ -44,13 +44,14 @@ from fuzzynav.fuzzy.systems import D_MAX_GOAL, goal_seeking
 from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.checkpoint import train_loop
 from fuzzynav.learn.curves import episodes_to_converge
-from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
+from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RandomObstacles, RobotEnv
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
-from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
+from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward, GoalSpeedReward, GoalSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.learn.tabular import TabularLearner, ZoneSectorDiscretiser
 from fuzzynav.models import save_json_atomic
+from fuzzynav.robot.sensors import SensorRing
 
 PI = math.pi
 BATCH = 50  # parallel episodes per batch
@@ -244,10 +245,11 @@ GOAL_TASKS = {
 }
 
 
-def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None) -> FuzzyQLearner:
+def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
     """The FQL settings of every task: γ = 0.9, β = 1 / (1 + visits) (eq III.24) floored so the
     B parallel corrections stay small, ε-greedy per rule with ε decaying 0.3 → 0.02 (× 0.85 per batch)."""
-    return FuzzyQLearner(premise, candidates, gamma=0.9, alpha=InverseVisits(1.0, 1.0, 0.2 / batch),
+    alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
+    return FuzzyQLearner(premise, candidates, gamma=0.9, alpha=alpha,
                          policy=EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02)), lam=lam,
                          normalise=False, prior=prior)
 
@@ -356,3 +358,126 @@ def evaluate_goal(controller, n: int = 100, seed: int = 12345, goals: int = 10, 
     outcomes = outcomes[:n]
     return {"runs": len(outcomes), "success": outcomes.count("reached") / len(outcomes),
             "collisions": outcomes.count("collision"), "timeouts": outcomes.count("timeout")}
+
+
+# -- obstacle avoidance, fuzzy Q-learning (§VI.5.2) ------------------------------------------
+D_MAX = 4.0  # m, sensor range (docs/ARCHITECTURE.md)
+AVOID_D_MIN, AVOID_D_SAFE = 0.6, 3.0  # d_m, d_s of Fig VI.17 (m)
+AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is learned
+AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
+AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
+AVOID_MAX_STEPS = 400
+AVOID_RATE = 1.0  # β × B: a constant rate that follows the improving policy (qualities of recent episodes)
+AVOID_DECISION = 3  # steps Δt per learning decision (0.3 s)
+AVOID_TOLERANCE = 0.02  # extraction tolerance: the avoider's quality gaps are a few hundredths
+# A-priori conclusions (indices of NG, Z, PG) of the 8 rules (front, right, left ∈ P, L; first
+# slowest), from the principle of §IV.7: turn away from the nearer side, right when blocked in
+# front (Table IV.3, rule R1). A rule keeps its prior unless a learned candidate beats it by more
+# than AVOID_TOLERANCE — the "knowledge introduced a priori" of §VI.6.
+AVOID_PRIOR = (0, 2, 0, 0, 1, 2, 0, 1)  # PPP PPL PLP PLL LPP LPL LLP LLL
+
+
+def distance_variable(name: str, d_min: float, d_safe: float, d_max: float = D_MAX) -> Variable:
+    """A distance d_i with P (near) and L (far) defined by d_m, d_s and D_max (Figs IV.18, VI.17)."""
+    return Variable(name, (0.0, d_max), {"P": Trapezoidal(0.0, 0.0, d_min, d_safe),
+                                        "L": Trapezoidal(d_min, d_safe, d_max, d_max)})
+
+
+def avoid_inputs() -> list[Variable]:
+    return [distance_variable(n, AVOID_D_MIN, AVOID_D_SAFE) for n in ("front", "right", "left")]
+
+
+FREE_RULE = 7  # (front L, right L, left L): the last rule of the grid, goal seeking in the navigator
+
+
+def avoid_system(steering_index, speed_index=None) -> FuzzySystem:
+    """The learned avoider: the 7 rules of Fig VI.17 with an obstacle near (FREE_RULE excluded),
+    conclusions by candidate index (steering, and speed if given)."""
+    inputs = avoid_inputs()
+    outputs = [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))]
+    conclusions = [[outputs[0].labels[j] for j in steering_index]]
+    if speed_index is not None:
+        outputs.append(output_variable("v", AVOID_SPEEDS, (0.0, 4.0)))
+        conclusions.append([outputs[1].labels[j] for j in speed_index])
+    full = grid_system(inputs, outputs, [c + [c[0]] for c in conclusions], "fql-avoid", "")
+    return FuzzySystem(inputs, outputs, full.rules[:FREE_RULE], method="ts0", tnorm="product",
+                       defuzzifier="weighted_sum", name="fql-avoid",
+                       description="Obstacle avoidance learned by fuzzy Q-learning (thesis §VI.5.2, eqs VI.18-VI.21); "
+                                   "the situation 'front, right and left far' is goal seeking (Table IV.1)")
+
+
+def _avoid_candidates(values: dict) -> np.ndarray:
+    """(8, 3) candidates; the free rule's are 0 (its share is goal seeking's, added by the env)."""
+    candidates = np.tile(np.array(list(values.values())), (FREE_RULE + 1, 1))
+    candidates[FREE_RULE] = 0.0
+    return candidates
+
+
+def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
+    """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
+    from fuzzynav.control.goal_seeking import GuardedGoalSeeking
+
+    inputs = avoid_inputs()
+    template = grid_system(inputs, [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
+                           [["Z"] * (FREE_RULE + 1)], "premise", "")
+    premise = GridPremise(template)
+    gsb = GuardedGoalSeeking()
+    layout = RandomObstacles()
+    sensors = SensorRing()
+
+    def goal_and_free(s):
+        alpha, speed = gsb(s.goal[:, 0], -s.goal[:, 1])[:2]
+        free = premise.firing_strengths(s.sides, normalise=False)[:, FREE_RULE]
+        return alpha, speed, free
+
+    def steer_command(a, s):
+        alpha, speed, free = goal_and_free(s)
+        return a[:, 0] + free * alpha, (1.0 - free) * AVOID_SPEED + free * speed
+
+    steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING), 0.0, batch, prior=AVOID_PRIOR,
+                        alpha=AVOID_RATE / batch)
+    n_steer = episodes - round(AVOID_SPEED_SHARE * episodes)
+    env = RobotEnv(layout, lambda s: s.sides, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
+                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
+                   decision_steps=AVOID_DECISION)
+    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+
+    def speed_command(a, s):
+        alpha, speed, free = goal_and_free(s)
+        return steer.greedy_action(s.sides, AVOID_TOLERANCE)[:, 0] + free * alpha, a[:, 0] + free * speed
+
+    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS), 0.0, batch, alpha=AVOID_RATE / batch)
+    env = RobotEnv(layout, lambda s: s.sides, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
+                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
+                   decision_steps=AVOID_DECISION)
+    yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
+
+
+AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
+
+
+def train_fql_avoid(request) -> dict:
+    """``fuzzynav train fql-avoid``: 8 rules × 3 over front/right/left distances (Figs VI.17–VI.22)."""
+    phases, learners = run_phases(fql_avoid_phases(request.out, _episodes(request, 2000)), request)
+    system = avoid_system(learners["steering"].greedy_indices(AVOID_TOLERANCE)[0, 0, :FREE_RULE],
+                          learners["speed"].greedy_indices(AVOID_TOLERANCE)[0, 0, :FREE_RULE])
+    document = {"kind": "fql-avoid", **to_document(system), "constant_speed": AVOID_SPEED,
+                "training": {"task": "fql-avoid", "seed": request.seed, **_summary(phases)}}
+    save_json_atomic(request.out, document)
+    _write_curve(request, phases, "fql-avoid")
+    return {"model": str(request.out), **_summary(phases)}
+
+
+def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float = 60.0) -> dict:
+    """Success and collisions of a navigator in ``n`` random obstacle worlds (one start and goal
+    each, drawn as in training but from another seed) — the evaluation of §VI.5.2."""
+    from fuzzynav.sim.simulator import BatchSimulator
+
+    rng = np.random.default_rng(seed)
+    outcomes = []
+    for k in range(n):
+        world, starts, goals = RandomObstacles().sample(rng, 1)
+        scenario = _scenario(world, starts[0], goals[0], f"random-world-{k}", max_time)
+        outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
+    return {"runs": n, "success": outcomes.count("reached") / n, "collisions": outcomes.count("collision"),
+            "timeouts": outcomes.count("timeout")}

@@ -18,7 +18,9 @@ Three plug-ins make one environment per task:
 
 An episode ends (``terminated``) on a collision — the footprint disc touching an obstacle or the
 workspace boundary ("the walls of the workspace", eq VI.2) — or when the goal is within
-``tolerance``; it is ``truncated`` after ``max_steps``. Success (``info["success"]``) is reaching
+``tolerance``; it is ``truncated`` after ``max_steps`` decisions. A decision lasts
+``decision_steps`` steps Δt (default 1): a longer decision period makes the effect of one choice
+on the next state — hence the gap between the candidates' qualities — larger. Success (``info["success"]``) is reaching
 the goal in goal tasks, and lasting ``max_steps`` without collision in tasks without a goal.
 Rows whose episode has ended stand still until the whole batch is done.
 """
@@ -57,13 +59,15 @@ class RobotEnv:
     """``batch`` episodes of a task in lock-step (see the module docstring)."""
 
     def __init__(self, layout, observe, command, reward, *, batch: int, max_steps: int,
-                 tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None):
+                 tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 decision_steps: int = 1):
         self.layout, self.observe, self.command, self.reward = layout, observe, command, reward
         self.batch = int(batch)
         self.max_steps = int(max_steps)
         self.tolerance = float(tolerance)
         self.params = params
         self.sensors = sensors
+        self.decision_steps = int(decision_steps)
         self.state: RobotState | None = None
 
     def _state(self, world, pose, speed, steering, target) -> RobotState:
@@ -85,23 +89,34 @@ class RobotEnv:
         return self.observe(self.state)
 
     def step(self, action, rng: np.random.Generator):
-        """Apply the learner's actions for one step Δt (rows already finished stand still)."""
+        """Apply the learner's actions for one decision period (rows already finished stand still).
+
+        The period is ``decision_steps`` steps Δt: the learner's action is held while ``command``
+        is re-evaluated on the current state at every step (so a goal seeker blended into the
+        command keeps steering); the episode may end at any of them; the reward compares the
+        states at both ends of the period.
+        """
         before = self.state
-        steering, speed = self.command(action, before)
-        steering, speed = self.params.clip(np.broadcast_to(steering, (self.batch,)),
-                                           np.broadcast_to(speed, (self.batch,)))
-        live = ~self.done
-        speed = np.where(live, speed, 0.0)
-        moved = tricycle.step(before.pose, steering, speed, self.params)
-        pose = np.where(live[:, None], moved, before.pose)
-        after = self._state(before.world, pose, speed, steering, before.target)
-        collided = before.world.clearance(pose[:, :2]) < self.params.radius
-        reached = (after.goal[:, 0] <= self.tolerance) & ~collided if after.goal is not None else np.zeros_like(collided)
-        reward = self.reward(before, after, collided, reached)
+        now = before
+        collided = np.zeros(self.batch, dtype=bool)
+        reached = np.zeros(self.batch, dtype=bool)
+        for _ in range(self.decision_steps):
+            live = ~(self.done | collided | reached)
+            steering, speed = self.command(action, now)
+            steering, speed = self.params.clip(np.broadcast_to(steering, (self.batch,)),
+                                               np.broadcast_to(speed, (self.batch,)))
+            speed = np.where(live, speed, 0.0)
+            moved = tricycle.step(now.pose, steering, speed, self.params)
+            pose = np.where(live[:, None], moved, now.pose)
+            now = self._state(now.world, pose, speed, steering, now.target)
+            collided |= live & (now.world.clearance(pose[:, :2]) < self.params.radius)
+            if now.goal is not None:
+                reached |= live & ~collided & (now.goal[:, 0] <= self.tolerance)
+        reward = self.reward(before, now, collided, reached)
         self.k += 1
         terminated = collided | reached
         truncated = np.full(self.batch, self.k >= self.max_steps)
-        success = reached if after.goal is not None else truncated & ~collided
+        success = reached if now.goal is not None else truncated & ~collided
         self.done = self.done | terminated | truncated
-        self.state = after
-        return self.observe(after), reward, terminated, truncated, {"success": success, "collision": collided}
+        self.state = now
+        return self.observe(now), reward, terminated, truncated, {"success": success, "collision": collided}
