@@ -52,9 +52,9 @@ class TricycleParams:
             raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
 
     def clip(self, steering, speed):
-        """Clip commands to the limits: |α| ≤ max_steering, min_speed ≤ V ≤ max_speed."""
-        steering = np.clip(steering, -self.max_steering, self.max_steering)
-        speed = np.clip(speed, self.min_speed, self.max_speed)
+        """Clip commands to the limits: |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays NaN)."""
+        steering = np.minimum(np.maximum(steering, -self.max_steering), self.max_steering)
+        speed = np.minimum(np.maximum(speed, self.min_speed), self.max_speed)
         return steering, speed
 
 
@@ -71,21 +71,23 @@ def step(pose, steering, speed, params: TricycleParams = DEFAULT_PARAMS, integra
     Returns the new poses (same shape), θ wrapped to (−π, π].
     """
     pose = np.asarray(pose, dtype=float)
-    x, y, theta = pose[..., 0], pose[..., 1], pose[..., 2]
+    theta = pose[..., 2]
     dt = params.dt
     omega = speed * np.tan(steering) / params.wheelbase
-    new_theta = theta + omega * dt
+    new_theta = wrap_angle(theta + omega * dt)
     method = integrator or params.integrator
     if method == "euler":
-        dx = dt * speed * np.cos(theta)
-        dy = dt * speed * np.sin(theta)
+        chord, direction = dt * speed, theta
     elif method == "arc":
         # sin/cos differences written with half-angles: exact, and well conditioned as ω → 0.
         half = 0.5 * omega * dt
         chord = dt * speed * np.sinc(half / np.pi)  # = 2 V sin(half) / ω
-        mid = theta + half
-        dx = chord * np.cos(mid)
-        dy = chord * np.sin(mid)
+        direction = theta + half
     else:
         raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
-    return np.stack([x + dx, y + dy, wrap_angle(new_theta)], axis=-1)
+    x = pose[..., 0] + chord * np.cos(direction)
+    out = np.empty(np.broadcast(x, new_theta).shape + (3,))  # one array, no stacking of temporaries
+    out[..., 0] = x
+    out[..., 1] = pose[..., 1] + chord * np.sin(direction)
+    out[..., 2] = new_theta
+    return out

@@ -84,6 +84,7 @@ class BatchSimulator:
         self.speed = np.zeros(self.n)
         self.task = TaskState(self.scenario, self.n)
         self.status = np.full(self.n, RUNNING)
+        self._all_running = True  # no robot has finished: the masks of step() can be skipped
         self.steps = np.zeros(self.n, dtype=int)
         self._proximity = self.scenario.world.proximity(self.pose[:, :2])
         self._judge(active=np.ones(self.n, dtype=bool))
@@ -105,6 +106,7 @@ class BatchSimulator:
         distance, nearest, _, _ = self._proximity
         rel = nearest - self.pose[:, :2]
         bearing = np.where(np.isfinite(distance), wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - self.pose[:, 2]), 0.0)
+        active = self.active
         return BatchObservation(
             t=self.k * self.params.dt,
             dt=self.params.dt,
@@ -116,8 +118,8 @@ class BatchSimulator:
             sensor_angles=self.sensors.angles,
             max_range=self.sensors.max_range,
             obstacle_distance=distance,
-            obstacle_bearing=np.atleast_1d(bearing),
-            active=self.active,
+            obstacle_bearing=bearing,
+            active=active,
             path=self.task.path,
             waypoint_index=self.task.waypoint_index.copy(),
             target_velocity=self.task.target_velocity(),
@@ -140,13 +142,17 @@ class BatchSimulator:
         """One step of every running robot; returns the new observation."""
         active = self.active
         steering, speed, labels = self._act(self.observation)
-        steering, speed = self.params.clip(steering, speed)
+        steering, speed = self.params.clip(steering, speed)  # new arrays, never the controller's
         if self.task.forced_speed is not None:
             speed = np.full(self.n, self.task.forced_speed)
-        self.steering = np.where(active, steering, self.steering)
-        self.speed = np.where(active, speed, 0.0)
-        moved = tricycle.step(self.pose, self.steering, self.speed, self.params)
-        self.pose = np.where(active[:, None], moved, self.pose)
+        if self._all_running and np.shape(steering) == np.shape(speed) == (self.n,):
+            self.steering, self.speed = steering, speed  # nothing to mask
+            self.pose = tricycle.step(self.pose, steering, speed, self.params)
+        else:
+            self.steering = np.where(active, steering, self.steering)
+            self.speed = np.where(active, speed, 0.0)
+            moved = tricycle.step(self.pose, self.steering, self.speed, self.params)
+            self.pose = np.where(active[:, None], moved, self.pose)
         self.k += 1
         self.steps += active
         self._proximity = self.scenario.world.proximity(self.pose[:, :2])
@@ -164,10 +170,13 @@ class BatchSimulator:
         distance, _, _, boundary = self._proximity
         collided = np.minimum(distance, boundary) < self.params.radius
         done = self.task.update(self.pose[:, :2], self.k * self.params.dt, active)
+        if self._all_running and self.k < self.max_steps and not (collided | done).any():
+            return  # every robot runs on
         status = np.where(collided, COLLISION, np.where(done, REACHED, RUNNING))
         if self.k >= self.max_steps:
             status = np.where(status == RUNNING, TIMEOUT, status)
         self.status = np.where(active, status, self.status)
+        self._all_running = not self.status.any()  # RUNNING is 0
 
     def _record_state(self) -> None:
         if self.record:

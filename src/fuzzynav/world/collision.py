@@ -160,6 +160,8 @@ class ScalarScene:
     def nearest(self, px: float, py: float):
         """Nearest obstacle to (px, py): ``(signed distance, x, y, column)``, or
         ``(inf, nan, nan, -1)`` without obstacles — :meth:`World.nearest_obstacle` for one point."""
+        if px != px or py != py:  # NaN: as the vectorised argmin over a row of NaNs
+            return (math.nan, math.nan, math.nan, 0) if self.discs else (math.inf, math.nan, math.nan, -1)
         best, bx, by, col = math.inf, math.nan, math.nan, -1
         hypot = math.hypot
         for k, cx, cy, r in self.circles:

@@ -164,14 +164,14 @@ class World:
     def proximity(self, points):
         """:meth:`nearest_obstacle` and :meth:`boundary_distance` in one call:
         ``(distance, point, index, boundary)``; the clearance is ``min(distance, boundary)``."""
+        points = np.asarray(points, dtype=float).reshape(-1, 2)
         return (*self.nearest_obstacle(points), self.boundary_distance(points))
 
     def boundary_distance(self, points):
         """Signed distance ``(N,)`` to the boundary walls (negative outside the world)."""
         points = np.asarray(points, dtype=float).reshape(-1, 2)
-        return np.minimum.reduce(
-            [points[:, 0], self.width - points[:, 0], points[:, 1], self.height - points[:, 1]]
-        )
+        x, y = points[:, 0], points[:, 1]
+        return np.minimum(np.minimum(x, self.width - x), np.minimum(y, self.height - y))
 
     def clearance(self, points):
         """Signed distance ``(N,)`` from points to the nearest obstacle surface or boundary."""
