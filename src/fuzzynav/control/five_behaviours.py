@@ -46,7 +46,7 @@ class FiveBehaviourNavigator(BatchedController):
                          nav.left_avoider(d_m, d_s, d_max))
         self.vrb = nav.velocity_reducer(d1=d_m, d2=d_s, d_max=d_max)
         self.v_floor, self.v_max = float(v_floor), float(v_max)
-        self.params = params or supervisor.SupervisorParams(detection=d_s, keep=d_m, clear=d_s)
+        self.params = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         self._columns = None  # sensor columns of C1…C7, found from the first observation's ring
 
     def act_batch(self, obs):

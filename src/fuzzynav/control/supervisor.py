@@ -35,6 +35,7 @@ class SupervisorParams:
     """Thresholds of the supervisor (m, rad): d_s and d_m of Fig IV.18, a 30° half-window."""
 
     detection: float = 2.0  # a reading below this means "an obstacle is sensed"
+    front: float = 1.0  # FOA also takes over while the front reading d1 is below this
     keep: float = 1.0  # GSB is not handed the robot while any reading is below this (d_m of Fig IV.18)
     clear: float = 2.0  # free distance asked of the goal direction and of the front
     vision: float = math.radians(30.0)  # half-width of the "vision interval" around the goal bearing
@@ -54,5 +55,6 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
     goal_clear = np.all(~window | (d >= need[:, None]), axis=1) & (nearest >= params.keep)
     quiet = nearest >= params.detection
     k = np.argmin(d, axis=1)
-    avoider = np.where(k == 0, FOA, np.where(np.isin(k, RIGHT), ROA, LOA))
+    side = np.where(np.isin(k, RIGHT), ROA, LOA)
+    avoider = np.where((k == 0) | (d[:, 0] < params.front), FOA, side)
     return np.where(quiet | goal_clear, GSB, avoider)

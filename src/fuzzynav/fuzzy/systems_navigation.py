@@ -26,8 +26,8 @@ from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
 
-D_M = 1.0  # d_m, Fig IV.18 (m)
-D_S = 2.0  # d_s, Fig IV.18 (m)
+D_M = 1.5  # d_m, Fig IV.18 (m)
+D_S = 3.0  # d_s, Fig IV.18 (m)
 D_MAX = 4.0  # d_max, the sensor range (m)
 V_BREAKS = (0.5, 1.0, 2.0, 4.0)  # v1, v2, v3, v_max of Fig IV.19 (m/s)
 WALL_D_M, WALL_D_S = 0.9, 1.6  # d_m, d_s of the wall follower (Fig VI.17), m

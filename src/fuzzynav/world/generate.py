@@ -9,7 +9,9 @@ Two families on the thesis' 20 m × 20 m workspace:
 Start and goal are at least 10 m apart, ≥ 2.5 m from the boundary walls and ≥ 1.5 m from every
 obstacle; the start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
 where the robot's footprint disc plus a margin fits (clearance ≥ ``robot_radius + margin``) must
-connect the start to the goal (4-connected flood fill, :func:`scipy.ndimage.label`); otherwise the
+connect the start to the goal. The default margin is the tightest turning radius
+l / tan(π/5) = 0.69 m: a tricycle that cannot reverse needs passages where it can turn around
+(width ≥ 2 (0.3 + 0.69) ≈ 2 m), not merely passages it fits through (4-connected flood fill, :func:`scipy.ndimage.label`); otherwise the
 draw is rejected and redrawn. World ``i`` of ``generate_worlds(kind, n, seed)`` depends only on
 ``(kind, seed, i)`` (one child :class:`numpy.random.SeedSequence` per world), so the first 10 of
 100 worlds are the 10 worlds of ``n = 10``.
@@ -33,6 +35,7 @@ POINT_CLEARANCE = 1.5  # m of free space around start and goal
 BORDER = 2.5  # m, start and goal keep this far from the boundary walls (room to turn from any heading)
 GRID = 0.2  # m, occupancy-grid cell
 MAX_DRAWS = 200
+TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(np.pi / 5)  # m, l / tan(α_max) = 0.69 m
 
 
 def _circle(rng):
@@ -88,7 +91,7 @@ def connected(world: World, start, goal, radius: float) -> bool:
 
 
 def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", max_time: float = 120.0,
-                 robot_radius: float = DEFAULT_PARAMS.radius, margin: float = 0.5) -> Scenario:
+                 robot_radius: float = DEFAULT_PARAMS.radius, margin: float = TURNING_MARGIN) -> Scenario:
     """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="kind")
