@@ -22,6 +22,16 @@ EXPERIMENTS["fig-V-28"] = (f"{_CH5}:fig_v_28", "V path by CF, CN, CNF with a zoo
 EXPERIMENTS["fig-V-29"] = (f"{_CH5}:fig_v_29", "pursuit of a target on a line by CF, CN, CNF (§V.5)")
 EXPERIMENTS["fig-V-30"] = (f"{_CH5}:fig_v_30", "pursuit of a target on a circle by CF, CN, CNF (§V.5)")
 EXPERIMENTS["fig-V-31"] = (f"{_CH5}:fig_v_31", "pursuit of a target on a sinusoid by CF, CN, CNF (§V.5)")
+_CH6 = "fuzzynav.experiments.chapter6"
+EXPERIMENTS["fig-VI-1"] = (f"{_CH6}:fig_vi_1", "tabular Q-learning goal seeking, fixed start: curve and trajectory (VI.1-VI.2)")
+EXPERIMENTS["fig-VI-4"] = (f"{_CH6}:fig_vi_4", "tabular Q-learning, random starts: curve and trajectories (VI.3-VI.4)")
+EXPERIMENTS["table-VI-1"] = (f"{_CH6}:table_vi_1", "episodes to converge for 9/11/13/19 states (Table VI.1)")
+EXPERIMENTS["fig-VI-8"] = (f"{_CH6}:fig_vi_8", "FQL 15 rules, fixed start (VI.7-VI.8)")
+EXPERIMENTS["fig-VI-9"] = (f"{_CH6}:fig_vi_9", "FQL 15 rules, random starts, steering then speed (VI.9-VI.10)")
+EXPERIMENTS["fig-VI-13"] = (f"{_CH6}:fig_vi_13", "FQL 35 rules x 5 conclusions (VI.13-VI.14)")
+EXPERIMENTS["fig-VI-16"] = (f"{_CH6}:fig_vi_16", "FQL with eligibility traces (VI.15-VI.16)")
+EXPERIMENTS["fig-VI-22"] = (f"{_CH6}:fig_vi_22", "FQL obstacle avoidance: curves and trajectories (VI.18-VI.22)")
+EXPERIMENTS["fig-VI-24"] = (f"{_CH6}:fig_vi_24", "chapter IV navigator vs FQL navigator on the same world (VI.23-VI.24)")
 
 
 def available() -> dict[str, str]:

@@ -375,6 +375,7 @@ AVOID_TOLERANCE = 0.02  # extraction tolerance: the avoider's quality gaps are a
 # front (Table IV.3, rule R1). A rule keeps its prior unless a learned candidate beats it by more
 # than AVOID_TOLERANCE — the "knowledge introduced a priori" of §VI.6.
 AVOID_PRIOR = (0, 2, 0, 0, 1, 2, 0, 1)  # PPP PPL PLP PLL LPP LPL LLP LLL
+# and the speed prior F (slow) near obstacles, the principle of the VRB (Table IV.6).
 
 
 def distance_variable(name: str, d_min: float, d_safe: float, d_max: float = D_MAX) -> Variable:
@@ -446,7 +447,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
         alpha, speed, free = goal_and_free(s)
         return steer.greedy_action(s.sides, AVOID_TOLERANCE)[:, 0] + free * alpha, a[:, 0] + free * speed
 
-    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS), 0.0, batch, alpha=AVOID_RATE / batch)
+    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS), 0.0, batch, prior=0, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, lambda s: s.sides, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
