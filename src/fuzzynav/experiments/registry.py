@@ -14,6 +14,14 @@ from importlib import import_module
 from fuzzynav.errors import InputError
 
 EXPERIMENTS: dict[str, tuple[str, str]] = {}
+_CH4 = "fuzzynav.experiments.chapter4"
+EXPERIMENTS["fig-IV-12"] = (f"{_CH4}:fig_iv_12", "free goal seeking from five starts per panel, Table IV.1 (§IV.6.1)")
+EXPERIMENTS["fig-IV-13"] = (f"{_CH4}:fig_iv_13", "free navigation and its commands α, V_r (Figs IV.13-IV.14)")
+EXPERIMENTS["fig-IV-15"] = (f"{_CH4}:fig_iv_15", "fuzzy-2b past circular obstacles, switches A...H (§IV.6.2)")
+EXPERIMENTS["fig-IV-22"] = (f"{_CH4}:fig_iv_22", "fuzzy-5b in unknown cluttered worlds (§IV.7.1)")
+EXPERIMENTS["fig-IV-23"] = (f"{_CH4}:fig_iv_23", "fuzzy-5b reaches a goal inside a U-shaped wall (§IV.7.1)")
+EXPERIMENTS["fig-VI-28"] = (f"{_CH4}:fig_vi_28", "hand-made wall follower: bend followed, sharp corner hit (Figs VI.27-VI.28)")
+EXPERIMENTS["eval-IV"] = (f"{_CH4}:eval_iv", "fuzzy-2b on circle worlds, fuzzy-5b on mixed worlds: success/collision rates")
 _CH5 = "fuzzynav.experiments.chapter5"
 EXPERIMENTS["fig-V-7"] = (f"{_CH5}:fig_v_7", "control surface of the fuzzy tracker, Table V.1")
 EXPERIMENTS["fig-V-15"] = (f"{_CH5}:fig_v_15", "MLP tracker: validation on unseen pairs and training loss (§V.3.2)")
