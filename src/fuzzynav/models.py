@@ -25,6 +25,7 @@ MODEL_LOADERS["anfis-tracker"] = "fuzzynav.experiments.train_trackers:load_anfis
 MODEL_LOADERS["q-goal"] = "fuzzynav.experiments.train_rl:load_q_goal"
 MODEL_LOADERS["fql-goal"] = "fuzzynav.control.learned:load_fuzzy_model"
 MODEL_LOADERS["fql-avoid"] = "fuzzynav.control.learned:load_fuzzy_model"
+MODEL_LOADERS["fql-wall"] = "fuzzynav.control.learned:load_fuzzy_model"
 
 
 def _atomic_write(path: Path, write) -> None:

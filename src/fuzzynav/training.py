@@ -27,6 +27,7 @@ TRAINERS["fql-goal"] = (f"{_RL}:train_fql_goal", "FQL goal seeking, 15 rules x 3
 TRAINERS["fql-goal-35"] = (f"{_RL}:train_fql_goal_35", "FQL goal seeking, 35 rules x 5 (Figs VI.13-VI.14)")
 TRAINERS["fql-goal-traces"] = (f"{_RL}:train_fql_goal_traces", "FQL goal seeking with eligibility traces (VI.16)")
 TRAINERS["fql-avoid"] = (f"{_RL}:train_fql_avoid", "FQL obstacle avoidance, 8 rules, as a goal navigator (§VI.5.2)")
+TRAINERS["fql-wall"] = (f"{_RL}:train_fql_wall", "wall follower of Table VI.2 optimised by FQL (§VI.5.3.2)")
 
 
 @dataclass(frozen=True)

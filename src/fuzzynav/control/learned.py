@@ -192,14 +192,17 @@ class LearnedAvoidanceNavigator(_Learned):
 
 
 class LearnedWallFollower(_Learned):
-    """The FQL-optimised wall follower (§VI.5.3.2): system(dd, dg, df) → α, V_r (Figs VI.29–VI.30).
+    """The FQL-optimised wall follower (§VI.5.3.2): system(dd, df, dg) → α, V_r (Figs VI.29–VI.30).
 
-    Inputs as in Table VI.2: d_d (right), d_g (left), d_f (front) from :func:`side_distances`.
+    The rules of the hand-made follower (:mod:`fuzzynav.control.wall_following`, Table VI.2) with
+    learned numeric interpretations of their conclusions. It reads d_d (right), d_f (front), d_g
+    (left) as :func:`side_distances` — the nearest reading of each module's sensors — where the
+    hand-made one reads single rays at −90°, 0°, +90° and so misses corners between them.
     """
 
     def __init__(self, system, name: str = "fql-wall"):
-        if system.input_names != ["dd", "dg", "df"]:
-            raise InputError(f"a wall follower reads ['dd', 'dg', 'df'], got {system.input_names}", field="inputs")
+        if system.input_names != ["dd", "df", "dg"]:
+            raise InputError(f"a wall follower reads ['dd', 'df', 'dg'], got {system.input_names}", field="inputs")
         self.system = system
         self.alpha_index, self.speed_index = _outputs(system, ("alpha", "v"))
         if self.speed_index < 0:
@@ -211,7 +214,7 @@ class LearnedWallFollower(_Learned):
         if ranges is None:
             raise InputError("wall following needs the range readings", field="ranges")
         front, right, left = side_distances(ranges).T
-        out = self.system.evaluate(np.column_stack([right, left, front]))
+        out = self.system.evaluate(np.column_stack([right, front, left]))
         return out[:, self.alpha_index], out[:, self.speed_index], ["wall following"] * len(out)
 
 

@@ -13,7 +13,9 @@ budgets (smoke runs); the full setting uses each task's default.
   steering then speed; ``fig-VI-13`` (VI.14): 35 rules × 5; ``fig-VI-16`` (VI.15): traces;
 - ``fig-VI-22`` (VI.18–VI.21): FQL obstacle avoidance — curves of both phases and trajectories
   in random worlds; ``fig-VI-24`` (VI.23): the chapter IV navigator and the learned one on the
-  same world, side by side, with their success over 100 random worlds.
+  same world, side by side, with their success over 100 random worlds;
+- ``fig-VI-29`` (VI.28–VI.30): the hand-made wall follower and the FQL-optimised one on the
+  corners of Fig VI.28 and on random wall courses.
 """
 
 from __future__ import annotations
@@ -197,3 +199,27 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
         numbers[name] = {"outcome": trace.outcome,
                          "evaluation": rl.evaluate_avoid(controller, 20 if quick else 100)}
     return {**numbers, "figure": _save(figure, out_dir, "fig-VI-24.png")}
+
+
+# -- wall following (§VI.5.3) ------------------------------------------------------------------
+def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
+    """Figs VI.28–VI.30: the hand-made follower collides at the corners of Fig VI.28; the
+    FQL-optimised one (Table VI.2's rules, learned interpretations) follows them."""
+    from fuzzynav.world.scenario import load_scenario
+
+    request = _request(out_dir, "fql-wall", 300 if quick else None, seed)
+    rl.train_fql_wall(request)
+    learned, handmade = load_controller(request.out), make_controller("wall-follow")
+    corners = load_scenario("fig-VI-28")
+    course = rl.wall_course_scenario(np.random.default_rng(seed + 1000), "wall course")
+    figure = Figure(figsize=(11, 11), layout="constrained")
+    numbers = {}
+    for row, scenario in zip(figure.subplots(2, 2), (corners, course)):
+        for ax, (name, controller) in zip(row, (("wall-follow (Table VI.2)", handmade), ("FQL-optimised", learned))):
+            trace = run_episode(scenario, controller, max_time=30.0)
+            plot_trajectory(trace, scenario, ax, markers=False)
+            numbers[f"{scenario.name}: {name}"] = trace.outcome
+    numbers["evaluation"] = {"wall-follow": rl.evaluate_wall(handmade, 10 if quick else 20),
+                             "fql-wall": rl.evaluate_wall(learned, 10 if quick else 20)}
+    numbers["rules"] = json.loads(Path(request.out).read_text())["rules"]
+    return {**numbers, "figure": _save(figure, out_dir, "fig-VI-29.png")}

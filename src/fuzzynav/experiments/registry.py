@@ -40,6 +40,7 @@ EXPERIMENTS["fig-VI-13"] = (f"{_CH6}:fig_vi_13", "FQL 35 rules x 5 conclusions (
 EXPERIMENTS["fig-VI-16"] = (f"{_CH6}:fig_vi_16", "FQL with eligibility traces (VI.15-VI.16)")
 EXPERIMENTS["fig-VI-22"] = (f"{_CH6}:fig_vi_22", "FQL obstacle avoidance: curves and trajectories (VI.18-VI.22)")
 EXPERIMENTS["fig-VI-24"] = (f"{_CH6}:fig_vi_24", "chapter IV navigator vs FQL navigator on the same world (VI.23-VI.24)")
+EXPERIMENTS["fig-VI-29"] = (f"{_CH6}:fig_vi_29", "hand-made vs FQL-optimised wall follower: Fig VI.28 corners, wall courses (VI.29-VI.30)")
 
 
 def available() -> dict[str, str]:

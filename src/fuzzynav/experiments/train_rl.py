@@ -44,10 +44,17 @@ from fuzzynav.fuzzy.systems import D_MAX_GOAL, goal_seeking
 from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.checkpoint import train_loop
 from fuzzynav.learn.curves import episodes_to_converge
-from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RandomObstacles, RobotEnv
+from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RandomObstacles, RobotEnv, WallCourse
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
-from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward, GoalSpeedReward, GoalSteeringReward
+from fuzzynav.learn.rewards import (
+    AvoidSpeedReward,
+    AvoidSteeringReward,
+    GoalSpeedReward,
+    GoalSteeringReward,
+    WallSpeedReward,
+    WallSteeringReward,
+)
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.learn.tabular import TabularLearner, ZoneSectorDiscretiser
 from fuzzynav.models import save_json_atomic
@@ -482,3 +489,101 @@ def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float 
         outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
     return {"runs": n, "success": outcomes.count("reached") / n, "collisions": outcomes.count("collision"),
             "timeouts": outcomes.count("timeout")}
+
+
+# -- wall following optimised by FQL (§VI.5.3.2) -----------------------------------------------
+WALL_SPREAD = math.radians(10.0)  # three interpretations per steering label: value − 10°, value, value + 10°
+WALL_SPEED_SCALE = (0.7, 1.0, 1.3)  # and per speed label: 0.7, 1, 1.3 × its value
+WALL_SUFFIXES = ("_lo", "", "_hi")
+WALL_DECISION = 3
+WALL_MAX_STEPS = 300
+
+
+def wall_parts():
+    """The hand-made follower (Table VI.2), its premise, and the candidates of every rule."""
+    from fuzzynav.fuzzy.systems_navigation import wall_follower
+
+    handmade = wall_follower()
+    values = handmade.compiled.values  # (R, 2): α and V_r of every rule
+    alpha = np.clip(values[:, :1] + WALL_SPREAD * np.array([-1.0, 0.0, 1.0]), -PI / 4, PI / 4)
+    speed = np.clip(values[:, 1:] * np.array(WALL_SPEED_SCALE), 0.0, 4.0)
+    return handmade, GridPremise(handmade), alpha, speed
+
+
+WALL_COLUMNS = [1, 0, 2]  # (d_d, d_f, d_g) = (right, front, left) of control.learned.side_distances
+
+
+def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH):
+    """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower."""
+    from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S
+
+    handmade, premise, alpha, speed = wall_parts()
+    layout, sensors = WallCourse(), SensorRing()
+
+    def observe(s):
+        return s.sides[:, WALL_COLUMNS]
+
+    steer = fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    n_steer = episodes - round(SPEED_SHARE * episodes)
+    env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
+                   WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
+                   sensors=sensors, decision_steps=WALL_DECISION)
+    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+    fast = fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], a[:, 0]),
+                   WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
+                   sensors=sensors, decision_steps=WALL_DECISION)
+    yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"))
+
+
+def wall_system(handmade, candidates: dict, learners: dict) -> FuzzySystem:
+    """The optimised follower: Table VI.2's rules with the chosen interpretation of each label
+    (``PG_lo`` / ``PG`` / ``PG_hi`` = value − 10°, value, value + 10°; speeds × 0.7, 1, 1.3)."""
+    outputs, conclusions = [], []
+    for o, (name, universe) in enumerate((("alpha", (-PI / 4, PI / 4)), ("v", (0.0, 4.0)))):
+        chosen = learners["steering" if o == 0 else "speed"].greedy_indices(AVOID_TOLERANCE)[0, 0]
+        terms, labels = {}, []
+        for r, rule in enumerate(handmade.rules):
+            label = dict(rule.conclusions)[name] + WALL_SUFFIXES[chosen[r]]
+            terms[label] = Singleton(float(candidates[name][r, chosen[r]]))
+            labels.append(label)
+        outputs.append(Variable(name, universe, terms))
+        conclusions.append(labels)
+    rules = [Rule(rule.premises, ((outputs[0].name, conclusions[0][r]), (outputs[1].name, conclusions[1][r])))
+             for r, rule in enumerate(handmade.rules)]
+    return FuzzySystem(handmade.inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
+                       name="fql-wall", description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
+                                                    "(thesis §VI.5.3.2, eqs VI.21-VI.22)")
+
+
+def train_fql_wall(request) -> dict:
+    """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30)."""
+    handmade, _, alpha, speed = wall_parts()
+    phases, learners = run_phases(fql_wall_phases(request.out, _episodes(request, 1500)), request)
+    system = wall_system(handmade, {"alpha": alpha, "v": speed}, learners)
+    document = {"kind": "fql-wall", **to_document(system),
+                "training": {"task": "fql-wall", "seed": request.seed, **_summary(phases)}}
+    save_json_atomic(request.out, document)
+    _write_curve(request, phases, "fql-wall")
+    return {"model": str(request.out), **_summary(phases)}
+
+
+def wall_course_scenario(rng, name: str, max_time: float = 30.0):
+    """A random wall course as a scenario. The follower ignores goals: the goal, in a corner of
+    the workspace, only gives the episode a task; success is lasting ``max_time`` without collision."""
+    world, starts, _ = WallCourse().sample(rng, 1)
+    return _scenario(world, starts[0], (0.5, 0.5), name, max_time)
+
+
+def evaluate_wall(controller, n: int = 20, seed: int = 777, max_time: float = 30.0) -> dict:
+    """Collisions of a wall follower on the Fig VI.28 corners and on ``n`` random wall courses."""
+    from fuzzynav.sim.simulator import BatchSimulator
+    from fuzzynav.world.scenario import load_scenario
+
+    corners = BatchSimulator(load_scenario("fig-VI-28"), controller, record=False).run().outcomes()[0]
+    rng = np.random.default_rng(seed)
+    outcomes = []
+    for k in range(n):
+        scenario = wall_course_scenario(rng, f"wall-course-{k}", max_time)
+        outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
+    return {"fig-VI-28": corners, "courses": n, "collisions": outcomes.count("collision")}

@@ -103,22 +103,31 @@ class RandomObstacles:
         return world, np.column_stack([start, theta]), goal
 
 
-def wall_course(rng, thickness: float = 0.2) -> World:
-    """A course for wall following: a closed polygonal room with reflex (sharp) corners."""
-    n = int(rng.integers(5, 9))
-    angles = np.sort(rng.uniform(0, 2 * np.pi, n)) + rng.uniform(0, 2 * np.pi)
-    radius = rng.uniform(4.0, 8.5, n)
-    points = np.column_stack([10 + radius * np.cos(angles), 10 + radius * np.sin(angles)])
-    walls = tuple(Wall(points[i], points[(i + 1) % n], thickness) for i in range(n))
+def wall_course(rng, thickness: float = 0.3) -> World:
+    """A course for wall following, like Figs VI.27–VI.28: an open polyline of 3–5 walls, 3–7 m
+    each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace."""
+    for _ in range(100):
+        n = int(rng.integers(3, 6))
+        heading = rng.uniform(-np.pi, np.pi)
+        points = [rng.uniform(5.0, 15.0, 2)]
+        for k in range(n):
+            if k:
+                heading += rng.choice([-1.0, 1.0]) * rng.uniform(np.pi / 6, 5 * np.pi / 6)
+            points.append(points[-1] + rng.uniform(3.0, 7.0) * np.array([np.cos(heading), np.sin(heading)]))
+        points = np.array(points)
+        if (points >= 2.0).all() and (points <= 18.0).all():
+            break
+    walls = tuple(Wall(points[i], points[i + 1], thickness) for i in range(len(points) - 1))
     return World(20.0, 20.0, walls)
 
 
 @dataclass(frozen=True)
 class WallCourse:
     """A random wall course per batch; each robot starts ``offset`` from a wall, parallel to it,
-    either side and direction at random."""
+    with the wall on its ``side`` (+1 left, the side the follower of Table VI.2 keeps; −1 right)."""
 
     offset: float = 1.0
+    side: float = 1.0
 
     def sample(self, rng, batch):
         world = wall_course(rng)
@@ -126,13 +135,12 @@ class WallCourse:
         which = rng.integers(len(walls), size=batch)
         a = np.array([walls[i].start for i in which])
         b = np.array([walls[i].end for i in which])
-        u = rng.uniform(0.3, 0.7, batch)[:, None]
+        point = a + rng.uniform(0.3, 0.7, batch)[:, None] * (b - a)
         direction = (b - a) / np.hypot(*(b - a).T)[:, None]
-        normal = np.column_stack([-direction[:, 1], direction[:, 0]])
-        side = np.where(rng.random(batch) < 0.5, 1.0, -1.0)[:, None]
-        position = a + u * (b - a) + side * self.offset * normal
-        reverse = rng.random(batch) < 0.5
-        heading = np.where(reverse[:, None], -direction, direction)
-        inside = world.clearance(position) >= 0.6
-        position = np.where(inside[:, None], position, a + u * (b - a) - side * self.offset * normal)
+        heading = np.where((rng.random(batch) < 0.5)[:, None], -direction, direction)
+        for _ in range(2):  # the other direction along the wall if this start is not free
+            left = np.column_stack([-heading[:, 1], heading[:, 0]])
+            position = point - self.side * self.offset * left
+            blocked = (world.clearance(position) < 0.6) | (world.boundary_distance(position) < 0.6)
+            heading = np.where(blocked[:, None], -heading, heading)
         return world, np.column_stack([position, np.arctan2(heading[:, 1], heading[:, 0])]), None
