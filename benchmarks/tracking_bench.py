@@ -4,11 +4,14 @@ Mean / max cross-track error (distance to the path polyline), completion and tim
 trapezoid paths (built-in scenarios ``path-v``, ``path-n``, ``path-trapezoid``: robot on the path,
 V = 1 m/s, |α| ≤ π/4, l = 0.5 m, 1 m waypoint tolerance zone), for
 
-- ``fuzzy-tracker``, ``neural-tracker``, ``anfis-tracker`` with their defaults (corner
-  anticipation R = 0.45 m) and as in the thesis (``corner_radius=0``: switch in the tolerance zone);
-- ``pure-pursuit`` and ``stanley`` with their defaults, and with the gain that minimises the max
-  cross-track error on each path separately (look-ahead L ∈ {0.5, 0.75, 1, 1.5, 2} m, Stanley
-  k ∈ {1, 2.5, 5, 10}) — a per-path tuning our trackers do not get.
+- ``fuzzy-tracker``, ``neural-tracker``, ``anfis-tracker`` with their defaults — one setting for
+  every path: corner anticipation on the smoothed reference of ``fuzzynav.control.reference``
+  (R = R_min = 0.5 m, look-ahead 0.35 m) — and as in the thesis (``corner_radius=0``: aim at the
+  waypoint, switch in the tolerance zone);
+- ``pure-pursuit`` and ``stanley`` with their defaults, and with the setting that minimises the
+  max cross-track error on each path separately (look-ahead L from 0.3 to 2 m every 0.05 m;
+  Stanley k ∈ {0.5 … 30} × softening ∈ {0.1, 0.5, 1, 2} m/s) — a per-path tuning our trackers do
+  not get.
 
 Wall time per episode is the median of ``--repeats`` runs. ``--json`` prints one JSON object.
 
@@ -28,7 +31,11 @@ from fuzzynav.world.scenario import load_scenario
 
 PATHS = ("path-v", "path-n", "path-trapezoid")
 OURS = ("fuzzy-tracker", "neural-tracker", "anfis-tracker")
-GRIDS = {"pure-pursuit": ("lookahead", (0.5, 0.75, 1.0, 1.5, 2.0)), "stanley": ("gain", (1.0, 2.5, 5.0, 10.0))}
+GRIDS = {
+    "pure-pursuit": [{"lookahead": round(0.3 + 0.05 * i, 2)} for i in range(35)],
+    "stanley": [{"gain": k, "softening": s} for k in (0.5, 1, 1.5, 2, 2.5, 3, 4, 5, 7.5, 10, 15, 20, 30)
+                for s in (0.1, 0.5, 1.0, 2.0)],
+}
 
 
 def episode(scenario, name: str, repeats: int, **options) -> dict:
@@ -51,9 +58,9 @@ def table(repeats: int) -> dict:
         for name in OURS:
             rows.setdefault(name, {})[path] = episode(scenario, name, repeats)
             rows.setdefault(f"{name} (thesis)", {})[path] = episode(scenario, name, repeats, corner_radius=0.0)
-        for name, (option, values) in GRIDS.items():
+        for name, grid in GRIDS.items():
             rows.setdefault(name, {})[path] = episode(scenario, name, repeats)
-            tuned = [episode(scenario, name, 1, **{option: v}) for v in values]
+            tuned = [episode(scenario, name, 1, **options) for options in grid]
             best = min((r for r in tuned if r["completed"]), key=lambda r: r["max_cross_track_m"])
             rows.setdefault(f"{name} (tuned per path)", {})[path] = best
     verdict = {}
@@ -73,9 +80,9 @@ def main() -> None:
     if args.json:
         print(json.dumps(result))
         return
-    header = f"{'controller':34s}" + "".join(f"{p:>42s}" for p in PATHS)
+    header = f"{'controller':34s}" + "".join(f"{p:>46s}" for p in PATHS)
     print(header)
-    print(f"{'':34s}" + "".join(f"{'mean / max (m)  time (s)':>42s}" for _ in PATHS))
+    print(f"{'':34s}" + "".join(f"{'mean / max (m)  time (s)':>46s}" for _ in PATHS))
     for name, per_path in result["rows"].items():
         cells = []
         for path in PATHS:
@@ -83,7 +90,7 @@ def main() -> None:
             flag = "" if r["completed"] else " (not completed)"
             extra = "".join(f" {k}={v:g}" for k, v in r["options"].items() if k != "corner_radius")
             cells.append(f"{r['mean_cross_track_m']:.3f} / {r['max_cross_track_m']:.3f}  {r['time_s']:5.1f}{extra}{flag}")
-        print(f"{name:34s}" + "".join(f"{c:>42s}" for c in cells))
+        print(f"{name:34s}" + "".join(f"{c:>46s}" for c in cells))
     for path, v in result["verdict"].items():
         word = "beats" if v["ours_better"] else "does NOT beat"
         print(f"{path}: best of ours {v['best_ours_max_m']:.3f} m {word} best baseline {v['best_baseline_max_m']:.3f} m (max cross-track)")

@@ -15,13 +15,16 @@ SPEC §0, :func:`~fuzzynav.control.base.thesis_angle_error`).
 Corner anticipation (an addition to the thesis; ``corner_radius = 0`` is the thesis' tracker):
 the thesis switches to the next waypoint inside a fixed tolerance zone, too late for a sharp
 corner (the robot overshoots) and too early for a gentle one (it cuts). With ``corner_radius``
-R > 0 the tracker keeps its own waypoint index and switches to waypoint k + 1 once the distance
-left to waypoint k along the incoming segment is at most R·tan(|φ_k| / 2) + V·Δt, φ_k the
-heading change at k: where an arc of radius R tangent to both segments would begin, plus the
-distance driven before a new command acts. R = 0.45 m (just inside the tightest turn
-l / tan(π/4) = 0.5 m of the default robot) was chosen on the V, N and trapezoid paths of the
-comparison (benchmarks/tracking_bench.py). The scenario's tolerance zone must then be large
-enough for the robot to pass through it (≥ 0.85 m on the 135° corners of the N path).
+R > 0 the tracker follows the corner-smoothed reference of :func:`fuzzynav.control.reference.
+smoothed_path` instead — an outward swing of R·(1 − cos(|φ|/2))/2 and an arc of radius R that
+begins R·tan(|φ|/2) before the (shifted) corner of heading change φ — and aims at the point
+``lookahead`` metres ahead of the robot's projection on it; θ_er is the angle error to that
+point, so the controllers (Table V.1, the learned inverse models) are unchanged. The default R is
+the tightest turn of the robot, R_min = l / tan(α_max) = 0.5 m (eq IV.1, l = 0.5 m,
+α_max = π/4); the look-ahead 0.35 m (3.5 steps at 1 m/s) was chosen once for all paths on the
+V, N and trapezoid paths of the comparison (benchmarks/tracking_bench.py). The simulator still
+switches waypoints in its tolerance zone (completion), so the zone must contain the swing's
+closest approach to the corner (at most ``APPROACH`` = 0.4 m).
 """
 
 from __future__ import annotations
@@ -31,47 +34,45 @@ from abc import abstractmethod
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.control.reference import STEP, WINDOW, advance, smoothed_path
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems import tracking
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.geometry import wrap_angle
 
 DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the issue's comparison
-DEFAULT_CORNER_RADIUS = 0.45  # m, see the module docstring
-
-
-def corner_leads(path: np.ndarray, radius: float, lag: float = 0.0) -> np.ndarray:
-    """Switching distance ``(n,)`` before every waypoint: R·tan(|φ_k| / 2) + lag at interior ones, 0 at the ends."""
-    lead = np.zeros(len(path))
-    if len(path) > 2:
-        d = np.diff(path, axis=0)
-        h = np.arctan2(d[:, 1], d[:, 0])
-        lead[1:-1] = radius * np.tan(np.abs(wrap_angle(np.diff(h))) / 2.0) + lag
-    return lead
+DEFAULT_CORNER_RADIUS = DEFAULT_PARAMS.wheelbase / np.tan(DEFAULT_PARAMS.max_steering)  # R_min = 0.5 m
+DEFAULT_LOOKAHEAD = 0.35  # m, see the module docstring
 
 
 class AngleErrorTracker(Controller):
     """Base of the chapter V trackers: θ_er (and its change) → α, constant ``speed``.
 
     Subclasses implement :meth:`steering` on arrays. Works on batches (``act_batch``) and on one
-    robot (``act``); the state is the previous θ_er and the anticipating waypoint index of
-    every robot.
+    robot (``act``); the state is the previous θ_er of every robot and, with corner
+    anticipation, the reference of the path and every robot's index on it.
     """
 
     label = "track"
 
-    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS):
+    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
+                 lookahead: float = DEFAULT_LOOKAHEAD):
         if not (np.isfinite(speed) and speed > 0):
             raise InputError(f"must be a finite number > 0, got {speed!r}", field="speed")
         if not (np.isfinite(corner_radius) and corner_radius >= 0):
             raise InputError(f"must be a finite number >= 0, got {corner_radius!r}", field="corner_radius")
+        if not (np.isfinite(lookahead) and lookahead > 0):
+            raise InputError(f"must be a finite number > 0, got {lookahead!r}", field="lookahead")
         self.speed = float(speed)
         self.corner_radius = float(corner_radius)
-        self._previous = None
-        self._index = None
+        self.lookahead = float(lookahead)
+        self.reset()
 
     def reset(self, rng: np.random.Generator | None = None) -> None:
         self._previous = None
         self._index = None
+        self._path = None
+        self.reference_ = None
 
     @abstractmethod
     def steering(self, theta_er: np.ndarray, dtheta_er: np.ndarray) -> np.ndarray:
@@ -79,24 +80,22 @@ class AngleErrorTracker(Controller):
 
     def aim_points(self, obs) -> np.ndarray:
         """Point ``(N, 2)`` aimed at: ``obs.target``, or with corner anticipation on a path the
-        waypoint of the tracker's own index (advanced as described in the module docstring)."""
+        reference sample ``lookahead`` ahead of each robot's projection (module docstring)."""
         target = np.atleast_2d(obs.target)
         if obs.path is None or self.corner_radius == 0:
             return target
-        path, xy = obs.path, np.atleast_2d(obs.pose)[:, :2]
-        if self._index is None or len(self._index) != len(xy):
-            self._index = np.atleast_1d(obs.waypoint_index).copy()
-        lead = corner_leads(path, self.corner_radius, self.speed * obs.dt)
-        for _ in range(len(path)):
-            k = self._index
-            incoming = path[k] - path[np.maximum(k - 1, 0)]
-            tangent = incoming / np.maximum(np.hypot(*incoming.T), 1e-12)[:, None]
-            remaining = np.einsum("ij,ij->i", path[k] - xy, tangent)
-            advance = (k >= 1) & (k < len(path) - 1) & (remaining <= lead[k])
-            if not advance.any():
-                break
-            self._index = k + advance
-        return path[self._index]
+        xy = np.atleast_2d(obs.pose)[:, :2]
+        if self._path is None or not np.array_equal(self._path, obs.path):
+            self._path = np.array(obs.path, dtype=float)
+            self.reference_ = smoothed_path(self._path, self.corner_radius)
+            self._index = None
+        fresh = self._index is None or len(self._index) != len(xy)
+        if fresh:
+            self._index = np.zeros(len(xy), dtype=int)
+        window = len(self.reference_) if fresh else int(WINDOW / STEP)  # the first projection: whole path
+        self._index = advance(self.reference_, xy, self._index, window)
+        ahead = np.minimum(self._index + int(round(self.lookahead / STEP)), len(self.reference_) - 1)
+        return self.reference_[ahead]
 
     def act_batch(self, obs):
         pose = np.atleast_2d(obs.pose)
@@ -122,8 +121,9 @@ class FuzzyTracker(AngleErrorTracker):
 
     name = "fuzzy-tracker"
 
-    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS, system=None):
-        super().__init__(speed, corner_radius)
+    def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
+                 lookahead: float = DEFAULT_LOOKAHEAD, system=None):
+        super().__init__(speed, corner_radius, lookahead)
         self.system = system if system is not None else tracking()
 
     def steering(self, theta_er, dtheta_er):
@@ -139,8 +139,9 @@ class ModelTracker(AngleErrorTracker):
     """
 
     def __init__(self, model, input_range, *, name: str, speed: float = DEFAULT_SPEED,
-                 corner_radius: float = DEFAULT_CORNER_RADIUS, max_steering: float = np.pi / 4):
-        super().__init__(speed, corner_radius)
+                 corner_radius: float = DEFAULT_CORNER_RADIUS, lookahead: float = DEFAULT_LOOKAHEAD,
+                 max_steering: float = np.pi / 4):
+        super().__init__(speed, corner_radius, lookahead)
         lo, hi = (float(v) for v in input_range)
         if not lo < hi:
             raise InputError(f"must be an increasing pair, got {input_range!r}", field="input_range")
@@ -156,5 +157,5 @@ class ModelTracker(AngleErrorTracker):
 
 
 def fuzzy_tracker(**options) -> FuzzyTracker:
-    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``system``)."""
+    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``)."""
     return FuzzyTracker(**options)

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, DEFAULT_SPEED, ModelTracker
+from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, DEFAULT_LOOKAHEAD, DEFAULT_SPEED, ModelTracker
 from fuzzynav.errors import InputError
 from fuzzynav.learn.anfis import ANFIS
 from fuzzynav.learn.neural import NeuralInverseModel, fit_inverse_model, generalized_learning_dataset
@@ -111,6 +111,7 @@ def _document(kind: str, model, data: TrackerData, seed: int, seconds: float) ->
         "input_range": list(data.input_range),
         "speed": DEFAULT_SPEED,
         "corner_radius": DEFAULT_CORNER_RADIUS,
+        "lookahead": DEFAULT_LOOKAHEAD,
         "training": {"seed": seed, "n_train": len(data.y_train), "train_seconds": seconds,
                      "source": "generalized learning, one step of the tricycle (thesis §V.3.2, Fig V.14)",
                      **_validation(model, data)},
@@ -120,7 +121,8 @@ def _document(kind: str, model, data: TrackerData, seed: int, seconds: float) ->
 def _tracker(kind: str, model, document: dict, **options) -> ModelTracker:
     lo, hi = document["input_range"]
     options = {"speed": document.get("speed", DEFAULT_SPEED),
-               "corner_radius": document.get("corner_radius", DEFAULT_CORNER_RADIUS), **options}
+               "corner_radius": document.get("corner_radius", DEFAULT_CORNER_RADIUS),
+               "lookahead": document.get("lookahead", DEFAULT_LOOKAHEAD), **options}
     return ModelTracker(model, (lo, hi), name=kind, max_steering=MAX_STEERING, **options)
 
 
@@ -159,7 +161,7 @@ def default_document(kind: str, seed: int = 0) -> dict:
 
 
 def neural_tracker(seed: int = 0, **options) -> ModelTracker:
-    """Factory of ``neural-tracker``: the default MLP trained on the fly (options: ``speed``, ``corner_radius``)."""
+    """Factory of ``neural-tracker``: the default MLP trained on the fly (options: ``speed``, ``corner_radius``, ``lookahead``)."""
     return load_neural_tracker(default_document("neural-tracker", seed), **options)
 
 
