@@ -3,7 +3,8 @@
 For each task (``fuzzynav train TASK``) and each of the seeds it trains a model with the task's
 default episode budget (or ``--episodes``), then evaluates the extracted controller in the
 simulator: goal seekers from 100 random starts in the empty workspace, the avoidance navigator in
-100 random obstacle worlds (the evaluation seeds differ from the training ones). It reports, per
+100 random obstacle worlds, the wall follower on the corners of Fig VI.28 (scenario fig-VI-28) and
+20 random wall courses (the evaluation seeds differ from the training ones). It reports, per
 seed (not the best one), the training wall time, the episodes to converge of every phase
 (criterion of fuzzynav.learn.curves, moving mean over 250 episodes) and the success, collision and
 timeout counts; then, per task, the medians next to the thesis' episode counts. The speed target
@@ -33,8 +34,17 @@ THESIS = {
     "fql-goal-35": {"steering": 5000},  # Fig VI.13
     "fql-goal-traces": {"steering": 1400},  # Fig VI.16
     "fql-avoid": {"steering": 250, "speed": 2000},  # Fig VI.22
+    "fql-wall": {},  # not given
 }
-EVALUATE = {"fql-avoid": train_rl.evaluate_avoid}
+
+
+def _wall(controller) -> dict:
+    """Wall follower: the Fig VI.28 corners and 20 random courses; success = no collision."""
+    result = train_rl.evaluate_wall(controller)
+    return {**result, "success": 1 - result["collisions"] / result["courses"], "timeouts": 0}
+
+
+EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall}
 
 
 def run_task(task: str, seed: int, episodes: int | None, folder: Path) -> dict:
@@ -72,6 +82,7 @@ def main() -> int:
             "wall_s_median": statistics.median(r["wall_s"] for r in mine),
             "success_per_seed": [r["success"] for r in mine],
             "collisions_per_seed": [r["collisions"] for r in mine],
+            **({"fig_VI_28_per_seed": [r["fig-VI-28"] for r in mine]} if "fig-VI-28" in mine[0] else {}),
             "converged_at_median": {p: statistics.median(r["converged_at"][p] for r in mine) for p in mine[0]["converged_at"]},
             "thesis_episodes": THESIS.get(task, {}),
         }

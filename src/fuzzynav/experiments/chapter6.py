@@ -73,7 +73,7 @@ def _figure(curves: dict, controller, starts, title: str, out_dir, name: str, ob
     return {"figure": _save(figure, out_dir, name), "converged_at": converged, "trajectories": outcomes}
 
 
-def _goal_scenarios(seed: int, n: int = 4, world=None, layout=None):
+def _goal_scenarios(seed: int, n: int = 4, layout=None):
     layout = layout or RandomGoal()
     rng = np.random.default_rng(seed + 1000)
     scenarios = []

@@ -11,6 +11,11 @@ Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, ac
                         random starts (§VI.5.1, Figs VI.7–VI.10)
 ``fql-goal-35``         FQL on the chapter IV partition, 35 rules × 5 conclusions (VI.13–VI.14)
 ``fql-goal-traces``     ``fql-goal``'s steering with eligibility traces (Figs VI.15–VI.16)
+``fql-avoid``           FQL obstacle avoider, 8 rules × 3 over front/right/left distances,
+                        steering (VI.20) then speed (VI.21), trained inside the goal navigator
+                        (§VI.5.2, Figs VI.17–VI.22); model = the navigator of Figs VI.20, VI.24
+``fql-wall``            the wall follower of Table VI.2 with 3 interpretations per conclusion
+                        learned by FQL, steering (VI.21) then speed (VI.22) (§VI.5.3.2)
 ======================  =====================================================================
 
 Episodes. B episodes run in parallel (:data:`BATCH`) and feed one shared rule base (or Q table)
@@ -20,9 +25,16 @@ the total of a task; a two-phase task (steering, then speed) gives the speed pha
 :data:`SPEED_SHARE` (the thesis' ~3,000 : ~900 episodes of Fig VI.9). A task writes one
 checkpoint per phase next to ``--out`` (``OUT.steering.checkpoint.json``, …).
 
-Extraction. Each rule keeps its best conclusion unless its gain over the neutral prior (the
-middle candidate: straight ahead / medium speed) is within :data:`TOLERANCE` — so that quality
-differences at the noise level cannot flip the extracted controller (issue 5).
+Extraction. Each rule keeps its best conclusion unless its gain over the prior is within the
+tolerance (:data:`TOLERANCE`, :data:`AVOID_TOLERANCE`) — so that quality differences at the noise
+level cannot flip the extracted controller (issue 5). The prior is the middle candidate
+(straight ahead / medium speed) for goal seeking, a-priori conclusions for the avoider
+(:data:`AVOID_PRIOR`) and the hand-made follower's own values for wall following.
+
+Choices the thesis leaves open (documented where they are made): the constant speeds of the
+steering phases, the candidate speeds, d_m / d_s of Fig VI.17, the decision period of the
+sensor-based tasks (:data:`AVOID_DECISION`: the learner decides every 0.3 s, so that one choice
+moves the next state enough to separate the candidates' qualities), the learning rates.
 """
 
 from __future__ import annotations
@@ -33,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.learned import FuzzyGoalSeeker, TabularGoalSeeker
+from fuzzynav.control.learned import TabularGoalSeeker
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Singleton, Trapezoidal, Triangular
@@ -177,7 +189,8 @@ Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
 
 
 def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
-    """States of Table VI.1: 1 + 2 × sectors (inner zone merged), zone edges 1 m and 4 m..."""
+    """States of Table VI.1: 1 + 2 × sectors — d_rg zones split at 1 m and 4 m, the inner zone
+    (d_rg < 1 m) one state, the two outer zones 4, 5, 6 or 9 sectors of θ_rg each."""
     sectors = {9: 4, 11: 5, 13: 6, 19: 9}
     if n_states not in sectors:
         raise InputError(f"Table VI.1 has 9, 11, 13 or 19 states, got {n_states}", field="n_states")
@@ -334,10 +347,6 @@ def train_fql_goal_35(request) -> dict:
 def train_fql_goal_traces(request) -> dict:
     """``fuzzynav train fql-goal-traces``: 15 rules × 3, eligibility traces λ = 0.7 (Figs VI.15–VI.16)."""
     return train_goal_fql(GOAL_TASKS["fql-goal-traces"], request)
-
-
-def goal_controller(system: FuzzySystem) -> FuzzyGoalSeeker:
-    return FuzzyGoalSeeker(system, STEERING_SPEED)
 
 
 # -- evaluation in the simulator -------------------------------------------------------------
