@@ -36,9 +36,13 @@ def test_trained_goal_models_drive_to_the_goal(tmp_path, capsys, task):
     assert json.loads(capsys.readouterr().out)["outcome"] == "reached"
 
 
-def test_fql_model_is_a_readable_rule_table(tmp_path):
+def test_fql_model_is_a_readable_rule_table(tmp_path, capsys):
     out = tmp_path / "m.json"
     assert train("fql-goal", out, "--episodes", "200") == 0
+    capsys.readouterr()
+    assert main(["fis", "show", str(out)]) == 0  # the model file is an ordinary fuzzy system
+    shown = capsys.readouterr().out
+    assert "theta \\ drg" in shown and "output v" in shown
     document = json.loads(out.read_text())
     assert document["kind"] == "fql-goal" and document["format"] == "fuzzynav-fis"
     assert len(document["rules"]) == 15
