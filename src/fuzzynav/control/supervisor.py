@@ -8,9 +8,9 @@ precise here, per robot, from the seven readings d1…d7 (SPEC §3.3: d1 ahead; 
 −30°, −60°, −90°; d3, d5, d7 at +30°, +60°, +90°):
 
 1. **GSB** when no reading is below ``detection`` (an obstacle-free neighbourhood), or when the
-   goal direction is clear: no reading is below ``keep`` and every ray of the sector the robot
-   sweeps while turning to the goal — from the heading to the goal bearing (clipped to the ±90°
-   the ring covers), widened by ``vision`` on both sides — reads at least min(d_rg, ``clear``).
+   goal direction is clear: every ray within ``vision`` of the goal bearing (clipped to the ±90°
+   the ring covers) reads at least min(d_rg, ``clear``), and no reading is below ``keep`` (room
+   to turn towards it).
 2. Otherwise the avoider of the nearest reading: **FOA** when it is d1 (an obstacle dead
    ahead), **ROA** when it is on the right (d2, d4, d6), **LOA** when on the left (d3, d5, d7).
 
@@ -47,9 +47,7 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
     d = np.asarray(d, dtype=float)
     angles = np.deg2rad(THESIS_ANGLES_DEG)
     look = np.clip(np.asarray(goal_bearing, dtype=float), -math.pi / 2, math.pi / 2)
-    low = np.minimum(look, 0.0) - params.vision - 1e-9
-    high = np.maximum(look, 0.0) + params.vision + 1e-9
-    window = (angles[None, :] >= low[:, None]) & (angles[None, :] <= high[:, None])  # (N, 7)
+    window = np.abs(angles[None, :] - look[:, None]) <= params.vision + 1e-9  # around the goal bearing
     need = np.minimum(np.asarray(goal_distance, dtype=float), params.clear)
     nearest = d.min(axis=1)
     goal_clear = np.all(~window | (d >= need[:, None]), axis=1) & (nearest >= params.keep)
