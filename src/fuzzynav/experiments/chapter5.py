@@ -4,12 +4,23 @@
 - ``fig-V-15``: the MLP inverse model on 100 unseen generalized-learning pairs (desired vs network
   output, and their error) with its training loss;
 - ``fig-V-23``: the same for the ANFIS tracker, with its training / validation RMSE per epoch;
+- ``fig-V-10`` / ``fig-V-18`` / ``fig-V-26``: the six straight lines T1…T6 from (10,10), robot
+  heading 0 (:func:`fuzzynav.sim.paths.star_lines`), tracked by CF / CN / CNF;
+- ``fig-V-11`` / ``fig-V-19`` / ``fig-V-27``: the N (a) and trapezoid (b) paths (scenarios
+  ``path-n``, ``path-trapezoid``) by CF / CN / CNF, as in the thesis (solid) and with this
+  package's corner anticipation (dashed, :mod:`fuzzynav.control.reference`);
 - ``fig-V-28``: the V path (scenario ``fig-V-28``, robot at (2,14) heading 0) tracked by the
   fuzzy (CF), neural (CN) and ANFIS (CNF) controllers as in the thesis (tolerance-zone
   switching, ``corner_radius=0``), overlaid, with a zoom on the corner (panel d);
 - ``fig-V-29`` … ``fig-V-31``: pursuit of a target on a line, a circle and a sinusoid (robot at
-  (4,4) heading 0, target from (4,12)) by the three controllers, panels (a–c).
+  (4,4) heading 0, target from (4,12)) by the three controllers, panels (a–c);
+- ``fig-V-32``: pursuit of a target on a line by CF, CN, CNF (a–c) and their trajectories
+  compared near the capture (d); ``fig-V-33``: two more straight-line targets (a, b);
+  ``fig-V-34``: a circular (a) and a sinusoidal (b) target, the three controllers overlaid
+  (§V.5.1; the thesis prints no motion parameters, the scenarios ``fig-V-32``, ``fig-V-33a/b``,
+  ``fig-V-34a/b`` choose them).
 
+Path figures run the trackers as in the thesis (``corner_radius=0``) unless said otherwise.
 Every function has the registry signature ``(out_dir, quick, seed) -> dict`` and writes PNGs;
 the episodes are short (a few seconds in all), so ``quick`` changes nothing but the ANFIS epochs.
 """
@@ -23,12 +34,14 @@ from matplotlib.figure import Figure
 
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_trackers as tt
-from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.viz.trajectories import draw_world
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
 COLOURS = {"fuzzy-tracker": "tab:blue", "neural-tracker": "tab:red", "anfis-tracker": "tab:green"}
+PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
+PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
@@ -101,14 +114,93 @@ def fig_v_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
     return _training_figure("anfis-tracker", out_dir, quick, seed)
 
 
+def _run(scenario, name: str, seed: int, **options):
+    """One episode of tracker ``name`` (the learned ones trained with ``seed``): trace and metrics."""
+    training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}
+    trace = run_episode(scenario, make_controller(name, **training_seed, **options), seed=seed)
+    return trace, metrics(trace, scenario)
+
+
 def _runs(scenario_name: str, seed: int, **options):
     scenario = load_scenario(scenario_name)
-    runs = {}
-    for name in TRACKERS:
-        training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}  # the learned ones train with it
-        trace = run_episode(scenario, make_controller(name, **training_seed, **options), seed=seed)
-        runs[name] = (trace, metrics(trace, scenario))
-    return scenario, runs
+    return scenario, {name: _run(scenario, name, seed, **options) for name in TRACKERS}
+
+
+def _numbers(m: dict, keys) -> dict:
+    return {k: m[k] for k in keys}
+
+
+def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
+    """Figs V.10 / V.18 / V.26: lines T1…T6 from (10,10), robot heading 0, tracker ``kind``."""
+    figure = Figure(figsize=(6, 6), layout="constrained")
+    ax = figure.subplots()
+    lines = {}
+    for i, line in enumerate(paths.star_lines()):
+        scenario = paths.path_scenario(line, name=f"T{i + 1}", theta=0.0)
+        trace, m = _run(scenario, kind, seed, corner_radius=0.0)
+        if i == 0:
+            draw_world(ax, scenario, None)
+        ax.plot(line[:, 0], line[:, 1], "--", color="0.3", linewidth=1.0)
+        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[kind])
+        ax.annotate(f"T{i + 1}", line[1], textcoords="offset points", xytext=(4, 4))
+        lines[f"T{i + 1}"] = _numbers(m, PATH_KEYS)
+    ax.set(title=f"{TRACKERS[kind]} ({kind}): straight lines T1…T6 from (10, 10), θ = 0",
+           xlabel="x (m)", ylabel="y (m)")
+    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), "lines": lines,
+            "all_completed": all(v["completed"] for v in lines.values()),
+            "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values())}
+
+
+def fig_v_10(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.10: straight lines T1…T6 by the fuzzy tracker CF."""
+    return _star_lines("fuzzy-tracker", "fig-V-10", out_dir, seed)
+
+
+def fig_v_18(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.18: straight lines T1…T6 by the neural tracker CN."""
+    return _star_lines("neural-tracker", "fig-V-18", out_dir, seed)
+
+
+def fig_v_26(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.26: straight lines T1…T6 by the ANFIS tracker CNF."""
+    return _star_lines("anfis-tracker", "fig-V-26", out_dir, seed)
+
+
+def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
+    """Figs V.11 / V.19 / V.27: N (a) and trapezoid (b) paths by tracker ``kind``, as in the
+    thesis (solid) and with corner anticipation (dashed)."""
+    figure = Figure(figsize=(11, 5.4), layout="constrained")
+    result = {}
+    for ax, letter, scenario_name in zip(figure.subplots(1, 2), "ab", ("path-n", "path-trapezoid")):
+        scenario = load_scenario(scenario_name)
+        thesis, m_thesis = _run(scenario, kind, seed, corner_radius=0.0)
+        anticipating, m_anticipating = _run(scenario, kind, seed)
+        draw_world(ax, scenario, thesis)
+        ax.plot(thesis.pose[:, 0], thesis.pose[:, 1], color=COLOURS[kind], label=f"{TRACKERS[kind]} (thesis)")
+        ax.plot(anticipating.pose[:, 0], anticipating.pose[:, 1], "--", color="k", linewidth=0.9,
+                label=f"{TRACKERS[kind]} with corner anticipation")
+        ax.set_title(f"({letter}) {scenario_name}: max cross-track {m_thesis['max_cross_track_m']:.2f} m "
+                     f"(thesis) / {m_anticipating['max_cross_track_m']:.2f} m")
+        ax.legend(loc="lower center", fontsize=7)
+        result[scenario_name] = {"thesis": _numbers(m_thesis, PATH_KEYS),
+                                 "anticipation": _numbers(m_anticipating, PATH_KEYS)}
+    figure.suptitle(f"{TRACKERS[kind]} ({kind}): N and trapezoid paths")
+    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
+
+
+def fig_v_11(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.11: N and trapezoid paths by the fuzzy tracker CF."""
+    return _polygon_paths("fuzzy-tracker", "fig-V-11", out_dir, seed)
+
+
+def fig_v_19(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.19: N and trapezoid paths by the neural tracker CN."""
+    return _polygon_paths("neural-tracker", "fig-V-19", out_dir, seed)
+
+
+def fig_v_27(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.27: N and trapezoid paths by the ANFIS tracker CNF."""
+    return _polygon_paths("anfis-tracker", "fig-V-27", out_dir, seed)
 
 
 def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -130,8 +222,7 @@ def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
              aspect="equal", title="(d) comparison at the corner", xlabel="x (m)", ylabel="y (m)")
     zoom.legend()
     return {"figure": _save(figure, out_dir, "fig-V-28.png"),
-            **{name: {k: m[k] for k in ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")}
-               for name, (_, m) in runs.items()}}
+            **{name: _numbers(m, PATH_KEYS) for name, (_, m) in runs.items()}}
 
 
 def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
@@ -143,7 +234,7 @@ def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
         ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
         ax.legend(loc="upper right", fontsize=7)
     return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
-            **{name: {k: m[k] for k in ("captured", "capture_time_s", "path_length_m")} for name, (_, m) in runs.items()}}
+            **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
 
 
 def fig_v_29(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -159,3 +250,56 @@ def fig_v_30(out_dir, quick: bool = False, seed: int = 0) -> dict:
 def fig_v_31(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig V.31: pursuit of a target moving on a sinusoid."""
     return _pursuit("fig-V-31", out_dir, seed)
+
+
+def _overlay(ax, scenario, runs: dict, title: str) -> None:
+    """The three controllers' trajectories on one axis, with the target's course."""
+    draw_world(ax, scenario, next(iter(runs.values()))[0])
+    for name, (trace, _) in runs.items():
+        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+    ax.set_title(title)
+    ax.legend(loc="upper right", fontsize=7)
+
+
+def fig_v_32(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.32: a target on a line pursued by CF, CN, CNF (a–c), compared near the capture (d)."""
+    scenario, runs = _runs("fig-V-32", seed)
+    figure = Figure(figsize=(16, 4.4), layout="constrained")
+    axes = figure.subplots(1, 4)
+    for ax, (name, (trace, m)) in zip(axes, runs.items()):
+        draw_world(ax, scenario, trace)
+        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label="robot")
+        ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}: captured at {m['capture_time_s']} s")
+        ax.legend(loc="upper right", fontsize=7)
+    capture = runs["anfis-tracker"][0].pose[-1, :2]
+    zoom = axes[3]
+    zoom.plot(*runs["anfis-tracker"][0].target.T, ":", color="k", label="target")
+    for name, (trace, _) in runs.items():
+        zoom.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+    zoom.set(xlim=(capture[0] - 2.0, capture[0] + 2.0), ylim=(capture[1] - 2.0, capture[1] + 2.0), aspect="equal",
+             title="(d) comparison near the capture", xlabel="x (m)", ylabel="y (m)")
+    zoom.legend(fontsize=7)
+    return {"figure": _save(figure, out_dir, "fig-V-32.png"),
+            **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
+
+
+def _two_pursuits(figure_id: str, scenario_names, titles, out_dir, seed: int) -> dict:
+    figure = Figure(figsize=(11, 5.4), layout="constrained")
+    result = {}
+    for ax, letter, scenario_name, title in zip(figure.subplots(1, 2), "ab", scenario_names, titles):
+        scenario, runs = _runs(scenario_name, seed)
+        _overlay(ax, scenario, runs, f"({letter}) {title}")
+        result[scenario_name] = {name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}
+    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
+
+
+def fig_v_33(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.33: targets on two straight lines, CF, CN, CNF overlaid."""
+    return _two_pursuits("fig-V-33", ("fig-V-33a", "fig-V-33b"),
+                         ("target on a line to the right", "target on a line towards the robot"), out_dir, seed)
+
+
+def fig_v_34(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.34: a circular and a sinusoidal target, CF, CN, CNF overlaid."""
+    return _two_pursuits("fig-V-34", ("fig-V-34a", "fig-V-34b"),
+                         ("target on a circle", "target on a sinusoid"), out_dir, seed)
