@@ -64,3 +64,26 @@ def test_cli_train_then_run_with_the_model(tmp_path):
                          capture_output=True, text=True)
     numbers = json.loads(run.stdout)
     assert numbers["captured"] and numbers["capture_time_s"] is not None
+
+
+def _run_json(capsys, *argv) -> dict:
+    from fuzzynav.cli import main
+
+    assert main(["run", *argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_cli_run_prints_the_path_metrics_of_the_n_path(capsys):
+    numbers = _run_json(capsys, "path-n", "--controller", "anfis-tracker")
+    assert numbers["completed"] is True
+    assert 0 < numbers["mean_cross_track_m"] < numbers["max_cross_track_m"] < 0.2
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scenario", ["fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32", "fig-V-33a", "fig-V-33b",
+                                      "fig-V-34a", "fig-V-34b"])
+def test_cli_run_prints_capture_for_every_tracker_on_the_target_scenarios(capsys, scenario):
+    for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker", "pure-pursuit", "stanley"):
+        numbers = _run_json(capsys, scenario, "--controller", name)
+        assert numbers["captured"] is True, name
+        assert 0 < numbers["capture_time_s"] <= numbers["time_s"] + 1e-9, name
