@@ -6,8 +6,8 @@ V = 1 m/s, |α| ≤ π/4, l = 0.5 m, 1 m waypoint tolerance zone), for
 
 - ``fuzzy-tracker``, ``neural-tracker``, ``anfis-tracker`` with their defaults — one setting for
   every path: corner anticipation on the smoothed reference of ``fuzzynav.control.reference``
-  (R = R_min = 0.5 m, look-ahead 0.35 m) — and as in the thesis (``corner_radius=0``: aim at the
-  waypoint, switch in the tolerance zone);
+  (R = R_min = 0.5 m, look-ahead 0.35 m, 1.5 m for the fuzzy tracker) — and as in the thesis
+  (``corner_radius=0``: aim at the waypoint, switch in the tolerance zone);
 - ``pure-pursuit`` and ``stanley`` with their defaults, and with the setting that minimises the
   max cross-track error on each path separately (look-ahead L from 0.3 to 2 m every 0.05 m;
   Stanley k ∈ {0.5 … 30} × softening ∈ {0.1, 0.5, 1, 2} m/s) — a per-path tuning our trackers do

@@ -65,7 +65,7 @@ def test_smoothed_reference_is_drivable_and_stays_within_the_swing(make):
 
 def test_anticipation_aims_ahead_on_the_reference_and_the_thesis_at_the_waypoint():
     path = paths.n_path()
-    tracker = FuzzyTracker()
+    tracker = FuzzyTracker(lookahead=0.35)
     # 1.2 m before the corner (3,17): the reference swings outwards (x < 3) and the aim point is 0.35 m ahead
     aim = tracker.aim_points(_obs([3, 15.8, math.pi / 2], path[1], path, 1))[0]
     assert aim[0] < 3.0 and 15.8 < aim[1] < 17.0

@@ -21,8 +21,9 @@ begins R·tan(|φ|/2) before the (shifted) corner of heading change φ — and a
 ``lookahead`` metres ahead of the robot's projection on it; θ_er is the angle error to that
 point, so the controllers (Table V.1, the learned inverse models) are unchanged. The default R is
 the tightest turn of the robot, R_min = l / tan(α_max) = 0.5 m (eq IV.1, l = 0.5 m,
-α_max = π/4); the look-ahead 0.35 m (3.5 steps at 1 m/s) was chosen once for all paths on the
-V, N and trapezoid paths of the comparison (benchmarks/tracking_bench.py). The simulator still
+α_max = π/4); the look-ahead, 0.35 m (3.5 steps at 1 m/s) for the learned trackers and 1.5 m
+for the gentler Table V.1, was chosen once for all paths on the V, N and trapezoid paths of the
+comparison (benchmarks/tracking_bench.py). The simulator still
 switches waypoints in its tolerance zone (completion), so the zone must contain the swing's
 closest approach to the corner (at most ``APPROACH`` = 0.4 m).
 """
@@ -43,6 +44,7 @@ from fuzzynav.world.geometry import wrap_angle
 DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the issue's comparison
 DEFAULT_CORNER_RADIUS = DEFAULT_PARAMS.wheelbase / np.tan(DEFAULT_PARAMS.max_steering)  # R_min = 0.5 m
 DEFAULT_LOOKAHEAD = 0.35  # m, see the module docstring
+FUZZY_LOOKAHEAD = 1.5  # m, the fuzzy tracker's (Table V.1 steers gently: π/8 at θ_er = π/6)
 
 
 class AngleErrorTracker(Controller):
@@ -122,7 +124,7 @@ class FuzzyTracker(AngleErrorTracker):
     name = "fuzzy-tracker"
 
     def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
-                 lookahead: float = DEFAULT_LOOKAHEAD, system=None):
+                 lookahead: float = FUZZY_LOOKAHEAD, system=None):
         super().__init__(speed, corner_radius, lookahead)
         self.system = system if system is not None else tracking()
 
