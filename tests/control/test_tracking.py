@@ -132,3 +132,14 @@ def test_learned_trackers_beat_the_best_pure_pursuit_on_the_n_path(name):
     baseline = metrics(run_episode(scenario, make_controller("pure-pursuit", lookahead=0.75)), scenario)
     assert ours["completed"] and baseline["completed"]
     assert ours["max_cross_track_m"] < 0.9 * baseline["max_cross_track_m"]
+
+
+def test_anticipation_keeps_one_index_per_robot_of_a_batch():
+    path = paths.n_path()
+    tracker = FuzzyTracker(lookahead=0.35)
+    poses = [[3, 5, math.pi / 2], [10, 10, -math.pi / 4], [17, 8, math.pi / 2]]
+    aims = tracker.aim_points(_obs(poses, path[1], path, 1))
+    for pose, aim in zip(poses, aims):
+        single = FuzzyTracker(lookahead=0.35).aim_points(_obs([pose], path[1], path, 1))[0]
+        np.testing.assert_array_equal(aim, single)
+        assert 0.3 < np.hypot(*(aim - pose[:2])) < 0.4  # the robots are on straight parts of the path
