@@ -14,6 +14,7 @@ pose ``(3,)`` with scalar commands works too.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -69,25 +70,57 @@ def step(pose, steering, speed, params: TricycleParams = DEFAULT_PARAMS, integra
     ``"arc"`` integrates eq IV.1 exactly: with ω = V tan(α) / l and θ' = θ + ω Δt,
     x += V (sin θ' − sin θ) / ω, y −= V (cos θ' − cos θ) / ω (the straight line when ω → 0).
     Returns the new poses (same shape), θ wrapped to (−π, π].
+
+    One pose ``(1, 3)`` with ``(1,)`` commands is advanced with Python floats (``math``), where
+    NumPy's fixed cost per call would dominate; the formulas are the same code.
     """
     pose = np.asarray(pose, dtype=float)
-    theta = pose[..., 2]
-    dt = params.dt
-    omega = speed * np.tan(steering) / params.wheelbase
-    new_theta = wrap_angle(theta + omega * dt)
     method = integrator or params.integrator
+    if method not in INTEGRATORS:
+        raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
+    if pose.shape == (1, 3) and np.shape(steering) == (1,) and np.shape(speed) == (1,):
+        x, y, theta = pose[0].tolist()
+        try:
+            moved = _advance(x, y, theta, float(steering[0]), float(speed[0]), params, method, _FLOAT_MATH)
+        except ValueError:  # math refuses inf where NumPy returns nan
+            pass
+        else:
+            return np.array([moved])
+    x, y, theta = _advance(pose[..., 0], pose[..., 1], pose[..., 2], steering, speed, params, method, _ARRAY_MATH)
+    out = np.empty(np.broadcast(x, theta).shape + (3,))  # one array, no stacking of temporaries
+    out[..., 0] = x
+    out[..., 1] = y
+    out[..., 2] = theta
+    return out
+
+
+def _advance(x, y, theta, steering, speed, params: TricycleParams, method: str, functions):
+    """New (x, y, θ) of :func:`step`, for floats or arrays: ``functions`` = (tan, cos, sin, sinc,
+    wrap)."""
+    tan, cos, sin, sinc, wrap = functions
+    dt = params.dt
+    omega = speed * tan(steering) / params.wheelbase
+    new_theta = wrap(theta + omega * dt)
     if method == "euler":
         chord, direction = dt * speed, theta
-    elif method == "arc":
-        # sin/cos differences written with half-angles: exact, and well conditioned as ω → 0.
+    else:  # "arc": sin/cos differences written with half-angles, well conditioned as ω → 0
         half = 0.5 * omega * dt
-        chord = dt * speed * np.sinc(half / np.pi)  # = 2 V sin(half) / ω
+        chord = dt * speed * sinc(half / np.pi)  # = 2 V sin(half) / ω
         direction = theta + half
-    else:
-        raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
-    x = pose[..., 0] + chord * np.cos(direction)
-    out = np.empty(np.broadcast(x, new_theta).shape + (3,))  # one array, no stacking of temporaries
-    out[..., 0] = x
-    out[..., 1] = pose[..., 1] + chord * np.sin(direction)
-    out[..., 2] = new_theta
-    return out
+    return x + chord * cos(direction), y + chord * sin(direction), new_theta
+
+
+def _float_sinc(x: float) -> float:
+    """``numpy.sinc`` for one float (the same formula): sin(πx) / (πx), 1 at 0."""
+    y = np.pi * (1.0e-20 if x == 0 else x)
+    return math.sin(y) / y
+
+
+def _float_wrap(angle: float) -> float:
+    """:func:`~fuzzynav.world.geometry.wrap_angle` for one float (its formula; Python's float
+    ``%`` is NumPy's ``mod``)."""
+    return np.pi - (np.pi - angle) % (2.0 * np.pi)
+
+
+_ARRAY_MATH = (np.tan, np.cos, np.sin, np.sinc, wrap_angle)
+_FLOAT_MATH = (math.tan, math.cos, math.sin, _float_sinc, _float_wrap)

@@ -83,6 +83,7 @@ class BatchSimulator:
         self.steering = np.zeros(self.n)
         self.speed = np.zeros(self.n)
         self.task = TaskState(self.scenario, self.n)
+        self._goal = np.array(self.task.target()) if self.task.kind == "goal" else None  # fixed target
         self.status = np.full(self.n, RUNNING)
         self._all_running = True  # no robot has finished: the masks of step() can be skipped
         self.steps = np.zeros(self.n, dtype=int)
@@ -113,7 +114,7 @@ class BatchSimulator:
             pose=self.pose,
             speed=self.speed,
             steering=self.steering,
-            target=np.array(self.task.target()),
+            target=self._goal.copy() if self._goal is not None else np.array(self.task.target()),
             ranges=ranges,
             sensor_angles=self.sensors.angles,
             max_range=self.sensors.max_range,

@@ -155,6 +155,7 @@ class ScalarScene:
         self.discs = ([(0, s, s[1], s[2], s[3]) for s in self.circles]
                       + [(1, s, s[1], s[2], s[3]) for s in self.polygons]
                       + [(2, s, s[1], s[2], s[7]) for s in self.ellipses])
+        self._reach_cache = (math.nan, math.nan, math.nan, ())  # see _reachable
 
     # -- distances ---------------------------------------------------------------------------
     def nearest(self, px: float, py: float):
@@ -196,15 +197,37 @@ class ScalarScene:
         return best, bx, by, col
 
     # -- rays --------------------------------------------------------------------------------
+    SLACK = 1.0  # (m) a robot moves this far before its set of reachable shapes is rebuilt
+
+    def _reachable(self, x: float, y: float, max_range: float):
+        """Shapes whose bounding disc comes within ``max_range`` of (x, y), as (kind, shape, cx,
+        cy, R grown by a rounding margin). Cached for the last place asked: the set built there
+        for ``max_range + SLACK`` holds every such shape anywhere within SLACK of it."""
+        x0, y0, horizon, shapes = self._reach_cache
+        if horizon == max_range and math.hypot(x - x0, y - y0) <= self.SLACK - 1e-6:
+            return shapes
+        shapes = tuple((kind, shape, cx, cy, radius * (1.0 + 1e-9) + 1e-9)
+                       for kind, shape, cx, cy, radius in self.discs
+                       if math.hypot(cx - x, cy - y) - radius < max_range + self.SLACK)
+        self._reach_cache = (x, y, max_range, shapes)
+        return shapes
+
     def ranges(self, x: float, y: float, theta: float, angles, max_range: float) -> list[float]:
         """Readings of rays from (x, y) at headings θ + angle, capped at ``max_range`` —
         :meth:`World.ranges` for one pose without noise."""
-        near = []  # shapes whose bounding disc the range disc reaches: (kind, shape, rx, ry, |r|², R)
-        for kind, shape, cx, cy, radius in self.discs:
+        near = []  # (kind, rx, ry, |r|², R, what the exact test needs from this origin)
+        for kind, shape, cx, cy, grown in self._reachable(x, y, max_range):
             rx, ry = cx - x, cy - y
-            if math.hypot(rx, ry) - radius < max_range:
-                grown = radius * (1.0 + 1e-9) + 1e-9  # rounding margin of the narrow tests below
-                near.append((kind, shape, rx, ry, rx * rx + ry * ry, grown))
+            rr = rx * rx + ry * ry
+            if kind == 0:  # circle: origin − centre is (−rx, −ry); the constant of its quadratic
+                extra = rr - shape[3] ** 2
+            elif kind == 1:  # polygon: its edges
+                extra = shape[4]
+            else:  # ellipse: origin in the unit-circle frame and the constant of its quadratic
+                _, _, _, ra, rb, c, s, _ = shape
+                ox, oy = (c * -rx + s * -ry) / ra, (-s * -rx + c * -ry) / rb
+                extra = (ox, oy, ox * ox + oy * oy - 1.0, c, s, ra, rb)
+            near.append((kind, rx, ry, rr, grown, extra))
         width, height = self.width, self.height
         out = []
         for angle in angles:
@@ -212,25 +235,26 @@ class ScalarScene:
             dx, dy = math.cos(heading), math.sin(heading)
             tx = (width - x) / dx if dx > 0 else (-x / dx if dx < 0 else math.inf)
             ty = (height - y) / dy if dy > 0 else (-y / dy if dy < 0 else math.inf)
-            best = max(min(tx, ty), 0.0)
-            for kind, shape, rx, ry, rr, grown in near:
+            best = ty if ty < tx else tx  # = max(min(tx, ty), 0), then the range cap
+            if best < 0.0:
+                best = 0.0
+            if max_range < best:
+                best = max_range
+            for kind, rx, ry, rr, grown, extra in near:
                 along = rx * dx + ry * dy
                 if along + grown < 0.0 or along - grown >= best or rr - along * along > grown * grown:
                     continue  # the ray misses the bounding disc, or meets it beyond the best hit
                 if kind == 1:
-                    t = ray_polygon(x, y, dx, dy, shape[4])
+                    t = ray_polygon(x, y, dx, dy, extra)
                 elif kind == 0:
-                    fx, fy = x - shape[1], y - shape[2]
-                    t = quadratic_first_hit(fx * dx + fy * dy, fx * fx + fy * fy - shape[3] ** 2, 1.0)
+                    t = quadratic_first_hit(-along, extra, 1.0)
                 else:
-                    _, cx, cy, ra, rb, c, s, _ = shape
-                    fx, fy = x - cx, y - cy
-                    ox, oy = (c * fx + s * fy) / ra, (-s * fx + c * fy) / rb
+                    ox, oy, const, c, s, ra, rb = extra
                     ux, uy = (c * dx + s * dy) / ra, (-s * dx + c * dy) / rb
-                    t = quadratic_first_hit(ox * ux + oy * uy, ox * ox + oy * oy - 1.0, ux * ux + uy * uy)
+                    t = quadratic_first_hit(ox * ux + oy * uy, const, ux * ux + uy * uy)
                 if t < best:
                     best = t
-            out.append(min(best, max_range))
+            out.append(best)
         return out
 
 

@@ -9,6 +9,7 @@ Distances are *signed*: negative inside an obstacle (or outside the world for th
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -152,8 +153,7 @@ class World:
         many through the vectorised one; both give the same answers."""
         points = np.asarray(points, dtype=float).reshape(-1, 2)
         if len(points) == 1:
-            d, x, y, k = self._scalar.nearest(float(points[0, 0]), float(points[0, 1]))
-            return np.array([d]), np.array([[x, y]]), np.array([self._order[k] if k >= 0 else -1])
+            return self._nearest_one(*points[0].tolist())
         dist, nearest_points = self._distances(points, prune=True)
         n = dist.shape[0]
         if dist.shape[1] == 0:
@@ -165,7 +165,16 @@ class World:
         """:meth:`nearest_obstacle` and :meth:`boundary_distance` in one call:
         ``(distance, point, index, boundary)``; the clearance is ``min(distance, boundary)``."""
         points = np.asarray(points, dtype=float).reshape(-1, 2)
+        if len(points) == 1:
+            x, y = points[0].tolist()
+            boundary = min(x, self.width - x, y, self.height - y) if x == x and y == y else math.nan
+            return (*self._nearest_one(x, y), np.array([boundary]))
         return (*self.nearest_obstacle(points), self.boundary_distance(points))
+
+    def _nearest_one(self, x: float, y: float):
+        """:meth:`nearest_obstacle` of one point, by the scalar path."""
+        d, px, py, k = self._scalar.nearest(x, y)
+        return np.array([d]), np.array([[px, py]]), np.array([self._order[k] if k >= 0 else -1])
 
     def boundary_distance(self, points):
         """Signed distance ``(N,)`` to the boundary walls (negative outside the world)."""
