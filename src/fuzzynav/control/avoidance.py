@@ -10,15 +10,17 @@ with an obstacle dead ahead — rule R1 of §IV.5.2.1).
 The thesis treats the robot as a point and puts a risk zone around each circular obstacle
 (§IV.5.2, Fig IV.3); here D_ro is the clearance minus ``risk`` (default 0.3 m, the robot's
 footprint radius), i.e. the gap between the robot's body and the obstacle, so the P set of
-Fig IV.10 (fully near below 0.5 m) leaves room to turn.
+Fig IV.10 (fully near below 0.5 m) leaves room to turn. The workspace's boundary walls are
+obstacles too: :attr:`Observation.obstacle_distance` leaves them out, so when the range ring
+reads a wall nearer than D_ro, that reading and its sensor direction stand for D_ro and θ_o.
 
 The switch of Fig IV.9 activates the avoider when an obstacle is detected "in front, on the
-right or on the left" (§IV.6.2) and stands between the robot and its goal: D_ro below
-``detection`` (default 2 m), the obstacle within ``sector`` (default 90°) of the heading and
-within ``sector`` of the goal direction, and the goal farther than the obstacle. An obstacle
-beside or behind the robot, or on the side away from the goal, leaves the guarded goal-seeking
-behaviour of :mod:`fuzzynav.control.goal_seeking` in charge (it turns away from such an
-obstacle anyway). Behaviour labels: ``GSB``, ``OA``.
+right or on the left" (§IV.6.2) and stands in the way: D_ro below ``detection`` (default 2 m),
+the goal farther than the obstacle, and the obstacle either within ``front`` (default 45°) of
+the heading, or within ``sector`` (default 90°) of the heading and of the goal direction. An
+obstacle beside or behind the robot on the side away from the goal leaves the guarded
+goal-seeking behaviour of :mod:`fuzzynav.control.goal_seeking` in charge (it turns away from
+such an obstacle anyway). Behaviour labels: ``GSB``, ``OA``.
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import thesis_angle_error
-from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.batched import BatchedController, evaluate
 from fuzzynav.control.goal_seeking import GuardedGoalSeeking
 from fuzzynav.fuzzy.systems import obstacle_avoidance
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -40,23 +42,33 @@ class TwoBehaviourNavigator(BatchedController):
 
     name = "fuzzy-2b"
 
-    def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, risk: float = 0.3,
-                 wheelbase: float = DEFAULT_PARAMS.wheelbase):
+    def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, front: float = math.pi / 4,
+                 risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase):
         self.detection = float(detection)
         self.risk = float(risk)
         self.sector = float(sector)
+        self.front = float(front)
         self.gsb = GuardedGoalSeeking(wheelbase)
         self.oa = obstacle_avoidance()
 
     def act_batch(self, obs):
         steering, speed, _ = self.gsb(obs.target_distance, obs.target_bearing)
-        d_ro = np.asarray(obs.obstacle_distance, dtype=float) - self.risk
+        d_ro = np.asarray(obs.obstacle_distance, dtype=float)
         theta_o = np.asarray(obs.obstacle_bearing, dtype=float)
+        if obs.ranges is not None:  # the boundary walls, which D_ro leaves out, as the range ring sees them
+            ranges = np.asarray(obs.ranges, dtype=float)
+            k = np.argmin(ranges, axis=1)
+            nearest = ranges[np.arange(len(k)), k]
+            wall = nearest < d_ro
+            d_ro = np.where(wall, nearest, d_ro)
+            theta_o = np.where(wall, np.asarray(obs.sensor_angles, dtype=float)[k], theta_o)
+        d_ro = d_ro - self.risk
         ahead = np.abs(theta_o) <= self.sector
         towards_goal = np.abs(wrap_angle(theta_o - obs.target_bearing)) <= self.sector
-        avoid = (d_ro < self.detection) & (ahead & towards_goal) & (obs.target_distance > d_ro)
+        in_front = np.abs(theta_o) <= self.front
+        avoid = (d_ro < self.detection) & (in_front | (ahead & towards_goal)) & (obs.target_distance > d_ro)
         if avoid.any():
-            out = self.oa.evaluate(np.column_stack([np.where(np.isfinite(d_ro), d_ro, 1e3),
+            out = evaluate(self.oa, np.column_stack([np.where(np.isfinite(d_ro), d_ro, 1e3),
                                                     thesis_angle_error(theta_o)]))
             steering = np.where(avoid, out[:, 0], steering)
             speed = np.where(avoid, out[:, 1], speed)

@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import BatchedController, sensor_columns
+from fuzzynav.control.batched import BatchedController, evaluate, sensor_columns
 from fuzzynav.control.goal_seeking import GuardedGoalSeeking
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -53,19 +53,20 @@ class FiveBehaviourNavigator(BatchedController):
         if self._columns is None:
             self._columns = sensor_columns(obs.sensor_angles, supervisor.THESIS_ANGLES_DEG)
         d = np.asarray(obs.ranges, dtype=float)[:, self._columns]  # (N, 7): d1…d7
-        choice = supervisor.select(d, obs.target_distance, obs.target_bearing, self.params)
-        steering, speed, _ = self.gsb(obs.target_distance, obs.target_bearing)
+        distance, bearing = obs.target_distance, obs.target_bearing
+        choice = supervisor.select(d, distance, bearing, self.params)
+        steering, speed, _ = self.gsb(distance, bearing)
         dmin = d.min(axis=1)
         sensed = dmin < self.params.detection
         v_now = np.asarray(obs.speed, dtype=float)
-        adjust = self.vrb.evaluate(np.column_stack([v_now, dmin]))[:, 0]
+        adjust = evaluate(self.vrb, np.column_stack([v_now, dmin]))[:, 0]
         v_vrb = np.clip(v_now + adjust, self.v_floor, self.v_max)  # eq IV.9
         for code, system, cols in ((supervisor.FOA, self.avoiders[0], (0, 1, 2)),
                                    (supervisor.ROA, self.avoiders[1], (1, 3, 5)),
                                    (supervisor.LOA, self.avoiders[2], (2, 4, 6))):
             mine = choice == code
             if mine.any():
-                steering = np.where(mine, system.evaluate(d[:, cols])[:, 0], steering)
+                steering = np.where(mine, evaluate(system, d[:, cols])[:, 0], steering)
         avoiding = choice != supervisor.GSB
         speed = np.where(avoiding, v_vrb, np.where(sensed, np.minimum(speed, v_vrb), speed))
         labels = LABELS[np.where(~avoiding & sensed, 4, choice)]

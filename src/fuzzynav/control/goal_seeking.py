@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import thesis_angle_error
-from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.batched import BatchedController, evaluate
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
@@ -44,7 +44,7 @@ class GuardedGoalSeeking:
         """
         distance = np.asarray(distance, dtype=float)
         bearing = np.asarray(bearing, dtype=float)
-        out = self.system.evaluate(np.column_stack([distance, thesis_angle_error(bearing)]))
+        out = evaluate(self.system, np.column_stack([distance, thesis_angle_error(bearing)]))
         table = out[:, 0]
         arc = np.arctan(2.0 * self.wheelbase * np.sin(bearing) / np.maximum(distance, 1e-9))
         guard = np.where(np.abs(arc) > ALPHA_MAX, 2, np.where(np.abs(table) < np.abs(arc), 1, 0))

@@ -27,7 +27,8 @@ import numpy as np
 GSB, FOA, ROA, LOA = 0, 1, 2, 3
 NAMES = ("GSB", "FOA", "ROA", "LOA")
 THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (SPEC §3.3)
-RIGHT = (1, 3, 5)  # columns of d2, d4, d6 (the left side d3, d5, d7 is 2, 4, 6)
+ANGLES = np.deg2rad(THESIS_ANGLES_DEG)
+SIDE = np.array([FOA, ROA, LOA, ROA, LOA, ROA, LOA])  # module of each sensor's side: d2, d4, d6 right
 
 
 @dataclass(frozen=True)
@@ -45,14 +46,12 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
     """Behaviour codes ``(N,)`` from readings ``d`` ``(N, 7)`` in C1…C7 order and the goal's
     distance and bearing ``(N,)`` (bearing CCW, > 0 on the left)."""
     d = np.asarray(d, dtype=float)
-    angles = np.deg2rad(THESIS_ANGLES_DEG)
     look = np.clip(np.asarray(goal_bearing, dtype=float), -math.pi / 2, math.pi / 2)
-    window = np.abs(angles[None, :] - look[:, None]) <= params.vision + 1e-9  # around the goal bearing
+    window = np.abs(ANGLES[None, :] - look[:, None]) <= params.vision + 1e-9  # around the goal bearing
     need = np.minimum(np.asarray(goal_distance, dtype=float), params.clear)
     nearest = d.min(axis=1)
     goal_clear = np.all(~window | (d >= need[:, None]), axis=1) & (nearest >= params.keep)
     quiet = nearest >= params.detection
     k = np.argmin(d, axis=1)
-    side = np.where(np.isin(k, RIGHT), ROA, LOA)
-    avoider = np.where((k == 0) | (d[:, 0] < params.front), FOA, side)
+    avoider = np.where(d[:, 0] < params.front, FOA, SIDE[k])
     return np.where(quiet | goal_clear, GSB, avoider)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.batched import BatchedController, sensor_columns
+from fuzzynav.control.batched import BatchedController, evaluate, sensor_columns
 from fuzzynav.fuzzy.systems_navigation import wall_follower
 
 WALL_SENSORS_DEG = (-90.0, 0.0, 90.0)  # d_d, d_f, d_g
@@ -30,7 +30,7 @@ class WallFollower(BatchedController):
     def act_batch(self, obs):
         if self._columns is None:
             self._columns = sensor_columns(obs.sensor_angles, WALL_SENSORS_DEG)
-        out = self.system.evaluate(np.asarray(obs.ranges, dtype=float)[:, self._columns])
+        out = evaluate(self.system, np.asarray(obs.ranges, dtype=float)[:, self._columns])
         return out[:, 0], out[:, 1], np.full(len(out), "WF")
 
 
