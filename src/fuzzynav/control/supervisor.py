@@ -11,8 +11,9 @@ precise here, per robot, from the seven readings d1…d7 (SPEC §3.3: d1 ahead; 
    goal direction is clear: every ray within ``vision`` of the goal bearing (clipped to the ±90°
    the ring covers) reads at least min(d_rg, ``clear``), and no reading is below ``keep`` (room
    to turn towards it).
-2. Otherwise the avoider of the nearest reading: **FOA** when it is d1 (an obstacle dead
-   ahead), **ROA** when it is on the right (d2, d4, d6), **LOA** when on the left (d3, d5, d7).
+2. Otherwise an avoider: **FOA** while the front reading d1 is below ``front`` or is the
+   nearest reading (an obstacle ahead); else the avoider of the side of the nearest reading,
+   **ROA** on the right (d2, d4, d6), **LOA** on the left (d3, d5, d7).
 
 :func:`select` returns one code per robot (:data:`GSB`, :data:`FOA`, :data:`ROA`, :data:`LOA`).
 """
@@ -24,8 +25,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav.fuzzy.systems_navigation import D_M, D_S
+
 GSB, FOA, ROA, LOA = 0, 1, 2, 3
-NAMES = ("GSB", "FOA", "ROA", "LOA")
 THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (SPEC §3.3)
 ANGLES = np.deg2rad(THESIS_ANGLES_DEG)
 SIDE = np.array([FOA, ROA, LOA, ROA, LOA, ROA, LOA])  # module of each sensor's side: d2, d4, d6 right
@@ -35,10 +37,10 @@ SIDE = np.array([FOA, ROA, LOA, ROA, LOA, ROA, LOA])  # module of each sensor's 
 class SupervisorParams:
     """Thresholds of the supervisor (m, rad): d_s and d_m of Fig IV.18, a 30° half-window."""
 
-    detection: float = 2.0  # a reading below this means "an obstacle is sensed"
-    front: float = 1.0  # FOA also takes over while the front reading d1 is below this
-    keep: float = 1.0  # GSB is not handed the robot while any reading is below this (d_m of Fig IV.18)
-    clear: float = 2.0  # free distance asked of the goal direction and of the front
+    detection: float = D_S  # a reading below this means "an obstacle is sensed" (d_s)
+    front: float = D_M  # FOA takes over while the front reading d1 is below this (d_m)
+    keep: float = D_M  # GSB is not handed the robot while any reading is below this (d_m)
+    clear: float = D_S  # free distance asked of the goal direction (d_s)
     vision: float = math.radians(30.0)  # half-width of the "vision interval" around the goal bearing
 
 

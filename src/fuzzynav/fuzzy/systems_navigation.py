@@ -8,12 +8,15 @@ from the fragment is listed next to it with the reason (the principle the thesis
 module). Universes and breakpoints the thesis leaves symbolic are fixed here:
 
 - Fig IV.18 (distance d_i, sets P "near" / L "far"): P = 1 up to ``d_m``, falls linearly to 0 at
-  ``d_s``; L = 1 − P, up to the sensor range ``d_max``. Defaults d_m = 1.0 m (0.7 m beyond the
-  0.3 m body radius: one turning radius l / tan(π/5) = 0.69 m of the 0.5 m-wheelbase robot),
-  d_s = 2.0 m, d_max = 4.0 m (the sensor range of docs/ARCHITECTURE.md).
+  ``d_s``; L = 1 − P, up to the sensor range ``d_max``. Defaults d_m = 1.5 m, d_s = 3.0 m,
+  d_max = 4.0 m (the sensor range of docs/ARCHITECTURE.md). d_m leaves, beyond the 0.3 m body
+  radius, about one tightest-turn radius l / tan(π/5) = 0.69 m plus a margin for the 30° gaps
+  between rays; measured on generated worlds, (1.0, 2.0) m and (1.2, 2.4) m collide 2–3 times
+  as often and (2.0, 3.5) m starts to time out (tight passages read as blocked).
 - Fig IV.19 (current speed V_r: F, M, G): triangles peaking at v1 = 0.5, v2 = 1.0, v3 = 2.0 m/s,
   F a left shoulder, G a right shoulder up to v_max = 4 m/s. Fig IV.20 (D_min: P, L): the
-  distance partition above with d1 = d_m, d2 = d_s.
+  distance partition above with d1 = d_m, d2 = d_s. With Table IV.6 the speed settles near v1
+  with an obstacle near (D_min P) and near v2 with obstacles sensed but far (D_min L).
 - Fig VI.17 / VI.25 / VI.26 (wall follower): P / L with d_m = 0.9 m, d_s = 1.6 m, range 4 m;
   speeds Z 0, P v1 = 0.6, M v2 = 1.2 m/s; α the seven singletons of Fig IV.7.
 """
