@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from fuzzynav.control import learned
 from fuzzynav.control.base import Observation
 from fuzzynav.control.learned import (
     FuzzyGoalSeeker,
@@ -57,6 +58,19 @@ def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
     steering, speed, free = navigator.blend(near, gs)
     assert free[0] == 0.0 and steering[0] == pytest.approx(math.pi / 5)
 
+
+
+def test_supervisor_hands_a_clear_goal_direction_to_goal_seeking_and_slows_it():
+    navigator = LearnedAvoidanceNavigator(train_rl.avoid_system(np.full(7, 2), np.full(7, 0)))
+    assert (navigator.params.front, navigator.params.detection) == (train_rl.AVOID_D_MIN, train_rl.AVOID_D_SAFE)
+    blended, goal = np.array([[0.6, 0.5], [0.6, 0.5]]), np.array([[-0.2, 3.0], [-0.2, 3.0]])
+    ranges = np.full((2, 7), 4.0)
+    ranges[:, 6] = 2.0  # a wall on the left, 2 m away, beside a clear path ahead
+    ranges[1, :3] = 1.0  # and for the second robot an obstacle dead ahead, 1 m
+    steering, speed, goal_seeking = learned.supervise(blended, goal, ranges, np.full(2, 10.0), np.zeros(2),
+                                                      navigator.params)
+    assert goal_seeking.tolist() == [True, False]
+    assert steering.tolist() == [-0.2, 0.6] and speed.tolist() == [0.5, 0.5]  # sensed: no faster than the avoider
 
 def test_model_files_load_as_controllers_and_errors_name_the_field(tmp_path):
     system = steering_table("Z")

@@ -138,6 +138,34 @@ class TabularGoalSeeker(_Learned):
         return self.steering[actions], np.full(len(x), self.speed), ["goal seeking"] * len(x)
 
 
+def avoidance_supervisor(avoidance):
+    """The chapter IV supervisor (:mod:`fuzzynav.control.supervisor`, Fig IV.16) with the learned
+    avoider's own thresholds: d_m and d_s are the breakpoints of its ``front`` P set (Fig VI.17),
+    as ``fuzzy-5b`` uses d_m and d_s of Fig IV.18 (detection d_s, front and keep d_m, clear d_s)."""
+    from fuzzynav.control.supervisor import SupervisorParams
+
+    d_m, d_s = avoidance.inputs[0].terms["P"].breakpoints()[-2:]
+    return SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
+
+
+def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params):
+    """(α, V_r, goal seeking?) of the learned navigator (B,) from the blend of the avoider and the
+    goal seeker ``blended`` (B, 2), the goal seeker's ``goal_command`` (B, 2), the seven readings
+    (B, 7) and the goal's distance and bearing (B,).
+
+    As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
+    or the goal direction clear — at a speed no higher than the avoider's while something is
+    sensed (the VRB principle, Table IV.6); the blend otherwise.
+    """
+    from fuzzynav.control import supervisor
+
+    ranges = np.asarray(ranges, dtype=float)
+    goal = supervisor.select(ranges, goal_distance, goal_bearing, params) == supervisor.GSB
+    sensed = ranges.min(axis=1) < params.detection
+    goal_speed = np.where(sensed, np.minimum(goal_command[:, 1], blended[:, 1]), goal_command[:, 1])
+    return (np.where(goal, goal_command[:, 0], blended[:, 0]), np.where(goal, goal_speed, blended[:, 1]), goal)
+
+
 class LearnedAvoidanceNavigator(_Learned):
     """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
 
@@ -151,7 +179,10 @@ class LearnedAvoidanceNavigator(_Learned):
 
     When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
     obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
-    the fuzzy partition of Fig VI.17.
+    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:func:`supervise`) hands the
+    robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
+    it the blend keeps pulling away from obstacles beside a clear path and the robot circles
+    goals placed near obstacles.
     """
 
     def __init__(self, avoidance, goal=None, constant_speed: float = 1.0, name: str = "fql-avoid"):
@@ -166,6 +197,7 @@ class LearnedAvoidanceNavigator(_Learned):
         self.goal = goal  # (d_rg, bearing) -> (α, V_r, ...): the guarded GSB of chapter IV
         self.alpha_index, self.speed_index = _outputs(avoidance, ("alpha", "v"))
         self.constant_speed = float(constant_speed)
+        self.params = avoidance_supervisor(avoidance)
         self.name = name
 
     def free_share(self, distances) -> np.ndarray:
@@ -185,10 +217,11 @@ class LearnedAvoidanceNavigator(_Learned):
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
-        alpha, speed = self.goal(x[:, 0], -x[:, 1])[:2]
-        steering, speed, free = self.blend(side_distances(ranges), np.column_stack([alpha, speed]))
-        labels = ["goal seeking" if f >= 0.5 else "obstacle avoidance" for f in free]
-        return steering, speed, labels
+        goal_command = np.column_stack(self.goal(x[:, 0], -x[:, 1])[:2])
+        alpha, speed, _ = self.blend(side_distances(ranges), goal_command)
+        steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
+                                          self.params)
+        return steering, speed, ["goal seeking" if g else "obstacle avoidance" for g in goal]
 
 
 class LearnedWallFollower(_Learned):

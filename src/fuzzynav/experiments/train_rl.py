@@ -378,7 +378,7 @@ def evaluate_goal(controller, n: int = 100, seed: int = 12345, goals: int = 10, 
 
 # -- obstacle avoidance, fuzzy Q-learning (§VI.5.2) ------------------------------------------
 D_MAX = 4.0  # m, sensor range (docs/ARCHITECTURE.md)
-AVOID_D_MIN, AVOID_D_SAFE = 0.6, 3.0  # d_m, d_s of Fig VI.17 (m)
+AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b (Fig IV.18)
 AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is learned
 AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
 AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
@@ -433,23 +433,26 @@ def _avoid_candidates(values: dict) -> np.ndarray:
 def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
     """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
     from fuzzynav.control.goal_seeking import GuardedGoalSeeking
+    from fuzzynav.control.learned import avoidance_supervisor, supervise
 
     inputs = avoid_inputs()
     template = grid_system(inputs, [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
                            [["Z"] * (FREE_RULE + 1)], "premise", "")
     premise = GridPremise(template)
     gsb = GuardedGoalSeeking()
+    params = avoidance_supervisor(template)
     layout = RandomObstacles()
     sensors = SensorRing()
 
-    def goal_and_free(s):
-        alpha, speed = gsb(s.goal[:, 0], -s.goal[:, 1])[:2]
+    def navigate(s, alpha, speed):
+        """The navigator of control.learned with the learner's (α, V_r) shares of the avoider."""
+        goal = np.column_stack(gsb(s.goal[:, 0], -s.goal[:, 1])[:2])
         free = premise.firing_strengths(s.sides, normalise=False)[:, FREE_RULE]
-        return alpha, speed, free
+        blended = np.column_stack([alpha + free * goal[:, 0], speed(free) + free * goal[:, 1]])
+        return supervise(blended, goal, s.ranges, s.goal[:, 0], -s.goal[:, 1], params)[:2]
 
     def steer_command(a, s):
-        alpha, speed, free = goal_and_free(s)
-        return a[:, 0] + free * alpha, (1.0 - free) * AVOID_SPEED + free * speed
+        return navigate(s, a[:, 0], lambda free: (1.0 - free) * AVOID_SPEED)
 
     steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING), 0.0, batch, prior=AVOID_PRIOR,
                         alpha=AVOID_RATE / batch)
@@ -460,8 +463,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
 
     def speed_command(a, s):
-        alpha, speed, free = goal_and_free(s)
-        return steer.greedy_action(s.sides, AVOID_TOLERANCE)[:, 0] + free * alpha, a[:, 0] + free * speed
+        return navigate(s, steer.greedy_action(s.sides, AVOID_TOLERANCE)[:, 0], lambda free: a[:, 0])
 
     speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS), 0.0, batch, prior=0, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, lambda s: s.sides, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
