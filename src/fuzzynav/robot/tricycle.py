@@ -95,12 +95,11 @@ def step(pose, steering, speed, params: TricycleParams = DEFAULT_PARAMS, integra
 
 
 def _advance(x, y, theta, steering, speed, params: TricycleParams, method: str, functions):
-    """New (x, y, θ) of :func:`step`, for floats or arrays: ``functions`` = (tan, cos, sin, sinc,
-    wrap)."""
-    tan, cos, sin, sinc, wrap = functions
+    """New (x, y, θ) of :func:`step`, for floats or arrays: ``functions`` = (tan, cos, sin, sinc)."""
+    tan, cos, sin, sinc = functions
     dt = params.dt
     omega = speed * tan(steering) / params.wheelbase
-    new_theta = wrap(theta + omega * dt)
+    new_theta = wrap_angle(theta + omega * dt)
     if method == "euler":
         chord, direction = dt * speed, theta
     else:  # "arc": sin/cos differences written with half-angles, well conditioned as ω → 0
@@ -116,11 +115,5 @@ def _float_sinc(x: float) -> float:
     return math.sin(y) / y
 
 
-def _float_wrap(angle: float) -> float:
-    """:func:`~fuzzynav.world.geometry.wrap_angle` for one float (its formula; Python's float
-    ``%`` is NumPy's ``mod``)."""
-    return np.pi - (np.pi - angle) % (2.0 * np.pi)
-
-
-_ARRAY_MATH = (np.tan, np.cos, np.sin, np.sinc, wrap_angle)
-_FLOAT_MATH = (math.tan, math.cos, math.sin, _float_sinc, _float_wrap)
+_ARRAY_MATH = (np.tan, np.cos, np.sin, np.sinc)
+_FLOAT_MATH = (math.tan, math.cos, math.sin, _float_sinc)
