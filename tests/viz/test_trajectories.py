@@ -1,8 +1,10 @@
+from dataclasses import replace
+
 import numpy as np
 
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.animation import animate_episode
-from fuzzynav.viz.trajectories import change_labels, plot_commands, plot_episode, plot_trajectory
+from fuzzynav.viz.trajectories import change_labels, merged_changes, plot_commands, plot_episode, plot_trajectory
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 from tests.sim.controllers import HeadingController
 
@@ -47,3 +49,16 @@ def test_episode_png_and_gif(tmp_path):
     assert (tmp_path / "e.png").stat().st_size > 10_000
     assert animate_episode(trace, scenario, tmp_path / "e.gif", max_frames=5) == 5
     assert (tmp_path / "e.gif").read_bytes()[:6] == b"GIF89a"
+
+
+def test_bursts_of_changes_share_one_marker():
+    scenario, trace = passing_episode()
+    labels = trace.behaviour.copy()
+    k = trace.behaviour_changes()[0]
+    labels[k + 1: k + 4] = labels[k - 1]  # a flip back and forth within 0.4 s: chatter
+    burst = replace(trace, behaviour=labels)
+    assert len(burst.behaviour_changes()) == 4
+    markers = merged_changes(burst)
+    assert markers == [k, trace.behaviour_changes()[1]]
+    ax = plot_trajectory(burst, scenario)
+    assert [t.get_text() for t in ax.texts if t.get_text() in ("A", "B", "C", "D")] == ["A", "B"]

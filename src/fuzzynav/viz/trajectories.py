@@ -3,7 +3,8 @@
 - :func:`draw_world`: boundary, obstacles, start pose, goal (with its tolerance), path
   waypoints or the moving target's course.
 - :func:`plot_trajectory`: the driven path coloured by active behaviour, with the points where
-  the behaviour changes lettered A, B, C… as in Fig IV.15, the robot footprint at the end, and
+  the behaviour changes lettered A, B, C… as in Fig IV.15 (changes closer than 0.5 m and 1 s to
+  the previous marker share it: :func:`merged_changes`), the robot footprint at the end, and
   optionally the sensor rays every few steps.
 - :func:`plot_commands`: steering α and speed V_r against time (Fig IV.14).
 - :func:`plot_episode`: both side by side, saved to a PNG.
@@ -33,6 +34,19 @@ def change_labels(n: int) -> list[str]:
     """Marker names A, B, …, Z, AA, AB, … for ``n`` behaviour changes (Fig IV.15)."""
     letters = string.ascii_uppercase
     return [letters[i] if i < 26 else letters[i // 26 - 1] + letters[i % 26] for i in range(n)]
+
+
+def merged_changes(trace: Trace, distance: float = 0.5, time: float = 1.0) -> list[int]:
+    """Indices of the behaviour-change markers: a change of :meth:`Trace.behaviour_changes`
+    closer than ``distance`` (m) or ``time`` (s) to the last marker joins that marker, any other
+    starts a new one — a burst of switches is one lettered point, as the thesis letters each
+    manoeuvre once (Fig IV.15, A…H)."""
+    xy, t = trace.pose[:, :2], trace.t
+    markers: list[int] = []
+    for k in trace.behaviour_changes():
+        if not markers or (np.hypot(*(xy[k] - xy[markers[-1]])) >= distance and t[k] - t[markers[-1]] >= time):
+            markers.append(k)
+    return markers
 
 
 def draw_world(ax, scenario: Scenario, trace: Trace | None = None) -> None:
@@ -98,7 +112,7 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
             segs = sensor_segments(trace.pose[k], trace.sensor_angles, trace.ranges[k])
             ax.add_collection(LineCollection(segs, colors="tab:orange", linewidths=0.5, alpha=0.6))
     if markers:
-        changes = trace.behaviour_changes()
+        changes = merged_changes(trace)
         for name, k in zip(change_labels(len(changes)), changes):
             ax.plot(*xy[k], "k.", markersize=5)
             ax.annotate(name, xy[k], xytext=(4, 4), textcoords="offset points", fontsize=9, weight="bold")
