@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
+import zipfile
 from importlib import import_module
 from pathlib import Path
 
@@ -28,19 +29,34 @@ MODEL_LOADERS["fql-avoid"] = "fuzzynav.control.learned:load_fuzzy_model"
 MODEL_LOADERS["fql-wall"] = "fuzzynav.control.learned:load_fuzzy_model"
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def _atomic_write(path: Path, write) -> None:
+    """Write through ``write(handle)`` to a temporary file, then rename it onto ``path``.
+
+    The file gets the usual permissions (0666 less the umask, not mkstemp's 0600); a path that
+    cannot be written (missing permission, a directory, ...) is an :class:`InputError` naming it.
+    """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    tmp = None
     try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
         with os.fdopen(fd, "wb") as handle:
             write(handle)
             handle.flush()
             os.fsync(handle.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
         os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
+    except BaseException as error:
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(error, OSError):
+            raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
         raise
 
 
@@ -68,7 +84,7 @@ def read_model(path) -> dict:
                 document["kind"] = str(document["kind"])
         else:
             document = json.loads(path.read_text())
-    except (OSError, ValueError) as error:
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
         raise InputError(f"cannot read model file ({error})", source=str(path)) from None
     if not isinstance(document, dict) or "kind" not in document:
         raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")

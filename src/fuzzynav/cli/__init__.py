@@ -8,6 +8,7 @@ raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from importlib import import_module
 
@@ -48,6 +49,15 @@ def main(argv: list[str] | None = None) -> int:
         return int(args.func(args) or 0)
     except InputError as error:
         print(f"fuzzynav {args.command}: error: {error}", file=sys.stderr)
+        return 2
+    except BrokenPipeError:
+        # the reader of stdout went away (``fuzzynav fis show ... | head``): quietly, no traceback
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141
+    except OSError as error:
+        # a file named on the command line cannot be read or written (missing folder, permission, ...)
+        where = f"{error.filename}: " if error.filename else ""
+        print(f"fuzzynav {args.command}: error: {where}{error.strerror or error}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

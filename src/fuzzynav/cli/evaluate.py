@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import sys
 
+from fuzzynav.cli import arguments
 from fuzzynav.control.registry import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
@@ -28,7 +29,7 @@ def register(subparsers) -> None:
                         help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
-    parser.add_argument("--seed", type=int, default=0, help="world and episode seed (default 0)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.set_defaults(func=run)

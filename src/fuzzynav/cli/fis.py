@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -92,10 +93,14 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
         name, sep, value = pair.partition("=")
         if not sep or name not in system.input_names:
             raise InputError(f"expected NAME=VALUE with NAME in {', '.join(system.input_names)}", field=f"--input {pair}")
+        if name in values:
+            raise InputError(f"{name} is given twice", field=f"--input {pair}")
         try:
             values[name] = float(value)
         except ValueError:
             raise InputError(f"{value!r} is not a number", field=f"--input {pair}") from None
+        if math.isnan(values[name]):
+            raise InputError("NaN input", field=f"--input {pair}")
     missing = [n for n in system.input_names if n not in values]
     if missing:
         raise InputError(f"missing input(s) {', '.join(missing)}", field="--input")
@@ -120,6 +125,9 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
         except (TypeError, ValueError):
             raise InputError(f"non-numeric value in {dict((n, row[n]) for n in system.input_names)}",
                              source=path, field=f"line {line}") from None
+        if any(math.isnan(v) for v in rows[-1]):
+            raise InputError(f"NaN input in {dict((n, row[n]) for n in system.input_names)}",
+                             source=path, field=f"line {line}")
     if not rows:
         raise InputError("no data rows", source=path)
     return np.array(rows)
@@ -207,5 +215,5 @@ def register(subparsers) -> None:
     plot.add_argument("system", help=target)
     plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
     plot.add_argument("--output-variable", dest="surface_output", help="output drawn by --surface")
-    plot.add_argument("-o", "--output", required=True, metavar="FILE.png")
+    plot.add_argument("-o", "--output", required=True, metavar="FILE.png", type=arguments.figure_path)
     plot.set_defaults(func=_plot)

@@ -6,6 +6,7 @@ import json
 import time
 from pathlib import Path
 
+from fuzzynav.cli import arguments
 from fuzzynav.experiments import registry
 
 
@@ -19,7 +20,7 @@ def register(subparsers) -> None:
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
-    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.set_defaults(func=run)
 
 

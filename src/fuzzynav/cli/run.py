@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 
+from fuzzynav.cli import arguments
 from fuzzynav.control.registry import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
@@ -27,12 +28,12 @@ def register(subparsers) -> None:
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--controller", metavar="NAME", help="built-in controller name")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
-    parser.add_argument("--seed", type=int, default=0, help="random seed (sensor noise, controllers; default 0)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
     parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
     parser.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
-    parser.add_argument("--plot", metavar="PNG", help="write the trajectory and command plots")
+    parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
-    parser.add_argument("--animate", metavar="GIF", help="write an animated GIF of the episode")
+    parser.add_argument("--animate", metavar="GIF", type=arguments.gif_path, help="write an animated GIF of the episode")
     parser.set_defaults(func=run)
 
 

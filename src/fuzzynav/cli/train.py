@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 from fuzzynav import training
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
 
@@ -18,7 +19,7 @@ def register(subparsers) -> None:
     )
     parser.add_argument("task", metavar="TASK", help="training task name")
     parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
-    parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=Path, help="model file to write (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
@@ -34,8 +35,11 @@ def run(args) -> int:
         raise InputError("must be a positive integer", field="--episodes")
     if args.checkpoint_every is not None and args.checkpoint_every <= 0:
         raise InputError("must be a positive integer", field="--checkpoint-every")
+    out = args.out or Path(f"{args.task}.json")
+    if out.is_dir():
+        raise InputError(f"{out} is a directory; give the model file to write", field="--out")
     request = training.TrainRequest(
-        out=args.out or Path(f"{args.task}.json"),
+        out=out,
         episodes=args.episodes,
         seed=args.seed,
         resume=args.resume,
