@@ -30,6 +30,7 @@ Numbers are written exactly (shortest round-trip repr); infinite parameters as t
 
 from __future__ import annotations
 
+import difflib
 import math
 
 from fuzzynav.errors import InputError
@@ -74,6 +75,31 @@ def to_document(system: FuzzySystem) -> dict:
     return doc
 
 
+_TOP_KEYS = ("format", "version", "name", "description", *_OPTIONS, "inputs", "outputs", "rules")
+_VARIABLE_KEYS = ("name", "universe", "terms")
+_TERM_KEYS = ("kind", "params")
+_GRID_KEYS = ("rows", "columns", "outputs", "cells", "row_labels", "column_labels", "columns_first")
+
+
+def _check_keys(mapping, known, source, field, strict: bool = True) -> None:
+    """Reject the keys of ``mapping`` outside ``known``, suggesting the closest one.
+
+    ``strict=False`` (top level) rejects only near misses of a known key (``tnrom``, ``methd``):
+    other top-level keys belong to the file's owner — a model file adds its ``kind`` and its
+    training record around the fuzzy system.
+    """
+    if not isinstance(mapping, dict):
+        return
+    for key in mapping:
+        if key in known:
+            continue
+        close = difflib.get_close_matches(str(key), known, n=1, cutoff=0.75)
+        if strict or close:
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            raise InputError(f"unknown key {key!r}{hint}; known: {', '.join(known)}", source=source,
+                             field=f"{field}.{key}" if field else str(key))
+
+
 def _require(mapping, key, kind, source, field):
     if not isinstance(mapping, dict) or key not in mapping:
         raise InputError(f"missing field {key!r}", source=source, field=field)
@@ -85,6 +111,7 @@ def _require(mapping, key, kind, source, field):
 
 
 def _variable(doc, source, field) -> Variable:
+    _check_keys(doc, _VARIABLE_KEYS, source, field)
     name = _require(doc, "name", str, source, field)
     universe = _require(doc, "universe", list, source, field)
     if len(universe) != 2:
@@ -93,6 +120,7 @@ def _variable(doc, source, field) -> Variable:
     terms = {}
     for label, term in _require(doc, "terms", dict, source, field).items():
         where = f"{field}.terms.{label}"
+        _check_keys(term, _TERM_KEYS, source, where)
         kind = _require(term, "kind", str, source, where)
         params = [_number_in(p, source, f"{where}.params") for p in _require(term, "params", list, source, where)]
         try:
@@ -119,6 +147,8 @@ def _rules(doc, inputs, source) -> list:
         return out
     if isinstance(rules, dict) and isinstance(rules.get("grid"), dict):
         grid = rules["grid"]
+        _check_keys(rules, ("grid",), source, "rules")
+        _check_keys(grid, _GRID_KEYS, source, "rules.grid")
         by_name = {v.name: v for v in inputs}
         names = {}
         for key in ("rows", "columns"):
@@ -146,6 +176,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
     if doc.get("version", VERSION) != VERSION:
         raise InputError(f"unsupported version {doc.get('version')!r}", source=source, field="version")
+    _check_keys(doc, _TOP_KEYS, source, "", strict=False)
     inputs = [_variable(v, source, f"inputs[{i}]") for i, v in enumerate(_require(doc, "inputs", list, source, ""))]
     outputs = [_variable(v, source, f"outputs[{i}]") for i, v in enumerate(_require(doc, "outputs", list, source, ""))]
     options = {key: doc[key] for key in _OPTIONS if doc.get(key) is not None}

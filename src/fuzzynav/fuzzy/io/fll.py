@@ -34,6 +34,14 @@ from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
 
 FUZZYLITE_RESOLUTION = 1000
+# The keys fuzzylite's own FllImporter accepts in each section; it rejects any other, and so do we.
+_SECTION_KEYS = {
+    "Engine": {"description"},
+    "InputVariable": {"description", "enabled", "range", "lock-range", "term"},
+    "OutputVariable": {"description", "enabled", "range", "lock-range", "term", "default", "lock-previous",
+                       "aggregation", "defuzzifier"},
+    "RuleBlock": {"description", "enabled", "conjunction", "disjunction", "implication", "activation", "rule"},
+}
 _TNORM_OUT = {"product": "AlgebraicProduct", "min": "Minimum"}
 _TNORM_IN = {v: k for k, v in _TNORM_OUT.items()}
 _AGGREGATION_OUT = {"max": "Maximum", "sum": "UnboundedSum"}
@@ -180,6 +188,10 @@ def from_fll(text: str, source: str | None = None) -> FuzzySystem:
     blocks = 0
     for sec in sections:
         kind, items = sec["kind"], sec["items"]
+        for key, _, number in items:
+            if key not in _SECTION_KEYS[kind]:
+                raise InputError(f"{key!r} is not a key of {kind} (known: {', '.join(sorted(_SECTION_KEYS[kind]))})",
+                                 source=source, field=f"line {number}")
         if kind == "Engine":
             engine["name"] = sec["name"]
             for key, value, number in items:
