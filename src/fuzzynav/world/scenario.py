@@ -21,7 +21,8 @@ line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.worl
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
 ``obstacles[2].circle.radius``) and what is wrong; unknown keys get the closest known key as a
-hint. YAML is read with ``yaml.safe_load`` semantics (plus a duplicate-key check).
+hint. YAML is read with ``yaml.safe_load`` semantics (plus a duplicate-key check and YAML 1.2's
+``1e3`` floats: :mod:`fuzzynav.yaml_loader`).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
 from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
 from fuzzynav.world.world import World
+from fuzzynav.yaml_loader import load_yaml
 
 BUILTIN_DIR = Path(__file__).with_name("scenarios")
 DEFAULT_MAX_TIME = 120.0
@@ -307,20 +309,6 @@ def _controller_names(check: _Checker, names) -> tuple[str, ...]:
     return tuple(names)
 
 
-class _UniqueKeyLoader(yaml.SafeLoader):
-    """``yaml.SafeLoader`` that rejects duplicate keys instead of keeping the last one."""
-
-    def construct_mapping(self, node, deep=False):
-        seen = set()
-        for key_node, _ in node.value:
-            key = self.construct_object(key_node, deep=deep)
-            if key in seen:
-                raise yaml.constructor.ConstructorError(
-                    None, None, f"duplicate key {key!r}", key_node.start_mark)
-            seen.add(key)
-        return super().construct_mapping(node, deep=deep)
-
-
 def read_yaml(path: Path):
     """Parse a YAML file safely; unreadable files raise InputError naming the file (and line)."""
     try:
@@ -328,7 +316,7 @@ def read_yaml(path: Path):
     except (OSError, UnicodeDecodeError) as error:
         raise InputError(f"cannot read file ({error})", source=str(path)) from None
     try:
-        return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 — a SafeLoader subclass
+        return load_yaml(text)
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""

@@ -2,7 +2,8 @@
 
 JSON and YAML hold the document of :mod:`fuzzynav.fuzzy.io.document` (exact round trip);
 ``.fll`` is the fuzzylite language (:mod:`fuzzynav.fuzzy.io.fll`). YAML is read with
-``yaml.safe_load`` only. Syntax errors name the file and the line.
+``yaml.safe_load`` semantics only (:mod:`fuzzynav.yaml_loader`: duplicate keys rejected, ``1e3``
+read as a float). Syntax errors name the file and the line.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import from_document, to_document
 from fuzzynav.fuzzy.io.fll import from_fll, to_fll
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.yaml_loader import load_yaml
 
 FORMATS = ("json", "yaml", "fll")
 _SUFFIX = {".json": "json", ".yaml": "yaml", ".yml": "yaml", ".fll": "fll"}
@@ -54,7 +56,7 @@ def loads(text: str, fmt: str, source: str | None = None) -> FuzzySystem:
                              field=f"line {error.lineno}, column {error.colno}") from None
     elif fmt == "yaml":
         try:
-            doc = yaml.safe_load(text)
+            doc = load_yaml(text)
         except yaml.YAMLError as error:
             mark = getattr(error, "problem_mark", None)
             where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else None
