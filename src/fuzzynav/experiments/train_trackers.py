@@ -118,12 +118,15 @@ def _document(kind: str, model, data: TrackerData, seed: int, seconds: float) ->
     }
 
 
-def _tracker(kind: str, model, document: dict, **options) -> ModelTracker:
+def _tracker(kind: str, model, document: dict, source: str | None = None, **options) -> ModelTracker:
     lo, hi = document["input_range"]
     options = {"speed": document.get("speed", DEFAULT_SPEED),
                "corner_radius": document.get("corner_radius", DEFAULT_CORNER_RADIUS),
                "lookahead": document.get("lookahead", DEFAULT_LOOKAHEAD), **options}
-    return ModelTracker(model, (lo, hi), name=kind, max_steering=MAX_STEERING, **options)
+    try:
+        return ModelTracker(model, (lo, hi), name=kind, max_steering=MAX_STEERING, **options)
+    except InputError as error:  # a bad speed / corner_radius / lookahead of the file: name the file
+        raise InputError(error.problem, source=error.source or source, field=error.field) from None
 
 
 def _checked(document: dict, path) -> dict:
@@ -134,21 +137,27 @@ def _checked(document: dict, path) -> dict:
     r = document["input_range"]
     if not (isinstance(r, list) and len(r) == 2 and all(isinstance(v, (int, float)) for v in r) and r[0] < r[1]):
         raise InputError(f"must be [lo, hi] with lo < hi, got {r!r}", source=source, field="input_range")
+    for key in ("speed", "corner_radius", "lookahead"):
+        value = document.get(key, 0.0)
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise InputError(f"must be a number, got {value!r}", source=source, field=key)
     return document
 
 
 def load_neural_tracker(document: dict, path=None, **options) -> ModelTracker:
     """Model loader of kind ``neural-tracker`` (see :data:`fuzzynav.models.MODEL_LOADERS`)."""
     document = _checked(document, path)
-    model = NeuralInverseModel.from_dict(document["model"], source=str(path) if path else None)
-    return _tracker("neural-tracker", model, document, **options)
+    source = str(path) if path else None
+    model = NeuralInverseModel.from_dict(document["model"], source=source)
+    return _tracker("neural-tracker", model, document, source, **options)
 
 
 def load_anfis_tracker(document: dict, path=None, **options) -> ModelTracker:
     """Model loader of kind ``anfis-tracker``."""
     document = _checked(document, path)
-    model = ANFIS.from_dict(document["model"], source=str(path) if path else None)
-    return _tracker("anfis-tracker", model, document, **options)
+    source = str(path) if path else None
+    model = ANFIS.from_dict(document["model"], source=source)
+    return _tracker("anfis-tracker", model, document, source, **options)
 
 
 @functools.lru_cache(maxsize=4)
