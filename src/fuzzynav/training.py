@@ -9,12 +9,10 @@ that :func:`fuzzynav.models.load_controller` understands.
 
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass
-from importlib import import_module
 from pathlib import Path
 
-from fuzzynav.errors import InputError
+from fuzzynav.lookup import descriptions, resolve
 
 TRAINERS: dict[str, tuple[str, str]] = {}
 TRAINERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:train_neural_tracker",
@@ -45,17 +43,9 @@ class TrainRequest:
 
 def available() -> dict[str, str]:
     """Task names with their descriptions."""
-    return {key: description for key, (_, description) in sorted(TRAINERS.items())}
+    return descriptions(TRAINERS)
 
 
 def trainer(task: str):
     """The function that trains ``task``."""
-    if task not in TRAINERS:
-        close = difflib.get_close_matches(task, TRAINERS, n=3)
-        hint = f" (did you mean {', '.join(close)}?)" if close else ""
-        raise InputError(
-            f"unknown training task {task!r}{hint}; known: {', '.join(sorted(TRAINERS)) or 'none'}",
-            field="TASK",
-        )
-    module_name, function_name = TRAINERS[task][0].split(":")
-    return getattr(import_module(module_name), function_name)
+    return resolve(TRAINERS, task, what="training task", field="TASK")

@@ -7,11 +7,8 @@ returns a :class:`~fuzzynav.control.base.Controller`.
 
 from __future__ import annotations
 
-import difflib
-from importlib import import_module
-
 from fuzzynav.control.base import Controller
-from fuzzynav.errors import InputError
+from fuzzynav.lookup import descriptions, resolve
 
 # name -> ("module:factory", one-line description)
 CONTROLLERS: dict[str, tuple[str, str]] = {}
@@ -32,19 +29,9 @@ CONTROLLERS["stanley"] = ("fuzzynav.control.baselines:stanley", "Stanley steerin
 
 def available() -> dict[str, str]:
     """Names of the built-in controllers with their one-line descriptions."""
-    return {name: description for name, (_, description) in sorted(CONTROLLERS.items())}
+    return descriptions(CONTROLLERS)
 
 
 def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (an :class:`InputError` names close matches)."""
-    if name not in CONTROLLERS:
-        close = difflib.get_close_matches(name, CONTROLLERS, n=3)
-        hint = f" (did you mean {', '.join(close)}?)" if close else ""
-        raise InputError(
-            f"unknown controller {name!r}{hint}; known: {', '.join(sorted(CONTROLLERS))}",
-            field="--controller",
-        )
-    target, _ = CONTROLLERS[name]
-    module_name, factory_name = target.split(":")
-    factory = getattr(import_module(module_name), factory_name)
-    return factory(**options)
+    return resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)

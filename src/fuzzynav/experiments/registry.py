@@ -8,10 +8,7 @@ smoke runs; the full setting is what the thesis did.
 
 from __future__ import annotations
 
-import difflib
-from importlib import import_module
-
-from fuzzynav.errors import InputError
+from fuzzynav.lookup import descriptions, resolve
 
 EXPERIMENTS: dict[str, tuple[str, str]] = {}
 _CH4 = "fuzzynav.experiments.chapter4"
@@ -54,14 +51,9 @@ EXPERIMENTS["fig-VI-29"] = (f"{_CH6}:fig_vi_29", "hand-made vs FQL-optimised wal
 
 def available() -> dict[str, str]:
     """Experiment ids with their descriptions."""
-    return {key: description for key, (_, description) in sorted(EXPERIMENTS.items())}
+    return descriptions(EXPERIMENTS)
 
 
 def experiment(key: str):
     """The function that reproduces experiment ``key``."""
-    if key not in EXPERIMENTS:
-        close = difflib.get_close_matches(key, EXPERIMENTS, n=3)
-        hint = f" (did you mean {', '.join(close)}?)" if close else ""
-        raise InputError(f"unknown experiment {key!r}{hint}; see 'fuzzynav reproduce --list'", field="ID")
-    module_name, function_name = EXPERIMENTS[key][0].split(":")
-    return getattr(import_module(module_name), function_name)
+    return resolve(EXPERIMENTS, key, what="experiment", field="ID", listing="see 'fuzzynav reproduce --list'")
