@@ -49,3 +49,14 @@ def test_intact_checkpoint_resumes(checkpoint, tmp_path, capsys):
     assert main(["train", "q-goal", "--episodes", "100", "--quiet", "--resume", "--json",
                  "--out", str(tmp_path / "m.json")]) == 0
     assert json.loads(capsys.readouterr().out)["steering"]["episodes"] == 100
+
+
+def test_learner_from_dict_shares_the_checks():
+    from fuzzynav.errors import InputError
+    from fuzzynav.learn.tabular import TabularLearner
+
+    document = TabularLearner(4, 3).to_dict()
+    assert TabularLearner.from_dict(document).q.shape == (1, 4, 3)
+    document["q"][0][1][2] = float("inf")
+    with pytest.raises(InputError, match=r"learner\.q: holds NaN or infinite values"):
+        TabularLearner.from_dict(document)

@@ -34,6 +34,7 @@ import numpy as np
 from tqdm import tqdm
 
 from fuzzynav.errors import InputError
+from fuzzynav.learn.state import episode_count, restore_state
 from fuzzynav.models import read_model, save_json_atomic, save_npz_atomic
 
 KIND = "fuzzynav-checkpoint"
@@ -71,31 +72,11 @@ def load_checkpoint(path) -> dict:
     for name in ("episode", "rng", "learner", "curve"):
         if name not in document:
             raise InputError("missing field in checkpoint", source=str(path), field=name)
-    _episode_count(document["episode"], str(path), "episode")
+    episode_count(document["episode"], str(path), "episode")
     curve = document["curve"]
     if not isinstance(curve, dict) or not all(isinstance(curve.get(key), list) for key in _CURVE_FIELDS):
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
     return document
-
-
-def _episode_count(value, source: str, field: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
-        raise InputError(f"must be a non-negative integer, got {value!r}", source=source, field=field)
-    return value
-
-
-def _state_array(saved: dict, name: str, shape: tuple, source: str) -> np.ndarray:
-    """A learner's table from a checkpoint: numbers, finite, of the learner's shape."""
-    try:
-        values = np.asarray(saved[name], dtype=float)
-    except (KeyError, TypeError, ValueError):
-        raise InputError(f"must be a table of numbers of shape {shape}", source=source,
-                         field=f"learner.{name}") from None
-    if values.shape != shape:
-        raise InputError(f"table shape {values.shape} does not match {shape}", source=source, field=f"learner.{name}")
-    if not np.isfinite(values).all():
-        raise InputError("holds NaN or infinite values", source=source, field=f"learner.{name}")
-    return values
 
 
 def restore(learner, rng: np.random.Generator, document: dict, source: str = "checkpoint") -> None:
@@ -109,9 +90,7 @@ def restore(learner, rng: np.random.Generator, document: dict, source: str = "ch
         if name not in _STATE_FIELDS and current.get(name) != saved.get(name):
             raise InputError(f"the checkpoint was written with another setting ({saved.get(name)!r} "
                              f"instead of {current.get(name)!r})", source=source, field=f"learner.{name}")
-    learner.q = _state_array(saved, "q", learner.q.shape, source)
-    learner.visits = _state_array(saved, "visits", learner.q.shape, source)
-    learner.episode = _episode_count(saved.get("episode"), source, "learner.episode")
+    restore_state(learner, saved, source)
     try:
         rng.bit_generator.state = document["rng"]
     except (TypeError, ValueError, KeyError) as error:

@@ -46,6 +46,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict, row_max
 from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
+from fuzzynav.learn.state import restore_state
 
 
 def _n_rules(premise) -> int | None:
@@ -279,14 +280,9 @@ class FuzzyQLearner:
                           alpha=document["alpha"], policy=policy_from_dict(document["policy"]),
                           lam=document["lam"], n_learners=document["n_learners"],
                           prior=document["prior"], normalise=document["normalise"])
-            q = np.asarray(document["q"], dtype=float)
-            visits = np.asarray(document["visits"], dtype=float)
         except KeyError as error:
             raise InputError("missing field", field=str(error.args[0])) from None
-        if q.shape != learner.q.shape or visits.shape != learner.q.shape:
-            raise InputError(f"quality shape {q.shape} does not match {learner.q.shape}", field="q")
-        learner.q, learner.visits = q, visits
-        learner.episode = int(document.get("episode", 0))
+        restore_state(learner, document)
         return learner
 
 

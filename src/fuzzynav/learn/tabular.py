@@ -33,6 +33,7 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict
 from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
+from fuzzynav.learn.state import restore_state
 from fuzzynav.world.geometry import wrap_angle
 
 METHODS = ("q_learning", "sarsa", "q_lambda")
@@ -195,14 +196,9 @@ class TabularLearner:
             learner = cls(document["n_states"], document["n_actions"], method=document["method"],
                           gamma=document["gamma"], alpha=document["alpha"], lam=document["lam"],
                           policy=policy_from_dict(document["policy"]), n_tables=document["n_tables"])
-            q = np.asarray(document["q"], dtype=float)
-            visits = np.asarray(document["visits"], dtype=float)
         except KeyError as error:
             raise InputError("missing field", field=str(error.args[0])) from None
-        if q.shape != learner.q.shape or visits.shape != learner.q.shape:
-            raise InputError(f"table shape {q.shape} does not match {learner.q.shape}", field="q")
-        learner.q, learner.visits = q, visits
-        learner.episode = int(document.get("episode", 0))
+        restore_state(learner, document)
         return learner
 
 
