@@ -6,12 +6,19 @@ simulator: goal seekers from 100 random starts in the empty workspace, the avoid
 100 random obstacle worlds, the wall follower on the corners of Fig VI.28 (scenario fig-VI-28) and
 20 random wall courses (the evaluation seeds differ from the training ones). It reports, per
 seed (not the best one), the training wall time, the episodes to converge of every phase
-(criterion of fuzzynav.learn.curves, moving mean over 250 episodes) and the success, collision and
-timeout counts; then, per task, the medians next to the thesis' episode counts. The speed target
-of issue 5 — 3,000 FQL episodes in under 30 s — is the wall time of ``fql-goal`` with 3,000
-episodes (median over the seeds).
+(the budget-independent criterion of fuzzynav.learn.curves with the settings of
+fuzzynav.experiments.train_rl) and the success, collision and timeout counts; then, per task, the
+medians next to the thesis' episode counts. The speed target of issue 5 — 3,000 FQL episodes in
+under 30 s — is the wall time of ``fql-goal`` with 3,000 episodes (median over the seeds).
 
-Run:  python benchmarks/rl_bench.py [--tasks fql-goal,fql-avoid] [--seeds 5] [--episodes N] [--json]
+Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tasks of their own:
+``q-goal-9``, ``q-goal-11``, ``q-goal-13``, ``q-goal-19x5`` (Table VI.1: states × actions, random
+starts, 4,000 episodes), ``q-goal-fixed`` (Fig VI.1, 1,500 episodes) and ``fql-goal-fixed``
+(Fig VI.8, 1,000 episodes). ``--double`` trains every run a second time with twice the budget
+and reports both counts of episodes to converge (they must agree: the criterion does not depend
+on the budget).
+
+Run:  python benchmarks/rl_bench.py [--tasks fql-goal,q-goal-9] [--seeds 5] [--episodes N] [--double] [--json]
 """
 
 from __future__ import annotations
@@ -21,6 +28,7 @@ import json
 import statistics
 import tempfile
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from fuzzynav.experiments import train_rl
@@ -35,7 +43,45 @@ THESIS = {
     "fql-goal-traces": {"steering": 1400},  # Fig VI.16
     "fql-avoid": {"steering": 250, "speed": 2000},  # Fig VI.22
     "fql-wall": {},  # not given
+    "q-goal-9": {"steering": 3260},  # Table VI.1
+    "q-goal-11": {"steering": 4100},
+    "q-goal-13": {"steering": 6200},
+    "q-goal-19x5": {"steering": 8950},
+    "q-goal-fixed": {"steering": 1000},  # Fig VI.1
+    "fql-goal-fixed": {"steering": 180},  # Fig VI.8
 }
+TASKS = [t for t in THESIS if not t.startswith("q-goal-")]  # the default: the fuzzynav train tasks
+
+
+def _tabular(n_states: int, n_actions: int, fixed: bool, default: int):
+    """A tabular study: train with train_rl.q_goal_parts, return (summary, controller)."""
+    def train(request):
+        env, learner, disc, steering = train_rl.q_goal_parts(n_states, n_actions, fixed)
+        episodes = request.episodes or default
+        phases, _ = train_rl.run_phases([train_rl.Phase("steering", env, learner, episodes,
+                                                        train_rl.checkpoint_path(request.out, "steering"))], request)
+        return train_rl._summary(phases), train_rl.q_goal_controller(learner, disc, steering)
+    return train
+
+
+def _fql_fixed(request):
+    """Fig VI.8: fql-goal's steering from the fixed start (1,000 episodes by default)."""
+    task = replace(train_rl.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
+    summary = train_rl.train_goal_fql(task, replace(request, episodes=request.episodes or 1000))
+    return summary, load_controller(request.out)
+
+
+STUDIES = {"q-goal-9": _tabular(9, 3, False, 4000), "q-goal-11": _tabular(11, 3, False, 4000),
+           "q-goal-13": _tabular(13, 3, False, 4000), "q-goal-19x5": _tabular(19, 5, False, 4000),
+           "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed}
+
+
+def _train(task: str, request):
+    """(summary of the phases, trained controller) of a train task or a study."""
+    if task in STUDIES:
+        return STUDIES[task](request)
+    result = trainer(task)(request)
+    return result, load_controller(request.out)
 
 
 def _wall(controller) -> dict:
@@ -47,33 +93,41 @@ def _wall(controller) -> dict:
 EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall}
 
 
-def run_task(task: str, seed: int, episodes: int | None, folder: Path) -> dict:
+def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: bool = False) -> dict:
     out = folder / f"{task}-{seed}.json"
     start = time.perf_counter()
-    result = trainer(task)(TrainRequest(out=out, episodes=episodes, seed=seed, progress=False))
+    result, controller = _train(task, TrainRequest(out=out, episodes=episodes, seed=seed, progress=False))
     wall = time.perf_counter() - start
-    evaluation = EVALUATE.get(task, train_rl.evaluate_goal)(load_controller(out))
+    evaluation = EVALUATE.get(task, train_rl.evaluate_goal)(controller)
     phases = {k: v for k, v in result.items() if isinstance(v, dict)}
-    return {"task": task, "seed": seed, "wall_s": round(wall, 2),
-            "episodes": {k: v["episodes"] for k, v in phases.items()},
-            "converged_at": {k: v["converged_at"] for k, v in phases.items()}, **evaluation}
+    row = {"task": task, "seed": seed, "wall_s": round(wall, 2),
+           "episodes": {k: v["episodes"] for k, v in phases.items()},
+           "converged_at": {k: v["converged_at"] for k, v in phases.items()}, **evaluation}
+    if double:
+        budget = 2 * sum(row["episodes"].values())
+        again, _ = _train(task, TrainRequest(out=folder / f"{task}-{seed}-x2.json", episodes=budget, seed=seed,
+                                             progress=False))
+        row["converged_at_double_budget"] = {k: v["converged_at"] for k, v in again.items() if isinstance(v, dict)}
+    return row
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--tasks", default=",".join(THESIS), help="comma-separated task names")
+    parser.add_argument("--tasks", default=",".join(TASKS), help=f"comma-separated, of {', '.join(THESIS)}")
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--episodes", type=int, default=None, help="episodes per task (default: the task's)")
+    parser.add_argument("--double", action="store_true", help="also train with twice the budget")
     parser.add_argument("--json", action="store_true", help="print one JSON object only")
     args = parser.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         for task in args.tasks.split(","):
             for seed in range(args.seeds):
-                rows.append(run_task(task, seed, args.episodes, Path(folder)))
+                rows.append(run_task(task, seed, args.episodes, Path(folder), args.double))
                 if not args.json:
                     r = rows[-1]
-                    print(f"{task:16s} seed {seed}: {r['wall_s']:6.1f} s  converged {r['converged_at']}  "
+                    print(f"{task:16s} seed {seed}: {r['wall_s']:6.1f} s  converged {r['converged_at']} "
+                          f"{r.get('converged_at_double_budget', '')}  "
                           f"success {r['success']:.0%}  collisions {r['collisions']}  timeouts {r['timeouts']}")
     summary = {}
     for task in dict.fromkeys(r["task"] for r in rows):
@@ -83,6 +137,7 @@ def main() -> int:
             "success_per_seed": [r["success"] for r in mine],
             "collisions_per_seed": [r["collisions"] for r in mine],
             **({"fig_VI_28_per_seed": [r["fig-VI-28"] for r in mine]} if "fig-VI-28" in mine[0] else {}),
+            "converged_at_per_seed": {p: [r["converged_at"][p] for r in mine] for p in mine[0]["converged_at"]},
             "converged_at_median": {p: statistics.median(r["converged_at"][p] for r in mine) for p in mine[0]["converged_at"]},
             "thesis_episodes": THESIS.get(task, {}),
         }

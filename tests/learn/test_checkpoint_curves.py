@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.errors import InputError
-from fuzzynav.learn.curves import episodes_to_converge, moving_average, plateau, records
+from fuzzynav.learn.curves import episodes_to_converge, moving_average, records
 from fuzzynav.viz.curves import plot_learning_curve
 
 
@@ -19,29 +19,58 @@ def test_step_curve_converges_one_window_after_the_step():
     curve = np.r_[np.zeros(100), np.ones(200)]
     # m_k = (k − 99) / 10 just after the step: within 5 % of the plateau 1 once m ≥ 0.95
     assert episodes_to_converge(curve, window=10) == 110
-    assert episodes_to_converge(-2 + 3 * curve, window=10) == 110  # scale- and sign-free
-    assert plateau(curve, tail=0.1, window=10) == 1.0
+    assert episodes_to_converge(-2 + 3 * curve, window=10) == 110  # the band follows the travel, 3
+    # judged at batch ends only: the first end of a batch of 25 at or after episode 110
+    assert episodes_to_converge(curve, window=25, batch=25, hold=100) == 125
 
 
 def test_exponential_curve_with_and_without_noise():
     k = np.arange(3000)
     clean = 2.0 - 3.0 * np.exp(-k / 300.0)
-    # the raw curve enters the 5 % band at τ ln 20 ≈ 899; the trailing window lags by ~window/2
-    # and the start level (first window's mean, −0.57 instead of −1) narrows the band a little
-    assert 300 * np.log(20) + 50 < episodes_to_converge(clean, window=100) < 300 * np.log(20) + 120
-    # noise can only delay the last exit from the band ("stays within" is conservative)
+    # the raw curve is within 5 % of its travel (≈ 0.13) of the plateau 2 from τ ln(3 / 0.13)
+    # ≈ 940; the hold's mean sits a little below 2 and the trailing window lags (hold 1000)
+    assert 300 * np.log(20) < episodes_to_converge(clean, window=100) < 300 * np.log(20) + 60
+    # noise of σ = 0.3 widens the band to 3 σ / √W and delays the settling of the smoothed curve
     noisy = clean + np.random.default_rng(0).normal(0, 0.3, k.size)
     assert 940 < episodes_to_converge(noisy, window=100) < 1300
 
 
-def test_unsettled_and_flat_curves():
-    # still rising at the end: the last window is above the plateau (mean of the last half)
-    assert episodes_to_converge(np.linspace(0, 1, 500), window=10, tail=0.5) == 501
-    assert episodes_to_converge(np.full(80, 0.7), window=20) == 20
+def test_the_answer_does_not_depend_on_the_budget():
+    rng = np.random.default_rng(3)
+    k = np.arange(8000)
+    curve = 1.0 - np.exp(-k / 400.0) + rng.normal(0, 0.2, k.size)
+    first = episodes_to_converge(curve[:4000], window=50, batch=50)
+    assert first < 4000 - 500  # settled within the shorter budget
+    assert episodes_to_converge(curve, window=50, batch=50) == first  # twice the budget: the same
+    # it reads the first k + H episodes only: what comes after cannot change it
+    assert episodes_to_converge(np.r_[curve[:first + 500], -curve[first + 500:]], window=50, batch=50) == first
+    # too short a budget says so (len + 1) instead of answering near its end
+    assert episodes_to_converge(curve[:first + 400], window=50, batch=50) == first + 401
+
+
+def test_noise_floor_and_success_gate():
+    rng = np.random.default_rng(1)
+    flat = 0.7 + rng.normal(0, 0.3, 1000)  # settled from the start, noisy: the band is 3 σ / √W
+    assert episodes_to_converge(flat, window=50) == 50
+    half = np.tile([1.0, 0.0], 500)  # a plateau of half failures is not convergence
+    assert episodes_to_converge(flat, window=50, success=half) == 1001
+    solved = (rng.random(1000) < 0.97).astype(float)
+    assert episodes_to_converge(flat, window=50, success=solved) == 50
+    with pytest.raises(InputError, match="success"):
+        episodes_to_converge(flat, window=50, success=solved[:10])
+
+
+def test_unsettled_and_bad_input():
+    # still rising by 20 % of its travel over every hold: never within 5 % of the plateau that follows
+    assert episodes_to_converge(np.linspace(0, 1, 5000), window=100) == 5001
+    assert episodes_to_converge(np.full(80, 0.7), window=20) == 81  # shorter than window + hold
+    assert episodes_to_converge(np.full(80, 0.7), window=20, hold=60) == 20
     with pytest.raises(InputError, match="empty"):
         episodes_to_converge([])
     with pytest.raises(InputError, match="tolerance"):
         episodes_to_converge([1, 2], tolerance=5)
+    with pytest.raises(InputError, match="multiples"):
+        episodes_to_converge(np.ones(100), window=30, batch=20)
 
 
 def test_plot_learning_curve(tmp_path):

@@ -56,15 +56,21 @@ def _curves(request, phases) -> dict:
                                    dtype=float)) for p in phases}
 
 
-def _figure(curves: dict, controller, starts, title: str, out_dir, name: str, obstacles: bool = False) -> dict:
-    """Learning curves (one panel per phase) and trajectories of the learned controller."""
+def _figure(curves: dict, converged: dict, controller, starts, title: str, out_dir, name: str,
+            obstacles: bool = False) -> dict:
+    """Learning curves (one panel per phase, the training's episodes to converge marked) and
+    trajectories of the learned controller."""
     figure = Figure(figsize=(5.2 * (len(curves) + len(starts)), 4.6), layout="constrained")
     axes = figure.subplots(1, len(curves) + len(starts), squeeze=False)[0]
-    converged = {}
+    window = (rl.WORLD_CONVERGENCE if obstacles else rl.GOAL_CONVERGENCE)["window"]
+    converged = {phase: converged[phase]["converged_at"] for phase in curves}
     for ax, (phase, curve) in zip(axes, curves.items()):
-        plot_learning_curve(curve, ax=ax, window=rl.CONVERGENCE_WINDOW if curve.size > 500 else 50,
-                            title=f"{title}: {phase}", label=phase)
-        converged[phase] = rl.episodes_to_converge(curve, window=rl.CONVERGENCE_WINDOW if curve.size > 500 else 50)
+        plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
+                            mark_convergence=False)
+        if converged[phase] <= curve.size:
+            ax.axvline(converged[phase], linestyle="--", color="k", linewidth=0.8,
+                       label=f"converged: episode {converged[phase]}")
+            ax.legend(loc="lower right", fontsize="small")
     outcomes = []
     for ax, scenario in zip(axes[len(curves):], starts):
         trace = run_episode(scenario, controller)
@@ -100,15 +106,15 @@ def _q_run(out_dir, name, episodes, seed, n_states=13, n_actions=3, fixed=False)
 
 def fig_vi_1(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.1–VI.2: tabular Q-learning, fixed start (thesis: converges from episode ~1000)."""
-    request, controller, _ = _q_run(out_dir, "q-goal-fixed", 500 if quick else 1500, seed, fixed=True)
-    return _figure(_curves(request, ["steering"]), controller, _fixed_scenario(), "Q-learning, fixed start",
+    request, controller, result = _q_run(out_dir, "q-goal-fixed", 500 if quick else 1500, seed, fixed=True)
+    return _figure(_curves(request, ["steering"]), {"steering": result}, controller, _fixed_scenario(), "Q-learning, fixed start",
                    out_dir, "fig-VI-1.png")
 
 
 def fig_vi_4(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.3–VI.4: tabular Q-learning, random starts and goals (thesis: ~3,500 episodes)."""
-    request, controller, _ = _q_run(out_dir, "q-goal", 600 if quick else 3000, seed)
-    numbers = _figure(_curves(request, ["steering"]), controller, _goal_scenarios(seed), "Q-learning, random starts",
+    request, controller, result = _q_run(out_dir, "q-goal", 600 if quick else 3000, seed)
+    numbers = _figure(_curves(request, ["steering"]), {"steering": result}, controller, _goal_scenarios(seed), "Q-learning, random starts",
                       out_dir, "fig-VI-4.png")
     return {**numbers, "evaluation": rl.evaluate_goal(controller, 20 if quick else 100)}
 
@@ -134,10 +140,10 @@ def table_vi_1(out_dir, quick=False, seed=0) -> dict:
 # -- fuzzy Q-learning goal seeking (§VI.5.1) ---------------------------------------------------
 def _fql_goal(out_dir, task: rl.GoalFQL, quick, episodes, seed, title, name, starts) -> dict:
     request = _request(out_dir, task.name + ("-fixed" if task.fixed else ""), episodes, seed)
-    rl.train_goal_fql(task, request)
+    summary = rl.train_goal_fql(task, request)
     controller = load_controller(request.out)
     phases = ["steering", "speed"] if task.learn_speed else ["steering"]
-    numbers = _figure(_curves(request, phases), controller, starts, title, out_dir, name)
+    numbers = _figure(_curves(request, phases), summary, controller, starts, title, out_dir, name)
     rules = json.loads(Path(request.out).read_text())["rules"]
     return {**numbers, "rules": rules, "evaluation": rl.evaluate_goal(controller, 20 if quick else 100)}
 
@@ -145,7 +151,7 @@ def _fql_goal(out_dir, task: rl.GoalFQL, quick, episodes, seed, title, name, sta
 def fig_vi_8(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.7–VI.8: FQL, 15 rules × 3, fixed start, steering only (thesis: ~180 episodes)."""
     task = replace(rl.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
-    return _fql_goal(out_dir, task, quick, 200 if quick else 500, seed, "FQL 15 rules, fixed start", "fig-VI-8.png",
+    return _fql_goal(out_dir, task, quick, 200 if quick else 1000, seed, "FQL 15 rules, fixed start", "fig-VI-8.png",
                      _fixed_scenario())
 
 
@@ -170,15 +176,15 @@ def fig_vi_16(out_dir, quick=False, seed=0) -> dict:
 # -- obstacle avoidance (§VI.5.2) --------------------------------------------------------------
 def _avoid_model(out_dir, quick, seed):
     request = _request(out_dir, "fql-avoid", 400 if quick else None, seed)
-    rl.train_fql_avoid(request)
-    return request, load_controller(request.out)
+    summary = rl.train_fql_avoid(request)
+    return request, load_controller(request.out), summary
 
 
 def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.18–VI.22: FQL avoidance — curves of steering and speed, learned trajectories
     (thesis: steering converged by ~250 episodes, speed by ~2,000)."""
-    request, controller = _avoid_model(out_dir, quick, seed)
-    numbers = _figure(_curves(request, ["steering", "speed"]), controller,
+    request, controller, summary = _avoid_model(out_dir, quick, seed)
+    numbers = _figure(_curves(request, ["steering", "speed"]), summary, controller,
                       _goal_scenarios(seed, 3, layout=RandomObstacles()), "FQL obstacle avoidance", out_dir,
                       "fig-VI-22.png", obstacles=True)
     return {**numbers, "evaluation": rl.evaluate_avoid(controller, 20 if quick else 100)}
@@ -187,7 +193,7 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
 def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.23–VI.24: the chapter IV fuzzy navigator (fuzzy-2b) and the FQL navigator on the
     same world, and both over the same random worlds."""
-    _, learned = _avoid_model(out_dir, quick, seed)
+    _, learned, _ = _avoid_model(out_dir, quick, seed)
     fuzzy = make_controller("fuzzy-2b")
     scenario = _goal_scenarios(seed, 1, layout=RandomObstacles())[0]
     figure = Figure(figsize=(11, 5.5), layout="constrained")

@@ -18,9 +18,22 @@ Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, ac
                         learned by FQL, steering (VI.21) then speed (VI.22) (§VI.5.3.2)
 ======================  =====================================================================
 
-Episodes. B episodes run in parallel (:data:`BATCH`) and feed one shared rule base (or Q table)
-— synchronous data collection; every count of episodes here (``--episodes``, checkpoints, the
-learning curve, episodes to converge) counts single episodes, B per batch. ``--episodes N`` is
+Episodes. B episodes run in parallel (:data:`BATCH` = 50 with random starts, :data:`FIXED_BATCH`
+= 10 from a fixed start) and feed one shared rule base (or Q table) — synchronous data
+collection; every count of episodes here (``--episodes``, checkpoints, the learning curve,
+episodes to converge) counts single episodes, B per batch. The exploration schedules tick once
+per batch: B episodes gathered with the same knowledge are one step of learning. From a fixed
+start the B episodes of a batch differ only by exploration, so a small B counts the episodes
+the learning needs instead of rounding them up to a few large batches (the thesis' ~180 episodes
+of Fig VI.8 would be 4 batches of 50).
+
+Convergence. ``converged_at`` of every phase is :func:`fuzzynav.learn.curves.episodes_to_converge`
+on the mean reinforcement per episode, counted at batch ends — budget-independent: training
+longer does not move it. Goal seeking (:data:`GOAL_CONVERGENCE`): window 50, hold 500, and the
+success gate (≥ 95 % of the episodes of the hold reach the goal). Obstacle avoidance and wall
+following (:data:`WORLD_CONVERGENCE`): the 50 episodes of a batch share one random world, so a
+window spans 5 worlds (250 episodes), the hold 1,000 episodes, without success gate (their
+training success, exploring among obstacles, stays below 95 %). ``--episodes N`` is
 the total of a task; a two-phase task (steering, then speed) gives the speed phase the share
 :data:`SPEED_SHARE` (the thesis' ~3,000 : ~900 episodes of Fig VI.9). A task writes one
 checkpoint per phase next to ``--out`` (``OUT.steering.checkpoint.json``, …).
@@ -73,13 +86,15 @@ from fuzzynav.models import save_json_atomic
 from fuzzynav.robot.sensors import SensorRing
 
 PI = math.pi
-BATCH = 50  # parallel episodes per batch
+BATCH = 50  # parallel episodes per batch (random starts)
+FIXED_BATCH = 10  # parallel episodes per batch from a fixed start (Figs VI.1, VI.8)
 SPEED_SHARE = 0.25  # share of a two-phase task's episodes given to the speed phase
 TOLERANCE = 0.05  # extraction: minimum quality gain over the prior conclusion
 GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
 STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
 MAX_STEPS = 300  # 30 s per episode
-CONVERGENCE_WINDOW = 250  # episodes of the moving mean of the convergence criterion (learn.curves)
+GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
+WORLD_CONVERGENCE = {"window": 250, "hold": 1000, "target": None}  # one random world per batch
 
 STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
 STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
@@ -134,6 +149,7 @@ class Phase:
     learner: object
     episodes: int
     checkpoint: Path
+    convergence: dict = None  # settings of the criterion: GOAL_CONVERGENCE (default) or WORLD_CONVERGENCE
 
 
 def checkpoint_path(out: Path, phase: str) -> Path:
@@ -152,8 +168,16 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
     success = np.ravel(np.asarray(result.curve["success"], dtype=float))
     continued = result.resumed_from != result.episode  # trained further (or afresh) in this run
     return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
-            "converged_at": episodes_to_converge(reward, window=CONVERGENCE_WINDOW),
+            "converged_at": converged_at(reward, success, phase.env.batch, phase.convergence),
             "final_success": float(success[-min(success.size, 5 * phase.env.batch):].mean())}
+
+
+def converged_at(reward, success, batch: int, settings: dict | None = None) -> int:
+    """Episodes to converge of one phase (module docstring, :mod:`fuzzynav.learn.curves`)."""
+    settings = settings or GOAL_CONVERGENCE
+    return episodes_to_converge(reward, window=settings["window"], hold=settings["hold"], batch=batch,
+                                success=None if settings["target"] is None else success,
+                                target=settings["target"] or 0.0)
 
 
 def _summary(phases: dict) -> dict:
@@ -197,8 +221,14 @@ def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
     return ZoneSectorDiscretiser([1.0, 4.0], sectors[n_states], merge_inner=True)
 
 
-def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int = BATCH):
+def batch_size(fixed: bool) -> int:
+    """Parallel episodes of a task: :data:`FIXED_BATCH` from a fixed start, else :data:`BATCH`."""
+    return FIXED_BATCH if fixed else BATCH
+
+
+def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int | None = None):
     """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1)."""
+    batch = batch_size(fixed) if batch is None else batch
     disc = q_discretiser(n_states)
     steering = Q_STEERING if n_actions == 3 else (0.0, -PI / 10, PI / 10, -PI / 5, PI / 5)
     actions = np.asarray(steering)
@@ -274,8 +304,9 @@ def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior
                          normalise=False, prior=prior)
 
 
-def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = BATCH):
+def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None = None):
     """Yields the phases of an FQL goal task; the speed phase is built from the trained steering."""
+    batch = batch_size(task.fixed) if batch is None else batch
     inputs = task.inputs()
     alpha = output_variable("alpha", task.steering, (-PI / 5, PI / 5))
     template = grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
@@ -460,7 +491,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
     env = RobotEnv(layout, lambda s: s.sides, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
-    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
 
     def speed_command(a, s):
         return navigate(s, steer.greedy_action(s.sides, AVOID_TOLERANCE)[:, 0], lambda free: a[:, 0])
@@ -469,7 +500,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
     env = RobotEnv(layout, lambda s: s.sides, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
-    yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
+    yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
 
 
 AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
@@ -539,12 +570,12 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH):
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION)
-    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
     fast = fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION)
-    yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"))
+    yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
 
 
 def wall_system(handmade, candidates: dict, learners: dict) -> FuzzySystem:
