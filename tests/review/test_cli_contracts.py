@@ -159,3 +159,11 @@ def test_fll_unknown_key_names_the_line(capsys, tmp_path):
     status, err = run_cli(capsys, "fis", "show", str(path))
     assert status == 2
     assert f"line {line}: 'lock-rnge' is not a key of InputVariable" in err
+
+
+def test_fis_show_of_a_non_fuzzy_model_file_says_what_it_is(capsys, tmp_path):
+    path = tmp_path / "q.json"
+    save_json_atomic(path, {"kind": "q-goal", "q": [[0.0]]})
+    status, err = run_cli(capsys, "fis", "show", str(path))
+    assert status == 2
+    assert f"{path}: kind: a 'q-goal' model file, not a fuzzy system" in err

@@ -177,6 +177,9 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
     if doc.get("version", VERSION) != VERSION:
         raise InputError(f"unsupported version {doc.get('version')!r}", source=source, field="version")
     _check_keys(doc, _TOP_KEYS, source, "", strict=False)
+    if "inputs" not in doc and isinstance(doc.get("kind"), str):
+        raise InputError(f"a {doc['kind']!r} model file, not a fuzzy system (run it with --model)", source=source,
+                         field="kind")
     inputs = [_variable(v, source, f"inputs[{i}]") for i, v in enumerate(_require(doc, "inputs", list, source, ""))]
     outputs = [_variable(v, source, f"outputs[{i}]") for i, v in enumerate(_require(doc, "outputs", list, source, ""))]
     options = {key: doc[key] for key in _OPTIONS if doc.get(key) is not None}
