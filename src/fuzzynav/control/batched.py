@@ -1,6 +1,7 @@
 """Batch-first controllers: one NumPy decision over many robots, a one-robot ``act`` on top.
 
-The chapter IV navigators are stateless maps from what the robot senses to (α, V), so each
+The chapter IV navigators map what N robots sense to (α, V) — with per-robot memory where they
+have one (the behaviour switch, the recent range hits), kept in arrays over the robot axis — so each
 implements :meth:`BatchedController.act_batch` over a
 :class:`~fuzzynav.sim.observation.BatchObservation`-like object (arrays with a leading robot
 axis) and inherits :meth:`act`, which views one :class:`~fuzzynav.control.base.Observation` as a
@@ -30,6 +31,9 @@ class OneRobot:
     speed: np.ndarray
     obstacle_distance: np.ndarray
     obstacle_bearing: np.ndarray
+    pose: np.ndarray  # (1, 3)
+    dt: float
+    max_range: float
 
     @classmethod
     def of(cls, obs: Observation) -> "OneRobot":
@@ -38,7 +42,8 @@ class OneRobot:
 
         return cls(one(obs.target_distance), one(obs.target_bearing),
                    None if obs.ranges is None else np.asarray(obs.ranges, dtype=float)[None, :],
-                   obs.sensor_angles, one(obs.speed, 0.0), one(obs.obstacle_distance), one(obs.obstacle_bearing, 0.0))
+                   obs.sensor_angles, one(obs.speed, 0.0), one(obs.obstacle_distance), one(obs.obstacle_bearing, 0.0),
+                   np.asarray(obs.pose, dtype=float)[None, :], float(obs.dt), float(obs.max_range))
 
 
 class BatchedController(Controller):

@@ -15,13 +15,27 @@ precise here, per robot, from the seven readings d1…d7 (SPEC §3.3: d1 ahead; 
    nearest reading (an obstacle ahead); else the avoider of the side of the nearest reading,
    **ROA** on the right (d2, d4, d6), **LOA** on the left (d3, d5, d7).
 
-:func:`select` returns one code per robot (:data:`GSB`, :data:`FOA`, :data:`ROA`, :data:`LOA`).
+:func:`select` returns one code per robot (:data:`GSB`, :data:`FOA`, :data:`ROA`, :data:`LOA`)
+from one step's readings. Taken alone it chatters: avoiding turns the robot away, the goal comes
+into clear view, goal seeking turns it back, the obstacle is in the way again — the behaviour
+would flip every step and the steering jump between 0 and ±π/5 (Fig IV.15 instead shows a
+handful of switch points A…H). :class:`Switch` adds the memory the thesis leaves unsaid, with
+one rule: **a change that adds caution is taken at once, one that removes caution waits.**
+Caution ranks GSB < GSB+VRB < FOA, ROA, LOA < the full-lock turn of
+:mod:`fuzzynav.control.five_behaviours`. A change to a higher rank happens the step it is asked
+for where the caller calls it urgent (``fuzzy-5b``: a reading below ``keep``, or the full-lock
+turn), after the dwell elsewhere; a change to the same or a lower rank only after the current behaviour has been held
+``dwell`` steps (default 10, 1 s); and an avoider hands the robot back to goal seeking only when
+``release`` allows it (the navigator asks for the goal "in the vision interval", Fig IV.23).
+Goal seeking, once in charge, keeps it with :func:`relaxed` thresholds (``detection``, ``keep``
+and ``clear`` times ``slack``, default 0.8), so the readings that gave it the robot do not take it back the
+next step.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -57,3 +71,39 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
     k = np.argmin(d, axis=1)
     avoider = np.where(d[:, 0] < params.front, FOA, SIDE[k])
     return np.where(quiet | goal_clear, GSB, avoider)
+
+
+def relaxed(params: SupervisorParams, slack: float = 0.8) -> SupervisorParams:
+    """``params`` with ``detection``, ``keep`` and ``clear`` scaled by ``slack``: the thresholds under
+    which goal seeking, already in charge, keeps the robot (the hysteresis of :class:`Switch`)."""
+    return replace(params, detection=params.detection * slack, keep=params.keep * slack, clear=params.clear * slack)
+
+
+class Switch:
+    """The behaviour switch with memory (see the module docstring): one mode and a hold count
+    per robot. ``rank`` maps each mode code to its caution rank."""
+
+    def __init__(self, rank, dwell: int = 10):
+        self.rank = np.asarray(rank, dtype=int)
+        self.dwell = int(dwell)
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget the modes (a new episode): the first call takes the modes asked for."""
+        self.mode = None
+        self.held = None
+
+    def __call__(self, wanted, release, urgent=True) -> np.ndarray:
+        """Modes ``(N,)`` for the modes ``wanted`` this step; ``release`` ``(N,)`` bool says where a
+        lower rank may be taken (after the dwell); a higher rank is taken at once where ``urgent``
+        (default everywhere), elsewhere after the dwell too."""
+        wanted = np.asarray(wanted, dtype=int)
+        if self.mode is None or len(self.mode) != len(wanted):
+            self.mode, self.held = wanted.copy(), np.zeros(len(wanted), dtype=int)
+            return self.mode.copy()
+        up, down = self.rank[wanted] > self.rank[self.mode], self.rank[wanted] < self.rank[self.mode]
+        settled = self.held >= self.dwell
+        take = (wanted != self.mode) & (up & urgent | settled & (~down | release))
+        self.mode = np.where(take, wanted, self.mode)
+        self.held = np.where(take, 0, self.held + 1)
+        return self.mode.copy()

@@ -1,0 +1,150 @@
+"""Turning room of a tricycle from its range readings (used by the supervisor of ``fuzzy-5b``).
+
+The thesis' robot (§IV.4) has no reverse gear and a bounded steering angle: its tightest turn,
+at the largest steering singleton α_max = π/5 of Fig IV.7, has radius R = l / tan(π/5)
+(0.69 m for l = 0.5 m, eq IV.1), and slowing down does not shrink it. So an obstacle must be
+turned away from while a full-lock turn is still free. This module measures that room:
+
+- :class:`HitMemory` keeps, per robot, the points where the range rays of the last ``steps``
+  steps hit something, in the world frame (the pose comes from the robot's odometry, §IV.4), and
+  returns them in the current robot frame. The ring C1…C7 is 30° apart, so a thin wall end or a
+  corner can lie between two rays at one step; the rays swept over the last second fill part of
+  the gaps. The rest is a modelling matter: the simulator's rays are lines, but the thesis'
+  sensors are ultrasonic (§IV.7), and a sonar returns the nearest echo within its cone (about
+  30° wide). :func:`cone_echo` stands for those cones: the nearest obstacle point (D_ro, θ_o of
+  the observation) counts as a hit when it lies within the ring's coverage, the 7 directions
+  ±15°. A robot driving straight at a wall end that sits between the 0° and ±30° rays, inside
+  its own lane, would otherwise see it only when it is already too late to turn.
+- :func:`turning_room` gives, for the half-turn at full lock to the left and to the right, the
+  smallest gap between the swept body (a disc of radius ``body`` whose centre runs on the circle
+  of radius R through the robot, centre at (0, ±R) in the robot frame) and those points, and the
+  free length of the straight lane ahead (points within ``body`` of the heading line).
+
+Robot frame: x ahead, y to the left (α > 0 turns left, SPEC §0).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+
+ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
+TURN_RADIUS = DEFAULT_PARAMS.wheelbase / math.tan(ALPHA_MAX)  # R = l / tan(π/5), eq IV.1 (m)
+
+
+class HitMemory:
+    """The range hits of the last ``steps`` steps of N robots, stored in the world frame."""
+
+    def __init__(self, steps: int = 10):
+        self.steps = int(steps)
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget every point (a new episode)."""
+        self._points = None  # (N, steps, S, 2) world frame
+        self._valid = None  # (N, steps, S) bool
+        self._k = 0
+
+    def update(self, pose, ranges, angles, max_range: float) -> tuple[np.ndarray, np.ndarray]:
+        """Store this step's hits and return every remembered point in the current robot frames:
+        ``(points (N, steps·S, 2), valid (N, steps·S) bool)``. ``ranges`` ``(N, S)`` are read along
+        ``angles`` ``(S,)`` or ``(N, S)`` (relative to each heading); a reading at ``max_range`` or
+        beyond (or not finite) is no hit."""
+        pose = np.asarray(pose, dtype=float)
+        ranges = np.asarray(ranges, dtype=float)
+        n, s = ranges.shape
+        if self._points is None or self._points.shape[0] != n or self._points.shape[2] != s:
+            self._points = np.zeros((n, self.steps, s, 2))
+            self._valid = np.zeros((n, self.steps, s), dtype=bool)
+            self._k = 0
+        heading = pose[:, 2:3] + np.broadcast_to(np.asarray(angles, dtype=float), ranges.shape)
+        hit = np.isfinite(ranges) & (ranges < max_range - 1e-9)
+        ranges = np.where(hit, ranges, 0.0)
+        slot = self._k % self.steps
+        self._points[:, slot, :, 0] = pose[:, 0:1] + ranges * np.cos(heading)
+        self._points[:, slot, :, 1] = pose[:, 1:2] + ranges * np.sin(heading)
+        self._valid[:, slot] = hit
+        self._k += 1
+        rel = self._points.reshape(n, -1, 2) - pose[:, None, :2]
+        c, si = np.cos(pose[:, 2])[:, None], np.sin(pose[:, 2])[:, None]
+        local = np.stack([c * rel[..., 0] + si * rel[..., 1], c * rel[..., 1] - si * rel[..., 0]], axis=-1)
+        return local, self._valid.reshape(n, -1)
+
+
+def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians(15.0)):
+    """``(ranges (N, S+1), angles (N, S+1))``: the ring's readings plus the nearest obstacle point
+    (``distance``, ``bearing`` ``(N,)``) where it falls within ``half_cone`` of a sensor direction
+    (the sonar cones of the module docstring), ``inf`` elsewhere."""
+    ranges = np.asarray(ranges, dtype=float)
+    angles = np.asarray(angles, dtype=float)
+    bearing = np.asarray(bearing, dtype=float)
+    gap = np.abs(np.angle(np.exp(1j * (bearing[:, None] - angles[None, :])))).min(axis=1)
+    echo = np.where(gap <= half_cone, np.asarray(distance, dtype=float), np.inf)
+    return (np.column_stack([ranges, echo]),
+            np.column_stack([np.broadcast_to(angles, ranges.shape), bearing]))
+
+
+def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: float = TURN_RADIUS):
+    """``(room_left (N,), room_right (N,), ahead (N,))`` from robot-frame points ``(N, P, 2)``.
+
+    ``room_left`` / ``room_right``: smallest distance between the body of a robot that turns
+    half a circle at full lock to that side and any valid point (negative: the turn would hit
+    it). A point ahead of the robot (x ≥ 0) is passed by the half circle at | |p − c| − R |, one
+    behind it at the nearer end of the half circle (the start or the point 2R to the side).
+    ``ahead``: free length of the straight lane of half-width ``body`` in front of the robot.
+    Points nowhere: ``inf``.
+    """
+    x, y = points[..., 0], points[..., 1]
+    rooms = []
+    for side in (1.0, -1.0):
+        cy = side * radius
+        passing = np.abs(np.hypot(x, y - cy) - radius)
+        ends = np.minimum(np.hypot(x, y), np.hypot(x, y - 2.0 * cy))
+        gap = np.where(x >= 0.0, passing, ends) - body
+        rooms.append(np.where(valid, gap, np.inf).min(axis=1))
+    lane = valid & (x > 0.0) & (np.abs(y) < body)
+    ahead = np.where(lane, x - body, np.inf).min(axis=1)
+    return rooms[0], rooms[1], ahead
+
+
+class TurnGuard:
+    """When a robot must start its full-lock turn, and to which side (thesis §IV.4: no reverse).
+
+    The turn is wanted when the straight lane ahead is blocked within ``lane`` (m) and the
+    better full-lock half turn keeps less than ``margin`` (m) from every remembered hit — both
+    after one more step at the current speed; a turn under way goes on until lane and room
+    exceed those thresholds by 0.5 m and 0.2 m. The side is the roomier one (within 0.1 m, the
+    goal's side), chosen when the turn starts and kept until it ends. Hits: the range ring plus
+    the sonar-cone echo of the nearest obstacle point (:func:`cone_echo`), over ``memory`` steps.
+    """
+
+    def __init__(self, lane: float, margin: float, memory: int = 10):
+        self.lane, self.margin = float(lane), float(margin)
+        self.memory = HitMemory(memory)
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget the hits and the sides (a new episode)."""
+        self.memory.reset()
+        self._side = None
+
+    def __call__(self, obs, turning, bearing) -> tuple[np.ndarray, np.ndarray]:
+        """``(wanted (N,) bool, side (N,) ±1)`` for a batch observation; ``turning`` marks the
+        robots already in their turn, ``bearing`` is the goal bearing (N,)."""
+        ranges, angles = cone_echo(obs.ranges, obs.sensor_angles, obs.obstacle_distance, obs.obstacle_bearing)
+        points, valid = self.memory.update(obs.pose, ranges, angles, obs.max_range)
+        left, right, ahead = turning_room(points, valid)
+        step = np.asarray(obs.speed, dtype=float) * obs.dt
+        lane = np.where(turning, self.lane + 0.5, self.lane)
+        margin = np.where(turning, self.margin + 0.2, self.margin)
+        wanted = (ahead - step < lane) & (np.maximum(left, right) - step < margin)
+        with np.errstate(invalid="ignore"):  # inf − inf where both sides are free
+            close = np.abs(left - right) < 0.1
+        side = np.where(close, np.where(np.asarray(bearing) >= 0, 1, -1), np.where(left > right, 1, -1))
+        if self._side is None or len(self._side) != len(side):
+            self._side = side
+        self._side = np.where(turning, self._side, side)
+        return wanted, self._side

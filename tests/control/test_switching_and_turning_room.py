@@ -1,0 +1,66 @@
+"""Hysteresis of the behaviour switches (Figs IV.9, IV.16) and the turning room of the tricycle (§IV.4)."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.control import supervisor
+from fuzzynav.control.registry import make_controller
+from fuzzynav.control.turning_room import TURN_RADIUS, HitMemory, turning_room
+from fuzzynav.sim import run_episode
+from fuzzynav.viz.trajectories import merged_changes
+from fuzzynav.world.scenario import load_scenario, scenario_from_dict
+
+
+def test_switch_adds_caution_at_once_and_removes_it_after_the_dwell():
+    switch = supervisor.Switch(rank=(0, 1), dwell=3)
+    free = np.ones(1, dtype=bool)
+    assert switch(np.array([0]), free)[0] == 0
+    assert switch(np.array([1]), free)[0] == 1  # more caution: immediately
+    assert [switch(np.array([0]), free)[0] for _ in range(4)] == [1, 1, 1, 0]  # less: after 3 steps held
+    assert switch(np.array([1]), free)[0] == 1
+    assert [switch(np.array([0]), ~free)[0] for _ in range(5)] == [1] * 5  # not released: stays
+
+
+def test_turning_room_of_a_wall_ahead():
+    y = np.linspace(-3, 3, 61)
+    for distance in (0.8, 1.5, 3.0):
+        wall = np.column_stack([np.full_like(y, distance), y])[None]
+        left, right, ahead = turning_room(wall, np.ones((1, len(y)), dtype=bool))
+        # a half turn reaches R ahead of the robot, its body 0.3 m further (eq IV.1)
+        assert left[0] == pytest.approx(distance - TURN_RADIUS - 0.3, abs=0.02) == right[0]
+        assert ahead[0] == pytest.approx(distance - 0.3)
+
+
+def test_hit_memory_returns_points_in_the_robot_frame():
+    memory = HitMemory(steps=2)
+    pose = np.array([[1.0, 2.0, np.pi / 2]])
+    points, valid = memory.update(pose, np.array([[1.0, 4.0]]), np.array([0.0, 0.5]), max_range=4.0)
+    np.testing.assert_allclose(points[0, valid[0]], [[1.0, 0.0]], atol=1e-12)  # the max-range reading is no hit
+    moved = np.array([[1.0, 2.5, np.pi / 2]])
+    points, valid = memory.update(moved, np.array([[4.0, 4.0]]), np.array([0.0, 0.5]), max_range=4.0)
+    np.testing.assert_allclose(points[0, valid[0]], [[0.5, 0.0]], atol=1e-12)  # remembered, now 0.5 m ahead
+
+
+@pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b"), ("fig-IV-15b", "fuzzy-2b"),
+                                              ("fig-IV-23", "fuzzy-5b")])
+def test_few_switches_and_no_steering_chatter(name, controller):
+    scenario = load_scenario(name)
+    trace = run_episode(scenario, make_controller(controller))
+    assert trace.reached
+    changes = trace.behaviour_changes()
+    labels = trace.behaviour
+    flip_backs = [(a, b) for a, b in zip(changes, changes[1:]) if b - a < 3 and labels[b] == labels[a - 1]]
+    assert len(changes) <= 20 and len(flip_backs) <= 1  # step-to-step A -> B -> A: at most one urgent re-entry
+    flips = np.sum(np.abs(np.diff(trace.steering)) > np.pi / 10)
+    assert flips <= 12  # steering jumps of more than 18° are rare events, not a buzz
+    assert len(merged_changes(trace)) <= 12  # a handful of lettered points, as Fig IV.15's A…H
+
+
+def test_start_facing_a_wall_turns_at_full_lock_without_collision():
+    scenario = scenario_from_dict({
+        "robot": {"x": 10.0, "y": 10.0, "theta": 0.0}, "goal": {"x": 4.0, "y": 10.0},
+        "obstacles": [{"wall": {"start": [11.8, 6.0], "end": [11.8, 14.0], "thickness": 0.2}}], "max_time": 60})
+    for controller in ("fuzzy-5b", "fuzzy-2b"):
+        trace = run_episode(scenario, make_controller(controller))
+        assert trace.reached, controller
+        assert np.abs(trace.steering[:30]).max() == pytest.approx(np.pi / 5)
