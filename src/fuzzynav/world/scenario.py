@@ -14,9 +14,10 @@ obstacles:
 max_time: 120                         # seconds, optional
 controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
 ```
-Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` with optional
-``path_tolerance`` (the waypoint tolerance zone, SPEC §4, default 0.5 m) and ``speed`` (the
-constant tracking speed, default 1 m/s), or ``target: {x, y, tolerance, motion: {type: static |
+Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
+two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, SPEC
+§4, default 0.5 m) and ``speed`` (the constant tracking speed, default 1 m/s, at most the
+robot's 4 m/s), or ``target: {x, y, tolerance, motion: {type: static |
 line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.world.motion`).
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
@@ -213,6 +214,9 @@ def _place(check: _Checker, world: World, point, field: str, what: str, radius: 
     if not world.contains(point)[0]:
         check.fail(field, f"{what} ({point[0, 0]:g}, {point[0, 1]:g}) is outside the "
                           f"{world.width:g} x {world.height:g} m world")
+    x, y = point[0]
+    if radius > 0 and min(x, y, world.width - x, world.height - y) < radius:
+        check.fail(field, f"{what} ({x:g}, {y:g}) is within the robot footprint ({radius:g} m) of the world boundary")
     dist, _, index = world.nearest_obstacle(point)
     if dist[0] < radius:
         where = "inside" if dist[0] < 0 else f"within the robot footprint ({radius:g} m) of"
@@ -256,12 +260,17 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         _place(check, world, position, "goal", "goal")
         goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
     elif "path" in doc:
-        waypoints = check.points(doc["path"], "path", 1)
+        waypoints = check.points(doc["path"], "path", 2)
         for i, waypoint in enumerate(waypoints):
             _place(check, world, waypoint, f"path[{i}]", "waypoint")
+            if i and np.array_equal(waypoint, waypoints[i - 1]):
+                check.fail(f"path[{i}]", f"repeats path[{i - 1}] (zero-length segment)")
+        speed = check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True)
+        if speed > DEFAULT_PARAMS.max_speed:
+            check.fail("speed", f"must be at most the robot's {DEFAULT_PARAMS.max_speed:g} m/s, got {speed:g}")
         path = PathTask(waypoints,
                         check.number(doc.get("path_tolerance", DEFAULT_PATH_TOLERANCE), "path_tolerance", True),
-                        check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True))
+                        speed)
     else:
         t = check.mapping(doc["target"], "target", ("x", "y", "tolerance", "motion"), required=("x", "y"))
         position = np.array([check.number(t["x"], "target.x"), check.number(t["y"], "target.y")])
