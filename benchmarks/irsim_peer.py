@@ -2,9 +2,10 @@
 
 Run by ``sim_core.py`` in a subprocess with the Python of a virtualenv where the PyPI package
 ``ir-sim`` is installed (it pins its own NumPy, so it never goes into the project's venv). Reads
-one JSON object on stdin — ``obstacles`` (scenario-file shapes), ``start`` (x, y, θ),
-``command`` (V, α), ``steps``, ``chunks``, ``dt``, ``max_range``, ``wheelbase`` — and prints one
-JSON object: the median steps per second (wall clock and CPU time) and IR-SIM's version.
+one JSON line on stdin — ``obstacles`` (scenario-file shapes), ``start`` (x, y, θ), ``command``
+(V, α), ``dt``, ``max_range``, ``wheelbase`` —, builds the world, prints one JSON line with
+IR-SIM's version and the beam count, then for every line ``N`` on stdin runs N steps and prints
+``{"wall": s, "cpu": s}`` (so the caller can interleave its own timed chunks with IR-SIM's).
 
 The world is built to match: 20 m × 20 m, one Ackermann (car-like, the tricycle's kinematics)
 robot, a 2-D lidar of 7 beams over [−90°, +90°] (the thesis layout of SPEC §3.3) with the same
@@ -16,7 +17,6 @@ from __future__ import annotations
 
 import json
 import math
-import statistics
 import sys
 import tempfile
 import time
@@ -70,27 +70,25 @@ def world_yaml(job: dict) -> dict:
 
 
 def main() -> None:
+    answers, sys.stdout = sys.stdout, sys.stderr  # IR-SIM's own messages stay off the answers
     import irsim
     import numpy as np
 
-    job = json.load(sys.stdin)
+    job = json.loads(sys.stdin.readline())
     with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as handle:
         yaml.safe_dump(world_yaml(job), handle)
     env = irsim.make(handle.name, headless=True, log_level="ERROR")
     action = np.array([[job["command"][0]], [job["command"][1]]])
     for _ in range(3):
         env.step(action)
-    wall, cpu = [], []
-    for _ in range(job["chunks"]):
+    print(json.dumps({"version": irsim.__version__, "beams": int(len(env.get_lidar_scan()["ranges"]))}),
+          file=answers, flush=True)
+    for line in sys.stdin:
         w0, c0 = time.perf_counter(), time.process_time()
-        for _ in range(job["steps"]):
+        for _ in range(int(line)):
             env.step(action)
-        wall.append(job["steps"] / (time.perf_counter() - w0))
-        cpu.append(job["steps"] / max(time.process_time() - c0, 1e-9))
-    ranges = env.get_lidar_scan()["ranges"]
-    print(json.dumps({"version": irsim.__version__, "steps_per_s_wall": statistics.median(wall),
-                      "steps_per_s_cpu": statistics.median(cpu), "beams": int(len(ranges)),
-                      "collided": bool(env.robot.collision_flag)}))
+        print(json.dumps({"wall": time.perf_counter() - w0, "cpu": time.process_time() - c0,
+                          "collided": bool(env.robot.collision_flag)}), file=answers, flush=True)
 
 
 if __name__ == "__main__":

@@ -1,12 +1,13 @@
 """Simulator-core step rate (issue 3, benchmarks): sensing (7 rays), nearest obstacle (D_ro, θ_o),
 kinematics, task and stop tests, for 1, 64 and 1,024 robots (spread over the free space) stepped
-together in a world of 15 mixed obstacles — and IR-SIM's headless step rate in the same world,
-measured in the same run (``benchmarks/irsim_peer.py`` in a subprocess).
+together in a world of 15 mixed obstacles — and IR-SIM's headless step rate for one robot in the
+same world, measured in the same run (``benchmarks/irsim_peer.py`` in a subprocess).
 
 The controller is a trivial vectorised law (``act_batch``: constant speed and steering, the
 robots drive circles), so the numbers measure the simulator, not a fuzzy controller; IR-SIM gets
-the same command. Rates are medians of 5 timed chunks, wall clock and this process's CPU time
-(the latter is steadier on a busy machine). Run:
+the same command. Rates are medians of 7 timed chunks, wall clock and this process's CPU time
+(the latter is steadier on a busy machine). The one-robot chunks alternate with IR-SIM's, so both
+see the same load, and the ratio is the median of the per-chunk ratios. Run:
 
     python benchmarks/sim_core.py [--json] [--irsim-python /work/venv-irsim/bin/python]
 
@@ -33,20 +34,23 @@ from fuzzynav.world.geometry import wrap_angle
 from fuzzynav.world.scenario import scenario_from_dict
 
 COMMAND = (0.5, 0.4)  # V (m/s), α (rad): circles of radius l / tan α ≈ 1.2 m
-COUNTS = ((1, 400), (64, 100), (1024, 10))  # robots, steps per timed chunk
+COUNTS = ((1, 2000), (64, 100), (1024, 10))  # robots, steps per timed chunk
 DEFAULT_IRSIM_PYTHON = "/work/venv-irsim/bin/python"
 
 
 class Circling:
-    """Constant command for every robot (they drive circles until they hit something)."""
+    """Constant command for every robot (they drive circles until they hit something); the
+    command arrays are built once (the simulator clips them into new arrays)."""
 
     name = "circling"
 
     def reset(self, rng=None):
-        pass
+        self.command = None
 
     def act_batch(self, obs):
-        return np.full(obs.n, COMMAND[1]), np.full(obs.n, COMMAND[0])
+        if self.command is None or len(self.command[0]) != obs.n:
+            self.command = np.full(obs.n, COMMAND[1]), np.full(obs.n, COMMAND[0])
+        return self.command
 
 
 def obstacles_of_15(seed: int = 0) -> list[dict]:
@@ -77,36 +81,55 @@ def start_poses(scenario, n: int, clearance: float = 0.5) -> np.ndarray:
     return np.column_stack([free, wrap_angle(rng.uniform(-4, 4, n))])
 
 
-def measure(scenario, starts, steps: int, chunks: int = 5) -> tuple[float, float]:
-    """Median robot-steps per second over ``chunks``: (wall clock, CPU time of this process)."""
+class IrSim:
+    """IR-SIM's side: a subprocess that steps one robot in the same world on request."""
+
+    def __init__(self, python: str, start):
+        job = {"obstacles": obstacles_of_15(), "start": [float(v) for v in start], "command": list(COMMAND),
+               "dt": DEFAULT_PARAMS.dt, "max_range": 4.0, "wheelbase": DEFAULT_PARAMS.wheelbase}
+        self.process = subprocess.Popen([python, str(Path(__file__).with_name("irsim_peer.py"))], text=True,
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                        env={**os.environ, "MPLBACKEND": "Agg"})
+        self.info = self._ask(json.dumps(job))
+
+    def _ask(self, line: str) -> dict:
+        self.process.stdin.write(line + "\n")
+        self.process.stdin.flush()
+        answer = self.process.stdout.readline()
+        if not answer:
+            raise RuntimeError("the IR-SIM peer stopped (see its stderr above)")
+        return json.loads(answer)
+
+    def chunk(self, steps: int) -> tuple[float, float]:
+        """Steps per second over ``steps`` steps: (wall clock, CPU time of the peer)."""
+        times = self._ask(str(steps))
+        return steps / times["wall"], steps / max(times["cpu"], 1e-9)
+
+    def close(self) -> None:
+        self.process.stdin.close()
+        self.process.wait(timeout=60)
+
+
+def chunks(scenario, starts, steps: int, count: int = 7, between=None) -> list[tuple[float, float]]:
+    """``count`` timed chunks of ``steps`` steps: robot-steps per second (wall clock, CPU time of
+    this process) each; ``between()`` runs after every chunk (IR-SIM's interleaved chunk)."""
     n = len(starts)
     sim = BatchSimulator(scenario, Circling(), starts=starts, record=False)
     for _ in range(3):
         sim.step()
-    wall, cpu = [], []
-    for _ in range(chunks):
+    rates = []
+    for _ in range(count):
         w0, c0 = time.perf_counter(), time.process_time()
         for _ in range(steps):
             sim.step()
-        wall.append(n * steps / (time.perf_counter() - w0))
-        cpu.append(n * steps / max(time.process_time() - c0, 1e-9))
-    return statistics.median(wall), statistics.median(cpu)
+        rates.append((n * steps / (time.perf_counter() - w0), n * steps / max(time.process_time() - c0, 1e-9)))
+        if between is not None:
+            between()
+    return rates
 
 
-def measure_irsim(python: str, start, steps: int = 200, chunks: int = 5) -> dict | None:
-    """IR-SIM's headless rate for one robot in the same world, or None when it cannot run."""
-    if not python or not os.path.exists(python):
-        return None
-    job = {"obstacles": obstacles_of_15(), "start": [float(v) for v in start], "command": list(COMMAND),
-           "steps": steps, "chunks": chunks, "dt": DEFAULT_PARAMS.dt, "max_range": 4.0,
-           "wheelbase": DEFAULT_PARAMS.wheelbase}
-    peer = Path(__file__).with_name("irsim_peer.py")
-    done = subprocess.run([python, str(peer)], input=json.dumps(job), capture_output=True, text=True,
-                          timeout=600, env={**os.environ, "MPLBACKEND": "Agg"})
-    if done.returncode != 0:
-        print(f"IR-SIM run failed:\n{done.stderr[-2000:]}", file=sys.stderr)
-        return None
-    return json.loads(done.stdout.strip().splitlines()[-1])
+def median_pair(rates) -> tuple[float, float]:
+    return statistics.median(r[0] for r in rates), statistics.median(r[1] for r in rates)
 
 
 def main(argv=None) -> None:
@@ -116,9 +139,18 @@ def main(argv=None) -> None:
                         help="Python of a venv with ir-sim installed ('' to skip)")
     args = parser.parse_args(argv)
     scenario = world_of_15()
-    one = start_poses(scenario, 1, clearance=2.5)  # room for the 1.2 m circle
-    results = {n: measure(scenario, one if n == 1 else start_poses(scenario, n), steps) for n, steps in COUNTS}
-    irsim = measure_irsim(args.irsim_python, one[0])
+    one = start_poses(scenario, 1, clearance=3.0)  # room for the circle of diameter 2.4 m
+    irsim, irsim_rates = None, []
+    if args.irsim_python and os.path.exists(args.irsim_python):
+        try:
+            irsim = IrSim(args.irsim_python, one[0])
+        except (OSError, RuntimeError, ValueError) as error:
+            print(f"IR-SIM unavailable: {error}", file=sys.stderr)
+    between = (lambda: irsim_rates.append(irsim.chunk(300))) if irsim is not None else None
+    single = chunks(scenario, one, COUNTS[0][1], between=between)
+    results = {1: median_pair(single)}
+    for n, steps in COUNTS[1:]:
+        results[n] = median_pair(chunks(scenario, start_poses(scenario, n), steps))
     report = {
         "benchmark": "sim_core", "obstacles": 15, "sensors": 7,
         "robot_steps_per_s_wall": {str(n): round(w) for n, (w, _) in results.items()},
@@ -126,13 +158,14 @@ def main(argv=None) -> None:
         "irsim": None,
     }
     if irsim is not None:
+        irsim.close()
+        wall, cpu = median_pair(irsim_rates)
         report["irsim"] = {
-            "version": irsim["version"], "beams": irsim["beams"],
-            "steps_per_s_wall": round(irsim["steps_per_s_wall"]),
-            "steps_per_s_cpu": round(irsim["steps_per_s_cpu"]),
-            "ratio_1_robot_wall": round(results[1][0] / irsim["steps_per_s_wall"], 1),
-            "ratio_1_robot_cpu": round(results[1][1] / irsim["steps_per_s_cpu"], 1),
-            "ratio_1024_robots_cpu": round(results[1024][1] / irsim["steps_per_s_cpu"], 1),
+            "version": irsim.info["version"], "beams": irsim.info["beams"],
+            "steps_per_s_wall": round(wall), "steps_per_s_cpu": round(cpu),
+            "ratio_1_robot_wall": round(statistics.median(a[0] / b[0] for a, b in zip(single, irsim_rates)), 1),
+            "ratio_1_robot_cpu": round(statistics.median(a[1] / b[1] for a, b in zip(single, irsim_rates)), 1),
+            "ratio_1024_robots_cpu": round(results[1024][1] / cpu, 1),
         }
     if args.json:
         print(json.dumps(report))

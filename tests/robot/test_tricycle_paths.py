@@ -28,3 +28,15 @@ def test_float_path_keeps_numpy_semantics_for_inf_and_nan():
     with np.errstate(invalid="ignore"):  # math.cos(inf) raises; the array path gives nan
         heading = step(np.array([[1.0, 1.0, np.inf]]), np.array([0.1]), np.array([1.0]))
     assert np.isnan(heading).all()
+
+
+def test_clip_of_one_robot_matches_the_array_clip():
+    params = TricycleParams()
+    values = [np.nan, -np.inf, -2.0, -0.5, 0.0, 0.3, 1.0, 5.0, np.inf]
+    for steering in values:
+        for speed in values:
+            one = params.clip(np.array([steering]), np.array([speed]))
+            many = params.clip(np.array([steering, 0.0]), np.array([speed, 0.0]))
+            np.testing.assert_array_equal(one[0], many[0][:1])
+            np.testing.assert_array_equal(one[1], many[1][:1])
+    assert params.clip(np.array([1]), np.array([3]))[1].dtype == float

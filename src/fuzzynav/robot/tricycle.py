@@ -53,7 +53,12 @@ class TricycleParams:
             raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
 
     def clip(self, steering, speed):
-        """Clip commands to the limits: |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays NaN)."""
+        """Clip commands to the limits: |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays
+        NaN). Returns new arrays; one robot's ``(1,)`` commands are clipped as floats."""
+        if isinstance(steering, np.ndarray) and isinstance(speed, np.ndarray) and steering.shape == speed.shape == (1,):
+            # max/min keep a NaN first argument, as np.maximum/np.minimum propagate it
+            return (np.array([min(max(float(steering[0]), -self.max_steering), self.max_steering)]),
+                    np.array([min(max(float(speed[0]), self.min_speed), self.max_speed)]))
         steering = np.minimum(np.maximum(steering, -self.max_steering), self.max_steering)
         speed = np.minimum(np.maximum(speed, self.min_speed), self.max_speed)
         return steering, speed

@@ -151,7 +151,7 @@ class BatchSimulator:
         steering, speed = self.params.clip(steering, speed)  # new arrays, never the controller's
         if self.task.forced_speed is not None:
             speed = np.full(self.n, self.task.forced_speed)
-        if self._all_running and np.shape(steering) == np.shape(speed) == (self.n,):
+        if self._all_running and steering.shape == speed.shape == (self.n,):
             self.steering, self.speed = steering, speed  # nothing to mask
             self.pose = tricycle.step(self.pose, steering, speed, self.params)
         else:

@@ -26,6 +26,7 @@ class TaskState:
         self.t = 0.0
         if self.kind == "goal":
             self.tolerance = scenario.goal.tolerance
+            self._goal = np.broadcast_to(scenario.goal.position, (n, 2))  # fixed: built once
         elif self.kind == "path":
             self.tolerance = scenario.path.tolerance
         else:
@@ -43,7 +44,7 @@ class TaskState:
     def target(self) -> np.ndarray:
         """``(N, 2)``: goal, current waypoint or target position at the current time."""
         if self.kind == "goal":
-            return np.broadcast_to(self.scenario.goal.position, (self.n, 2))
+            return self._goal
         if self.kind == "path":
             return self.scenario.path.waypoints[self.waypoint_index]
         return np.broadcast_to(self.scenario.target.motion.position(self.t), (self.n, 2))
