@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import importlib
+import importlib.metadata
 import json
 import os
 import statistics
@@ -122,8 +123,7 @@ def bench_simpful() -> dict:
 
     us = _single_us(one, _inputs(300), 5)
     return {"batch_evals_per_s": 1e6 / us, "single_call_us": us,
-            "note": f"simpful {sf.__version__ if hasattr(sf, '__version__') else ''}: no batch API, "
-                    "batch = loop of single calls".replace("  ", " ")}
+            "note": f"simpful {importlib.metadata.version('simpful')}: no batch API, batch = loop of single calls"}
 
 
 def bench_scikit_fuzzy() -> dict:
