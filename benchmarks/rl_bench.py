@@ -4,7 +4,7 @@ For each task (``fuzzynav train TASK``) and each of the seeds it trains a model 
 default episode budget (or ``--episodes``), then evaluates the extracted controller in the
 simulator: goal seekers from 100 random starts in the empty workspace, the avoidance navigator in
 100 random obstacle worlds, the wall follower on the corners of Fig VI.28 (scenario fig-VI-28) and
-20 random wall courses (the evaluation seeds differ from the training ones). It reports, per
+100 random wall courses (the evaluation seeds differ from the training ones). It reports, per
 seed (not the best one), the training wall time, the episodes to converge of every phase
 (the budget-independent criterion of fuzzynav.learn.curves with the settings of
 fuzzynav.experiments.train_rl) and the success, collision and timeout counts; then, per task, the
@@ -14,7 +14,8 @@ under 30 s — is the wall time of ``fql-goal`` with 3,000 episodes (median over
 Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tasks of their own:
 ``q-goal-9``, ``q-goal-11``, ``q-goal-13``, ``q-goal-19x5`` (Table VI.1: states × actions, random
 starts, 4,000 episodes), ``q-goal-fixed`` (Fig VI.1, 1,500 episodes) and ``fql-goal-fixed``
-(Fig VI.8, 1,000 episodes). ``--double`` trains every run a second time with twice the budget
+(Fig VI.8, 1,000 episodes), ``fql-wall-modules`` (``fql-wall`` reading the nearest of each
+module's three sensors instead of the hand-made follower's single rays). ``--double`` trains every run a second time with twice the budget
 and reports both counts of episodes to converge (they must agree: the criterion does not depend
 on the budget).
 
@@ -49,8 +50,9 @@ THESIS = {
     "q-goal-19x5": {"steering": 8950},
     "q-goal-fixed": {"steering": 1000},  # Fig VI.1
     "fql-goal-fixed": {"steering": 180},  # Fig VI.8
+    "fql-wall-modules": {},  # fql-wall on the richer sensing (nearest of three sensors per direction)
 }
-TASKS = [t for t in THESIS if not t.startswith("q-goal-")]  # the default: the fuzzynav train tasks
+TASKS = ["q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall"]  # fuzzynav train
 
 
 def _tabular(n_states: int, n_actions: int, fixed: bool, default: int):
@@ -73,7 +75,8 @@ def _fql_fixed(request):
 
 STUDIES = {"q-goal-9": _tabular(9, 3, False, 4000), "q-goal-11": _tabular(11, 3, False, 4000),
            "q-goal-13": _tabular(13, 3, False, 4000), "q-goal-19x5": _tabular(19, 5, False, 4000),
-           "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed}
+           "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed,
+           "fql-wall-modules": lambda request: (train_rl.train_fql_wall(request, "modules"), load_controller(request.out))}
 
 
 def _train(task: str, request):
@@ -85,12 +88,12 @@ def _train(task: str, request):
 
 
 def _wall(controller) -> dict:
-    """Wall follower: the Fig VI.28 corners and 20 random courses; success = no collision."""
-    result = train_rl.evaluate_wall(controller)
+    """Wall follower: the Fig VI.28 corners and 100 random courses; success = no collision."""
+    result = train_rl.evaluate_wall(controller, 100)
     return {**result, "success": 1 - result["collisions"] / result["courses"], "timeouts": 0}
 
 
-EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall}
+EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall, "fql-wall-modules": _wall}
 
 
 def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: bool = False) -> dict:

@@ -93,3 +93,28 @@ def test_model_files_load_as_controllers_and_errors_name_the_field(tmp_path):
 def test_sensor_layout_matches_the_groups():
     assert np.allclose(np.rad2deg(THESIS_SENSOR_ANGLES[[1, 3, 5]]), [-30, -60, -90])  # right side
     assert np.allclose(np.rad2deg(THESIS_SENSOR_ANGLES[[2, 4, 6]]), [30, 60, 90])  # left side
+
+
+def test_wall_follower_sensing_single_rays_or_modules(tmp_path):
+    from fuzzynav.control.registry import make_controller
+    from fuzzynav.fuzzy.systems_navigation import wall_follower
+
+    # a corner tip at −30° (C2) only: the single rays at 0°, ±90° do not see it, the modules do
+    ranges = np.full((1, 7), 4.0)
+    ranges[0, 1] = 0.5
+    assert learned.single_rays(ranges).tolist() == [[4.0, 4.0, 4.0]]
+    assert side_distances(ranges).tolist() == [[0.5, 0.5, 4.0]]
+    obs = Observation(t=0.0, dt=0.1, pose=np.zeros(3), speed=0.0, steering=0.0, target=np.array([9.0, 9.0]),
+                      ranges=ranges[0],
+                      sensor_angles=THESIS_SENSOR_ANGLES)
+    rays = learned.LearnedWallFollower(wall_follower(), "rays").act(obs)
+    handmade = make_controller("wall-follow").act(obs)  # the hand-made follower's own sensing
+    assert (rays.steering, rays.speed) == pytest.approx((handmade.steering, handmade.speed))
+    assert learned.LearnedWallFollower(wall_follower(), "modules").act(obs).steering != pytest.approx(rays.steering)
+    with pytest.raises(InputError, match="sensing"):
+        learned.LearnedWallFollower(wall_follower(), "sonar")
+    from fuzzynav.fuzzy.io.document import to_document
+
+    path = tmp_path / "wall.json"
+    save_json_atomic(path, {"kind": "fql-wall", "sensing": "rays", **to_document(wall_follower())})
+    assert load_controller(path).sensing == "rays"

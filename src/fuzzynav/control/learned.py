@@ -35,6 +35,7 @@ from fuzzynav.world.geometry import wrap_angle
 # (fuzzynav.robot.sensors), as the modules of §IV.7: front = C1, C2, C3 (FOA); right = C2, C4,
 # C6 (ROA); left = C3, C5, C7 (LOA). A single ray ahead would miss a post ±15° off the axis.
 FRONT, RIGHT, LEFT = (0, 1, 2), (1, 3, 5), (2, 4, 6)
+RAYS = (0, 5, 6)  # the single rays C1 (0°), C6 (−90°), C7 (+90°) of the hand-made wall follower
 N_SENSORS = 7
 
 
@@ -61,6 +62,19 @@ def side_distances(ranges) -> np.ndarray:
         raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
                          f"{ranges.shape}", field="ranges")
     return np.column_stack([ranges[:, list(group)].min(axis=1) for group in (FRONT, RIGHT, LEFT)])
+
+
+def single_rays(ranges) -> np.ndarray:
+    """Front, right and left distances (B, 3) as the single rays at 0°, −90°, +90° (B, 7) → (B, 3):
+    the sensing of the hand-made wall follower (:mod:`fuzzynav.control.wall_following`)."""
+    ranges = np.asarray(ranges, dtype=float)
+    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
+        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
+                         f"{ranges.shape}", field="ranges")
+    return ranges[:, list(RAYS)]
+
+
+SENSING = {"rays": single_rays, "modules": side_distances}  # how a model reads d_f, d_d, d_g
 
 
 def _batch(obs):
@@ -228,25 +242,30 @@ class LearnedWallFollower(_Learned):
     """The FQL-optimised wall follower (§VI.5.3.2): system(dd, df, dg) → α, V_r (Figs VI.29–VI.30).
 
     The rules of the hand-made follower (:mod:`fuzzynav.control.wall_following`, Table VI.2) with
-    learned numeric interpretations of their conclusions. It reads d_d (right), d_f (front), d_g
-    (left) as :func:`side_distances` — the nearest reading of each module's sensors — where the
-    hand-made one reads single rays at −90°, 0°, +90° and so misses corners between them.
+    learned numeric interpretations of their conclusions. ``sensing`` says how it reads d_d
+    (right), d_f (front), d_g (left): ``"rays"`` — the single rays at −90°, 0°, +90° of the
+    hand-made follower (:func:`single_rays`), the thesis' comparison — or ``"modules"`` — the
+    nearest reading of each module's three sensors (:func:`side_distances`), a richer sensing
+    with which the hand-made rules pass the corners of Fig VI.28 too.
     """
 
-    def __init__(self, system, name: str = "fql-wall"):
+    def __init__(self, system, sensing: str = "rays", name: str = "fql-wall"):
         if system.input_names != ["dd", "df", "dg"]:
             raise InputError(f"a wall follower reads ['dd', 'df', 'dg'], got {system.input_names}", field="inputs")
+        if sensing not in SENSING:
+            raise InputError(f"unknown sensing {sensing!r}; known: {', '.join(SENSING)}", field="sensing")
         self.system = system
         self.alpha_index, self.speed_index = _outputs(system, ("alpha", "v"))
         if self.speed_index < 0:
             raise InputError("a wall follower concludes on both 'alpha' and 'v'", field="outputs")
+        self.sensing = sensing
         self.name = name
 
     def _commands(self, obs):
         _, _, ranges = _batch(obs)
         if ranges is None:
             raise InputError("wall following needs the range readings", field="ranges")
-        front, right, left = side_distances(ranges).T
+        front, right, left = SENSING[self.sensing](ranges).T
         out = self.system.evaluate(np.column_stack([right, front, left]))
         return out[:, self.alpha_index], out[:, self.speed_index], ["wall following"] * len(out)
 
@@ -266,7 +285,7 @@ def load_fuzzy_model(document: dict, path) -> Controller:
         if kind == "fql-avoid":
             return LearnedAvoidanceNavigator(system, constant_speed=speed)
         if kind == "fql-wall":
-            return LearnedWallFollower(system)
+            return LearnedWallFollower(system, document.get("sensing", "modules"))
     except InputError as error:
         raise InputError(error.problem, source=str(path), field=error.field) from None
     raise InputError(f"not a learned fuzzy controller (kind {kind!r})", source=str(path), field="kind")

@@ -210,7 +210,8 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
 # -- wall following (§VI.5.3) ------------------------------------------------------------------
 def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.28–VI.30: the hand-made follower collides at the corners of Fig VI.28; the
-    FQL-optimised one (Table VI.2's rules, learned interpretations) follows them."""
+    FQL-optimised one (Table VI.2's rules, learned interpretations, on the same single rays at
+    −90°, 0°, +90° — ``sensing`` in the numbers) follows them."""
     from fuzzynav.world.scenario import load_scenario
 
     request = _request(out_dir, "fql-wall", 300 if quick else None, seed)
@@ -227,5 +228,6 @@ def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
             numbers[f"{scenario.name}: {name}"] = trace.outcome
     numbers["evaluation"] = {"wall-follow": rl.evaluate_wall(handmade, 10 if quick else 20),
                              "fql-wall": rl.evaluate_wall(learned, 10 if quick else 20)}
-    numbers["rules"] = json.loads(Path(request.out).read_text())["rules"]
+    model = json.loads(Path(request.out).read_text())
+    numbers["rules"], numbers["sensing"] = model["rules"], model["sensing"]
     return {**numbers, "figure": _save(figure, out_dir, "fig-VI-29.png")}

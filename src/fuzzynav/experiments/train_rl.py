@@ -552,15 +552,24 @@ def wall_parts():
     return handmade, GridPremise(handmade), alpha, speed
 
 
-WALL_COLUMNS = [1, 0, 2]  # (d_d, d_f, d_g) = (right, front, left) of control.learned.side_distances
+WALL_COLUMNS = [1, 0, 2]  # (d_d, d_f, d_g) = (right, front, left) of the env's sides (front, right, left)
 
 
-def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH):
-    """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower."""
+WALL_SENSING = "rays"  # the hand-made follower's single rays (control.learned.SENSING)
+
+
+def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str = WALL_SENSING):
+    """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower.
+
+    ``sensing`` is how the learner reads d_d, d_f, d_g and the rewards their d_i
+    (:data:`fuzzynav.control.learned.SENSING`): by default the single rays at −90°, 0°, +90° of
+    the hand-made follower, so that what learning changes is the interpretations only.
+    """
+    from fuzzynav.control.learned import SENSING
     from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S
 
     handmade, premise, alpha, speed = wall_parts()
-    layout, sensors = WallCourse(), SensorRing()
+    layout, sensors, sides = WallCourse(), SensorRing(), SENSING[sensing]
 
     def observe(s):
         return s.sides[:, WALL_COLUMNS]
@@ -569,16 +578,16 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH):
     n_steer = episodes - round(SPEED_SHARE * episodes)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
-                   sensors=sensors, decision_steps=WALL_DECISION)
+                   sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
     fast = fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
-                   sensors=sensors, decision_steps=WALL_DECISION)
+                   sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
 
 
-def wall_system(handmade, candidates: dict, learners: dict) -> FuzzySystem:
+def wall_system(handmade, candidates: dict, learners: dict, sensing: str = WALL_SENSING) -> FuzzySystem:
     """The optimised follower: Table VI.2's rules with the chosen interpretation of each label
     (``PG_lo`` / ``PG`` / ``PG_hi`` = value − 10°, value, value + 10°; speeds × 0.7, 1, 1.3)."""
     outputs, conclusions = [], []
@@ -595,15 +604,21 @@ def wall_system(handmade, candidates: dict, learners: dict) -> FuzzySystem:
              for r, rule in enumerate(handmade.rules)]
     return FuzzySystem(handmade.inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
                        name="fql-wall", description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
-                                                    "(thesis §VI.5.3.2, eqs VI.21-VI.22)")
+                                                    f"(thesis §VI.5.3.2, eqs VI.21-VI.22); sensing: {sensing} "
+                                                    f"({WALL_SENSINGS[sensing]})")
 
 
-def train_fql_wall(request) -> dict:
-    """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30)."""
+WALL_SENSINGS = {"rays": "single rays at -90, 0, +90 degrees, as the hand-made follower",
+                 "modules": "nearest of the three sensors of each module"}
+
+
+def train_fql_wall(request, sensing: str = WALL_SENSING) -> dict:
+    """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30) on the
+    hand-made follower's single rays (``sensing``: :data:`WALL_SENSINGS`)."""
     handmade, _, alpha, speed = wall_parts()
-    phases, learners = run_phases(fql_wall_phases(request.out, _episodes(request, 1500)), request)
-    system = wall_system(handmade, {"alpha": alpha, "v": speed}, learners)
-    document = {"kind": "fql-wall", **to_document(system),
+    phases, learners = run_phases(fql_wall_phases(request.out, _episodes(request, 1500), sensing=sensing), request)
+    system = wall_system(handmade, {"alpha": alpha, "v": speed}, learners, sensing)
+    document = {"kind": "fql-wall", "sensing": sensing, **to_document(system),
                 "training": {"task": "fql-wall", "seed": request.seed, **_summary(phases)}}
     save_json_atomic(request.out, document)
     _write_curve(request, phases, "fql-wall")

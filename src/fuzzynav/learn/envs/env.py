@@ -14,7 +14,10 @@ Three plug-ins make one environment per task:
   indices for tabular Q-learning, input vectors for fuzzy Q-learning);
 - ``command(action, state) -> (steering, speed)`` maps the learner's action to the robot's
   commands (e.g. steering learned at a constant speed, or speed learned under a fixed steering);
-- ``reward(before, after, collided, reached)`` is one of :mod:`fuzzynav.learn.rewards`.
+- ``reward(before, after, collided, reached)`` is one of :mod:`fuzzynav.learn.rewards`;
+- ``sides(ranges) -> (B, 3)`` reads the front/right/left distances from the ring (default
+  :func:`~fuzzynav.control.learned.side_distances`; the wall follower's single rays:
+  :func:`~fuzzynav.control.learned.single_rays`).
 
 An episode ends (``terminated``) on a collision — the footprint disc touching an obstacle or the
 workspace boundary ("the walls of the workspace", eq VI.2) — or when the goal is within
@@ -42,7 +45,7 @@ from fuzzynav.world.world import World
 class RobotState:
     """What the plug-ins see of a batch after a step. ``goal`` (B, 2) holds (d_rg, θ_r − θ_d)
     (:func:`~fuzzynav.control.learned.goal_inputs`), ``sides`` (B, 3) the front/right/left
-    distances (:func:`~fuzzynav.control.learned.side_distances`); either is ``None`` when the
+    distances (the env's ``sides`` reading); either is ``None`` when the
     task has no goal / no sensors."""
 
     world: World
@@ -60,7 +63,7 @@ class RobotEnv:
 
     def __init__(self, layout, observe, command, reward, *, batch: int, max_steps: int,
                  tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None,
-                 decision_steps: int = 1):
+                 decision_steps: int = 1, sides=side_distances):
         self.layout, self.observe, self.command, self.reward = layout, observe, command, reward
         self.batch = int(batch)
         self.max_steps = int(max_steps)
@@ -68,13 +71,14 @@ class RobotEnv:
         self.params = params
         self.sensors = sensors
         self.decision_steps = int(decision_steps)
+        self.sides = sides
         self.state: RobotState | None = None
 
     def _state(self, world, pose, speed, steering, target) -> RobotState:
         ranges = sides = goal = None
         if self.sensors is not None:
             ranges = self.sensors.read(world, pose)
-            sides = side_distances(ranges)
+            sides = self.sides(ranges)
         if target is not None:
             goal = goal_inputs(pose, target)
         return RobotState(world, pose, speed, steering, target, ranges, goal, sides)
