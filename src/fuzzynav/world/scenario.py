@@ -16,8 +16,9 @@ controllers: [fuzzy-2b]               # optional: the controllers the thesis run
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
 two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, SPEC
-§4, default 0.5 m) and ``speed`` (the constant tracking speed, default 1 m/s, at most the
-robot's 4 m/s), or ``target: {x, y, tolerance, motion: {type: static |
+§4, default 0.5 m), ``path_switching`` (``passed``, the default: a waypoint is also left once the
+robot is past it; ``zone``: the thesis' tolerance zone only; :mod:`fuzzynav.sim.tasks`) and
+``speed`` (the constant tracking speed, default 1 m/s, at most the robot's 4 m/s), or ``target: {x, y, tolerance, motion: {type: static |
 line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.world.motion`).
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
@@ -48,8 +49,9 @@ DEFAULT_MAX_TIME = 120.0
 DEFAULT_GOAL_TOLERANCE = 0.3
 DEFAULT_PATH_TOLERANCE = 0.5
 DEFAULT_PATH_SPEED = 1.0
+PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.sim.tasks`
 
-TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "speed",
+TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
             "target", "obstacles", "max_time", "controllers")
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
@@ -69,11 +71,13 @@ class Goal:
 
 @dataclass(frozen=True)
 class PathTask:
-    """Path tracking (SPEC §4): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s)."""
+    """Path tracking (SPEC §4): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s) and
+    waypoint switching rule (``passed`` | ``zone``, :mod:`fuzzynav.sim.tasks`)."""
 
     waypoints: np.ndarray
     tolerance: float = DEFAULT_PATH_TOLERANCE
     speed: float = DEFAULT_PATH_SPEED
+    switching: str = "passed"
 
 
 @dataclass(frozen=True)
@@ -119,6 +123,7 @@ class Scenario:
         if self.path is not None:
             doc["path"] = self.path.waypoints.tolist()
             doc["path_tolerance"] = self.path.tolerance
+            doc["path_switching"] = self.path.switching
             doc["speed"] = self.path.speed
         if self.target is not None:
             m = self.target.motion
@@ -236,7 +241,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     if len(tasks) != 1:
         check.fail("goal", "a scenario needs exactly one task: goal, path or target"
                    + (f" (found {', '.join(tasks)})" if tasks else ""))
-    for key in ("path_tolerance", "speed"):
+    for key in ("path_tolerance", "path_switching", "speed"):
         if key in doc and "path" not in doc:
             check.fail(key, "only allowed with a path task")
 
@@ -268,9 +273,12 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         speed = check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True)
         if speed > DEFAULT_PARAMS.max_speed:
             check.fail("speed", f"must be at most the robot's {DEFAULT_PARAMS.max_speed:g} m/s, got {speed:g}")
+        switching = doc.get("path_switching", PATH_SWITCHING[0])
+        if switching not in PATH_SWITCHING:
+            check.fail("path_switching", f"must be one of {', '.join(PATH_SWITCHING)}, got {switching!r}")
         path = PathTask(waypoints,
                         check.number(doc.get("path_tolerance", DEFAULT_PATH_TOLERANCE), "path_tolerance", True),
-                        speed)
+                        speed, switching)
     else:
         t = check.mapping(doc["target"], "target", ("x", "y", "tolerance", "motion"), required=("x", "y"))
         position = np.array([check.number(t["x"], "target.x"), check.number(t["y"], "target.y")])
