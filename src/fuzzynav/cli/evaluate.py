@@ -1,10 +1,11 @@
-"""``fuzzynav evaluate --controller NAME --worlds circles|mixed [--n 100] [--seed 0] [--json]``.
+"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--json]``.
 
-Runs a controller over N seeded, solvable generated worlds (:mod:`fuzzynav.world.generate`) and
-reports the success, collision and timeout rates, the mean time and the mean path length of the
-successful episodes (:func:`fuzzynav.experiments.evaluation.evaluate`). ``--json`` prints exactly
-one JSON object (with the per-world outcomes); otherwise a short table, with ``--progress`` one
-line per world on stderr.
+Runs a built-in controller or a trained model file (``fuzzynav train``) over N seeded, solvable
+generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, collision and timeout
+rates, the mean time and the mean path length of the successful episodes
+(:func:`fuzzynav.experiments.evaluation.evaluate`). ``--json`` prints exactly one JSON object
+(with the per-world outcomes); otherwise a short table, with ``--progress`` one line per world on
+stderr.
 """
 
 from __future__ import annotations
@@ -25,8 +26,10 @@ def register(subparsers) -> None:
         description="Success / collision / timeout rates, mean time and path length of a controller "
                     "over N seeded random worlds (solvable by construction).",
     )
-    parser.add_argument("--controller", required=True, metavar="NAME",
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument("--controller", metavar="NAME",
                         help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
+    source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
@@ -42,16 +45,19 @@ def run(args) -> int:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
     if args.n < 1:
         raise InputError(f"must be >= 1, got {args.n}", field="--n")
-    make_controller(args.controller)  # unknown names fail before any world is drawn
+    if args.controller is not None:
+        make_controller(args.controller)  # unknown names fail before any world is drawn
 
     def progress(i, run):
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
 
-    result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None)
+    result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
+                      model=args.model)
     if args.json:
         print(json.dumps(result))
         return 0
-    print(f"controller {result['controller']} on {result['n']} {result['worlds']} worlds (seed {result['seed']})")
+    source = f" (model {result['model']})" if result["model"] else ""
+    print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} worlds (seed {result['seed']})")
     for key in ("success_rate", "collision_rate", "timeout_rate"):
         print(f"  {key:20s} {100 * result[key]:6.1f} %")
     for key, unit in (("mean_time_s", "s"), ("mean_path_length_m", "m")):

@@ -1,0 +1,57 @@
+"""``fuzzynav evaluate --model FILE``: a trained model over generated worlds (experiments/evaluation.py)."""
+
+import json
+
+import pytest
+
+from fuzzynav.cli import main
+from fuzzynav.errors import InputError
+from fuzzynav.experiments.evaluation import evaluate
+from fuzzynav.models import load_controller
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.world.generate import generate_worlds
+
+
+@pytest.fixture(scope="module")
+def q_model(tmp_path_factory):
+    path = tmp_path_factory.mktemp("model") / "q.json"
+    assert main(["train", "q-goal", "--episodes", "50", "--seed", "0", "--out", str(path), "--quiet"]) == 0
+    return path
+
+
+def test_evaluate_model_json_matches_the_episodes_of_the_loaded_controller(q_model, capsys):
+    capsys.readouterr()
+    assert main(["evaluate", "--model", str(q_model), "--worlds", "circles", "--n", "4", "--seed", "3", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["controller"] == "q-goal" and result["model"] == str(q_model) and result["n"] == 4
+    expected = [metrics(run_episode(s, load_controller(q_model), seed=3), s)
+                for s in generate_worlds("circles", 4, 3)]
+    assert [r["outcome"] for r in result["episodes"]] == [e["outcome"] for e in expected]
+    assert result["success_rate"] == sum(e["outcome"] == "reached" for e in expected) / 4
+    assert result["success_rate"] + result["collision_rate"] + result["timeout_rate"] == pytest.approx(1.0)
+
+
+def test_evaluate_model_table(q_model, capsys):
+    assert main(["evaluate", "--model", str(q_model), "--worlds", "circles", "--n", "2"]) == 0
+    out = capsys.readouterr().out
+    assert f"controller q-goal (model {q_model})" in out and "success_rate" in out
+
+
+@pytest.mark.parametrize("argv", [["--model", "MODEL", "--controller", "fuzzy-2b"], []])
+def test_evaluate_model_and_controller_are_mutually_exclusive_and_one_is_required(q_model, argv):
+    argv = [str(q_model) if a == "MODEL" else a for a in argv]
+    with pytest.raises(SystemExit) as exit_info:
+        main(["evaluate", *argv, "--worlds", "circles", "--n", "1"])
+    assert exit_info.value.code == 2
+
+
+def test_evaluate_missing_model_file_is_an_input_error(tmp_path, capsys):
+    assert main(["evaluate", "--model", str(tmp_path / "missing.json"), "--worlds", "circles", "--n", "1"]) == 2
+    assert "missing.json" in capsys.readouterr().err
+
+
+def test_evaluate_needs_exactly_one_source(q_model):
+    with pytest.raises(InputError):
+        evaluate("fuzzy-2b", "circles", 1, model=q_model)
+    with pytest.raises(InputError):
+        evaluate(None, "circles", 1)
