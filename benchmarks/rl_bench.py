@@ -2,7 +2,8 @@
 
 For each task (``fuzzynav train TASK``) and each of the seeds it trains a model with the task's
 default episode budget (or ``--episodes``), then evaluates the extracted controller in the
-simulator: goal seekers from 100 random starts in the empty workspace, the avoidance navigator in
+simulator: goal seekers from 100 random starts in the empty workspace (the fixed-start studies
+from their fixed start), the avoidance navigator in
 100 random obstacle worlds, the wall follower on the corners of Fig VI.28 (scenario fig-VI-28) and
 100 random wall courses (the evaluation seeds differ from the training ones). It reports, per
 seed (not the best one), the training wall time, the episodes to converge of every phase
@@ -93,7 +94,18 @@ def _wall(controller) -> dict:
     return {**result, "success": 1 - result["collisions"] / result["courses"], "timeouts": 0}
 
 
-EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall, "fql-wall-modules": _wall}
+def _fixed(controller) -> dict:
+    """Fixed-start studies (Figs VI.2, VI.7): the one trained trajectory, from the fixed start."""
+    from fuzzynav.sim import run_episode
+
+    world, start, goal = train_rl.FixedGoal().sample(None, 1)
+    outcome = run_episode(train_rl._scenario(world, start[0], goal[0], "fixed start", 60.0), controller).outcome
+    return {"runs": 1, "success": float(outcome == "reached"), "collisions": int(outcome == "collision"),
+            "timeouts": int(outcome == "timeout")}
+
+
+EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall, "fql-wall-modules": _wall,
+            "q-goal-fixed": _fixed, "fql-goal-fixed": _fixed}
 
 
 def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: bool = False) -> dict:

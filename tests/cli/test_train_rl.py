@@ -66,6 +66,6 @@ def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
     assert process.returncode == 130, process.stderr.read()  # interrupted before the end
     assert not part.exists()
     saved = json.loads(checkpoint.read_text())
-    assert 0 < saved["episode"] < 20  # batches of 50 episodes
+    assert 0 < saved["episode"] < 20  # batches of 50 episodes (random starts)
     assert main(["train", *args, "--out", str(part), "--resume"]) == 0
     assert json.loads(part.read_text()) == json.loads(whole.read_text())

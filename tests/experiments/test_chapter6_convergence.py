@@ -1,0 +1,22 @@
+"""Episodes to converge of real training runs do not depend on the training budget (issue 5)."""
+
+from dataclasses import replace
+
+import pytest
+
+from fuzzynav.experiments import train_rl as rl
+from fuzzynav.training import TrainRequest
+
+
+@pytest.mark.slow
+def test_fixed_start_fql_converges_at_the_same_episode_with_twice_the_budget(tmp_path):
+    task = replace(rl.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
+    counts = []
+    for episodes in (650, 1300):
+        request = TrainRequest(out=tmp_path / f"fixed-{episodes}.json", episodes=episodes, seed=1, progress=False)
+        steering = rl.train_goal_fql(task, request)["steering"]
+        assert steering["episodes"] == episodes
+        counts.append(steering["converged_at"])
+    assert counts[0] == counts[1]  # the criterion reads the first k + 500 episodes only
+    assert counts[0] <= 650 - rl.GOAL_CONVERGENCE["hold"]  # settled within the shorter budget
+    assert counts[0] % rl.FIXED_BATCH == 0  # counted at the end of a batch of 10 episodes
