@@ -23,9 +23,10 @@ point, so the controllers (Table V.1, the learned inverse models) are unchanged.
 the tightest turn of the robot, R_min = l / tan(α_max) = 0.5 m (eq IV.1, l = 0.5 m,
 α_max = π/4); the look-ahead, 0.35 m (3.5 steps at 1 m/s) for the learned trackers and 1.5 m
 for the gentler Table V.1, was chosen once for all paths on the V, N and trapezoid paths of the
-comparison (benchmarks/tracking_bench.py). The simulator still
-switches waypoints in its tolerance zone (completion), so the zone must contain the swing's
-closest approach to the corner (at most ``APPROACH`` = 0.4 m).
+comparison (benchmarks/tracking_bench.py). The simulator still switches waypoints in its
+tolerance zone, or once the robot has passed the corner (``path_switching: passed``, the default,
+:mod:`fuzzynav.sim.tasks`); with the thesis' zone alone (``path_switching: zone``) the zone must
+contain the swing's closest approach to the corner (at most ``APPROACH`` = 0.4 m).
 """
 
 from __future__ import annotations
