@@ -16,9 +16,9 @@ Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tas
 ``q-goal-9``, ``q-goal-11``, ``q-goal-13``, ``q-goal-19x5`` (Table VI.1: states × actions, random
 starts, 4,000 episodes), ``q-goal-fixed`` (Fig VI.1, 1,500 episodes) and ``fql-goal-fixed``
 (Fig VI.8, 1,000 episodes), ``fql-wall-modules`` (``fql-wall`` reading the nearest of each
-module's three sensors instead of the hand-made follower's single rays). ``--double`` trains every run a second time with twice the budget
-and reports both counts of episodes to converge (they must agree: the criterion does not depend
-on the budget).
+module's three sensors instead of the hand-made follower's single rays). ``--double`` trains
+every run a second time with twice the budget and reports both counts of episodes to converge
+(they must agree: the criterion does not depend on the budget).
 
 Run:  python benchmarks/rl_bench.py [--tasks fql-goal,q-goal-9] [--seeds 5] [--episodes N] [--double] [--json]
 """
@@ -77,7 +77,8 @@ def _fql_fixed(request):
 STUDIES = {"q-goal-9": _tabular(9, 3, False, 4000), "q-goal-11": _tabular(11, 3, False, 4000),
            "q-goal-13": _tabular(13, 3, False, 4000), "q-goal-19x5": _tabular(19, 5, False, 4000),
            "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed,
-           "fql-wall-modules": lambda request: (train_rl.train_fql_wall(request, "modules"), load_controller(request.out))}
+           "fql-wall-modules": lambda request: (train_rl.train_fql_wall(request, "modules"),
+                                                load_controller(request.out))}
 
 
 def _train(task: str, request):

@@ -107,15 +107,15 @@ def _q_run(out_dir, name, episodes, seed, n_states=13, n_actions=3, fixed=False)
 def fig_vi_1(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.1–VI.2: tabular Q-learning, fixed start (thesis: converges from episode ~1000)."""
     request, controller, result = _q_run(out_dir, "q-goal-fixed", 500 if quick else 1500, seed, fixed=True)
-    return _figure(_curves(request, ["steering"]), {"steering": result}, controller, _fixed_scenario(), "Q-learning, fixed start",
-                   out_dir, "fig-VI-1.png")
+    return _figure(_curves(request, ["steering"]), {"steering": result}, controller, _fixed_scenario(),
+                   "Q-learning, fixed start", out_dir, "fig-VI-1.png")
 
 
 def fig_vi_4(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.3–VI.4: tabular Q-learning, random starts and goals (thesis: ~3,500 episodes)."""
     request, controller, result = _q_run(out_dir, "q-goal", 600 if quick else 3000, seed)
-    numbers = _figure(_curves(request, ["steering"]), {"steering": result}, controller, _goal_scenarios(seed), "Q-learning, random starts",
-                      out_dir, "fig-VI-4.png")
+    numbers = _figure(_curves(request, ["steering"]), {"steering": result}, controller, _goal_scenarios(seed),
+                      "Q-learning, random starts", out_dir, "fig-VI-4.png")
     return {**numbers, "evaluation": rl.evaluate_goal(controller, 20 if quick else 100)}
 
 
