@@ -102,3 +102,13 @@ def test_firing_strengths_normalised_and_raw():
     np.testing.assert_allclose(raw.sum(axis=1), 1.0)
     np.testing.assert_allclose(gs.firing_strengths(X), raw)
     assert np.count_nonzero(raw[1]) == 1
+
+
+def test_fast_kernel_handles_a_subnormal_interval():
+    """Regression (found by hypothesis): a universe starting at -1e-308 next to a breakpoint at 0
+    made the lookup-grid size infinite; the kernel now falls back to a binary search."""
+    x = Variable("x", (-1.1125369292536007e-308, 1.0), strong_partition([0.0, 1.0], ["T0", "T1"], (-1.1125369292536007e-308, 1.0)))
+    out = Variable("y", (0.0, 1.0), {"S0": Singleton(0.0), "S1": Singleton(1.0)})
+    system = FuzzySystem([x], [out], ["IF x IS T0 THEN y IS S0", "IF x IS T1 THEN y IS S1"])
+    assert system.fast
+    np.testing.assert_allclose(system.evaluate(np.array([[0.0], [0.25], [1.0]]))[:, 0], [0.0, 0.25, 1.0])

@@ -73,10 +73,12 @@ class _InputPartition:
         two comparisons; falls back to the search when the grid would be too large.
         """
         gap = float(np.diff(self.bp).min())
-        cells = int(math.ceil((self.hi - self.lo) / (0.5 * gap))) + 1
+        with np.errstate(over="ignore"):
+            ratio = (self.hi - self.lo) / (0.5 * gap)  # inf for sub-normal gaps: no grid
         self.inner = self.bp[1:-1].copy()
         self.lut = None
-        if cells <= MAX_LOOKUP_CELLS:
+        if ratio < MAX_LOOKUP_CELLS:
+            cells = int(math.ceil(ratio)) + 1
             self.inv_h = cells / (self.hi - self.lo)
             edges = self.lo + np.arange(cells + 1) / self.inv_h
             self.lut = np.searchsorted(self.inner, edges, side="right")
