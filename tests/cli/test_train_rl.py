@@ -69,3 +69,41 @@ def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
     assert 0 < saved["episode"] < 20  # batches of 50 episodes (random starts)
     assert main(["train", *args, "--out", str(part), "--resume"]) == 0
     assert json.loads(part.read_text()) == json.loads(whole.read_text())
+
+
+def _curve_sizes(checkpoint):
+    return [len(row) for row in json.loads(checkpoint.read_text())["curve"]["mean_reward"]]
+
+
+def test_episodes_is_the_total_with_a_smaller_last_batch(tmp_path, capsys):
+    out = tmp_path / "q.json"
+    assert train("q-goal", out, "--episodes", "70", "--json") == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["steering"]["episodes"] == 70
+    assert _curve_sizes(tmp_path / "q.json.steering.checkpoint.json") == [50, 20]  # one batch of 50, then 20
+    out = tmp_path / "f.json"
+    assert train("fql-goal", out, "--episodes", "5", "--json") == 0  # fewer than a batch: smaller batches
+    result = json.loads(capsys.readouterr().out)
+    assert (result["steering"]["episodes"], result["speed"]["episodes"]) == (4, 1)  # SPEED_SHARE = 0.25
+    assert _curve_sizes(tmp_path / "f.json.speed.checkpoint.json") == [1]
+    assert json.loads(out.read_text())["training"]["speed"]["episodes"] == 1
+    assert train("fql-goal", out, "--episodes", "1") == 2  # two phases need two episodes
+    assert "--episodes" in capsys.readouterr().err
+
+
+def test_resume_into_a_partial_batch_equals_an_uninterrupted_run(tmp_path):
+    whole, part = tmp_path / "whole.json", tmp_path / "part.json"
+    assert train("q-goal", whole, "--episodes", "70", "--seed", "3") == 0
+    assert train("q-goal", part, "--episodes", "50", "--seed", "3") == 0  # stopped after the full batch
+    assert train("q-goal", part, "--episodes", "70", "--seed", "3", "--resume") == 0
+    assert json.loads(part.read_text()) == json.loads(whole.read_text())
+
+
+def test_a_curve_that_never_settled_reports_null_and_says_so(tmp_path, capsys):
+    out = tmp_path / "q.json"
+    assert train("q-goal", out, "--episodes", "100", "--json") == 0  # shorter than a window + the hold
+    assert json.loads(capsys.readouterr().out)["steering"]["converged_at"] is None
+    assert json.loads(out.read_text())["training"]["steering"]["converged_at"] is None
+    assert train("q-goal", out, "--episodes", "100") == 0
+    line = capsys.readouterr().out
+    assert "steering: 100 episodes, converged: not settled" in line and "101" not in line

@@ -21,7 +21,8 @@ Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, ac
 Episodes. B episodes run in parallel (:data:`BATCH` = 50 with random starts, :data:`FIXED_BATCH`
 = 10 from a fixed start) and feed one shared rule base (or Q table) — synchronous data
 collection; every count of episodes here (``--episodes``, checkpoints, the learning curve,
-episodes to converge) counts single episodes, B per batch. The exploration schedules tick once
+episodes to converge) counts single episodes, B per batch; a budget that is not a multiple
+of B ends with one smaller batch of the remainder (:func:`batch_plan`). The exploration schedules tick once
 per batch: B episodes gathered with the same knowledge are one step of learning. From a fixed
 start the B episodes of a batch differ only by exploration, so a small B counts the episodes
 the learning needs instead of rounding them up to a few large batches (the thesis' ~180 episodes
@@ -156,20 +157,35 @@ def checkpoint_path(out: Path, phase: str) -> Path:
     return Path(out).with_name(f"{Path(out).name}.{phase}.checkpoint.json")
 
 
+def batch_plan(episodes: int, batch: int) -> list[tuple[int, int]]:
+    """(batches to reach, episodes per batch) of a phase of ``episodes`` single episodes: full
+    batches of ``batch``, then one last batch of the remainder (fewer parallel episodes) if any."""
+    full, rest = divmod(int(episodes), int(batch))
+    return [(n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
+
+
 def run_phase(phase: Phase, request, seed_offset: int) -> dict:
-    """Train one phase resumably; returns its per-episode curves and convergence."""
-    batches = max(1, math.ceil(phase.episodes / phase.env.batch))
-    every = math.ceil(request.checkpoint_every / phase.env.batch) if request.checkpoint_every else 0
+    """Train one phase of exactly ``phase.episodes`` episodes resumably; returns its per-episode
+    curves and convergence. The last partial batch continues from the checkpoint of the full
+    ones (restoring it is exact, so a resumed run equals an uninterrupted one)."""
+    batch = phase.env.batch
+    every = math.ceil(request.checkpoint_every / batch) if request.checkpoint_every else 0
     rng = np.random.default_rng([int(request.seed), seed_offset])
-    result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint, checkpoint_every=every,
-                        resume=request.resume, progress=request.progress, batch_size=phase.env.batch,
-                        desc=phase.name, extra={"phase": phase.name, "seed": int(request.seed)})
-    reward = np.ravel(np.asarray(result.curve["mean_reward"], dtype=float))
-    success = np.ravel(np.asarray(result.curve["success"], dtype=float))
-    continued = result.resumed_from != result.episode  # trained further (or afresh) in this run
+    resume, continued = request.resume, False
+    try:
+        for batches, size in batch_plan(phase.episodes, batch):
+            phase.env.batch = size
+            result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
+                                checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,
+                                desc=phase.name, extra={"phase": phase.name, "seed": int(request.seed)})
+            resume, continued = True, continued or result.resumed_from != result.episode
+    finally:
+        phase.env.batch = batch
+    reward = np.concatenate([np.ravel(row) for row in result.curve["mean_reward"]]).astype(float)
+    success = np.concatenate([np.ravel(row) for row in result.curve["success"]]).astype(float)
     return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
-            "converged_at": converged_at(reward, success, phase.env.batch, phase.convergence),
-            "final_success": float(success[-min(success.size, 5 * phase.env.batch):].mean())}
+            "converged_at": converged_at(reward, success, batch, phase.convergence),
+            "final_success": float(success[-min(success.size, 5 * batch):].mean())}
 
 
 def converged_at(reward, success, batch: int, settings: dict | None = None) -> int:
@@ -180,9 +196,23 @@ def converged_at(reward, success, batch: int, settings: dict | None = None) -> i
                                 target=settings["target"] or 0.0)
 
 
+class PhaseSummary(dict):
+    """The train results of one phase: ``episodes``, ``converged_at`` (``None`` when the curve did
+    not settle within the budget) and ``final_training_success``; JSON as a plain mapping, and
+    printed by ``fuzzynav train`` as one readable line ("not settled" for ``None``)."""
+
+    def __str__(self) -> str:
+        converged = "not settled" if self["converged_at"] is None else f"episode {self['converged_at']}"
+        return (f"{self['episodes']} episodes, converged: {converged}, "
+                f"final training success {self['final_training_success']:.1%}")
+
+
 def _summary(phases: dict) -> dict:
-    return {name: {"episodes": r["episodes"], "converged_at": r["converged_at"],
-                   "final_training_success": round(r["final_success"], 4)} for name, r in phases.items()}
+    """Per phase, :class:`PhaseSummary` (``converged_at`` beyond the curve → ``None``)."""
+    return {name: PhaseSummary(episodes=r["episodes"],
+                               converged_at=r["converged_at"] if r["converged_at"] <= r["episodes"] else None,
+                               final_training_success=round(r["final_success"], 4))
+            for name, r in phases.items()}
 
 
 def _episodes(request, default: int) -> int:
@@ -190,6 +220,17 @@ def _episodes(request, default: int) -> int:
     if episodes < 1:
         raise InputError("must be a positive integer", field="--episodes")
     return episodes
+
+
+def steering_episodes(episodes: int, speed_share: float) -> int:
+    """Episodes of the steering phase when ``episodes`` in total are split with the share
+    ``speed_share`` for the speed phase (0: a single phase); each phase gets at least one."""
+    if not speed_share:
+        return episodes
+    if episodes < 2:
+        raise InputError(f"a two-phase task (steering, then speed) needs at least 2 episodes, got {episodes}",
+                         field="--episodes")
+    return episodes - min(episodes - 1, max(1, round(speed_share * episodes)))
 
 
 def _write_curve(request, phases: dict, title: str) -> None:
@@ -314,7 +355,7 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None =
     premise = GridPremise(template)
     layout = FixedGoal() if task.fixed else RandomGoal()
     steer_values = np.array(list(task.steering.values()))
-    n_steer = episodes - (round(SPEED_SHARE * episodes) if task.learn_speed else 0)
+    n_steer = steering_episodes(episodes, SPEED_SHARE if task.learn_speed else 0.0)
     steer = fql_learner(premise, steer_values, task.lam, batch)
     env = RobotEnv(layout, lambda s: s.goal, lambda a, s: (a[:, 0], STEERING_SPEED), GoalSteeringReward(),
                    batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
@@ -487,7 +528,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH):
 
     steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING), 0.0, batch, prior=AVOID_PRIOR,
                         alpha=AVOID_RATE / batch)
-    n_steer = episodes - round(AVOID_SPEED_SHARE * episodes)
+    n_steer = steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, lambda s: s.sides, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
@@ -575,7 +616,7 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
         return s.sides[:, WALL_COLUMNS]
 
     steer = fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
-    n_steer = episodes - round(SPEED_SHARE * episodes)
+    n_steer = steering_episodes(episodes, SPEED_SHARE)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
