@@ -3,13 +3,15 @@ kinematics, task and stop tests, for 1, 64 and 1,024 robots (spread over the fre
 together in a world of 15 mixed obstacles — and IR-SIM's headless step rate for one robot in the
 same world, measured in the same run (``benchmarks/irsim_peer.py`` in a subprocess).
 
-The controller is a trivial vectorised law (``act_batch``: constant speed and steering, the
-robots drive circles), so the numbers measure the simulator, not a fuzzy controller; IR-SIM gets
-the same command. Rates are medians of 7 timed chunks, wall clock and this process's CPU time
+By default the controller is a trivial vectorised law (``act_batch``: constant speed and steering,
+the robots drive circles), so the numbers measure the simulator, not a fuzzy controller; IR-SIM gets
+the same command. ``--controller fuzzy-5b`` (any registered name) puts that controller in the loop
+instead (goal at (19, 19); only robots still running count, and a batch whose robots have all
+finished starts again), while IR-SIM keeps its constant command. Rates are medians of 7 timed chunks, wall clock and this process's CPU time
 (the latter is steadier on a busy machine). The one-robot chunks alternate with IR-SIM's, so both
 see the same load, and the ratio is the median of the per-chunk ratios. Run:
 
-    python benchmarks/sim_core.py [--json] [--irsim-python /work/venv-irsim/bin/python]
+    python benchmarks/sim_core.py [--json] [--controller fuzzy-5b] [--irsim-python /work/venv-irsim/bin/python]
 
 ``--json`` prints only one JSON object. Without a usable IR-SIM interpreter (or with
 ``--irsim-python ''``) the IR-SIM column is reported as unavailable.
@@ -28,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.control.registry import make_controller
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator
 from fuzzynav.world.geometry import wrap_angle
@@ -110,19 +113,26 @@ class IrSim:
         self.process.wait(timeout=60)
 
 
-def chunks(scenario, starts, steps: int, count: int = 7, between=None) -> list[tuple[float, float]]:
-    """``count`` timed chunks of ``steps`` steps: robot-steps per second (wall clock, CPU time of
-    this process) each; ``between()`` runs after every chunk (IR-SIM's interleaved chunk)."""
-    n = len(starts)
-    sim = BatchSimulator(scenario, Circling(), starts=starts, record=False)
+def chunks(scenario, starts, steps: int, count: int = 7, between=None, controller=None) -> list[tuple[float, float]]:
+    """``count`` timed chunks of ``steps`` steps: running-robot steps per second (wall clock, CPU
+    time of this process) each; ``between()`` runs after every chunk (IR-SIM's interleaved chunk).
+    ``controller`` defaults to :class:`Circling`; a batch whose robots have all finished restarts."""
+    sim = BatchSimulator(scenario, controller or Circling(), starts=starts, record=False)
     for _ in range(3):
         sim.step()
     rates = []
     for _ in range(count):
-        w0, c0 = time.perf_counter(), time.process_time()
+        done, wall, cpu = 0, 0.0, 0.0
         for _ in range(steps):
+            if sim.done:
+                sim.reset()
+            running = int(sim.active.sum())
+            w0, c0 = time.perf_counter(), time.process_time()
             sim.step()
-        rates.append((n * steps / (time.perf_counter() - w0), n * steps / max(time.process_time() - c0, 1e-9)))
+            wall += time.perf_counter() - w0
+            cpu += time.process_time() - c0
+            done += running
+        rates.append((done / wall, done / max(cpu, 1e-9)))
         if between is not None:
             between()
     return rates
@@ -137,7 +147,10 @@ def main(argv=None) -> None:
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
     parser.add_argument("--irsim-python", default=DEFAULT_IRSIM_PYTHON,
                         help="Python of a venv with ir-sim installed ('' to skip)")
+    parser.add_argument("--controller", metavar="NAME",
+                        help="a registered controller in the loop (e.g. fuzzy-5b) instead of the constant command")
     args = parser.parse_args(argv)
+    make = (lambda: make_controller(args.controller)) if args.controller else (lambda: None)
     scenario = world_of_15()
     one = start_poses(scenario, 1, clearance=3.0)  # room for the circle of diameter 2.4 m
     irsim, irsim_rates = None, []
@@ -147,12 +160,12 @@ def main(argv=None) -> None:
         except (OSError, RuntimeError, ValueError) as error:
             print(f"IR-SIM unavailable: {error}", file=sys.stderr)
     between = (lambda: irsim_rates.append(irsim.chunk(300))) if irsim is not None else None
-    single = chunks(scenario, one, COUNTS[0][1], between=between)
+    single = chunks(scenario, one, COUNTS[0][1], between=between, controller=make())
     results = {1: median_pair(single)}
     for n, steps in COUNTS[1:]:
-        results[n] = median_pair(chunks(scenario, start_poses(scenario, n), steps))
+        results[n] = median_pair(chunks(scenario, start_poses(scenario, n), steps, controller=make()))
     report = {
-        "benchmark": "sim_core", "obstacles": 15, "sensors": 7,
+        "benchmark": "sim_core", "controller": args.controller or "circling", "obstacles": 15, "sensors": 7,
         "robot_steps_per_s_wall": {str(n): round(w) for n, (w, _) in results.items()},
         "robot_steps_per_s_cpu": {str(n): round(c) for n, (_, c) in results.items()},
         "irsim": None,
