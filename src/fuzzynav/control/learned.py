@@ -75,6 +75,31 @@ def single_rays(ranges) -> np.ndarray:
 
 
 SENSING = {"rays": single_rays, "modules": side_distances}  # how a model reads d_f, d_d, d_g
+MAX_SPEED = 4.0  # m/s: the robot's limit (fuzzynav.robot.tricycle), the TG singleton of Table IV.1
+
+
+def check_speed(value, field: str) -> float:
+    """A model's constant speed: a number in [0, :data:`MAX_SPEED`] m/s (else InputError)."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not 0 <= value <= MAX_SPEED:
+        raise InputError(f"must be a speed in [0, {MAX_SPEED:g}] m/s, got {value!r}", field=field)
+    return float(value)
+
+
+def finite_numbers(value, field: str, ndim: int, empty: bool = False) -> np.ndarray:
+    """``value`` as a float array of ``ndim`` dimensions of finite numbers (no strings, booleans,
+    NaN or infinities; non-empty unless ``empty``), else InputError naming ``field``."""
+    try:
+        array = np.asarray(value)
+    except ValueError:  # ragged nesting
+        array = np.asarray(None)
+    if array.dtype.kind not in "iuf" or array.ndim != ndim:
+        raise InputError(f"must be a {ndim}-D array of numbers, got {value!r}", field=field)
+    if array.size == 0 and not empty:
+        raise InputError("must not be empty", field=field)
+    array = array.astype(float)
+    if not np.isfinite(array).all():
+        raise InputError(f"must be finite numbers (no NaN or infinity), got {value!r}", field=field)
+    return array
 
 
 def _batch(obs):
@@ -139,10 +164,10 @@ class TabularGoalSeeker(_Learned):
     def __init__(self, state_of, greedy, steering, speed: float, name: str = "q-goal"):
         self.state_of = state_of
         self.greedy = np.asarray(greedy, dtype=int)
-        self.steering = np.asarray(steering, dtype=float)
-        if self.greedy.min() < 0 or self.greedy.max() >= self.steering.size:
+        self.steering = finite_numbers(steering, "steering", 1)
+        if self.greedy.size == 0 or self.greedy.min() < 0 or self.greedy.max() >= self.steering.size:
             raise InputError("greedy actions outside the action set", field="greedy")
-        self.speed = float(speed)
+        self.speed = check_speed(speed, "speed")
         self.name = name
 
     def _commands(self, obs):
@@ -270,22 +295,31 @@ class LearnedWallFollower(_Learned):
         return out[:, self.alpha_index], out[:, self.speed_index], ["wall following"] * len(out)
 
 
+def model_name(document: dict) -> str:
+    """The name of a learned model's controller: its training task (``fql-goal-35``, ``q-goal``…,
+    ``training.task`` as ``fuzzynav train`` writes it), else its kind — one scheme for every model."""
+    training = document.get("training", {})
+    task = training.get("task", document.get("kind")) if isinstance(training, dict) else None
+    if not isinstance(task, str) or not task:
+        raise InputError(f"must be the name of the training task, got {task!r}", field="training.task")
+    return task
+
+
 def load_fuzzy_model(document: dict, path) -> Controller:
     """Loader of the ``fql-goal``, ``fql-avoid`` and ``fql-wall`` model kinds (fuzzynav.models)."""
     from fuzzynav.fuzzy.io.document import from_document
 
     kind = document.get("kind")
     system = from_document(document, source=str(path))
-    speed = document.get("constant_speed", 1.0)
-    if not isinstance(speed, (int, float)) or isinstance(speed, bool) or not 0 <= speed <= 4:
-        raise InputError(f"must be a speed in [0, 4] m/s, got {speed!r}", source=str(path), field="constant_speed")
     try:
+        speed = check_speed(document.get("constant_speed", 1.0), "constant_speed")
+        name = model_name(document)
         if kind == "fql-goal":
-            return FuzzyGoalSeeker(system, speed, name=f"fql-goal ({system.name})")
+            return FuzzyGoalSeeker(system, speed, name=name)
         if kind == "fql-avoid":
-            return LearnedAvoidanceNavigator(system, constant_speed=speed)
+            return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name)
         if kind == "fql-wall":
-            return LearnedWallFollower(system, document.get("sensing", "modules"))
+            return LearnedWallFollower(system, document.get("sensing", "modules"), name=name)
     except InputError as error:
         raise InputError(error.problem, source=str(path), field=error.field) from None
     raise InputError(f"not a learned fuzzy controller (kind {kind!r})", source=str(path), field="kind")

@@ -59,7 +59,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.learned import TabularGoalSeeker
+from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Singleton, Trapezoidal, Triangular
@@ -299,19 +299,27 @@ def train_q_goal(request) -> dict:
 
 
 def load_q_goal(document: dict, path) -> TabularGoalSeeker:
-    """Model loader of kind ``q-goal`` (fuzzynav.models.MODEL_LOADERS)."""
+    """Model loader of kind ``q-goal`` (fuzzynav.models.MODEL_LOADERS): every field checked, a bad
+    one is an InputError naming the file and the field."""
     try:
-        disc = ZoneSectorDiscretiser(document["zone_edges"], document["n_sectors"], document["merge_inner"])
-        q = np.asarray(document["q"], dtype=float)
-        steering, speed = document["steering"], float(document["speed"])
-    except KeyError as error:
-        raise InputError("missing field", source=str(path), field=str(error.args[0])) from None
-    except (TypeError, ValueError) as error:
-        raise InputError(f"bad value ({error})", source=str(path), field="q") from None
-    if q.shape != (disc.n_states, len(steering)):
-        raise InputError(f"Q table of shape {q.shape}, expected {(disc.n_states, len(steering))}",
-                         source=str(path), field="q")
-    return TabularGoalSeeker(disc, np.argmax(q, axis=1), steering, speed)
+        for name in ("zone_edges", "n_sectors", "merge_inner", "steering", "speed", "q"):
+            if name not in document:
+                raise InputError("missing field", field=name)
+        sectors, merge = document["n_sectors"], document["merge_inner"]
+        if not isinstance(sectors, int) or isinstance(sectors, bool):
+            raise InputError(f"must be a positive integer, got {sectors!r}", field="n_sectors")
+        if not isinstance(merge, bool):
+            raise InputError(f"must be true or false, got {merge!r}", field="merge_inner")
+        disc = ZoneSectorDiscretiser(finite_numbers(document["zone_edges"], "zone_edges", 1, empty=True), sectors,
+                                     merge)
+        q = finite_numbers(document["q"], "q", 2)
+        steering = finite_numbers(document["steering"], "steering", 1)
+        if q.shape != (disc.n_states, steering.size):
+            raise InputError(f"Q table of shape {q.shape}, expected {(disc.n_states, steering.size)} "
+                             "(states of zone_edges × n_sectors, actions of steering)", field="q")
+        return TabularGoalSeeker(disc, np.argmax(q, axis=1), steering, document["speed"], name=model_name(document))
+    except InputError as error:
+        raise InputError(error.problem, source=str(path), field=error.field) from None
 
 
 # -- goal seeking, fuzzy Q-learning (§VI.5.1) ------------------------------------------------
