@@ -16,7 +16,7 @@ def test_fig_vi_8_fixed_start_fql_learns_the_goal(tmp_path):
     numbers = experiment("fig-VI-8")(tmp_path, quick=True, seed=0)
     assert (tmp_path / "fig-VI-8.png").stat().st_size > 10_000
     assert numbers["trajectories"] == ["reached"]  # the trained start (a fixed-start policy, Fig VI.7)
-    assert numbers["converged_at"] == {"steering": 201}  # 200 episodes: shorter than a window + the hold
+    assert numbers["converged_at"] == {"steering": None}  # 200 episodes: shorter than a window + the hold
     assert len(numbers["rules"]) == 15
 
 

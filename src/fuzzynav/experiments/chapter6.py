@@ -52,8 +52,8 @@ def _request(out_dir, name: str, episodes, seed: int) -> TrainRequest:
 
 def _curves(request, phases) -> dict:
     """Per-episode mean reinforcement of each phase, read back from its checkpoint."""
-    return {p: np.ravel(np.asarray(load_checkpoint(rl.checkpoint_path(request.out, p))["curve"]["mean_reward"],
-                                   dtype=float)) for p in phases}
+    return {p: rl.episode_curve(load_checkpoint(rl.checkpoint_path(request.out, p))["curve"], "mean_reward")
+            for p in phases}
 
 
 def _figure(curves: dict, converged: dict, controller, starts, title: str, out_dir, name: str,
@@ -67,7 +67,7 @@ def _figure(curves: dict, converged: dict, controller, starts, title: str, out_d
     for ax, (phase, curve) in zip(axes, curves.items()):
         plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
                             mark_convergence=False)
-        if converged[phase] <= curve.size:
+        if converged[phase] is not None and converged[phase] <= curve.size:
             ax.axvline(converged[phase], linestyle="--", color="k", linewidth=0.8,
                        label=f"converged: episode {converged[phase]}")
             ax.legend(loc="lower right", fontsize="small")

@@ -164,6 +164,12 @@ def batch_plan(episodes: int, batch: int) -> list[tuple[int, int]]:
     return [(n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
 
 
+def episode_curve(curve: dict, field: str) -> np.ndarray:
+    """One field of a :func:`~fuzzynav.learn.checkpoint.train_loop` curve, one value per episode
+    in order (batches of unequal size: the last one may be smaller, :func:`batch_plan`)."""
+    return np.concatenate([np.ravel(np.asarray(row, dtype=float)) for row in curve[field]])
+
+
 def run_phase(phase: Phase, request, seed_offset: int) -> dict:
     """Train one phase of exactly ``phase.episodes`` episodes resumably; returns its per-episode
     curves and convergence. The last partial batch continues from the checkpoint of the full
@@ -181,8 +187,7 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             resume, continued = True, continued or result.resumed_from != result.episode
     finally:
         phase.env.batch = batch
-    reward = np.concatenate([np.ravel(row) for row in result.curve["mean_reward"]]).astype(float)
-    success = np.concatenate([np.ravel(row) for row in result.curve["success"]]).astype(float)
+    reward, success = episode_curve(result.curve, "mean_reward"), episode_curve(result.curve, "success")
     return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
             "converged_at": converged_at(reward, success, batch, phase.convergence),
             "final_success": float(success[-min(success.size, 5 * batch):].mean())}
