@@ -28,10 +28,25 @@ from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
 
 
+def read_model_or_none(path: str) -> dict | None:
+    """The JSON object of ``path`` if it is a model file (has a ``kind``), else ``None``."""
+    try:
+        document = json.loads(Path(path).read_text())
+    except (OSError, ValueError):
+        return None
+    return document if isinstance(document, dict) and "kind" in document else None
+
+
 def resolve(name: str) -> FuzzySystem:
     """A built-in system by name, or the system stored in the file ``name``."""
     if name in SYSTEMS:
         return get_system(name)
+    if Path(name).suffix == ".json" and Path(name).is_file():
+        document = read_model_or_none(name)
+        if document is not None and document.get("kind") == "anfis-tracker":
+            from fuzzynav.experiments.train_trackers import anfis_tracker_system
+
+            return anfis_tracker_system(document, name)  # the trained ANFIS, exported (issue 4)
     if Path(name).suffix:
         return load(name)
     raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}) nor a .json/.yaml/.fll file", field=name)

@@ -160,6 +160,14 @@ def load_anfis_tracker(document: dict, path=None, **options) -> ModelTracker:
     return _tracker("anfis-tracker", model, document, source, **options)
 
 
+def anfis_tracker_system(document: dict, path=None):
+    """The ANFIS of an ``anfis-tracker`` model file as a fuzzy-library system (TS1, §V.3.4 layers
+    1–5): input ``theta_er``, output ``alpha`` — what ``fuzzynav fis show|eval|convert`` read."""
+    document = _checked(document, path)
+    model = ANFIS.from_dict(document["model"], source=str(path) if path else None)
+    return model.to_fuzzy_system(["theta_er"], "alpha", name="anfis-tracker")
+
+
 @functools.lru_cache(maxsize=4)
 def default_document(kind: str, seed: int = 0) -> dict:
     """The model document trained with the defaults (cached for the process)."""
