@@ -25,6 +25,8 @@ what its learner saw.
 
 from __future__ import annotations
 
+from abc import abstractmethod
+
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller, thesis_angle_error
@@ -120,8 +122,9 @@ class _Learned(Controller):
         steering, speed, labels = self._commands(obs)
         return Command(float(steering[0]), float(speed[0]), labels[0])
 
-    def _commands(self, obs):  # pragma: no cover - abstract
-        raise NotImplementedError
+    @abstractmethod
+    def _commands(self, obs):
+        """``(steering (B,), speed (B,), labels)`` for a batch observation."""
 
 
 def _outputs(system, names: tuple[str, ...]) -> list[int]:

@@ -21,6 +21,8 @@ Fuzzy Q-learning (Algorithm VI.1) calls the same policies with one row per rule.
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
+
 from dataclasses import dataclass, field
 from typing import ClassVar
 
@@ -75,14 +77,14 @@ def sample_rows(p: np.ndarray, rng: np.random.Generator, batch: int | None = Non
     return np.minimum((cumulative <= u).sum(axis=-1), p.shape[-1] - 1)
 
 
-class Policy:
+class Policy(ABC):
     """Base class: :meth:`choose` samples from :meth:`probabilities` (subclasses may be faster)."""
 
     kind: ClassVar[str] = "policy"
 
+    @abstractmethod
     def probabilities(self, q: np.ndarray, t: float = 0) -> np.ndarray:
         """Probability of each action, same shape as ``q``."""
-        raise NotImplementedError
 
     def choose(self, q: np.ndarray, rng: np.random.Generator, t: float = 0,
                batch: int | None = None) -> np.ndarray:
