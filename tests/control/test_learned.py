@@ -49,7 +49,7 @@ def test_fuzzy_goal_seeker_turns_by_its_table_at_constant_speed():
 
 
 def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
-    system = train_rl.avoid_system(np.full(7, 2), np.full(7, 0))  # every avoid rule: steer PG, speed low
+    system = train_rl.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False)  # every avoid rule: steer PG, speed low
     navigator = LearnedAvoidanceNavigator(system)
     far, near = np.full((1, 3), 4.0), np.array([[0.3, 0.3, 0.3]])
     gs = np.array([[0.1, 3.0]])
@@ -61,7 +61,7 @@ def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
 
 
 def test_supervisor_hands_a_clear_goal_direction_to_goal_seeking_and_slows_it():
-    navigator = LearnedAvoidanceNavigator(train_rl.avoid_system(np.full(7, 2), np.full(7, 0)))
+    navigator = LearnedAvoidanceNavigator(train_rl.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False))
     assert (navigator.params.front, navigator.params.detection) == (train_rl.AVOID_D_MIN, train_rl.AVOID_D_SAFE)
     blended, goal = np.array([[0.6, 0.5], [0.6, 0.5]]), np.array([[-0.2, 3.0], [-0.2, 3.0]])
     ranges = np.full((2, 7), 4.0)

@@ -18,7 +18,7 @@ The tabular Q-learning goal seeker (§VI.2, Figs VI.1–VI.4) is :class:`Tabular
 model (kind ``q-goal``) holds a Q table and is loaded by :mod:`fuzzynav.experiments.train_rl`,
 which owns the (d_rg, θ_rg) discretiser.
 
-The input features — :func:`goal_inputs` and :func:`side_distances` — are defined here once and
+The input features — :func:`goal_inputs`, :func:`side_distances`, :func:`openness` — are defined here once and
 used by the training environments too (:mod:`fuzzynav.learn.envs`), so a controller sees exactly
 what its learner saw.
 """
@@ -74,6 +74,32 @@ def single_rays(ranges) -> np.ndarray:
         raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
                          f"{ranges.shape}", field="ranges")
     return ranges[:, list(RAYS)]
+
+
+def openness(ranges) -> np.ndarray:
+    """Which side is more open (B,): the mean reading of the left module (C3, C5, C7) minus that
+    of the right module (C2, C4, C6), in m — positive when the left is more open.
+
+    Not an input of the thesis' avoider (its 8 rules read front, right and left only, Fig VI.17):
+    with the nearest reading of each module, "front, right and left near" (a robot facing a wall
+    or a corner) cannot tell which way to turn; the means of the modules can.
+    """
+    ranges = np.asarray(ranges, dtype=float)
+    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
+        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
+                         f"{ranges.shape}", field="ranges")
+    return ranges[:, list(LEFT)].mean(axis=1) - ranges[:, list(RIGHT)].mean(axis=1)
+
+
+AVOID_INPUTS = ["front", "right", "left"]  # the thesis' avoider (Fig VI.17)
+AVOID_OPEN_INPUTS = AVOID_INPUTS + ["open"]  # plus which side is more open (:func:`openness`)
+
+
+def avoidance_inputs(ranges, open_side: bool) -> np.ndarray:
+    """The learned avoider's inputs (B, 3) or, with ``open_side``, (B, 4): front, right and left
+    distances (:func:`side_distances`) [and :func:`openness`]."""
+    sides = side_distances(ranges)
+    return np.column_stack([sides, openness(ranges)]) if open_side else sides
 
 
 SENSING = {"rays": single_rays, "modules": side_distances}  # how a model reads d_f, d_d, d_g
@@ -211,9 +237,10 @@ def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params
 class LearnedAvoidanceNavigator(_Learned):
     """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
 
-    ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances with
-    the rules of every situation in which an obstacle is near (7 of the 8 rules of Fig VI.17).
-    The eighth situation — all three distances far — is goal seeking (``goal``: the guarded
+    ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances —
+    and optionally ``open``, which side is more open (:func:`openness`) — with the rules of every
+    situation in which an obstacle is near (7 of the 8 rules of Fig VI.17; 14 of 16 with
+    ``open``). The remaining situation — all three distances far — is goal seeking (``goal``: the guarded
     chapter IV behaviour of Table IV.1 by default, :mod:`fuzzynav.control.goal_seeking`): with
     w_free = 1 − Σ w_i the share of that situation,
 
@@ -228,9 +255,10 @@ class LearnedAvoidanceNavigator(_Learned):
     """
 
     def __init__(self, avoidance, goal=None, constant_speed: float = 1.0, name: str = "fql-avoid"):
-        if avoidance.input_names != ["front", "right", "left"]:
-            raise InputError(f"the avoider reads ['front', 'right', 'left'], got {avoidance.input_names}",
-                             field="inputs")
+        if avoidance.input_names not in (AVOID_INPUTS, AVOID_OPEN_INPUTS):
+            raise InputError(f"the avoider reads {AVOID_INPUTS} or {AVOID_OPEN_INPUTS}, got "
+                             f"{avoidance.input_names}", field="inputs")
+        self.open_side = avoidance.input_names == AVOID_OPEN_INPUTS
         if goal is None:
             from fuzzynav.control.goal_seeking import GuardedGoalSeeking
 
@@ -243,12 +271,13 @@ class LearnedAvoidanceNavigator(_Learned):
         self.name = name
 
     def free_share(self, distances) -> np.ndarray:
-        """w_free = 1 − Σ_i w_i (B,): the share of "all three distances far"."""
+        """w_free = 1 − Σ_i w_i (B,): the share of "all three distances far" (``distances``: the
+        avoider's inputs, :func:`avoidance_inputs`)."""
         covered = self.avoidance.firing_strengths(distances, normalise=False).sum(axis=1)
         return np.clip(1.0 - covered, 0.0, 1.0)
 
     def blend(self, distances, goal_command):
-        """(α, V_r, w_free) from side distances (B, 3) and the goal seeker's (α, V_r) (B, 2)."""
+        """(α, V_r, w_free) from the avoider's inputs (B, 3 or 4) and the goal seeker's (α, V_r) (B, 2)."""
         out = self.avoidance.evaluate(distances)
         free = self.free_share(distances)
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
@@ -260,7 +289,7 @@ class LearnedAvoidanceNavigator(_Learned):
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
         goal_command = np.column_stack(self.goal(x[:, 0], -x[:, 1])[:2])
-        alpha, speed, _ = self.blend(side_distances(ranges), goal_command)
+        alpha, speed, _ = self.blend(avoidance_inputs(ranges, self.open_side), goal_command)
         steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
                                           self.params)
         return steering, speed, ["goal seeking" if g else "obstacle avoidance" for g in goal]
