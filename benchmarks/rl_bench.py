@@ -16,7 +16,10 @@ Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tas
 ``q-goal-9``, ``q-goal-11``, ``q-goal-13``, ``q-goal-19x5`` (Table VI.1: states × actions, random
 starts, 4,000 episodes), ``q-goal-fixed`` (Fig VI.1, 1,500 episodes) and ``fql-goal-fixed``
 (Fig VI.8, 1,000 episodes), ``fql-wall-modules`` (``fql-wall`` reading the nearest of each
-module's three sensors instead of the hand-made follower's single rays). ``--double`` trains
+module's three sensors instead of the hand-made follower's single rays), ``fql-avoid-8``
+(``fql-avoid`` with the thesis' 8 rules, without the openness input). The avoidance navigators
+are evaluated as trained and with the turning-room guard of ``fuzzy-5b`` added (reported apart:
+``with_turn_guard``). ``--double`` trains
 every run a second time with twice the budget and reports both counts of episodes to converge
 (they must agree: the criterion does not depend on the budget).
 
@@ -52,6 +55,7 @@ THESIS = {
     "q-goal-fixed": {"steering": 1000},  # Fig VI.1
     "fql-goal-fixed": {"steering": 180},  # Fig VI.8
     "fql-wall-modules": {},  # fql-wall on the richer sensing (nearest of three sensors per direction)
+    "fql-avoid-8": {"steering": 250, "speed": 2000},  # fql-avoid with the thesis' 8 rules (no openness input)
 }
 TASKS = ["q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall"]  # fuzzynav train
 
@@ -78,7 +82,9 @@ STUDIES = {"q-goal-9": _tabular(9, 3, False, 4000), "q-goal-11": _tabular(11, 3,
            "q-goal-13": _tabular(13, 3, False, 4000), "q-goal-19x5": _tabular(19, 5, False, 4000),
            "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed,
            "fql-wall-modules": lambda request: (train_rl.train_fql_wall(request, "modules"),
-                                                load_controller(request.out))}
+                                                load_controller(request.out)),
+           "fql-avoid-8": lambda request: (train_rl.train_fql_avoid(request, open_side=False),
+                                           load_controller(request.out))}
 
 
 def _train(task: str, request):
@@ -105,7 +111,17 @@ def _fixed(controller) -> dict:
             "timeouts": int(outcome == "timeout")}
 
 
-EVALUATE = {"fql-avoid": train_rl.evaluate_avoid, "fql-wall": _wall, "fql-wall-modules": _wall,
+def _avoid(controller) -> dict:
+    """Avoidance navigator in 100 random worlds, as trained (the learned avoider alone avoids) and
+    with the turning-room guard of fuzzy-5b added (``turn_guard``: a safety layer, reported apart)."""
+    from fuzzynav.control.learned import LearnedAvoidanceNavigator
+
+    guarded = LearnedAvoidanceNavigator(controller.avoidance, constant_speed=controller.constant_speed,
+                                        name=controller.name, turn_guard=True)
+    return {**train_rl.evaluate_avoid(controller), "with_turn_guard": train_rl.evaluate_avoid(guarded)}
+
+
+EVALUATE = {"fql-avoid": _avoid, "fql-avoid-8": _avoid, "fql-wall": _wall, "fql-wall-modules": _wall,
             "q-goal-fixed": _fixed, "fql-goal-fixed": _fixed}
 
 
@@ -142,9 +158,12 @@ def main() -> int:
                 rows.append(run_task(task, seed, args.episodes, Path(folder), args.double))
                 if not args.json:
                     r = rows[-1]
+                    guard = r.get("with_turn_guard")
                     print(f"{task:16s} seed {seed}: {r['wall_s']:6.1f} s  converged {r['converged_at']} "
                           f"{r.get('converged_at_double_budget', '')}  "
-                          f"success {r['success']:.0%}  collisions {r['collisions']}  timeouts {r['timeouts']}")
+                          f"success {r['success']:.0%}  collisions {r['collisions']}  timeouts {r['timeouts']}"
+                          + (f"  [with turn guard: success {guard['success']:.0%}  collisions {guard['collisions']}]"
+                             if guard else ""))
     summary = {}
     for task in dict.fromkeys(r["task"] for r in rows):
         mine = [r for r in rows if r["task"] == task]
@@ -153,6 +172,9 @@ def main() -> int:
             "success_per_seed": [r["success"] for r in mine],
             "collisions_per_seed": [r["collisions"] for r in mine],
             **({"fig_VI_28_per_seed": [r["fig-VI-28"] for r in mine]} if "fig-VI-28" in mine[0] else {}),
+            **({"with_turn_guard": {"success_per_seed": [r["with_turn_guard"]["success"] for r in mine],
+                                    "collisions_per_seed": [r["with_turn_guard"]["collisions"] for r in mine]}}
+               if "with_turn_guard" in mine[0] else {}),
             "converged_at_per_seed": {p: [r["converged_at"][p] for r in mine] for p in mine[0]["converged_at"]},
             # runs that never settled (None) count as their whole budget + 1: the median stays an upper bound
             "converged_at_median": {p: statistics.median(r["converged_at"][p] or r["episodes"][p] + 1 for r in mine)

@@ -234,6 +234,10 @@ def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params
     return (np.where(goal, goal_command[:, 0], blended[:, 0]), np.where(goal, goal_speed, blended[:, 1]), goal)
 
 
+GUARD_MARGIN = 0.5  # m: room the guard keeps for the full-lock half turn (as fuzzy-5b's room_margin)
+GUARD_SPEED = 0.3  # m/s: speed of the guard's turn (fuzzy-5b's v_floor)
+
+
 class LearnedAvoidanceNavigator(_Learned):
     """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
 
@@ -252,9 +256,18 @@ class LearnedAvoidanceNavigator(_Learned):
     robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
     it the blend keeps pulling away from obstacles beside a clear path and the robot circles
     goals placed near obstacles.
+
+    ``turn_guard`` adds the turning-room guard of ``fuzzy-5b``
+    (:class:`~fuzzynav.control.turning_room.TurnGuard`, thesis §IV.4: no reverse gear, tightest
+    turn R = 0.69 m): when the lane ahead is blocked within d_m and the better full-lock half turn
+    is about to close, the robot turns at full lock (±π/5) to the roomier side at
+    :data:`GUARD_SPEED`, labelled ``"turn guard"``. It is off by default: the learned avoider is
+    what avoids; the guard is a safety layer whose share of the steps the trace shows, and the
+    benchmark reports the navigator with and without it.
     """
 
-    def __init__(self, avoidance, goal=None, constant_speed: float = 1.0, name: str = "fql-avoid"):
+    def __init__(self, avoidance, goal=None, constant_speed: float = 1.0, name: str = "fql-avoid",
+                 turn_guard: bool = False):
         if avoidance.input_names not in (AVOID_INPUTS, AVOID_OPEN_INPUTS):
             raise InputError(f"the avoider reads {AVOID_INPUTS} or {AVOID_OPEN_INPUTS}, got "
                              f"{avoidance.input_names}", field="inputs")
@@ -269,6 +282,18 @@ class LearnedAvoidanceNavigator(_Learned):
         self.constant_speed = float(constant_speed)
         self.params = avoidance_supervisor(avoidance)
         self.name = name
+        self.guard = None
+        if turn_guard:
+            from fuzzynav.control.turning_room import TurnGuard
+
+            self.guard = TurnGuard(lane=self.params.front, margin=GUARD_MARGIN)
+        self.reset()
+
+    def reset(self, rng=None) -> None:
+        """A new episode: the guard forgets its hits and turns."""
+        self._turning = None
+        if self.guard is not None:
+            self.guard.reset()
 
     def free_share(self, distances) -> np.ndarray:
         """w_free = 1 − Σ_i w_i (B,): the share of "all three distances far" (``distances``: the
@@ -292,7 +317,23 @@ class LearnedAvoidanceNavigator(_Learned):
         alpha, speed, _ = self.blend(avoidance_inputs(ranges, self.open_side), goal_command)
         steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
                                           self.params)
-        return steering, speed, ["goal seeking" if g else "obstacle avoidance" for g in goal]
+        labels = np.where(goal, "goal seeking", "obstacle avoidance")
+        if self.guard is not None:
+            steering, speed, labels = self._guarded(obs, steering, speed, labels, -x[:, 1])
+        return steering, speed, labels.tolist()
+
+    def _guarded(self, obs, steering, speed, labels, bearing):
+        """The turning-room guard over the navigator's commands (class docstring)."""
+        from fuzzynav.control.batched import OneRobot
+        from fuzzynav.control.turning_room import ALPHA_MAX
+
+        batch = obs if np.ndim(obs.ranges) == 2 else OneRobot.of(obs)
+        if self._turning is None or self._turning.size != steering.size:
+            self._turning = np.zeros(steering.size, dtype=bool)
+        turn, side = self.guard(batch, self._turning, bearing)
+        self._turning = turn
+        return (np.where(turn, side * ALPHA_MAX, steering), np.where(turn, GUARD_SPEED, speed),
+                np.where(turn, "turn guard", labels))
 
 
 class LearnedWallFollower(_Learned):
@@ -349,7 +390,10 @@ def load_fuzzy_model(document: dict, path) -> Controller:
         if kind == "fql-goal":
             return FuzzyGoalSeeker(system, speed, name=name)
         if kind == "fql-avoid":
-            return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name)
+            guard = document.get("turn_guard", False)
+            if not isinstance(guard, bool):
+                raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
+            return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
         if kind == "fql-wall":
             return LearnedWallFollower(system, document.get("sensing", "modules"), name=name)
     except InputError as error:
