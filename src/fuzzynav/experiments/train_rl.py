@@ -655,23 +655,28 @@ WALL_COLUMNS = [1, 0, 2]  # (d_d, d_f, d_g) = (right, front, left) of the env's 
 
 
 WALL_SENSING = "rays"  # the hand-made follower's single rays (control.learned.SENSING)
+WALL_REWARD_SENSING = "modules"  # the d_i of the rewards VI.21-VI.22: nearest of each module's three sensors
 
 
 def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str = WALL_SENSING):
     """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower.
 
-    ``sensing`` is how the learner reads d_d, d_f, d_g and the rewards their d_i
-    (:data:`fuzzynav.control.learned.SENSING`): by default the single rays at −90°, 0°, +90° of
-    the hand-made follower, so that what learning changes is the interpretations only.
+    ``sensing`` is how the learner reads d_d, d_f, d_g (:data:`fuzzynav.control.learned.SENSING`):
+    by default the single rays at −90°, 0°, +90° of the hand-made follower, so that what learning
+    changes is the interpretations only. The rewards' d_i (eqs VI.21–VI.22) are the nearest
+    reading of each module's three sensors (:data:`WALL_REWARD_SENSING`): the critic sees the
+    corner tip between the rays that the follower does not (Fig VI.28), so the near-corner states
+    that end in the collision are punished before it — on the rays alone one training seed of five
+    still hit the Fig VI.28 corner.
     """
     from fuzzynav.control.learned import SENSING
     from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S
 
     handmade, premise, alpha, speed = wall_parts()
-    layout, sensors, sides = WallCourse(), SensorRing(), SENSING[sensing]
+    layout, sensors, sides, inputs = WallCourse(), SensorRing(), SENSING[WALL_REWARD_SENSING], SENSING[sensing]
 
     def observe(s):
-        return s.sides[:, WALL_COLUMNS]
+        return inputs(s.ranges)[:, WALL_COLUMNS]
 
     steer = fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     n_steer = steering_episodes(episodes, SPEED_SHARE)
