@@ -1,0 +1,93 @@
+"""The chapter VI sensor tasks of experiments/train_rl.py: the avoider's openness input (16 rules),
+the turning-room guard of the learned navigator, and the wall follower's rewards read on the modules."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fuzzynav.control import learned
+from fuzzynav.control.learned import LearnedAvoidanceNavigator
+from fuzzynav.errors import InputError
+from fuzzynav.experiments import train_rl
+from fuzzynav.fuzzy.io.document import to_document
+from fuzzynav.learn.envs import RobotState
+from fuzzynav.models import load_controller, save_json_atomic
+from fuzzynav.sim.simulator import BatchSimulator
+from fuzzynav.world.shapes import Circle
+from fuzzynav.world.world import World
+
+
+def wall_ahead(open_left: bool) -> np.ndarray:
+    """Readings of C1…C7 (0°, −30°, +30°, −60°, +60°, −90°, +90°) with a wall 1 m ahead that
+    ends on one side: front, right and left all near, one side more open."""
+    ranges = np.array([[1.0, 1.1, 1.1, 1.6, 1.6, 2.5, 2.5]])
+    ranges[0, [4, 6] if open_left else [3, 5]] = 4.0
+    return ranges
+
+
+def prior_navigator(open_side: bool, **options) -> LearnedAvoidanceNavigator:
+    """The navigator with the a-priori conclusions of every rule (train_rl.avoid_prior), speed low."""
+    n = train_rl.free_rules(open_side)[0]
+    return LearnedAvoidanceNavigator(train_rl.avoid_system(train_rl.avoid_prior(open_side)[:n], np.zeros(n, int),
+                                                           open_side), **options)
+
+
+def test_openness_is_the_left_module_mean_minus_the_right_one():
+    assert learned.openness(wall_ahead(True))[0] > 0 > learned.openness(wall_ahead(False))[0]
+    assert learned.avoidance_inputs(wall_ahead(True), True).shape == (1, 4)
+    with pytest.raises(InputError, match="ranges"):
+        learned.openness(np.ones((1, 5)))
+
+
+def test_with_the_openness_input_all_near_turns_to_the_open_side_the_thesis_rules_cannot():
+    assert train_rl.free_rules(True).tolist() == [14, 15] and train_rl.free_rules(False).tolist() == [7]
+    goal = np.array([[0.0, 1.0]])
+    for open_left in (True, False):
+        ranges = wall_ahead(open_left)
+        sixteen, eight = prior_navigator(True), prior_navigator(False)
+        assert len(sixteen.avoidance.rules) == 14 and len(eight.avoidance.rules) == 7
+        alpha16 = sixteen.blend(learned.avoidance_inputs(ranges, True), goal)[0][0]
+        alpha8 = eight.blend(learned.avoidance_inputs(ranges, False), goal)[0][0]
+        assert alpha16 == pytest.approx((1 if open_left else -1) * math.pi / 5, abs=0.05)
+        assert alpha8 == pytest.approx(-math.pi / 5)  # the thesis' PPP rule: right, whichever side is open
+
+
+def test_the_turn_guard_saves_a_navigator_whose_avoider_drives_straight():
+    world = World(20.0, 20.0, (Circle((8.0, 10.0), 1.0),))
+    scenario = train_rl._scenario(world, (4.0, 10.0, 0.0), (16.0, 10.0), "post ahead", 30.0)
+    straight = train_rl.avoid_system(np.ones(14, int), np.zeros(14, int))  # every avoid rule: Z, slow
+    runs = {}
+    for guard in (False, True):
+        navigator = LearnedAvoidanceNavigator(straight, turn_guard=guard)
+        sim = BatchSimulator(scenario, navigator, record=True).run()
+        runs[guard] = sim.trace(0)
+    assert runs[False].outcome == "collision" and "turn guard" not in runs[False].behaviour
+    assert runs[True].outcome != "collision" and "turn guard" in runs[True].behaviour
+
+
+def test_a_model_file_says_whether_its_navigator_is_guarded(tmp_path):
+    system = train_rl.avoid_system(np.ones(14, int), np.zeros(14, int))
+    path = tmp_path / "avoid.json"
+    for guard in (False, True):
+        save_json_atomic(path, {"kind": "fql-avoid", **to_document(system), "turn_guard": guard})
+        assert (load_controller(path).guard is not None) is guard
+    save_json_atomic(path, {"kind": "fql-avoid", **to_document(system), "turn_guard": "yes"})
+    with pytest.raises(InputError, match="turn_guard"):
+        load_controller(path)
+
+
+def test_wall_follower_reads_its_rays_and_is_rewarded_on_the_modules(tmp_path):
+    steering = next(train_rl.fql_wall_phases(tmp_path / "wall.json", 100, batch=2))
+    env = steering.env
+    far = np.full((1, 7), 4.0)
+    tip = far.copy()
+    tip[0, 1] = 0.5  # a corner tip at −30° (C2), between the single rays (Fig VI.28)
+
+    def state(ranges):
+        return RobotState(World(), np.zeros((1, 3)), np.ones(1), np.zeros(1), ranges=ranges, sides=env.sides(ranges))
+
+    assert env.observe(state(tip)).tolist() == [[4.0, 4.0, 4.0]]  # the follower's rays miss it
+    no = np.zeros(1, dtype=bool)
+    assert env.reward(state(far), state(tip), no, no).tolist() == [-1.0]  # eq VI.21: some d_i < d_m
+    assert env.reward(state(far), state(far), no, no).tolist() == [0.0]
