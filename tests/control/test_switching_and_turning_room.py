@@ -5,9 +5,10 @@ import pytest
 
 from fuzzynav.control import supervisor
 from fuzzynav.control.registry import make_controller
-from fuzzynav.control.turning_room import TURN_RADIUS, HitMemory, turning_room
+from fuzzynav.control.turning_room import TURN_RADIUS, HitMemory, step_clearance, turning_room
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.trajectories import merged_changes
+from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 
@@ -64,3 +65,22 @@ def test_start_facing_a_wall_turns_at_full_lock_without_collision():
         trace = run_episode(scenario, make_controller(controller))
         assert trace.reached, controller
         assert np.abs(trace.steering[:30]).max() == pytest.approx(np.pi / 5)
+
+
+def test_step_clearance_is_the_gap_after_one_straight_step():
+    points = np.array([[[1.0, 0.0], [0.0, 2.0]]])
+    valid = np.array([[True, True]])
+    # eq IV.2: the next position is V Δt straight ahead, the body a disc of 0.3 m
+    assert step_clearance(points, valid, np.array([2.0]), 0.1)[0] == pytest.approx(1.0 - 0.2 - 0.3)
+    assert step_clearance(points, ~valid, np.array([2.0]), 0.1)[0] == np.inf
+
+
+def test_safety_stop_turns_a_hidden_wall_end_into_a_stop():
+    controller = "fuzzy-5b"
+    # mixed-0-009: a thin wall end hides between the rays until no turn is free (README)
+    world = generate_worlds("mixed", 10, 0)[9]
+    unguarded = run_episode(world, make_controller(controller, stop_margin=-1.0), seed=0)
+    assert unguarded.collision
+    guarded = run_episode(world, make_controller(controller), seed=0)
+    assert not guarded.collision and guarded.outcome == "timeout"
+    assert guarded.speed[-1] == 0.0 and world.world.clearance(guarded.pose[-1:, :2])[0] > 0.3

@@ -30,7 +30,9 @@ has driven ``dwell`` steps (default 10, 1 s), and OA, once active, stays wanted 
 below ``detection`` + ``release`` (default 0.5 m) and the obstacle within ``sector`` + 15° of
 the heading. Like ``fuzzy-5b``, the navigator turns at full lock (α = ±π/5, the extreme
 singletons of Table IV.2) and low speed ``v_turn`` when its turning room runs out
-(:class:`fuzzynav.control.turning_room.TurnGuard`; this turn is labelled ``OA``). The state is one
+(:class:`fuzzynav.control.turning_room.TurnGuard`; this turn is labelled ``OA``), and it has the
+same safety stop (V = 0 when the next step would bring the body within ``stop_margin`` of a
+remembered hit, :mod:`fuzzynav.control.five_behaviours`). The state is one
 mode per robot plus the guard's memory; :meth:`reset` clears it.
 """
 
@@ -57,12 +59,14 @@ class TwoBehaviourNavigator(BatchedController):
 
     def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, front: float = math.pi / 4,
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
-                 release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3):
+                 release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
+                 stop_margin: float = 0.02):
         self.detection = float(detection)
         self.release = float(release)
         self.switch = supervisor.Switch((0, 1, 2), dwell)  # 0 GSB, 1 OA, 2 OA at full lock
         self.guard = TurnGuard(lane, room_margin)
         self.v_turn = float(v_turn)
+        self.stop_margin = float(stop_margin)
         self.risk = float(risk)
         self.sector = float(sector)
         self.front = float(front)
@@ -104,6 +108,8 @@ class TwoBehaviourNavigator(BatchedController):
             speed = np.where(avoid, out[:, 1], speed)
         steering = np.where(mode == 2, side * ALPHA_MAX, steering)
         speed = np.where(mode == 2, self.v_turn, speed)
+        if obs.ranges is not None:  # the safety stop, on the hits the guard saw this step
+            speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)
         return steering, speed, np.where(avoid, "OA", "GSB")
 
 
