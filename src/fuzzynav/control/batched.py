@@ -67,6 +67,13 @@ def evaluate(system, X) -> np.ndarray:
     return system.evaluate(X)
 
 
+def evaluate_columns(system, *columns) -> np.ndarray:
+    """:func:`evaluate` on inputs given as columns ``(N,)`` each; one robot skips the stacking."""
+    if len(columns[0]) == 1:
+        return np.array([system.evaluate_one(*(column[0] for column in columns))])
+    return system.evaluate(np.column_stack(columns))
+
+
 def sensor_columns(angles, wanted_deg, source: str = "sensors") -> np.ndarray:
     """Indices of the readings pointing at ``wanted_deg`` (degrees, CCW from the heading).
 

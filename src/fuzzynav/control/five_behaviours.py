@@ -54,7 +54,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import BatchedController, evaluate, sensor_columns
+from fuzzynav.control.batched import BatchedController, evaluate, evaluate_columns, sensor_columns
 from fuzzynav.control.goal_seeking import GuardedGoalSeeking
 from fuzzynav.control.turning_room import ALPHA_MAX, TurnGuard
 from fuzzynav.fuzzy import systems_navigation as nav
@@ -63,6 +63,10 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 GSB_VRB, TURN = 4, 5  # mode codes beyond supervisor.GSB, FOA, ROA, LOA
 LABELS = np.array(["GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB"])
 RANK = (0, 3, 2, 2, 1, 4)  # caution rank of each mode (supervisor.Switch): FOA above ROA, LOA
+WANTED = np.array([[supervisor.GSB, supervisor.FOA, supervisor.ROA, supervisor.LOA],  # mode asked for a
+                   [GSB_VRB, supervisor.FOA, supervisor.ROA, supervisor.LOA]])  # choice, [sensed?, choice]
+AVOIDERS = (supervisor.FOA, supervisor.ROA, supervisor.LOA)
+AVOIDER_COLUMNS = ((0, 1, 2), (1, 3, 5), (2, 4, 6))  # FOA d1 d2 d3, ROA d2 d4 d6, LOA d3 d5 d7 (Tables IV.3-IV.5)
 
 
 class FiveBehaviourNavigator(BatchedController):
@@ -98,29 +102,28 @@ class FiveBehaviourNavigator(BatchedController):
         distance, bearing = obs.target_distance, obs.target_bearing
         before = self.switch.mode if self.switch.mode is not None else np.full(len(d), -1)
         seeking = (before == supervisor.GSB) | (before == GSB_VRB)
-        choice = np.where(seeking, supervisor.select(d, distance, bearing, self.kept),
-                          supervisor.select(d, distance, bearing, self.params))
+        if seeking.all() or not seeking.any():  # one set of thresholds for all (always so for one robot)
+            choice = supervisor.select(d, distance, bearing, self.kept if seeking.all() else self.params)
+        else:
+            choice = np.where(seeking, supervisor.select(d, distance, bearing, self.kept),
+                              supervisor.select(d, distance, bearing, self.params))
         dmin = d.min(axis=1)
-        sensed = dmin < self.params.detection
-        wanted = np.where(choice == supervisor.GSB, np.where(sensed, GSB_VRB, supervisor.GSB), choice)
         turn, side = self.guard(obs, before == TURN, bearing)
-        wanted = np.where(turn, TURN, wanted)
-        mode = self.switch(wanted, np.ones(len(wanted), dtype=bool), (dmin < self.params.keep) | (wanted == TURN))
+        wanted = np.where(turn, TURN, WANTED[(dmin < self.params.detection).astype(int), choice])
+        mode = self.switch(wanted, True, (dmin < self.params.keep) | (wanted == TURN))
 
-        steering, speed, _ = self.gsb(distance, bearing)
-        v_now = np.asarray(obs.speed, dtype=float)
-        adjust = evaluate(self.vrb, np.column_stack([v_now, dmin]))[:, 0]
-        v_vrb = np.clip(v_now + adjust, self.v_floor, self.v_max)  # eq IV.9
-        for code, system, cols in ((supervisor.FOA, self.avoiders[0], (0, 1, 2)),
-                                   (supervisor.ROA, self.avoiders[1], (1, 3, 5)),
-                                   (supervisor.LOA, self.avoiders[2], (2, 4, 6))):
-            mine = mode == code
-            if mine.any():
-                steering = np.where(mine, evaluate(system, d[:, cols])[:, 0], steering)
-        avoiding = (mode == supervisor.FOA) | (mode == supervisor.ROA) | (mode == supervisor.LOA)
-        speed = np.where(avoiding, v_vrb, np.where(mode == GSB_VRB, np.minimum(speed, v_vrb), speed))
-        steering = np.where(mode == TURN, side * ALPHA_MAX, steering)
-        speed = np.where(mode == TURN, self.v_floor, speed)
+        modes = set(mode.tolist())  # only the behaviours some robot runs are evaluated
+        steer_gsb = speed_gsb = v_vrb = side * ALPHA_MAX  # placeholders where no robot reads them
+        if modes & {supervisor.GSB, GSB_VRB}:
+            steer_gsb, speed_gsb, _ = self.gsb(distance, bearing)
+        if modes & {supervisor.FOA, supervisor.ROA, supervisor.LOA, GSB_VRB}:
+            v_now = np.asarray(obs.speed, dtype=float)
+            adjust = evaluate_columns(self.vrb, v_now, dmin)[:, 0]
+            v_vrb = np.clip(v_now + adjust, self.v_floor, self.v_max)  # eq IV.9
+        avoider_steering = [evaluate(system, d[:, cols])[:, 0] if code in modes else steer_gsb
+                            for code, system, cols in zip(AVOIDERS, self.avoiders, AVOIDER_COLUMNS)]
+        steering = np.choose(mode, [steer_gsb, *avoider_steering, steer_gsb, side * ALPHA_MAX])
+        speed = np.choose(mode, [speed_gsb, v_vrb, v_vrb, v_vrb, np.minimum(speed_gsb, v_vrb), self.v_floor])
         speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)  # safety stop
         return steering, speed, LABELS[mode]
 

@@ -44,6 +44,12 @@ class GuardedGoalSeeking:
         """
         distance = np.asarray(distance, dtype=float)
         bearing = np.asarray(bearing, dtype=float)
+        if len(distance) == 1:  # one robot: the same formulas on floats (np.arctan keeps its rounding)
+            d, b = float(distance[0]), float(bearing[0])
+            table, speed = self.system.evaluate_one(d, thesis_angle_error(b))
+            arc = float(np.arctan(2.0 * self.wheelbase * math.sin(b) / max(d, 1e-9)))
+            guard = 2 if abs(arc) > ALPHA_MAX else (1 if abs(table) < abs(arc) else 0)
+            return np.array([(table, arc, 0.0)[guard]]), np.array([speed]), np.array([guard])
         out = evaluate(self.system, np.column_stack([distance, thesis_angle_error(bearing)]))
         table = out[:, 0]
         arc = np.arctan(2.0 * self.wheelbase * np.sin(bearing) / np.maximum(distance, 1e-9))

@@ -45,6 +45,7 @@ GSB, FOA, ROA, LOA = 0, 1, 2, 3
 THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (SPEC §3.3)
 ANGLES = np.deg2rad(THESIS_ANGLES_DEG)
 SIDE = np.array([FOA, ROA, LOA, ROA, LOA, ROA, LOA])  # module of each sensor's side: d2, d4, d6 right
+_ANGLES, _SIDE = ANGLES.tolist(), SIDE.tolist()  # the same, for one robot's float path
 
 
 @dataclass(frozen=True)
@@ -60,8 +61,19 @@ class SupervisorParams:
 
 def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams = SupervisorParams()) -> np.ndarray:
     """Behaviour codes ``(N,)`` from readings ``d`` ``(N, 7)`` in C1…C7 order and the goal's
-    distance and bearing ``(N,)`` (bearing CCW, > 0 on the left)."""
+    distance and bearing ``(N,)`` (bearing CCW, > 0 on the left). One robot takes plain floats
+    (the same tests; NumPy's fixed cost per call would dominate)."""
     d = np.asarray(d, dtype=float)
+    if len(d) == 1:
+        row = d[0].tolist()
+        look = min(max(float(np.asarray(goal_bearing)[0]), -math.pi / 2), math.pi / 2)
+        need = min(float(np.asarray(goal_distance)[0]), params.clear)
+        nearest = min(row)
+        goal_clear = nearest >= params.keep and all(
+            r >= need for a, r in zip(_ANGLES, row) if abs(a - look) <= params.vision + 1e-9)
+        if nearest >= params.detection or goal_clear:
+            return np.array([GSB])
+        return np.array([FOA if row[0] < params.front else _SIDE[row.index(nearest)]])
     look = np.clip(np.asarray(goal_bearing, dtype=float), -math.pi / 2, math.pi / 2)
     window = np.abs(ANGLES[None, :] - look[:, None]) <= params.vision + 1e-9  # around the goal bearing
     need = np.minimum(np.asarray(goal_distance, dtype=float), params.clear)
@@ -85,6 +97,7 @@ class Switch:
 
     def __init__(self, rank, dwell: int = 10):
         self.rank = np.asarray(rank, dtype=int)
+        self._rank = self.rank.tolist()
         self.dwell = int(dwell)
         self.reset()
 
@@ -101,9 +114,20 @@ class Switch:
         if self.mode is None or len(self.mode) != len(wanted):
             self.mode, self.held = wanted.copy(), np.zeros(len(wanted), dtype=int)
             return self.mode.copy()
+        if len(wanted) == 1:  # one robot: the same rule on ints
+            w, m, held = int(wanted[0]), int(self.mode[0]), int(self.held[0])
+            up, down = self._rank[w] > self._rank[m], self._rank[w] < self._rank[m]
+            take = w != m and (up and _first(urgent) or held >= self.dwell and (not down or _first(release)))
+            self.mode, self.held = np.array([w if take else m]), np.array([0 if take else held + 1])
+            return self.mode.copy()
         up, down = self.rank[wanted] > self.rank[self.mode], self.rank[wanted] < self.rank[self.mode]
         settled = self.held >= self.dwell
         take = (wanted != self.mode) & (up & urgent | settled & (~down | release))
         self.mode = np.where(take, wanted, self.mode)
         self.held = np.where(take, 0, self.held + 1)
         return self.mode.copy()
+
+
+def _first(flags) -> bool:
+    """The one robot's value of a per-robot flag given as an array ``(1,)`` or a plain bool."""
+    return flags if isinstance(flags, bool) else bool(np.asarray(flags).reshape(-1)[0])

@@ -56,7 +56,8 @@ class HitMemory:
         """Store this step's hits and return every remembered point in the current robot frames:
         ``(points (N, steps·S, 2), valid (N, steps·S) bool)``. ``ranges`` ``(N, S)`` are read along
         ``angles`` ``(S,)`` or ``(N, S)`` (relative to each heading); a reading at ``max_range`` or
-        beyond (or not finite) is no hit."""
+        beyond (or not finite) is no hit. One robot's new hits are placed with ``math`` (the same
+        formulas; ``math.cos``/``math.sin`` round as NumPy's)."""
         pose = np.asarray(pose, dtype=float)
         ranges = np.asarray(ranges, dtype=float)
         n, s = ranges.shape
@@ -64,27 +65,50 @@ class HitMemory:
             self._points = np.zeros((n, self.steps, s, 2))
             self._valid = np.zeros((n, self.steps, s), dtype=bool)
             self._k = 0
-        heading = pose[:, 2:3] + np.broadcast_to(np.asarray(angles, dtype=float), ranges.shape)
-        hit = np.isfinite(ranges) & (ranges < max_range - 1e-9)
-        ranges = np.where(hit, ranges, 0.0)
         slot = self._k % self.steps
-        self._points[:, slot, :, 0] = pose[:, 0:1] + ranges * np.cos(heading)
-        self._points[:, slot, :, 1] = pose[:, 1:2] + ranges * np.sin(heading)
-        self._valid[:, slot] = hit
         self._k += 1
+        if n == 1:
+            x, y, theta = pose[0].tolist()
+            limit = max_range - 1e-9
+            placed, hit = [], []
+            for r, a in zip(ranges[0].tolist(), np.asarray(angles, dtype=float).reshape(-1).tolist()):  # (S,) or (1, S)
+                if r < limit and math.isfinite(r):
+                    placed.append((x + r * math.cos(theta + a), y + r * math.sin(theta + a)))
+                    hit.append(True)
+                else:
+                    placed.append((x, y))
+                    hit.append(False)
+            self._points[0, slot] = placed
+            self._valid[0, slot] = hit
+            c, si = math.cos(theta), math.sin(theta)
+        else:
+            heading = pose[:, 2:3] + np.broadcast_to(np.asarray(angles, dtype=float), ranges.shape)
+            hit = np.isfinite(ranges) & (ranges < max_range - 1e-9)
+            ranges = np.where(hit, ranges, 0.0)
+            self._points[:, slot, :, 0] = pose[:, 0:1] + ranges * np.cos(heading)
+            self._points[:, slot, :, 1] = pose[:, 1:2] + ranges * np.sin(heading)
+            self._valid[:, slot] = hit
+            c, si = np.cos(pose[:, 2:3]), np.sin(pose[:, 2:3])
         rel = self._points.reshape(n, -1, 2) - pose[:, None, :2]
-        c, si = np.cos(pose[:, 2])[:, None], np.sin(pose[:, 2])[:, None]
-        local = np.stack([c * rel[..., 0] + si * rel[..., 1], c * rel[..., 1] - si * rel[..., 0]], axis=-1)
+        rx, ry = rel[..., 0], rel[..., 1]
+        local = np.empty_like(rel)
+        np.add(c * rx, si * ry, out=local[..., 0])
+        np.subtract(c * ry, si * rx, out=local[..., 1])
         return local, self._valid.reshape(n, -1)
 
 
 def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians(15.0)):
     """``(ranges (N, S+1), angles (N, S+1))``: the ring's readings plus the nearest obstacle point
     (``distance``, ``bearing`` ``(N,)``) where it falls within ``half_cone`` of a sensor direction
-    (the sonar cones of the module docstring), ``inf`` elsewhere."""
+    (the sonar cones of the module docstring), ``inf`` elsewhere. One robot takes ``math``."""
     ranges = np.asarray(ranges, dtype=float)
     angles = np.asarray(angles, dtype=float)
     bearing = np.asarray(bearing, dtype=float)
+    if len(ranges) == 1 and angles.ndim == 1:
+        b = float(bearing[0])
+        gap = min(abs(math.atan2(math.sin(b - a), math.cos(b - a))) for a in angles.tolist())
+        echo = float(np.asarray(distance, dtype=float)[0]) if gap <= half_cone else math.inf
+        return np.append(ranges, echo)[None, :], np.append(angles, b)[None, :]
     gap = np.abs(np.angle(np.exp(1j * (bearing[:, None] - angles[None, :])))).min(axis=1)
     echo = np.where(gap <= half_cone, np.asarray(distance, dtype=float), np.inf)
     return (np.column_stack([ranges, echo]),
@@ -97,7 +121,7 @@ def step_clearance(points, valid, speed, dt: float, body: float = DEFAULT_PARAMS
     heading whatever the steering, so the next position is (V Δt, 0) in the robot frame (the exact
     arc of the ``"arc"`` integrator bends off it by less than a centimetre at the turn speeds)."""
     ahead = points[..., 0] - (np.asarray(speed, dtype=float) * dt)[:, None]
-    return np.where(valid, np.hypot(ahead, points[..., 1]) - body, np.inf).min(axis=1)
+    return (np.hypot(ahead, points[..., 1]) - body).min(axis=1, initial=np.inf, where=valid)
 
 
 def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: float = TURN_RADIUS):
@@ -108,19 +132,16 @@ def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: flo
     it). A point ahead of the robot (x ≥ 0) is passed by the half circle at | |p − c| − R |, one
     behind it at the nearer end of the half circle (the start or the point 2R to the side).
     ``ahead``: free length of the straight lane of half-width ``body`` in front of the robot.
-    Points nowhere: ``inf``.
+    Points nowhere: ``inf``. Both sides are computed in one pass (a leading axis of 2).
     """
     x, y = points[..., 0], points[..., 1]
-    rooms = []
-    for side in (1.0, -1.0):
-        cy = side * radius
-        passing = np.abs(np.hypot(x, y - cy) - radius)
-        ends = np.minimum(np.hypot(x, y), np.hypot(x, y - 2.0 * cy))
-        gap = np.where(x >= 0.0, passing, ends) - body
-        rooms.append(np.where(valid, gap, np.inf).min(axis=1))
+    centre = np.array([radius, -radius])[:, None, None]  # y of the turn centres, left and right
+    passing = np.abs(np.hypot(x, y - centre) - radius)
+    ends = np.minimum(np.hypot(x, y), np.hypot(x, y - 2.0 * centre))
+    left, right = (np.where(x >= 0.0, passing, ends) - body).min(axis=2, initial=np.inf, where=valid)
     lane = valid & (x > 0.0) & (np.abs(y) < body)
-    ahead = np.where(lane, x - body, np.inf).min(axis=1)
-    return rooms[0], rooms[1], ahead
+    ahead = (x - body).min(axis=1, initial=np.inf, where=lane)
+    return left, right, ahead
 
 
 class TurnGuard:
@@ -153,6 +174,18 @@ class TurnGuard:
         points, valid = self.memory.update(obs.pose, ranges, angles, obs.max_range)
         self._hits = points, valid
         left, right, ahead = turning_room(points, valid)
+        if len(left) == 1:  # one robot: the same tests on floats
+            (l, r, a), t = (float(v[0]) for v in (left, right, ahead)), bool(np.asarray(turning)[0])
+            step = float(np.asarray(obs.speed)[0]) * obs.dt
+            wanted = (a - step < (self.lane + 0.5 if t else self.lane)
+                      and max(l, r) - step < (self.margin + 0.2 if t else self.margin))
+            if abs(l - r) < 0.1:  # inf − inf (both sides free) is NaN: not close
+                side = 1 if float(np.asarray(bearing)[0]) >= 0 else -1
+            else:
+                side = 1 if l > r else -1
+            if not (t and self._side is not None and len(self._side) == 1):
+                self._side = np.array([side])
+            return np.array([wanted]), self._side
         step = np.asarray(obs.speed, dtype=float) * obs.dt
         lane = np.where(turning, self.lane + 0.5, self.lane)
         margin = np.where(turning, self.margin + 0.2, self.margin)
