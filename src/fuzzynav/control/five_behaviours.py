@@ -63,8 +63,11 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 GSB_VRB, TURN = 4, 5  # mode codes beyond supervisor.GSB, FOA, ROA, LOA
 LABELS = np.array(["GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB"])
 RANK = (0, 3, 2, 2, 1, 4)  # caution rank of each mode (supervisor.Switch): FOA above ROA, LOA
-WANTED = np.array([[supervisor.GSB, supervisor.FOA, supervisor.ROA, supervisor.LOA],  # mode asked for a
-                   [GSB_VRB, supervisor.FOA, supervisor.ROA, supervisor.LOA]])  # choice, [sensed?, choice]
+# the mode asked for, WANTED[turn?, sensed?, supervisor.select's choice]: the full-lock turn first,
+# goal seeking with obstacles sensed is GSB+VRB
+WANTED = np.array([[[supervisor.GSB, supervisor.FOA, supervisor.ROA, supervisor.LOA],
+                    [GSB_VRB, supervisor.FOA, supervisor.ROA, supervisor.LOA]], [[TURN] * 4, [TURN] * 4]])
+SEEKING = np.array([True, False, False, False, True, False, False])  # mode GSB or GSB+VRB; [-1]: none yet
 AVOIDERS = (supervisor.FOA, supervisor.ROA, supervisor.LOA)
 AVOIDER_COLUMNS = ((0, 1, 2), (1, 3, 5), (2, 4, 6))  # FOA d1 d2 d3, ROA d2 d4 d6, LOA d3 d5 d7 (Tables IV.3-IV.5)
 
@@ -101,29 +104,34 @@ class FiveBehaviourNavigator(BatchedController):
         d = np.asarray(obs.ranges, dtype=float)[:, self._columns]  # (N, 7): d1…d7
         distance, bearing = obs.target_distance, obs.target_bearing
         before = self.switch.mode if self.switch.mode is not None else np.full(len(d), -1)
-        seeking = (before == supervisor.GSB) | (before == GSB_VRB)
-        if seeking.all() or not seeking.any():  # one set of thresholds for all (always so for one robot)
-            choice = supervisor.select(d, distance, bearing, self.kept if seeking.all() else self.params)
+        seeking = np.count_nonzero(SEEKING[before])
+        if seeking in (0, len(d)):  # one set of thresholds for all (always so for one robot)
+            choice = supervisor.select(d, distance, bearing, self.kept if seeking else self.params)
         else:
-            choice = np.where(seeking, supervisor.select(d, distance, bearing, self.kept),
+            choice = np.where(SEEKING[before], supervisor.select(d, distance, bearing, self.kept),
                               supervisor.select(d, distance, bearing, self.params))
-        dmin = d.min(axis=1)
+        dmin = np.minimum.reduce(d, axis=1)
         turn, side = self.guard(obs, before == TURN, bearing)
-        wanted = np.where(turn, TURN, WANTED[(dmin < self.params.detection).astype(int), choice])
-        mode = self.switch(wanted, True, (dmin < self.params.keep) | (wanted == TURN))
+        wanted = WANTED[turn.astype(np.intp), (dmin < self.params.detection).astype(np.intp), choice]
+        mode = self.switch(wanted, True, (dmin < self.params.keep) | turn)
 
-        modes = set(mode.tolist())  # only the behaviours some robot runs are evaluated
-        steer_gsb = speed_gsb = v_vrb = side * ALPHA_MAX  # placeholders where no robot reads them
+        # (α, V) of each mode, evaluated only for the modes some robot is in (placeholders elsewhere)
+        modes = set(mode.tolist())
+        full_lock = side * ALPHA_MAX
+        steer_gsb = speed_gsb = v_vrb = full_lock
         if modes & {supervisor.GSB, GSB_VRB}:
             steer_gsb, speed_gsb, _ = self.gsb(distance, bearing)
         if modes & {supervisor.FOA, supervisor.ROA, supervisor.LOA, GSB_VRB}:
             v_now = np.asarray(obs.speed, dtype=float)
             adjust = evaluate_columns(self.vrb, v_now, dmin)[:, 0]
-            v_vrb = np.clip(v_now + adjust, self.v_floor, self.v_max)  # eq IV.9
+            v_vrb = np.minimum(np.maximum(v_now + adjust, self.v_floor), self.v_max)  # eq IV.9
         avoider_steering = [evaluate(system, d[:, cols])[:, 0] if code in modes else steer_gsb
                             for code, system, cols in zip(AVOIDERS, self.avoiders, AVOIDER_COLUMNS)]
-        steering = np.choose(mode, [steer_gsb, *avoider_steering, steer_gsb, side * ALPHA_MAX])
-        speed = np.choose(mode, [speed_gsb, v_vrb, v_vrb, v_vrb, np.minimum(speed_gsb, v_vrb), self.v_floor])
+        capped = np.minimum(speed_gsb, v_vrb) if GSB_VRB in modes else speed_gsb
+        turning = np.full(len(mode), self.v_floor) if TURN in modes else full_lock
+        pick = mode.choose if len(mode) > 1 else (lambda options: options[int(mode[0])])  # one robot: its mode's
+        steering = pick([steer_gsb, *avoider_steering, steer_gsb, full_lock])
+        speed = pick([speed_gsb, v_vrb, v_vrb, v_vrb, capped, turning])
         speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)  # safety stop
         return steering, speed, LABELS[mode]
 

@@ -29,6 +29,7 @@ Robot frame: x ahead, y to the left (α > 0 turns left, SPEC §0).
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -105,10 +106,10 @@ def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians
     angles = np.asarray(angles, dtype=float)
     bearing = np.asarray(bearing, dtype=float)
     if len(ranges) == 1 and angles.ndim == 1:
-        b = float(bearing[0])
-        gap = min(abs(math.atan2(math.sin(b - a), math.cos(b - a))) for a in angles.tolist())
+        b, listed = float(bearing[0]), angles.tolist()
+        gap = min([abs(math.atan2(math.sin(b - a), math.cos(b - a))) for a in listed])
         echo = float(np.asarray(distance, dtype=float)[0]) if gap <= half_cone else math.inf
-        return np.append(ranges, echo)[None, :], np.append(angles, b)[None, :]
+        return np.array([ranges[0].tolist() + [echo]]), np.array([listed + [b]])
     gap = np.abs(np.angle(np.exp(1j * (bearing[:, None] - angles[None, :])))).min(axis=1)
     echo = np.where(gap <= half_cone, np.asarray(distance, dtype=float), np.inf)
     return (np.column_stack([ranges, echo]),
@@ -121,7 +122,7 @@ def step_clearance(points, valid, speed, dt: float, body: float = DEFAULT_PARAMS
     heading whatever the steering, so the next position is (V Δt, 0) in the robot frame (the exact
     arc of the ``"arc"`` integrator bends off it by less than a centimetre at the turn speeds)."""
     ahead = points[..., 0] - (np.asarray(speed, dtype=float) * dt)[:, None]
-    return (np.hypot(ahead, points[..., 1]) - body).min(axis=1, initial=np.inf, where=valid)
+    return np.minimum.reduce(np.hypot(ahead, points[..., 1]) - body, axis=1, initial=np.inf, where=valid)
 
 
 def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: float = TURN_RADIUS):
@@ -135,13 +136,23 @@ def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: flo
     Points nowhere: ``inf``. Both sides are computed in one pass (a leading axis of 2).
     """
     x, y = points[..., 0], points[..., 1]
-    centre = np.array([radius, -radius])[:, None, None]  # y of the turn centres, left and right
+    centre, far = _turn_centres(radius)
     passing = np.abs(np.hypot(x, y - centre) - radius)
-    ends = np.minimum(np.hypot(x, y), np.hypot(x, y - 2.0 * centre))
-    left, right = (np.where(x >= 0.0, passing, ends) - body).min(axis=2, initial=np.inf, where=valid)
+    ends = np.minimum(np.hypot(x, y), np.hypot(x, y - far))
+    left, right = np.minimum.reduce(np.where(x >= 0.0, passing, ends) - body, axis=2, initial=np.inf, where=valid)
     lane = valid & (x > 0.0) & (np.abs(y) < body)
-    ahead = (x - body).min(axis=1, initial=np.inf, where=lane)
+    ahead = np.minimum.reduce(x - body, axis=1, initial=np.inf, where=lane)
     return left, right, ahead
+
+
+@functools.lru_cache(maxsize=8)
+def _turn_centres(radius: float) -> tuple[np.ndarray, np.ndarray]:
+    """y of the two full-lock turn centres (left, right) and of the far ends of the half turns,
+    shaped ``(2, 1, 1)`` to broadcast over ``(N, P)`` points."""
+    centre = np.array([1.0 * radius, -1.0 * radius])[:, None, None]
+    far = 2.0 * centre
+    centre.flags.writeable = far.flags.writeable = False  # shared by every call
+    return centre, far
 
 
 class TurnGuard:
