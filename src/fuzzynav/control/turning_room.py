@@ -136,9 +136,11 @@ def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: flo
     Points nowhere: ``inf``. Both sides are computed in one pass (a leading axis of 2).
     """
     x, y = points[..., 0], points[..., 1]
-    centre, far = _turn_centres(radius)
-    passing = np.abs(np.hypot(x, y - centre) - radius)
-    ends = np.minimum(np.hypot(x, y), np.hypot(x, y - far))
+    offsets = _turn_offsets(radius)
+    # distances from the turn centres (left, right), the robot, the far ends (left, right): one hypot
+    h = np.hypot(x, y - offsets)
+    passing = np.abs(h[:2] - radius)
+    ends = np.minimum(h[2], h[3:])
     left, right = np.minimum.reduce(np.where(x >= 0.0, passing, ends) - body, axis=2, initial=np.inf, where=valid)
     lane = valid & (x > 0.0) & (np.abs(y) < body)
     ahead = np.minimum.reduce(x - body, axis=1, initial=np.inf, where=lane)
@@ -146,13 +148,13 @@ def turning_room(points, valid, body: float = DEFAULT_PARAMS.radius, radius: flo
 
 
 @functools.lru_cache(maxsize=8)
-def _turn_centres(radius: float) -> tuple[np.ndarray, np.ndarray]:
-    """y of the two full-lock turn centres (left, right) and of the far ends of the half turns,
-    shaped ``(2, 1, 1)`` to broadcast over ``(N, P)`` points."""
-    centre = np.array([1.0 * radius, -1.0 * radius])[:, None, None]
-    far = 2.0 * centre
-    centre.flags.writeable = far.flags.writeable = False  # shared by every call
-    return centre, far
+def _turn_offsets(radius: float) -> np.ndarray:
+    """y of the two full-lock turn centres (left, right) in the robot frame, of the robot (0) and
+    of the far ends of the two half turns, shaped ``(5, 1, 1)`` to broadcast over ``(N, P)`` points."""
+    centre = np.array([1.0 * radius, -1.0 * radius])
+    offsets = np.concatenate([centre, [0.0], 2.0 * centre])[:, None, None]
+    offsets.flags.writeable = False  # shared by every call
+    return offsets
 
 
 class TurnGuard:
