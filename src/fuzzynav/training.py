@@ -24,7 +24,7 @@ TRAINERS["q-goal"] = (f"{_RL}:train_q_goal", "tabular Q-learning goal seeking, 1
 TRAINERS["fql-goal"] = (f"{_RL}:train_fql_goal", "FQL goal seeking, 15 rules x 3, steering then speed (§VI.5.1)")
 TRAINERS["fql-goal-35"] = (f"{_RL}:train_fql_goal_35", "FQL goal seeking, 35 rules x 5 (Figs VI.13-VI.14)")
 TRAINERS["fql-goal-traces"] = (f"{_RL}:train_fql_goal_traces", "FQL goal seeking with eligibility traces (VI.16)")
-TRAINERS["fql-avoid"] = (f"{_RL}:train_fql_avoid", "FQL obstacle avoidance, 8 rules, as a goal navigator (§VI.5.2)")
+TRAINERS["fql-avoid"] = (f"{_RL}:train_fql_avoid", "FQL obstacle avoidance, 8 rules x which side is more open, as a goal navigator (§VI.5.2)")
 TRAINERS["fql-wall"] = (f"{_RL}:train_fql_wall", "wall follower of Table VI.2 optimised by FQL (§VI.5.3.2)")
 
 

@@ -91,3 +91,20 @@ def test_wall_follower_reads_its_rays_and_is_rewarded_on_the_modules(tmp_path):
     no = np.zeros(1, dtype=bool)
     assert env.reward(state(far), state(tip), no, no).tolist() == [-1.0]  # eq VI.21: some d_i < d_m
     assert env.reward(state(far), state(far), no, no).tolist() == [0.0]
+
+
+def test_the_avoider_is_credited_only_where_it_acts(tmp_path):
+    """Where the supervisor hands the robot to goal seeking, the learner sees "all far" (the free
+    rules), so the avoider's rules are not credited for the goal seeker's decisions."""
+    steering = next(train_rl.fql_avoid_phases(tmp_path / "avoid.json", 100, batch=2))
+    ranges = np.full((2, 7), 4.0)
+    ranges[:, 6] = 2.0  # a wall on the left, 2 m away, beside a clear path to the goal ahead
+    ranges[1, :3] = 1.0  # and for the second robot an obstacle dead ahead, 1 m
+    goal = np.array([[10.0, 0.0], [10.0, 0.0]])  # (d_rg, θ_r − θ_d): the goal straight ahead
+    state = RobotState(World(), np.zeros((2, 3)), np.ones(2), np.zeros(2), ranges=ranges, goal=goal,
+                       sides=learned.side_distances(ranges))
+    x = steering.env.observe(state)
+    assert x[0, :3].tolist() == [train_rl.D_MAX] * 3  # goal seeking acts: the free rules
+    assert x[1, :3].tolist() == learned.side_distances(ranges)[1].tolist()  # the avoider acts
+    w = steering.learner.strengths(x)
+    assert w[0, train_rl.free_rules()].sum() == pytest.approx(1.0) and w[1, train_rl.free_rules()].sum() == 0.0

@@ -11,7 +11,8 @@ Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, ac
                         random starts (§VI.5.1, Figs VI.7–VI.10)
 ``fql-goal-35``         FQL on the chapter IV partition, 35 rules × 5 conclusions (VI.13–VI.14)
 ``fql-goal-traces``     ``fql-goal``'s steering with eligibility traces (Figs VI.15–VI.16)
-``fql-avoid``           FQL obstacle avoider, 8 rules × 3 over front/right/left distances,
+``fql-avoid``           FQL obstacle avoider, 8 rules × 3 over front/right/left distances —
+                        × 2 by which side is more open (a deviation, :data:`AVOID_OPEN`) —
                         steering (VI.20) then speed (VI.21), trained inside the goal navigator
                         (§VI.5.2, Figs VI.17–VI.22); model = the navigator of Figs VI.20, VI.24
 ``fql-wall``            the wall follower of Table VI.2 with 3 interpretations per conclusion
@@ -485,7 +486,7 @@ OPEN_PRIOR = {0: (0, 2), 3: (0, 2)}
 # front, right and left are all near (a wall or a corner ahead) — in 100 random worlds they collided
 # 4–8 times for every training seed. The avoider gets a fourth input, "open" (control.learned.openness,
 # the mean reading of the left module minus the right's) with two labels D (right more open) and G
-# (left more open), crossing over ±OPEN_WIDTH: 16 rules, 14 of them learned. The thesis' 8 rules stay
+# (left more open), crossing over [0, OPEN_WIDTH]: 16 rules, 14 of them learned. The thesis' 8 rules stay
 # available (open_side=False, the study fql-avoid-8 of benchmarks/rl_bench.py).
 AVOID_OPEN = True
 OPEN_WIDTH = 0.05  # m: |openness| beyond which one side is the more open (narrow: a tie must not cancel the turn)
@@ -498,10 +499,12 @@ def distance_variable(name: str, d_min: float, d_safe: float, d_max: float = D_M
 
 
 def open_variable(width: float = OPEN_WIDTH, d_max: float = D_MAX) -> Variable:
-    """Which side is more open (:func:`fuzzynav.control.learned.openness`): D (right, negative)
-    and G (left, positive), a strong partition crossing at 0 over [−width, width]."""
-    return Variable("open", (-d_max, d_max), {"D": Trapezoidal(-d_max, -d_max, -width, width),
-                                            "G": Trapezoidal(-width, width, d_max, d_max)})
+    """Which side is more open (:func:`fuzzynav.control.learned.openness`): D (right, ≤ 0) and
+    G (left, ≥ ``width``), a strong partition crossing over [0, width]. A tie (openness 0: e.g. a
+    thin post seen by C1 alone) is D, so that it turns right as rule R1 of Table IV.3 does — a
+    partition symmetric about 0 would blend the two opposite turns of a tie into going straight."""
+    return Variable("open", (-d_max, d_max), {"D": Trapezoidal(-d_max, -d_max, 0.0, width),
+                                            "G": Trapezoidal(0.0, width, d_max, d_max)})
 
 
 def avoid_inputs(open_side: bool = AVOID_OPEN) -> list[Variable]:
@@ -553,6 +556,7 @@ def _avoid_candidates(values: dict, open_side: bool) -> np.ndarray:
 
 def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bool = AVOID_OPEN):
     """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
+    from fuzzynav.control import supervisor
     from fuzzynav.control.goal_seeking import GuardedGoalSeeking
     from fuzzynav.control.learned import avoidance_inputs, avoidance_supervisor, supervise
 
@@ -567,7 +571,12 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bo
     sensors = SensorRing()
 
     def observe(s):
-        return avoidance_inputs(s.ranges, open_side)
+        """The avoider's inputs; where the supervisor hands the robot to goal seeking, "all far"
+        (the free rules): the avoider does not act there, so its rules get no credit for it."""
+        x = avoidance_inputs(s.ranges, open_side)
+        seeking = supervisor.select(s.ranges, s.goal[:, 0], -s.goal[:, 1], params) == supervisor.GSB
+        x[seeking, :3] = D_MAX
+        return x
 
     def navigate(s, alpha, speed):
         """The navigator of control.learned with the learner's (α, V_r) shares of the avoider."""
