@@ -63,14 +63,14 @@ def evaluate(system, X) -> np.ndarray:
     plain-Python scalar path (:meth:`FuzzySystem.evaluate_one`, a few µs instead of the ~0.1 ms
     of NumPy's per-call overhead), which matters for one robot stepped at a time."""
     if len(X) == 1:
-        return np.array([system.evaluate_one(*X[0])])
+        return np.array([system.evaluate_one(*X[0].tolist())])
     return system.evaluate(X)
 
 
 def evaluate_columns(system, *columns) -> np.ndarray:
     """:func:`evaluate` on inputs given as columns ``(N,)`` each; one robot skips the stacking."""
     if len(columns[0]) == 1:
-        return np.array([system.evaluate_one(*(column[0] for column in columns))])
+        return np.array([system.evaluate_one(*[float(column[0]) for column in columns])])
     return system.evaluate(np.column_stack(columns))
 
 

@@ -69,7 +69,8 @@ WANTED = np.array([[[supervisor.GSB, supervisor.FOA, supervisor.ROA, supervisor.
                     [GSB_VRB, supervisor.FOA, supervisor.ROA, supervisor.LOA]], [[TURN] * 4, [TURN] * 4]])
 SEEKING = np.array([True, False, False, False, True, False, False])  # mode GSB or GSB+VRB; [-1]: none yet
 AVOIDERS = (supervisor.FOA, supervisor.ROA, supervisor.LOA)
-AVOIDER_COLUMNS = ((0, 1, 2), (1, 3, 5), (2, 4, 6))  # FOA d1 d2 d3, ROA d2 d4 d6, LOA d3 d5 d7 (Tables IV.3-IV.5)
+AVOIDER_COLUMNS = tuple(np.array(cols) for cols in ((0, 1, 2), (1, 3, 5), (2, 4, 6)))  # FOA d1 d2 d3, ROA d2 d4 d6,
+# LOA d3 d5 d7 (Tables IV.3-IV.5)
 
 
 class FiveBehaviourNavigator(BatchedController):

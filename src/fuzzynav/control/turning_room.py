@@ -49,7 +49,7 @@ class HitMemory:
 
     def reset(self) -> None:
         """Forget every point (a new episode)."""
-        self._points = None  # (N, steps, S, 2) world frame
+        self._x = self._y = None  # (N, steps, S) world frame
         self._valid = None  # (N, steps, S) bool
         self._k = 0
 
@@ -58,12 +58,13 @@ class HitMemory:
         ``(points (N, steps·S, 2), valid (N, steps·S) bool)``. ``ranges`` ``(N, S)`` are read along
         ``angles`` ``(S,)`` or ``(N, S)`` (relative to each heading); a reading at ``max_range`` or
         beyond (or not finite) is no hit. One robot's new hits are placed with ``math`` (the same
-        formulas; ``math.cos``/``math.sin`` round as NumPy's)."""
+        formulas; ``math.cos``/``math.sin`` round as NumPy's). ``points[..., 0]`` and
+        ``points[..., 1]`` are contiguous (a transposed view of x and y rows)."""
         pose = np.asarray(pose, dtype=float)
         ranges = np.asarray(ranges, dtype=float)
         n, s = ranges.shape
-        if self._points is None or self._points.shape[0] != n or self._points.shape[2] != s:
-            self._points = np.zeros((n, self.steps, s, 2))
+        if self._x is None or self._x.shape != (n, self.steps, s):
+            self._x, self._y = np.zeros((n, self.steps, s)), np.zeros((n, self.steps, s))
             self._valid = np.zeros((n, self.steps, s), dtype=bool)
             self._k = 0
         slot = self._k % self.steps
@@ -71,31 +72,25 @@ class HitMemory:
         if n == 1:
             x, y, theta = pose[0].tolist()
             limit = max_range - 1e-9
-            placed, hit = [], []
-            for r, a in zip(ranges[0].tolist(), np.asarray(angles, dtype=float).reshape(-1).tolist()):  # (S,) or (1, S)
-                if r < limit and math.isfinite(r):
-                    placed.append((x + r * math.cos(theta + a), y + r * math.sin(theta + a)))
-                    hit.append(True)
-                else:
-                    placed.append((x, y))
-                    hit.append(False)
-            self._points[0, slot] = placed
+            hit = [r < limit and math.isfinite(r) for r in ranges[0].tolist()]
+            heading = [theta + a for a in np.asarray(angles, dtype=float).reshape(-1).tolist()]  # (S,) or (1, S)
+            self._x[0, slot] = [x + r * math.cos(h) if ok else x for r, h, ok in zip(ranges[0].tolist(), heading, hit)]
+            self._y[0, slot] = [y + r * math.sin(h) if ok else y for r, h, ok in zip(ranges[0].tolist(), heading, hit)]
             self._valid[0, slot] = hit
             c, si = math.cos(theta), math.sin(theta)
         else:
             heading = pose[:, 2:3] + np.broadcast_to(np.asarray(angles, dtype=float), ranges.shape)
             hit = np.isfinite(ranges) & (ranges < max_range - 1e-9)
             ranges = np.where(hit, ranges, 0.0)
-            self._points[:, slot, :, 0] = pose[:, 0:1] + ranges * np.cos(heading)
-            self._points[:, slot, :, 1] = pose[:, 1:2] + ranges * np.sin(heading)
+            self._x[:, slot] = pose[:, 0:1] + ranges * np.cos(heading)
+            self._y[:, slot] = pose[:, 1:2] + ranges * np.sin(heading)
             self._valid[:, slot] = hit
-            c, si = np.cos(pose[:, 2:3]), np.sin(pose[:, 2:3])
-        rel = self._points.reshape(n, -1, 2) - pose[:, None, :2]
-        rx, ry = rel[..., 0], rel[..., 1]
-        local = np.empty_like(rel)
-        np.add(c * rx, si * ry, out=local[..., 0])
-        np.subtract(c * ry, si * rx, out=local[..., 1])
-        return local, self._valid.reshape(n, -1)
+            c, si, x, y = np.cos(pose[:, 2:3]), np.sin(pose[:, 2:3]), pose[:, 0:1], pose[:, 1:2]
+        rx, ry = self._x.reshape(n, -1) - x, self._y.reshape(n, -1) - y
+        local = np.empty((n, 2, rx.shape[1]))
+        np.add(c * rx, si * ry, out=local[:, 0])
+        np.subtract(c * ry, si * rx, out=local[:, 1])
+        return local.transpose(0, 2, 1), self._valid.reshape(n, -1)
 
 
 def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians(15.0)):
