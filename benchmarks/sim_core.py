@@ -13,6 +13,9 @@ see the same load, and the ratio is the median of the per-chunk ratios. Run:
 
     python benchmarks/sim_core.py [--json] [--controller fuzzy-5b] [--irsim-python /work/venv-irsim/bin/python]
 
+``--profile`` instead runs the one-robot loop under cProfile and prints where a step's time goes
+(µs per step by function, cumulative; cProfile inflates each Python call, so read the shares).
+
 ``--json`` prints only one JSON object. Without a usable IR-SIM interpreter (or with
 ``--irsim-python ''``) the IR-SIM column is reported as unavailable.
 """
@@ -138,6 +141,31 @@ def chunks(scenario, starts, steps: int, count: int = 7, between=None, controlle
     return rates
 
 
+def profile(scenario, start, controller, steps: int = 3000, top: int = 25) -> None:
+    """Print µs per step (cumulative, own) of the ``top`` costliest fuzzynav functions in the
+    one-robot loop, under cProfile (``--profile``)."""
+    import cProfile
+    import pstats
+
+    sim = BatchSimulator(scenario, controller or Circling(), starts=start, record=False)
+
+    def loop():
+        for _ in range(steps):
+            if sim.done:
+                sim.reset()
+            sim.step()
+
+    loop()  # warm up: caches, first-call set-up
+    profiler = cProfile.Profile()
+    profiler.runcall(loop)
+    stats = pstats.Stats(profiler).stats
+    rows = sorted(((cum, own, f"{Path(file).name}:{line}({name})") for (file, line, name), (_, _, own, cum, _)
+                   in stats.items() if "fuzzynav" in file), reverse=True)
+    print(f"{'µs/step cumulative':>18} {'own':>7}  function (cProfile, {steps} steps, one robot)")
+    for cum, own, where in rows[:top]:
+        print(f"{cum / steps * 1e6:18.1f} {own / steps * 1e6:7.1f}  {where}")
+
+
 def median_pair(rates) -> tuple[float, float]:
     return statistics.median(r[0] for r in rates), statistics.median(r[1] for r in rates)
 
@@ -149,10 +177,14 @@ def main(argv=None) -> None:
                         help="Python of a venv with ir-sim installed ('' to skip)")
     parser.add_argument("--controller", metavar="NAME",
                         help="a registered controller in the loop (e.g. fuzzy-5b) instead of the constant command")
+    parser.add_argument("--profile", action="store_true", help="where the one-robot step's time goes (cProfile)")
     args = parser.parse_args(argv)
     make = (lambda: make_controller(args.controller)) if args.controller else (lambda: None)
     scenario = world_of_15()
     one = start_poses(scenario, 1, clearance=3.0)  # room for the circle of diameter 2.4 m
+    if args.profile:
+        profile(scenario, one, make())
+        return
     irsim, irsim_rates = None, []
     if args.irsim_python and os.path.exists(args.irsim_python):
         try:

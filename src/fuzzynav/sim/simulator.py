@@ -99,7 +99,7 @@ class BatchSimulator:
 
     @property
     def done(self) -> bool:
-        return not self.active.any()
+        return not self._all_running and not self.active.any()
 
     def sense(self) -> BatchObservation:
         """The :class:`BatchObservation` of the current state."""
