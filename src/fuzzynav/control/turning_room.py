@@ -102,7 +102,7 @@ def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians
     bearing = np.asarray(bearing, dtype=float)
     if len(ranges) == 1 and angles.ndim == 1:
         b, listed = float(bearing[0]), angles.tolist()
-        gap = min([abs(math.atan2(math.sin(b - a), math.cos(b - a))) for a in listed])
+        gap = min([abs(math.remainder(b - a, math.tau)) for a in listed])  # exact wrap to [−π, π]
         echo = float(np.asarray(distance, dtype=float)[0]) if gap <= half_cone else math.inf
         return np.array([ranges[0].tolist() + [echo]]), np.array([listed + [b]])
     gap = np.abs(np.angle(np.exp(1j * (bearing[:, None] - angles[None, :])))).min(axis=1)
@@ -116,7 +116,8 @@ def step_clearance(points, valid, speed, dt: float, body: float = DEFAULT_PARAMS
     ``(N, P, 2)`` (``inf`` with none valid). Eq IV.2 moves the robot by V Δt along its current
     heading whatever the steering, so the next position is (V Δt, 0) in the robot frame (the exact
     arc of the ``"arc"`` integrator bends off it by less than a centimetre at the turn speeds)."""
-    ahead = points[..., 0] - (np.asarray(speed, dtype=float) * dt)[:, None]
+    speed = np.asarray(speed, dtype=float)
+    ahead = points[..., 0] - (float(speed[0]) * dt if len(speed) == 1 else (speed * dt)[:, None])
     return np.minimum.reduce(np.hypot(ahead, points[..., 1]) - body, axis=1, initial=np.inf, where=valid)
 
 
