@@ -116,6 +116,8 @@ class FiveBehaviourNavigator(BatchedController):
         wanted = WANTED[turn.astype(np.intp), (dmin < self.params.detection).astype(np.intp), choice]
         mode = self.switch(wanted, True, (dmin < self.params.keep) | turn)
 
+        if len(mode) == 1:
+            return self._command_one(int(mode[0]), d[0].tolist(), obs, distance, bearing, float(side[0]))
         # (α, V) of each mode, evaluated only for the modes some robot is in (placeholders elsewhere)
         modes = set(mode.tolist())
         full_lock = side * ALPHA_MAX
@@ -130,11 +132,31 @@ class FiveBehaviourNavigator(BatchedController):
                             for code, system, cols in zip(AVOIDERS, self.avoiders, AVOIDER_COLUMNS)]
         capped = np.minimum(speed_gsb, v_vrb) if GSB_VRB in modes else speed_gsb
         turning = np.full(len(mode), self.v_floor) if TURN in modes else full_lock
-        pick = mode.choose if len(mode) > 1 else (lambda options: options[int(mode[0])])  # one robot: its mode's
-        steering = pick([steer_gsb, *avoider_steering, steer_gsb, full_lock])
-        speed = pick([speed_gsb, v_vrb, v_vrb, v_vrb, capped, turning])
+        steering = mode.choose([steer_gsb, *avoider_steering, steer_gsb, full_lock])
+        speed = mode.choose([speed_gsb, v_vrb, v_vrb, v_vrb, capped, turning])
         speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)  # safety stop
         return steering, speed, LABELS[mode]
+
+    def _command_one(self, mode: int, d: list, obs, distance, bearing, side: float):
+        """The command of :meth:`act_batch` for one robot in ``mode``, on floats: the same
+        choice as the batch's (only the mode's behaviours are evaluated)."""
+        if mode in (supervisor.GSB, GSB_VRB):
+            steering, speed, _ = self.gsb(distance, bearing)
+            steering, speed = float(steering[0]), float(speed[0])
+        elif mode == TURN:
+            steering, speed = side * ALPHA_MAX, self.v_floor
+        if mode not in (supervisor.GSB, TURN):
+            v_now = float(obs.speed[0])
+            v_vrb = min(max(v_now + self.vrb.evaluate_one(v_now, min(d))[0], self.v_floor), self.v_max)  # eq IV.9
+            if mode == GSB_VRB:
+                speed = min(speed, v_vrb)
+            else:
+                columns = AVOIDER_COLUMNS[mode - supervisor.FOA].tolist()
+                steering, speed = self.avoiders[mode - supervisor.FOA].evaluate_one(*[d[c] for c in columns])[0], v_vrb
+        speed = np.array([speed])
+        if self.guard.clearance(speed, obs.dt)[0] < self.stop_margin:  # safety stop
+            speed[0] = 0.0
+        return np.array([steering]), speed, LABELS[[mode]]
 
 
 def make(**options) -> FiveBehaviourNavigator:
