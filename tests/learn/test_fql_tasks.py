@@ -108,3 +108,19 @@ def test_the_avoider_is_credited_only_where_it_acts(tmp_path):
     assert x[1, :3].tolist() == learned.side_distances(ranges)[1].tolist()  # the avoider acts
     w = steering.learner.strengths(x)
     assert w[0, train_rl.free_rules()].sum() == pytest.approx(1.0) and w[1, train_rl.free_rules()].sum() == 0.0
+
+
+@pytest.mark.slow
+def test_a_short_training_gives_a_navigator_that_drives_around_a_post_and_a_wall(tmp_path):
+    from fuzzynav.training import TrainRequest
+    from fuzzynav.world.shapes import Wall
+
+    out = tmp_path / "avoid.json"
+    train_rl.train_fql_avoid(TrainRequest(out=out, episodes=200, seed=0, progress=False))
+    navigator = load_controller(out)
+    assert navigator.avoidance.input_names == ["front", "right", "left", "open"]
+    assert len(navigator.avoidance.rules) == 14 and navigator.guard is None  # the learned avoider alone
+    for obstacle in (Circle((8.0, 10.0), 0.3), Wall((8.0, 7.0), (8.0, 11.5), 0.3)):
+        scenario = train_rl._scenario(World(20.0, 20.0, (obstacle,)), (4.0, 10.0, 0.0), (16.0, 10.0), "o", 40.0)
+        trace = BatchSimulator(scenario, navigator, record=True).run().trace(0)
+        assert trace.outcome == "reached" and "obstacle avoidance" in trace.behaviour
