@@ -151,8 +151,8 @@ class FiveBehaviourNavigator(BatchedController):
             if mode == GSB_VRB:
                 speed = min(speed, v_vrb)
             else:
-                columns = AVOIDER_COLUMNS[mode - supervisor.FOA].tolist()
-                steering, speed = self.avoiders[mode - supervisor.FOA].evaluate_one(*[d[c] for c in columns])[0], v_vrb
+                k = AVOIDERS.index(mode)
+                steering, speed = self.avoiders[k].evaluate_one(*[d[c] for c in AVOIDER_COLUMNS[k].tolist()])[0], v_vrb
         speed = np.array([speed])
         if self.guard.clearance(speed, obs.dt)[0] < self.stop_margin:  # safety stop
             speed[0] = 0.0

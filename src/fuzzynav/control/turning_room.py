@@ -58,7 +58,7 @@ class HitMemory:
         ``(points (N, steps·S, 2), valid (N, steps·S) bool)``. ``ranges`` ``(N, S)`` are read along
         ``angles`` ``(S,)`` or ``(N, S)`` (relative to each heading); a reading at ``max_range`` or
         beyond (or not finite) is no hit. One robot's new hits are placed with ``math`` (the same
-        formulas; ``math.cos``/``math.sin`` round as NumPy's). ``points[..., 0]`` and
+        formulas; here ``math.cos``/``math.sin`` give NumPy's values bit for bit). ``points[..., 0]`` and
         ``points[..., 1]`` are contiguous (a transposed view of x and y rows)."""
         pose = np.asarray(pose, dtype=float)
         ranges = np.asarray(ranges, dtype=float)
@@ -72,10 +72,11 @@ class HitMemory:
         if n == 1:
             x, y, theta = pose[0].tolist()
             limit = max_range - 1e-9
-            hit = [r < limit and math.isfinite(r) for r in ranges[0].tolist()]
+            readings = ranges[0].tolist()
+            hit = [r < limit and math.isfinite(r) for r in readings]
             heading = [theta + a for a in np.asarray(angles, dtype=float).reshape(-1).tolist()]  # (S,) or (1, S)
-            self._x[0, slot] = [x + r * math.cos(h) if ok else x for r, h, ok in zip(ranges[0].tolist(), heading, hit)]
-            self._y[0, slot] = [y + r * math.sin(h) if ok else y for r, h, ok in zip(ranges[0].tolist(), heading, hit)]
+            self._x[0, slot] = [x + r * math.cos(h) if ok else x for r, h, ok in zip(readings, heading, hit)]
+            self._y[0, slot] = [y + r * math.sin(h) if ok else y for r, h, ok in zip(readings, heading, hit)]
             self._valid[0, slot] = hit
             c, si = math.cos(theta), math.sin(theta)
         else:
