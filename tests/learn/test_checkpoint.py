@@ -96,3 +96,30 @@ def test_checkpoint_files_are_plain_json_and_checked(tmp_path):
         load_checkpoint(tmp_path / "missing.json")
     with pytest.raises(InputError, match="episodes"):
         train_loop(ChainEnv(3), learner, -1, rng)
+
+
+def test_progress_bar_counts_single_episodes_across_a_smaller_last_batch(tmp_path, monkeypatch):
+    """3 batches of 4 episodes, then (resumed) 1 batch of 2: the bar runs 12 → 14 of 14."""
+    import fuzzynav.learn.checkpoint as checkpoint
+
+    bars = []
+
+    class Bar:
+        def __init__(self, total, initial, **options):
+            self.total, self.n = total, initial
+            bars.append(self)
+
+        def update(self, n):
+            self.n += n
+
+        def set_postfix(self, **values):
+            pass
+
+        def close(self):
+            pass
+
+    monkeypatch.setattr(checkpoint, "tqdm", Bar)
+    path, learner, rng = tmp_path / "run.json", make(rows=4, learners=1), np.random.default_rng(3)
+    train_loop(LineEnv(4), learner, 3, rng, checkpoint=path, progress=True, batch_size=4)
+    train_loop(LineEnv(2), learner, 4, rng, checkpoint=path, resume=True, progress=True, batch_size=2)
+    assert [(bar.total, bar.n) for bar in bars] == [(12, 12), (14, 14)]

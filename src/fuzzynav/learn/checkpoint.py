@@ -145,7 +145,9 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
     learner and ``rng`` are restored in place). ``progress`` shows a tqdm bar with the episode,
     the mean reward and the success rate of the last batch. The curve maps ``mean_reward``,
     ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
-    (B) and ``desc`` only label the bar: it then counts single episodes, B per batch.
+    (B) and ``desc`` only label the bar: it then counts single episodes, B per batch, starting
+    from the single episodes of the curve restored (a resumed run whose earlier batches had
+    another size, e.g. the smaller last batch of ``experiments.train_rl.batch_plan``).
     """
     if int(episodes) != episodes or episodes < 0:
         raise InputError(f"must be a non-negative integer, got {episodes!r}", field="episodes")
@@ -157,7 +159,8 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
         curve = document["curve"]
         start = resumed_from = int(document["episode"])
     start = start or 0
-    bar = tqdm(total=int(episodes) * batch_size, initial=min(start, int(episodes)) * batch_size,
+    done = sum(len(row) for row in curve["success"])  # single episodes so far (earlier batches may differ in size)
+    bar = tqdm(total=done + max(int(episodes) - start, 0) * batch_size, initial=done,
                disable=not progress, unit="episode", dynamic_ncols=True, desc=desc)
     episode = start
     try:
