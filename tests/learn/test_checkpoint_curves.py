@@ -95,3 +95,33 @@ def test_records_from_a_train_loop_curve():
     assert records(curve, "steps").ravel().tolist() == [5, 6, 7, 8]
     with pytest.raises(InputError, match="success"):
         records(curve, "success")
+
+
+def world_curve(seed, batches=40, step_batch=12, batch=50):
+    """An avoider-like curve: one random world per batch of 50 episodes sets their common level
+    (σ 0.15), episodes vary around it (σ 0.25); the mean steps from −0.6 to −0.2 at batch 12."""
+    rng = np.random.default_rng(seed)
+    level = np.where(np.arange(batches) < step_batch, -0.6, -0.2) + rng.normal(0, 0.15, batches)
+    return (level[:, None] + rng.normal(0, 0.25, (batches, batch))).ravel()
+
+
+def test_clustered_batches_settle_after_the_step_whatever_the_budget():
+    options = {"window": 500, "hold": 750, "batch": 50}
+    independent = []
+    for seed in range(10):
+        curve = world_curve(seed)
+        independent.append(episodes_to_converge(curve, **options))
+        k = episodes_to_converge(curve, clustered=True, **options)
+        assert 600 < k <= 1150  # after the step at episode 600, at most one window (500) later
+        assert episodes_to_converge(curve[:k + 750], clustered=True, **options) == k
+        longer = np.r_[curve, world_curve(seed + 10, step_batch=0)]
+        assert episodes_to_converge(longer, clustered=True, **options) == k
+    # as if the episodes were independent, the band is √50 too narrow for the worlds' noise
+    assert independent.count(2001) >= 7
+
+
+def test_clustered_flat_curve_and_bad_hold():
+    flat = world_curve(0, step_batch=0)
+    assert episodes_to_converge(flat, window=500, hold=750, batch=50, clustered=True) == 500  # the first window
+    with pytest.raises(InputError, match="2 batches"):
+        episodes_to_converge(flat, window=50, hold=50, batch=50, clustered=True)

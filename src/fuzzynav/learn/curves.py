@@ -17,8 +17,10 @@ criterion here looks only a fixed distance ahead, so its answer does not depend 
   but at least ``noise`` (3) standard errors σ_k / √W of a window's mean (σ_k: standard
   deviation of the raw curve over the hold) — a band narrower than the noise of the smoothed
   curve could never be met by a settled curve of a task with random starts. The standard error
-  assumes independent episodes; when the episodes of a batch share one random world, their
-  rewards are correlated and the window should span several batches;
+  assumes independent episodes; when the episodes of a batch share one random world
+  (``clustered``), their rewards are correlated — the world sets the level of all B of them — and
+  the independent samples are the batches: σ_k is then the standard deviation of the *batch
+  means* over the hold and a window's mean has W / B of them (standard error σ_k / √(W / B));
 - the curve has converged at episode k when every m_j, j = k, k + B, …, k + H, lies within
   P_k ± band — and, if a ``success`` curve (one 0/1 per episode) is given, the success rate over
   the hold is at least ``target`` (95 %): the task is solved while still exploring, not merely
@@ -85,7 +87,7 @@ def moving_average(values, window: int) -> np.ndarray:
 
 def episodes_to_converge(values, window: int = WINDOW, tolerance: float = TOLERANCE, *, hold: int | None = None,
                          batch: int = 1, success=None, target: float = TARGET_SUCCESS,
-                         noise: float = NOISE) -> int:
+                         noise: float = NOISE, clustered: bool = False) -> int:
     """Episodes needed for the smoothed curve to settle on the plateau that follows (module docstring)."""
     values = _curve(values)
     if values.size == 0:
@@ -107,9 +109,19 @@ def episodes_to_converge(values, window: int = WINDOW, tolerance: float = TOLERA
     cumulative = np.concatenate([[0.0], np.cumsum(values)])
     squares = np.concatenate([[0.0], np.cumsum(values**2)])
     level = (cumulative[candidates + hold] - cumulative[candidates]) / hold
-    spread = np.sqrt(np.maximum((squares[candidates + hold] - squares[candidates]) / hold - level**2, 0.0))
+    if clustered:  # the batch means are the independent samples; σ from their successive differences
+        if steps < 2:
+            raise InputError(f"a clustered hold needs at least 2 batches, got {hold} episodes", field="hold")
+        means = values[: n - n % batch].reshape(-1, batch).mean(axis=1)
+        jumps = np.concatenate([[0.0], np.cumsum(np.diff(means) ** 2)])
+        first = candidates // batch
+        spread = np.sqrt((jumps[first + steps - 1] - jumps[first]) / (2 * (steps - 1)))
+        samples = window // batch
+    else:
+        spread = np.sqrt(np.maximum((squares[candidates + hold] - squares[candidates]) / hold - level**2, 0.0))
+        samples = window
     scale = np.maximum(np.abs(level), np.abs(level - start))
-    band = np.maximum.reduce([tolerance * scale, noise * spread / np.sqrt(window),
+    band = np.maximum.reduce([tolerance * scale, noise * spread / np.sqrt(samples),
                               np.full(level.shape, 1e-9 * (1.0 + np.abs(level).max()))])  # ≥ rounding
     ahead = sliding_window_view(smooth, steps + 1)  # m_k, m_{k+B}, …, m_{k+H} of every candidate
     settled = (np.abs(ahead - level[:, None]) <= band[:, None]).all(axis=1)
