@@ -12,6 +12,7 @@ from fuzzynav.control.turning_room import HitMemory, TurnGuard, cone_echo
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
 from fuzzynav.sim import BatchSimulator, run_episode
 from fuzzynav.sim.observation import BatchObservation
+from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario
 
 RNG_SEED = 20261201
@@ -115,15 +116,28 @@ def test_turn_guard_and_goal_bearing_on_floats_equal_the_array_branch():
 @pytest.mark.parametrize("controller", ["fuzzy-5b", "fuzzy-2b"])
 def test_a_batch_of_three_drives_as_three_single_runs(controller):
     scenario = load_scenario("fig-IV-22a")
-    starts = np.array([scenario.start, scenario.start + [1.5, -1.0, -0.5], scenario.start + [3.0, -2.0, 0.8]])
+    starts = np.array([scenario.start, scenario.start + [1.5, -1.0, -0.5], scenario.start + [1.0, -4.0, 0.8]])
     batch = BatchSimulator(scenario, make_controller(controller), starts=starts, max_time=25.0).run()
     labels = set()
     for i, start in enumerate(starts):
         alone = run_episode(scenario, make_controller(controller), start=start, max_time=25.0)
         together = batch.trace(i)
-        assert together.outcome == alone.outcome
+        assert together.outcome == alone.outcome and len(alone.pose) > 50  # every robot drives
         np.testing.assert_array_equal(together.behaviour, alone.behaviour)
         np.testing.assert_allclose(together.pose, alone.pose, rtol=0, atol=1e-9)
         np.testing.assert_allclose(together.speed, alone.speed, rtol=0, atol=1e-9)
         labels |= set(alone.behaviour.tolist())
-    assert len(labels) >= 2  # the runs avoid obstacles too, not goal seeking alone
+    assert {"GSB", "FOA+VRB" if controller == "fuzzy-5b" else "OA"} <= labels  # they avoid obstacles too
+
+
+def test_a_batch_through_the_safety_stop_stops_as_single_runs():
+    world = generate_worlds("mixed", 10, 0)[9]  # mixed-0-009: the stop fires (tests/control/test_switching…)
+    starts = np.array([world.start, world.start + [0.0, -1.0, 0.3]])
+    batch = BatchSimulator(world, make_controller("fuzzy-5b"), starts=starts, max_time=20.0).run()
+    for i, start in enumerate(starts):
+        alone = run_episode(world, make_controller("fuzzy-5b"), start=start, max_time=20.0)
+        together = batch.trace(i)
+        assert together.outcome == alone.outcome
+        np.testing.assert_allclose(together.pose, alone.pose, rtol=0, atol=1e-9)
+        np.testing.assert_array_equal(together.speed == 0.0, alone.speed == 0.0)
+    assert batch.trace(0).speed[-1] == 0.0 and not batch.trace(0).collision  # stopped, as alone

@@ -109,7 +109,7 @@ class TwoBehaviourNavigator(BatchedController):
         steering = np.where(mode == 2, side * ALPHA_MAX, steering)
         speed = np.where(mode == 2, self.v_turn, speed)
         if obs.ranges is not None:  # the safety stop, on the hits the guard saw this step
-            speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)
+            speed = self.guard.stop(speed, obs.dt, self.stop_margin)
         return steering, speed, np.where(avoid, "OA", "GSB")
 
 

@@ -41,7 +41,8 @@ full-lock turn may be free. Then the one step left is to stop: when the body aft
 (default 0.02 m) of a remembered hit (:meth:`TurnGuard.clearance`), V = 0. With no reverse gear
 the robot stays there, and the episode ends in a timeout instead of a collision. On 100 mixed
 worlds of each of the seeds 0–4 it stops in 2–3 worlds per seed (13 in all): 11 of them collide
-without the stop, the other 2 pass within 1.1 cm of an obstacle (README, "Measured results").
+without the stop; the other 2 pass within 1.1 cm of an obstacle and reach the goal without it, and
+time out with it (README, "Measured results"). While stopped the label stays the mode's.
 
 The state (modes, hold counts, turn sides, hits) is kept per robot in arrays, so
 :meth:`act_batch` serves any number of robots at once; :meth:`reset` clears it.
@@ -104,7 +105,8 @@ class FiveBehaviourNavigator(BatchedController):
             self._columns = sensor_columns(obs.sensor_angles, supervisor.THESIS_ANGLES_DEG)
         d = np.asarray(obs.ranges, dtype=float)[:, self._columns]  # (N, 7): d1…d7
         distance, bearing = obs.target_distance, obs.target_bearing
-        before = self.switch.mode if self.switch.mode is not None else np.full(len(d), -1)
+        before = self.switch.mode if self.switch.mode is not None and len(self.switch.mode) == len(d) \
+            else np.full(len(d), -1)
         seeking = np.count_nonzero(SEEKING[before])
         if seeking in (0, len(d)):  # one set of thresholds for all (always so for one robot)
             choice = supervisor.select(d, distance, bearing, self.kept if seeking else self.params)
@@ -134,8 +136,7 @@ class FiveBehaviourNavigator(BatchedController):
         turning = np.full(len(mode), self.v_floor) if TURN in modes else full_lock
         steering = mode.choose([steer_gsb, *avoider_steering, steer_gsb, full_lock])
         speed = mode.choose([speed_gsb, v_vrb, v_vrb, v_vrb, capped, turning])
-        speed = np.where(self.guard.clearance(speed, obs.dt) < self.stop_margin, 0.0, speed)  # safety stop
-        return steering, speed, LABELS[mode]
+        return steering, self.guard.stop(speed, obs.dt, self.stop_margin), LABELS[mode]
 
     def _command_one(self, mode: int, d: list, obs, distance, bearing, side: float):
         """The command of :meth:`act_batch` for one robot in ``mode``, on floats: the same
@@ -153,10 +154,7 @@ class FiveBehaviourNavigator(BatchedController):
             else:
                 k = AVOIDERS.index(mode)
                 steering, speed = self.avoiders[k].evaluate_one(*[d[c] for c in AVOIDER_COLUMNS[k].tolist()])[0], v_vrb
-        speed = np.array([speed])
-        if self.guard.clearance(speed, obs.dt)[0] < self.stop_margin:  # safety stop
-            speed[0] = 0.0
-        return np.array([steering]), speed, LABELS[[mode]]
+        return np.array([steering]), self.guard.stop(np.array([speed]), obs.dt, self.stop_margin), LABELS[[mode]]
 
 
 def make(**options) -> FiveBehaviourNavigator:

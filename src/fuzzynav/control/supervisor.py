@@ -107,7 +107,7 @@ class Switch:
         self.held = None
 
     def __call__(self, wanted, release, urgent=True) -> np.ndarray:
-        """Modes ``(N,)`` for the modes ``wanted`` this step; ``release`` ``(N,)`` bool says where a
+        """Modes ``(N,)`` for the modes ``wanted`` this step; ``release`` (a bool or ``(N,)`` bools) says where a
         lower rank may be taken (after the dwell); a higher rank is taken at once where ``urgent``
         (default everywhere), elsewhere after the dwell too."""
         wanted = np.asarray(wanted, dtype=int)

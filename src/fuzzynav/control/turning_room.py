@@ -115,8 +115,9 @@ def cone_echo(ranges, angles, distance, bearing, half_cone: float = math.radians
 def step_clearance(points, valid, speed, dt: float, body: float = DEFAULT_PARAMS.radius) -> np.ndarray:
     """Gap ``(N,)`` between the body after one step at ``speed`` ``(N,)`` and the robot-frame points
     ``(N, P, 2)`` (``inf`` with none valid). Eq IV.2 moves the robot by V Δt along its current
-    heading whatever the steering, so the next position is (V Δt, 0) in the robot frame (the exact
-    arc of the ``"arc"`` integrator bends off it by less than a centimetre at the turn speeds)."""
+    heading whatever the steering, so the next position is (V Δt, 0) in the robot frame. (The
+    ``"arc"`` integrator bends off it by (V Δt)² tan α / (2 l): under 1 mm at the turn speed
+    0.3 m/s, up to 12 cm at 4 m/s and full lock.)"""
     speed = np.asarray(speed, dtype=float)
     ahead = points[..., 0] - (float(speed[0]) * dt if len(speed) == 1 else (speed * dt)[:, None])
     return np.minimum.reduce(np.hypot(ahead, points[..., 1]) - body, axis=1, initial=np.inf, where=valid)
@@ -211,3 +212,9 @@ class TurnGuard:
     def clearance(self, speed, dt: float) -> np.ndarray:
         """:func:`step_clearance` of one step at ``speed`` ``(N,)`` against the hits of the last call."""
         return step_clearance(*self._hits, speed, dt)
+
+    def stop(self, speed, dt: float, margin: float) -> np.ndarray:
+        """The safety stop of the navigators: ``speed`` ``(N,)`` with 0 where the next step would
+        bring the body within ``margin`` (m) of a hit of the last call (:meth:`clearance`)."""
+        speed = np.asarray(speed, dtype=float)
+        return np.where(self.clearance(speed, dt) < margin, 0.0, speed)

@@ -108,7 +108,7 @@ class BatchSimulator:
         if self.n == 1:  # θ_o of one robot with floats (NumPy's per-call cost would dominate)
             (px, py), (x, y, theta) = nearest[0].tolist(), self.pose[0].tolist()
             finite = math.isfinite(distance[0])
-            bearing = np.array([wrap_angle(math.atan2(py - y, px - x) - theta) if finite else 0.0])
+            bearing = np.array([wrap_angle(float(np.arctan2(py - y, px - x)) - theta) if finite else 0.0])
         else:
             rel = nearest - self.pose[:, :2]
             bearing = np.where(np.isfinite(distance), wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - self.pose[:, 2]), 0.0)
