@@ -1,6 +1,7 @@
 """Episodes to converge of real training runs do not depend on the training budget (issue 5)."""
 
 from dataclasses import replace
+from pathlib import Path
 
 import pytest
 
@@ -20,3 +21,13 @@ def test_fixed_start_fql_converges_at_the_same_episode_with_twice_the_budget(tmp
     assert counts[0] == counts[1]  # the criterion reads the first k + 500 episodes only
     assert counts[0] <= 650 - rl.GOAL_CONVERGENCE["hold"]  # settled within the shorter budget
     assert counts[0] % rl.FIXED_BATCH == 0  # counted at the end of a batch of 10 episodes
+
+
+def test_world_tasks_count_their_window_in_worlds():
+    """One batch is one random world: the avoider's 10-episode batches and the wall follower's
+    50-episode ones both judge 10-world windows and 15-world holds."""
+    assert rl.convergence_window(rl.WORLD_CONVERGENCE, rl.AVOID_BATCH) == (100, 150)
+    assert rl.convergence_window(rl.WORLD_CONVERGENCE, rl.BATCH) == (500, 750)
+    assert rl.convergence_window(rl.GOAL_CONVERGENCE, rl.BATCH) == (50, 500)  # goal tasks: in episodes
+    steering = next(rl.fql_avoid_phases(Path("avoid.json"), 200))
+    assert steering.env.batch == rl.AVOID_BATCH and steering.convergence is rl.WORLD_CONVERGENCE

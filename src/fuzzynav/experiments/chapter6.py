@@ -57,12 +57,11 @@ def _curves(request, phases) -> dict:
 
 
 def _figure(curves: dict, converged: dict, controller, starts, title: str, out_dir, name: str,
-            obstacles: bool = False) -> dict:
+            obstacles: bool = False, window: int = rl.GOAL_CONVERGENCE["window"]) -> dict:
     """Learning curves (one panel per phase, the training's episodes to converge marked) and
     trajectories of the learned controller."""
     figure = Figure(figsize=(5.2 * (len(curves) + len(starts)), 4.6), layout="constrained")
     axes = figure.subplots(1, len(curves) + len(starts), squeeze=False)[0]
-    window = (rl.WORLD_CONVERGENCE if obstacles else rl.GOAL_CONVERGENCE)["window"]
     converged = {phase: converged[phase]["converged_at"] for phase in curves}
     for ax, (phase, curve) in zip(axes, curves.items()):
         plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
@@ -186,7 +185,8 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
     request, controller, summary = _avoid_model(out_dir, quick, seed)
     numbers = _figure(_curves(request, ["steering", "speed"]), summary, controller,
                       _goal_scenarios(seed, 3, layout=RandomObstacles()), "FQL obstacle avoidance", out_dir,
-                      "fig-VI-22.png", obstacles=True)
+                      "fig-VI-22.png", obstacles=True,
+                      window=rl.convergence_window(rl.WORLD_CONVERGENCE, rl.AVOID_BATCH)[0])
     return {**numbers, "evaluation": rl.evaluate_avoid(controller, 20 if quick else 100)}
 
 

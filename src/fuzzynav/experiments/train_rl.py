@@ -20,33 +20,42 @@ Each task assembles a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs, ac
 ======================  =====================================================================
 
 Episodes. B episodes run in parallel (:data:`BATCH` = 50 with random starts, :data:`FIXED_BATCH`
-= 10 from a fixed start) and feed one shared rule base (or Q table) — synchronous data
-collection; every count of episodes here (``--episodes``, checkpoints, the learning curve,
-episodes to converge) counts single episodes, B per batch; a budget that is not a multiple
-of B ends with one smaller batch of the remainder (:func:`batch_plan`). The exploration schedules tick once
-per batch: B episodes gathered with the same knowledge are one step of learning. From a fixed
-start the B episodes of a batch differ only by exploration, so a small B counts the episodes
-the learning needs instead of rounding them up to a few large batches (the thesis' ~180 episodes
-of Fig VI.8 would be 4 batches of 50).
+= 10 from a fixed start, :data:`AVOID_BATCH` = 10 for the avoider) and feed one shared rule base
+(or Q table) — synchronous data collection; every count of episodes here (``--episodes``,
+checkpoints, the learning curve, episodes to converge) counts single episodes, B per batch; a
+budget that is not a multiple of B ends with one smaller batch of the remainder
+(:func:`batch_plan`). The exploration schedules tick once per batch: B episodes gathered with the
+same knowledge are one step of learning. From a fixed start the B episodes of a batch differ
+only by exploration, so a small B counts the episodes the learning needs instead of rounding them
+up to a few large batches (the thesis' ~180 episodes of Fig VI.8 would be 4 batches of 50). The
+avoider's batches are one random world each: with 50 episodes per world its ε reached its floor
+only after 850 episodes (17 batches) and its curve settled at 800–1,150 episodes (the thesis:
+~250, Fig VI.22); with 10 the same schedules and 10-world windows take a fifth of the episodes
+(a batch steps 5 × more slowly per episode on this machine: the price of counting episodes).
+Its rate :func:`avoid_rate` starts high and decays to the per-correction rate of 50-episode
+batches, so the final qualities average as many corrections as before (a constant 0.1 learnt
+as fast but flipped 2 of the 14 extracted rules on one seed, 7 collisions in 100 worlds).
 
 Convergence. ``converged_at`` of every phase is :func:`fuzzynav.learn.curves.episodes_to_converge`
 on the mean reinforcement per episode, counted at batch ends — budget-independent: training
 longer does not move it. Goal seeking (:data:`GOAL_CONVERGENCE`): window 50, hold 500, and the
 success gate (≥ 95 % of the episodes of the hold reach the goal). Obstacle avoidance and wall
-following (:data:`WORLD_CONVERGENCE`): the 50 episodes of a batch share one random world, whose
-obstacles set the level of all 50 rewards, so the independent samples of the curve are the
-batches (``clustered``: the noise band is 3 standard errors of a window's mean of W / 50 batch
+following (:data:`WORLD_CONVERGENCE`): the episodes of a batch share one random world, whose
+obstacles set the level of all their rewards, so the independent samples of the curve are the
+batches (``clustered``: the noise band is 3 standard errors of a window's mean of W / B batch
 means, σ from the successive differences of the batch means, which a trend does not inflate). With
-independent episodes (the goal tasks' standard error) the band was √50 times too narrow for the
-world-to-world noise and the avoider never settled. A window spans 10 worlds (500 episodes), the
-hold 750 episodes (15 worlds), without success gate (their training success, exploring among
-obstacles, stays below 95 %): with 5-world windows the early batches (ε = 0.3, σ of a batch mean
-≈ 0.2 against a travel of ≈ 0.4) made the band so wide that a curve still on its first level
-"converged" at its first window on one seed of five. The count cannot be below W = 500. The
-criterion needs k + 750 episodes of a phase, so ``fql-avoid`` trains 2,000 + 2,000 by default
-(:data:`AVOID_EPISODES`; the thesis' speed phase ran 2,000 episodes, Fig VI.22 b). ``--episodes N`` is
+independent episodes (the goal tasks' standard error) the band was √B times too narrow for the
+world-to-world noise and the avoider never settled. So the window and hold are counted in worlds
+(:func:`convergence_window`): a window spans 10 worlds, the hold 15 (500 and 750 episodes for the
+wall follower's batches of 50, 100 and 150 for the avoider's 10), without success gate (their
+training success, exploring among obstacles, stays below 95 %): with 5-world windows the early
+batches (ε = 0.3, σ of a batch mean ≈ 0.2 against a travel of ≈ 0.4) made the band so wide that a
+curve still on its first level "converged" at its first window on one seed of five. The count
+cannot be below one window. ``fql-avoid`` trains 1,000 + 1,000 episodes by default
+(:data:`AVOID_EPISODES`). ``--episodes N`` is
 the total of a task; a two-phase task (steering, then speed) gives the speed phase the share
-:data:`SPEED_SHARE` (the thesis' ~3,000 : ~900 episodes of Fig VI.9). A task writes one
+:data:`SPEED_SHARE` (the thesis' ~3,000 : ~900 episodes of Fig VI.9; the avoider:
+:data:`AVOID_SPEED_SHARE`). A task writes one
 checkpoint per phase next to ``--out`` (``OUT.steering.checkpoint.json``, …).
 
 Extraction. Each rule keeps its best conclusion unless its gain over the prior is within the
@@ -111,7 +120,7 @@ GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
 STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
 MAX_STEPS = 300  # 30 s per episode
 GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
-WORLD_CONVERGENCE = {"window": 500, "hold": 750, "target": None, "clustered": True}  # one random world per batch
+WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered": True}  # one random world per batch
 
 STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
 STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
@@ -209,10 +218,19 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             "final_success": float(success[-min(success.size, 5 * batch):].mean())}
 
 
+def convergence_window(settings: dict, batch: int) -> tuple[int, int]:
+    """(window, hold) in episodes of a convergence setting: given in episodes (``window``,
+    ``hold``) or, where one batch is one random world, in worlds (``worlds``, ``hold_worlds``)."""
+    if "worlds" in settings:
+        return settings["worlds"] * batch, settings["hold_worlds"] * batch
+    return settings["window"], settings["hold"]
+
+
 def converged_at(reward, success, batch: int, settings: dict | None = None) -> int:
     """Episodes to converge of one phase (module docstring, :mod:`fuzzynav.learn.curves`)."""
     settings = settings or GOAL_CONVERGENCE
-    return episodes_to_converge(reward, window=settings["window"], hold=settings["hold"], batch=batch,
+    window, hold = convergence_window(settings, batch)
+    return episodes_to_converge(reward, window=window, hold=hold, batch=batch,
                                 success=None if settings["target"] is None else success,
                                 target=settings["target"] or 0.0, clustered=settings.get("clustered", False))
 
@@ -274,6 +292,9 @@ Q_STEERING = (0.0, -PI / 5, PI / 5)  # forward (α1), right (α2), left (α3)
 Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
 
 
+FIXED_EPSILON_FLOOR = 0.0  # from a fixed start ε decays to 0 (greedy in the limit): see q_goal_parts
+
+
 def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
     """States of Table VI.1: 1 + 2 × sectors — d_rg zones split at 1 m and 4 m, the inner zone
     (d_rg < 1 m) one state, the two outer zones 4, 5, 6 or 9 sectors of θ_rg each."""
@@ -289,7 +310,13 @@ def batch_size(fixed: bool) -> int:
 
 
 def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int | None = None):
-    """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1)."""
+    """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1).
+
+    ε decays × 0.9 per batch from 0.3 to 0.02 with random starts; from the fixed start of Fig VI.1
+    to 0 (:data:`FIXED_EPSILON_FLOOR`, "greedy in the limit"): there the episodes differ only by
+    exploration, and with ε kept at 0.02 (about ten random turns in each 500-step episode) the
+    greedy route of one training seed in five kept flipping between two near-equal routes (mean
+    reinforcement 0.62 ↔ 0.69 per 100 episodes), so its curve settled only at episode 1,310."""
     batch = batch_size(fixed) if batch is None else batch
     disc = q_discretiser(n_states)
     steering = Q_STEERING if n_actions == 3 else (0.0, -PI / 10, PI / 10, -PI / 5, PI / 5)
@@ -298,7 +325,7 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
                    lambda a, s: (actions[a], Q_SPEED), GoalSteeringReward(), batch=batch, max_steps=500,
                    tolerance=GOAL_TOLERANCE)
     learner = TabularLearner(disc.n_states, len(steering), gamma=0.9, alpha=InverseVisits(1.0, 0.8, 0.01),
-                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9, 0.02)))
+                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9, FIXED_EPSILON_FLOOR if fixed else 0.02)))
     return env, learner, disc, steering
 
 
@@ -484,7 +511,18 @@ AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is le
 AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
 AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
 AVOID_MAX_STEPS = 400
-AVOID_RATE = 1.0  # β × B: a constant rate that follows the improving policy (qualities of recent episodes)
+AVOID_BATCH = 10  # parallel episodes (one random world) per batch of the avoider — see the module docstring
+AVOID_RATE = 1.0  # β × B of the wall follower: a constant rate that follows the improving policy; the avoider's floor ÷ BATCH
+AVOID_RATE_START, AVOID_RATE_DECAY = 0.1, 0.95  # the avoider's β per batch: 0.1, × 0.95 down to AVOID_RATE / BATCH
+
+
+def avoid_rate() -> ExponentialDecay:
+    """β of the avoider's corrections (every robot of a batch adds one): fast while the first
+    worlds teach the most, then down to the per-correction rate AVOID_RATE / BATCH (0.02) whose
+    qualities average enough corrections for the extraction tolerance to hold."""
+    return ExponentialDecay(AVOID_RATE_START, AVOID_RATE_DECAY, AVOID_RATE / BATCH)
+
+
 AVOID_DECISION = 3  # steps Δt per learning decision (0.3 s)
 AVOID_TOLERANCE = 0.05  # extraction tolerance: the avoider's quality gaps at the noise level are a few
 # hundredths; extracted with tolerance 0 (plain argmax), 1 training seed of 5 collided in 31 of 100 worlds
@@ -569,7 +607,7 @@ def _avoid_candidates(values: dict, open_side: bool) -> np.ndarray:
     return candidates
 
 
-def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bool = AVOID_OPEN):
+def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_side: bool = AVOID_OPEN):
     """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
     from fuzzynav.control import supervisor
     from fuzzynav.control.goal_seeking import GuardedGoalSeeking
@@ -604,7 +642,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bo
         return navigate(s, a[:, 0], lambda free: (1.0 - free) * AVOID_SPEED)
 
     steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
-                        prior=avoid_prior(open_side), alpha=AVOID_RATE / batch)
+                        prior=avoid_prior(open_side), alpha=avoid_rate())
     n_steer = steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, observe, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
@@ -615,7 +653,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bo
         return navigate(s, steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], lambda free: a[:, 0])
 
     speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=0,
-                        alpha=AVOID_RATE / batch)
+                        alpha=avoid_rate())
     env = RobotEnv(layout, observe, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
@@ -623,7 +661,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = BATCH, open_side: bo
 
 
 AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
-AVOID_EPISODES = 4000  # default budget: 2,000 per phase, so that the hold of WORLD_CONVERGENCE fits
+AVOID_EPISODES = 2000  # default budget: 1,000 per phase (the hold of WORLD_CONVERGENCE needs 250 episodes after k)
 
 
 def train_fql_avoid(request, open_side: bool = AVOID_OPEN) -> dict:
