@@ -31,7 +31,8 @@ up to a few large batches (the thesis' ~180 episodes of Fig VI.8 would be 4 batc
 avoider's batches are one random world each: with 50 episodes per world its ε reached its floor
 only after 850 episodes (17 batches) and its curve settled at 800–1,150 episodes (the thesis:
 ~250, Fig VI.22); with 10 the same schedules and 10-world windows take a fifth of the episodes
-(a batch steps 5 × more slowly per episode on this machine: the price of counting episodes).
+(an episode costs about 3 × the wall time of one in a batch of 50: fewer robots share each
+vectorised step).
 Its rate :func:`avoid_rate` starts high and decays to the per-correction rate of 50-episode
 batches, so the final qualities average as many corrections as before (a constant 0.1 learnt
 as fast but flipped 2 of the 14 extracted rules on one seed, 7 collisions in 100 worlds).
