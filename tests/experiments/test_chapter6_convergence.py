@@ -31,3 +31,17 @@ def test_world_tasks_count_their_window_in_worlds():
     assert rl.convergence_window(rl.GOAL_CONVERGENCE, rl.BATCH) == (50, 500)  # goal tasks: in episodes
     steering = next(rl.fql_avoid_phases(Path("avoid.json"), 200))
     assert steering.env.batch == rl.AVOID_BATCH and steering.convergence is rl.WORLD_CONVERGENCE
+
+
+def test_the_curve_plot_marks_the_count_the_training_reports(tmp_path, monkeypatch):
+    """``--curve`` marks each phase's own episodes to converge (its task's criterion and window),
+    not a recount under the plot's defaults."""
+    import fuzzynav.viz.curves as curves
+
+    marked, plot = [], curves.plot_learning_curve
+    monkeypatch.setattr(curves, "plot_learning_curve",
+                        lambda values, **kw: marked.append((kw["window"], kw["converged_at"])) or plot(values, **kw))
+    request = TrainRequest(out=tmp_path / "q.json", episodes=800, seed=0, progress=False, curve=tmp_path / "q.png")
+    summary = rl.train_q_goal(request)["steering"]
+    assert (tmp_path / "q.png").stat().st_size > 0
+    assert summary["converged_at"] is not None and marked == [(rl.GOAL_CONVERGENCE["window"], summary["converged_at"])]

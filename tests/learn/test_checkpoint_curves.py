@@ -84,6 +84,8 @@ def test_plot_learning_curve(tmp_path):
     assert len(converged) == 1 and 108 <= converged[0].get_xdata()[0] <= 112
     single = plot_learning_curve(seeds[:, 0], window=10, mark_convergence=False)
     assert len(single.axes[0].get_lines()) == 2
+    given = plot_learning_curve(seeds[:, 0], window=10, converged_at=250)  # a training's own count
+    assert [line.get_xdata()[0] for line in given.axes[0].get_lines() if line.get_label().startswith("converged")] == [250]
     with pytest.raises(InputError, match="curve"):
         plot_learning_curve(np.zeros((2, 2, 2)))
 

@@ -65,11 +65,7 @@ def _figure(curves: dict, converged: dict, controller, starts, title: str, out_d
     converged = {phase: converged[phase]["converged_at"] for phase in curves}
     for ax, (phase, curve) in zip(axes, curves.items()):
         plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
-                            mark_convergence=False)
-        if converged[phase] is not None and converged[phase] <= curve.size:
-            ax.axvline(converged[phase], linestyle="--", color="k", linewidth=0.8,
-                       label=f"converged: episode {converged[phase]}")
-            ax.legend(loc="lower right", fontsize="small")
+                            mark_convergence=converged[phase] is not None, converged_at=converged[phase])
     outcomes = []
     for ax, scenario in zip(axes[len(curves):], starts):
         trace = run_episode(scenario, controller)

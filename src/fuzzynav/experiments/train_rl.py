@@ -216,6 +216,7 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
     reward, success = episode_curve(result.curve, "mean_reward"), episode_curve(result.curve, "success")
     return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
             "converged_at": converged_at(reward, success, batch, phase.convergence),
+            "window": convergence_window(phase.convergence or GOAL_CONVERGENCE, batch)[0],
             "final_success": float(success[-min(success.size, 5 * batch):].mean())}
 
 
@@ -282,7 +283,8 @@ def _write_curve(request, phases: dict, title: str) -> None:
 
     figure, axes = plt.subplots(1, len(phases), figsize=(6.4 * len(phases), 4.0), squeeze=False)
     for ax, (name, result) in zip(axes[0], phases.items()):
-        plot_learning_curve(result["mean_reward"], ax=ax, title=f"{title}: {name}", label=name)
+        plot_learning_curve(result["mean_reward"], ax=ax, window=result["window"], title=f"{title}: {name}",
+                            label=name, converged_at=result["converged_at"])
     Path(request.curve).parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(request.curve, dpi=120, bbox_inches="tight")
     plt.close(figure)

@@ -2,8 +2,9 @@
 
 :func:`plot_learning_curve` draws the raw curve (light), its trailing moving average and, for
 several seeds (a 2-D array, episodes × seeds), the mean over seeds with a min–max band; a dashed
-vertical line marks the convergence episode of :func:`fuzzynav.learn.curves.episodes_to_converge`
-(computed on the seed mean). Uses the non-interactive Agg backend; returns the figure.
+vertical line marks the convergence episode — ``converged_at`` when the caller has it (a training
+phase's own count, under its task's criterion), else :func:`fuzzynav.learn.curves.episodes_to_converge`
+with its defaults on the seed mean. Uses the non-interactive Agg backend; returns the figure.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from fuzzynav.learn.curves import episodes_to_converge, moving_average  # noqa: 
 
 def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, label: str = "",
                         title: str = "Mean reinforcement per episode", ylabel: str = "mean reinforcement",
-                        mark_convergence: bool = True, ax=None, path=None):
+                        mark_convergence: bool = True, converged_at: int | None = None, ax=None, path=None):
     """Plot a learning curve (episodes,) or (episodes, seeds); save to ``path`` if given."""
     values = np.asarray(curve, dtype=float)
     if values.ndim == 1:
@@ -42,7 +43,7 @@ def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, lab
     smooth_label = f"{label} moving mean ({window} episodes)".strip()
     ax.plot(episodes, moving_average(mean, window), linewidth=1.5, label=smooth_label)
     if mark_convergence:
-        converged = episodes_to_converge(mean, window=window, tolerance=tolerance)
+        converged = episodes_to_converge(mean, window=window, tolerance=tolerance) if converged_at is None else converged_at
         if converged <= values.shape[0]:
             ax.axvline(converged, linestyle="--", color="k", linewidth=0.8,
                        label=f"converged: episode {converged}")
