@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import statistics
 import tempfile
 import time
@@ -58,6 +59,13 @@ THESIS = {
     "fql-avoid-8": {"steering": 250, "speed": 2000},  # fql-avoid with the thesis' 8 rules (no openness input)
 }
 TASKS = ["q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall"]  # fuzzynav train
+
+
+def median_count(counts):
+    """Median episodes to converge over seeds; a run that never settled (None) counts as
+    infinitely many, so the median is None (not settled) when the median run did not settle."""
+    median = statistics.median(math.inf if count is None else count for count in counts)
+    return None if math.isinf(median) else median
 
 
 def _tabular(n_states: int, n_actions: int, fixed: bool, default: int):
@@ -176,9 +184,7 @@ def main() -> int:
                                     "collisions_per_seed": [r["with_turn_guard"]["collisions"] for r in mine]}}
                if "with_turn_guard" in mine[0] else {}),
             "converged_at_per_seed": {p: [r["converged_at"][p] for r in mine] for p in mine[0]["converged_at"]},
-            # runs that never settled (None) count as their whole budget + 1: the median stays an upper bound
-            "converged_at_median": {p: statistics.median(r["converged_at"][p] or r["episodes"][p] + 1 for r in mine)
-                                    for p in mine[0]["converged_at"]},
+            "converged_at_median": {p: median_count(r["converged_at"][p] for r in mine) for p in mine[0]["converged_at"]},
             "thesis_episodes": THESIS.get(task, {}),
         }
     if not args.json:
