@@ -113,10 +113,10 @@ def test_progress_bar_counts_single_episodes_across_a_smaller_last_batch(tmp_pat
             self.n += n
 
         def set_postfix(self, **values):
-            pass
+            """Not recorded: the test reads the bar's totals only."""
 
         def close(self):
-            pass
+            """Nothing to release."""
 
     monkeypatch.setattr(checkpoint, "tqdm", Bar)
     path, learner, rng = tmp_path / "run.json", make(rows=4, learners=1), np.random.default_rng(3)
