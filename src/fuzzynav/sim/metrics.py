@@ -19,7 +19,6 @@ import math
 import numpy as np
 
 from fuzzynav.sim.trace import Trace
-from fuzzynav.world import collision
 from fuzzynav.world.scenario import Scenario
 
 
@@ -33,8 +32,10 @@ def cross_track(positions, waypoints) -> np.ndarray:
     waypoints = np.asarray(waypoints, dtype=float)
     if len(waypoints) == 1:
         return np.hypot(*(positions - waypoints[0]).T)
-    distance, _ = collision.segment_distance(np.asarray(positions, dtype=float), waypoints[:-1], waypoints[1:])
-    return distance.min(axis=1)
+    points, a, e = np.asarray(positions, dtype=float)[:, None, :], waypoints[None, :-1], np.diff(waypoints, axis=0)
+    u = np.clip(np.einsum("nmk,mk->nm", points - a, e) / np.einsum("ij,ij->i", e, e), 0.0, 1.0)
+    gap = points - (a + u[..., None] * e[None])  # to the nearest point of each segment
+    return np.hypot(gap[..., 0], gap[..., 1]).min(axis=1)
 
 
 def metrics(trace: Trace, scenario: Scenario) -> dict:
