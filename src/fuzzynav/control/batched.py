@@ -17,7 +17,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller, Observation
 from fuzzynav.errors import InputError
-from fuzzynav.world.geometry import wrap_angle
+from fuzzynav.kernels.angles import wrap_angle
 
 
 @dataclass(frozen=True)
