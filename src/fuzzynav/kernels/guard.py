@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.kernels.compile import jit
+from fuzzynav.kernels.motion import ring_gap
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3
 # angles of C1…C7 (rad, SPEC §3.3) and the avoider on each sensor's side
@@ -98,12 +99,13 @@ def turning_room(memory, x, y, theta, body, radius):
             if memory[m, j, 2] == 0.0:
                 continue
             lx, ly = local(memory, m, j, x, y, c, s)
-            h_left, h_right, h_here = math.hypot(lx, ly - radius), math.hypot(lx, ly + radius), math.hypot(lx, ly)
             if lx >= 0.0:
-                gap_left, gap_right = abs(h_left - radius), abs(h_right - radius)
+                gap_left = ring_gap(lx, ly - radius, radius, left + body)
+                gap_right = ring_gap(lx, ly + radius, radius, right + body)
             else:
-                gap_left = min(h_here, math.hypot(lx, ly - 2.0 * radius))
-                gap_right = min(h_here, math.hypot(lx, ly + 2.0 * radius))
+                here = ring_gap(lx, ly, 0.0, max(left, right) + body)
+                gap_left = min(here, ring_gap(lx, ly - 2.0 * radius, 0.0, left + body))
+                gap_right = min(here, ring_gap(lx, ly + 2.0 * radius, 0.0, right + body))
             left, right = min(left, gap_left - body), min(right, gap_right - body)
             if lx > 0.0 and abs(ly) < body:
                 ahead = min(ahead, lx - body)
@@ -135,7 +137,7 @@ def step_clearance(memory, x, y, theta, advance, body):
         for j in range(memory.shape[1]):
             if memory[m, j, 2] != 0.0:
                 lx, ly = local(memory, m, j, x, y, c, s)
-                gap = min(gap, math.hypot(lx - advance, ly) - body)
+                gap = min(gap, ring_gap(lx - advance, ly, 0.0, gap + body) - body)
     return gap
 
 

@@ -18,6 +18,17 @@ DT, WHEELBASE, RADIUS, MAX_STEERING, MIN_SPEED, MAX_SPEED, ARC = range(len(ROBOT
 
 
 @jit
+def ring_gap(x, y, radius, limit):
+    """| |(x, y)| − radius |, exact (``math.hypot``) wherever it may be below ``limit``; elsewhere
+    from the cheaper sqrt(x² + y²), then still ≥ ``limit``. So a minimum over many points, or a
+    test against ``limit``, comes out as with ``math.hypot`` everywhere, at a fraction of its cost."""
+    q = math.sqrt(x * x + y * y)
+    if abs(q - radius) < limit + 1e-9 * (1.0 + q):
+        return abs(math.hypot(x, y) - radius)
+    return abs(q - radius)
+
+
+@jit
 def clip(steering, speed, robot):
     """(α, V) within |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays NaN)."""
     steering = steering if steering != steering else min(max(steering, -robot[MAX_STEERING]), robot[MAX_STEERING])

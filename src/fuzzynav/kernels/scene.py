@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from fuzzynav.kernels.compile import jit
+from fuzzynav.kernels.motion import ring_gap
 from fuzzynav.kernels.layout import (AT_CIRCLES, AT_EDGES, AT_ELLIPSES, AT_POLYGONS, HEIGHT, N_CIRCLES, N_ELLIPSES,
                                      N_POLYGONS, WIDTH)
 
@@ -74,7 +75,8 @@ def ranges_one(scene, x, y, theta, angles, max_range, out, near):
     count = 0
     for column in range(total):
         _, _, cx, cy, radius = bounding_disc(scene, column)
-        if math.hypot(cx - x, cy - y) - (radius * (1.0 + 1e-9) + 1e-9) < max_range:
+        reach = max_range + radius * (1.0 + 1e-9) + 1e-6  # a superset of the discs within range
+        if (cx - x) ** 2 + (cy - y) ** 2 < reach * reach:
             near[count] = column
             count += 1
     for j in range(angles.shape[0]):
@@ -130,7 +132,7 @@ def polygon_distance(scene, first, end, px, py):
         u = ((px - ax) * ex + (py - ay) * ey) / length2
         u = 0.0 if u < 0.0 else (1.0 if u > 1.0 else u)
         nx, ny = ax + u * ex, ay + u * ey
-        d = math.hypot(px - nx, py - ny)
+        d = ring_gap(px - nx, py - ny, 0.0, best)
         if d < best:
             best, bx, by = d, nx, ny
         if (ay > py) != (by_ > py) and px < ax + (py - ay) * (bx_ - ax) / (by_ - ay):
@@ -173,7 +175,7 @@ def nearest_one(scene, px, py, out):
         at = int(scene[AT_CIRCLES]) + 3 * k
         cx, cy, r = scene[at], scene[at + 1], scene[at + 2]
         rx, ry = px - cx, py - cy
-        norm = math.hypot(rx, ry)
+        norm = ring_gap(rx, ry, 0.0, best + r)
         if norm - r < best:
             best, col = norm - r, k
             if norm > 0:
@@ -182,8 +184,8 @@ def nearest_one(scene, px, py, out):
                 bx, by = cx + r, cy
     for k in range(n_p):
         at = int(scene[AT_POLYGONS]) + 5 * k
-        if math.hypot(px - scene[at + 2], py - scene[at + 3]) - scene[at + 4] > best + 1e-9:
-            continue
+        if math.sqrt((px - scene[at + 2]) ** 2 + (py - scene[at + 3]) ** 2) - scene[at + 4] > best + 2e-9:
+            continue  # a lower bound of the signed distance (the polygon lies in its bounding disc)
         d, nx, ny, inside = polygon_distance(scene, int(scene[at]), int(scene[at + 1]), px, py)
         d = -d if inside else d
         if d < best:
@@ -194,8 +196,8 @@ def nearest_one(scene, px, py, out):
         cx, cy, ra, rb, c, s = scene[at], scene[at + 1], scene[at + 2], scene[at + 3], scene[at + 4], scene[at + 5]
         rx, ry = px - cx, py - cy
         lx, ly = c * rx + s * ry, -s * rx + c * ry
-        if not math.hypot(lx, ly) - scene[at + 6] < others:
-            continue
+        if not math.sqrt(lx * lx + ly * ly) - scene[at + 6] < others + 1e-9:
+            continue  # beyond every circle and polygon
         fx, fy = ellipse_foot(lx, ly, ra, rb)
         gap = math.hypot(lx - fx, ly - fy)
         d = -gap if (lx / ra) ** 2 + (ly / rb) ** 2 < 1.0 else gap
