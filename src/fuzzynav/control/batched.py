@@ -88,7 +88,8 @@ class CompiledNavigator(BatchedController):
         self.systems = {role: chosen[role] for role in self.roles}
         from fuzzynav.kernels import ts0
 
-        self.tables = ts0.pack(list(self.systems.values()), [f"{self.name} {role}" for role in self.roles])
+        self.tables = ts0.pack(list(self.systems.values()), [f"{self.name} {role}" for role in self.roles]) \
+            if self.roles else np.zeros(1)
         self.params = params
         self._angles = None
         self.reset()
@@ -144,6 +145,20 @@ def navigator_params(**values) -> np.ndarray:
     for name, value in values.items():
         params[getattr(navigators, name.upper())] = value
     return params
+
+
+class ConstantCommand(CompiledNavigator):
+    """The same command (α, V) at every step (open loop): a reference for timing the simulator
+    itself, and a scripted drive. Label: ``constant``."""
+
+    name = "constant"
+    labels, roles = ("constant",), ()
+
+    def __init__(self, steering: float = 0.0, speed: float = 1.0):
+        from fuzzynav.kernels import navigators
+
+        self.kind = navigators.CONSTANT
+        self._build({}, dict, navigator_params(steering=steering, speed=speed))
 
 
 def sensor_columns(angles, wanted_deg, source: str = "sensors") -> np.ndarray:

@@ -18,7 +18,7 @@ from fuzzynav.kernels import guard, ts0
 from fuzzynav.kernels.compile import jit
 from fuzzynav.kernels.motion import wrap
 
-GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER = range(4)
+GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
 ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7 (the full-lock turn)
 MODE, HELD, SIDE, COUNT = range(4)
 # params: shared, then per navigator
@@ -26,6 +26,7 @@ WHEELBASE, DWELL, LANE, ROOM_MARGIN, STOP_MARGIN, V_TURN, TURN_RADIUS, BODY, HAL
 DETECTION, SECTOR, FRONT, RISK, RELEASE = range(9, 14)  # fuzzy-2b
 V_MAX, SENSED, FRONT_5B, KEEP, CLEAR, VISION, KEPT_DETECTION, KEPT_KEEP, KEPT_CLEAR, COLUMNS = range(9, 19)  # fuzzy-5b
 WALL_COLUMNS = 9  # wall-follow: d_d, d_f, d_g
+STEERING, SPEED = 9, 10  # a constant command
 N_PARAMS = COLUMNS + 7
 GSB_VRB, TURN = 4, 5  # fuzzy-5b modes beyond guard.GSB, FOA, ROA, LOA
 RANK_5B = (0, 3, 2, 2, 1, 4)  # caution ranks of the fuzzy-5b modes
@@ -156,6 +157,8 @@ def act_one(kind, params, tables, state, memory, x, y, theta, v, tx, ty, ranges,
     if kind == FIVE_BEHAVIOURS:
         return five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,
                                max_range, dt, d_o, b_o)
+    if kind == CONSTANT:
+        return params[STEERING], params[SPEED], 0
     steering, speed = ts0.evaluate(tables, 0, ranges[int(params[WALL_COLUMNS])], ranges[int(params[WALL_COLUMNS + 1])],
                                    ranges[int(params[WALL_COLUMNS + 2])])
     return steering, speed, 0

@@ -78,6 +78,7 @@ class BatchSimulator:
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0)
+        self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
         compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
         self._compiled = compiled if callable(compiled) else None
         self.reset()
@@ -144,20 +145,20 @@ class BatchSimulator:
         return self._observation
 
     def sense(self) -> BatchObservation:
-        """A new :class:`BatchObservation` of the current state (arrays copied)."""
-        state, t = self._state, self.k * self.params.dt
+        """A new :class:`BatchObservation` of the current state (its arrays are its own)."""
+        state, t = self._state.copy(), self.k * self.params.dt
         return BatchObservation(
             t=t,
             dt=self.params.dt,
-            pose=self.pose.copy(),
-            speed=self.speed.copy(),
-            steering=self.steering.copy(),
-            target=state[:, step_kernel.TARGET_X:step_kernel.TARGET_Y + 1].copy(),
+            pose=state[:, step_kernel.X:step_kernel.THETA + 1],
+            speed=state[:, step_kernel.SPEED],
+            steering=state[:, step_kernel.STEERING],
+            target=state[:, step_kernel.TARGET_X:step_kernel.TARGET_Y + 1],
             ranges=self._ranges.copy(),
             sensor_angles=self.sensors.angles,
             max_range=self.sensors.max_range,
-            obstacle_distance=state[:, step_kernel.OBSTACLE_DISTANCE].copy(),
-            obstacle_bearing=state[:, step_kernel.OBSTACLE_BEARING].copy(),
+            obstacle_distance=state[:, step_kernel.OBSTACLE_DISTANCE],
+            obstacle_bearing=state[:, step_kernel.OBSTACLE_BEARING],
             active=self.active,
             path=self.task.path,
             waypoint_index=self._status[:, step_kernel.WAYPOINT].copy(),
@@ -169,27 +170,30 @@ class BatchSimulator:
         """Commands of the Python controllers, written into the state of the running robots."""
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = (np.broadcast_to(np.asarray(v, dtype=float), (self.n,)) for v in out[:2])
+            steering, speed = out[0], out[1]
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
         else:
             steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
             for i in np.flatnonzero(obs.active):
                 command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
                 steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
-        running = obs.active
-        self._state[running, step_kernel.STEERING] = steering[running]
-        self._state[running, step_kernel.SPEED] = speed[running]
+        if self._running == self.n:
+            self._state[:, step_kernel.STEERING], self._state[:, step_kernel.SPEED] = steering, speed
+        else:
+            running = obs.active
+            for column, value in ((step_kernel.STEERING, steering), (step_kernel.SPEED, speed)):
+                self._state[running, column] = np.broadcast_to(np.asarray(value, dtype=float), (self.n,))[running]
         return labels
 
-    def step(self) -> BatchObservation | None:
+    def step(self) -> None:
         """One step of every running robot (the new observation is :attr:`observation`)."""
-        running = self.active if self.record or self.sensors.noise_std > 0 else None
+        running = self.active if self._noisy else None
         labels = None if self._compiled is not None else self._act(self.observation)
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
-        self._running = step_kernel.step(*self._navigator, self._setup, self.scenario.world.scene, self.k,
-                                         self._state, self._ranges, self._status)
+        self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
+                                         self._ranges, self._status)
         self._observation = None
         if running is not None:
             self._add_noise(running)
