@@ -12,9 +12,6 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from fuzzynav.control.registry import make_controller
-from fuzzynav.sim import metrics, run_episode
-from fuzzynav.world.scenario import list_scenarios, load_scenario
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m")
 
@@ -34,6 +31,8 @@ def register(subparsers) -> None:
 
 def demo_runs(names=None) -> list[tuple[str, str]]:
     """The (scenario, controller) pairs of the built-in scenarios (all, or those named)."""
+    from fuzzynav.world.scenario import list_scenarios, load_scenario
+
     runs = []
     for name in names or list_scenarios():
         runs.extend((name, controller) for controller in load_scenario(name).controllers)
@@ -51,6 +50,10 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def run(args) -> int:
+    from fuzzynav.control.registry import make_controller
+    from fuzzynav.sim import metrics, run_episode
+    from fuzzynav.world.scenario import load_scenario
+
     runs = demo_runs(args.scenario)
     args.out.mkdir(parents=True, exist_ok=True)
     rows = []

@@ -12,10 +12,7 @@ import json
 import math
 
 from fuzzynav.cli import arguments
-from fuzzynav.control.registry import make_controller
 from fuzzynav.errors import InputError
-from fuzzynav.sim import metrics, run_episode
-from fuzzynav.world.scenario import load_scenario
 
 
 def register(subparsers) -> None:
@@ -38,6 +35,10 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
+    from fuzzynav.control.registry import make_controller
+    from fuzzynav.sim import metrics, run_episode
+    from fuzzynav.world.scenario import load_scenario
+
     if args.max_time is not None and not (math.isfinite(args.max_time) and args.max_time > 0):
         raise InputError(f"must be a finite number > 0, got {args.max_time!r}", field="--max-time")
     scenario = load_scenario(args.scenario)

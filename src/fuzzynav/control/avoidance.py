@@ -42,6 +42,7 @@ Rule bases by role (``systems=``): ``"gsb"`` (d_rg, θ_r − θ_d) → (α, V_r)
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 
@@ -50,6 +51,12 @@ from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+
+
+@functools.lru_cache(maxsize=1)
+def default_systems() -> dict:
+    """Tables IV.1 and IV.2 by role (built once, shared by the navigators)."""
+    return {"gsb": goal_seeking(), "oab": obstacle_avoidance()}
 
 
 class TwoBehaviourNavigator(CompiledNavigator):
@@ -62,7 +69,7 @@ class TwoBehaviourNavigator(CompiledNavigator):
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
                  stop_margin: float = 0.02, systems: Mapping | None = None):
-        self._build(systems, lambda: {"gsb": goal_seeking(), "oab": obstacle_avoidance()}, navigator_params(
+        self._build(systems, default_systems, navigator_params(
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_turn, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             detection=detection, sector=sector, front=front, risk=risk, release=release))

@@ -57,6 +57,7 @@ Rule bases by role (``systems=``, defaults in brackets): ``"gsb"`` (d_rg, θ_r �
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 
@@ -69,6 +70,13 @@ from fuzzynav.kernels.navigators import FIVE_BEHAVIOURS
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 LABELS = ("GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB")  # of the mode codes (the last: full lock)
+
+
+@functools.lru_cache(maxsize=4)
+def default_systems(d_m: float, d_s: float, d_max: float) -> dict:
+    """Tables IV.1, IV.3–IV.6 for these distances by role (built once, shared by the navigators)."""
+    return {"gsb": goal_seeking(), "foa": nav.front_avoider(d_m, d_s, d_max), "roa": nav.right_avoider(d_m, d_s, d_max),
+            "loa": nav.left_avoider(d_m, d_s, d_max), "vrb": nav.velocity_reducer(d1=d_m, d2=d_s, d_max=d_max)}
 
 
 class FiveBehaviourNavigator(CompiledNavigator):
@@ -87,11 +95,8 @@ class FiveBehaviourNavigator(CompiledNavigator):
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
-        defaults = lambda: {"gsb": goal_seeking(), "foa": nav.front_avoider(d_m, d_s, d_max),  # noqa: E731
-                            "roa": nav.right_avoider(d_m, d_s, d_max), "loa": nav.left_avoider(d_m, d_s, d_max),
-                            "vrb": nav.velocity_reducer(d1=d_m, d2=d_s, d_max=d_max)}
         p = self.supervisor
-        self._build(systems, defaults, navigator_params(
+        self._build(systems, lambda: default_systems(d_m, d_s, d_max), navigator_params(
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,

@@ -20,6 +20,7 @@ default is Table IV.1.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 
@@ -33,13 +34,19 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
 
 
+@functools.lru_cache(maxsize=1)
+def default_systems() -> dict:
+    """Table IV.1 by role (built once, shared)."""
+    return {"gsb": goal_seeking()}
+
+
 class GuardedGoalSeeking:
     """Table IV.1 (or ``system``) on a batch, with the anti-orbit guard of the module docstring."""
 
     def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, system=None):
         from fuzzynav.kernels import ts0
 
-        self.system = system or goal_seeking()
+        self.system = system or default_systems()["gsb"]
         self.tables = ts0.pack([self.system], ["gsb"])
         self.wheelbase = float(wheelbase)
 
@@ -64,7 +71,7 @@ class GoalSeekingController(CompiledNavigator):
     kind, labels, roles = GOAL_SEEKING, ("GSB",), ("gsb",)
 
     def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None):
-        self._build(systems, lambda: {"gsb": goal_seeking()}, navigator_params(wheelbase=wheelbase))
+        self._build(systems, default_systems, navigator_params(wheelbase=wheelbase))
 
 
 def make(**options) -> GoalSeekingController:

@@ -20,7 +20,6 @@ draw is rejected and redrawn. World ``i`` of ``generate_worlds(kind, n, seed)`` 
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
 
 from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -83,6 +82,8 @@ def free_space(world: World, radius: float) -> tuple[np.ndarray, np.ndarray]:
 
 def connected(world: World, start, goal, radius: float) -> bool:
     """True when ``start`` and ``goal`` lie in one connected region of :func:`free_space`."""
+    from scipy import ndimage  # imported when first needed (not at start-up)
+
     free, _ = free_space(world, radius)
     labels, _ = ndimage.label(free)
     cell = lambda p: (min(int(p[1] / GRID), labels.shape[0] - 1), min(int(p[0] / GRID), labels.shape[1] - 1))
