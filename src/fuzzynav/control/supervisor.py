@@ -61,10 +61,16 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
 
     d = np.ascontiguousarray(d, dtype=float).reshape(-1, 7)
     out = np.empty(len(d), dtype=np.int64)
-    guard.select_all(d, *(np.ascontiguousarray(np.broadcast_to(np.asarray(v, dtype=float), (len(d),)))
-                          for v in (goal_distance, goal_bearing)),
-                     params.detection, params.front, params.keep, params.clear, params.vision, out)
+    guard.select_all(d, column(goal_distance, len(d)), column(goal_bearing, len(d)), params.detection, params.front,
+                     params.keep, params.clear, params.vision, out)
     return out
+
+
+def column(values, n: int, dtype=float) -> np.ndarray:
+    """``values`` (a scalar or ``(n,)``) as a contiguous ``(n,)`` array, as the kernels take them."""
+    values = np.asarray(values, dtype=dtype)
+    return values if values.shape == (n,) and values.flags.c_contiguous else np.ascontiguousarray(
+        np.broadcast_to(values, (n,)))
 
 
 def relaxed(params: SupervisorParams, slack: float = 0.8) -> SupervisorParams:

@@ -76,11 +76,12 @@ class TurnGuard:
             self._state, self._memory = np.zeros((n, 4), dtype=np.int64), np.zeros((n, self.steps, s + 1, 3))
         self._pose = np.ascontiguousarray(obs.pose, dtype=float)
         out = np.empty((n, 2))
-        column = lambda v, dtype=float: np.ascontiguousarray(np.broadcast_to(np.asarray(v, dtype=dtype), (n,)))  # noqa
-        navigators.guard_all(self.params, self._state, self._memory, self._pose, column(obs.speed), ranges,
+        from fuzzynav.control.supervisor import column
+
+        navigators.guard_all(self.params, self._state, self._memory, self._pose, column(obs.speed, n), ranges,
                              np.ascontiguousarray(obs.sensor_angles, dtype=float), float(obs.max_range), float(obs.dt),
-                             np.column_stack([column(obs.obstacle_distance), column(obs.obstacle_bearing)]),
-                             column(bearing), column(turning, np.bool_), out)
+                             np.column_stack([column(obs.obstacle_distance, n), column(obs.obstacle_bearing, n)]),
+                             column(bearing, n), column(turning, n, np.bool_), out)
         return out[:, 0] != 0.0, out[:, 1]
 
     def stop(self, speed, dt: float, margin: float) -> np.ndarray:

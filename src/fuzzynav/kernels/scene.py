@@ -112,12 +112,11 @@ def ranges_one(scene, x, y, theta, angles, max_range, out, near):
 
 
 @jit
-def ranges(scene, poses, angles, max_range, active, out):
-    """Readings ``out`` (N, S) of the robots marked ``active`` (N,) at ``poses`` (N, 3)."""
+def ranges(scene, poses, angles, max_range, out):
+    """Readings ``out`` (N, S) of robots at ``poses`` (N, 3)."""
     near = np.empty(int(scene[N_CIRCLES] + scene[N_POLYGONS] + scene[N_ELLIPSES]), dtype=np.int64)
     for n in range(poses.shape[0]):
-        if active[n]:
-            ranges_one(scene, poses[n, 0], poses[n, 1], poses[n, 2], angles, max_range, out[n], near)
+        ranges_one(scene, poses[n, 0], poses[n, 1], poses[n, 2], angles, max_range, out[n], near)
 
 
 @jit
@@ -208,8 +207,7 @@ def nearest_one(scene, px, py, out):
 
 
 @jit
-def nearest(scene, points, active, out):
-    """:func:`nearest_one` of the ``active`` (N,) rows of ``points`` (N, ≥ 2) into ``out`` (N, 5)."""
+def nearest(scene, points, out):
+    """:func:`nearest_one` of every row of ``points`` (N, 2) into ``out`` (N, 5)."""
     for n in range(points.shape[0]):
-        if active[n]:
-            nearest_one(scene, points[n, 0], points[n, 1], out[n])
+        nearest_one(scene, points[n, 0], points[n, 1], out[n])

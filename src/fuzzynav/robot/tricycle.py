@@ -14,6 +14,7 @@ pose ``(3,)`` with scalar commands works too.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -58,12 +59,20 @@ class TricycleParams:
         return steering, speed
 
     def array(self, integrator: str | None = None) -> np.ndarray:
-        """The parameters as the kernels read them (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`)."""
+        """The parameters as the kernels read them (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`; a
+        shared read-only array)."""
         method = integrator or self.integrator
         if method not in INTEGRATORS:
             raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
-        return np.array([self.dt, self.wheelbase, self.radius, self.max_steering, self.min_speed, self.max_speed,
-                         float(method == "arc")])
+        return _robot_array(self, method)
+
+
+@functools.lru_cache(maxsize=16)
+def _robot_array(params: TricycleParams, method: str) -> np.ndarray:
+    values = np.array([params.dt, params.wheelbase, params.radius, params.max_steering, params.min_speed,
+                       params.max_speed, float(method == "arc")])
+    values.flags.writeable = False
+    return values
 
 
 DEFAULT_PARAMS = TricycleParams()

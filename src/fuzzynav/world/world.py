@@ -26,7 +26,7 @@ class World:
     height: float = 20.0
     obstacles: tuple[Shape, ...] = ()
     scene: np.ndarray = field(init=False, repr=False, compare=False)  # the packed shapes
-    order: np.ndarray = field(init=False, repr=False, compare=False)  # kernel column -> obstacle index
+    order: np.ndarray = field(init=False, repr=False, compare=False)  # kernel column -> obstacle index (−1 -> −1)
 
     def __post_init__(self):
         object.__setattr__(self, "obstacles", tuple(self.obstacles))
@@ -36,8 +36,8 @@ class World:
         packed = layout.pack(self.width, self.height, [(*s.center, s.radius) for _, s in circles],
                             [s.vertices for _, s in polygons], [(*s.center, *s.radii, s.angle) for _, s in ellipses])
         object.__setattr__(self, "scene", packed)
-        object.__setattr__(self, "order", np.array([i for group in (circles, polygons, ellipses) for i, _ in group],
-                                                   dtype=int))
+        object.__setattr__(self, "order", np.array([i for group in (circles, polygons, ellipses) for i, _ in group]
+                                                   + [-1], dtype=int))
 
     # -- distances ---------------------------------------------------------------------------
     def proximity(self, points):
@@ -49,10 +49,8 @@ class World:
 
         points = np.ascontiguousarray(np.asarray(points, dtype=float).reshape(-1, 2))
         out = np.empty((len(points), layout.NEAREST_COLUMNS))
-        scene.nearest(self.scene, points, np.ones(len(points), dtype=np.bool_), out)
-        column = out[:, 3].astype(int)
-        index = np.where(column >= 0, self.order[np.maximum(column, 0)] if len(self.order) else -1, -1)
-        return out[:, 0], out[:, 1:3], index, out[:, 4]
+        scene.nearest(self.scene, points, out)
+        return out[:, 0], out[:, 1:3], self.order[out[:, 3].astype(int)], out[:, 4]
 
     def nearest_obstacle(self, points):
         """``(distance, point, index)`` of :meth:`proximity`."""
@@ -90,7 +88,7 @@ class World:
         poses = np.ascontiguousarray(np.asarray(poses, dtype=float).reshape(-1, 3))
         angles = np.ascontiguousarray(np.asarray(angles, dtype=float).reshape(-1))
         readings = np.empty((len(poses), len(angles)))
-        scene.ranges(self.scene, poses, angles, float(max_range), np.ones(len(poses), dtype=np.bool_), readings)
+        scene.ranges(self.scene, poses, angles, float(max_range), readings)
         return add_noise(readings, max_range, noise_std, rng)
 
 
