@@ -114,10 +114,12 @@ class BatchSimulator:
 
     @property
     def steering(self) -> np.ndarray:
+        """``(N,)`` steering applied at the last step (a view)."""
         return self._state[:, step_kernel.STEERING]
 
     @property
     def speed(self) -> np.ndarray:
+        """``(N,)`` speed applied at the last step, 0 once finished (a view)."""
         return self._state[:, step_kernel.SPEED]
 
     @property
@@ -127,14 +129,17 @@ class BatchSimulator:
 
     @property
     def steps(self) -> np.ndarray:
+        """``(N,)`` steps each robot has taken."""
         return self._status[:, step_kernel.STEPS]
 
     @property
     def active(self) -> np.ndarray:
+        """``(N,)`` bool: still running."""
         return self.status == RUNNING
 
     @property
     def done(self) -> bool:
+        """Has every robot finished?"""
         return self._running == 0
 
     @property
