@@ -69,8 +69,7 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
 def column(values, n: int, dtype=float) -> np.ndarray:
     """``values`` (a scalar or ``(n,)``) as a contiguous ``(n,)`` array, as the kernels take them."""
     values = np.asarray(values, dtype=dtype)
-    return values if values.shape == (n,) and values.flags.c_contiguous else np.ascontiguousarray(
-        np.broadcast_to(values, (n,)))
+    return np.ascontiguousarray(values if values.shape == (n,) else np.broadcast_to(values, (n,)))
 
 
 def relaxed(params: SupervisorParams, slack: float = 0.8) -> SupervisorParams:
