@@ -25,7 +25,7 @@ such an obstacle anyway). Behaviour labels: ``GSB``, ``OA``.
 **Hysteresis** (Fig IV.9 states the switch only in words). Taken step by step that test
 chatters at its edges — avoiding turns the obstacle out of the sector, goal seeking turns it
 back in — and the steering jumps between the two tables every step. The switch is therefore
-held by :class:`fuzzynav.control.supervisor.Switch`: OA is taken at once, GSB only after OA
+held by the switch of :mod:`fuzzynav.control.supervisor`: OA is taken at once, GSB only after OA
 has driven ``dwell`` steps (default 10, 1 s), and OA, once active, stays wanted while D_ro is
 below ``detection`` + ``release`` (default 0.5 m) and the obstacle within ``sector`` + 15° of
 the heading. Like ``fuzzy-5b``, the navigator turns at full lock (α = ±π/5, the extreme

@@ -1,11 +1,12 @@
-"""Batch-first controllers: one NumPy decision over many robots, a one-robot ``act`` on top.
+"""Batch-first controllers: one decision over many robots, a one-robot ``act`` on top.
 
-The chapter IV navigators map what N robots sense to (α, V) — with per-robot memory where they
-have one (the behaviour switch, the recent range hits), kept in arrays over the robot axis — so each
-implements :meth:`BatchedController.act_batch` over a
+A :class:`BatchedController` implements :meth:`BatchedController.act_batch` over a
 :class:`~fuzzynav.sim.observation.BatchObservation`-like object (arrays with a leading robot
 axis) and inherits :meth:`act`, which views one :class:`~fuzzynav.control.base.Observation` as a
-batch of one (DESIGN.md: "a scalar convenience call may wrap the batch path").
+batch of one. The chapter IV navigators are :class:`CompiledNavigator` s: their decision — with
+per-robot memory where they have one (the behaviour switch, the recent range hits), kept in
+arrays over the robot axis — is compiled (:mod:`fuzzynav.kernels.navigators`), and the simulator
+runs it inside its own compiled step.
 """
 
 from __future__ import annotations

@@ -17,7 +17,7 @@ V_r = 0 near an obstacle Table IV.6 answers "no change" (AC) and a tricycle that
 cannot turn, so the navigator would freeze.
 
 **Switching** (the part Fig IV.16 states only in words) is :func:`supervisor.select` on the
-readings, held by :class:`supervisor.Switch`: more caution at once when a reading is below
+readings, held by the switch of :mod:`~fuzzynav.control.supervisor`: more caution at once when a reading is below
 d_m or the full-lock turn is needed, anything else after a dwell of ``dwell`` steps (1 s); goal seeking, once in charge, is kept under the relaxed thresholds of
 :func:`supervisor.relaxed`. (Handing the robot back to goal seeking only with the goal within
 45° of the heading, a literal reading of Fig IV.23's "vision interval", was tried: on 100 mixed
@@ -38,7 +38,7 @@ thresholds by 0.5 m and 0.2 m. It is labelled ``FOA+VRB`` like the front avoider
 between the rays until the robot is too close for any turn, and in a pocket of obstacles neither
 full-lock turn may be free. Then the one step left is to stop: when the body after the next step
 (eq IV.2 moves it V Δt straight ahead, whatever the steering) would come within ``stop_margin``
-(default 0.02 m) of a remembered hit (:meth:`TurnGuard.clearance`), V = 0. With no reverse gear
+(default 0.02 m) of a remembered hit (:func:`fuzzynav.kernels.guard.step_clearance`), V = 0. With no reverse gear
 the robot stays there, and the episode ends in a timeout instead of a collision. On 100 mixed
 worlds of each of the seeds 0–4 it stops in 2–3 worlds per seed (13 in all): 11 of them collide
 without the stop; the other 2 pass within 1.1 cm of an obstacle and reach the goal without it, and

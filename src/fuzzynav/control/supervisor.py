@@ -74,5 +74,5 @@ def column(values, n: int, dtype=float) -> np.ndarray:
 
 def relaxed(params: SupervisorParams, slack: float = 0.8) -> SupervisorParams:
     """``params`` with ``detection``, ``keep`` and ``clear`` scaled by ``slack``: the thresholds under
-    which goal seeking, already in charge, keeps the robot (the hysteresis of :class:`Switch`)."""
+    which goal seeking, already in charge, keeps the robot (the hysteresis of the switch)."""
     return replace(params, detection=params.detection * slack, keep=params.keep * slack, clear=params.clear * slack)
