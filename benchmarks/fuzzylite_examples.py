@@ -9,8 +9,9 @@ below it is read. Run it with a Python that has both fuzzynav and pyfuzzylite (i
 ``pip install -e '.[fll]'``). For each engine: does fuzzynav import it; then the largest
 difference from pyfuzzylite, relative to the output's range, on the rows of its ``.fld``
 dataset (when there is one) and on 1,000 random inputs of which 20 % lie outside the input
-ranges (up to 50 % of the range beyond either end; lock-range as written). Agreement means
-every difference ≤ 1e-9 × range (NaN on both sides counts as equal). pyfuzzylite evaluates
+ranges (up to 50 % of the range beyond either end; lock-range as written); and whether
+exporting it to FLL and importing that again computes the same bit for bit. Agreement means
+both, and every difference ≤ 1e-9 × range (NaN on both sides counts as equal). pyfuzzylite evaluates
 activation methods other than General one row at a time, so those engines are compared row by
 row there.
 """
@@ -27,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy.io import from_fll
+from fuzzynav.fuzzy.io import from_fll, to_fll
 
 TOLERANCE = 1e-9
 
@@ -104,7 +105,10 @@ def check(path: Path) -> dict:
             continue
         result[f"{name}_rows"] = len(X)
         result[f"{name}_max_rel_diff"] = _difference(system.evaluate(X), _theirs(text, X), scale)
-    result["agrees"] = all(v <= TOLERANCE for k, v in result.items() if k.endswith("max_rel_diff"))
+        if name == "random":  # FLL export and re-import computes the same, bit for bit
+            again = from_fll(to_fll(system), source="re-exported")
+            result["round_trip"] = bool(np.array_equal(again.evaluate(X), system.evaluate(X), equal_nan=True))
+    result["agrees"] = result["round_trip"] and all(v <= TOLERANCE for k, v in result.items() if k.endswith("max_rel_diff"))
     return result
 
 

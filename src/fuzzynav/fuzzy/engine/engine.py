@@ -41,6 +41,7 @@ class Engine:
         self.name = name
         self.description = description
         self._check()
+        self._flat = [_flatten(block, {v.name for v in self.inputs}) for block in self.blocks]
 
     # ------------------------------------------------------------------ construction
     @property
@@ -108,27 +109,30 @@ class Engine:
 
     # ------------------------------------------------------------------ evaluation
     def _values(self, X) -> tuple[np.ndarray, dict]:
+        """Input values as rows (n_inputs, N), clipped where locked, and every variable's value by name."""
         X = np.asarray(X, dtype=float)
         if X.ndim != 2 or X.shape[1] != len(self.inputs):
             raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
                              f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
-        columns = np.empty_like(X)
+        columns = np.array(X.T, order="C")  # (n_inputs, N): one contiguous row per input
         values = {}
         for i, var in enumerate(self.inputs):
-            columns[:, i] = np.clip(X[:, i], var.minimum, var.maximum) if var.lock_range else X[:, i]
-            values[var.name] = columns[:, i]
+            if var.lock_range:
+                np.clip(columns[i], var.minimum, var.maximum, out=columns[i])
+            values[var.name] = columns[i]
         for var in self.outputs:
             values[var.name] = np.full(X.shape[0], np.nan)
         return columns, values
 
     def evaluate(self, X) -> np.ndarray:
         """Outputs for a batch of inputs: X (N, n_in) -> (N, n_out), columns in ``output_names``."""
+        X = np.asarray(X, dtype=float)
         columns, values = self._values(X)
-        n = columns.shape[0]
+        n = X.shape[0]
         state = _State(self, values, n)
-        for block in self.blocks:
+        for block, flat in zip(self.blocks, self._flat):
             if block.enabled:
-                state.run(block)
+                state.run(block, flat)
         out = np.full((n, len(self.outputs)), np.nan)
         for k, var in enumerate(self.outputs):
             if not var.enabled or var.defuzzifier is None:
@@ -155,6 +159,31 @@ class Engine:
                 f"{len(self.blocks)} block(s), {len(self.rules)} rules)")
 
 
+def _flatten(block: RuleBlock, inputs: set):
+    """(literals, index (n_rules, k), operator, weights) when every rule of ``block`` joins
+    propositions on inputs by a single operator (the same one in every rule), else ``None``."""
+    def leaves(node, op):
+        if isinstance(node, Proposition):
+            return [node], op
+        if op is not None and node.name != op:
+            return None, None
+        left, op = leaves(node.left, node.name)
+        right, op2 = leaves(node.right, node.name) if left is not None else (None, None)
+        return (left + right, node.name) if right is not None else (None, None)
+    literals, premises, block_op = {}, [], None
+    for rule in block.rules:
+        props, op = leaves(rule.antecedent, block_op)
+        if props is None or any(p.variable not in inputs for p in props):
+            return None
+        block_op = op or block_op
+        premises.append([literals.setdefault(p, len(literals)) for p in props])
+    if not premises:
+        return None
+    width = max(len(p) for p in premises)
+    index = np.array([p + [len(literals)] * (width - len(p)) for p in premises], dtype=np.intp)
+    return list(literals), index, block_op, np.array([rule.weight for rule in block.rules])
+
+
 def _finish(var: OutputVariable, y: np.ndarray) -> np.ndarray:
     """lock-previous (NaN -> the previous row's value), default (NaN -> default), lock-range (clip)."""
     if var.lock_previous:
@@ -179,17 +208,32 @@ class _State:
         self.memo: dict = {}
         self.fuzzy: dict[str, list] = {v.name: [] for v in engine.outputs}
 
-    def run(self, block: RuleBlock) -> None:
-        if block.activation == "General":  # activate and trigger rule by rule (chained premises see earlier rules)
-            everywhere = np.ones(self.n, dtype=bool)
+    def run(self, block: RuleBlock, flat) -> None:
+        if block.activation == "General" and flat is not None:  # every rule at once: (n_rules, N)
+            for rule, degree in zip(block.rules, self.flat_degrees(block, *flat)):
+                self.trigger(rule, degree, None, block)
+            return
+        if block.activation == "General":  # rule by rule: a chained premise sees the rules before it
             for rule in block.rules:
-                self.trigger(rule, rule.weight * self.degree(rule.antecedent, block), everywhere, block)
+                self.trigger(rule, rule.weight * self.degree(rule.antecedent, block), None, block)
             return
         degrees = np.column_stack([rule.weight * self.degree(rule.antecedent, block) for rule in block.rules]) \
             if block.rules else np.zeros((self.n, 0))
         degrees, triggered = activate(block.activation, block.activation_params, degrees)
         for r, rule in enumerate(block.rules):
             self.trigger(rule, degrees[:, r], triggered[:, r], block)
+
+    def flat_degrees(self, block: RuleBlock, literals, index, op, weights) -> np.ndarray:
+        """Degrees of rules that each join their premises by one operator ``op``, all at once."""
+        rows = [self.degree(p, block) for p in literals]
+        rows.append(np.ones(self.n) if op != "or" else np.zeros(self.n))  # the neutral element pads short rules
+        table = np.stack(rows)
+        degrees = table[index[:, 0]]
+        if index.shape[1] > 1:
+            norm = TNORMS[block.conjunction] if op == "and" else SNORMS[block.disjunction]
+            for k in range(1, index.shape[1]):
+                degrees = norm(degrees, table[index[:, k]])
+        return degrees * weights[:, None] if (weights != 1.0).any() else degrees
 
     def trigger(self, rule, degree, triggered, block: RuleBlock) -> None:
         for conclusion in rule.conclusions:
@@ -220,16 +264,24 @@ class _State:
             result = HEDGES[hedge](result)
         return np.broadcast_to(result, (self.n,))
 
-    def grouped(self, var: OutputVariable, label: str) -> tuple[np.ndarray, np.ndarray]:
-        """Degree a term has accumulated (output's S-norm, or sum) and where it was triggered at all."""
-        snorm = SNORMS[var.aggregation or "UnboundedSum"]
-        degree, present = np.zeros(self.n), np.zeros(self.n, dtype=bool)
-        for term, d, triggered, _ in self.fuzzy[var.name]:
-            if term == label:
-                degree = snorm(degree, np.where(triggered, d, 0.0))
-                present = present | triggered
-        return degree, present
+    def grouped(self, var: OutputVariable, label: str) -> tuple[np.ndarray, np.ndarray | None]:
+        """Degree a term has accumulated (output's S-norm, or sum) and where it was triggered at all
+        (``None``: everywhere)."""
+        return self.groups(var, label).get(label, (np.zeros(self.n), np.zeros(self.n, dtype=bool)))
 
-    def groups(self, var: OutputVariable) -> dict:
-        labels = dict.fromkeys(term for term, *_ in self.fuzzy[var.name])
-        return {label: self.grouped(var, label) for label in labels}
+    def groups(self, var: OutputVariable, only: str | None = None) -> dict:
+        """``{term: (degree, present)}`` over the activations of ``var`` (of term ``only`` if given)."""
+        snorm = SNORMS[var.aggregation or "UnboundedSum"]
+        out: dict = {}
+        for term, d, triggered, _ in self.fuzzy[var.name]:
+            if only is not None and term != only:
+                continue
+            if triggered is not None:
+                d = np.where(triggered, d, 0.0)
+            if term not in out:
+                out[term] = (d, triggered)
+                continue
+            degree, present = out[term]
+            both = None if present is None or triggered is None else present | triggered
+            out[term] = (snorm(degree, d), both)
+        return out
