@@ -14,6 +14,11 @@ exporting it to FLL and importing that again computes the same bit for bit. Agre
 both, and every difference ≤ 1e-9 × range (NaN on both sides counts as equal). pyfuzzylite evaluates
 activation methods other than General one row at a time, so those engines are compared row by
 row there.
+
+``--fis`` surveys the ``.fis`` files instead: each is read (MATLAB's semantics) and compared
+with its ``.fll`` twin (the same engine converted by fuzzylite) on the same random inputs, the
+outputs' defuzzification settings a ``.fis`` leaves to its reader taken from the twin; then
+written back as ``.fis`` and read again (bit-for-bit the same outputs).
 """
 
 from __future__ import annotations
@@ -23,12 +28,16 @@ import json
 import math
 import os
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.io import from_fll, to_fll
+from fuzzynav.fuzzy.io.fll import from_fll_engine
+from fuzzynav.fuzzy.io.fis import from_fis, to_fis
 
 TOLERANCE = 1e-9
 
@@ -112,20 +121,57 @@ def check(path: Path) -> dict:
     return result
 
 
+def _with_settings_of(engine, twin):
+    """``engine`` with each output's defuzzifier, aggregation and default taken from ``twin``: the
+    settings a ``.fis`` file leaves to the program reading it (resolution, sampling, what an
+    output is when no rule fires, a Sugeno aggregation MATLAB ignores)."""
+    outputs = [replace(v, defuzzifier=t.defuzzifier, aggregation=t.aggregation, default=t.default)
+               for v, t in zip(engine.outputs, twin.outputs)]
+    return Engine(engine.inputs, outputs, engine.blocks, name=engine.name)
+
+
+def check_fis(path: Path) -> dict:
+    """A ``.fis`` file read the MATLAB way: against its ``.fll`` twin (with the twin's output
+    settings, see :func:`_with_settings_of`), and written back as ``.fis`` and read again (the
+    same results bit for bit)."""
+    twin = path.with_suffix(".fll")
+    try:
+        matlab = from_fis(path.read_text(), source=str(path))
+    except InputError as error:
+        return {"imported": False, "error": str(error)}
+    result = {"imported": True}
+    X = _random_inputs(matlab, 1000, 0)
+    again = from_fis(to_fis(matlab), source="re-exported")
+    result["round_trip"] = bool(np.array_equal(again.evaluate(X), matlab.evaluate(X), equal_nan=True))
+    if twin.exists():
+        reference = from_fll(twin.read_text(), source=str(twin))
+        if reference.output_names == matlab.output_names and reference.input_names == matlab.input_names:
+            reference = from_fll_engine(twin.read_text(), source=str(twin))
+            ours = _with_settings_of(matlab, reference)
+            result["fll_max_rel_diff"] = _difference(ours.evaluate(X), reference.evaluate(X), _scale(reference))
+        else:
+            result["fll_twin"] = "different variables"
+    result["agrees"] = result["round_trip"] and result.get("fll_max_rel_diff", 0.0) <= TOLERANCE
+    return result
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--examples", action="append", metavar="DIR",
                         help="folder of fuzzylite example engines (repeat; default $FUZZYNAV_FLL_EXAMPLES, ':'-separated)")
+    parser.add_argument("--fis", action="store_true", help="survey the .fis files instead (against their .fll twins)")
     parser.add_argument("--json", action="store_true", help="one JSON object per engine, then the counts")
     args = parser.parse_args(argv)
     folders = args.examples or [d for d in os.environ.get("FUZZYNAV_FLL_EXAMPLES", "").split(os.pathsep) if d]
     if not folders:
         parser.error("give --examples DIR (or set FUZZYNAV_FLL_EXAMPLES)")
     files = sorted(p for d in folders for p in Path(d).rglob("*.fll"))
+    if args.fis:
+        files = sorted(p for d in folders for p in Path(d).rglob("*.fis"))
     results = {}
     for path in files:
         try:
-            results[str(path)] = check(path)
+            results[str(path)] = check_fis(path) if args.fis else check(path)
         except Exception as error:  # a crash is a finding to report, not a reason to stop the survey
             results[str(path)] = {"imported": True, "agrees": False, "error": f"{type(error).__name__}: {error}"}
         r = results[str(path)]

@@ -1,6 +1,7 @@
 """Defuzzification of one output for a batch (fuzzylite 8 semantics).
 
 Integral defuzzifiers sample the aggregated set on ``resolution`` midpoints of the output range
+(or, as MATLAB does, on ``resolution`` points from end to end)
 (centroid Σyμ/Σμ; bisector: the sample where the running area is closest to half, averaged over
 ties; mean / smallest / largest of the samples of maximum membership). Weighted defuzzifiers
 group the activations by term (aggregated with the output's S-norm, or summed when it has none)
@@ -130,7 +131,10 @@ def aggregated(var: OutputVariable, activations: list, samples: np.ndarray, rows
 def integral(var: OutputVariable, activations: list, n: int) -> np.ndarray:
     """Centroid, bisector or mean / smallest / largest of maximum, row blocks of bounded size."""
     d = var.defuzzifier
-    samples = midpoints(var.minimum, var.maximum, d.resolution)
+    if d.grid == "linspace":
+        samples = np.linspace(var.minimum, var.maximum, d.resolution)
+    else:
+        samples = midpoints(var.minimum, var.maximum, d.resolution)
     out = np.full(n, np.nan)
     if not activations:
         return out

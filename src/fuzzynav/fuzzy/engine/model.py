@@ -27,11 +27,17 @@ DEFAULT_RESOLUTION = 1000  # fuzzylite's IntegralDefuzzifier.default_resolution
 
 @dataclass(frozen=True)
 class Defuzzifier:
-    """``kind`` in INTEGRAL (sampled on ``resolution`` midpoints of the range) or WEIGHTED (``type``)."""
+    """``kind`` in INTEGRAL or WEIGHTED (with its ``type``).
+
+    An integral defuzzifier samples the output range at ``resolution`` points: the midpoints of
+    as many equal cells (``grid="midpoints"``, fuzzylite) or evenly from end to end
+    (``grid="linspace"``, MATLAB's evalfis, 101 points by default).
+    """
 
     kind: str
     resolution: int = DEFAULT_RESOLUTION
     type: str = "Automatic"
+    grid: str = "midpoints"
 
     @property
     def integral(self) -> bool:

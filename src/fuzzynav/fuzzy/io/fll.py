@@ -11,12 +11,15 @@ and line.
 
 Export writes every number in full precision (shortest round-trip repr; fuzzylite's own
 exporter rounds to 3 decimals, which shifts the goal-seeking α by ~3e-4 rad). A FuzzySystem is
-written as the engine of :func:`~fuzzynav.fuzzy.engine.convert.system_to_engine`.
+written as the engine of :func:`~fuzzynav.fuzzy.engine.convert.system_to_engine`; an output
+sampled the MATLAB way (a ``.fis`` file's centroid on 101 points from end to end) is written
+with its range widened by half a sample step at each end, which gives fuzzylite the same points.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVariable, RuleBlock, parse_engine_rule
@@ -58,6 +61,16 @@ def _variable_lines(kind: str, v) -> list[str]:
     return lines + [f"  term: {label} {term_to_fll(mf)}" for label, mf in v.terms.items()]
 
 
+def _fuzzylite_grid(v: OutputVariable) -> OutputVariable:
+    """A MATLAB-sampled output (``linspace`` grid) as fuzzylite can write it: the same sample points
+    are the midpoints of the range widened by half a step at each end."""
+    d = v.defuzzifier
+    if d is None or d.grid != "linspace":
+        return v
+    half = 0.5 * (v.maximum - v.minimum) / (d.resolution - 1)
+    return replace(v, minimum=v.minimum - half, maximum=v.maximum + half, defuzzifier=replace(d, grid="midpoints"))
+
+
 def _activation_text(block: RuleBlock) -> str:
     return " ".join([block.activation, *(num(p) if isinstance(p, float) else str(p) for p in block.activation_params)])
 
@@ -71,7 +84,7 @@ def to_fll(system: FuzzySystem | Engine) -> str:
     for v in engine.inputs:
         lines += _variable_lines("InputVariable", v)
     for v in engine.outputs:
-        lines += _variable_lines("OutputVariable", v)
+        lines += _variable_lines("OutputVariable", _fuzzylite_grid(v))
     for block in engine.blocks:
         lines.append(f"RuleBlock: {block.name}".rstrip())
         if block.description:
