@@ -23,6 +23,7 @@ import numpy as np
 
 from fuzzynav.control.base import thesis_angle_error
 from fuzzynav.control.batched import BatchedController, evaluate
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
@@ -30,10 +31,11 @@ ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
 
 
 class GuardedGoalSeeking:
-    """Table IV.1 on a batch, with the anti-orbit guard of the module docstring."""
+    """Table IV.1 (or a ``system`` replacing it, same inputs and outputs) on a batch, with the
+    anti-orbit guard of the module docstring."""
 
-    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase):
-        self.system = goal_seeking()
+    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, system=None):
+        self.system = system if system is not None else goal_seeking()
         self.wheelbase = float(wheelbase)
 
     def __call__(self, distance, bearing):
@@ -59,12 +61,19 @@ class GuardedGoalSeeking:
 
 
 class GoalSeekingController(BatchedController):
-    """``goal-seeking``: the GSB alone (Figs IV.12–IV.14); blind to obstacles."""
+    """``goal-seeking``: the GSB alone (Figs IV.12–IV.14); blind to obstacles.
+
+    ``systems={"gsb": system}`` replaces Table IV.1 (see :mod:`fuzzynav.control.fuzzy_roles`).
+    """
 
     name = "goal-seeking"
 
-    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase):
-        self.gsb = GuardedGoalSeeking(wheelbase)
+    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: dict | None = None):
+        systems = dict(systems or {})
+        unknown = sorted(set(systems) - {"gsb"})
+        if unknown:
+            raise InputError(f"goal-seeking has no role {', '.join(unknown)} (its role: gsb)", field="systems")
+        self.gsb = GuardedGoalSeeking(wheelbase, systems.get("gsb"))
 
     def act_batch(self, obs):
         steering, speed, _ = self.gsb(obs.target_distance, obs.target_bearing)
