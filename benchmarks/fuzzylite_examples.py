@@ -52,10 +52,11 @@ def _theirs(text: str, X: np.ndarray) -> np.ndarray:
         engine.process()
         return np.atleast_2d(engine.output_values).reshape(len(X), -1)
     out = []
-    for row in X:
-        engine.input_values = row[None, :]
+    for row in X:  # scalar values: pyfuzzylite's Proportional activation fails on a one-row array
+        for variable, value in zip(engine.input_variables, row):
+            variable.value = float(value)
         engine.process()
-        out.append(np.atleast_1d(np.asarray(engine.output_values, dtype=float)).ravel())
+        out.append([float(np.asarray(v.value).ravel()[-1]) for v in engine.output_variables])
     return np.array(out)
 
 

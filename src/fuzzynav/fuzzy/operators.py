@@ -12,9 +12,19 @@ from __future__ import annotations
 import numpy as np
 
 
-def _where(cond, a, b):
+def _hamacher_product(a, b):
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(cond, a, b)
+        return np.where(a + b != 0.0, (a * b) / (a + b - a * b), 0.0)
+
+
+def _hamacher_sum(a, b):
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(a * b != 1.0, (a + b - 2.0 * a * b) / (1.0 - a * b), 1.0)
+
+
+def _seldom(x):
+    with np.errstate(invalid="ignore"):
+        return np.where(x <= 0.5, np.sqrt(0.5 * x), 1.0 - np.sqrt(0.5 * (1.0 - x)))
 
 
 TNORMS = {
@@ -22,7 +32,7 @@ TNORMS = {
     "BoundedDifference": lambda a, b: np.maximum(0.0, a + b - 1.0),
     "DrasticProduct": lambda a, b: np.where(np.maximum(a, b) == 1.0, np.minimum(a, b), 0.0),
     "EinsteinProduct": lambda a, b: (a * b) / (2.0 - (a + b - a * b)),
-    "HamacherProduct": lambda a, b: _where(a + b != 0.0, (a * b) / (a + b - a * b), 0.0),
+    "HamacherProduct": _hamacher_product,
     "Minimum": np.minimum,
     "NilpotentMinimum": lambda a, b: np.where(a + b > 1.0, np.minimum(a, b), 0.0),
 }
@@ -31,7 +41,7 @@ SNORMS = {
     "BoundedSum": lambda a, b: np.minimum(1.0, a + b),
     "DrasticSum": lambda a, b: np.where(np.minimum(a, b) == 0.0, np.maximum(a, b), 1.0),
     "EinsteinSum": lambda a, b: (a + b) / (1.0 + a * b),
-    "HamacherSum": lambda a, b: _where(a * b != 1.0, (a + b - 2.0 * a * b) / (1.0 - a * b), 1.0),
+    "HamacherSum": _hamacher_sum,
     "Maximum": np.maximum,
     "NilpotentMaximum": lambda a, b: np.where(a + b < 1.0, np.maximum(a, b), 1.0),
     "NormalizedSum": lambda a, b: (a + b) / np.maximum(1.0, a + b),
@@ -42,7 +52,7 @@ HEDGES = {
     "very": lambda x: x * x,
     "somewhat": lambda x: np.sqrt(x),
     "extremely": lambda x: np.where(x <= 0.5, 2.0 * x * x, 1.0 - 2.0 * (1.0 - x) ** 2),
-    "seldom": lambda x: _where(x <= 0.5, np.sqrt(0.5 * x), 1.0 - np.sqrt(0.5 * (1.0 - x))),
+    "seldom": _seldom,
     "any": lambda x: np.ones_like(x),
 }
 ACTIVATIONS = ("General", "First", "Last", "Highest", "Lowest", "Proportional", "Threshold")
@@ -65,7 +75,7 @@ def activate(kind: str, params: tuple, degrees: np.ndarray) -> tuple[np.ndarray,
     if kind == "Proportional":
         positive = degrees > 0
         total = np.where(positive, degrees, 0.0).sum(axis=1, keepdims=True)
-        return _where(positive, degrees / np.where(total > 0, total, 1.0), 0.0), positive
+        return np.where(positive, degrees / np.where(total > 0, total, 1.0), 0.0), positive
     if kind == "Threshold":
         comparator, threshold = params
         return degrees, COMPARATORS[comparator](degrees, threshold)
