@@ -137,74 +137,32 @@ OutputVariable: y
   term: s SShape 0.3 0.7
   term: zz ZShape 0.4 0.9
   term: c Concave 0.6 0.8
-RuleBlock: r
-  enabled: true
-  conjunction: none
-  disjunction: none
-  implication: none
-  activation: General
-  rule: if x is small then y is r
-  rule: if x is medium then y is s
-  rule: if x is large then y is zz
-  rule: if x is medium then y is c with 0.5
 """
 
-CHAINED = """Engine: chained
-InputVariable: ambient
-  enabled: true
-  range: 0.0 1.0
-  lock-range: false
-  term: dark Triangle 0.0 0.25 0.5
-  term: medium Triangle 0.25 0.5 0.75
-  term: bright Triangle 0.5 0.75 1.0
-OutputVariable: power
-  enabled: true
-  range: 0.0 1.0
-  lock-range: false
-  aggregation: Maximum
-  defuzzifier: Bisector 400
-  default: nan
-  lock-previous: false
-  term: low Triangle 0.0 0.25 0.5
-  term: medium Triangle 0.25 0.5 0.75
-  term: high Triangle 0.5 0.75 1.0
-OutputVariable: inverse
-  enabled: true
-  range: 0.0 1.0
-  lock-range: true
-  aggregation: AlgebraicSum
-  defuzzifier: MeanOfMaximum 500
-  default: 0.5
-  lock-previous: false
-  term: low Cosine 0.2 0.5
-  term: medium Cosine 0.5 0.5
-  term: high Cosine 0.8 0.5
-RuleBlock: direct
-  enabled: true
-  conjunction: none
-  disjunction: none
-  implication: AlgebraicProduct
-  activation: General
-  rule: if ambient is dark then power is high
-  rule: if ambient is medium then power is medium
-  rule: if ambient is bright then power is low
-RuleBlock: inverse
-  enabled: true
-  conjunction: none
-  disjunction: none
-  implication: EinsteinProduct
-  activation: General
-  rule: if power is low then inverse is high
-  rule: if power is medium then inverse is medium
-  rule: if power is high then inverse is low
-RuleBlock: off
-  enabled: false
-  conjunction: none
-  disjunction: none
-  implication: Minimum
-  activation: General
-  rule: if ambient is dark then inverse is low
-"""
+def _block(name, implication, rules, enabled="true"):
+    """A rule block without conjunction or disjunction (one premise per rule)."""
+    head = [f"RuleBlock: {name}", f"  enabled: {enabled}", "  conjunction: none", "  disjunction: none",
+            f"  implication: {implication}", "  activation: General"]
+    return "\n".join(head + [f"  rule: {r}" for r in rules]) + "\n"
+
+
+_THIRDS = "  term: {} Triangle 0.0 0.25 0.5\n  term: {} Triangle 0.25 0.5 0.75\n  term: {} Triangle 0.5 0.75 1.0\n"
+# a dimmer whose second block reads the first block's output ("power") as a premise; a third block is off
+CHAINED = ("Engine: chained\nInputVariable: ambient\n  enabled: true\n  range: 0.0 1.0\n  lock-range: false\n"
+           + _THIRDS.format("dark", "medium", "bright")
+           + "OutputVariable: power\n  enabled: true\n  range: 0.0 1.0\n  lock-range: false\n  aggregation: Maximum\n"
+             "  defuzzifier: Bisector 400\n  default: nan\n  lock-previous: false\n"
+           + _THIRDS.format("low", "medium", "high")
+           + "OutputVariable: inverse\n  enabled: true\n  range: 0.0 1.0\n  lock-range: true\n"
+             "  aggregation: AlgebraicSum\n  defuzzifier: MeanOfMaximum 500\n  default: 0.5\n  lock-previous: false\n"
+             "  term: low Cosine 0.2 0.5\n  term: medium Cosine 0.5 0.5\n  term: high Cosine 0.8 0.5\n"
+           + _block("direct", "AlgebraicProduct", ["if ambient is dark then power is high",
+                                                   "if ambient is medium then power is medium",
+                                                   "if ambient is bright then power is low"])
+           + _block("inverse", "EinsteinProduct", ["if power is low then inverse is high",
+                                                   "if power is medium then inverse is medium",
+                                                   "if power is high then inverse is low"])
+           + _block("off", "Minimum", ["if ambient is dark then inverse is low"], enabled="false"))
 
 TNORMS = ("AlgebraicProduct", "BoundedDifference", "DrasticProduct", "EinsteinProduct", "HamacherProduct", "Minimum",
           "NilpotentMinimum")
@@ -213,6 +171,9 @@ SNORMS = ("AlgebraicSum", "BoundedSum", "DrasticSum", "EinsteinSum", "HamacherSu
 DEFUZZIFIERS = ("Centroid 300", "Bisector 300", "MeanOfMaximum 300", "SmallestOfMaximum 300",
                 "LargestOfMaximum 300")
 ACTIVATIONS = ("First 2 0.1", "Last 2 0.0", "Highest 2", "Lowest 2", "Proportional", "Threshold >= 0.3")
+
+TSUKAMOTO += _block("r", "none", ["if x is small then y is r", "if x is medium then y is s",
+                                  "if x is large then y is zz", "if x is medium then y is c with 0.5"])
 
 ENGINES = {"mamdani": _mamdani(), "mamdani-locked": _mamdani(lock="true"), "takagi-sugeno": TAKAGI_SUGENO,
            "tsukamoto": TSUKAMOTO, "chained": CHAINED}

@@ -96,26 +96,13 @@ def term_from_fis(value: str, source, line: int) -> tuple[str, MembershipFunctio
         if kind == "function":
             return label, Function(raw)
         p = [float(x) for x in raw.replace(",", " ").split()]
-        if kind == "constant":
-            if len(p) != 1:
-                raise ValueError(f"constant takes 1 parameter, got {len(p)}")
-            return label, extra.Constant(p[0])
-        if kind == "linear":
-            return label, Linear(p[:-1], p[-1]) if p else Linear((), 0.0)
-        if kind == "discretemf":
-            height = p.pop() if len(p) % 2 else 1.0
-            mf = extra.Discrete(*p)
-        elif kind in _MFS:
-            _, arity, build, _ = _MFS[kind]
-            if kind in _MATLAB and len(p) > arity and not any(p[arity:]):
-                p = p[:arity]  # older MATLAB files pad every parameter list with zeros to the same length
-            if len(p) not in (arity, arity + 1):
-                raise ValueError(f"{kind} takes {arity} parameters, got {len(p)}")
-            height = p[arity] if len(p) > arity else 1.0
-            mf = build(p[:arity])
-        else:
+        if kind in _MATLAB and len(p) > _MFS[kind][1] and not any(p[_MFS[kind][1]:]):
+            p = p[:_MFS[kind][1]]  # older MATLAB files pad every parameter list with zeros to the same length
+        if kind not in _MFS and kind not in ("constant", "linear", "discretemf"):
             raise ValueError(f"unknown membership function {kind!r} (known: {', '.join(_MFS)}, constant, linear, "
                              "discretemf, function)")
+        _, arity, build, _ = _MFS.get(kind, (None, 0, None, None))
+        return label, extra.from_numbers("discrete" if kind == "discretemf" else kind, p, build, arity)
     except ValueError as error:
         raise InputError(f"{label}: {error}", source=source, field=where) from None
-    return label, mf if height == 1.0 else extra.Scaled(mf, height)
+

@@ -71,25 +71,8 @@ def term_from_fll(value: str, source, line: int) -> tuple[str, MembershipFunctio
     try:
         if kind == "Function":
             return label, Function(value.split(None, 2)[2] if len(parts) > 2 else "")
-        p = [float(x) for x in raw]
+        arity, build = _TERMS[kind][:2] if kind in _TERMS else (0, None)
+        return label, extra.from_numbers(kind.lower(), [float(x) for x in raw], build, arity)
     except ValueError as error:
         raise InputError(f"term {label}: {error}", source=source, field=where) from None
-    try:
-        if kind == "Constant":
-            if len(p) != 1:
-                raise ValueError(f"Constant takes 1 parameter, got {len(p)}")
-            return label, extra.Constant(p[0])
-        if kind == "Linear":
-            return label, Linear(p[:-1], p[-1]) if p else Linear((), 0.0)
-        if kind == "Discrete":
-            height = p.pop() if len(p) % 2 else 1.0
-            mf = extra.Discrete(*p)
-        else:
-            arity, build, _ = _TERMS[kind]
-            if len(p) not in (arity, arity + 1):
-                raise ValueError(f"{kind} takes {arity} parameters (+ an optional height), got {len(p)}")
-            height = p[arity] if len(p) > arity else 1.0
-            mf = build(p[:arity])
-    except ValueError as error:
-        raise InputError(f"term {label}: {error}", source=source, field=where) from None
-    return label, mf if height == 1.0 else extra.Scaled(mf, height)
+

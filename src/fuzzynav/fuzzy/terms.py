@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.membership import MembershipFunction, _as_float
+from fuzzynav.fuzzy.membership import Linear, MembershipFunction, _as_float
 
 
 def _x(x) -> np.ndarray:
@@ -255,6 +255,27 @@ class Scaled(MembershipFunction):
 
     def __hash__(self) -> int:
         return hash(("Scaled", self.term, self.height))
+
+
+def from_numbers(kind: str, p: list[float], build, arity: int) -> MembershipFunction:
+    """A term from its parameter list as fuzzylite and MATLAB files give it: ``constant`` c,
+    ``linear`` c1 … cn c0, ``discrete`` x y pairs (an odd count ends with a height), otherwise
+    ``build(p[:arity])`` with an optional last parameter, the height. ValueError if malformed."""
+    if kind == "constant":
+        if len(p) != 1:
+            raise ValueError(f"constant takes 1 parameter, got {len(p)}")
+        return Constant(p[0])
+    if kind == "linear":
+        return Linear(p[:-1], p[-1]) if p else Linear((), 0.0)
+    if kind == "discrete":
+        height = p[-1] if len(p) % 2 else 1.0
+        mf = Discrete(*(p[:-1] if len(p) % 2 else p))
+    else:
+        if len(p) not in (arity, arity + 1):
+            raise ValueError(f"{kind} takes {arity} parameters (+ an optional height), got {len(p)}")
+        height = p[arity] if len(p) > arity else 1.0
+        mf = build(p[:arity])
+    return mf if height == 1.0 else Scaled(mf, height)
 
 
 EXTRA_KINDS: dict[str, type[MembershipFunction]] = {

@@ -26,9 +26,10 @@ from fuzzynav.fuzzy.engine import defuzzify
 from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.operators import ACTIVATIONS, HEDGES, SNORMS, TNORMS, activate
+from fuzzynav.fuzzy.variable import VariableNames
 
 
-class Engine:
+class Engine(VariableNames):
     """A fuzzylite-style engine: ``evaluate(X)`` maps (N, n_inputs) to (N, n_outputs)."""
 
     method = "engine"
@@ -45,23 +46,12 @@ class Engine:
 
     # ------------------------------------------------------------------ construction
     @property
-    def input_names(self) -> list[str]:
-        return [v.name for v in self.inputs]
-
-    @property
-    def output_names(self) -> list[str]:
-        return [v.name for v in self.outputs]
-
-    @property
     def rules(self) -> list:
         """Every rule of every block, in order."""
         return [rule for block in self.blocks for rule in block.rules]
 
     def _check(self) -> None:
-        names = self.input_names + self.output_names
-        dupes = sorted({n for n in names if names.count(n) > 1})
-        if dupes:
-            raise InputError(f"duplicate variable name(s) {', '.join(dupes)}", field="variables")
+        self.check_unique_names()
         if not self.outputs:
             raise InputError("an engine needs at least one output", field="variables")
         for var in self.inputs + self.outputs:
