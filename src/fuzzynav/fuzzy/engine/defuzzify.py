@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.level_sets import LevelSetCentroid
 from fuzzynav.fuzzy.engine.model import OutputVariable
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
@@ -128,8 +129,21 @@ def aggregated(var: OutputVariable, activations: list, samples: np.ndarray, rows
     return agg
 
 
-def integral(var: OutputVariable, activations: list, n: int) -> np.ndarray:
-    """Centroid, bisector or mean / smallest / largest of maximum, row blocks of bounded size."""
+def _max_min_degrees(activations: list) -> tuple[list, np.ndarray]:
+    """Term labels and their degrees (N, T), max-aggregated over the rules concluding on them."""
+    grouped: dict = {}
+    for label, degree, triggered, _ in activations:
+        w = degree if triggered is None else np.where(triggered, degree, 0.0)
+        grouped[label] = w if label not in grouped else np.maximum(grouped[label], w)
+    return list(grouped), np.column_stack(list(grouped.values()))
+
+
+def integral(var: OutputVariable, activations: list, n: int, cache: dict | None = None) -> np.ndarray:
+    """Centroid, bisector or mean / smallest / largest of maximum, row blocks of bounded size.
+
+    A max–min centroid runs on :class:`~fuzzynav.fuzzy.engine.level_sets.LevelSetCentroid`
+    (exact, O(log R) per row and term), kept in ``cache`` between calls.
+    """
     d = var.defuzzifier
     if d.grid == "linspace":
         samples = np.linspace(var.minimum, var.maximum, d.resolution)
@@ -138,6 +152,15 @@ def integral(var: OutputVariable, activations: list, n: int) -> np.ndarray:
     out = np.full(n, np.nan)
     if not activations:
         return out
+    if (d.kind == "Centroid" and var.aggregation == "Maximum" and cache is not None
+            and all(implication == "Minimum" for *_, implication in activations)):
+        labels, degrees = _max_min_degrees(activations)
+        key = (var.name, tuple(labels))
+        if key not in cache:
+            shapes = np.array([np.broadcast_to(var.terms[label](samples), samples.shape) for label in labels])
+            cache[key] = LevelSetCentroid(shapes, samples) if LevelSetCentroid.applies(shapes) else None
+        if cache[key] is not None and not np.isnan(degrees).any():
+            return cache[key].centroid(degrees)
     step = max(1, _BLOCK // samples.shape[0])
     for start in range(0, n, step):
         rows = slice(start, min(n, start + step))

@@ -43,6 +43,7 @@ class Engine(VariableNames):
         self.description = description
         self._check()
         self._flat = [_flatten(block, {v.name for v in self.inputs}) for block in self.blocks]
+        self._level_sets: dict = {}  # sorted level sets of max-min centroids, built on first use
 
     # ------------------------------------------------------------------ construction
     @property
@@ -129,7 +130,7 @@ class Engine(VariableNames):
                 continue
             acts = state.fuzzy[var.name]
             if var.defuzzifier.integral:
-                y = defuzzify.integral(var, acts, n)
+                y = defuzzify.integral(var, acts, n, self._level_sets)
             else:
                 y = defuzzify.weighted(var, state.groups(var), columns, values)
             y = _finish(var, y)
