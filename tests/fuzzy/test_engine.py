@@ -138,3 +138,41 @@ def test_errors_name_the_line(change, message):
                             activation="General")
     with pytest.raises(InputError, match=message):
         from_fll(text.replace(*change), source="e.fll")
+
+
+def test_damaged_files_raise_input_errors_only():
+    # every line of the FLL and .fis fixtures damaged in turn (a word replaced, inserted or cut):
+    # each is either read (and evaluates) or refused with an InputError — never another exception
+    import random
+
+    from fuzzynav.fuzzy.io import dumps, loads
+    from fuzzynav.fuzzy.systems import get_system
+
+    rng = random.Random(0)
+    texts = [(t, "fll") for t in ENGINES.values()] + [(dumps(get_system("goal-seeking"), "fis"), "fis")]
+    tokens = ["", "x", "1.2.3", "nan", "-", "(", ")", "inf", "'", ":", ",", "[", "]", "=", "0", "and", "or", "not",
+              "very", "Blob", "#", "%"]
+    refused = 0
+    for _ in range(1500):
+        text, fmt = rng.choice(texts)
+        lines = text.splitlines()
+        k = rng.randrange(len(lines))
+        words = lines[k].split(" ")
+        j = rng.randrange(len(words))
+        choice = rng.random()
+        if choice < 0.4:
+            words[j] = rng.choice(tokens)
+        elif choice < 0.7:
+            words.insert(j, rng.choice(tokens))
+        else:
+            words[j] = words[j][: rng.randrange(len(words[j]) + 1)]
+        lines[k] = " ".join(words)
+        try:
+            system = loads("\n".join(lines), fmt, source="damaged")
+        except InputError as error:
+            assert str(error).startswith("damaged")
+            refused += 1
+            continue
+        with np.errstate(all="ignore"):
+            system.evaluate(np.zeros((3, len(system.inputs))))
+    assert refused > 300

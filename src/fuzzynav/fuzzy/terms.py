@@ -85,6 +85,10 @@ class Cosine(_Params):
 
     kind, names = "cosine", ("center", "width")
 
+    def check(self) -> None:
+        if not self.width > 0:
+            raise ValueError(f"cosine needs a width > 0, got {self.width}")
+
     def __call__(self, x):
         x, c, w = _x(x), self.center, self.width
         within = np.isfinite(x) & (x >= c - 0.5 * w) & (x <= c + 0.5 * w)
@@ -112,6 +116,10 @@ class Spike(_Params):
     """Spike: exp(−|10 (x − c) / w|)."""
 
     kind, names = "spike", ("center", "width")
+
+    def check(self) -> None:
+        if self.width == 0:
+            raise ValueError("spike needs a width != 0")
 
     def __call__(self, x):
         return np.exp(-np.abs(10.0 / self.width * (_x(x) - self.center)))

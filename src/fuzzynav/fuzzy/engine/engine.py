@@ -25,6 +25,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import defuzzify
 from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.membership import Linear
 from fuzzynav.fuzzy.operators import ACTIVATIONS, HEDGES, SNORMS, TNORMS, activate
 from fuzzynav.fuzzy.variable import VariableNames
 
@@ -59,6 +60,10 @@ class Engine(VariableNames):
             if not var.minimum <= var.maximum:
                 raise InputError(f"range [{var.minimum}, {var.maximum}] is empty", field=f"{var.name}.range")
         for var in self.outputs:
+            for label, mf in var.terms.items():
+                if isinstance(mf, Linear) and len(mf.coefficients) != len(self.inputs):
+                    raise InputError(f"a linear term takes {len(self.inputs)} coefficients (one per input) and a "
+                                     f"constant, got {len(mf.params())} numbers", field=f"{var.name}.{label}")
             if var.aggregation is not None and var.aggregation not in SNORMS:
                 raise InputError(f"unknown aggregation {var.aggregation!r} (one of {', '.join(SNORMS)})",
                                  field=f"{var.name}.aggregation")

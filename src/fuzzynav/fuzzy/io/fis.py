@@ -117,14 +117,16 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
                 label = next(f"{label}_{k}" for k in range(2, len(var.terms) + 3) if f"{label}_{k}" not in var.terms)
             var.terms[label] = mf
             order.append(label)
-        elif key == "Enabled":
-            var.enabled = float(value) == 1.0
-        elif output and key in ("Default", "LockPrevious", "LockRange"):
-            number = float(value)
+        elif key in ("Enabled", "Default", "LockPrevious", "LockRange") and (output or key == "Enabled"):
+            try:
+                number = float(value)
+            except ValueError:
+                raise lines.error(f"{key} must be a number, got {value!r}", line, key) from None
             if key == "Default":
                 var.default = number
             else:
-                setattr(var, "lock_previous" if key == "LockPrevious" else "lock_range", number == 1.0)
+                attribute = {"Enabled": "enabled", "LockPrevious": "lock_previous", "LockRange": "lock_range"}[key]
+                setattr(var, attribute, number == 1.0)
         elif key != "NumMFs":
             raise lines.error(f"unknown key {key!r} in {section['name']}", line, key)
     if not var.name:
@@ -153,7 +155,11 @@ def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[EngineRule, 
     match = re.fullmatch(r"([-\d.\s]+),([-\d.\s]+)\(\s*([-\d.eE+]+)\s*\)\s*:\s*(\d)", text)
     if not match:
         raise lines.error(f"a rule reads 'i1 i2 ..., o1 ... (weight) : 1|2', got {text!r}", line)
-    ins, outs = ([float(v) for v in group.split()] for group in match.group(1, 2))
+    try:
+        ins, outs = ([float(v) for v in group.split()] for group in match.group(1, 2))
+        weight = float(match.group(3))
+    except ValueError as error:
+        raise lines.error(f"rule codes and weight are numbers: {error}", line) from None
     if len(ins) != len(inputs) or len(outs) != len(outputs):
         raise lines.error(f"expected {len(inputs)} input and {len(outputs)} output codes, got {len(ins)} and "
                           f"{len(outs)}", line)
@@ -168,7 +174,7 @@ def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[EngineRule, 
     antecedent = premises[0]
     for p in premises[1:]:
         antecedent = Operator("and" if connective == 1 else "or", antecedent, p)
-    return EngineRule(antecedent, conclusions, float(match.group(3))), connective
+    return EngineRule(antecedent, conclusions, weight), connective
 
 
 def _system_options(section: dict, lines: _Lines) -> dict:

@@ -124,7 +124,7 @@ class _Reader:
             if len(words) > 2:
                 raise self.error(f"{kind} takes at most a resolution, got {value!r}", line)
             resolution = self.number(words[1], line, "resolution") if len(words) > 1 else 1000
-            if resolution != int(resolution) or resolution < 1:
+            if not math.isfinite(resolution) or resolution != int(resolution) or resolution < 1:
                 raise self.error(f"resolution must be a positive integer, got {words[1]!r}", line)
             return Defuzzifier(kind, int(resolution))
         if kind in WEIGHTED:
