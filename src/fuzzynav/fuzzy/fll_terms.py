@@ -8,6 +8,8 @@ count ends with the height); ``Function`` takes a formula.
 
 from __future__ import annotations
 
+import math
+
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
 from fuzzynav.fuzzy.formula import Function
@@ -34,28 +36,27 @@ _NAME_OF = {Triangular: "Triangle", Trapezoidal: "Trapezoid", Ramp: "Ramp", Gaus
 KNOWN = (*_TERMS, "Constant", "Linear", "Discrete", "Function")
 
 
-def _num(x: float) -> str:
-    from fuzzynav.fuzzy.io.fll import num
-
-    return num(x)
+def num(x: float) -> str:
+    """A number as FLL writes it, exactly (``nan``, ``inf``, ``-inf`` or the shortest repr)."""
+    return "nan" if math.isnan(x) else ("inf" if x == math.inf else "-inf" if x == -math.inf else repr(float(x)))
 
 
 def term_to_fll(mf: MembershipFunction) -> str:
     """``Kind params…`` of ``mf`` (full precision)."""
     if isinstance(mf, extra.Scaled):
-        return f"{term_to_fll(mf.term)} {_num(mf.height)}"
+        return f"{term_to_fll(mf.term)} {num(mf.height)}"
     if isinstance(mf, (Singleton, extra.Constant)):
-        return f"Constant {_num(mf.params()[0])}"
+        return f"Constant {num(mf.params()[0])}"
     if isinstance(mf, Linear):
-        return "Linear " + " ".join(_num(p) for p in mf.params())
+        return "Linear " + " ".join(num(p) for p in mf.params())
     if isinstance(mf, Function):
         return f"Function {mf.formula}"
     if isinstance(mf, extra.Discrete):
-        return "Discrete " + " ".join(_num(p) for p in mf.params())
+        return "Discrete " + " ".join(num(p) for p in mf.params())
     name = _NAME_OF.get(type(mf))
     if name is None:
         raise InputError(f"no FLL equivalent for {mf!r}", field="term")
-    return f"{name} {' '.join(_num(p) for p in _TERMS[name][2](mf))}"
+    return f"{name} {' '.join(num(p) for p in _TERMS[name][2](mf))}"
 
 
 def term_from_fll(value: str, source, line: int) -> tuple[str, MembershipFunction]:

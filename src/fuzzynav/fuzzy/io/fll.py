@@ -25,7 +25,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVariable, RuleBlock, parse_engine_rule
 from fuzzynav.fuzzy.engine.convert import engine_to_system, system_to_engine
 from fuzzynav.fuzzy.engine.model import INTEGRAL, WEIGHTED, WEIGHTED_TYPES
-from fuzzynav.fuzzy.fll_terms import term_from_fll, term_to_fll
+from fuzzynav.fuzzy.fll_terms import num, term_from_fll, term_to_fll
 from fuzzynav.fuzzy.membership import Linear
 from fuzzynav.fuzzy.operators import ACTIVATIONS
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -37,11 +37,6 @@ _SECTION_KEYS = {  # the keys fuzzylite's FllImporter accepts in each section
                        "aggregation", "defuzzifier"},
     "RuleBlock": {"description", "enabled", "conjunction", "disjunction", "implication", "activation", "rule"},
 }
-
-
-def num(x: float) -> str:
-    """A number as FLL writes it, exactly (``nan``, ``inf``, ``-inf`` or the shortest repr)."""
-    return "nan" if math.isnan(x) else ("inf" if x == math.inf else "-inf" if x == -math.inf else repr(float(x)))
 
 
 def _flag(value: bool) -> str:
