@@ -46,7 +46,8 @@ _MATLAB = ("trimf", "trapmf", "gaussmf", "gauss2mf", "gbellmf", "sigmf", "dsigmf
 _NAME_OF = {cls: name for name, (cls, *_) in _MFS.items() if cls is not None}
 
 
-def _num(x: float) -> str:
+def number(x: float) -> str:
+    """A number as a .fis file writes it (shortest exact repr; Inf, -Inf, NaN as MATLAB spells them)."""
     return repr(float(x)) if math.isfinite(x) else ("Inf" if x > 0 else "-Inf" if x < 0 else "NaN")
 
 
@@ -81,7 +82,7 @@ def term_to_fis(mf: MembershipFunction) -> str:
         params = _MFS[kind][3](mf)
     else:
         raise InputError(f"no .fis equivalent for {mf!r}", field="term")
-    return f"'{kind}',[{' '.join(_num(p) for p in (*params, *height))}]"
+    return f"'{kind}',[{' '.join(number(p) for p in (*params, *height))}]"
 
 
 def term_from_fis(value: str, source, line: int) -> tuple[str, MembershipFunction]:

@@ -34,7 +34,7 @@ from fuzzynav.fuzzy.engine import (Defuzzifier, Engine, EngineRule, InputVariabl
                                    Proposition, RuleBlock)
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.fis_terms import term_from_fis, term_to_fis
+from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
 from fuzzynav.fuzzy.system import FuzzySystem
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
@@ -269,10 +269,6 @@ def _flat(node) -> tuple[list[Proposition], str | None]:
     return left + right, node.name
 
 
-def _num(x: float) -> str:
-    return repr(float(x)) if math.isfinite(x) else ("Inf" if x > 0 else "-Inf" if x < 0 else "NaN")
-
-
 def to_fis(system: FuzzySystem | Engine) -> str:
     """``system`` as a MATLAB ``.fis`` file (full precision); InputError if it cannot be one."""
     from fuzzynav.fuzzy.engine.convert import system_to_engine
@@ -295,7 +291,7 @@ def to_fis(system: FuzzySystem | Engine) -> str:
              f"DefuzzMethod='{_inverse(_DEFUZZ, d.kind, 'defuzzifier') if d else 'wtaver'}'"]
     for section, variables in (("Input", engine.inputs), ("Output", outs)):
         for i, v in enumerate(variables, start=1):
-            lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{_num(v.minimum)} {_num(v.maximum)}]",
+            lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
                       f"NumMFs={len(v.terms)}"]
             lines += [f"MF{k}='{label}':{term_to_fis(mf)}" for k, (label, mf) in enumerate(v.terms.items(), 1)]
             if isinstance(v, OutputVariable) and v.lock_range:
@@ -312,5 +308,5 @@ def to_fis(system: FuzzySystem | Engine) -> str:
         results = {c.variable: _code(c, by_name[c.variable]) for c in rule.conclusions}
         ins = " ".join(codes.get(v.name, "0") for v in engine.inputs)
         outs_text = " ".join(results.get(v.name, "0") for v in outs)
-        lines.append(f"{ins}, {outs_text} ({_num(rule.weight)}) : {2 if op == 'or' else 1}")
+        lines.append(f"{ins}, {outs_text} ({number(rule.weight)}) : {2 if op == 'or' else 1}")
     return "\n".join(lines) + "\n"
