@@ -1,9 +1,9 @@
 """Defuzzification of one output for a batch (fuzzylite 8 semantics).
 
 Integral defuzzifiers sample the aggregated set on ``resolution`` midpoints of the output range
-(or, as MATLAB does, on ``resolution`` points from end to end)
-(centroid Σyμ/Σμ; bisector: the sample where the running area is closest to half, averaged over
-ties; mean / smallest / largest of the samples of maximum membership). Weighted defuzzifiers
+(or, as MATLAB does, on ``resolution`` points from end to end): centroid Σyμ/Σμ; bisector, the
+sample where the running area is closest to half (averaged over ties); mean / smallest / largest
+of the samples of maximum membership. Weighted defuzzifiers
 group the activations by term (aggregated with the output's S-norm, or summed when it has none)
 and average (``WeightedAverage``) or sum (``WeightedSum``) the terms' crisp values: a constant's
 value, a linear term on the input values, a function of the degree, or — ``Tsukamoto`` — the

@@ -26,6 +26,7 @@ from fuzzynav.fuzzy.engine import defuzzify
 from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear
+from fuzzynav.fuzzy.terms import Scaled
 from fuzzynav.fuzzy.operators import ACTIVATIONS, HEDGES, SNORMS, TNORMS, activate
 from fuzzynav.fuzzy.variable import VariableNames
 
@@ -61,6 +62,10 @@ class Engine(VariableNames):
                 raise InputError(f"range [{var.minimum}, {var.maximum}] is empty", field=f"{var.name}.range")
         for var in self.outputs:
             for label, mf in var.terms.items():
+                base = mf.term if isinstance(mf, Scaled) else mf
+                if var.defuzzifier is not None and var.defuzzifier.type == "Tsukamoto" and not hasattr(base, "inverse"):
+                    raise InputError(f"a {type(base).__name__} term has no inverse for Tsukamoto's method (monotone "
+                                     "terms: Ramp, Sigmoid, SShape, ZShape, Concave, Arc)", field=f"{var.name}.{label}")
                 if isinstance(mf, Linear) and len(mf.coefficients) != len(self.inputs):
                     raise InputError(f"a linear term takes {len(self.inputs)} coefficients (one per input) and a "
                                      f"constant, got {len(mf.params())} numbers", field=f"{var.name}.{label}")
