@@ -14,7 +14,8 @@ import json
 import sys
 
 from fuzzynav.cli import arguments
-from fuzzynav.control.registry import CONTROLLERS, make_controller
+from fuzzynav.control.fuzzy_roles import make_with_systems, systems_from_options
+from fuzzynav.control.registry import CONTROLLERS
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 
@@ -31,6 +32,8 @@ def register(subparsers) -> None:
                         help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
+    parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
+                        help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -45,14 +48,17 @@ def run(args) -> int:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
     if args.n < 1:
         raise InputError(f"must be >= 1, got {args.n}", field="--n")
+    if args.fis and args.model:
+        raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
+    systems = systems_from_options(args.controller, args.fis) if args.fis else None
     if args.controller is not None:
-        make_controller(args.controller)  # unknown names fail before any world is drawn
+        make_with_systems(args.controller, systems)  # unknown names fail before any world is drawn
 
     def progress(i, run):
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
 
     result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
-                      model=args.model)
+                      model=args.model, systems=systems)
     if args.json:
         print(json.dumps(result))
         return 0

@@ -1,4 +1,4 @@
-"""``fuzzynav run SCENARIO --controller NAME | --model FILE`` — run one episode (issue 3).
+"""``fuzzynav run SCENARIO --controller NAME [--fis ROLE=FILE] | --model FILE`` — run one episode.
 
 SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Prints a one-line
 summary, or with ``--json`` exactly one JSON object with the metrics of
@@ -25,6 +25,9 @@ def register(subparsers) -> None:
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--controller", metavar="NAME", help="built-in controller name")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
+    parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
+                        help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
+                             ".fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` writes a start)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
     parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
     parser.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
@@ -35,19 +38,21 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.control.fuzzy_roles import make_with_systems, systems_from_options
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.world.scenario import load_scenario
 
     if args.max_time is not None and not (math.isfinite(args.max_time) and args.max_time > 0):
         raise InputError(f"must be a finite number > 0, got {args.max_time!r}", field="--max-time")
+    if args.fis and args.model:
+        raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     scenario = load_scenario(args.scenario)
     if args.model:
         from fuzzynav.models import load_controller
 
         controller = load_controller(args.model)
     else:
-        controller = make_controller(args.controller)
+        controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time)
     numbers = metrics(trace, scenario)
     if args.plot:

@@ -21,9 +21,10 @@ from fuzzynav.world.generate import generate_worlds
 
 
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
-             progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None) -> dict:
-    """Run the registered ``controller`` — or the one stored in the ``model`` file — on ``n``
-    seeded worlds of family ``worlds``.
+             progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
+             systems: dict | None = None) -> dict:
+    """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given) —
+    or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``.
 
     A model is loaded once; every episode starts from the simulator's ``reset(rng)`` of it, as a
     registered controller is built afresh per world.
@@ -36,7 +37,7 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         loaded = load_controller(model)
         build, controller = (lambda: loaded), loaded.name
     else:
-        build = lambda: make_controller(controller)
+        build = lambda: make_controller(controller, systems=systems) if systems else make_controller(controller)
     scenarios = generate_worlds(worlds, n, seed)
     runs = []
     for i, scenario in enumerate(scenarios):
