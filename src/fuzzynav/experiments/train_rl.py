@@ -240,12 +240,15 @@ def converged_at(reward, success, batch: int, settings: dict | None = None) -> i
 class PhaseSummary(dict):
     """The train results of one phase: ``episodes``, ``converged_at`` (``None`` when the curve did
     not settle within the budget) and ``final_training_success``; JSON as a plain mapping, and
-    printed by ``fuzzynav train`` as one readable line ("not settled" for ``None``)."""
+    printed by ``fuzzynav train`` as one readable line ("not converged within N episodes" for ``None``)."""
 
     def __str__(self) -> str:
-        converged = "not settled" if self["converged_at"] is None else f"episode {self['converged_at']}"
-        return (f"{self['episodes']} episodes, converged: {converged}, "
-                f"final training success {self['final_training_success']:.1%}")
+        converged = (f"not converged within {self['episodes']} episodes (the mean reward per episode did not "
+                     f"settle on a plateau; more --episodes may help)" if self["converged_at"] is None
+                     else f"converged at episode {self['converged_at']}")
+        return (f"{self['episodes']} episodes, {converged}; success in the last training episodes "
+                f"{self['final_training_success']:.1%} (goal reached, or for wall following no collision before "
+                f"the time limit; exploration still on)")
 
 
 def _summary(phases: dict) -> dict:

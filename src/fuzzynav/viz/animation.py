@@ -25,9 +25,11 @@ from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
 
 
-def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: int = 10, max_frames: int = 100,
-                    rays: bool = True, dpi: int = 60) -> int:
-    """Write the episode as a GIF to ``path`` (5 in square at ``dpi``); returns the number of frames."""
+def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, max_frames: int = 100,
+                    rays: bool = True, size: int = 400) -> int:
+    """Write the episode as a GIF of ``size`` × ``size`` pixels at ``fps`` frames per second to
+    ``path``; returns the number of frames."""
+    dpi = size / 5
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
@@ -68,5 +70,5 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: int = 10, ma
     images = [image.quantize(palette=palette, dither=Image.Dither.NONE) for image in images]
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     images[0].save(str(path), format="GIF", save_all=True, append_images=images[1:],
-                   duration=int(round(1000 / fps)), loop=0)
+                   duration=max(10, int(round(1000 / fps))), loop=0)
     return len(frames)
