@@ -26,7 +26,7 @@ from matplotlib.figure import Figure
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory
+from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 # Fig IV.12: (start x, y, θ), (goal x, y) per panel; the first pair is the built-in scenario.
@@ -39,10 +39,7 @@ FIG_IV_12 = {
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def _outcome(trace, scenario) -> dict:

@@ -35,20 +35,18 @@ from matplotlib.figure import Figure
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
-from fuzzynav.viz.trajectories import draw_world
+from fuzzynav.viz import palette
+from fuzzynav.viz.trajectories import draw_world, save_figure
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
-COLOURS = {"fuzzy-tracker": "tab:blue", "neural-tracker": "tab:red", "anfis-tracker": "tab:green"}
+COLOURS = {name: colour for name, (colour, _) in palette.TRACKERS.items()}
 PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
 PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
@@ -76,8 +74,7 @@ def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
         c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
     figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
     if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
+        save_figure(figure, path)
     return figure
 
 

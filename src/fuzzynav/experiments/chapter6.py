@@ -36,14 +36,11 @@ from fuzzynav.models import load_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.training import TrainRequest
 from fuzzynav.viz.curves import plot_learning_curve
-from fuzzynav.viz.trajectories import plot_trajectory
+from fuzzynav.viz.trajectories import plot_trajectory, save_figure
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def _request(out_dir, name: str, episodes, seed: int) -> TrainRequest:
@@ -72,7 +69,7 @@ def _figure(curves: dict, converged: dict, controller, starts, title: str, out_d
     converged = {phase: converged[phase]["converged_at"] for phase in curves}
     for ax, (phase, curve) in zip(axes, curves.items()):
         plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
-                            mark_convergence=converged[phase] is not None, converged_at=converged[phase])
+                            converged_at=converged[phase] or len(curve) + 1)  # past the curve: not converged
     outcomes = []
     for ax, scenario in zip(axes[len(curves):], starts):
         trace = run_episode(scenario, controller)
@@ -134,15 +131,19 @@ def table_vi_1(out_dir, quick=False, seed=0) -> dict:
         rows.append({"states": n_states, "actions": n_actions, "thesis_episodes": thesis,
                      "episodes": result["episodes"], "episodes_to_converge": result["converged_at"],
                      "success": rl.evaluate_goal(controller, 20 if quick else 100)["success"]})
-    figure = Figure(figsize=(6, 2.4), layout="constrained")
+    figure = Figure(figsize=(9, 2.2), layout="constrained")
     ax = figure.add_subplot(111)
     ax.axis("off")
     here = lambda r: (f"not converged within {r['episodes']}" if r["episodes_to_converge"] is None
                       else r["episodes_to_converge"])
-    ax.table(cellText=[[r["states"], r["actions"], r["thesis_episodes"], here(r), f"{r['success']:.0%}"]
-                       for r in rows],
-             colLabels=["states", "actions", "thesis: episodes to converge", "here: episodes to converge",
-                        "success on random goals"], loc="center")
+    table = ax.table(cellText=[[r["states"], r["actions"], r["thesis_episodes"], here(r), f"{r['success']:.0%}"]
+                               for r in rows],
+                     colLabels=["states", "actions", "thesis: episodes to converge", "here: episodes to converge",
+                                "success on random goals"], colWidths=[0.1, 0.1, 0.27, 0.3, 0.23],
+                     cellLoc="center", loc="center")
+    table.auto_set_font_size(False)
+    table.set_fontsize(10)
+    table.scale(1.0, 1.6)
     return {"rows": rows, "figure": _save(figure, out_dir, "table-VI-1.png")}
 
 

@@ -21,6 +21,7 @@ from matplotlib.figure import Figure
 from PIL import Image
 
 from fuzzynav.sim.trace import Trace
+from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
 
@@ -39,9 +40,9 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     body = patches.Circle(trace.pose[0, :2], trace.robot_radius, fill=False, edgecolor="k")
     ax.add_patch(body)
     heading, = ax.plot([], [], color="k", linewidth=1.5)
-    beams = LineCollection([], colors="tab:orange", linewidths=0.7, alpha=0.8)
+    beams = LineCollection([], colors=RAY_COLOUR, linewidths=0.7, alpha=0.8)
     ax.add_collection(beams)
-    target, = ax.plot([], [], "*", color="tab:green", markersize=12)
+    target, = ax.plot([], [], "*", color=GOAL_COLOUR, markersize=12)
     title = ax.set_title(f"{trace.scenario} — {trace.controller}  t = {trace.t[-1]:.1f} s", fontsize=9)
     moving = (trail, body, heading, beams, target, title)
     for artist in moving:
