@@ -90,10 +90,12 @@ class FuzzySystem:
     # ------------------------------------------------------------------ construction
     @property
     def input_names(self) -> list[str]:
+        """Names of the input variables, in the order of the columns of ``X``."""
         return [v.name for v in self.inputs]
 
     @property
     def output_names(self) -> list[str]:
+        """Names of the output variables, in the order of the output columns."""
         return [v.name for v in self.outputs]
 
     @property

@@ -95,10 +95,12 @@ class BatchSimulator:
 
     @property
     def active(self) -> np.ndarray:
+        """``(N,)`` bool: the robots still running."""
         return self.status == RUNNING
 
     @property
     def done(self) -> bool:
+        """True once every robot has stopped (reached, collided or timed out)."""
         return not self._all_running and not self.active.any()
 
     def sense(self) -> BatchObservation:
