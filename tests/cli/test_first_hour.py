@@ -109,3 +109,13 @@ def test_plot_colours_follow_the_behaviour_not_its_order():
     assert all(np.allclose(first[k], to_rgba(expected[str(b)])) for k, b in enumerate(trace.behaviour))
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert "GSB: goal seeking (Table IV.1)" in legend and any(t.startswith("A, B") for t in legend)
+
+
+def test_a_generated_world_opens_by_the_name_evaluate_gives_it(capsys):
+    from fuzzynav.world.generate import generated_world
+
+    assert generated_world("circles-2-004").to_dict() == generate_worlds("circles", 5, 2)[4].to_dict()
+    assert generated_world("fig-IV-23") is None and generated_world("mixed-a-1") is None
+    assert main(["run", "circles-2-004", "--controller", "goal-seeking"]) == 0
+    assert capsys.readouterr().out.startswith("circles-2-004 / goal-seeking:")
+    assert main(["run", "circles-2-x", "--controller", "goal-seeking"]) == 2

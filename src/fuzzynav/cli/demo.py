@@ -20,7 +20,8 @@ from pathlib import Path
 from fuzzynav.control.registry import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.world.scenario import list_scenarios, load_scenario
+from fuzzynav.world.scenario import list_scenarios
+from fuzzynav.world.scenario_file import open_scenario
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
@@ -47,7 +48,7 @@ def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:
     names or scenario files), with each scenario's own controllers or the ``controllers`` given."""
     runs = []
     for name in names or list_scenarios():
-        scenario = load_scenario(name)
+        scenario = open_scenario(name)
         chosen = controllers or scenario.controllers
         if not chosen and names:  # a built-in scenario without controllers is left out of the full demo
             raise InputError(f"scenario {scenario.name!r} names no controllers (no 'controllers' key): "
@@ -75,7 +76,7 @@ def run(args) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     rows = []
     for index, (name, controller_name) in enumerate(runs, 1):
-        scenario = load_scenario(name)
+        scenario = open_scenario(name)
         name = scenario.name
         trace = run_episode(scenario, make_controller(controller_name), seed=0)
         row = metrics(trace, scenario)

@@ -1,4 +1,4 @@
-"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line (issue 2).
+"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line.
 
 NAME is a built-in system (``goal-seeking``, ``obstacle-avoidance``, ``tracking``) or a file
 (``.json``, ``.yaml``/``.yml``, ``.fll``).

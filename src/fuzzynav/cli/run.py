@@ -16,7 +16,7 @@ from fuzzynav.cli import arguments
 from fuzzynav.control.registry import available, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.world.scenario import load_scenario
+from fuzzynav.world.scenario_file import open_scenario
 
 
 def register(subparsers) -> None:
@@ -30,7 +30,8 @@ def register(subparsers) -> None:
                                                                for name, text in available().items()),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("scenario", metavar="SCENARIO", help="scenario YAML file or built-in name")
+    parser.add_argument("scenario", metavar="SCENARIO",
+                        help="scenario YAML file, built-in name, or generated world (e.g. mixed-0-009)")
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--controller", metavar="NAME", help="built-in controller name")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
@@ -53,7 +54,7 @@ def run(args) -> int:
         raise InputError(f"must be between 64 and 4000 pixels, got {args.size}", field="--size")
     if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
-    scenario = load_scenario(args.scenario)
+    scenario = open_scenario(args.scenario)
     if args.model:
         from fuzzynav.models import load_controller
 

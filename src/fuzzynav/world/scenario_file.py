@@ -3,6 +3,7 @@
 ``fuzzynav worlds generate`` and ``fuzzynav evaluate --save-failures`` write generated worlds with
 :func:`save_scenario`, so any of them can be rerun with ``fuzzynav run FILE`` or edited by hand.
 The file is written to a temporary name and renamed, so an interrupted save leaves no half file.
+:func:`open_scenario` also opens a generated world by the name ``evaluate`` gives it.
 """
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ from pathlib import Path
 import yaml
 
 from fuzzynav.errors import InputError
-from fuzzynav.world.scenario import Scenario
+from fuzzynav.world.scenario import Scenario, load_scenario
 
 
 def scenario_yaml(scenario: Scenario, controllers: tuple[str, ...] = ()) -> str:
@@ -38,3 +39,17 @@ def save_scenario(scenario: Scenario, path, controllers: tuple[str, ...] = ()) -
         tmp.unlink(missing_ok=True)
         raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
     return path
+
+
+def open_scenario(name_or_path) -> Scenario:
+    """A scenario file, a built-in scenario, or a generated world by its name (``mixed-0-009``:
+    world 9 of ``fuzzynav evaluate --worlds mixed --seed 0``)."""
+    try:
+        return load_scenario(name_or_path)
+    except InputError:
+        from fuzzynav.world.generate import generated_world
+
+        world = generated_world(str(name_or_path))
+        if world is None:
+            raise
+        return world
