@@ -129,10 +129,12 @@ def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
         numbers = evaluate(controller, worlds, n, seed)
         numbers.pop("episodes")
         result[f"{controller}/{worlds}"] = numbers
-        rates = [numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
-        ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
-    ax.set_xticks(np.arange(3) + 0.2, ["success", "collision", "timeout"])
-    ax.set_ylim(0, 1)
-    ax.legend()
+        rates = [100 * numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
+        bars = ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
+        ax.bar_label(bars, fmt="%.0f %%", fontsize=8)
+    ax.set_xticks(np.arange(3) + 0.2, ["reached the goal", "collided", "timed out"])
+    ax.set_ylabel("share of the worlds (%)")
+    ax.set_ylim(0, 110)
+    ax.legend(loc="upper right")
     result["figure"] = _save(figure, out_dir, "eval-IV.png")
     return result

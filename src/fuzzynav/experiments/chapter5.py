@@ -69,9 +69,15 @@ def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
             c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
         c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
         c.legend()
-    else:
-        c.semilogy(model.loss_curve if len(model.loss_curve) > 1 else model.loss_curve * 2)
-        c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
+    elif len(model.loss_curve) > 1:
+        c.semilogy(np.arange(1, len(model.loss_curve) + 1), model.loss_curve)
+        c.set(xlabel="iteration", ylabel="loss (half MSE, standardised α)", title="(c) back-propagation")
+    else:  # L-BFGS records no per-iteration curve: say what it did instead of drawing one point
+        c.axis("off")
+        c.set_title("(c) back-propagation (L-BFGS)")
+        c.text(0.5, 0.5, f"{model.iterations} solver iterations\nfinal loss {model.loss_curve[-1]:.2e}\n"
+               "(half mean squared error on standardised α)\nL-BFGS records no loss per iteration",
+               ha="center", va="center", transform=c.transAxes)
     figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
     if path is not None:
         save_figure(figure, path)
@@ -86,6 +92,9 @@ def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
     system = tracking()
     _, _, alpha = surface(system)
     figure = plot_surface(system)
+    ax = figure.axes[0]
+    ax.set(xlabel="θ_er (rad)", ylabel="dθ_er (rad per step of 0.1 s)", zlabel="steering α (rad)",
+           title="Fuzzy tracker, Table V.1: control surface")
     return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
             "alpha_max_rad": float(alpha.max())}
 
