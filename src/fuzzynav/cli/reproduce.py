@@ -53,7 +53,7 @@ def run(args) -> int:
             record = report.record_run(args.out, key, numbers, time.perf_counter() - start, quick=args.quick,
                                        seed=args.seed)
             report.write_index(args.out)
-            verdict = "claim holds" if record["holds"] else "claim NOT met"
+            verdict = "claim holds" if record["holds"] else "claim NOT met" + (" (quick run)" if args.quick else "")
             progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {report.experiment_dir(args.out, key)}")
             bar.update()
         bar.close()
