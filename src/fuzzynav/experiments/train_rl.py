@@ -85,6 +85,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import progress
 from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
@@ -692,7 +693,7 @@ def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float 
 
     rng = np.random.default_rng(seed)
     outcomes = []
-    for k in range(n):
+    for k in progress.bar(range(n), desc="evaluation in obstacle worlds", unit="world", leave=False):
         world, starts, goals = RandomObstacles().sample(rng, 1)
         scenario = _scenario(world, starts[0], goals[0], f"random-world-{k}", max_time)
         outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
@@ -813,7 +814,7 @@ def evaluate_wall(controller, n: int = 20, seed: int = 777, max_time: float = 30
     corners = BatchSimulator(load_scenario("fig-VI-28"), controller, record=False).run().outcomes()[0]
     rng = np.random.default_rng(seed)
     outcomes = []
-    for k in range(n):
+    for k in progress.bar(range(n), desc="evaluation on wall courses", unit="course", leave=False):
         scenario = wall_course_scenario(rng, f"wall-course-{k}", max_time)
         outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
     return {"fig-VI-28": corners, "courses": n, "collisions": outcomes.count("collision")}
