@@ -140,20 +140,25 @@ def _captured(*panels: str) -> Callable[[dict], Verdict]:
     return test
 
 
-def _learned_goal(success: float = 0.95) -> Callable[[dict], Verdict]:
+def _learned_goal(success: float | None = 0.95) -> Callable[[dict], Verdict]:
+    """Steering converged within the budget, and the learned controller reaches ``success`` of the
+    random goals — or, for a fixed start (``success=None``), its own goal."""
     def test(numbers):
         budget = numbers.get("episodes", {})
         steering = numbers["converged_at"]["steering"]
         text = "; ".join(f"{phase}: {_converged(value, budget.get(phase))}"
                          for phase, value in numbers["converged_at"].items())
         ok = steering is not None and steering <= budget.get("steering", steering)
-        if "evaluation" in numbers:
-            evaluation = numbers["evaluation"]
-            ok &= evaluation["success"] >= success
-            text += f"; learned controller reaches {evaluation['success']:.0%} of {evaluation['runs']} random goals"
-        else:
+        evaluation = numbers.get("evaluation")
+        if success is None:
             ok &= all(outcome == "reached" for outcome in numbers["trajectories"])
             text += f"; trajectory after learning: {', '.join(numbers['trajectories'])}"
+            if evaluation:
+                text += (f" (from {evaluation['runs']} random starts, not asserted — it learned one route: "
+                         f"{evaluation['success']:.0%} reached)")
+        else:
+            ok &= evaluation["success"] >= success
+            text += f"; learned controller reaches {evaluation['success']:.0%} of {evaluation['runs']} random goals"
         return ok, text
     return test
 
@@ -259,7 +264,7 @@ CLAIMS: dict[str, Claim] = {
                       "All three trackers capture both targets.", _captured("fig-V-34a", "fig-V-34b")),
     "fig-VI-1": Claim(
         "Tabular Q-learning (reward VI.2) from a fixed start converges around episode 1,000 (Figs VI.1–VI.2).",
-        "The learning curve converges within the budget and the learned route reaches the goal.", _learned_goal()),
+        "The learning curve converges within the budget and the learned route reaches the goal.", _learned_goal(None)),
     "fig-VI-4": Claim(
         "With random starts and goals the tabular learner converges after about 3,500 episodes (Figs VI.3–VI.4).",
         "The curve converges within the budget; the learned controller reaches ≥ 95 % of random goals.",
@@ -271,7 +276,7 @@ CLAIMS: dict[str, Claim] = {
     "fig-VI-8": Claim(
         "Fuzzy Q-learning with 15 rules × 3 conclusions from a fixed start converges by about episode 180 "
         "(Figs VI.7–VI.8).", "Steering converges within the budget and the learned route reaches the goal.",
-        _learned_goal()),
+        _learned_goal(None)),
     "fig-VI-9": Claim(
         "With random starts, FQL (15 rules) learns the steering in about 3,000 episodes, then the speed in about 900 "
         "(Figs VI.9–VI.10).",
