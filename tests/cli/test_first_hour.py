@@ -119,3 +119,23 @@ def test_a_generated_world_opens_by_the_name_evaluate_gives_it(capsys):
     assert main(["run", "circles-2-004", "--controller", "goal-seeking"]) == 0
     assert capsys.readouterr().out.startswith("circles-2-004 / goal-seeking:")
     assert main(["run", "circles-2-x", "--controller", "goal-seeking"]) == 2
+
+
+def test_neural_tracker_training_reports_its_solver_iterations(tmp_path, capsys):
+    assert main(["train", "neural-tracker", "--out", str(tmp_path / "nt.json")]) == 0
+    lines = dict(line.split(": ", 1) for line in capsys.readouterr().out.splitlines())
+    assert int(lines["solver iterations (L-BFGS)"]) > 1
+    assert lines["training time"].endswith(" s") and lines["validation RMSE (steering angle)"].endswith(" rad")
+    assert main(["run", "path-v", "--model", str(tmp_path / "nt.json")]) == 0
+
+
+def test_animation_size_and_rate(tmp_path, capsys):
+    from PIL import Image
+
+    gif = tmp_path / "a.gif"
+    assert main(["run", "fig-IV-13", "--controller", "goal-seeking", "--max-time", "2", "--animate", str(gif),
+                 "--size", "160", "--fps", "20"]) == 0
+    with Image.open(gif) as image:
+        assert image.size == (160, 160) and image.info["duration"] == 50
+    assert main(["run", "fig-IV-13", "--controller", "goal-seeking", "--animate", str(gif), "--size", "9"]) == 2
+    assert "--size" in capsys.readouterr().err
