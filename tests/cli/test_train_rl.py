@@ -106,4 +106,4 @@ def test_a_curve_that_never_settled_reports_null_and_says_so(tmp_path, capsys):
     assert json.loads(out.read_text())["training"]["steering"]["converged_at"] is None
     assert train("q-goal", out, "--episodes", "100") == 0
     line = capsys.readouterr().out
-    assert "steering: 100 episodes, converged: not settled" in line and "101" not in line
+    assert "steering: 100 episodes, not converged within 100 episodes" in line and "101" not in line

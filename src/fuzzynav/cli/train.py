@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from fuzzynav import training
+from fuzzynav import progress, training
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
@@ -45,12 +45,13 @@ def run(args) -> int:
         resume=args.resume,
         checkpoint_every=args.checkpoint_every,
         curve=args.curve,
-        progress=not (args.quiet or args.json),
+        progress=progress.enabled() and not (args.quiet or args.json),
     )
     result = train(request)
     if args.json:
         print(json.dumps(result, default=str))
     else:
-        for key, value in result.items():
-            print(f"{key}: {value}")
+        from fuzzynav.cli.printing import result_lines
+
+        print("\n".join(result_lines(result)))
     return 0

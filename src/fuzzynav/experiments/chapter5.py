@@ -35,20 +35,18 @@ from matplotlib.figure import Figure
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
-from fuzzynav.viz.trajectories import draw_world
+from fuzzynav.viz import palette
+from fuzzynav.viz.trajectories import draw_world, save_figure
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
-COLOURS = {"fuzzy-tracker": "tab:blue", "neural-tracker": "tab:red", "anfis-tracker": "tab:green"}
+COLOURS = {name: colour for name, (colour, _) in palette.TRACKERS.items()}
 PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
 PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
@@ -71,13 +69,18 @@ def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
             c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
         c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
         c.legend()
-    else:
-        c.semilogy(model.loss_curve if len(model.loss_curve) > 1 else model.loss_curve * 2)
-        c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
+    elif len(model.loss_curve) > 1:
+        c.semilogy(np.arange(1, len(model.loss_curve) + 1), model.loss_curve)
+        c.set(xlabel="iteration", ylabel="loss (half MSE, standardised α)", title="(c) back-propagation")
+    else:  # L-BFGS records no per-iteration curve: say what it did instead of drawing one point
+        c.axis("off")
+        c.set_title("(c) back-propagation (L-BFGS)")
+        c.text(0.5, 0.5, f"{model.iterations} solver iterations\nfinal loss {model.loss_curve[-1]:.2e}\n"
+               "(half mean squared error on standardised α)\nL-BFGS records no loss per iteration",
+               ha="center", va="center", transform=c.transAxes)
     figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
     if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
+        save_figure(figure, path)
     return figure
 
 
@@ -89,6 +92,9 @@ def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
     system = tracking()
     _, _, alpha = surface(system)
     figure = plot_surface(system)
+    ax = figure.axes[0]
+    ax.set(xlabel="θ_er (rad)", ylabel="dθ_er (rad per step of 0.1 s)", zlabel="steering α (rad)",
+           title="Fuzzy tracker, Table V.1: control surface")
     return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
             "alpha_max_rad": float(alpha.max())}
 

@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from fuzzynav import progress
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_rl as rl
 from fuzzynav.learn.checkpoint import load_checkpoint
@@ -35,19 +36,16 @@ from fuzzynav.models import load_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.training import TrainRequest
 from fuzzynav.viz.curves import plot_learning_curve
-from fuzzynav.viz.trajectories import plot_trajectory
+from fuzzynav.viz.trajectories import plot_trajectory, save_figure
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def _request(out_dir, name: str, episodes, seed: int) -> TrainRequest:
     return TrainRequest(out=Path(out_dir) / "models" / f"{name}-{seed}.json", episodes=episodes, seed=seed,
-                        progress=False)
+                        progress=progress.enabled())
 
 
 def _curves(request, phases) -> dict:
@@ -59,19 +57,26 @@ def _curves(request, phases) -> dict:
 def _figure(curves: dict, converged: dict, controller, starts, title: str, out_dir, name: str,
             obstacles: bool = False, window: int = rl.GOAL_CONVERGENCE["window"]) -> dict:
     """Learning curves (one panel per phase, the training's episodes to converge marked) and
-    trajectories of the learned controller."""
-    figure = Figure(figsize=(5.2 * (len(curves) + len(starts)), 4.6), layout="constrained")
-    axes = figure.subplots(1, len(curves) + len(starts), squeeze=False)[0]
+    trajectories of the learned controller, in a grid of at most three panels per row."""
+    panels = len(curves) + len(starts)
+    columns = min(3, panels)
+    rows = -(-panels // columns)
+    figure = Figure(figsize=(5.2 * columns, 4.6 * rows), layout="constrained")
+    axes = figure.subplots(rows, columns, squeeze=False).ravel()
+    for ax in axes[panels:]:
+        ax.set_visible(False)
+    budget = {phase: converged[phase]["episodes"] for phase in curves}
     converged = {phase: converged[phase]["converged_at"] for phase in curves}
     for ax, (phase, curve) in zip(axes, curves.items()):
         plot_learning_curve(curve, ax=ax, window=window, title=f"{title}: {phase}", label=phase,
-                            mark_convergence=converged[phase] is not None, converged_at=converged[phase])
+                            converged_at=converged[phase] or len(curve) + 1)  # past the curve: not converged
     outcomes = []
     for ax, scenario in zip(axes[len(curves):], starts):
         trace = run_episode(scenario, controller)
         plot_trajectory(trace, scenario, ax, markers=obstacles)
         outcomes.append(trace.outcome)
-    return {"figure": _save(figure, out_dir, name), "converged_at": converged, "trajectories": outcomes}
+    return {"figure": _save(figure, out_dir, name), "converged_at": converged, "episodes": budget,
+            "trajectories": outcomes}
 
 
 def _goal_scenarios(seed: int, n: int = 4, layout=None):
@@ -96,7 +101,10 @@ def _q_run(out_dir, name, episodes, seed, n_states=13, n_actions=3, fixed=False)
     env, learner, disc, steering = rl.q_goal_parts(n_states, n_actions, fixed)
     result, _ = rl.run_phases([rl.Phase("steering", env, learner, episodes, rl.checkpoint_path(request.out, "steering"))],
                               request)
-    return request, rl.q_goal_controller(learner, disc, steering), result["steering"]
+    phase = result["steering"]
+    converged = phase["converged_at"] if phase["converged_at"] <= phase["episodes"] else None  # None: not within budget
+    return request, rl.q_goal_controller(learner, disc, steering), {"episodes": phase["episodes"],
+                                                                      "converged_at": converged}
 
 
 def fig_vi_1(out_dir, quick=False, seed=0) -> dict:
@@ -121,14 +129,21 @@ def table_vi_1(out_dir, quick=False, seed=0) -> dict:
         _, controller, result = _q_run(out_dir, f"q-goal-{n_states}x{n_actions}", 500 if quick else 4000, seed,
                                        n_states, n_actions)
         rows.append({"states": n_states, "actions": n_actions, "thesis_episodes": thesis,
-                     "episodes_to_converge": result["converged_at"],
+                     "episodes": result["episodes"], "episodes_to_converge": result["converged_at"],
                      "success": rl.evaluate_goal(controller, 20 if quick else 100)["success"]})
-    figure = Figure(figsize=(6, 2.4), layout="constrained")
+    figure = Figure(figsize=(9, 2.2), layout="constrained")
     ax = figure.add_subplot(111)
     ax.axis("off")
-    ax.table(cellText=[[r["states"], r["actions"], r["thesis_episodes"], r["episodes_to_converge"], f"{r['success']:.0%}"]
-                       for r in rows],
-             colLabels=["states", "actions", "thesis", "here", "success"], loc="center")
+    here = lambda r: (f"not converged within {r['episodes']}" if r["episodes_to_converge"] is None
+                      else r["episodes_to_converge"])
+    table = ax.table(cellText=[[r["states"], r["actions"], r["thesis_episodes"], here(r), f"{r['success']:.0%}"]
+                               for r in rows],
+                     colLabels=["states", "actions", "thesis: episodes to converge", "here: episodes to converge",
+                                "success on random goals"], colWidths=[0.1, 0.1, 0.27, 0.3, 0.23],
+                     cellLoc="center", loc="center")
+    table.auto_set_font_size(False)
+    table.set_fontsize(10)
+    table.scale(1.0, 1.6)
     return {"rows": rows, "figure": _save(figure, out_dir, "table-VI-1.png")}
 
 

@@ -85,6 +85,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import progress
 from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
@@ -240,12 +241,15 @@ def converged_at(reward, success, batch: int, settings: dict | None = None) -> i
 class PhaseSummary(dict):
     """The train results of one phase: ``episodes``, ``converged_at`` (``None`` when the curve did
     not settle within the budget) and ``final_training_success``; JSON as a plain mapping, and
-    printed by ``fuzzynav train`` as one readable line ("not settled" for ``None``)."""
+    printed by ``fuzzynav train`` as one readable line ("not converged within N episodes" for ``None``)."""
 
     def __str__(self) -> str:
-        converged = "not settled" if self["converged_at"] is None else f"episode {self['converged_at']}"
-        return (f"{self['episodes']} episodes, converged: {converged}, "
-                f"final training success {self['final_training_success']:.1%}")
+        converged = (f"not converged within {self['episodes']} episodes (the mean reward per episode did not "
+                     f"settle on a plateau; more --episodes may help)" if self["converged_at"] is None
+                     else f"converged at episode {self['converged_at']}")
+        return (f"{self['episodes']} episodes, {converged}; success in the last training episodes "
+                f"{self['final_training_success']:.1%} (goal reached, or for wall following no collision before "
+                f"the time limit; exploration still on)")
 
 
 def _summary(phases: dict) -> dict:
@@ -689,7 +693,7 @@ def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float 
 
     rng = np.random.default_rng(seed)
     outcomes = []
-    for k in range(n):
+    for k in progress.bar(range(n), desc="evaluation in obstacle worlds", unit="world", leave=False):
         world, starts, goals = RandomObstacles().sample(rng, 1)
         scenario = _scenario(world, starts[0], goals[0], f"random-world-{k}", max_time)
         outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
@@ -810,7 +814,7 @@ def evaluate_wall(controller, n: int = 20, seed: int = 777, max_time: float = 30
     corners = BatchSimulator(load_scenario("fig-VI-28"), controller, record=False).run().outcomes()[0]
     rng = np.random.default_rng(seed)
     outcomes = []
-    for k in range(n):
+    for k in progress.bar(range(n), desc="evaluation on wall courses", unit="course", leave=False):
         scenario = wall_course_scenario(rng, f"wall-course-{k}", max_time)
         outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
     return {"fig-VI-28": corners, "courses": n, "collisions": outcomes.count("collision")}

@@ -195,17 +195,17 @@ def _train(kind: str, request) -> dict:
     start = time.perf_counter()
     if kind == "neural-tracker":
         model = fit_neural(data, request.seed, **({"max_iter": request.episodes} if request.episodes else {}))
-        curve = model.loss_curve
+        count = {"solver_iterations": model.iterations}  # L-BFGS iterations (its loss curve is the final loss alone)
     else:
         model = fit_anfis(data, request.seed, **({"epochs": request.episodes} if request.episodes else {}))
-        curve = model.history_["train_rmse"]
+        count = {"epochs": len(model.history_["train_rmse"])}
     document = _document(kind, model, data, request.seed, time.perf_counter() - start)
     save_json_atomic(request.out, document)
     if request.curve:
         from fuzzynav.experiments.chapter5 import plot_training
 
         plot_training(kind, model, data, request.curve)
-    return {"model": str(request.out), "iterations": len(curve), **document["training"]}
+    return {"model": str(request.out), **count, **document["training"]}
 
 
 def train_neural_tracker(request) -> dict:

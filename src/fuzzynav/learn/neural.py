@@ -44,12 +44,14 @@ class NeuralInverseModel:
 
     ``weights[l]`` is (n_in_l, n_out_l), ``biases[l]`` (n_out_l,); the last layer has one output.
     ``loss_curve`` is the training loss per iteration (half mean squared error on standardised
-    targets) when the solver records it (``sgd``, ``adam``), else the final loss alone (``lbfgs``).
+    targets) when the solver records it (``sgd``, ``adam``), else the final loss alone (``lbfgs``);
+    ``iterations`` is the number of solver iterations the training ran (0 when unknown).
     """
 
     weights: list[np.ndarray]
     biases: list[np.ndarray]
     loss_curve: list[float] = field(default_factory=list)
+    iterations: int = 0
 
     def __post_init__(self):
         self._compile_scalar()
@@ -103,6 +105,7 @@ class NeuralInverseModel:
             "weights": [W.tolist() for W in self.weights],
             "biases": [b.tolist() for b in self.biases],
             "loss_curve": [float(v) for v in self.loss_curve],
+            "iterations": int(self.iterations),
         }
 
     @classmethod
@@ -127,7 +130,10 @@ class NeuralInverseModel:
         if Ws[-1].shape[1] != 1:
             raise InputError("the output layer must have one neuron", source=source, field=f"weights[{len(Ws) - 1}]")
         curve = document.get("loss_curve", [])
-        return cls(Ws, bs, [float(v) for v in _finite(curve, 1, "loss_curve", source)] if curve else [])
+        iterations = document.get("iterations", 0)
+        if not isinstance(iterations, int) or isinstance(iterations, bool) or iterations < 0:
+            raise InputError(f"must be an integer >= 0, got {iterations!r}", source=source, field="iterations")
+        return cls(Ws, bs, [float(v) for v in _finite(curve, 1, "loss_curve", source)] if curve else [], iterations)
 
 
 def fit_inverse_model(
@@ -179,7 +185,7 @@ def fit_inverse_model(
     biases[-1] = biases[-1] * y_std + y_mean
     weights[-1] = weights[-1] * y_std
     curve = list(getattr(net, "loss_curve_", None) or [net.loss_])
-    return NeuralInverseModel(weights, biases, [float(v) for v in curve])
+    return NeuralInverseModel(weights, biases, [float(v) for v in curve], int(net.n_iter_))
 
 
 def generalized_learning_dataset(

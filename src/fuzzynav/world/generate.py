@@ -134,3 +134,14 @@ def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenari
     children = np.random.SeedSequence([int(seed), KINDS.index(kind)]).spawn(int(n))
     return [random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
             for i, child in enumerate(children)]
+
+
+def generated_world(name: str) -> Scenario | None:
+    """World ``i`` of ``generate_worlds(kind, n, seed)`` from its name ``<kind>-<seed>-<i>`` (as
+    ``fuzzynav evaluate`` names them), or ``None`` when ``name`` is not such a name."""
+    parts = name.rsplit("-", 2)
+    if len(parts) != 3 or parts[0] not in KINDS or not (parts[1].isdigit() and parts[2].isdigit()):
+        return None
+    kind, seed, index = parts[0], int(parts[1]), int(parts[2])
+    child = np.random.SeedSequence([seed, KINDS.index(kind)]).spawn(index + 1)[index]
+    return random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{index:03d}")
