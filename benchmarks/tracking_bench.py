@@ -25,7 +25,7 @@ import json
 import statistics
 import time
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import load_scenario
 

@@ -5,9 +5,9 @@ import json
 import numpy as np
 
 from fuzzynav.cli import main
-from fuzzynav.experiments.train_trackers import default_document
+from fuzzynav.learn.tasks.trackers import default_document
 from fuzzynav.learn.anfis import ANFIS
-from fuzzynav.models import save_json_atomic
+from fuzzynav.storage import save_json_atomic
 
 
 def test_fis_reads_the_trained_anfis_as_its_exported_system(tmp_path, capsys):

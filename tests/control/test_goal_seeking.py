@@ -6,7 +6,7 @@ import pytest
 from fuzzynav.control.base import thesis_angle_error
 from fuzzynav.control.batched import BatchedController
 from fuzzynav.control.goal_seeking import GoalSeekingController, GuardedGoalSeeking
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.sim import run_episode
 from fuzzynav.sim.simulator import BatchSimulator

@@ -7,7 +7,7 @@ import pytest
 
 from fuzzynav.control import supervisor
 from fuzzynav.control.goal_seeking import GuardedGoalSeeking
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.turning_room import HitMemory, TurnGuard, cone_echo
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
 from fuzzynav.sim import BatchSimulator, run_episode

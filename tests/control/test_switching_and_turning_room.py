@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.turning_room import TURN_RADIUS, HitMemory, step_clearance, turning_room
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.trajectories import merged_changes

@@ -14,7 +14,7 @@ import json
 import sys
 
 from fuzzynav.cli import arguments
-from fuzzynav.control.registry import CONTROLLERS, make_controller
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 

@@ -44,7 +44,7 @@ def resolve(name: str) -> FuzzySystem:
     if Path(name).suffix == ".json" and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
-            from fuzzynav.experiments.train_trackers import anfis_tracker_system
+            from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
             return anfis_tracker_system(document, name)  # the trained ANFIS, exported (issue 4)
     if Path(name).suffix:

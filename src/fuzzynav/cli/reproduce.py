@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 
 from fuzzynav.cli import arguments
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 
 
 def register(subparsers) -> None:

@@ -12,7 +12,7 @@ import json
 import math
 
 from fuzzynav.cli import arguments
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import load_scenario
@@ -42,7 +42,7 @@ def run(args) -> int:
         raise InputError(f"must be a finite number > 0, got {args.max_time!r}", field="--max-time")
     scenario = load_scenario(args.scenario)
     if args.model:
-        from fuzzynav.models import load_controller
+        from fuzzynav.catalog.tasks import load_controller
 
         controller = load_controller(args.model)
     else:

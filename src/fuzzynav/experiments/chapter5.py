@@ -32,9 +32,10 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
-from fuzzynav.experiments import train_trackers as tt
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
+from fuzzynav.viz.training import plot_training
 from fuzzynav.viz.trajectories import draw_world
 from fuzzynav.world.scenario import load_scenario
 
@@ -49,36 +50,6 @@ def _save(figure: Figure, out_dir, name: str) -> str:
     path.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(path, dpi=110)
     return str(path)
-
-
-def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
-    """Figs V.15 / V.23: (a) desired and model output on the validation pairs, (b) their error,
-    (c) the training curve (MLP loss per iteration, or ANFIS RMSE per epoch)."""
-    figure = Figure(figsize=(13, 3.8), layout="constrained")
-    a, b, c = figure.subplots(1, 3)
-    order = np.argsort(data.x_val[:, 0])
-    predicted = model.predict(data.x_val)
-    k = np.arange(len(order))
-    a.plot(k, data.y_val[order], "o", markersize=3, label="desired output")
-    a.plot(k, predicted[order], "-", label="real output")
-    a.set(xlabel="validation sample (sorted by θ_er)", ylabel="α (rad)", title="(a) outputs")
-    a.legend()
-    b.plot(k, (data.y_val - predicted)[order])
-    b.set(xlabel="validation sample", ylabel="error (rad)", title="(b) learning error")
-    if kind == "anfis-tracker":
-        c.semilogy(model.history_["train_rmse"], label="training RMSE")
-        if model.history_["validation_rmse"] is not None:
-            c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
-        c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
-        c.legend()
-    else:
-        c.semilogy(model.loss_curve if len(model.loss_curve) > 1 else model.loss_curve * 2)
-        c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
-    figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
-    if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
-    return figure
 
 
 def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:

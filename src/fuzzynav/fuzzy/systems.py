@@ -21,31 +21,20 @@ from __future__ import annotations
 import math
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.command_sets import ANGLE7_LABELS, speed, steering
 from fuzzynav.fuzzy.membership import Singleton, Trapezoidal
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.systems_navigation import SYSTEMS as _NAVIGATION_SYSTEMS
 from fuzzynav.fuzzy.variable import Variable
 
 PI = math.pi
 D_MAX_GOAL = 20.0 * math.sqrt(2.0)
 ANGLE_UNIVERSE = (-PI, PI)
 
-# Figs IV.6, IV.11: θ_rg and θ_o, seven sets
-ANGLE7_LABELS = ("NG", "NM", "NP", "Z", "PP", "PM", "PG")
+# Figs IV.6, IV.11: θ_rg and θ_o, seven sets (labels as the α singletons of Fig IV.7)
 ANGLE7_PEAKS = (-1.5, -0.75, -0.25, 0.0, 0.25, 0.75, 1.5)
-
-
-def _steering() -> Variable:
-    """α singletons of Fig IV.7: ±π/5, ±π/10, ±π/20, 0 (rad)."""
-    values = (-PI / 5, -PI / 10, -PI / 20, 0.0, PI / 20, PI / 10, PI / 5)
-    return Variable("alpha", (-PI / 5, PI / 5), {k: Singleton(v) for k, v in zip(ANGLE7_LABELS, values)})
-
-
-def _speed() -> Variable:
-    """V_r singletons of Fig IV.8: Z 0, F 1, M 1.8, G 3, TG 4 (m/s)."""
-    values = {"Z": 0.0, "F": 1.0, "M": 1.8, "G": 3.0, "TG": 4.0}
-    return Variable("v", (0.0, 4.0), {k: Singleton(v) for k, v in values.items()})
 
 
 def _angle7(name: str) -> Variable:
@@ -77,7 +66,7 @@ def goal_seeking() -> FuzzySystem:
     theta = _angle7("theta")
     rules = rules_from_grid("theta", "drg", ANGLE7_LABELS, drg_labels, TABLE_IV_1, ("alpha", "v"),
                             source="Table IV.1")
-    return FuzzySystem([drg, theta], [_steering(), _speed()], rules, method="ts0", tnorm="product",
+    return FuzzySystem([drg, theta], [steering(), speed()], rules, method="ts0", tnorm="product",
                        defuzzifier="weighted_sum", name="goal-seeking",
                        description="Goal seeking, thesis §IV.5.1, Table IV.1 (TS0, product, weighted sum)")
 
@@ -111,7 +100,7 @@ def obstacle_avoidance() -> FuzzySystem:
     theta_o = _angle7("theta_o")
     rules = rules_from_grid("theta_o", "dro", ANGLE7_LABELS, ("P", "M", "G"), TABLE_IV_2, ("alpha", "v"),
                             source="Table IV.2")
-    return FuzzySystem([dro, theta_o], [_steering(), _speed()], rules, method="ts0", tnorm="product",
+    return FuzzySystem([dro, theta_o], [steering(), speed()], rules, method="ts0", tnorm="product",
                        defuzzifier="weighted_sum", name="obstacle-avoidance",
                        description="Obstacle avoidance by distance and angle, thesis §IV.5.2.1, "
                                    "Table IV.2 as reconstructed in SPEC §3.2 (TS0, product, weighted sum)")
@@ -155,8 +144,6 @@ SYSTEMS = {
 
 # The range-sensor systems of §IV.7 and §VI.5.3.1 (FOA, ROA, LOA, VRB, wall follower) live in
 # their own module; registered here so every built-in system is found by name.
-from fuzzynav.fuzzy.systems_navigation import SYSTEMS as _NAVIGATION_SYSTEMS  # noqa: E402
-
 SYSTEMS.update(_NAVIGATION_SYSTEMS)
 
 

@@ -23,6 +23,7 @@ module). Universes and breakpoints the thesis leaves symbolic are fixed here:
 
 from __future__ import annotations
 
+from fuzzynav.fuzzy.command_sets import steering
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import Rule
@@ -37,13 +38,6 @@ WALL_D_M, WALL_D_S = 0.9, 1.6  # d_m, d_s of the wall follower (Fig VI.17), m
 WALL_V1, WALL_V2 = 0.6, 1.2  # P and M speed singletons of Fig VI.26 (m/s)
 
 NEAR_FAR = ("P", "L")
-
-
-def _alpha() -> Variable:
-    """α singletons of Fig IV.7 (±π/5, ±π/10, ±π/20, 0), shared with the goal-seeking system."""
-    from fuzzynav.fuzzy import systems  # deferred: systems registers this module's builders
-
-    return systems._steering()
 
 
 def distance_variable(name: str, d_m: float = D_M, d_s: float = D_S, d_max: float = D_MAX) -> Variable:
@@ -68,7 +62,7 @@ def _three_distance_rules(names, table, outputs) -> list[Rule]:
 
 def _avoider(names, table, name, description, d_m, d_s, d_max) -> FuzzySystem:
     inputs = [distance_variable(n, d_m, d_s, d_max) for n in names]
-    return FuzzySystem(inputs, [_alpha()], _three_distance_rules(names, table, ("alpha",)), method="ts0",
+    return FuzzySystem(inputs, [steering()], _three_distance_rules(names, table, ("alpha",)), method="ts0",
                        tnorm="product", defuzzifier="weighted_sum", name=name, description=description)
 
 
@@ -176,7 +170,7 @@ def wall_follower(d_m: float = WALL_D_M, d_s: float = WALL_D_S, d_max: float = D
     inputs = [distance_variable(n, d_m, d_s, d_max) for n in ("dd", "df", "dg")]
     speed = Variable("v", (0.0, v2), {"Z": Singleton(0.0), "P": Singleton(v1), "M": Singleton(v2)})
     rules = _three_distance_rules(("df", "dd", "dg"), TABLE_VI_2, ("alpha", "v"))
-    return FuzzySystem(inputs, [_alpha(), speed], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
+    return FuzzySystem(inputs, [steering(), speed], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
                        name="wall-follow", description="Hand-made wall follower, thesis §VI.5.3.1, Table VI.2 "
                                                        "as reconstructed (TS0, product, weighted sum)")
 

@@ -13,7 +13,7 @@ from fuzzynav.cli import main
 from fuzzynav.fuzzy.io import dumps
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.systems import get_system
-from fuzzynav.models import save_json_atomic
+from fuzzynav.storage import save_json_atomic
 
 
 def run_cli(capsys, *argv):
