@@ -1,4 +1,4 @@
-"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line (issue 2).
+"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line.
 
 NAME is a built-in system (``goal-seeking``, ``obstacle-avoidance``, ``tracking``) or a file
 (``.json``, ``.yaml``/``.yml``, ``.fll``).
@@ -46,7 +46,7 @@ def resolve(name: str) -> FuzzySystem:
         if document is not None and document.get("kind") == "anfis-tracker":
             from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
-            return anfis_tracker_system(document, name)  # the trained ANFIS, exported (issue 4)
+            return anfis_tracker_system(document, name)  # the trained ANFIS, exported
     if Path(name).suffix:
         return load(name)
     raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}) nor a .json/.yaml/.fll file", field=name)

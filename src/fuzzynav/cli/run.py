@@ -1,4 +1,4 @@
-"""``fuzzynav run SCENARIO --controller NAME | --model FILE`` — run one episode (issue 3).
+"""``fuzzynav run SCENARIO --controller NAME | --model FILE`` — run one episode.
 
 SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Prints a one-line
 summary, or with ``--json`` exactly one JSON object with the metrics of

@@ -1,8 +1,8 @@
-"""The thesis' fuzzy systems, ready-made (SPEC §3.1, §3.2, §4.1).
+"""The thesis' fuzzy systems, ready-made (thesis §IV.5.1, §IV.5.2.1, §V.3.1).
 
 All three are zero-order Takagi–Sugeno systems with strong triangular/trapezoidal input
 partitions, product T-norm (eq IV.5) and weighted-sum output (eq IV.4). The rule grids below are
-typed cell by cell as printed (rows × columns); the sign problem of SPEC §0 is *not* solved
+typed cell by cell as printed (rows × columns); the sign problem of the angle error (docs/thesis.md) is *not* solved
 here but in :func:`fuzzynav.control.base.thesis_angle_error`, which feeds the tables
 θ_r − θ_d.
 
@@ -72,7 +72,7 @@ def goal_seeking() -> FuzzySystem:
 
 
 # Table IV.2 — rows θ_o (NG … PG), columns D_ro (P M G), cells α / V_r. The extraction scrambled
-# the printed table; this is the mirror-symmetric reconstruction of SPEC §3.2, which keeps the
+# the printed table; this is the mirror-symmetric reconstruction of thesis §IV.5.2.1, which keeps the
 # surviving rows NG and NM verbatim and matches the scrambled fragments of rows NP…PG.
 TABLE_IV_2 = (
     "NM/F NP/M Z/M",  # NG
@@ -90,7 +90,7 @@ def obstacle_avoidance() -> FuzzySystem:
 
     Inputs ``dro`` (D_ro, m: P = [0, 0, 0.5, 1], M = [0.5, 1, 2.8, 4], G = [2.8, 4, ∞), Fig IV.10)
     and ``theta_o`` (θ_o, rad: the seven sets of Fig IV.6, Fig IV.11); outputs ``alpha`` and ``v``
-    as for goal seeking. Table IV.2 is the reconstruction of SPEC §3.2 (see ``TABLE_IV_2``).
+    as for goal seeking. Table IV.2 is the reconstruction of §IV.5.2.1 (see ``TABLE_IV_2``).
     """
     dro = Variable("dro", (0.0, 4.0), {
         "P": Trapezoidal(0.0, 0.0, 0.5, 1.0),
@@ -103,7 +103,7 @@ def obstacle_avoidance() -> FuzzySystem:
     return FuzzySystem([dro, theta_o], [steering(), speed()], rules, method="ts0", tnorm="product",
                        defuzzifier="weighted_sum", name="obstacle-avoidance",
                        description="Obstacle avoidance by distance and angle, thesis §IV.5.2.1, "
-                                   "Table IV.2 as reconstructed in SPEC §3.2 (TS0, product, weighted sum)")
+                                   "Table IV.2 as reconstructed (TS0, product, weighted sum)")
 
 
 # Table V.1 — rows θ_er (NG NM Z PM PG), columns dθ_er (NG NM Z PM PG), cells α, as printed.

@@ -1,6 +1,6 @@
 """ANFIS, Jang's adaptive-network fuzzy inference system, as a scikit-learn estimator (thesis §V.3.4).
 
-The five layers (§V.3.4, eqs V.8–V.12, SPEC §4.3), for any number of inputs and a grid partition
+The five layers (§V.3.4, eqs V.8–V.12), for any number of inputs and a grid partition
 (every combination of one MF per input is a rule):
 
 1. fuzzification μ_ij(x_i), generalized bell (eq V.8) or Gaussian — the *premise* parameters S1 (V.13);

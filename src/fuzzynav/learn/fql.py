@@ -1,4 +1,4 @@
-"""Fuzzy Q-learning (thesis §VI.3–VI.4, Algorithm VI.1; SPEC §5.2), vectorised over rules and episodes.
+"""Fuzzy Q-learning (thesis §VI.3–VI.4, Algorithm VI.1), vectorised over rules and episodes.
 
 A zero-order Takagi–Sugeno rule base with fixed membership functions (the *premise*: any object
 with ``firing_strengths(X, normalise=True) -> (N, n_rules)``, e.g. the fuzzy library's system)

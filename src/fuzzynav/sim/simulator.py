@@ -1,4 +1,4 @@
-"""The episode loop: sense → act → clip → step → record, until done (DESIGN.md, issue 3).
+"""The episode loop: sense → act → clip → step → record, until done (docs/ARCHITECTURE.md).
 
 :class:`BatchSimulator` steps N robots of one scenario together, NumPy-vectorised: sensing
 (rays of all robots against all obstacles in one call), kinematics and task logic. Each step:
