@@ -25,7 +25,6 @@ the others until the whole batch is done; their results are ignored.
 
 from __future__ import annotations
 
-import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path

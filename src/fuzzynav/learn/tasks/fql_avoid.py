@@ -28,37 +28,22 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Trapezoidal
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.systems_navigation import D_MAX
 from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import GridPremise, RandomObstacles, RobotEnv
 from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay
 from fuzzynav.learn.tasks.common import (
-    BATCH,
-    GOAL_TOLERANCE,
-    PI,
-    STEERING3,
-    WORLD_CONVERGENCE,
-    Phase,
-    checkpoint_path,
-    episode_budget,
-    finish,
-    fql_learner,
-    grid_system,
-    load_fuzzy_model,
-    output_variable,
-    run_phases,
-    steering_episodes,
-    summarise,
-)
+    BATCH, GOAL_TOLERANCE, PI, STEERING3, WORLD_CONVERGENCE, Phase, checkpoint_path, episode_budget, finish,
+    fql_learner, grid_system, load_fuzzy_model, output_variable, run_phases, steering_episodes, summarise)
 from fuzzynav.robot.sensors import SensorRing
 
-D_MAX = 4.0  # m, sensor range (docs/ARCHITECTURE.md)
 AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b (Fig IV.18)
 AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is learned
 AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
 AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
 AVOID_MAX_STEPS = 400
-AVOID_BATCH = 10  # parallel episodes (one random world) per batch of the avoider — see the module docstring
+AVOID_BATCH = 10  # parallel episodes (one random world) per batch of the avoider — see docs/training.md
 AVOID_RATE = 1.0  # β × B of the wall follower: a constant rate that follows the improving policy; the avoider's floor ÷ BATCH
 AVOID_RATE_START, AVOID_RATE_DECAY = 0.1, 0.95  # the avoider's β per batch: 0.1, × 0.95 down to AVOID_RATE / BATCH
 
@@ -93,7 +78,9 @@ OPEN_WIDTH = 0.05  # m: |openness| beyond which one side is the more open (narro
 
 
 def distance_variable(name: str, d_min: float, d_safe: float, d_max: float = D_MAX) -> Variable:
-    """A distance d_i with P (near) and L (far) defined by d_m, d_s and D_max (Figs IV.18, VI.17)."""
+    """A distance d_i with P (near) and L (far) defined by d_m, d_s and D_max (Figs IV.18, VI.17): the
+    partition of :func:`fuzzynav.fuzzy.systems_navigation.distance_variable`, written as trapezoids
+    bounded by D_max — the form the avoider's model documents store."""
     return Variable(name, (0.0, d_max), {"P": Trapezoidal(0.0, 0.0, d_min, d_safe),
                                         "L": Trapezoidal(d_min, d_safe, d_max, d_max)})
 

@@ -25,20 +25,8 @@ from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import GridPremise, RobotEnv, WallCourse
 from fuzzynav.learn.rewards import WallSpeedReward, WallSteeringReward
 from fuzzynav.learn.tasks.common import (
-    BATCH,
-    PI,
-    SPEED_SHARE,
-    WORLD_CONVERGENCE,
-    Phase,
-    checkpoint_path,
-    episode_budget,
-    finish,
-    fql_learner,
-    load_fuzzy_model,
-    run_phases,
-    steering_episodes,
-    summarise,
-)
+    BATCH, PI, SPEED_SHARE, WORLD_CONVERGENCE, Phase, checkpoint_path, episode_budget, finish, fql_learner,
+    load_fuzzy_model, run_phases, steering_episodes, summarise)
 from fuzzynav.learn.tasks.fql_avoid import AVOID_RATE
 from fuzzynav.robot.sensors import SensorRing
 
