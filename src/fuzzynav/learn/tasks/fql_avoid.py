@@ -57,7 +57,7 @@ def avoid_rate() -> ExponentialDecay:
 
 AVOID_DECISION = 3  # steps Δt per learning decision (0.3 s)
 AVOID_TOLERANCE = 0.05  # extraction tolerance: the avoider's quality gaps at the noise level are a few
-# hundredths; extracted with tolerance 0 (plain argmax), 1 training seed of 5 collided in 31 of 100 worlds
+# hundredths (docs/training.md, "Obstacle avoidance")
 # A-priori conclusions (indices of NG, Z, PG) of the 8 rules (front, right, left ∈ P, L; first
 # slowest), from the principle of §IV.7: turn away from the nearer side, right when blocked in
 # front (Table IV.3, rule R1). A rule keeps its prior unless a learned candidate beats it by more
@@ -68,8 +68,8 @@ AVOID_PRIOR = (0, 2, 0, 0, 1, 2, 0, 1)  # PPP PPL PLP PLL LPP LPL LLP LLL
 # turn a priori towards the more open side (open D: right, NG; open G: left, PG).
 OPEN_PRIOR = {0: (0, 2), 3: (0, 2)}
 # Deviation from the thesis (docs/thesis.md, chapter VI): the thesis' 8 rules cannot tell which side is more open when
-# front, right and left are all near (a wall or a corner ahead) — in 100 random worlds they collided
-# 4–8 times for every training seed. The avoider gets a fourth input, "open" (control.learned.openness,
+# front, right and left are all near (a wall or a corner ahead; docs/training.md, "Obstacle avoidance").
+# The avoider gets a fourth input, "open" (control.learned.openness,
 # the mean reading of the left module minus the right's) with two labels D (right more open) and G
 # (left more open), crossing over [0, OPEN_WIDTH]: 16 rules, 14 of them learned. The thesis' 8 rules stay
 # available (open_side=False, the study fql-avoid-8 of benchmarks/rl_bench.py).

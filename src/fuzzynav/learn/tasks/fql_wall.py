@@ -62,8 +62,7 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
     changes is the interpretations only. The rewards' d_i (eqs VI.21–VI.22) are the nearest
     reading of each module's three sensors (:data:`WALL_REWARD_SENSING`): the critic sees the
     corner tip between the rays that the follower does not (Fig VI.28), so the near-corner states
-    that end in the collision are punished before it — on the rays alone one training seed of five
-    still hit the Fig VI.28 corner.
+    that end in the collision are punished before it (docs/training.md, "Wall following").
     """
     handmade, premise, alpha, speed = wall_parts()
     layout, sensors, sides, inputs = WallCourse(), SensorRing(), SENSING[WALL_REWARD_SENSING], SENSING[sensing]

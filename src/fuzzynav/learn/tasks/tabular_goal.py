@@ -41,9 +41,8 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
 
     ε decays × 0.9 per batch from 0.3 to 0.02 with random starts; from the fixed start of Fig VI.1
     to 0 (:data:`FIXED_EPSILON_FLOOR`, "greedy in the limit"): there the episodes differ only by
-    exploration, and with ε kept at 0.02 (about ten random turns in each 500-step episode) the
-    greedy route of one training seed in five kept flipping between two near-equal routes (mean
-    reinforcement 0.62 ↔ 0.69 per 100 episodes), so its curve settled only at episode 1,310."""
+    exploration, and a floor of 0.02 keeps the greedy route flipping between near-equal routes
+    (docs/training.md, "Tabular goal seeking")."""
     batch = batch_size(fixed) if batch is None else batch
     disc = q_discretiser(n_states)
     steering = Q_STEERING if n_actions == 3 else (0.0, -PI / 10, PI / 10, -PI / 5, PI / 5)
