@@ -293,20 +293,36 @@ class LearnedAvoidanceNavigator(BatchController):
 
     def blend(self, distances, goal_command):
         """(α, V_r, w_free) from the avoider's inputs (B, 3 or 4) and the goal seeker's (α, V_r) (B, 2)."""
+        alpha, speed, free = self.avoider_shares(distances)
+        return (*with_goal_seeking(alpha, speed, free, goal_command), free)
+
+    def avoider_shares(self, distances):
+        """(Σ_i w_i α_i, Σ_i w_i V_i, w_free) (B,) of the learned rules for the avoider's inputs."""
         out = self.avoidance.evaluate(distances)
         free = self.free_share(distances)
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
-        return (*with_goal_seeking(out[:, self.alpha_index], speed, free, goal_command), free)
+        return out[:, self.alpha_index], speed, free
+
+    def goal_command(self, goal) -> np.ndarray:
+        """The goal seeker's (α, V_r) (B, 2) for (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`)."""
+        return np.column_stack(self.goal(goal[:, 0], -goal[:, 1])[:2])
+
+    def drive(self, alpha, speed, free, goal_command, ranges, goal):
+        """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended with the goal
+        seeker's ``goal_command`` by ``free`` (:func:`with_goal_seeking`) and handed to goal seeking
+        alone where the supervisor finds the way clear (:func:`supervise`). The avoider's training
+        drives the robot through this method with the learner's shares in place of the rules'."""
+        blended = np.column_stack(with_goal_seeking(alpha, speed, free, goal_command))
+        return supervise(blended, goal_command, ranges, goal[:, 0], -goal[:, 1], self.params)
 
     def act_batch(self, obs):
         pose, target, ranges = _batch(obs)
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
-        goal_command = np.column_stack(self.goal(x[:, 0], -x[:, 1])[:2])
-        alpha, speed, _ = self.blend(avoidance_inputs(ranges, self.open_side), goal_command)
-        steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
-                                          self.params)
+        goal_command = self.goal_command(x)
+        steering, speed, goal = self.drive(*self.avoider_shares(avoidance_inputs(ranges, self.open_side)), goal_command,
+                                           ranges, x)
         labels = np.where(goal, "goal seeking", "obstacle avoidance")
         if self.guard is not None:
             steering, speed, labels = self._guarded(obs, steering, speed, labels, -x[:, 1])

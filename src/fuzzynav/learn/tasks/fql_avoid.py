@@ -4,9 +4,9 @@ An avoider of 8 rules × 3 conclusions over the front, right and left distances 
 by which side is more open, a deviation from the thesis (:data:`AVOID_OPEN`) — learns its steering
 (reward VI.20) then its speed (VI.21) inside the goal navigator of Figs VI.20 and VI.24, the
 :class:`~fuzzynav.control.learned.LearnedAvoidanceNavigator` that the model file (kind
-``fql-avoid``) runs (:func:`load_model`): training blends the learner's action with the goal
-seeker and supervises it with the same :func:`~fuzzynav.control.learned.supervise` as the saved
-navigator.
+``fql-avoid``) runs (:func:`load_model`): training drives the robot through that navigator's own
+:meth:`~fuzzynav.control.learned.LearnedAvoidanceNavigator.drive`, the learner's action in place
+of the extracted rules' shares.
 """
 
 from __future__ import annotations
@@ -16,14 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.goal_seeking import GuardedGoalSeeking
-from fuzzynav.control.learned import (
-    LearnedAvoidanceNavigator,
-    avoidance_inputs,
-    avoidance_supervisor,
-    supervise,
-    with_goal_seeking,
-)
+from fuzzynav.control.learned import LearnedAvoidanceNavigator, avoidance_inputs
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Trapezoidal
@@ -148,8 +141,8 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
     template = grid_system(inputs, [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
                            [["Z"] * (free_rule[-1] + 1)], "premise", "")
     premise = GridPremise(template)
-    gsb = GuardedGoalSeeking()
-    params = avoidance_supervisor(template)
+    navigator = LearnedAvoidanceNavigator(template)  # the navigator a fql-avoid model file runs
+    params = navigator.params
     layout = RandomObstacles()
     sensors = SensorRing()
 
@@ -162,11 +155,9 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
         return x
 
     def navigate(s, alpha, speed):
-        """The navigator of control.learned with the learner's (α, V_r) shares of the avoider."""
-        goal = np.column_stack(gsb(s.goal[:, 0], -s.goal[:, 1])[:2])
+        """The navigator's commands with the learner's (α, V_r) shares of the avoider."""
         free = premise.firing_strengths(observe(s), normalise=False)[:, free_rule].sum(axis=1)
-        blended = np.column_stack(with_goal_seeking(alpha, speed(free), free, goal))
-        return supervise(blended, goal, s.ranges, s.goal[:, 0], -s.goal[:, 1], params)[:2]
+        return navigator.drive(alpha, speed(free), free, navigator.goal_command(s.goal), s.ranges, s.goal)[:2]
 
     def steer_command(a, s):
         return navigate(s, a[:, 0], lambda free: (1.0 - free) * AVOID_SPEED)
