@@ -9,7 +9,7 @@ from their fixed start), the avoidance navigator in
 seed (not the best one), the training wall time, the episodes to converge of every phase
 (the budget-independent criterion of fuzzynav.learn.curves with the settings of
 fuzzynav.learn.tasks) and the success, collision and timeout counts; then, per task, the
-medians next to the thesis' episode counts. The speed target of issue 5 — 3,000 FQL episodes in
+medians next to the thesis' episode counts. The speed target — 3,000 FQL episodes in
 under 30 s — is the wall time of ``fql-goal`` with 3,000 episodes (median over the seeds).
 
 Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tasks of their own:

@@ -1,4 +1,4 @@
-"""Simulator-core step rate (issue 3, benchmarks): sensing (7 rays), nearest obstacle (D_ro, θ_o),
+"""Simulator-core step rate: sensing (7 rays), nearest obstacle (D_ro, θ_o),
 kinematics, task and stop tests, for 1, 64 and 1,024 robots (spread over the free space) stepped
 together in a world of 15 mixed obstacles — and IR-SIM's headless step rate for one robot in the
 same world, measured in the same run (``benchmarks/irsim_peer.py`` in a subprocess).

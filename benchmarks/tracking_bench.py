@@ -1,4 +1,4 @@
-"""Chapter V comparison table (issue 4): our three trackers against pure pursuit and Stanley.
+"""Chapter V comparison table: our three trackers against pure pursuit and Stanley.
 
 Mean / max cross-track error (distance to the path polyline), completion and time on the V, N and
 trapezoid paths (built-in scenarios ``path-v``, ``path-n``, ``path-trapezoid``: robot on the path,

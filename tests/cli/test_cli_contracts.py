@@ -1,4 +1,4 @@
-"""Review of the command-line contracts (issues 2-5): bad input exits 2 with a message naming the
+"""The command-line contracts: bad input exits 2 with a message naming the
 option or file, never a traceback; files written atomically keep ordinary permissions."""
 
 import os

@@ -14,7 +14,7 @@ from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 
 class RawTable(BatchedController):
-    """Table IV.1 without the anti-orbit guard (what SPEC §3.1 warns about)."""
+    """Table IV.1 without the anti-orbit guard (the orbiting of docs/thesis.md, chapter IV)."""
 
     def __init__(self, sign=1.0):
         self.system, self.sign = goal_seeking(), sign

@@ -1,5 +1,5 @@
 """The one-robot float branches of the navigators' pieces decide as their array branches, and a
-batch of robots drives as the same robots run one by one (the speed work of issue 3 must not
+batch of robots drives as the same robots run one by one (the speed work on the one-robot path must not
 change a single output)."""
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""Episodes to converge of real training runs do not depend on the training budget (issue 5)."""
+"""Episodes to converge of real training runs do not depend on the training budget."""
 
 from dataclasses import replace
 from pathlib import Path

@@ -18,7 +18,7 @@ from fuzzynav.learn.anfis_hybrid import Grid, StepRule
 
 
 def tracker_target(theta):
-    """The benchmark target of issue 4: α = (π/4)·tanh(1.5·θ_er)."""
+    """The benchmark target of benchmarks/anfis_bench.py: α = (π/4)·tanh(1.5·θ_er)."""
     return math.pi / 4 * np.tanh(1.5 * theta)
 
 

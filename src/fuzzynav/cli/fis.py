@@ -26,22 +26,22 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
+from fuzzynav.storage import read_document
 
 
 def read_model_or_none(path: str) -> dict | None:
-    """The JSON object of ``path`` if it is a model file (has a ``kind``), else ``None``."""
+    """The document of ``path`` if it is a model file (JSON or NPZ with a ``kind``), else ``None``."""
     try:
-        document = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+        return read_document(path)
+    except InputError:
         return None
-    return document if isinstance(document, dict) and "kind" in document else None
 
 
 def resolve(name: str) -> FuzzySystem:
     """A built-in system by name, or the system stored in the file ``name``."""
     if name in SYSTEMS:
         return get_system(name)
-    if Path(name).suffix == ".json" and Path(name).is_file():
+    if Path(name).suffix in (".json", ".npz") and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
             from fuzzynav.learn.tasks.trackers import anfis_tracker_system
