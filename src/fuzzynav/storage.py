@@ -72,8 +72,7 @@ def document_format(path, field: str = "--out") -> str:
     """``".json"`` or ``".npz"``: the format ``path`` names; another extension is an InputError."""
     suffix = Path(path).suffix.lower()
     if suffix not in FORMATS:
-        raise InputError(f"must end in {' or '.join(FORMATS)} (the format to write), got {str(path)!r}",
-                         source=str(path), field=field)
+        raise InputError(f"must end in {' or '.join(FORMATS)} (the format to write)", source=str(path), field=field)
     return suffix
 
 
@@ -101,13 +100,15 @@ def read_document(path) -> dict:
     path = Path(path)
     if not path.is_file():
         raise InputError("no such model file", source=str(path))
+    npz = False
     try:
         with path.open("rb") as handle:
             npz = handle.read(len(_NPZ_MAGIC)) == _NPZ_MAGIC
         document = _read_npz(path) if npz else json.loads(path.read_bytes().decode("utf-8"))
     except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
         what = "NumPy archive" if npz else "JSON document"
-        raise InputError(f"cannot read model file: not a valid {what} ({error})", source=str(path)) from None
+        detail = "it holds Python objects, which fuzzynav never loads" if "pickle" in str(error) else error
+        raise InputError(f"cannot read model file: not a valid {what} ({detail})", source=str(path)) from None
     if not isinstance(document, dict) or "kind" not in document:
         raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
     return document

@@ -72,6 +72,16 @@ def test_unreadable_model_names_the_file_without_numpy_hints(capsys, tmp_path, c
     assert "pickle" not in err and "Traceback" not in err
 
 
+def test_an_archive_of_python_objects_is_refused_without_numpy_hints(capsys, tmp_path):
+    path = tmp_path / "objects.npz"
+    with path.open("wb") as handle:
+        np.savez(handle, kind=np.array("q-goal"), q=np.array([{"a": 1}], dtype=object))
+    status, _, err = run_cli(capsys, "run", "example-goal", "--model", str(path))
+    assert status == 2
+    assert f"{path}: cannot read model file" in err and "Python objects" in err
+    assert "pickle" not in err and "Traceback" not in err
+
+
 def test_save_document_refuses_an_unknown_extension(tmp_path):
     with pytest.raises(InputError, match="must end in .json or .npz"):
         storage.save_document(tmp_path / "m.yaml", {"kind": "x"})

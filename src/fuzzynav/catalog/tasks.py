@@ -38,9 +38,7 @@ TASKS["fql-wall"] = (f"{_TASKS}.fql_wall:train_fql_wall", "fql-wall",
 
 TRAINERS: dict[str, tuple[str, str]] = {name: (train, text) for name, (train, _, text) in TASKS.items()}
 # kind -> "module:loader"; a loader takes (the parsed document, the path) and returns a Controller.
-MODEL_LOADERS: dict[str, str] = {}
-for _train, _kind, _ in TASKS.values():
-    MODEL_LOADERS.setdefault(_kind, _train.split(":")[0] + ":load_model")
+MODEL_LOADERS: dict[str, str] = {kind: train.split(":")[0] + ":load_model" for train, kind, _ in TASKS.values()}
 
 
 def available() -> dict[str, str]:
