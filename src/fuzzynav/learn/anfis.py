@@ -261,7 +261,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     def predict_one(self, x) -> float:
         """Output for one input vector (or one number, for a single-input ANFIS), in plain Python.
 
-        The control-loop call: no NumPy dispatch, about 2 µs for 1 input × 5 MFs. Same result as
+        The control-loop call: no NumPy dispatch (timed by benchmarks/anfis_bench.py). Same result as
         :meth:`predict` up to rounding (falls back to it where a membership power would overflow).
         """
         single = self._scalar_single

@@ -161,7 +161,7 @@ class FuzzyQLearner:
         n = self.q.shape[-1]
         if j.size < 1024:
             return (j[..., None] == np.arange(n)) * w[:, None, :, None]
-        shares = np.zeros(j.shape + (n,))  # large batches: scatter the strengths (3× faster)
+        shares = np.zeros(j.shape + (n,))  # large batches: scatter the strengths (faster than the comparison above)
         shares.reshape(-1, n)[np.arange(j.size), j.ravel()] = np.broadcast_to(w[:, None, :], j.shape).ravel()
         return shares
 

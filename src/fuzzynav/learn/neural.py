@@ -80,7 +80,7 @@ class NeuralInverseModel:
     def predict_one(self, x) -> float:
         """Command for one observation (a number, or a sequence for several inputs).
 
-        A handful of small NumPy calls (no scikit-learn, no batch bookkeeping): ~5 µs for (10, 10).
+        A handful of small NumPy calls (no scikit-learn, no batch bookkeeping): the control-loop call.
         """
         if self._first is not None and isinstance(x, (float, int, np.floating)):
             h = np.tanh(self._first * float(x) + self.biases[0])
