@@ -38,7 +38,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
-from fuzzynav.experiments import evaluation
+from fuzzynav.experiments import evaluation as evaluations
 from fuzzynav.learn import envs
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.catalog.tasks import trainer
@@ -108,7 +108,7 @@ def _train(task: str, request):
 
 def _wall(controller) -> dict:
     """Wall follower: the Fig VI.28 corners and 100 random courses; success = no collision."""
-    result = evaluation.evaluate_wall(controller, 100)
+    result = evaluations.evaluate_wall(controller, 100)
     return {**result, "success": 1 - result["collisions"] / result["courses"], "timeouts": 0}
 
 
@@ -117,7 +117,7 @@ def _fixed(controller) -> dict:
     from fuzzynav.sim import run_episode
 
     world, start, goal = envs.FixedGoal().sample(None, 1)
-    outcome = run_episode(evaluation.scenario_of(world, start[0], goal[0], "fixed start", 60.0), controller).outcome
+    outcome = run_episode(evaluations.scenario_of(world, start[0], goal[0], "fixed start", 60.0), controller).outcome
     return {"runs": 1, "success": float(outcome == "reached"), "collisions": int(outcome == "collision"),
             "timeouts": int(outcome == "timeout")}
 
@@ -129,7 +129,7 @@ def _avoid(controller) -> dict:
 
     guarded = LearnedAvoidanceNavigator(controller.avoidance, constant_speed=controller.constant_speed,
                                         name=controller.name, turn_guard=True)
-    return {**evaluation.evaluate_avoid(controller), "with_turn_guard": evaluation.evaluate_avoid(guarded)}
+    return {**evaluations.evaluate_avoid(controller), "with_turn_guard": evaluations.evaluate_avoid(guarded)}
 
 
 EVALUATE = {"fql-avoid": _avoid, "fql-avoid-8": _avoid, "fql-wall": _wall, "fql-wall-modules": _wall,
@@ -141,7 +141,7 @@ def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: b
     start = time.perf_counter()
     result, controller = _train(task, TrainRequest(out=out, episodes=episodes, seed=seed, progress=False))
     wall = time.perf_counter() - start
-    evaluation = EVALUATE.get(task, evaluation.evaluate_goal)(controller)
+    evaluation = EVALUATE.get(task, evaluations.evaluate_goal)(controller)
     phases = {k: v for k, v in result.items() if isinstance(v, dict)}
     row = {"task": task, "seed": seed, "wall_s": round(wall, 2),
            "episodes": {k: v["episodes"] for k, v in phases.items()},
