@@ -42,7 +42,7 @@ def episodes(n_worlds: int):
 
 
 def record(path: str, n_worlds: int) -> None:
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import run_episode
 
     arrays, meta = {}, {}

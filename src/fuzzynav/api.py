@@ -12,14 +12,14 @@ from pathlib import Path
 
 def list_controllers() -> dict[str, str]:
     """The built-in controller names with a one-line description each (``fuzzynav run --help``)."""
-    from fuzzynav.control.registry import available
+    from fuzzynav.catalog.controllers import available
 
     return available()
 
 
 def list_training_tasks() -> dict[str, str]:
     """The training task names with a one-line description each (``fuzzynav train --help``)."""
-    from fuzzynav.training import available
+    from fuzzynav.catalog.tasks import available
 
     return available()
 
@@ -31,7 +31,8 @@ def train(task: str, out: str | Path, *, episodes: int | None = None, seed: int 
     ``converged_at`` per phase). ``episodes`` defaults to the task's own budget; ``curve`` writes
     the learning-curve plot; :func:`fuzzynav.load_controller` reads the model back.
     """
-    from fuzzynav.training import TrainRequest, trainer
+    from fuzzynav.catalog.tasks import trainer
+    from fuzzynav.learn.tasks.common import TrainRequest
 
     request = TrainRequest(out=Path(out), episodes=episodes, seed=seed, resume=resume,
                            curve=None if curve is None else Path(curve), progress=progress)

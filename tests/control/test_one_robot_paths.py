@@ -4,7 +4,7 @@ compiled step loops over the robots; nothing is shared between them)."""
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import BatchSimulator, run_episode
 from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.kernels import guard
 from fuzzynav.sim import run_episode

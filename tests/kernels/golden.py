@@ -16,7 +16,7 @@ EVERY = 10  # poses kept: every 10th step and the last
 
 def run_all() -> dict:
     """{key: (outcome, steps, behaviour labels, kept poses)} of every episode."""
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import run_episode
     from fuzzynav.world.generate import generate_worlds
     from fuzzynav.world.scenario import load_scenario

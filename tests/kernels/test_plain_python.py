@@ -11,7 +11,7 @@ import pytest
 
 SCRIPT = """
 import json, numpy as np
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
 import fuzzynav.kernels.scene as scene

@@ -69,7 +69,7 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def run(args) -> int:
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.world.scenario_file import open_scenario
 

@@ -18,8 +18,8 @@ from pathlib import Path
 
 from fuzzynav import progress as progress_bars
 from fuzzynav.cli import arguments
-from fuzzynav.control.fuzzy_roles import make_with_systems, systems_from_options
-from fuzzynav.control.registry import CONTROLLERS
+from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+from fuzzynav.catalog.controllers import CONTROLLERS
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 

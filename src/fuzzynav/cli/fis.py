@@ -27,7 +27,7 @@ import numpy as np
 
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
-from fuzzynav.control.fuzzy_roles import ROLES, default_system
+from fuzzynav.catalog.roles import ROLES, default_system
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.export_c import FIXED_FORMATS
@@ -35,15 +35,15 @@ from fuzzynav.fuzzy.fll_terms import term_to_fll
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
+from fuzzynav.storage import read_document
 
 
 def read_model_or_none(path: str) -> dict | None:
-    """The JSON object of ``path`` if it is a model file (has a ``kind``), else ``None``."""
+    """The document of ``path`` if it is a model file (JSON or NPZ with a ``kind``), else ``None``."""
     try:
-        document = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+        return read_document(path)
+    except InputError:
         return None
-    return document if isinstance(document, dict) and "kind" in document else None
 
 
 def resolve(name: str) -> FuzzySystem | Engine:
@@ -53,12 +53,16 @@ def resolve(name: str) -> FuzzySystem | Engine:
     controller, sep, role = name.partition(":")
     if sep and not Path(name).exists() and controller in ROLES:
         return default_system(controller, role)
-    if Path(name).suffix == ".json" and Path(name).is_file():
+    if Path(name).suffix in (".json", ".npz") and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
-            from fuzzynav.experiments.train_trackers import anfis_tracker_system
+            from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
-            return anfis_tracker_system(document, name)  # the trained ANFIS, exported (issue 4)
+            return anfis_tracker_system(document, name)  # the trained ANFIS, exported
+        if document is not None and Path(name).suffix == ".npz":  # a learned rule base stored as NPZ
+            from fuzzynav.fuzzy.io.document import from_document
+
+            return from_document(document, source=name)
     if Path(name).suffix:
         return load(name)
     raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}), a CONTROLLER:ROLE ({', '.join(ROLES)}) nor a "

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from fuzzynav import progress
 from fuzzynav.cli import arguments
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 
 
 def register(subparsers) -> None:

@@ -13,7 +13,7 @@ import json
 import math
 
 from fuzzynav.cli import arguments
-from fuzzynav.control.registry import available
+from fuzzynav.catalog.controllers import available
 from fuzzynav.errors import InputError
 
 
@@ -49,7 +49,7 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
-    from fuzzynav.control.fuzzy_roles import make_with_systems, systems_from_options
+    from fuzzynav.catalog.roles import make_with_systems, systems_from_options
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.world.scenario_file import open_scenario
 
@@ -63,7 +63,7 @@ def run(args) -> int:
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
     scenario = open_scenario(args.scenario)
     if args.model:
-        from fuzzynav.models import load_controller
+        from fuzzynav.catalog.tasks import load_controller
 
         controller = load_controller(args.model)
     else:

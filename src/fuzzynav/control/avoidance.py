@@ -76,5 +76,5 @@ class TwoBehaviourNavigator(CompiledNavigator):
 
 
 def make(**options) -> TwoBehaviourNavigator:
-    """Factory of the ``fuzzy-2b`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``fuzzy-2b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return TwoBehaviourNavigator(**options)

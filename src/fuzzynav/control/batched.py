@@ -165,7 +165,7 @@ class ConstantCommand(CompiledNavigator):
 def sensor_columns(angles, wanted_deg, source: str = "sensors") -> np.ndarray:
     """Indices of the readings pointing at ``wanted_deg`` (degrees, CCW from the heading).
 
-    The navigators address the thesis' sensors C1…C7 by direction (SPEC §3.3), so any ring that
+    The navigators address the thesis' sensors C1…C7 by direction (thesis §IV.7), so any ring that
     contains those directions works; a missing one raises :class:`InputError`.
     """
     if angles is None:

@@ -104,5 +104,5 @@ class FiveBehaviourNavigator(CompiledNavigator):
 
 
 def make(**options) -> FiveBehaviourNavigator:
-    """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return FiveBehaviourNavigator(**options)

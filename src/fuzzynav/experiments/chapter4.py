@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure

@@ -32,10 +32,11 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
-from fuzzynav.experiments import train_trackers as tt
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.viz import palette
+from fuzzynav.viz.training import plot_training
 from fuzzynav.viz.trajectories import draw_world, save_figure
 from fuzzynav.world.scenario import load_scenario
 
@@ -47,41 +48,6 @@ PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 
 def _save(figure: Figure, out_dir, name: str) -> str:
     return save_figure(figure, Path(out_dir) / name)
-
-
-def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
-    """Figs V.15 / V.23: (a) desired and model output on the validation pairs, (b) their error,
-    (c) the training curve (MLP loss per iteration, or ANFIS RMSE per epoch)."""
-    figure = Figure(figsize=(13, 3.8), layout="constrained")
-    a, b, c = figure.subplots(1, 3)
-    order = np.argsort(data.x_val[:, 0])
-    predicted = model.predict(data.x_val)
-    k = np.arange(len(order))
-    a.plot(k, data.y_val[order], "o", markersize=3, label="desired output")
-    a.plot(k, predicted[order], "-", label="real output")
-    a.set(xlabel="validation sample (sorted by θ_er)", ylabel="α (rad)", title="(a) outputs")
-    a.legend()
-    b.plot(k, (data.y_val - predicted)[order])
-    b.set(xlabel="validation sample", ylabel="error (rad)", title="(b) learning error")
-    if kind == "anfis-tracker":
-        c.semilogy(model.history_["train_rmse"], label="training RMSE")
-        if model.history_["validation_rmse"] is not None:
-            c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
-        c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
-        c.legend()
-    elif len(model.loss_curve) > 1:
-        c.semilogy(np.arange(1, len(model.loss_curve) + 1), model.loss_curve)
-        c.set(xlabel="iteration", ylabel="loss (half MSE, standardised α)", title="(c) back-propagation")
-    else:  # L-BFGS records no per-iteration curve: say what it did instead of drawing one point
-        c.axis("off")
-        c.set_title("(c) back-propagation (L-BFGS)")
-        c.text(0.5, 0.5, f"{model.iterations} solver iterations\nfinal loss {model.loss_curve[-1]:.2e}\n"
-               "(half mean squared error on standardised α)\nL-BFGS records no loss per iteration",
-               ha="center", va="center", transform=c.transAxes)
-    figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
-    if path is not None:
-        save_figure(figure, path)
-    return figure
 
 
 def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:

@@ -1,6 +1,6 @@
 """What the thesis claims for each reproduced figure / table, and the test of it on our numbers.
 
-:data:`CLAIMS` maps each experiment id of :mod:`fuzzynav.experiments.registry` to a
+:data:`CLAIMS` maps each experiment id of :mod:`fuzzynav.catalog.experiments` to a
 :class:`Claim`: the thesis' statement (translated from the French, with its numbers), what this
 package asserts of its own run, and :meth:`Claim.check`, which reads the numbers the experiment
 returned and says whether the assertion holds, with the numbers behind the verdict.

@@ -32,6 +32,7 @@ from sklearn.exceptions import ConvergenceWarning
 from sklearn.neural_network import MLPRegressor
 
 from fuzzynav.errors import InputError
+from fuzzynav.learn.estimator_checks import check_format
 
 _FORMAT = "fuzzynav-mlp"
 _VERSION = 1
@@ -81,7 +82,7 @@ class NeuralInverseModel:
     def predict_one(self, x) -> float:
         """Command for one observation (a number, or a sequence for several inputs).
 
-        A handful of small NumPy calls (no scikit-learn, no batch bookkeeping): ~5 µs for (10, 10).
+        A handful of small NumPy calls (no scikit-learn, no batch bookkeeping): the control-loop call.
         """
         if self._first is not None and isinstance(x, (float, int, np.floating)):
             h = np.tanh(self._first * float(x) + self.biases[0])
@@ -111,10 +112,7 @@ class NeuralInverseModel:
     @classmethod
     def from_dict(cls, document, source: str | None = None) -> NeuralInverseModel:
         """Rebuild from :meth:`to_dict`'s document; InputError names the bad field."""
-        if not isinstance(document, dict) or document.get("format") != _FORMAT:
-            raise InputError(f"not an MLP document (format must be {_FORMAT!r})", source=source, field="format")
-        if document.get("version") != _VERSION:
-            raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
+        check_format(document, _FORMAT, _VERSION, "an MLP", source)
         weights, biases = document.get("weights"), document.get("biases")
         if not isinstance(weights, list) or not isinstance(biases, list) or len(weights) != len(biases) or not weights:
             raise InputError("weights and biases must be lists of the same non-zero length", source=source,

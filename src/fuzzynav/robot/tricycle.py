@@ -1,4 +1,4 @@
-"""Tricycle (car-like) robot kinematics, SPEC §1 / thesis §IV.4, eq IV.1–IV.2.
+"""Tricycle (car-like) robot kinematics, thesis §IV.4, eq IV.1–IV.2.
 
 Two rear driving wheels on one motor, one steered front wheel. Controls: steering α (rad,
 α > 0 turns left) and linear speed V (m/s). State: pose (x, y, θ), θ CCW from +x.

@@ -1,4 +1,4 @@
-"""Seeded random worlds for benchmarking navigators (issue 3, "How we will know").
+"""Seeded random worlds for benchmarking navigators (``fuzzynav evaluate``).
 
 Two families on the thesis' 20 m × 20 m workspace:
 

@@ -1,4 +1,4 @@
-"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (issue 3, SPEC §3).
+"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (obstacles of any shape, thesis §IV.7).
 
 Plain frozen records; the vectorised geometry on many shapes at once lives in
 :mod:`fuzzynav.kernels.scene` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the

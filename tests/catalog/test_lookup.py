@@ -2,11 +2,11 @@
 
 import pytest
 
-from fuzzynav.control.registry import CONTROLLERS, make_controller
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 from fuzzynav.lookup import descriptions, resolve
-from fuzzynav.training import trainer
+from fuzzynav.catalog.tasks import trainer
 
 
 def test_resolve_imports_the_registered_object():

@@ -7,7 +7,7 @@ import json
 import pytest
 
 from fuzzynav.cli import main
-from fuzzynav.experiments import train_rl
+from fuzzynav.learn.tasks import tabular_goal
 
 GOOD_Q = {"kind": "q-goal", "zone_edges": [1.0, 4.0], "n_sectors": 6, "merge_inner": True,
           "steering": [0.0, -0.6, 0.6], "speed": 1.0, "q": [[0.0, 0.0, 1.0]] * 13,
@@ -67,5 +67,5 @@ def test_every_learned_model_is_named_by_its_training_task(tmp_path, capsys):
 
 
 def test_the_loader_gives_the_trained_greedy_policy():
-    controller = train_rl.load_q_goal(GOOD_Q, "m.json")
+    controller = tabular_goal.load_model(GOOD_Q, "m.json")
     assert controller.greedy.tolist() == [2] * 13 and controller.speed == 1.0

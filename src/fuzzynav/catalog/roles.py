@@ -86,7 +86,7 @@ def systems_from_options(controller: str, options: list[str] | None) -> dict:
 def make_with_systems(controller: str, systems: dict, **options):
     """``make_controller(controller, systems=systems)``; a controller whose factory does not take
     replacement systems is refused with an InputError (not a TypeError)."""
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
 
     if not systems:
         return make_controller(controller, **options)

@@ -1,9 +1,9 @@
-"""Training of the neural (CN, §V.3.2) and ANFIS (CNF, §V.3.5) trackers, their model files and loaders.
+"""The neural (CN, §V.3.2) and ANFIS (CNF, §V.3.5) trackers: ``fuzzynav train neural-tracker | anfis-tracker``, model files, loaders.
 
 Data by *generalized learning* (Fig V.14): steering commands α drawn uniformly in [−π/4, π/4]
 are applied to the simulated tricycle (eq IV.2, V = 1 m/s) for one control step Δt from random
 headings; the angular error each command cancels is θ_er = θ_r − θ_d with θ_r the heading
-before and θ_d the heading reached (SPEC §0 sign). The pairs (θ_er, α) train
+before and θ_d the heading reached (the sign of :func:`~fuzzynav.control.base.thesis_angle_error`). The pairs (θ_er, α) train
 
 - the MLP of Fig V.13 (two tanh hidden layers of 10, linear output; :mod:`fuzzynav.learn.neural`),
   validated on 100 unseen pairs (Fig V.15);
@@ -15,8 +15,8 @@ position", §V.3.2); the commands reach |θ_er| ≤ V·tan(π/4)·Δt / l = 0.2 
 clamp larger errors to that range (the command saturates at ±π/4).
 
 Model files (JSON, written atomically) have ``kind`` ``neural-tracker`` / ``anfis-tracker``,
-the trained model's document, the input range and the tracker options; the loaders of
-:data:`fuzzynav.models.MODEL_LOADERS` rebuild the :class:`~fuzzynav.control.tracking.ModelTracker`.
+the trained model's document, the input range and the tracker options; :func:`load_model`
+rebuilds the :class:`~fuzzynav.control.tracking.ModelTracker`.
 The registry names ``neural-tracker`` / ``anfis-tracker`` without a file train the default model
 on the fly (seed 0, well under a second) and keep it for the rest of the process.
 """
@@ -34,7 +34,7 @@ from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, DEFAULT_LOOKAHEAD, 
 from fuzzynav.errors import InputError
 from fuzzynav.learn.anfis import ANFIS
 from fuzzynav.learn.neural import NeuralInverseModel, fit_inverse_model, generalized_learning_dataset
-from fuzzynav.models import save_json_atomic
+from fuzzynav.learn.tasks.common import save_model
 from fuzzynav.robot import tricycle
 from fuzzynav.world.geometry import wrap_angle
 
@@ -145,7 +145,7 @@ def _checked(document: dict, path) -> dict:
 
 
 def load_neural_tracker(document: dict, path=None, **options) -> ModelTracker:
-    """Model loader of kind ``neural-tracker`` (see :data:`fuzzynav.models.MODEL_LOADERS`)."""
+    """Model loader of kind ``neural-tracker``."""
     document = _checked(document, path)
     source = str(path) if path else None
     model = NeuralInverseModel.from_dict(document["model"], source=source)
@@ -200,9 +200,9 @@ def _train(kind: str, request) -> dict:
         model = fit_anfis(data, request.seed, **({"epochs": request.episodes} if request.episodes else {}))
         count = {"epochs": len(model.history_["train_rmse"])}
     document = _document(kind, model, data, request.seed, time.perf_counter() - start)
-    save_json_atomic(request.out, document)
+    save_model(request, document)
     if request.curve:
-        from fuzzynav.experiments.chapter5 import plot_training
+        from fuzzynav.viz.training import plot_training  # matplotlib only when a plot is asked for
 
         plot_training(kind, model, data, request.curve)
     return {"model": str(request.out), **count, **document["training"]}
@@ -216,3 +216,9 @@ def train_neural_tracker(request) -> dict:
 def train_anfis_tracker(request) -> dict:
     """``fuzzynav train anfis-tracker``: the ANFIS of §V.3.5 (``--episodes`` = max epochs)."""
     return _train("anfis-tracker", request)
+
+
+def load_model(document: dict, path=None) -> ModelTracker:
+    """Model loader of the kinds ``neural-tracker`` and ``anfis-tracker``."""
+    load = load_neural_tracker if document.get("kind") == "neural-tracker" else load_anfis_tracker
+    return load(document, path)

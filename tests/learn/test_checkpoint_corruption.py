@@ -1,5 +1,5 @@
 """A damaged checkpoint is refused with the file and field named (``fuzzynav train --resume``),
-never a traceback and never a silent resume from NaN qualities (issue 5, resumable training)."""
+never a traceback and never a silent resume from NaN qualities (resumable training)."""
 
 import json
 

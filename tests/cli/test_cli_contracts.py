@@ -1,4 +1,4 @@
-"""Review of the command-line contracts (issues 2-5): bad input exits 2 with a message naming the
+"""The command-line contracts: bad input exits 2 with a message naming the
 option or file, never a traceback; files written atomically keep ordinary permissions."""
 
 import os
@@ -13,7 +13,7 @@ from fuzzynav.cli import main
 from fuzzynav.fuzzy.io import dumps
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.systems import get_system
-from fuzzynav.models import save_json_atomic
+from fuzzynav.storage import save_json_atomic
 
 
 def run_cli(capsys, *argv):

@@ -1,5 +1,5 @@
 """Scenario rules found missing in review: exit 2 naming the field instead of a traceback, a
-collision at t = 0, NaN poses or a robot driven beyond its speed limit (issues 3 and 4)."""
+collision at t = 0, NaN poses or a robot driven beyond its speed limit."""
 
 import pytest
 

@@ -19,9 +19,9 @@ CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.five_behaviours:make",
                            "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
-CONTROLLERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:neural_tracker",
+CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",
                                  "MLP inverse-model tracker (§V.3.2), trained on the fly")
-CONTROLLERS["anfis-tracker"] = ("fuzzynav.experiments.train_trackers:anfis_tracker",
+CONTROLLERS["anfis-tracker"] = ("fuzzynav.learn.tasks.trackers:anfis_tracker",
                                 "ANFIS tracker, 1 input, 5 MFs (§V.3.5), trained on the fly")
 CONTROLLERS["pure-pursuit"] = ("fuzzynav.control.baselines:pure_pursuit", "pure pursuit baseline (Coulter 1992)")
 CONTROLLERS["stanley"] = ("fuzzynav.control.baselines:stanley", "Stanley steering baseline (Thrun et al. 2006)")

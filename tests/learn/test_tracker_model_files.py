@@ -1,4 +1,4 @@
-"""Damaged tracker model files (``fuzzynav run SCEN --model FILE``, issue 4): exit 2 with the file
+"""Damaged tracker model files (``fuzzynav run SCEN --model FILE``): exit 2 with the file
 and the field named, no traceback."""
 
 import json
