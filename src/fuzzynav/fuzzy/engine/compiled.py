@@ -29,7 +29,8 @@ from fuzzynav.kernels.compile import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
-MAXIMUM, MINIMUM, PRODUCT = SNORMS.index("Maximum"), TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
+MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
+MAXIMUM, SUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("UnboundedSum"), SNORMS.index("AlgebraicSum")
 
 
 @jit
@@ -83,36 +84,70 @@ def snorm(kind, a, b):
 
 
 @jit
-def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
-    """``out[r, n]`` = ``weights[r]`` × the antecedent of rule r on row n; rule r's program is
-    ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N)."""
-    stack = np.empty(max(1, program.shape[0]))
-    for n in range(table.shape[1]):
-        for r in range(starts.shape[0] - 1):
-            top = 0
-            for i in range(starts[r], starts[r + 1]):
-                code = program[i]
-                if code >= 0:
-                    stack[top] = table[code, n]
-                    top += 1
-                    continue
-                top -= 1
-                if code == AND:
-                    stack[top - 1] = tnorm(conjunction, stack[top - 1], stack[top])
-                else:
-                    stack[top - 1] = snorm(disjunction, stack[top - 1], stack[top])
-            out[r, n] = weights[r] * stack[0]
+def tnorm_into(kind, a, b):
+    """a ← T(a, b) elementwise (the common T-norms in loops of their own, which vectorise)."""
+    if kind == PRODUCT:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(PRODUCT, a[k], b[k])
+    elif kind == MINIMUM:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(MINIMUM, a[k], b[k])
+    else:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(kind, a[k], b[k])
 
 
 @jit
-def _reduce(kind, mu, x, area):
-    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty)."""
+def snorm_into(kind, a, b):
+    """a ← S(a, b) elementwise (the common S-norms in loops of their own, which vectorise)."""
+    if kind == MAXIMUM:
+        for k in range(a.shape[0]):
+            a[k] = snorm(MAXIMUM, a[k], b[k])
+    elif kind == SUM:
+        for k in range(a.shape[0]):
+            a[k] = snorm(SUM, a[k], b[k])
+    elif kind == ALGEBRAIC_SUM:
+        for k in range(a.shape[0]):
+            a[k] = snorm(ALGEBRAIC_SUM, a[k], b[k])
+    else:
+        for k in range(a.shape[0]):
+            a[k] = snorm(kind, a[k], b[k])
+
+
+@jit
+def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
+    """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
+    ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N)."""
+    n = table.shape[1]
+    stack = np.empty((max(1, program.shape[0]), n))
+    for r in range(starts.shape[0] - 1):
+        top = 0
+        for i in range(starts[r], starts[r + 1]):
+            code = program[i]
+            if code >= 0:
+                stack[top] = table[code]
+                top += 1
+                continue
+            top -= 1
+            if code == AND:
+                tnorm_into(conjunction, stack[top - 1], stack[top])
+            else:
+                snorm_into(disjunction, stack[top - 1], stack[top])
+        for k in range(n):
+            out[r, k] = weights[r] * stack[0, k]
+
+
+@jit
+def _reduce(kind, mu, x, area, lo, hi):
+    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
+    outside samples [lo, hi)."""
     size = mu.shape[0]
     if kind == 0:
         total, moment = 0.0, 0.0
-        for k in range(size):
-            total += mu[k]
-            moment += mu[k] * x[k]
+        m, at = mu[lo:hi], x[lo:hi]
+        for k in range(m.shape[0]):
+            total += m[k]
+            moment += m[k] * at[k]
         return moment / total
     if kind == 1:  # the samples where the running area is closest to half of it, averaged
         total = 0.0
@@ -132,24 +167,29 @@ def _reduce(kind, mu, x, area):
                 count += 1
                 where += x[k]
         return where / count if count > 0 else np.nan
-    top = -np.inf
-    for k in range(size):
-        if mu[k] != mu[k]:
-            return np.nan
-        top = max(top, mu[k])
+    m, nan = mu[lo:hi], False
+    for k in range(m.shape[0]):
+        nan |= m[k] != m[k]
+    if nan:
+        return np.nan
+    top = 0.0
+    for k in range(m.shape[0]):
+        top = m[k] if m[k] > top else top
     if not top > 0.0:
         return np.nan
-    count, where, first, last = 0, 0.0, -1, -1
-    for k in range(size):
-        if mu[k] == top:
-            count += 1
-            where += x[k]
-            last = k
-            if first < 0:
-                first = k
+    at = x[lo:hi]
     if kind == 2:
+        count, where = 0, 0.0
+        for k in range(m.shape[0]):
+            tie = m[k] == top
+            count += tie
+            where += at[k] * tie
         return where / count
-    return x[first] if kind == 3 else x[last]
+    step = 1 if kind == 3 else -1
+    k = 0 if kind == 3 else m.shape[0] - 1
+    while m[k] != top:
+        k += step
+    return at[k]
 
 
 @jit
@@ -162,8 +202,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu = np.empty(size)
-    area = np.empty(size)
+    mu, area = np.empty(size), np.empty(size)
     for n in range(degrees.shape[1]):
         for u in range(n_units):
             w[u] = -np.inf
@@ -176,6 +215,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
         for u in range(n_units):
             bounded = bounded and 0.0 <= w[u] <= 1.0
         mu[:] = 0.0
+        lo, hi = size, 0  # the samples any unit touched
         for u in range(n_units):
             t, wu = unit_term[u], w[u]
             first, end = 0, size
@@ -183,17 +223,18 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 if wu == 0.0:
                     continue
                 first, end = support[t, 0], support[t, 1]
-            imp = unit_implication[u]
+            lo, hi = min(lo, first), max(hi, end)
+            imp, m, shape = unit_implication[u], mu[first:end], shapes[t, first:end]  # slices: loops vectorise
             if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
-                for k in range(first, end):  # no NaN here: plain max / min, vectorised
-                    mu[k] = max(mu[k], min(wu, shapes[t, k]))
+                for k in range(m.shape[0]):  # no NaN can occur: plain max / min
+                    m[k] = max(m[k], min(wu, shape[k]))
             elif bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == PRODUCT:
-                for k in range(first, end):
-                    mu[k] = max(mu[k], wu * shapes[t, k])
+                for k in range(m.shape[0]):
+                    m[k] = max(m[k], wu * shape[k])
             else:
-                for k in range(first, end):
-                    mu[k] = snorm(aggregation, mu[k], tnorm(imp, wu, shapes[t, k]))
-        out[n] = _reduce(reduction, mu, x, area)
+                for k in range(m.shape[0]):
+                    m[k] = snorm(aggregation, m[k], tnorm(imp, wu, shape[k]))
+        out[n] = _reduce(reduction, mu, x, area, lo, max(lo, hi))
 
 
 @jit
@@ -201,32 +242,44 @@ def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, 
     """Per term group g and row n: ``degree[g, n]`` the S-norm ``aggregation`` folded over its
     activations' degrees in order (``opens[a]``: a is the group's first; 0 where not triggered),
     ``present[g, n]`` whether any triggered (``masked`` False: every activation triggers)."""
-    for n in range(degrees.shape[1]):
-        for a in range(rows.shape[0]):
-            g = groups[a]
-            on = (not masked) or triggered[a, n]
-            v = degrees[rows[a], n] if on else 0.0
-            if opens[a]:
-                degree[g, n], present[g, n] = v, on
+    v = np.empty(degrees.shape[1])
+    for a in range(rows.shape[0]):
+        g = groups[a]
+        v[:] = degrees[rows[a]]
+        if masked:
+            for n in range(v.shape[0]):
+                if not triggered[a, n]:
+                    v[n] = 0.0
+        if opens[a]:
+            degree[g] = v
+            if masked:
+                present[g] = triggered[a]
             else:
-                degree[g, n], present[g, n] = snorm(aggregation, degree[g, n], v), present[g, n] or on
+                present[g] = True
+            continue
+        snorm_into(aggregation, degree[g], v)
+        if masked:
+            for n in range(v.shape[0]):
+                present[g, n] = present[g, n] or triggered[a, n]
 
 
 @jit
 def weighted_average(degree, present, z, weighted_sum, out):
     """Σ_g g z_g / Σ_g g over the groups present in each row (times Σ g for a weighted sum);
     NaN where none is."""
-    for n in range(degree.shape[1]):
-        num, den, seen = 0.0, 0.0, False
-        for g in range(degree.shape[0]):
-            if present[g, n]:
-                seen = True
-                num += degree[g, n] * z[g, n]
-                den += degree[g, n]
-        y = num / den
+    n = out.shape[0]
+    num, den, seen = np.zeros(n), np.zeros(n), np.zeros(n, dtype=np.bool_)
+    for g in range(degree.shape[0]):
+        for k in range(n):
+            if present[g, k]:
+                seen[k] = True
+                num[k] += degree[g, k] * z[g, k]
+                den[k] += degree[g, k]
+    for k in range(n):
+        y = num[k] / den[k]
         if weighted_sum:
-            y = y * den
-        out[n] = y if seen else np.nan
+            y = y * den[k]
+        out[k] = y if seen[k] else np.nan
 
 
 @jit
@@ -234,11 +287,11 @@ def affine(coefficients, constants, inputs, z):
     """``z[g, n]`` = ``constants[g]`` + Σ_i ``coefficients[g, i]`` × ``inputs[i, n]``: constant and
     linear terms' values on every row."""
     for g in range(z.shape[0]):
-        for n in range(z.shape[1]):
-            value = constants[g]
-            for i in range(coefficients.shape[1]):
-                value += coefficients[g, i] * inputs[i, n]
-            z[g, n] = value
+        z[g] = constants[g]
+        for i in range(coefficients.shape[1]):
+            c, x = coefficients[g, i], inputs[i]
+            for n in range(z.shape[1]):
+                z[g, n] += c * x[n]
 
 
 @jit
