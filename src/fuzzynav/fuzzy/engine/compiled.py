@@ -29,8 +29,7 @@ from fuzzynav.kernels.compile import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
-MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
-MAXIMUM, SUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("UnboundedSum"), SNORMS.index("AlgebraicSum")
+MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
 
 
 @jit
@@ -85,33 +84,60 @@ def snorm(kind, a, b):
 
 @jit
 def tnorm_into(kind, a, b):
-    """a ← T(a, b) elementwise (the common T-norms in loops of their own, which vectorise)."""
-    if kind == PRODUCT:
+    """a ← T(a, b) elementwise, one loop per T-norm: with the norm a constant, the loops vectorise."""
+    if kind == 0:
         for k in range(a.shape[0]):
-            a[k] = tnorm(PRODUCT, a[k], b[k])
-    elif kind == MINIMUM:
+            a[k] = tnorm(0, a[k], b[k])
+    elif kind == 1:
         for k in range(a.shape[0]):
-            a[k] = tnorm(MINIMUM, a[k], b[k])
-    else:
+            a[k] = tnorm(1, a[k], b[k])
+    elif kind == 2:
         for k in range(a.shape[0]):
-            a[k] = tnorm(kind, a[k], b[k])
+            a[k] = tnorm(2, a[k], b[k])
+    elif kind == 3:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(3, a[k], b[k])
+    elif kind == 4:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(4, a[k], b[k])
+    elif kind == 5:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(5, a[k], b[k])
+    elif kind == 6:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(6, a[k], b[k])
 
 
 @jit
 def snorm_into(kind, a, b):
-    """a ← S(a, b) elementwise (the common S-norms in loops of their own, which vectorise)."""
-    if kind == MAXIMUM:
+    """a ← S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
+    if kind == 0:
         for k in range(a.shape[0]):
-            a[k] = snorm(MAXIMUM, a[k], b[k])
-    elif kind == SUM:
+            a[k] = snorm(0, a[k], b[k])
+    elif kind == 1:
         for k in range(a.shape[0]):
-            a[k] = snorm(SUM, a[k], b[k])
-    elif kind == ALGEBRAIC_SUM:
+            a[k] = snorm(1, a[k], b[k])
+    elif kind == 2:
         for k in range(a.shape[0]):
-            a[k] = snorm(ALGEBRAIC_SUM, a[k], b[k])
-    else:
+            a[k] = snorm(2, a[k], b[k])
+    elif kind == 3:
         for k in range(a.shape[0]):
-            a[k] = snorm(kind, a[k], b[k])
+            a[k] = snorm(3, a[k], b[k])
+    elif kind == 4:
+        for k in range(a.shape[0]):
+            a[k] = snorm(4, a[k], b[k])
+    elif kind == 5:
+        for k in range(a.shape[0]):
+            a[k] = snorm(5, a[k], b[k])
+    elif kind == 6:
+        for k in range(a.shape[0]):
+            a[k] = snorm(6, a[k], b[k])
+    elif kind == 7:
+        for k in range(a.shape[0]):
+            a[k] = snorm(7, a[k], b[k])
+    elif kind == 8:
+        for k in range(a.shape[0]):
+            a[k] = snorm(8, a[k], b[k])
 
 
 @jit
@@ -202,7 +228,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu, area = np.empty(size), np.empty(size)
+    mu, scratch, area = np.empty(size), np.empty(size), np.empty(size)
     for n in range(degrees.shape[1]):
         for u in range(n_units):
             w[u] = -np.inf
@@ -228,12 +254,11 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
             if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
                 for k in range(m.shape[0]):  # no NaN can occur: plain max / min
                     m[k] = max(m[k], min(wu, shape[k]))
-            elif bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == PRODUCT:
-                for k in range(m.shape[0]):
-                    m[k] = max(m[k], wu * shape[k])
             else:
-                for k in range(m.shape[0]):
-                    m[k] = snorm(aggregation, m[k], tnorm(imp, wu, shape[k]))
+                implied = scratch[first:end]
+                implied[:] = wu
+                tnorm_into(imp, implied, shape)
+                snorm_into(aggregation, m, implied)
         out[n] = _reduce(reduction, mu, x, area, lo, max(lo, hi))
 
 
