@@ -11,7 +11,9 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
   sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum);
 - :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
-  combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``);
+  combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``), with
+  :func:`affine` values z of constant and linear terms (:func:`weighted_affine`: all three by
+  chunks of rows);
 - :func:`finish` — ``lock-previous``, ``default`` and ``lock-range`` of an output.
 
 The norms are fuzzylite 8's (thesis §II.3), NaN-propagating as NumPy's ``maximum`` /
@@ -29,6 +31,7 @@ from fuzzynav.kernels.compile import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
+CHUNK = 512  # rows of a batch whose rule degrees are computed together
 MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
 
 
@@ -143,24 +146,28 @@ def snorm_into(kind, a, b):
 @jit
 def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
     """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
-    ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N)."""
+    ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N). Rows go
+    by chunks that stay in cache."""
     n = table.shape[1]
-    stack = np.empty((max(1, program.shape[0]), n))
-    for r in range(starts.shape[0] - 1):
-        top = 0
-        for i in range(starts[r], starts[r + 1]):
-            code = program[i]
-            if code >= 0:
-                stack[top] = table[code]
-                top += 1
-                continue
-            top -= 1
-            if code == AND:
-                tnorm_into(conjunction, stack[top - 1], stack[top])
-            else:
-                snorm_into(disjunction, stack[top - 1], stack[top])
-        for k in range(n):
-            out[r, k] = weights[r] * stack[0, k]
+    stack = np.empty((max(1, program.shape[0]), CHUNK))
+    for lo in range(0, n, CHUNK):
+        size = min(n, lo + CHUNK) - lo
+        for r in range(starts.shape[0] - 1):
+            top = 0
+            for i in range(starts[r], starts[r + 1]):
+                code = program[i]
+                if code >= 0:
+                    stack[top, :size] = table[code, lo:lo + size]
+                    top += 1
+                    continue
+                top -= 1
+                if code == AND:
+                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size])
+                else:
+                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size])
+            degree, weight, first = out[r, lo:lo + size], weights[r], stack[0, :size]
+            for k in range(size):
+                degree[k] = weight * first[k]
 
 
 @jit
@@ -267,14 +274,13 @@ def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, 
     """Per term group g and row n: ``degree[g, n]`` the S-norm ``aggregation`` folded over its
     activations' degrees in order (``opens[a]``: a is the group's first; 0 where not triggered),
     ``present[g, n]`` whether any triggered (``masked`` False: every activation triggers)."""
-    v = np.empty(degrees.shape[1])
+    zeroed = np.empty(degrees.shape[1])
     for a in range(rows.shape[0]):
-        g = groups[a]
-        v[:] = degrees[rows[a]]
+        g, v = groups[a], degrees[rows[a]]
         if masked:
             for n in range(v.shape[0]):
-                if not triggered[a, n]:
-                    v[n] = 0.0
+                zeroed[n] = v[n] if triggered[a, n] else 0.0
+            v = zeroed
         if opens[a]:
             degree[g] = v
             if masked:
@@ -317,6 +323,23 @@ def affine(coefficients, constants, inputs, z):
             c, x = coefficients[g, i], inputs[i]
             for n in range(z.shape[1]):
                 z[g, n] += c * x[n]
+
+
+@jit
+def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation, coefficients, constants, inputs,
+                    weighted_sum, out):
+    """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
+    cache: a weighted output whose terms are all constant or linear."""
+    n_groups, n = coefficients.shape[0], out.shape[0]
+    degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)
+    z = np.empty((n_groups, CHUNK))
+    for lo in range(0, n, CHUNK):
+        hi = min(n, lo + CHUNK)
+        size = hi - lo
+        group(degrees[:, lo:hi], rows, groups, opens, triggered[:, lo:hi] if masked else triggered, masked,
+              aggregation, degree[:, :size], present[:, :size])
+        affine(coefficients, constants, inputs[:, lo:hi], z[:, :size])
+        weighted_average(degree[:, :size], present[:, :size], z[:, :size], weighted_sum, out[lo:hi])
 
 
 @jit

@@ -59,20 +59,28 @@ class Activations(NamedTuple):
 _EVERY_ROW = np.ones((0, 0), dtype=bool)  # a "triggered" array the kernels never read
 
 
-def group(var: OutputVariable, acts: Activations) -> tuple[list, np.ndarray, np.ndarray]:
-    """Term labels in order of first activation, their degrees (n_terms, N) folded with the
-    output's S-norm (or summed), and where each was triggered at all (n_terms, N)."""
+def _groups(var: OutputVariable, acts: Activations) -> tuple:
+    """Term labels in order of first activation, and the arguments of the compiled grouping."""
     from fuzzynav.fuzzy.engine import compiled
 
     labels = list(dict.fromkeys(acts.labels))
     index = {label: g for g, label in enumerate(labels)}
     groups = np.array([index[label] for label in acts.labels], dtype=np.int64)
     opens = np.array([acts.labels.index(label) == a for a, label in enumerate(acts.labels)], dtype=bool)
+    masked = acts.triggered is not None
+    return labels, (acts.degrees, acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
+                    SNORMS.index(var.aggregation or "UnboundedSum"))
+
+
+def group(var: OutputVariable, acts: Activations) -> tuple[list, np.ndarray, np.ndarray]:
+    """Term labels in order of first activation, their degrees (n_terms, N) folded with the
+    output's S-norm (or summed), and where each was triggered at all (n_terms, N)."""
+    from fuzzynav.fuzzy.engine import compiled
+
+    labels, args = _groups(var, acts)
     n = acts.degrees.shape[1]
     degree, present = np.empty((len(labels), n)), np.empty((len(labels), n), dtype=bool)
-    masked = acts.triggered is not None
-    compiled.group(acts.degrees, acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
-                   SNORMS.index(var.aggregation or "UnboundedSum"), degree, present)
+    compiled.group(*args, degree, present)
     return labels, degree, present
 
 
@@ -84,16 +92,18 @@ def weighted(var: OutputVariable, acts: Activations, inputs: np.ndarray, values:
     n = inputs.shape[1]
     if not acts.labels:
         return np.full(n, np.nan)
-    kind = var.defuzzifier.type
-    labels, degrees, present = group(var, acts)
+    kind, out = var.defuzzifier.type, np.empty(n)
+    weighted_sum = var.defuzzifier.kind == "WeightedSum"
+    labels = list(dict.fromkeys(acts.labels))
     mfs = [var.terms[label] for label in labels]
     if kind != "Tsukamoto" and all(isinstance(mf, (Constant, Singleton, Linear)) for mf in mfs):
-        z = _affine(mfs, inputs)
-    else:
-        z = np.stack([np.broadcast_to(_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)), (n,))
-                      for mf, d in zip(mfs, degrees)])
-    out = np.empty(n)
-    compiled.weighted_average(degrees, present, z, var.defuzzifier.kind == "WeightedSum", out)
+        _, args = _groups(var, acts)
+        compiled.weighted_affine(*args, *_affine_terms(mfs, inputs.shape[0]), inputs, weighted_sum, out)
+        return out
+    labels, degrees, present = group(var, acts)
+    z = np.stack([np.broadcast_to(_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)), (n,))
+                  for mf, d in zip(mfs, degrees)])
+    compiled.weighted_average(degrees, present, z, weighted_sum, out)
     return out
 
 
@@ -102,19 +112,24 @@ def _tsukamoto(mf, kind: str) -> bool:
     return kind == "Tsukamoto" or (kind == "Automatic" and not is_takagi_sugeno(mf) and hasattr(base, "inverse"))
 
 
-def _affine(mfs: list, inputs: np.ndarray) -> np.ndarray:
-    """Values of constant and linear terms on every row: (n_terms, N)."""
-    from fuzzynav.fuzzy.engine import compiled
-
-    coef = np.zeros((len(mfs), inputs.shape[0]))
+def _affine_terms(mfs: list, n_inputs: int) -> tuple[np.ndarray, np.ndarray]:
+    """Coefficients (n_terms, n_inputs) and constants (n_terms,) of constant and linear terms."""
+    coef = np.zeros((len(mfs), n_inputs))
     const = np.empty(len(mfs))
     for k, mf in enumerate(mfs):
         if isinstance(mf, Linear):
             coef[k], const[k] = mf.coefficients, mf.constant
         else:
             const[k] = mf.params()[0]
+    return coef, const
+
+
+def _affine(mfs: list, inputs: np.ndarray) -> np.ndarray:
+    """Values of constant and linear terms on every row: (n_terms, N)."""
+    from fuzzynav.fuzzy.engine import compiled
+
     z = np.empty((len(mfs), inputs.shape[1]))
-    compiled.affine(coef, const, inputs, z)
+    compiled.affine(*_affine_terms(mfs, inputs.shape[0]), inputs, z)
     return z
 
 
