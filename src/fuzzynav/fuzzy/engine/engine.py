@@ -11,8 +11,9 @@ A premise on an output variable reads the degree its term has accumulated so far
 system). ``Function`` terms read the current value of every variable (outputs not yet
 defuzzified read NaN, the state of a fresh engine). Each call is independent: ``lock_previous``
 carries a value from one *row* of the batch to the next, as fuzzylite's vectorised engine does,
-starting from NaN. NaN inputs propagate (fuzzylite's behaviour); everything is NumPy over the
-batch, one membership evaluation per (input, term).
+starting from NaN. NaN inputs propagate (fuzzylite's behaviour). Terms and hedges are evaluated
+in NumPy over the batch, once per proposition; rules, aggregation and defuzzification run
+compiled over the rows (:mod:`fuzzynav.fuzzy.engine.compiled`, numba, imported on first use).
 """
 
 from __future__ import annotations
