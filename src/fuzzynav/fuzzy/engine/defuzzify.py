@@ -63,10 +63,13 @@ def _groups(var: OutputVariable, acts: Activations) -> tuple:
     """Term labels in order of first activation, and the arguments of the compiled grouping."""
     from fuzzynav.fuzzy.engine import compiled
 
-    labels = list(dict.fromkeys(acts.labels))
-    index = {label: g for g, label in enumerate(labels)}
+    index: dict = {}
+    opens = np.zeros(len(acts.labels), dtype=bool)
+    for a, label in enumerate(acts.labels):
+        if label not in index:
+            index[label], opens[a] = len(index), True
+    labels = list(index)
     groups = np.array([index[label] for label in acts.labels], dtype=np.int64)
-    opens = np.array([acts.labels.index(label) == a for a, label in enumerate(acts.labels)], dtype=bool)
     masked = acts.triggered is not None
     return labels, (acts.degrees, acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
                     SNORMS.index(var.aggregation or "UnboundedSum"))
@@ -167,12 +170,12 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
         degrees, rows = np.where(acts.triggered, degrees[rows], 0.0), np.arange(len(rows), dtype=np.int64)
     keys = list(zip(acts.labels, acts.implications))
     if var.aggregation == "Maximum":
-        unique = list(dict.fromkeys(keys))
-        units = np.array([unique.index(key) for key in keys], dtype=np.int64)
+        index = {key: u for u, key in enumerate(dict.fromkeys(keys))}
+        unique, units = list(index), np.array([index[key] for key in keys], dtype=np.int64)
     else:
         unique, units = keys, np.arange(len(keys), dtype=np.int64)
-    labels = list(var.terms)
-    unit_term = np.array([labels.index(label) for label, _ in unique], dtype=np.int64)
+    terms = {label: t for t, label in enumerate(var.terms)}
+    unit_term = np.array([terms[label] for label, _ in unique], dtype=np.int64)
     unit_implication = np.array([TNORMS.index(implication) for _, implication in unique], dtype=np.int64)
     out = np.empty(n)
     compiled.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,

@@ -254,11 +254,11 @@ class _State:
             if key not in self.memo:
                 mf = var.terms[node.term]
                 x = self.values[node.variable]
-                self.memo[key] = mf(x, self.values) if isinstance(mf, Function) else np.broadcast_to(mf(x), x.shape)
+                self.memo[key] = mf(x, self.values) if isinstance(mf, Function) else mf(x)
             result = self.memo[key]
         for hedge in reversed(node.hedges):
             result = HEDGES[hedge](result)
-        return np.broadcast_to(result, (self.n,))
+        return result if np.shape(result) == (self.n,) else np.broadcast_to(result, (self.n,))
 
     def accumulated(self, var: OutputVariable, label: str) -> np.ndarray:
         """Degree the term ``label`` of ``var`` has accumulated so far (0 where never triggered)."""
