@@ -31,7 +31,7 @@ from fuzzynav.kernels.compile import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
-CHUNK = 512  # rows of a batch whose rule degrees are computed together
+CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
 MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
 
 
