@@ -1,4 +1,5 @@
-"""T-norms, S-norms and hedges by their fuzzylite names, vectorised (thesis §II.3; fuzzylite 8).
+"""T-norm and S-norm names (computed, compiled, by :mod:`fuzzynav.fuzzy.engine.compiled`), hedges
+and activation methods, vectorised (thesis §II.3; fuzzylite 8).
 
 T-norms (conjunction, implication): AlgebraicProduct, BoundedDifference, DrasticProduct,
 EinsteinProduct, HamacherProduct, Minimum, NilpotentMinimum. S-norms (disjunction,
@@ -12,41 +13,15 @@ from __future__ import annotations
 import numpy as np
 
 
-def _hamacher_product(a, b):
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(a + b != 0.0, (a * b) / (a + b - a * b), 0.0)
-
-
-def _hamacher_sum(a, b):
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(a * b != 1.0, (a + b - 2.0 * a * b) / (1.0 - a * b), 1.0)
-
-
 def _seldom(x):
     with np.errstate(invalid="ignore"):
         return np.where(x <= 0.5, np.sqrt(0.5 * x), 1.0 - np.sqrt(0.5 * (1.0 - x)))
 
 
-TNORMS = {
-    "AlgebraicProduct": lambda a, b: a * b,
-    "BoundedDifference": lambda a, b: np.maximum(0.0, a + b - 1.0),
-    "DrasticProduct": lambda a, b: np.where(np.maximum(a, b) == 1.0, np.minimum(a, b), 0.0),
-    "EinsteinProduct": lambda a, b: (a * b) / (2.0 - (a + b - a * b)),
-    "HamacherProduct": _hamacher_product,
-    "Minimum": np.minimum,
-    "NilpotentMinimum": lambda a, b: np.where(a + b > 1.0, np.minimum(a, b), 0.0),
-}
-SNORMS = {
-    "AlgebraicSum": lambda a, b: a + b - a * b,
-    "BoundedSum": lambda a, b: np.minimum(1.0, a + b),
-    "DrasticSum": lambda a, b: np.where(np.minimum(a, b) == 0.0, np.maximum(a, b), 1.0),
-    "EinsteinSum": lambda a, b: (a + b) / (1.0 + a * b),
-    "HamacherSum": _hamacher_sum,
-    "Maximum": np.maximum,
-    "NilpotentMaximum": lambda a, b: np.where(a + b < 1.0, np.maximum(a, b), 1.0),
-    "NormalizedSum": lambda a, b: (a + b) / np.maximum(1.0, a + b),
-    "UnboundedSum": lambda a, b: a + b,
-}
+TNORMS = ("AlgebraicProduct", "BoundedDifference", "DrasticProduct", "EinsteinProduct", "HamacherProduct", "Minimum",
+          "NilpotentMinimum")  # computed by fuzzynav.fuzzy.engine.compiled.tnorm
+SNORMS = ("AlgebraicSum", "BoundedSum", "DrasticSum", "EinsteinSum", "HamacherSum", "Maximum", "NilpotentMaximum",
+          "NormalizedSum", "UnboundedSum")  # computed by fuzzynav.fuzzy.engine.compiled.snorm
 HEDGES = {
     "not": lambda x: 1.0 - x,
     "very": lambda x: x * x,

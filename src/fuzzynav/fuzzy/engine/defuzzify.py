@@ -3,8 +3,8 @@
 Integral defuzzifiers sample the aggregated set on ``resolution`` midpoints of the output range
 (or, as MATLAB does, on ``resolution`` points from end to end): centroid Σyμ/Σμ; bisector, the
 sample where the running area is closest to half (averaged over ties); mean / smallest / largest
-of the samples of maximum membership. Weighted defuzzifiers
-group the activations by term (aggregated with the output's S-norm, or summed when it has none)
+of the samples of maximum membership (the sampling and the reductions compiled, in
+:mod:`fuzzynav.fuzzy.engine.compiled`). Weighted defuzzifiers group the activations by term (aggregated with the output's S-norm, or summed when it has none)
 and average (``WeightedAverage``) or sum (``WeightedSum``) the terms' crisp values: a constant's
 value, a linear term on the input values, a function of the degree, or — ``Tsukamoto`` — the
 abscissa where a monotone term reaches the degree.
@@ -12,16 +12,15 @@ abscissa where a monotone term reaches the degree.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-from fuzzynav.fuzzy.engine.level_sets import LevelSetCentroid
 from fuzzynav.fuzzy.engine.model import OutputVariable
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.fuzzy.terms import Constant, Scaled
-
-_BLOCK = 2_000_000  # elements of a (rows × samples) block of an integral defuzzifier
 
 
 def midpoints(lo: float, hi: float, resolution: int) -> np.ndarray:
@@ -35,13 +34,8 @@ def is_takagi_sugeno(mf) -> bool:
 
 
 def _crisp(mf, degree, inputs: np.ndarray, values: dict, tsukamoto: bool) -> np.ndarray:
-    if isinstance(mf, (Constant, Singleton)):
-        return np.full_like(degree, mf.params()[0])
-    if isinstance(mf, Linear):  # a sum of columns: faster than a (N, n) @ (n,) product for few inputs
-        z = np.full(inputs.shape[1], mf.constant)
-        for c, column in zip(mf.coefficients, inputs):
-            z += c * column
-        return z
+    if isinstance(mf, (Constant, Singleton, Linear)):
+        return _affine([mf], inputs)[0]
     if isinstance(mf, Function):
         return mf(degree, values)
     if tsukamoto:
@@ -50,36 +44,70 @@ def _crisp(mf, degree, inputs: np.ndarray, values: dict, tsukamoto: bool) -> np.
     return mf(degree)
 
 
-def weighted(var: OutputVariable, groups: dict, inputs: np.ndarray, values: dict) -> np.ndarray:
-    """Weighted average / sum over the activated terms; ``groups[label] = (degree, present)``
-    (``present`` None: everywhere); ``inputs`` holds the input values as rows (n_inputs, N)."""
+class Activations(NamedTuple):
+    """An output's activations in order: activation a has degree ``degrees[rows[a]]`` (N,) on the
+    term ``labels[a]``, with the T-norm ``implications[a]``; ``triggered`` (A, N) where not
+    every row triggers, else None."""
+
+    degrees: np.ndarray
+    rows: np.ndarray
+    labels: list
+    implications: list
+    triggered: np.ndarray | None
+
+
+_EVERY_ROW = np.ones((0, 0), dtype=bool)  # a "triggered" array the kernels never read
+
+
+def _groups(var: OutputVariable, acts: Activations) -> tuple:
+    """Term labels in order of first activation, and the arguments of the compiled grouping."""
+    from fuzzynav.fuzzy.engine import compiled
+
+    index: dict = {}
+    opens = np.zeros(len(acts.labels), dtype=bool)
+    for a, label in enumerate(acts.labels):
+        if label not in index:
+            index[label], opens[a] = len(index), True
+    labels = list(index)
+    groups = np.array([index[label] for label in acts.labels], dtype=np.int64)
+    masked = acts.triggered is not None
+    return labels, (acts.degrees, acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
+                    SNORMS.index(var.aggregation or "UnboundedSum"))
+
+
+def group(var: OutputVariable, acts: Activations) -> tuple[list, np.ndarray, np.ndarray]:
+    """Term labels in order of first activation, their degrees (n_terms, N) folded with the
+    output's S-norm (or summed), and where each was triggered at all (n_terms, N)."""
+    from fuzzynav.fuzzy.engine import compiled
+
+    labels, args = _groups(var, acts)
+    n = acts.degrees.shape[1]
+    degree, present = np.empty((len(labels), n)), np.empty((len(labels), n), dtype=bool)
+    compiled.group(*args, degree, present)
+    return labels, degree, present
+
+
+def weighted(var: OutputVariable, acts: Activations, inputs: np.ndarray, values: dict) -> np.ndarray:
+    """Weighted average / sum over the activated terms; ``inputs`` holds the input values as rows
+    (n_inputs, N)."""
+    from fuzzynav.fuzzy.engine import compiled
+
     n = inputs.shape[1]
-    if not groups:
+    if not acts.labels:
         return np.full(n, np.nan)
-    kind = var.defuzzifier.type
-    labels = list(groups)
-    degrees = np.stack([groups[label][0] for label in labels])  # (n_groups, N)
-    masks = [groups[label][1] for label in labels]
+    kind, out = var.defuzzifier.type, np.empty(n)
+    weighted_sum = var.defuzzifier.kind == "WeightedSum"
+    labels = list(dict.fromkeys(acts.labels))
     mfs = [var.terms[label] for label in labels]
     if kind != "Tsukamoto" and all(isinstance(mf, (Constant, Singleton, Linear)) for mf in mfs):
-        z = _affine(mfs, inputs)
-    else:
-        z = np.stack([_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)) for mf, d in zip(mfs, degrees)])
-    with np.errstate(invalid="ignore"):
-        terms = degrees * z
-    if any(m is not None for m in masks):
-        present = np.stack([np.ones(n, dtype=bool) if m is None else m for m in masks])
-        terms = np.where(present, terms, 0.0)
-        degrees = np.where(present, degrees, 0.0)
-        any_present = present.any(axis=0)
-    else:
-        any_present = True
-    num, den = terms.sum(axis=0), degrees.sum(axis=0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        y = num / den
-        if var.defuzzifier.kind == "WeightedSum":
-            y = y * den
-    return np.where(any_present, y, np.nan)
+        _, args = _groups(var, acts)
+        compiled.weighted_affine(*args, *_affine_terms(mfs, inputs.shape[0]), inputs, weighted_sum, out)
+        return out
+    labels, degrees, present = group(var, acts)
+    z = np.stack([np.broadcast_to(_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)), (n,))
+                  for mf, d in zip(mfs, degrees)])
+    compiled.weighted_average(degrees, present, z, weighted_sum, out)
+    return out
 
 
 def _tsukamoto(mf, kind: str) -> bool:
@@ -87,104 +115,70 @@ def _tsukamoto(mf, kind: str) -> bool:
     return kind == "Tsukamoto" or (kind == "Automatic" and not is_takagi_sugeno(mf) and hasattr(base, "inverse"))
 
 
-def _affine(mfs: list, inputs: np.ndarray) -> np.ndarray:
-    """Crisp values of constant and linear terms at once: (n_terms, N) = C (n_terms, n_in) @ inputs + c."""
-    coef = np.zeros((len(mfs), inputs.shape[0]))
+def _affine_terms(mfs: list, n_inputs: int) -> tuple[np.ndarray, np.ndarray]:
+    """Coefficients (n_terms, n_inputs) and constants (n_terms,) of constant and linear terms."""
+    coef = np.zeros((len(mfs), n_inputs))
     const = np.empty(len(mfs))
     for k, mf in enumerate(mfs):
         if isinstance(mf, Linear):
             coef[k], const[k] = mf.coefficients, mf.constant
         else:
             const[k] = mf.params()[0]
-    return coef @ inputs + const[:, None]
+    return coef, const
 
 
-def aggregated(var: OutputVariable, activations: list, samples: np.ndarray, rows: slice) -> np.ndarray:
-    """The aggregated fuzzy output sampled at ``samples``, for the rows ``rows``: (n_rows, R).
+def _affine(mfs: list, inputs: np.ndarray) -> np.ndarray:
+    """Values of constant and linear terms on every row: (n_terms, N)."""
+    from fuzzynav.fuzzy.engine import compiled
 
-    ``activations`` lists (label, degree, triggered, implication) in trigger order. With the
-    ``Maximum`` aggregation the degrees of one term are combined first (max_r T(w_r, μ) =
-    T(max_r w_r, μ) for any T-norm, which is monotone), otherwise every activation is folded
-    in order, as fuzzylite does.
-    """
-    snorm = SNORMS[var.aggregation or "UnboundedSum"]
-    shapes = {}
-    first = activations[0][1][rows]
-    agg = np.zeros((first.shape[0], samples.shape[0]))
-    if var.aggregation == "Maximum":
-        grouped: dict = {}
-        for label, degree, triggered, implication in activations:
-            w = degree[rows] if triggered is None else np.where(triggered[rows], degree[rows], 0.0)
-            key = (label, implication)
-            grouped[key] = w if key not in grouped else np.maximum(grouped[key], w)
-        items = [(label, w, implication) for (label, implication), w in grouped.items()]
-    else:
-        items = [(label, d[rows] if t is None else np.where(t[rows], d[rows], 0.0), imp)
-                 for label, d, t, imp in activations]
-    for label, w, implication in items:
-        if label not in shapes:
-            shapes[label] = var.terms[label](samples)
-        implied = TNORMS[implication](w[:, None], shapes[label][None, :])
-        agg = snorm(agg, implied)
-    return agg
+    z = np.empty((len(mfs), inputs.shape[1]))
+    compiled.affine(*_affine_terms(mfs, inputs.shape[0]), inputs, z)
+    return z
 
 
-def _max_min_degrees(activations: list) -> tuple[list, np.ndarray]:
-    """Term labels and their degrees (N, T), max-aggregated over the rules concluding on them."""
-    grouped: dict = {}
-    for label, degree, triggered, _ in activations:
-        w = degree if triggered is None else np.where(triggered, degree, 0.0)
-        grouped[label] = w if label not in grouped else np.maximum(grouped[label], w)
-    return list(grouped), np.column_stack(list(grouped.values()))
-
-
-def integral(var: OutputVariable, activations: list, n: int, cache: dict | None = None) -> np.ndarray:
-    """Centroid, bisector or mean / smallest / largest of maximum, row blocks of bounded size.
-
-    A max–min centroid runs on :class:`~fuzzynav.fuzzy.engine.level_sets.LevelSetCentroid`
-    (exact, O(log R) per row and term), kept in ``cache`` between calls.
-    """
+def sampled(var: OutputVariable) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The terms of an integral output sampled at its defuzzifier's points: (shapes (T, R),
+    support (T, 2), points (R,)), ``support[t]`` the first and past-the-last non-zero sample of
+    term t, or (-1, R) when a sample is not in [0, 1]."""
     d = var.defuzzifier
-    if d.grid == "linspace":
-        samples = np.linspace(var.minimum, var.maximum, d.resolution)
+    x = np.linspace(var.minimum, var.maximum, d.resolution) if d.grid == "linspace" else \
+        midpoints(var.minimum, var.maximum, d.resolution)
+    shapes = np.empty((len(var.terms), x.shape[0]))
+    support = np.empty((len(var.terms), 2), dtype=np.int64)
+    for t, mf in enumerate(var.terms.values()):
+        with np.errstate(all="ignore"):
+            shapes[t] = np.broadcast_to(np.asarray(mf(x), dtype=float), x.shape)
+        nonzero = np.flatnonzero(shapes[t])
+        if not ((shapes[t] >= 0) & (shapes[t] <= 1)).all():
+            support[t] = (-1, x.shape[0])
+        else:
+            support[t] = (nonzero[0], nonzero[-1] + 1) if nonzero.size else (0, 0)
+    return shapes, support, x
+
+
+def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: int) -> np.ndarray:
+    """Centroid, bisector or mean / smallest / largest of maximum for every row, on the terms
+    ``sampled_terms`` (:func:`sampled`); NaN where the aggregated set is empty. With the
+    ``Maximum`` aggregation the activations of one term and implication max-combine first
+    (max_r T(w_r, μ) = T(max_r w_r, μ)); otherwise every activation is folded in order, as
+    fuzzylite does."""
+    from fuzzynav.fuzzy.engine import compiled
+
+    shapes, support, x = sampled_terms
+    degrees, rows = acts.degrees, acts.rows
+    if acts.triggered is not None:  # a rule that does not trigger adds nothing
+        degrees, rows = np.where(acts.triggered, degrees[rows], 0.0), np.arange(len(rows), dtype=np.int64)
+    keys = list(zip(acts.labels, acts.implications))
+    if var.aggregation == "Maximum":
+        index = {key: u for u, key in enumerate(dict.fromkeys(keys))}
+        unique, units = list(index), np.array([index[key] for key in keys], dtype=np.int64)
     else:
-        samples = midpoints(var.minimum, var.maximum, d.resolution)
-    out = np.full(n, np.nan)
-    if not activations:
-        return out
-    if (d.kind == "Centroid" and var.aggregation == "Maximum" and cache is not None
-            and all(implication == "Minimum" for *_, implication in activations)):
-        labels, degrees = _max_min_degrees(activations)
-        key = (var.name, tuple(labels))
-        if key not in cache:
-            shapes = np.array([np.broadcast_to(var.terms[label](samples), samples.shape) for label in labels])
-            cache[key] = LevelSetCentroid(shapes, samples) if LevelSetCentroid.applies(shapes) else None
-        if cache[key] is not None and not np.isnan(degrees).any():
-            return cache[key].centroid(degrees)
-    step = max(1, _BLOCK // samples.shape[0])
-    for start in range(0, n, step):
-        rows = slice(start, min(n, start + step))
-        mu = aggregated(var, activations, samples, rows)
-        out[rows] = _reduce(d.kind, mu, samples)
+        unique, units = keys, np.arange(len(keys), dtype=np.int64)
+    terms = {label: t for t, label in enumerate(var.terms)}
+    unit_term = np.array([terms[label] for label, _ in unique], dtype=np.int64)
+    unit_implication = np.array([TNORMS.index(implication) for _, implication in unique], dtype=np.int64)
+    out = np.empty(n)
+    compiled.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,
+                      SNORMS.index(var.aggregation or "UnboundedSum"), compiled.REDUCTIONS.index(var.defuzzifier.kind),
+                      out)
     return out
-
-
-def _reduce(kind: str, mu: np.ndarray, x: np.ndarray) -> np.ndarray:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        if kind == "Centroid":
-            return (mu @ x) / mu.sum(axis=1)
-        if kind == "Bisector":
-            area = np.nancumsum(mu, axis=1)
-            gap = np.abs(area / area[:, -1:] - 0.5)
-            ties = gap == np.min(gap, axis=1, keepdims=True)
-            count = ties.sum(axis=1)
-            return np.where(count > 0, (ties * x).sum(axis=1) / np.where(count > 0, count, 1), np.nan)
-        top = (mu > 0) & (mu == mu.max(axis=1, keepdims=True))
-        count = top.sum(axis=1)
-        if kind == "MeanOfMaximum":
-            value = (top * x).sum(axis=1) / np.where(count > 0, count, 1)
-        elif kind == "SmallestOfMaximum":
-            value = x[np.argmax(top, axis=1)]
-        else:  # LargestOfMaximum
-            value = x[x.shape[0] - 1 - np.argmax(top[:, ::-1], axis=1)]
-        return np.where(count > 0, value, np.nan)

@@ -11,8 +11,9 @@ A premise on an output variable reads the degree its term has accumulated so far
 system). ``Function`` terms read the current value of every variable (outputs not yet
 defuzzified read NaN, the state of a fresh engine). Each call is independent: ``lock_previous``
 carries a value from one *row* of the batch to the next, as fuzzylite's vectorised engine does,
-starting from NaN. NaN inputs propagate (fuzzylite's behaviour); everything is NumPy over the
-batch, one membership evaluation per (input, term).
+starting from NaN. NaN inputs propagate (fuzzylite's behaviour). Terms and hedges are evaluated
+in NumPy over the batch, once per proposition; rules, aggregation and defuzzification run
+compiled over the rows (:mod:`fuzzynav.fuzzy.engine.compiled`, numba, imported on first use).
 """
 
 from __future__ import annotations
@@ -44,8 +45,8 @@ class Engine(VariableNames):
         self.name = name
         self.description = description
         self._check()
-        self._flat = [_flatten(block, {v.name for v in self.inputs}) for block in self.blocks]
-        self._level_sets: dict = {}  # sorted level sets of max-min centroids, built on first use
+        self._programs = [_program(block, {v.name for v in self.outputs}) for block in self.blocks]
+        self._sampled: dict = {}  # integral outputs' terms sampled at their defuzzifier's points, on first use
 
     # ------------------------------------------------------------------ construction
     @property
@@ -127,23 +128,27 @@ class Engine(VariableNames):
 
     def evaluate(self, X) -> np.ndarray:
         """Outputs for a batch of inputs: X (N, n_in) -> (N, n_out), columns in ``output_names``."""
+        from fuzzynav.fuzzy.engine import compiled
+
         X = np.asarray(X, dtype=float)
         columns, values = self._values(X)
         n = X.shape[0]
         state = _State(self, values, n)
-        for block, flat in zip(self.blocks, self._flat):
-            if block.enabled:
-                state.run(block, flat)
+        for block, program in zip(self.blocks, self._programs):
+            if block.enabled and block.rules:
+                state.run(block, program)
         out = np.full((n, len(self.outputs)), np.nan)
         for k, var in enumerate(self.outputs):
             if not var.enabled or var.defuzzifier is None:
                 continue
-            acts = state.fuzzy[var.name]
+            acts = state.activations(var)
             if var.defuzzifier.integral:
-                y = defuzzify.integral(var, acts, n, self._level_sets)
+                if var.name not in self._sampled:
+                    self._sampled[var.name] = defuzzify.sampled(var)
+                y = defuzzify.integral(var, acts, self._sampled[var.name], n)
             else:
-                y = defuzzify.weighted(var, state.groups(var), columns, values)
-            y = _finish(var, y)
+                y = defuzzify.weighted(var, acts, columns, values)
+            compiled.finish(y, var.lock_previous, var.default, var.lock_range, var.minimum, var.maximum)
             values[var.name] = y
             out[:, k] = y
         return out
@@ -160,46 +165,34 @@ class Engine(VariableNames):
                 f"{len(self.blocks)} block(s), {len(self.rules)} rules)")
 
 
-def _flatten(block: RuleBlock, inputs: set):
-    """(literals, index (n_rules, k), operator, weights) when every rule of ``block`` joins
-    propositions on inputs by a single operator (the same one in every rule), else ``None``."""
-    def leaves(node, op):
+def _program(block: RuleBlock, outputs: set) -> tuple:
+    """(propositions, program, starts, weights, chained): every rule's antecedent in postfix over
+    the block's distinct propositions (see :func:`~fuzzynav.fuzzy.engine.compiled.rule_degrees`);
+    ``chained`` when a premise reads an output."""
+    from_codes = {"and": -1, "or": -2}  # compiled.AND, compiled.OR
+    literals: dict = {}
+    program, starts = [], [0]
+
+    def emit(node):
         if isinstance(node, Proposition):
-            return [node], op
-        if op is not None and node.name != op:
-            return None, None
-        left, op = leaves(node.left, node.name)
-        right, op2 = leaves(node.right, node.name) if left is not None else (None, None)
-        return (left + right, node.name) if right is not None else (None, None)
-    literals, premises, block_op = {}, [], None
+            program.append(literals.setdefault(node, len(literals)))
+        else:
+            emit(node.left)
+            emit(node.right)
+            program.append(from_codes[node.name])
     for rule in block.rules:
-        props, op = leaves(rule.antecedent, block_op)
-        if props is None or any(p.variable not in inputs for p in props):
-            return None
-        block_op = op or block_op
-        premises.append([literals.setdefault(p, len(literals)) for p in props])
-    if not premises:
-        return None
-    width = max(len(p) for p in premises)
-    index = np.array([p + [len(literals)] * (width - len(p)) for p in premises], dtype=np.intp)
-    return list(literals), index, block_op, np.array([rule.weight for rule in block.rules])
-
-
-def _finish(var: OutputVariable, y: np.ndarray) -> np.ndarray:
-    """lock-previous (NaN -> the previous row's value), default (NaN -> default), lock-range (clip)."""
-    if var.lock_previous:
-        index = np.where(np.isnan(y), -1, np.arange(y.shape[0]))
-        np.maximum.accumulate(index, out=index)
-        y = np.where(index >= 0, y[np.maximum(index, 0)], np.nan)
-    if not np.isnan(var.default):
-        y = np.where(np.isnan(y), var.default, y)
-    if var.lock_range:
-        y = np.clip(y, var.minimum, var.maximum)
-    return y
+        emit(rule.antecedent)
+        starts.append(len(program))
+    chained = any(p.variable in outputs for p in literals)
+    return (list(literals), np.array(program, dtype=np.int64), np.array(starts, dtype=np.int64),
+            np.array([rule.weight for rule in block.rules], dtype=float), chained)
 
 
 class _State:
-    """The fuzzy outputs while rule blocks run: per output, (term, degree, triggered, implication)."""
+    """The fuzzy outputs while rule blocks run: per output, its activations in order, each
+    (term, degrees, row, triggered, implication) — the activation degree is ``degrees[row]``
+    (several activations share one array of rule degrees), ``triggered`` None where every row
+    triggers."""
 
     def __init__(self, engine: Engine, values: dict, n: int):
         self.vars = {v.name: v for v in engine.inputs + engine.outputs}
@@ -209,80 +202,79 @@ class _State:
         self.memo: dict = {}
         self.fuzzy: dict[str, list] = {v.name: [] for v in engine.outputs}
 
-    def run(self, block: RuleBlock, flat) -> None:
-        if block.activation == "General" and flat is not None:  # every rule at once: (n_rules, N)
-            for rule, degree in zip(block.rules, self.flat_degrees(block, *flat)):
-                self.trigger(rule, degree, None, block)
+    def run(self, block: RuleBlock, program) -> None:
+        literals, codes, starts, weights, chained = program
+        if block.activation == "General" and chained:  # rule by rule: a chained premise sees the rules before it
+            for r, rule in enumerate(block.rules):
+                self.trigger(rule, self.rule_degrees(block, literals, codes, starts[r:r + 2], weights[r:r + 1]), 0,
+                             None, block)
             return
-        if block.activation == "General":  # rule by rule: a chained premise sees the rules before it
-            for rule in block.rules:
-                self.trigger(rule, rule.weight * self.degree(rule.antecedent, block), None, block)
+        degrees = self.rule_degrees(block, literals, codes, starts, weights)  # (n_rules, N)
+        if block.activation == "General":
+            for r, rule in enumerate(block.rules):
+                self.trigger(rule, degrees, r, None, block)
             return
-        degrees = np.column_stack([rule.weight * self.degree(rule.antecedent, block) for rule in block.rules]) \
-            if block.rules else np.zeros((self.n, 0))
-        degrees, triggered = activate(block.activation, block.activation_params, degrees)
+        degrees, triggered = activate(block.activation, block.activation_params, degrees.T)
+        degrees, triggered = np.ascontiguousarray(degrees.T), np.ascontiguousarray(triggered.T)
         for r, rule in enumerate(block.rules):
-            self.trigger(rule, degrees[:, r], triggered[:, r], block)
+            self.trigger(rule, degrees, r, triggered[r], block)
 
-    def flat_degrees(self, block: RuleBlock, literals, index, op, weights) -> np.ndarray:
-        """Degrees of rules that each join their premises by one operator ``op``, all at once."""
-        rows = [self.degree(p, block) for p in literals]
-        rows.append(np.ones(self.n) if op != "or" else np.zeros(self.n))  # the neutral element pads short rules
-        table = np.stack(rows)
-        degrees = table[index[:, 0]]
-        if index.shape[1] > 1:
-            norm = TNORMS[block.conjunction] if op == "and" else SNORMS[block.disjunction]
-            for k in range(1, index.shape[1]):
-                degrees = norm(degrees, table[index[:, k]])
-        return degrees * weights[:, None] if (weights != 1.0).any() else degrees
+    def rule_degrees(self, block: RuleBlock, literals, codes, starts, weights) -> np.ndarray:
+        """Weighted antecedent degrees (n_rules, N) of the rules whose programs ``starts`` delimits."""
+        from fuzzynav.fuzzy.engine import compiled
 
-    def trigger(self, rule, degree, triggered, block: RuleBlock) -> None:
+        table = np.stack([self.degree(p) for p in literals]) if literals else np.empty((0, self.n))
+        out = np.empty((len(starts) - 1, self.n))
+        conjunction = TNORMS.index(block.conjunction) if block.conjunction else -1
+        disjunction = SNORMS.index(block.disjunction) if block.disjunction else -1
+        compiled.rule_degrees(table, codes, starts, weights, conjunction, disjunction, out)
+        return out
+
+    def trigger(self, rule, degrees: np.ndarray, row: int, triggered, block: RuleBlock) -> None:
         for conclusion in rule.conclusions:
-            for hedge in reversed(conclusion.hedges):  # fuzzylite carries the hedged degree to the next conclusion
-                degree = HEDGES[hedge](degree)
+            if conclusion.hedges:  # fuzzylite carries the hedged degree to the next conclusion
+                degree = degrees[row]
+                for hedge in reversed(conclusion.hedges):
+                    degree = HEDGES[hedge](degree)
+                degrees, row = np.asarray(degree, dtype=float)[None, :], 0
             if self.vars[conclusion.variable].enabled:
-                self.fuzzy[conclusion.variable].append((conclusion.term, degree, triggered, block.implication))
+                self.fuzzy[conclusion.variable].append((conclusion.term, degrees, row, triggered, block.implication))
 
-    def degree(self, node, block: RuleBlock) -> np.ndarray:
-        if isinstance(node, Operator):
-            left, right = self.degree(node.left, block), self.degree(node.right, block)
-            return (TNORMS[block.conjunction] if node.name == "and" else SNORMS[block.disjunction])(left, right)
+    def degree(self, node: Proposition) -> np.ndarray:
+        """Degree of a proposition (hedges applied) for every row."""
         var = self.vars[node.variable]
         if not var.enabled:
             return np.zeros(self.n)
         if node.term is None:  # ... is [hedges] any
             result = np.full(self.n, np.nan)
         elif node.variable in self.outputs:
-            result = self.grouped(var, node.term)[0]
+            result = self.accumulated(var, node.term)
         else:
             key = (node.variable, node.term)
             if key not in self.memo:
                 mf = var.terms[node.term]
                 x = self.values[node.variable]
-                self.memo[key] = mf(x, self.values) if isinstance(mf, Function) else np.broadcast_to(mf(x), x.shape)
+                self.memo[key] = mf(x, self.values) if isinstance(mf, Function) else mf(x)
             result = self.memo[key]
         for hedge in reversed(node.hedges):
             result = HEDGES[hedge](result)
-        return np.broadcast_to(result, (self.n,))
+        return result if np.shape(result) == (self.n,) else np.broadcast_to(result, (self.n,))
 
-    def grouped(self, var: OutputVariable, label: str) -> tuple[np.ndarray, np.ndarray | None]:
-        """Degree a term has accumulated (output's S-norm, or sum) and where it was triggered at all
-        (``None``: everywhere)."""
-        return self.groups(var, label).get(label, (np.zeros(self.n), np.zeros(self.n, dtype=bool)))
+    def accumulated(self, var: OutputVariable, label: str) -> np.ndarray:
+        """Degree the term ``label`` of ``var`` has accumulated so far (0 where never triggered)."""
+        acts = self.activations(var, label)
+        return defuzzify.group(var, acts)[1][0] if acts.labels else np.zeros(self.n)
 
-    def groups(self, var: OutputVariable, only: str | None = None) -> dict:
-        """``{term: (degree, present)}`` over the activations of ``var`` (of term ``only`` if given)."""
-        snorm = SNORMS[var.aggregation or "UnboundedSum"]
-        out: dict = {}
-        for term, d, triggered, _ in self.fuzzy[var.name]:
-            if only is not None and term != only:
-                continue
-            if triggered is not None:
-                d = np.where(triggered, d, 0.0)
-            if term not in out:
-                out[term] = (d, triggered)
-                continue
-            degree, present = out[term]
-            both = None if present is None or triggered is None else present | triggered
-            out[term] = (snorm(degree, d), both)
-        return out
+    def activations(self, var: OutputVariable, only: str | None = None) -> defuzzify.Activations:
+        """The activations of ``var`` (of its term ``only`` if given) as flat arrays."""
+        acts = [a for a in self.fuzzy[var.name] if only is None or a[0] == only]
+        if len({id(a[1]) for a in acts}) == 1:
+            degrees, rows = acts[0][1], [a[2] for a in acts]
+        else:
+            degrees = np.stack([a[1][a[2]] for a in acts]) if acts else np.empty((0, self.n))
+            rows = list(range(len(acts)))
+        triggered = None
+        if any(a[3] is not None for a in acts):
+            triggered = np.stack([np.ones(self.n, dtype=bool) if a[3] is None else a[3] for a in acts])
+        return defuzzify.Activations(degrees, np.array(rows, dtype=np.int64), [a[0] for a in acts],
+                                     [a[4] for a in acts], triggered)
