@@ -18,7 +18,7 @@ PACKAGE = SRC / "fuzzynav"
 # sits above fuzzynav.learn). Keep in step with the table of docs/ARCHITECTURE.md.
 LAYERS = {
     "fuzzynav.errors": 0, "fuzzynav.yaml_loader": 0, "fuzzynav.lookup": 0, "fuzzynav.storage": 0,
-    "fuzzynav.progress": 0,
+    "fuzzynav.progress": 0, "fuzzynav.jit": 0,
     "fuzzynav.fuzzy": 1,
     "fuzzynav.kernels": 2,
     "fuzzynav.robot": 3, "fuzzynav.world": 3,
@@ -31,7 +31,7 @@ LAYERS = {
     "fuzzynav.cli": 10, "fuzzynav.__main__": 10, "fuzzynav": 10,
 }
 # What kernels may use besides their own layer: the fuzzy library (and numpy / numba).
-ONLY = {"fuzzynav.kernels": {"fuzzynav.fuzzy", "fuzzynav.kernels", "fuzzynav.errors"}}
+ONLY = {"fuzzynav.kernels": {"fuzzynav.fuzzy", "fuzzynav.kernels", "fuzzynav.errors", "fuzzynav.jit"}}
 # Cycles between packages that are tolerated: none.
 ALLOWED_CYCLES: set[frozenset] = set()
 MODULE_NAME = re.compile(r"\bfuzzynav(?:\.\w+)+")

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.kernels.angles import wrap_formula
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 
 wrap = jit(wrap_formula)
 

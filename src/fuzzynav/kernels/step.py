@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from fuzzynav.kernels import navigators, scene
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
 

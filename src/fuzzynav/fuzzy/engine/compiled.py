@@ -1,6 +1,6 @@
 """The compiled part of :class:`~fuzzynav.fuzzy.engine.Engine`: rules, aggregation, defuzzification.
 
-Plain loops over the rows of a batch, compiled with numba (:func:`fuzzynav.kernels.compile.jit`;
+Plain loops over the rows of a batch, compiled with numba (:func:`fuzzynav.jit.jit`;
 ``NUMBA_DISABLE_JIT=1`` runs them as Python). The engine fuzzifies in NumPy (one vectorised
 evaluation per input term and hedge) and hands these kernels flat arrays:
 
@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
