@@ -1,0 +1,90 @@
+"""``astar-pp``: the **map-aware** reference — it is given the whole map, which no other
+navigator here has. Shortest path on the map inflated by the body (A*, Hart, Nilsson & Raphael
+1968, :func:`fuzzynav.world.planning.shortest_path`, with a cost for passing closer than
+``comfort`` to obstacles), followed with pure pursuit (R. C. Coulter, CMU-RI-TR-92-01, 1992).
+
+The planner runs once per world in :meth:`prepare` (the simulator calls it with the scenario
+before the episode) and is cached per world within the process, so several seeds on one world
+plan once. The planned disc is the body radius plus ``inflation``; the tracker aims at the path
+point ``lookahead`` metres beyond the robot's projection on the path (searched forward from the
+last one, so progress is monotonic) and drives at V_max · max(cos η, 0.25), η the bearing of
+that point. Without a path (the start cannot reach the goal on the inflated map) it stays put.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+
+import numpy as np
+
+from fuzzynav.control.base import Command, Controller
+from fuzzynav.control.classic.local_map import Body, positive
+from fuzzynav.world.planning import shortest_path
+
+
+@functools.lru_cache(maxsize=32)
+def _plan(key: str, radius: float, comfort: float, weight: float):
+    from fuzzynav.world.scenario import scenario_from_dict
+
+    scenario = scenario_from_dict(json.loads(key), robot_radius=0.0)
+    path = shortest_path(scenario.world, scenario.start, scenario.goal.position, radius, weight=weight, comfort=comfort)
+    return None if path is None else _densify(path, 0.1)
+
+
+def _densify(path: np.ndarray, step: float) -> np.ndarray:
+    """Points every ``step`` metres or less along the polyline ``path``."""
+    pieces = [path[:1]]
+    for a, b in zip(path[:-1], path[1:]):
+        k = max(1, int(math.ceil(np.hypot(*(b - a)) / step)))
+        pieces.append(a + np.linspace(0, 1, k + 1)[1:, None] * (b - a))
+    return np.vstack(pieces)
+
+
+class AStarPurePursuit(Controller):
+    """Map-aware A* + pure pursuit (module docstring). Options: robot ``radius``/``wheelbase``/
+    ``max_steering``/``max_speed``, ``inflation``, ``comfort`` (m), ``weight`` (clearance cost),
+    ``lookahead`` (m)."""
+
+    name = "astar-pp"
+    map_aware = True
+
+    def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
+                 max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
+                 inflation: float = 0.1, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 1.0):
+        self.body = Body(radius, wheelbase, max_steering, max_speed)
+        self.inflation, self.comfort, self.weight = float(inflation), float(comfort), float(weight)
+        self.lookahead = positive(lookahead, "lookahead")
+        self.path = None
+        self._index = 0
+
+    def prepare(self, scenario) -> None:
+        """Plan on ``scenario``'s map (goal tasks; other tasks are not planned for)."""
+        self.path = None
+        if scenario.goal is not None:
+            key = json.dumps(scenario.to_dict(), sort_keys=True)
+            self.path = _plan(key, self.body.radius + self.inflation, self.comfort, self.weight)
+        self._index = 0
+
+    def reset(self, rng=None) -> None:
+        self._index = 0
+
+    def act(self, obs) -> Command:
+        if self.path is None:
+            return Command(0.0, 0.0, "A*-no-path")
+        xy = np.asarray(obs.pose[:2], dtype=float)
+        ahead = self.path[self._index:self._index + 40]
+        self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
+        steps = np.hypot(*np.diff(self.path[self._index:], axis=0).T)
+        along = np.concatenate([[0.0], np.cumsum(steps)])
+        goal_point = self.path[self._index + min(int(np.searchsorted(along, self.lookahead)), len(along) - 1)]
+        dx, dy = goal_point - xy
+        bearing = math.remainder(math.atan2(dy, dx) - float(obs.pose[2]), math.tau)
+        steering = self.body.steer_towards(bearing, math.hypot(dx, dy))
+        return Command(steering, self.body.max_speed * max(math.cos(bearing), 0.25), "A*+PP")
+
+
+def make(**options) -> AStarPurePursuit:
+    """Factory of ``astar-pp`` (options: see :class:`AStarPurePursuit`)."""
+    return AStarPurePursuit(**options)
