@@ -24,6 +24,8 @@ COMMAND_MODULES: list[str] = [
     "reproduce",
     "fis",
     "evaluate",
+    "bench",
+    "importer",
 ]
 
 
