@@ -66,7 +66,12 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
             if not Path(spec).is_file():
                 raise InputError("no such model file", source=spec, field="--controllers")
             spec = str(Path(spec).resolve())
-        build_controller(spec)  # unknown names and bad model files fail before any run
+        try:  # unknown names and bad model files fail before any run
+            build_controller(spec)
+        except InputError as error:
+            if is_model_file(spec):
+                raise
+            raise InputError(error.problem, field="--controllers") from None
         pairs.append((Path(spec).stem if is_model_file(spec) else spec, spec))
     labels = [label for label, _ in pairs]
     if len(set(labels)) != len(labels):
