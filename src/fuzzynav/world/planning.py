@@ -29,8 +29,6 @@ from scipy.sparse import csgraph
 
 from fuzzynav.world.world import World
 
-CLEARANCE_CAP = 1.5  # m: clearances are exact up to here (the costs and radii used stay below)
-
 
 @dataclass(frozen=True)
 class Grid:
@@ -52,35 +50,41 @@ class Grid:
 
 
 def default_cell(world: World) -> float:
-    """Grid cell (m): 0.1 m, or 0.05 m for worlds with obstacles thinner than 0.3 m (BARN's posts)."""
-    sizes = [float(getattr(o, "radius", 1.0)) for o in world.obstacles if o.kind == "circle"]
-    sizes += [float(o.thickness) / 2 for o in world.obstacles if o.kind == "wall"]
-    return 0.05 if sizes and min(sizes) < 0.15 else 0.1
+    """Grid cell (m): 0.1 m, or 0.05 m among posts thinner than 0.3 m (BARN's), where the free
+    strips between posts are narrow. (A thin wall needs no finer cell: inflated by the robot's
+    radius it blocks a band wider than a cell's diagonal.)"""
+    radii = [float(o.radius) for o in world.obstacles if o.kind == "circle"]
+    return 0.05 if radii and min(radii) < 0.15 else 0.1
 
 
-def clearance_grid(world: World, cell: float, cap: float = CLEARANCE_CAP) -> np.ndarray:
-    """Clearance (m) of every cell centre ``(ny, nx)``: exact up to ``cap``, a lower bound ≥ ``cap``
-    beyond. Clearance is 1-Lipschitz, so it is first measured on cells 4× larger and only the fine
-    cells of coarse cells within ``cap`` + half a coarse diagonal are measured exactly."""
+def clearance_grid(world: World, cell: float, floor: float, cap: float) -> np.ndarray:
+    """Clearance (m) of every cell centre ``(ny, nx)``, exact where it lies in [``floor``, ``cap``]:
+    a cell below ``floor`` gets an upper bound (< ``floor``), one above ``cap`` a lower bound
+    (≥ ``cap``). Clearance is 1-Lipschitz, so it is first measured on cells 4× larger (within half
+    a coarse diagonal h of every fine cell) and only the fine cells whose coarse value c has
+    c + h ≥ ``floor`` and c − h < ``cap`` are measured exactly: a band along the obstacles' edges."""
     xs = np.arange(cell / 2, world.width, cell)
     ys = np.arange(cell / 2, world.height, cell)
     ny, nx = len(ys), len(xs)
     k = 4
-    coarse_c = (np.arange(-(-ny // k)) * k + (k - 1) / 2 + 0.5) * cell, (np.arange(-(-nx // k)) * k + (k - 1) / 2 + 0.5) * cell
-    cy, cx = np.meshgrid(*coarse_c, indexing="ij")
+    coarse_y = (np.arange(-(-ny // k)) * k + k / 2) * cell
+    coarse_x = (np.arange(-(-nx // k)) * k + k / 2) * cell
+    cy, cx = np.meshgrid(coarse_y, coarse_x, indexing="ij")
     coarse = world.clearance(np.column_stack([cx.ravel(), cy.ravel()])).reshape(cy.shape)
-    bound = np.repeat(np.repeat(coarse - k * cell / np.sqrt(2), k, axis=0), k, axis=1)[:ny, :nx]
-    result = bound.copy()
-    near = bound < cap
-    gy, gx = np.meshgrid(ys, xs, indexing="ij")
-    if near.any():
-        result[near] = world.clearance(np.column_stack([gx[near], gy[near]]))
+    coarse = np.repeat(np.repeat(coarse, k, axis=0), k, axis=1)[:ny, :nx]
+    h = k * cell / np.sqrt(2)
+    result = np.where(coarse + h < floor, coarse + h, coarse - h)
+    band = (coarse + h >= floor) & (coarse - h < cap)
+    if band.any():
+        rows, cols = np.nonzero(band)
+        result[band] = world.clearance(np.column_stack([xs[cols], ys[rows]]))
     return result
 
 
-def occupancy(world: World, radius: float, cell: float) -> Grid:
-    """The :class:`Grid` of ``world`` for a disc of ``radius`` (m)."""
-    clearance = clearance_grid(world, cell, max(CLEARANCE_CAP, radius + 0.5))
+def occupancy(world: World, radius: float, cell: float, cap: float | None = None) -> Grid:
+    """The :class:`Grid` of ``world`` for a disc of ``radius`` (m); clearances exact up to ``cap``
+    (default ``radius``: enough to tell free cells from blocked ones)."""
+    clearance = clearance_grid(world, cell, radius, radius if cap is None else max(cap, radius))
     return Grid(clearance >= radius, clearance, float(cell))
 
 
@@ -155,7 +159,8 @@ def shortest_path(world: World, start, goal, radius: float, *, cell: float | Non
     weight the path is shortened only where that keeps it at ``comfort`` from obstacles.
     """
     start, goal = np.asarray(start, dtype=float)[:2], np.asarray(goal, dtype=float)[:2]
-    grid = grid if grid is not None else occupancy(world, radius, cell or default_cell(world))
+    if grid is None:
+        grid = occupancy(world, radius, cell or default_cell(world), radius + comfort if weight > 0 else None)
     a, b = _nearest_free(grid, start), _nearest_free(grid, goal)
     if a is None or b is None:
         return None
