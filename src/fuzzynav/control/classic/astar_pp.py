@@ -8,7 +8,12 @@ before the episode) and is cached per world within the process, so several seeds
 plan once. The planned disc is the body radius plus ``inflation``; the tracker aims at the path
 point ``lookahead`` metres beyond the robot's projection on the path (searched forward from the
 last one, so progress is monotonic) and drives at V_max · max(cos η, 0.25), η the bearing of
-that point. Without a path (the start cannot reach the goal on the inflated map) it stays put.
+that point. The path ignores the heading (A*, not hybrid A*), and a car turning round onto it
+sweeps a circle of radius l / tan α_max: so each step, the arc of the pure-pursuit steering over
+the next ``check`` seconds is checked against the map, and when it would come within ``inflation``
+of an obstacle, the nearest steering on the grid of 15 whose arc stays clear is taken instead
+(none: the clearest, at half speed). Without a path (the start cannot reach the goal on the
+inflated map) it stays put.
 """
 
 from __future__ import annotations
@@ -20,7 +25,7 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, positive
+from fuzzynav.control.classic.local_map import Body, arcs, positive
 from fuzzynav.world.planning import shortest_path
 
 
@@ -52,16 +57,20 @@ class AStarPurePursuit(Controller):
 
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
-                 inflation: float = 0.1, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 1.0):
+                 inflation: float = 0.1, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 1.0,
+                 check: float = 1.0):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.inflation, self.comfort, self.weight = float(inflation), float(comfort), float(weight)
-        self.lookahead = positive(lookahead, "lookahead")
+        self.lookahead, self.check = positive(lookahead, "lookahead"), positive(check, "check")
+        self.steering = np.linspace(-max_steering, max_steering, 15)
+        self.world = None
         self.path = None
         self._index = 0
 
     def prepare(self, scenario) -> None:
         """Plan on ``scenario``'s map (goal tasks; other tasks are not planned for)."""
         self.path = None
+        self.world = scenario.world
         if scenario.goal is not None:
             key = json.dumps(scenario.to_dict(), sort_keys=True)
             self.path = _plan(key, self.body.radius + self.inflation, self.comfort, self.weight)
@@ -82,7 +91,23 @@ class AStarPurePursuit(Controller):
         dx, dy = goal_point - xy
         bearing = math.remainder(math.atan2(dy, dx) - float(obs.pose[2]), math.tau)
         steering = self.body.steer_towards(bearing, math.hypot(dx, dy))
-        return Command(steering, self.body.max_speed * max(math.cos(bearing), 0.25), "A*+PP")
+        speed = self.body.max_speed * max(math.cos(bearing), 0.25)
+        return self._checked(obs.pose, steering, speed)
+
+    def _checked(self, pose, steering: float, speed: float) -> Command:
+        """The command with its arc checked against the map (module docstring)."""
+        candidates = np.concatenate([[steering], self.steering])
+        order = np.argsort(np.abs(candidates - steering), kind="stable")
+        lengths = np.linspace(0.1, 1.0, 10) * max(speed, 0.5) * self.check
+        local = arcs(np.tan(candidates) / self.body.wheelbase, lengths)  # (A, K, 2) robot frame
+        c, s = math.cos(float(pose[2])), math.sin(float(pose[2]))
+        world = np.stack([pose[0] + c * local[..., 0] - s * local[..., 1],
+                          pose[1] + s * local[..., 0] + c * local[..., 1]], axis=-1)
+        clearance = self.world.clearance(world.reshape(-1, 2)).reshape(local.shape[:2]).min(axis=1)
+        clear = clearance >= self.body.radius + self.inflation
+        if clear[order].any():
+            return Command(float(candidates[order[np.argmax(clear[order])]]), speed, "A*+PP")
+        return Command(float(candidates[np.argmax(clearance)]), 0.5 * speed, "A*+PP-check")
 
 
 def make(**options) -> AStarPurePursuit:
