@@ -17,14 +17,13 @@ from __future__ import annotations
 import csv
 import io
 import json
-import os
 import sys
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from fuzzynav.bench.backends import execute
 from fuzzynav.bench.cells import Cell
+from fuzzynav.bench.files import write_atomic
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
 
@@ -90,14 +89,6 @@ def csv_lines(rows) -> str:
 
 def json_lines(rows) -> str:
     return "".join(json.dumps({column: row.get(column) for column in COLUMNS}) + "\n" for row in rows)
-
-
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to a temporary file beside ``path``, then rename it onto ``path``."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
-    os.replace(tmp, path)
 
 
 def read_runs(out: Path) -> list[dict]:

@@ -18,10 +18,9 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-import os
-import tempfile
 from pathlib import Path
 
+from fuzzynav.bench.files import write_atomic
 from fuzzynav.world.planning import path_length, shortest_path
 from fuzzynav.world.scenario import Scenario
 
@@ -35,14 +34,6 @@ def world_key(scenario: Scenario, radius: float) -> str:
     relevant = {key: doc.get(key) for key in ("world", "robot", "goal", "obstacles")}
     relevant["radius"] = float(radius)
     return hashlib.sha1(json.dumps(relevant, sort_keys=True).encode()).hexdigest()
-
-
-def _write_atomic(path: Path, text: str) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
-    os.replace(tmp, path)
 
 
 def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | None = None) -> float | None:
@@ -59,7 +50,7 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
         path = shortest_path(scenario.world, scenario.start, scenario.goal.position, radius)
         length = None if path is None else round(max(path_length(path) - scenario.goal.tolerance, 1e-6), 6)
         if file is not None:
-            _write_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
+            write_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
     _MEMORY[key] = length
     return length
 

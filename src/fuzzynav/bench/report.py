@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.bench.campaign import Plan, write_atomic
+from fuzzynav.bench.campaign import Plan
+from fuzzynav.bench.files import write_atomic
 from fuzzynav.bench.stats import summarise
 
 
