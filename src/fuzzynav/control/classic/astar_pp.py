@@ -18,7 +18,6 @@ inflated map) it stays put.
 
 from __future__ import annotations
 
-import functools
 import json
 import math
 
@@ -29,13 +28,20 @@ from fuzzynav.control.classic.local_map import Body, arcs, positive
 from fuzzynav.world.planning import shortest_path
 
 
-@functools.lru_cache(maxsize=32)
-def _plan(key: str, radius: float, comfort: float, weight: float):
-    from fuzzynav.world.scenario import scenario_from_dict
+_PLANS: dict[tuple, np.ndarray | None] = {}  # (scenario, planner parameters) -> densified path
+_MAX_PLANS = 64
 
-    scenario = scenario_from_dict(json.loads(key), robot_radius=0.0)
-    path = shortest_path(scenario.world, scenario.start, scenario.goal.position, radius, weight=weight, comfort=comfort)
-    return None if path is None else _densify(path, 0.1)
+
+def _plan(scenario, radius: float, comfort: float, weight: float) -> np.ndarray | None:
+    """The densified path on ``scenario`` (cached per world and parameters within the process)."""
+    key = (json.dumps(scenario.to_dict(), sort_keys=True), radius, comfort, weight)
+    if key not in _PLANS:
+        if len(_PLANS) >= _MAX_PLANS:
+            _PLANS.clear()
+        path = shortest_path(scenario.world, scenario.start, scenario.goal.position, radius,
+                             weight=weight, comfort=comfort)
+        _PLANS[key] = None if path is None else _densify(path, 0.1)
+    return _PLANS[key]
 
 
 def _densify(path: np.ndarray, step: float) -> np.ndarray:
@@ -72,8 +78,7 @@ class AStarPurePursuit(Controller):
         self.path = None
         self.world = scenario.world
         if scenario.goal is not None:
-            key = json.dumps(scenario.to_dict(), sort_keys=True)
-            self.path = _plan(key, self.body.radius + self.inflation, self.comfort, self.weight)
+            self.path = _plan(scenario, self.body.radius + self.inflation, self.comfort, self.weight)
         self._index = 0
 
     def reset(self, rng=None) -> None:
