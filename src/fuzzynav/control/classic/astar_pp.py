@@ -10,10 +10,13 @@ point ``lookahead`` metres beyond the robot's projection on the path (searched f
 last one, so progress is monotonic) and drives at V_max · max(cos η, 0.25), η the bearing of
 that point. The path ignores the heading (A*, not hybrid A*), and a car turning round onto it
 sweeps a circle of radius l / tan α_max: so each step, the arc of the pure-pursuit steering over
-the next ``check`` seconds is checked against the map, and when it would come within ``inflation``
-of an obstacle, the nearest steering on the grid of 15 whose arc stays clear is taken instead
-(none: the clearest, at half speed). Without a path (the start cannot reach the goal on the
-inflated map) it stays put.
+the next ``check`` seconds is checked against the map, and when the body would come within
+``check_margin`` of an obstacle on it, the nearest steering on the grid of 15 whose arc stays
+clear is taken instead (none: the clearest, at half speed), at a speed of at most 4/s times the
+arc's room (clearance less the radius; 0.5 m/s at least). The margin is smaller than the
+planning ``inflation``: the path itself may run at the inflated radius in narrow passages, and
+a check that demanded the inflation there would push the robot off its path. Without a path (the start cannot reach the goal on the
+map inflated by ``inflation``, nor by 2 cm) it stays put.
 """
 
 from __future__ import annotations
@@ -56,7 +59,7 @@ def _densify(path: np.ndarray, step: float) -> np.ndarray:
 class AStarPurePursuit(Controller):
     """Map-aware A* + pure pursuit (module docstring). Options: robot ``radius``/``wheelbase``/
     ``max_steering``/``max_speed``, ``inflation``, ``comfort`` (m), ``weight`` (clearance cost),
-    ``lookahead`` (m)."""
+    ``lookahead`` (m), ``check`` (s), ``check_margin`` (m)."""
 
     name = "astar-pp"
     map_aware = True
@@ -64,10 +67,11 @@ class AStarPurePursuit(Controller):
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  inflation: float = 0.1, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 1.0,
-                 check: float = 1.0):
+                 check: float = 1.0, check_margin: float = 0.03):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.inflation, self.comfort, self.weight = float(inflation), float(comfort), float(weight)
         self.lookahead, self.check = positive(lookahead, "lookahead"), positive(check, "check")
+        self.check_margin = float(check_margin)
         self.steering = np.linspace(-max_steering, max_steering, 15)
         self.world = None
         self.path = None
@@ -77,8 +81,11 @@ class AStarPurePursuit(Controller):
         """Plan on ``scenario``'s map (goal tasks; other tasks are not planned for)."""
         self.path = None
         self.world = scenario.world
-        if scenario.goal is not None:
-            self.path = _plan(scenario, self.body.radius + self.inflation, self.comfort, self.weight)
+        if scenario.goal is not None:  # inflated first; where that closes every way, the body + 2 cm
+            for radius in (self.body.radius + self.inflation, self.body.radius + 0.02):
+                self.path = _plan(scenario, radius, self.comfort, self.weight)
+                if self.path is not None:
+                    break
         self._index = 0
 
     def reset(self, rng=None) -> None:
@@ -109,9 +116,11 @@ class AStarPurePursuit(Controller):
         world = np.stack([pose[0] + c * local[..., 0] - s * local[..., 1],
                           pose[1] + s * local[..., 0] + c * local[..., 1]], axis=-1)
         clearance = self.world.clearance(world.reshape(-1, 2)).reshape(local.shape[:2]).min(axis=1)
-        clear = clearance >= self.body.radius + self.inflation
+        clear = clearance >= self.body.radius + self.check_margin
         if clear[order].any():
-            return Command(float(candidates[order[np.argmax(clear[order])]]), speed, "A*+PP")
+            best = order[np.argmax(clear[order])]
+            room = float(clearance[best]) - self.body.radius  # slow down where the arc passes close
+            return Command(float(candidates[best]), min(speed, max(0.5, 4.0 * room)), "A*+PP")
         return Command(float(candidates[np.argmax(clearance)]), 0.5 * speed, "A*+PP-check")
 
 
