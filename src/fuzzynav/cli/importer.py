@@ -34,7 +34,7 @@ def register(subparsers) -> None:
 def run(args) -> int:
     import yaml
 
-    from fuzzynav.bench.campaign import write_atomic
+    from fuzzynav.bench.files import write_atomic
     from fuzzynav.bench.suites import REFERENCE_FILE
     from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
     from fuzzynav.world.scenario import scenario_from_dict
