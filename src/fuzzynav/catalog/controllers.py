@@ -25,6 +25,13 @@ CONTROLLERS["anfis-tracker"] = ("fuzzynav.learn.tasks.trackers:anfis_tracker",
                                 "ANFIS tracker, 1 input, 5 MFs (§V.3.5), trained on the fly")
 CONTROLLERS["pure-pursuit"] = ("fuzzynav.control.baselines:pure_pursuit", "pure pursuit baseline (Coulter 1992)")
 CONTROLLERS["stanley"] = ("fuzzynav.control.baselines:stanley", "Stanley steering baseline (Thrun et al. 2006)")
+CONTROLLERS["dwa"] = ("fuzzynav.control.classic.dwa:make",
+                      "Dynamic Window Approach (Fox, Burgard & Thrun 1997) on the 7 range sensors")
+CONTROLLERS["apf"] = ("fuzzynav.control.classic.apf:make",
+                      "artificial potential field (Khatib 1986) on the 7 range sensors")
+CONTROLLERS["vfh"] = ("fuzzynav.control.classic.vfh:make", "VFH+ (Ulrich & Borenstein 1998) on the 7 range sensors")
+CONTROLLERS["astar-pp"] = ("fuzzynav.control.classic.astar_pp:make",
+                           "MAP-AWARE reference: A* on the inflated map + pure pursuit (knows the whole map)")
 
 
 def available() -> dict[str, str]:

@@ -25,6 +25,8 @@ COMMAND_MODULES: list[str] = [
     "fis",
     "evaluate",
     "worlds",
+    "bench",
+    "importer",
 ]
 
 

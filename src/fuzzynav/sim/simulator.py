@@ -73,6 +73,9 @@ class BatchSimulator:
             if len(copies) != self.n:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
+        for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
+            if callable(getattr(copied, "prepare", None)):
+                copied.prepare(scenario)
         self.controllers = copies
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
