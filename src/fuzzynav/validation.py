@@ -10,6 +10,7 @@ another exception, never a silently wrong value. The limits are documented in ``
 
 from __future__ import annotations
 
+import difflib
 import json
 import math
 import operator
@@ -49,14 +50,13 @@ def number(value, source=None, field=None, *, lo: float = -MAX_MAGNITUDE, hi: fl
     try:
         result = float(value)
     except OverflowError:
-        fail(f"must be between {lo:g} and {hi:g}, got {_shown(value)}", source, field)
+        fail(f"must be <= {hi:g} in magnitude, got {_shown(value)}", source, field)
     if not math.isfinite(result):
         fail(f"must be finite, got {_shown(result)}", source, field)
-    below = result <= lo if lo_open else result < lo
-    above = result >= hi if hi_open else result > hi
-    if below or above:
-        left, right = "(" if lo_open else "[", ")" if hi_open else "]"
-        fail(f"must be in {left}{lo:g}, {hi:g}{right}, got {_shown(value)}", source, field)
+    if result <= lo if lo_open else result < lo:
+        fail(f"must be {'>' if lo_open else '>='} {lo:g}, got {_shown(value)}", source, field)
+    if result >= hi if hi_open else result > hi:
+        fail(f"must be {'<' if hi_open else '<='} {hi:g}, got {_shown(value)}", source, field)
     return result
 
 
@@ -166,7 +166,7 @@ def decode(data: bytes, source=None, *, strip_bom: bool = True) -> str:
     try:
         result = data.decode("utf-8")
     except UnicodeDecodeError as error:
-        fail(f"not UTF-8 text (byte {error.start}: {error.reason})", source)
+        fail(f"cannot read file: not UTF-8 text (byte {error.start}: {error.reason})", source)
     return result[1:] if strip_bom and result.startswith("\ufeff") else result
 
 
@@ -213,3 +213,19 @@ def load_document(path, fmt: str | None = None):
     content = read_text(path)
     fmt = fmt or ("json" if path.suffix.lower() == ".json" else "yaml")
     return parse_json(content, str(path)) if fmt == "json" else parse_yaml(content, str(path))
+
+
+def known_keys(value, known, source=None, field=None, *, required=()) -> dict:
+    """``value``, a mapping whose keys are all in ``known`` (an unknown key is refused with the
+    closest known one as a hint) and include ``required``."""
+    mapping(value, source, field)
+    for key in value:
+        if key not in known:
+            close = difflib.get_close_matches(key, list(known), n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            fail(f"unknown key {_shown(key)}{hint}; known: {', '.join(known)}", source,
+                 f"{field}.{key}" if field else key)
+    for key in required:
+        if key not in value:
+            fail("missing", source, f"{field}.{key}" if field else key)
+    return value
