@@ -9,14 +9,14 @@ crash while saving never corrupts the previous model.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 import zipfile
 from importlib import import_module
 from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import validation
+from fuzzynav.atomic import atomic_write
 from fuzzynav.errors import InputError
 
 # kind -> "module:loader"; a loader takes (the parsed document, the path) and returns a Controller.
@@ -29,65 +29,41 @@ MODEL_LOADERS["fql-avoid"] = "fuzzynav.control.learned:load_fuzzy_model"
 MODEL_LOADERS["fql-wall"] = "fuzzynav.control.learned:load_fuzzy_model"
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-def _atomic_write(path: Path, write) -> None:
-    """Write through ``write(handle)`` to a temporary file, then rename it onto ``path``.
-
-    The file gets the usual permissions (0666 less the umask, not mkstemp's 0600); a path that
-    cannot be written (missing permission, a directory, ...) is an :class:`InputError` naming it.
-    """
-    path = Path(path)
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-        with os.fdopen(fd, "wb") as handle:
-            write(handle)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    except BaseException as error:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
-        if isinstance(error, OSError):
-            raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
-        raise
-
-
 def save_json_atomic(path, document: dict) -> None:
     """Write ``document`` as JSON to ``path`` atomically (temporary file, then rename)."""
     data = json.dumps(document, indent=2, sort_keys=False).encode()
-    _atomic_write(Path(path), lambda handle: handle.write(data))
+    atomic_write(Path(path), lambda handle: handle.write(data))
 
 
 def save_npz_atomic(path, **arrays) -> None:
     """Write arrays as ``.npz`` atomically; strings are stored as 0-d unicode arrays."""
-    _atomic_write(Path(path), lambda handle: np.savez(handle, **arrays))
+    atomic_write(Path(path), lambda handle: np.savez(handle, **arrays))
 
 
 def read_model(path) -> dict:
-    """Read a model file into a dict (JSON object, or the arrays of an ``.npz``) with its ``kind``."""
+    """Read a model file into a dict (JSON object, or the arrays of an ``.npz``) with its ``kind``.
+
+    Bounded before anything is decoded (:mod:`fuzzynav.validation`): a JSON file by its size,
+    nesting and values; an ``.npz`` by the sizes its zip and array headers declare
+    (:func:`fuzzynav.validation.check_npz`), never unpickled.
+    """
     path = Path(path)
     if not path.is_file():
         raise InputError("no such model file", source=str(path))
-    try:
-        if path.suffix == ".npz":
+    if path.suffix == ".npz":
+        validation.check_npz(path)
+        try:
             with np.load(path, allow_pickle=False) as data:
                 document = {key: data[key] for key in data.files}
-            if "kind" in document:
-                document["kind"] = str(document["kind"])
-        else:
-            document = json.loads(path.read_text())
-    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
-        raise InputError(f"cannot read model file ({error})", source=str(path)) from None
+        except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
+            raise InputError(f"cannot read model file ({error})", source=str(path)) from None
+        if "kind" in document:
+            document["kind"] = str(document["kind"]) if document["kind"].dtype.kind == "U" else document["kind"]
+    else:
+        document = validation.parse_json(validation.read_text(path, max_bytes=validation.MAX_MODEL_BYTES), str(path))
     if not isinstance(document, dict) or "kind" not in document:
         raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
+    validation.text(document["kind"], str(path), "kind", max_length=100)
     return document
 
 

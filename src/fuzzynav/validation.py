@@ -16,18 +16,24 @@ import math
 import operator
 from pathlib import Path
 
+import zipfile
+
+import numpy as np
 import yaml
 
 from fuzzynav.errors import InputError
 from fuzzynav.yaml_loader import load_yaml
 
 # -- resource limits (docs/limits.md) ---------------------------------------------------------
-MAX_TEXT_BYTES = 8 * 2**20  # a scenario, fuzzy-system, JSON model or checkpoint file
+MAX_TEXT_BYTES = 8 * 2**20  # a scenario or fuzzy-system file, a CSV table
+MAX_MODEL_BYTES = 64 * 2**20  # a JSON model or checkpoint file
+MAX_NPZ_BYTES = 256 * 2**20  # the arrays of an .npz model, uncompressed, all members together
 MAX_DEPTH = 64  # nesting of lists / mappings in a document
 MAX_NODES = 2_000_000  # values in a document (lists, mappings and scalars together)
 MAX_STRING = 100_000  # characters in one string field
 MAX_INTEGER = 2**53  # |integer| accepted where the field takes an integer (exact as a float)
 MAX_MAGNITUDE = 1e15  # |number| accepted where no tighter range is documented
+MAX_RESOLUTION = 10_000  # centroid samples of a Mamdani output (fuzzylite's default is 1,000)
 
 
 def fail(problem: str, source=None, field=None):
@@ -229,3 +235,38 @@ def known_keys(value, known, source=None, field=None, *, required=()) -> dict:
         if key not in value:
             fail("missing", source, f"{field}.{key}" if field else key)
     return value
+
+
+def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
+    """Refuse an ``.npz`` before decompressing it: every member a ``.npy`` array of a plain
+    (non-object) dtype, the sizes its zip headers and its array headers declare within
+    ``max_bytes`` in total (a "deflate bomb" or an array declaring terabytes is refused)."""
+    source = str(path)
+    total = 0
+    try:
+        with zipfile.ZipFile(path) as archive:
+            members = archive.infolist()
+            if len(members) > 1000:
+                fail(f"more than 1000 arrays ({len(members)})", source)
+            for info in members:
+                total += info.file_size
+                if total > max_bytes:
+                    fail(f"arrays larger than the {max_bytes // 2**20} MiB limit once decompressed", source,
+                         info.filename)
+                with archive.open(info) as member:
+                    version = np.lib.format.read_magic(member)
+                    header = (np.lib.format.read_array_header_1_0 if version == (1, 0)
+                              else np.lib.format.read_array_header_2_0)(member, max_header_size=10_000)
+                shape, _, dtype = header
+                if dtype.hasobject:
+                    fail("an array of Python objects (never unpickled)", source, info.filename)
+                declared = dtype.itemsize
+                for n in shape:
+                    declared *= n
+                if declared > max_bytes:
+                    fail(f"declares an array of {declared} bytes, more than the {max_bytes // 2**20} MiB limit",
+                         source, info.filename)
+    except InputError:
+        raise
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile, NotImplementedError, RuntimeError) as error:
+        fail(f"cannot read model file ({error})", source)

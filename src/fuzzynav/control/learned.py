@@ -380,10 +380,12 @@ def model_name(document: dict) -> str:
 
 def load_fuzzy_model(document: dict, path) -> Controller:
     """Loader of the ``fql-goal``, ``fql-avoid`` and ``fql-wall`` model kinds (fuzzynav.models)."""
+    from fuzzynav.fuzzy.coverage import check_covered
     from fuzzynav.fuzzy.io.document import from_document
 
     kind = document.get("kind")
     system = from_document(document, source=str(path))
+    check_covered(system, str(path))
     try:
         speed = check_speed(document.get("constant_speed", 1.0), "constant_speed")
         name = model_name(document)

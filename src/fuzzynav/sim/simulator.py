@@ -23,14 +23,17 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import Controller
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
+from fuzzynav.sim.commands import check_commands, command_values
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.geometry import wrap_angle
+from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 
 RUNNING, REACHED, COLLISION, TIMEOUT = 0, 1, 2, 3
@@ -55,7 +58,8 @@ class BatchSimulator:
         self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
-        self.max_time = float(max_time if max_time is not None else scenario.max_time)
+        self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
+                                          field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
@@ -135,13 +139,13 @@ class BatchSimulator:
     def _act(self, obs: BatchObservation):
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = np.asarray(out[0], dtype=float), np.asarray(out[1], dtype=float)
+            steering, speed = check_commands(out[0], out[1], obs.active, self.n, self.controller_name, self.k)
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
             return steering, speed, labels
         steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
         for i in np.flatnonzero(obs.active):
             command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
-            steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
+            steering[i], speed[i], labels[i] = command_values(command, self.controller_name, self.k)
         return steering, speed, labels
 
     def step(self) -> BatchObservation:

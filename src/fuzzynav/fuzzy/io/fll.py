@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 import re
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import (Bell, Gaussian, Linear, MembershipFunction, Ramp, Sigmoid, Singleton,
                                        Trapezoidal, Triangular)
@@ -257,7 +258,10 @@ def from_fll(text: str, source: str | None = None) -> FuzzySystem:
     if words and words[0] == "Centroid":
         options["method"] = "mamdani"
         # fuzzylite's IntegralDefuzzifier.default_resolution when the file gives none
-        options["resolution"] = int(float(words[1])) if len(words) > 1 else FUZZYLITE_RESOLUTION
+        options["resolution"] = (validation.integer(int(words[1]) if re.fullmatch(r"\d{1,9}", words[1]) else words[1],
+                                                    source, f"line {number}: resolution", lo=2,
+                                                    hi=validation.MAX_RESOLUTION)
+                                 if len(words) > 1 else FUZZYLITE_RESOLUTION)
         imp, n_imp = setting("implication", "Minimum")
         if imp not in _TNORM_IN:
             bad("implication", imp, n_imp, _TNORM_IN)

@@ -1,0 +1,42 @@
+"""The simulator's guard on what a controller returns: nothing non-finite reaches the robot.
+
+A controller (built-in, learned, or a user's own class) that returns ``None``, a non-number or a
+NaN / infinite steering or speed stops the run with a :class:`~fuzzynav.errors.CommandError`
+naming the controller, the step and the value, instead of turning the pose to NaN (which would
+end as a silent "timeout" with no collision ever detected).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.errors import CommandError
+
+
+def command_values(command, controller: str, step: int) -> tuple[float, float, str]:
+    """``(steering, speed, behaviour)`` of one robot's command, both numbers finite."""
+    try:
+        steering, speed = float(command.steering), float(command.speed)
+    except (AttributeError, TypeError, ValueError, OverflowError):
+        raise CommandError(f"returned {command!r}, not a command with numeric steering and speed",
+                           source=f"controller {controller}", field=f"step {step}") from None
+    if not (np.isfinite(steering) and np.isfinite(speed)):
+        raise CommandError(f"returned a non-finite command (steering {steering!r}, speed {speed!r})",
+                           source=f"controller {controller}", field=f"step {step}")
+    return steering, speed, str(getattr(command, "behaviour", ""))
+
+
+def check_commands(steering, speed, active, n: int, controller: str, step: int):
+    """The batch commands ``(n,)`` of the running robots (``active``) as finite float arrays."""
+    try:
+        steering = np.broadcast_to(np.asarray(steering, dtype=float), (n,))
+        speed = np.broadcast_to(np.asarray(speed, dtype=float), (n,))
+    except (TypeError, ValueError):
+        raise CommandError(f"returned steering {steering!r} and speed {speed!r}, not {n} numbers each",
+                           source=f"controller {controller}", field=f"step {step}") from None
+    bad = np.flatnonzero(np.asarray(active, dtype=bool) & ~(np.isfinite(steering) & np.isfinite(speed)))
+    if bad.size:
+        i = int(bad[0])
+        raise CommandError(f"returned a non-finite command for robot {i} (steering {steering[i]!r}, "
+                           f"speed {speed[i]!r})", source=f"controller {controller}", field=f"step {step}")
+    return steering, speed
