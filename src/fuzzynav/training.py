@@ -33,6 +33,7 @@ class TrainRequest:
     """What the user asked of one training run (defaults are each task's own when ``None``)."""
 
     out: Path
+    task: str = ""  # the TASK name, recorded in checkpoints (a resume of another task is refused)
     episodes: int | None = None
     seed: int = 0
     resume: bool = False

@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from fuzzynav.atomic import write_text_atomic
 from fuzzynav.control.registry import make_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import list_scenarios, load_scenario
@@ -65,7 +66,7 @@ def run(args) -> int:
             plot_episode(trace, scenario, args.out / f"{name}--{controller_name}.png")
         print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} in {row['time_s']:.1f} s",
               flush=True)
-    (args.out / "metrics.json").write_text(json.dumps(rows, indent=2))
-    (args.out / "metrics.md").write_text(markdown_table(rows))
+    write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
+    write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}")
     return 0

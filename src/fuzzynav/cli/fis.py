@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.atomic import savefig_atomic, write_text_atomic
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
@@ -191,14 +192,14 @@ def _plot(args) -> int:
             raise InputError(str(error), field="--surface") from None
     else:
         fig = plot_system(system)
-    fig.savefig(args.output, dpi=120)
+    savefig_atomic(fig, args.output, dpi=120)
     print(args.output)
     return 0
 
 
 def _write(text: str, output: str | None) -> None:
     if output and output != "-":
-        Path(output).write_text(text, encoding="utf-8")
+        write_text_atomic(output, text)
     else:
         sys.stdout.write(text)
 

@@ -6,6 +6,7 @@ import json
 import time
 from pathlib import Path
 
+from fuzzynav.atomic import write_text_atomic
 from fuzzynav.cli import arguments
 from fuzzynav.experiments import registry
 
@@ -35,6 +36,6 @@ def run(args) -> int:
     for key, function in functions:
         start = time.perf_counter()
         numbers = function(args.out, quick=args.quick, seed=args.seed)
-        (args.out / f"{key}.json").write_text(json.dumps(numbers, indent=2, default=float))
+        write_text_atomic(args.out / f"{key}.json", json.dumps(numbers, indent=2, default=float))
         print(f"{key}: done in {time.perf_counter() - start:.1f} s -> {args.out}", flush=True)
     return 0

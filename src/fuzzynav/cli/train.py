@@ -40,6 +40,7 @@ def run(args) -> int:
         raise InputError(f"{out} is a directory; give the model file to write", field="--out")
     request = training.TrainRequest(
         out=out,
+        task=args.task,
         episodes=args.episodes,
         seed=args.seed,
         resume=args.resume,

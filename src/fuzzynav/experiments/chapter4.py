@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from fuzzynav.atomic import savefig_atomic
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
@@ -41,7 +42,7 @@ FIG_IV_12 = {
 def _save(figure: Figure, out_dir, name: str) -> str:
     path = Path(out_dir) / name
     path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
+    savefig_atomic(figure, path, dpi=110)
     return str(path)
 
 

@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from fuzzynav.atomic import savefig_atomic
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
@@ -47,7 +48,7 @@ PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 def _save(figure: Figure, out_dir, name: str) -> str:
     path = Path(out_dir) / name
     path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
+    savefig_atomic(figure, path, dpi=110)
     return str(path)
 
 
@@ -77,7 +78,7 @@ def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
     figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
+        savefig_atomic(figure, path, dpi=110)
     return figure
 
 

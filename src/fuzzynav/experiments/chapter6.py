@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from fuzzynav.atomic import savefig_atomic
 from fuzzynav.control.registry import make_controller
 from fuzzynav.experiments import train_rl as rl
 from fuzzynav.learn.checkpoint import load_checkpoint
@@ -41,12 +42,12 @@ from fuzzynav.viz.trajectories import plot_trajectory
 def _save(figure: Figure, out_dir, name: str) -> str:
     path = Path(out_dir) / name
     path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
+    savefig_atomic(figure, path, dpi=110)
     return str(path)
 
 
 def _request(out_dir, name: str, episodes, seed: int) -> TrainRequest:
-    return TrainRequest(out=Path(out_dir) / "models" / f"{name}-{seed}.json", episodes=episodes, seed=seed,
+    return TrainRequest(out=Path(out_dir) / "models" / f"{name}-{seed}.json", task=name, episodes=episodes, seed=seed,
                         progress=False)
 
 

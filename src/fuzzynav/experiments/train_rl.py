@@ -85,6 +85,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.atomic import savefig_atomic
 from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
@@ -209,7 +210,9 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             phase.env.batch = size
             result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
                                 checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,
-                                desc=phase.name, extra={"phase": phase.name, "seed": int(request.seed)})
+                                desc=phase.name, budget=phase.episodes,
+                                extra={"task": request.task, "phase": phase.name, "seed": int(request.seed),
+                                       "batch": batch})
             resume, continued = True, continued or result.resumed_from != result.episode
     finally:
         phase.env.batch = batch
@@ -286,7 +289,7 @@ def _write_curve(request, phases: dict, title: str) -> None:
         plot_learning_curve(result["mean_reward"], ax=ax, window=result["window"], title=f"{title}: {name}",
                             label=name, converged_at=result["converged_at"])
     Path(request.curve).parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(request.curve, dpi=120, bbox_inches="tight")
+    savefig_atomic(figure, request.curve, dpi=120, bbox_inches="tight")
     plt.close(figure)
 
 

@@ -22,6 +22,7 @@ from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
+from fuzzynav.atomic import savefig_atomic
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.shapes import Circle, Ellipse
@@ -149,5 +150,5 @@ def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = Fa
     plot_commands(trace, right.subplots(2, 1, sharex=True))
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
+        savefig_atomic(figure, path, dpi=110)
     return figure

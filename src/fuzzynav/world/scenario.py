@@ -43,7 +43,6 @@ from fuzzynav.world import limits
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
 from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
 from fuzzynav.world.world import World
-from fuzzynav.yaml_loader import load_yaml
 
 BUILTIN_DIR = Path(__file__).with_name("scenarios")
 DEFAULT_MAX_TIME = 120.0
