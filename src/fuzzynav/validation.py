@@ -33,6 +33,8 @@ MAX_NODES = 2_000_000  # values in a document (lists, mappings and scalars toget
 MAX_STRING = 100_000  # characters in one string field
 MAX_INTEGER = 2**53  # |integer| accepted where the field takes an integer (exact as a float)
 MAX_MAGNITUDE = 1e15  # |number| accepted where no tighter range is documented
+MAX_RUNS = 100_000  # episodes of one evaluation (``evaluate --n``)
+MAX_EPISODES = 10_000_000  # training episodes (``train --episodes``, ``--checkpoint-every``)
 MAX_RESOLUTION = 10_000  # centroid samples of a Mamdani output (fuzzylite's default is 1,000)
 
 
@@ -52,7 +54,7 @@ def number(value, source=None, field=None, *, lo: float = -MAX_MAGNITUDE, hi: fl
     """``value`` as a float: a real number (not a bool, not a string), finite, in [lo, hi]
     (``lo_open`` / ``hi_open`` exclude an end)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_number(value):
-        fail(f"must be a number, got {type(value).__name__} {_shown(value)}", source, field)
+        fail(f"must be a number, got {_shown(value)}", source, field)
     try:
         result = float(value)
     except OverflowError:
@@ -270,3 +272,13 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
         raise
     except (OSError, ValueError, EOFError, zipfile.BadZipFile, NotImplementedError, RuntimeError) as error:
         fail(f"cannot read model file ({error})", source)
+
+
+def csv_header(names, source=None) -> list[str]:
+    """The column names of a CSV header, stripped of surrounding blanks; a name given twice is
+    refused (``csv.DictReader`` would silently keep the last column)."""
+    names = [name.strip() for name in names]
+    repeated = sorted({name for name in names if names.count(name) > 1})
+    if repeated:
+        fail(f"column(s) {', '.join(map(repr, repeated))} appear more than once", source, "header")
+    return names

@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import sys
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 from fuzzynav.control.registry import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
@@ -43,8 +44,7 @@ def run(args) -> int:
 
     if args.worlds not in KINDS:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
-    if args.n < 1:
-        raise InputError(f"must be >= 1, got {args.n}", field="--n")
+    validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
     if args.controller is not None:
         make_controller(args.controller)  # unknown names fail before any world is drawn
 

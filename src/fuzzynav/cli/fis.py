@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.atomic import savefig_atomic, write_text_atomic
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
@@ -124,12 +125,13 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
 
 
 def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
-    try:
-        text = sys.stdin.read() if path == "-" else Path(path).read_text(encoding="utf-8")
-    except OSError as error:
-        raise InputError(f"cannot read: {error.strerror or error}", source=path) from None
+    if path == "-":
+        text = validation.decode(sys.stdin.buffer.read(validation.MAX_TEXT_BYTES + 1), "<stdin>")
+    else:
+        text = validation.read_text(path)
     reader = csv.DictReader(io.StringIO(text))
-    header = reader.fieldnames or []
+    header = validation.csv_header(reader.fieldnames or [], path)
+    reader.fieldnames = header
     missing = [n for n in system.input_names if n not in header]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)} (header: {', '.join(header)})", source=path,

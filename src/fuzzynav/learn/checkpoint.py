@@ -83,6 +83,14 @@ def load_checkpoint(path) -> dict:
     curve = document["curve"]
     if not isinstance(curve, dict) or not all(isinstance(curve.get(key), list) for key in _CURVE_FIELDS):
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
+    for key in _CURVE_FIELDS:
+        for i, row in enumerate(curve[key]):
+            try:
+                kind = np.asarray(row).dtype.kind
+            except ValueError:  # ragged
+                kind = "O"
+            if kind not in "biuf":
+                raise InputError(f"must hold numbers, got {str(row)[:60]}", source=str(path), field=f"curve.{key}[{i}]")
     return document
 
 
@@ -122,7 +130,7 @@ def restore(learner, rng: np.random.Generator, document: dict, source: str = "ch
     restore_state(learner, saved, source)
     try:
         rng.bit_generator.state = document["rng"]
-    except (TypeError, ValueError, KeyError) as error:
+    except (TypeError, ValueError, KeyError, OverflowError) as error:
         raise InputError(f"bad RNG state ({error})", source=source, field="rng") from None
 
 

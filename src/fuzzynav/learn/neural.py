@@ -112,6 +112,9 @@ class NeuralInverseModel:
             raise InputError(f"not an MLP document (format must be {_FORMAT!r})", source=source, field="format")
         if document.get("version") != _VERSION:
             raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
+        for key, value in (("activation", "tanh"), ("output_activation", "identity")):
+            if document.get(key, value) != value:  # the only network this class evaluates
+                raise InputError(f"must be {value!r}, got {document.get(key)!r}", source=source, field=key)
         weights, biases = document.get("weights"), document.get("biases")
         if not isinstance(weights, list) or not isinstance(biases, list) or len(weights) != len(biases) or not weights:
             raise InputError("weights and biases must be lists of the same non-zero length", source=source,
