@@ -9,7 +9,6 @@ crash while saving never corrupts the previous model.
 from __future__ import annotations
 
 import json
-import zipfile
 from importlib import import_module
 from pathlib import Path
 
@@ -55,8 +54,8 @@ def read_model(path) -> dict:
         try:
             with np.load(path, allow_pickle=False) as data:
                 document = {key: data[key] for key in data.files}
-        except (OSError, ValueError, EOFError, zipfile.BadZipFile) as error:
-            raise InputError(f"cannot read model file ({error})", source=str(path)) from None
+        except Exception as error:  # corrupt data past the checked headers (zlib, CRC, truncation, ...)
+            raise InputError(f"cannot read model file ({type(error).__name__}: {error})", source=str(path)) from None
         if "kind" in document:
             document["kind"] = str(document["kind"]) if document["kind"].dtype.kind == "U" else document["kind"]
     else:

@@ -10,6 +10,7 @@ another exception, never a silently wrong value. The limits are documented in ``
 
 from __future__ import annotations
 
+import csv
 import difflib
 import json
 import math
@@ -32,6 +33,7 @@ MAX_DEPTH = 64  # nesting of lists / mappings in a document
 MAX_NODES = 2_000_000  # values in a document (lists, mappings and scalars together)
 MAX_STRING = 100_000  # characters in one string field
 MAX_INTEGER = 2**53  # |integer| accepted where the field takes an integer (exact as a float)
+MAX_DOCUMENT_INTEGER = 2**130  # |integer| anywhere in a document (a checkpoint's RNG state is 128-bit)
 MAX_MAGNITUDE = 1e15  # |number| accepted where no tighter range is documented
 MAX_RUNS = 100_000  # episodes of one evaluation (``evaluate --n``)
 MAX_EPISODES = 10_000_000  # training episodes (``train --episodes``, ``--checkpoint-every``)
@@ -153,6 +155,8 @@ def check_tree(document, source=None, *, max_depth: int = MAX_DEPTH, max_nodes: 
                 stack.append((item, depth + 1, f"{where}.{key}" if where else str(key)))
         elif isinstance(node, (list, tuple)):
             stack.extend((item, depth + 1, f"{where}[{i}]") for i, item in enumerate(node))
+        elif isinstance(node, int) and not -MAX_DOCUMENT_INTEGER <= node <= MAX_DOCUMENT_INTEGER:
+            fail(f"integer too large ({_shown(node)})", source, where or None)
     return document
 
 
@@ -270,15 +274,25 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
                          source, info.filename)
     except InputError:
         raise
-    except (OSError, ValueError, EOFError, zipfile.BadZipFile, NotImplementedError, RuntimeError) as error:
-        fail(f"cannot read model file ({error})", source)
+    except Exception as error:  # zipfile / numpy header parsing of hostile bytes raise many types
+        fail(f"cannot read model file ({type(error).__name__}: {error})", source)
 
 
-def csv_header(names, source=None) -> list[str]:
-    """The column names of a CSV header, stripped of surrounding blanks; a name given twice is
-    refused (``csv.DictReader`` would silently keep the last column)."""
-    names = [name.strip() for name in names]
-    repeated = sorted({name for name in names if names.count(name) > 1})
+def csv_table(content: str, source=None) -> tuple[list[str], list[tuple[int, dict]]]:
+    """The header and the data rows ``(line number, {column: text or None})`` of CSV text.
+
+    Any line ending is accepted, blank lines are skipped, a UTF-8 byte-order mark has already
+    been removed (:func:`decode`); a column name given twice is refused (``csv.DictReader``
+    would silently keep the last column) and names are stripped of surrounding blanks."""
+    try:
+        lines = [(number, cells) for number, cells in enumerate(csv.reader(content.splitlines()), start=1) if cells]
+    except csv.Error as error:
+        fail(f"unreadable CSV ({error})", source)
+    if not lines:
+        return [], []
+    header = [name.strip() for name in lines[0][1]]
+    repeated = sorted({name for name in header if header.count(name) > 1})
     if repeated:
         fail(f"column(s) {', '.join(map(repr, repeated))} appear more than once", source, "header")
-    return names
+    return header, [(number, {name: cells[j] if j < len(cells) else None for j, name in enumerate(header)})
+                    for number, cells in lines[1:]]

@@ -129,15 +129,13 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
         text = validation.decode(sys.stdin.buffer.read(validation.MAX_TEXT_BYTES + 1), "<stdin>")
     else:
         text = validation.read_text(path)
-    reader = csv.DictReader(io.StringIO(text))
-    header = validation.csv_header(reader.fieldnames or [], path)
-    reader.fieldnames = header
+    header, table = validation.csv_table(text, path)
     missing = [n for n in system.input_names if n not in header]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)} (header: {', '.join(header)})", source=path,
                          field="header")
     rows = []
-    for line, row in enumerate(reader, start=2):
+    for line, row in table:
         try:
             rows.append([float(row[n]) for n in system.input_names])
         except (TypeError, ValueError):

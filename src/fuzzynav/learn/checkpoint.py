@@ -39,6 +39,7 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
+from fuzzynav import validation
 from fuzzynav.atomic import remove_stale_temporaries
 from fuzzynav.errors import InputError
 from fuzzynav.learn.state import episode_count, restore_state
@@ -80,6 +81,8 @@ def load_checkpoint(path) -> dict:
         if name not in document:
             raise InputError("missing field in checkpoint", source=str(path), field=name)
     episode_count(document["episode"], str(path), "episode")
+    for name in ("rng", "learner"):
+        validation.mapping(document[name], str(path), name)
     curve = document["curve"]
     if not isinstance(curve, dict) or not all(isinstance(curve.get(key), list) for key in _CURVE_FIELDS):
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
