@@ -32,10 +32,7 @@ from fuzzynav.fuzzy.systems import SYSTEMS, get_system
 
 def read_model_or_none(path: str) -> dict | None:
     """The JSON object of ``path`` if it is a model file (has a ``kind``), else ``None``."""
-    try:
-        document = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
-        return None
+    document = validation.load_document(path, "json")  # a bad file is refused here, once
     return document if isinstance(document, dict) and "kind" in document else None
 
 
