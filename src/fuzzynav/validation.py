@@ -26,7 +26,8 @@ from fuzzynav.errors import InputError
 from fuzzynav.yaml_loader import load_yaml
 
 # -- resource limits (docs/limits.md) ---------------------------------------------------------
-MAX_TEXT_BYTES = 8 * 2**20  # a scenario or fuzzy-system file, a CSV table
+MAX_TEXT_BYTES = 8 * 2**20  # a JSON or FLL fuzzy-system file, a CSV table
+MAX_YAML_BYTES = 2**20  # a YAML scenario or fuzzy-system file (PyYAML reads ~0.3 MB/s of numbers)
 MAX_MODEL_BYTES = 64 * 2**20  # a JSON model or checkpoint file
 MAX_NPZ_BYTES = 256 * 2**20  # the arrays of an .npz model, uncompressed, all members together
 MAX_DEPTH = 64  # nesting of lists / mappings in a document
@@ -161,11 +162,15 @@ def check_tree(document, source=None, *, max_depth: int = MAX_DEPTH, max_nodes: 
 
 
 def read_bytes(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> bytes:
-    """The bytes of ``path`` (at most ``max_bytes``); unreadable or too large: InputError."""
-    source = str(path) if source is None else source
+    """The bytes of the file ``path`` or of a binary stream (``sys.stdin.buffer``), at most
+    ``max_bytes``; unreadable or too large: InputError."""
+    source = str(getattr(path, "name", path)) if source is None else source
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(max_bytes + 1)
+        if hasattr(path, "read"):
+            data = path.read(max_bytes + 1)
+        else:
+            with open(path, "rb") as handle:
+                data = handle.read(max_bytes + 1)
     except OSError as error:
         fail(f"cannot read file ({error.strerror or error})", source)
     if len(data) > max_bytes:
@@ -189,9 +194,8 @@ def read_text(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> str:
 
 
 def parse_json(content: str, source=None):
-    """A JSON document, bounded (:func:`check_tree`); syntax errors name the line and column."""
-    if len(content) > MAX_TEXT_BYTES:
-        fail(f"document larger than the {MAX_TEXT_BYTES // 2**20} MiB limit", source)
+    """A JSON document, bounded (:func:`check_tree`); syntax errors name the line and column.
+    (The text's size is bounded where it is read: :func:`read_text`.)"""
     try:
         document = json.loads(content)
     except json.JSONDecodeError as error:
@@ -206,8 +210,8 @@ def parse_json(content: str, source=None):
 def parse_yaml(content: str, source=None):
     """A YAML document read by :func:`fuzzynav.yaml_loader.load_yaml` (YAML 1.2 numbers, no
     duplicate keys, aliases and depth bounded), bounded (:func:`check_tree`)."""
-    if len(content) > MAX_TEXT_BYTES:
-        fail(f"document larger than the {MAX_TEXT_BYTES // 2**20} MiB limit", source)
+    if len(content) > MAX_YAML_BYTES:
+        fail(f"YAML document larger than the {MAX_YAML_BYTES // 2**20} MiB limit", source)
     try:
         document = load_yaml(content)
     except yaml.YAMLError as error:
@@ -222,8 +226,8 @@ def parse_yaml(content: str, source=None):
 def load_document(path, fmt: str | None = None):
     """Parse the JSON (``.json``) or YAML (anything else, or ``fmt``) file ``path``, bounded."""
     path = Path(path)
-    content = read_text(path)
     fmt = fmt or ("json" if path.suffix.lower() == ".json" else "yaml")
+    content = read_text(path, max_bytes=MAX_TEXT_BYTES if fmt == "json" else MAX_YAML_BYTES)
     return parse_json(content, str(path)) if fmt == "json" else parse_yaml(content, str(path))
 
 

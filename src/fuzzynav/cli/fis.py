@@ -122,10 +122,7 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
 
 
 def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
-    if path == "-":
-        text = validation.decode(sys.stdin.buffer.read(validation.MAX_TEXT_BYTES + 1), "<stdin>")
-    else:
-        text = validation.read_text(path)
+    text = validation.read_text(sys.stdin.buffer if path == "-" else path, source=path)
     header, table = validation.csv_table(text, path)
     missing = [n for n in system.input_names if n not in header]
     if missing:
