@@ -23,8 +23,10 @@ line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.worl
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
 ``obstacles[2].circle.radius``) and what is wrong; unknown keys get the closest known key as a
-hint. YAML is read with ``yaml.safe_load`` semantics (plus a duplicate-key check and YAML 1.2's
-``1e3`` floats: :mod:`fuzzynav.yaml_loader`).
+hint. YAML is read safely by the YAML 1.2 rules (:mod:`fuzzynav.yaml_loader`: ``1:20`` is not
+80, ``1e3`` is a float, duplicate keys refused); every value is bounded by the documented limits
+of :mod:`fuzzynav.world.limits` (``docs/limits.md``), and a goal the robot's body can never reach
+or an obstacle wholly outside the world is refused.
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
 """Save / load fuzzy systems as JSON, YAML or FLL, chosen by the file suffix (thesis-independent).
 
 JSON and YAML hold the document of :mod:`fuzzynav.fuzzy.io.document` (exact round trip);
-``.fll`` is the fuzzylite language (:mod:`fuzzynav.fuzzy.io.fll`). YAML is read with
-``yaml.safe_load`` semantics only (:mod:`fuzzynav.yaml_loader`: duplicate keys rejected, ``1e3``
-read as a float). Syntax errors name the file and the line.
+``.fll`` is the fuzzylite language (:mod:`fuzzynav.fuzzy.io.fll`). Files are read through
+:mod:`fuzzynav.validation` (bounded size and nesting, UTF-8; YAML by the 1.2 rules of
+:mod:`fuzzynav.yaml_loader`). Syntax errors name the file and the line.
 """
 
 from __future__ import annotations
