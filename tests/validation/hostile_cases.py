@@ -153,6 +153,11 @@ CASES = [
     Case("python-zero-length-wall", python="Wall([1, 1], [1, 1])", expect="end: must differ from start"),
     Case("python-nan-command", python="run_episode(load_scenario('example-goal'), Constant(float('nan'), 1.0))",
          expect="controller constant: step 0: returned a non-finite command"),
+    Case("python-checkpoint-rng-out-of-range",
+         python="resume_changed(d, lambda doc: doc['rng']['state'].update(state=-1))", expect="rng: bad RNG state"),
+    Case("python-checkpoint-string-curve-rows",
+         python="resume_changed(d, lambda doc: doc['curve'].update(mean_reward=[['0.5']]))",
+         expect="curve.mean_reward[0]: must hold numbers"),
     Case("python-none-command", python="run_episode(load_scenario('example-goal'), Constant(None, None))",
          expect="controller constant: step 0: returned None"),
 ]
@@ -164,6 +169,20 @@ from fuzzynav.sim.simulator import run_episode
 from fuzzynav.world.scenario import load_scenario
 from fuzzynav.world.shapes import Circle, Polygon, Wall
 from fuzzynav.world.world import World
+
+def resume_changed(d, change):
+    # write a checkpoint, apply change to its document, then load and restore it
+    import json
+    import numpy as np
+    from fuzzynav.learn.checkpoint import load_checkpoint, restore, save_checkpoint
+    from fuzzynav.learn.tabular import TabularLearner
+    path = d / "run.checkpoint.json"
+    curve = {"mean_reward": [[0.0]], "steps": [[1]], "success": [[False]]}
+    save_checkpoint(path, TabularLearner(4, 2), np.random.default_rng(0), 1, curve)
+    document = json.loads(path.read_text())
+    change(document)
+    path.write_text(json.dumps(document))
+    restore(TabularLearner(4, 2), np.random.default_rng(), load_checkpoint(path), str(path))
 
 class Constant(Controller):
     name = "constant"

@@ -3,14 +3,14 @@
 A controller (built-in, learned, or a user's own class) that returns ``None``, a non-number or a
 NaN / infinite steering or speed stops the run with a :class:`~fuzzynav.errors.CommandError`
 naming the controller, the step and the value, instead of turning the pose to NaN (which would
-end as a silent "timeout" with no collision ever detected).
+end as a silent "timeout" with no collision ever detected); start poses must be finite too.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.errors import CommandError
+from fuzzynav.errors import CommandError, InputError
 
 
 def command_values(command, controller: str, step: int) -> tuple[float, float, str]:
@@ -37,6 +37,17 @@ def check_commands(steering, speed, active, n: int, controller: str, step: int):
     bad = np.flatnonzero(np.asarray(active, dtype=bool) & ~(np.isfinite(steering) & np.isfinite(speed)))
     if bad.size:
         i = int(bad[0])
-        raise CommandError(f"returned a non-finite command for robot {i} (steering {steering[i]!r}, "
-                           f"speed {speed[i]!r})", source=f"controller {controller}", field=f"step {step}")
+        raise CommandError(f"returned a non-finite command for robot {i} (steering {float(steering[i])!r}, "
+                           f"speed {float(speed[i])!r})", source=f"controller {controller}", field=f"step {step}")
     return steering, speed
+
+
+def check_starts(starts) -> np.ndarray:
+    """Start poses ``(N, 3)`` given to the simulator: numbers, finite."""
+    try:
+        poses = np.asarray(starts, dtype=float).reshape(-1, 3)
+    except (TypeError, ValueError):
+        raise InputError(f"must be poses (x, y, theta), got {starts!r}", field="starts") from None
+    if not np.isfinite(poses).all():
+        raise InputError("must be finite", field="starts")
+    return poses

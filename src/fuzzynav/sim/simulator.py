@@ -28,7 +28,7 @@ from fuzzynav.control.base import Controller
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
-from fuzzynav.sim.commands import check_commands, command_values
+from fuzzynav.sim.commands import check_commands, check_starts, command_values
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
@@ -55,7 +55,7 @@ class BatchSimulator:
         self.scenario = scenario
         self.params = robot_params
         self.sensors = sensors if sensors is not None else SensorRing()
-        self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
+        self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
         self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,

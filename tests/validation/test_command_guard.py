@@ -1,0 +1,41 @@
+"""The simulator's command guard on the batch path: a NaN command of one robot stops the run
+naming the controller, the step, the robot and the value, before any pose turns NaN."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.errors import CommandError, InputError
+from fuzzynav.sim.simulator import BatchSimulator
+from fuzzynav.world.scenario import load_scenario
+
+
+class NanAtStep3:
+    """A batch controller that steers straight, then returns NaN steering for robot 1 at step 3."""
+
+    name = "nan-at-3"
+
+    def __init__(self):
+        self.calls = 0
+
+    def reset(self, rng=None):
+        self.calls = 0
+
+    def act_batch(self, obs):
+        steering = np.zeros(len(obs.pose))
+        if self.calls == 3:
+            steering[1] = np.nan
+        self.calls += 1
+        return steering, np.ones(len(obs.pose))
+
+
+def test_batch_nan_command_is_refused_before_the_pose():
+    sim = BatchSimulator(load_scenario("example-goal"), NanAtStep3(), n=3)
+    with pytest.raises(CommandError, match=r"controller nan-at-3: step 3: returned a non-finite command for robot 1 "
+                                           r"\(steering nan, speed 1.0\)"):
+        sim.run()
+    assert np.isfinite(sim.pose).all() and sim.k == 3
+
+
+def test_nan_start_pose_is_refused():
+    with pytest.raises(InputError, match="starts: must be finite"):
+        BatchSimulator(load_scenario("example-goal"), NanAtStep3(), starts=[[1.0, np.nan, 0.0]])
