@@ -8,6 +8,8 @@ end as a silent "timeout" with no collision ever detected); start poses must be 
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from fuzzynav.errors import CommandError, InputError
@@ -20,20 +22,24 @@ def command_values(command, controller: str, step: int) -> tuple[float, float, s
     except (AttributeError, TypeError, ValueError, OverflowError):
         raise CommandError(f"returned {command!r}, not a command with numeric steering and speed",
                            source=f"controller {controller}", field=f"step {step}") from None
-    if not (np.isfinite(steering) and np.isfinite(speed)):
+    if not (math.isfinite(steering) and math.isfinite(speed)):
         raise CommandError(f"returned a non-finite command (steering {steering!r}, speed {speed!r})",
                            source=f"controller {controller}", field=f"step {step}")
     return steering, speed, str(getattr(command, "behaviour", ""))
 
 
 def check_commands(steering, speed, active, n: int, controller: str, step: int):
-    """The batch commands ``(n,)`` of the running robots (``active``) as finite float arrays."""
+    """The batch commands ``(n,)`` of the running robots (``active``) as finite float arrays
+    (robots that have finished may return anything: their commands are not used)."""
     try:
-        steering = np.broadcast_to(np.asarray(steering, dtype=float), (n,))
-        speed = np.broadcast_to(np.asarray(speed, dtype=float), (n,))
+        steering, speed = np.asarray(steering, dtype=float), np.asarray(speed, dtype=float)
+        if steering.shape != (n,) or speed.shape != (n,):
+            steering, speed = np.broadcast_to(steering, (n,)), np.broadcast_to(speed, (n,))
     except (TypeError, ValueError):
         raise CommandError(f"returned steering {steering!r} and speed {speed!r}, not {n} numbers each",
                            source=f"controller {controller}", field=f"step {step}") from None
+    if np.isfinite(steering).all() and np.isfinite(speed).all():
+        return steering, speed
     bad = np.flatnonzero(np.asarray(active, dtype=bool) & ~(np.isfinite(steering) & np.isfinite(speed)))
     if bad.size:
         i = int(bad[0])
