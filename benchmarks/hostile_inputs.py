@@ -46,7 +46,8 @@ def run(command: list[str], cwd: Path, timeout: float) -> tuple[int | None, str,
 def command_of(case: Case, directory: Path) -> list[str]:
     if not case.python:
         return FUZZYNAV + argv_of(case, directory)
-    code = (PYTHON_PRELUDE + "\nimport sys\nfrom fuzzynav.errors import InputError\ntry:\n"
+    code = (PYTHON_PRELUDE + "\nimport sys\nfrom pathlib import Path\nfrom fuzzynav.errors import InputError\n"
+            "d = Path.cwd()\ntry:\n"
             f"    {case.python}\nexcept InputError as error:\n    print(error, file=sys.stderr)\n    sys.exit(2)\n")
     return [sys.executable, "-c", code]
 

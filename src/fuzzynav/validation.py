@@ -28,7 +28,7 @@ from fuzzynav.yaml_loader import load_yaml
 
 # -- resource limits (docs/limits.md) ---------------------------------------------------------
 MAX_TEXT_BYTES = 8 * 2**20  # a JSON or FLL fuzzy-system file, a CSV table
-MAX_YAML_BYTES = 2**20  # a YAML scenario or fuzzy-system file (PyYAML reads ~0.3 MB/s of numbers)
+MAX_YAML_BYTES = 2**20  # a YAML scenario or fuzzy-system file (a few seconds of parsing at most)
 MAX_MODEL_BYTES = 64 * 2**20  # a JSON model or checkpoint file
 MAX_NPZ_BYTES = 256 * 2**20  # the arrays of an .npz model, uncompressed, all members together
 MAX_DEPTH = 64  # nesting of lists / mappings in a document

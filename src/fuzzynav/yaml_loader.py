@@ -11,7 +11,10 @@ that reads plain scalars by the YAML 1.2 core schema, with bounds a hostile file
   "billion laughs" document or a 100,000-deep list fails fast instead of exhausting memory or
   the Python stack.
 
-Only safe tags are constructed: no Python objects, ever. Limits: ``docs/limits.md``.
+Only safe tags are constructed: no Python objects, ever. Where PyYAML has libyaml, its C
+parser reads the file (about four times faster) after the aliases and nesting are counted on
+its event stream; otherwise :class:`StrictLoader` counts them while composing. Limits:
+``docs/limits.md``.
 """
 
 from __future__ import annotations
@@ -31,35 +34,19 @@ _FLOAT = re.compile(r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]
                     r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$")
 
 
-class StrictLoader(yaml.SafeLoader):
-    """``yaml.SafeLoader`` with YAML 1.2 core-schema scalars, no duplicate or unhashable keys,
-    and bounded aliases and nesting."""
+class _Core12Resolver(yaml.resolver.BaseResolver):
+    """Implicit tags of plain scalars by the YAML 1.2 core schema (registered below)."""
 
     yaml_implicit_resolvers: dict = {}
-    # the core-schema tags only: ``!!timestamp``, ``!!binary``, ``!!set``... are not constructed
+
+
+class _StrictConstructor(yaml.constructor.SafeConstructor):
+    """The core-schema tags only (``!!timestamp``, ``!!binary``, ``!!set``... are not
+    constructed), no duplicate or unhashable keys, YAML 1.2 integers and floats."""
+
     yaml_constructors = {tag: constructor for tag, constructor in yaml.SafeLoader.yaml_constructors.items()
                          if tag is None or tag.rsplit(":", 1)[-1] in ("null", "bool", "int", "float", "str",
                                                                        "seq", "map")}
-
-    def __init__(self, stream):
-        super().__init__(stream)
-        self._aliases = 0
-        self._depth = 0
-
-    def compose_node(self, parent, index):
-        if self.check_event(yaml.AliasEvent):
-            self._aliases += 1
-            if self._aliases > MAX_ALIASES:
-                raise yaml.composer.ComposerError(None, None, f"more than {MAX_ALIASES} aliases",
-                                                  self.peek_event().start_mark)
-        self._depth += 1
-        try:
-            if self._depth > MAX_DEPTH:
-                raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels",
-                                                  self.peek_event().start_mark)
-            return super().compose_node(parent, index)
-        finally:
-            self._depth -= 1
 
     def construct_mapping(self, node, deep=False):
         seen = set()
@@ -97,14 +84,81 @@ class StrictLoader(yaml.SafeLoader):
             raise yaml.constructor.ConstructorError(None, None, f"not a number: {value!r}", node.start_mark) from None
 
 
-StrictLoader.add_implicit_resolver("tag:yaml.org,2002:null", _NULL, ["~", "n", "N", ""])
-StrictLoader.add_implicit_resolver("tag:yaml.org,2002:bool", _BOOL, list("tTfF"))
-StrictLoader.add_implicit_resolver("tag:yaml.org,2002:int", _INT, list("-+0123456789"))
-StrictLoader.add_implicit_resolver("tag:yaml.org,2002:float", _FLOAT, list("-+0123456789."))
-StrictLoader.add_constructor("tag:yaml.org,2002:int", StrictLoader.construct_yaml_int)
-StrictLoader.add_constructor("tag:yaml.org,2002:float", StrictLoader.construct_yaml_float)
+_Core12Resolver.add_implicit_resolver("tag:yaml.org,2002:null", _NULL, ["~", "n", "N", ""])
+_Core12Resolver.add_implicit_resolver("tag:yaml.org,2002:bool", _BOOL, list("tTfF"))
+_Core12Resolver.add_implicit_resolver("tag:yaml.org,2002:int", _INT, list("-+0123456789"))
+_Core12Resolver.add_implicit_resolver("tag:yaml.org,2002:float", _FLOAT, list("-+0123456789."))
+_StrictConstructor.add_constructor("tag:yaml.org,2002:int", _StrictConstructor.construct_yaml_int)
+_StrictConstructor.add_constructor("tag:yaml.org,2002:float", _StrictConstructor.construct_yaml_float)
+
+
+class StrictLoader(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser, yaml.composer.Composer,
+                   _StrictConstructor, _Core12Resolver):
+    """The pure-Python reader: ``yaml.SafeLoader`` with YAML 1.2 core-schema scalars, no duplicate
+    or unhashable keys, and aliases and nesting bounded while the document is composed."""
+
+    def __init__(self, stream):
+        yaml.reader.Reader.__init__(self, stream)
+        yaml.scanner.Scanner.__init__(self)
+        yaml.parser.Parser.__init__(self)
+        yaml.composer.Composer.__init__(self)
+        _StrictConstructor.__init__(self)
+        _Core12Resolver.__init__(self)
+        self._aliases = 0
+        self._depth = 0
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            self._aliases += 1
+            if self._aliases > MAX_ALIASES:
+                raise yaml.composer.ComposerError(None, None, f"more than {MAX_ALIASES} aliases",
+                                                  self.peek_event().start_mark)
+        self._depth += 1
+        try:
+            if self._depth > MAX_DEPTH:
+                raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels",
+                                                  self.peek_event().start_mark)
+            return super().compose_node(parent, index)
+        finally:
+            self._depth -= 1
+
+
+if yaml.__with_libyaml__:
+    class _StrictCLoader(yaml.cyaml.CParser, _StrictConstructor, _Core12Resolver):
+        """The same reader on libyaml's C parser (about 4 times faster on large files); its
+        composer is C, so aliases and nesting are bounded first, on the event stream."""
+
+        def __init__(self, stream):
+            yaml.cyaml.CParser.__init__(self, stream)
+            _StrictConstructor.__init__(self)
+            _Core12Resolver.__init__(self)
+
+
+def _check_events(text) -> None:
+    """Aliases and nesting of ``text`` within bounds, read from libyaml's event stream."""
+    depth = aliases = 0
+    for event in yaml.parse(text, Loader=yaml.CSafeLoader):
+        if isinstance(event, (yaml.SequenceStartEvent, yaml.MappingStartEvent)):
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise yaml.composer.ComposerError(None, None, f"nested deeper than {MAX_DEPTH} levels",
+                                                  event.start_mark)
+        elif isinstance(event, (yaml.SequenceEndEvent, yaml.MappingEndEvent)):
+            depth -= 1
+        elif isinstance(event, yaml.AliasEvent):
+            aliases += 1
+            if aliases > MAX_ALIASES:
+                raise yaml.composer.ComposerError(None, None, f"more than {MAX_ALIASES} aliases", event.start_mark)
 
 
 def load_yaml(text: str):
-    """Parse YAML text with :class:`StrictLoader`; syntax problems raise ``yaml.YAMLError``."""
+    """Parse YAML text (libyaml's parser when PyYAML has it, else :class:`StrictLoader`);
+    syntax problems and exceeded bounds raise ``yaml.YAMLError``."""
+    if yaml.__with_libyaml__:
+        try:
+            data = text.encode("utf-8")
+        except UnicodeEncodeError as error:  # a lone surrogate in a Python string
+            raise yaml.YAMLError(f"not UTF-8 text ({error.reason})") from None
+        _check_events(data)
+        return yaml.load(data, Loader=_StrictCLoader)  # noqa: S506 — safe constructors only
     return yaml.load(text, Loader=StrictLoader)  # noqa: S506 — a SafeLoader subclass
