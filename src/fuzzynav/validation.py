@@ -271,7 +271,8 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
                               else np.lib.format.read_array_header_2_0)(member, max_header_size=10_000)
                 shape, _, dtype = header
                 if dtype.hasobject:
-                    fail("an array of Python objects (never unpickled)", source, info.filename)
+                    fail(f"cannot read model file: its array {info.filename} holds Python objects, which fuzzynav never loads",
+                         source)
                 declared = dtype.itemsize
                 for n in shape:
                     declared *= n

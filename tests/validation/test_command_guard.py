@@ -39,3 +39,17 @@ def test_batch_nan_command_is_refused_before_the_pose():
 def test_nan_start_pose_is_refused():
     with pytest.raises(InputError, match="starts: must be finite"):
         BatchSimulator(load_scenario("example-goal"), NanAtStep3(), starts=[[1.0, np.nan, 0.0]])
+
+
+def test_compiled_navigator_state_is_checked_after_its_step():
+    """A compiled navigator decides inside the compiled step: a non-finite command it wrote into
+    the state is refused naming the controller, the step, the robot and the value."""
+    from fuzzynav.kernels import step as step_kernel
+    from fuzzynav.sim.commands import check_state
+
+    state = np.zeros((2, len(step_kernel.STATE_FIELDS)))
+    check_state(state, "fuzzy-5b", 7)  # all finite: nothing to say
+    state[1, step_kernel.SPEED] = np.inf
+    with pytest.raises(CommandError, match=r"controller fuzzy-5b: step 7: returned a non-finite command for robot 1 "
+                                           r"\(steering 0.0, speed inf\)"):
+        check_state(state, "fuzzy-5b", 7)

@@ -22,7 +22,8 @@ from fuzzynav.fuzzy.io import dumps, from_document, loads, to_document
 from fuzzynav.fuzzy.systems import get_system
 from fuzzynav.learn.checkpoint import check_same_run, load_checkpoint, restore, save_checkpoint
 from fuzzynav.learn.tabular import TabularLearner
-from fuzzynav.models import load_controller, save_npz_atomic
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.storage import save_document
 from fuzzynav.validation import parse_yaml
 from fuzzynav.world.scenario import read_yaml, scenario_from_dict, BUILTIN_DIR
 
@@ -130,6 +131,12 @@ def test_fuzzy_fll_text(text):
     loads_or_refuses(loads, text, "fll", "<fuzz>")
 
 
+@FUZZ
+@given(mutated_text(dumps(GOAL_SEEKING, "fis")) | st.text(max_size=200))
+def test_fuzzy_fis_text(text):
+    loads_or_refuses(loads, text, "fis", "<fuzz>")
+
+
 # -- model files, checkpoints -------------------------------------------------------------------
 @FUZZ
 @given(st.one_of(st.sampled_from([MODEL, NEURAL]).flatmap(lambda d: mutated(d, FIS_KEYS)), documents(FIS_KEYS)))
@@ -139,7 +146,7 @@ def test_json_model_files(document):
 
 def _npz_bytes() -> bytes:
     path = WORK / "valid.npz"
-    save_npz_atomic(path, kind=np.array("fql-goal"), document=np.array(json.dumps(FIS)))
+    save_document(path, MODEL)
     return path.read_bytes()
 
 

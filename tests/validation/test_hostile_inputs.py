@@ -34,11 +34,11 @@ def test_hostile_input(case, tmp_path, capsys):
 
 def test_fis_convert_output_is_atomic(tmp_path, monkeypatch):
     """``fis convert -o`` writes a temporary file beside the output and renames it onto the output."""
-    import fuzzynav.atomic
+    import fuzzynav.storage
 
     renames = []
     real = os.replace
-    monkeypatch.setattr(fuzzynav.atomic.os, "replace", lambda src, dst: (renames.append((src, dst)), real(src, dst)))
+    monkeypatch.setattr(fuzzynav.storage.os, "replace", lambda src, dst: (renames.append((src, dst)), real(src, dst)))
     out = tmp_path / "g.fll"
     assert main(["fis", "convert", "goal-seeking", "--to", "fll", "-o", str(out)]) == 0
     assert [os.path.basename(dst) for _, dst in renames] == ["g.fll"]
@@ -47,7 +47,7 @@ def test_fis_convert_output_is_atomic(tmp_path, monkeypatch):
 
 
 def test_stale_temporary_is_removed_by_the_next_save(tmp_path):
-    from fuzzynav.models import save_json_atomic
+    from fuzzynav.storage import save_json_atomic
 
     stale = tmp_path / ".m.json.abc123.tmp"
     stale.write_text("half a model")

@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from fuzzynav.errors import CommandError, InputError
+from fuzzynav.kernels import step as step_kernel
 
 
 def command_values(command, controller: str, step: int) -> tuple[float, float, str]:
@@ -46,6 +47,18 @@ def check_commands(steering, speed, active, n: int, controller: str, step: int):
         raise CommandError(f"returned a non-finite command for robot {i} (steering {float(steering[i])!r}, "
                            f"speed {float(speed[i])!r})", source=f"controller {controller}", field=f"step {step}")
     return steering, speed
+
+
+def check_state(state, controller: str, step: int) -> None:
+    """After a compiled navigator's step: the pose and command of every robot finite (the
+    navigator decided inside the compiled call, so its command is checked in the new state)."""
+    moved = state[:, step_kernel.X:step_kernel.SPEED + 1]
+    if np.isfinite(moved).all():
+        return
+    i = int(np.flatnonzero(~np.isfinite(moved).all(axis=1))[0])
+    raise CommandError(f"returned a non-finite command for robot {i} (steering {float(state[i, step_kernel.STEERING])!r}, "
+                       f"speed {float(state[i, step_kernel.SPEED])!r})", source=f"controller {controller}",
+                       field=f"step {step}")
 
 
 def check_starts(starts) -> np.ndarray:

@@ -1,9 +1,9 @@
-"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (issue 3, SPEC §3).
+"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (obstacles of any shape, thesis §IV.7).
 
 Frozen records that check their values when built (an :class:`~fuzzynav.errors.InputError`
 naming the field: NaN sizes, a negative radius, a 2-point polygon, a zero-length wall are
-refused; ranges in :mod:`fuzzynav.world.limits`). The vectorised geometry on many shapes at once lives in
-:mod:`fuzzynav.world.collision` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
+refused; ranges in :mod:`fuzzynav.world.limits`). The vectorised geometry on many shapes at once
+lives in :mod:`fuzzynav.kernels.scene` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
 rectangle of its given thickness around the segment start–end (its ends are square, so two walls
 meeting at a corner leave a notch of thickness/2 unless they overlap). ``to_dict`` gives the
 scenario-file form (docs/ARCHITECTURE.md), so generated worlds can be written back as YAML.
