@@ -156,6 +156,8 @@ def read_document(path) -> dict:
         try:
             document = validation.parse_json(validation.decode(data, str(path)), str(path))
         except InputError as error:
+            if not error.problem.startswith(("invalid JSON", "cannot read file")):
+                raise  # valid JSON past a limit: the error names the field
             where = f", {error.field}" if error.field else ""
             raise InputError(f"cannot read model file: not a valid JSON document ({error.problem}{where})",
                              source=str(path)) from None

@@ -49,16 +49,23 @@ def check_commands(steering, speed, active, n: int, controller: str, step: int):
     return steering, speed
 
 
-def check_state(state, controller: str, step: int) -> None:
-    """After a compiled navigator's step: the pose and command of every robot finite (the
-    navigator decided inside the compiled call, so its command is checked in the new state)."""
+def check_state(state, controller: str, step: int, history=None) -> None:
+    """After a compiled navigator's steps: the pose and command of every robot finite (the
+    navigator decides inside the compiled call, so its commands are checked in the state; the
+    simulator does so every few steps). With ``history`` (the states recorded so far, one per
+    step) the first step that went non-finite is named, else the step ``step`` it was found by."""
     moved = state[:, step_kernel.X:step_kernel.SPEED + 1]
     if np.isfinite(moved).all():
         return
     i = int(np.flatnonzero(~np.isfinite(moved).all(axis=1))[0])
-    raise CommandError(f"returned a non-finite command for robot {i} (steering {float(state[i, step_kernel.STEERING])!r}, "
-                       f"speed {float(state[i, step_kernel.SPEED])!r})", source=f"controller {controller}",
-                       field=f"step {step}")
+    where = f"by step {step}"
+    if history:
+        step = next(k for k, past in enumerate(history)
+                    if not np.isfinite(past[i, step_kernel.X:step_kernel.SPEED + 1]).all())
+        state, where = history[step], f"step {step}"
+    steering, speed = float(state[i, step_kernel.STEERING]), float(state[i, step_kernel.SPEED])
+    raise CommandError(f"returned a non-finite command for robot {i} (steering {steering!r}, speed {speed!r})",
+                       source=f"controller {controller}", field=where)
 
 
 def check_starts(starts) -> np.ndarray:

@@ -27,6 +27,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import Controller
+from fuzzynav.errors import CommandError
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
@@ -43,6 +44,9 @@ RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED
                                         step_kernel.TIMEOUT)
 # the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
 _NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
+# a compiled navigator decides inside the compiled step: its commands are checked in the state
+# every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
+_CHECK_EVERY = 32
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
@@ -201,16 +205,20 @@ class BatchSimulator:
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
-        self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
-                                         self._ranges, self._status)
-        if self._compiled is not None:  # the compiled navigator decided inside the step: its commands checked here
-            check_state(self._state, self.controller_name, self.k)
+        try:
+            self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
+                                             self._ranges, self._status)
+        except ValueError as error:  # a compiled navigator refusing a non-finite input
+            raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
+                               field=f"step {self.k}") from None
         self._observation = None
         if running is not None:
             self._add_noise(running)
         if self.record:
             self._history["behaviour"].append(labels)
             self._record_state()
+        if self._compiled is not None and (self.k % _CHECK_EVERY == 0 or not self._running):
+            check_state(self._state, self.controller_name, self.k, self._history["state"] if self.record else None)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
