@@ -71,6 +71,7 @@ def markdown_table(rows: list[dict]) -> str:
 def run(args) -> int:
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode
+    from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.scenario_file import open_scenario
 
     runs = demo_runs(args.scenario, args.controllers)
@@ -90,7 +91,7 @@ def run(args) -> int:
             plot_episode(trace, scenario, args.out / f"{name}--{controller_name}.png")
         print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} in {row['time_s']:.1f} s",
               flush=True)
-    (args.out / "metrics.json").write_text(json.dumps(rows, indent=2))
-    (args.out / "metrics.md").write_text(markdown_table(rows))
+    write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
+    write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}")
     return 0

@@ -16,7 +16,7 @@ import json
 import sys
 from pathlib import Path
 
-from fuzzynav import progress as progress_bars
+from fuzzynav import progress as progress_bars, validation
 from fuzzynav.cli import arguments
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.catalog.controllers import CONTROLLERS
@@ -53,8 +53,7 @@ def run(args) -> int:
 
     if args.worlds not in KINDS:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
-    if args.n < 1:
-        raise InputError(f"must be >= 1, got {args.n}", field="--n")
+    validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
     if args.fis and args.model:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     systems = systems_from_options(args.controller, args.fis) if args.fis else None

@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 from fuzzynav.catalog.roles import ROLES, default_system
@@ -35,7 +36,7 @@ from fuzzynav.fuzzy.fll_terms import term_to_fll
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
-from fuzzynav.storage import read_document
+from fuzzynav.storage import read_document, savefig_atomic, write_text_atomic
 
 
 def read_model_or_none(path: str) -> dict | None:
@@ -163,18 +164,14 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
 
 
 def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
-    try:
-        text = sys.stdin.read() if path == "-" else Path(path).read_text(encoding="utf-8")
-    except OSError as error:
-        raise InputError(f"cannot read: {error.strerror or error}", source=path) from None
-    reader = csv.DictReader(io.StringIO(text))
-    header = reader.fieldnames or []
+    text = validation.read_text(sys.stdin.buffer if path == "-" else path, source=path)
+    header, table = validation.csv_table(text, path)
     missing = [n for n in system.input_names if n not in header]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)} (header: {', '.join(header)})", source=path,
                          field="header")
     rows = []
-    for line, row in enumerate(reader, start=2):
+    for line, row in table:
         try:
             rows.append([float(row[n]) for n in system.input_names])
         except (TypeError, ValueError):
@@ -230,9 +227,7 @@ def _export_c(args) -> int:
     header_path = source.with_suffix(".h")
     header, code = to_c(system, name=args.name or source.stem, fixed=args.fixed, header_file=header_path.name)
     for path, text in ((header_path, header), (source, code)):
-        tmp = path.with_name(path.name + ".tmp")
-        tmp.write_text(text, encoding="utf-8")
-        tmp.replace(path)
+        write_text_atomic(path, text)
     print(f"{source} {header_path}")
     return 0
 
@@ -250,14 +245,14 @@ def _plot(args) -> int:
             raise InputError(str(error), field="--surface") from None
     else:
         fig = plot_system(system)
-    fig.savefig(args.output, dpi=120)
+    savefig_atomic(fig, args.output, dpi=120)
     print(args.output)
     return 0
 
 
 def _write(text: str, output: str | None) -> None:
     if output and output != "-":
-        Path(output).write_text(text, encoding="utf-8")
+        write_text_atomic(output, text)
     else:
         sys.stdout.write(text)
 

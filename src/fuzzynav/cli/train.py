@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from fuzzynav import progress
+from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
@@ -34,16 +34,16 @@ def register(subparsers) -> None:
 
 def run(args) -> int:
     train = tasks.trainer(args.task)
-    if args.episodes is not None and args.episodes <= 0:
-        raise InputError("must be a positive integer", field="--episodes")
-    if args.checkpoint_every is not None and args.checkpoint_every <= 0:
-        raise InputError("must be a positive integer", field="--checkpoint-every")
+    for flag, value in (("--episodes", args.episodes), ("--checkpoint-every", args.checkpoint_every)):
+        if value is not None:
+            validation.integer(value, field=flag, lo=1, hi=validation.MAX_EPISODES)
     out = args.out or Path(f"{args.task}.json")
     if out.is_dir():
         raise InputError(f"{out} is a directory; give the model file to write", field="--out")
     document_format(out)  # .json or .npz, refused before any training
     request = TrainRequest(
         out=out,
+        task=args.task,
         episodes=args.episodes,
         seed=args.seed,
         resume=args.resume,

@@ -45,7 +45,7 @@ def _save(figure: Figure, out_dir, name: str) -> str:
 
 
 def _request(out_dir, name: str, episodes, seed: int) -> TrainRequest:
-    return TrainRequest(out=Path(out_dir) / "models" / f"{name}-{seed}.json", episodes=episodes, seed=seed,
+    return TrainRequest(out=Path(out_dir) / "models" / f"{name}-{seed}.json", task=name, episodes=episodes, seed=seed,
                         progress=progress.enabled())
 
 

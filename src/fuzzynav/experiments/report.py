@@ -18,6 +18,7 @@ from pathlib import Path
 
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.experiments.claims import CLAIMS
+from fuzzynav.storage import write_text_atomic
 
 RUN_FILE = "run.json"
 STYLE = """
@@ -41,11 +42,11 @@ def record_run(out_dir: Path, key: str, numbers: dict, seconds: float, *, quick:
     """Write ``<id>.json`` (the numbers) and ``run.json`` (time, setting, verdict); returns the record."""
     folder = experiment_dir(out_dir, key)
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / f"{key}.json").write_text(json.dumps(numbers, indent=2, default=float))
+    write_text_atomic(folder / f"{key}.json", json.dumps(numbers, indent=2, default=float))
     holds, verdict = CLAIMS[key].check(numbers)
     record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "holds": holds,
               "verdict": verdict, "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
-    (folder / RUN_FILE).write_text(json.dumps(record, indent=2))
+    write_text_atomic(folder / RUN_FILE, json.dumps(record, indent=2))
     return record
 
 
@@ -99,7 +100,5 @@ experiments in this folder; claims held: {held} of {len(records)}; total run tim
 </body></html>
 """
     path = out_dir / "index.html"
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(page, encoding="utf-8")
-    tmp.replace(path)
+    write_text_atomic(path, page)
     return path

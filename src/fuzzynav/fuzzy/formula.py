@@ -15,6 +15,7 @@ import re
 import numpy as np
 
 from fuzzynav.fuzzy.membership import MembershipFunction
+from fuzzynav.validation import MAX_DEPTH
 
 _UNARY = {"acos": np.arccos, "asin": np.arcsin, "atan": np.arctan, "ceil": np.ceil, "cos": np.cos,
           "cosh": np.cosh, "exp": np.exp, "abs": np.fabs, "fabs": np.fabs, "floor": np.floor, "log": np.log,
@@ -45,7 +46,7 @@ def _tokens(text: str) -> list[str]:
 
 class _Parser:
     def __init__(self, text: str):
-        self.text, self.tokens, self.i = text, _tokens(text), 0
+        self.text, self.tokens, self.i, self.depth = text, _tokens(text), 0, 0
 
     def peek(self):
         return self.tokens[self.i] if self.i < len(self.tokens) else None
@@ -61,15 +62,21 @@ class _Parser:
         tree = self.binary(1)
         if self.peek() is not None:
             raise ValueError(f"unexpected {self.peek()!r} in {self.text!r}")
+        if _depth(tree) > MAX_DEPTH:  # a long chain (1+1+...+1) nests as deep as brackets would
+            raise ValueError(f"formula nested deeper than {MAX_DEPTH} levels (split a long chain with brackets)")
         return tree
 
     def binary(self, level: int):
+        self.depth += 1  # every nesting (brackets, signs, calls, ^ chains) passes here
+        if self.depth > MAX_DEPTH:
+            raise ValueError(f"formula nested deeper than {MAX_DEPTH} levels")
         left = self.unary()
         while (op := self.peek()) in _INFIX and _INFIX[op][0] >= level:
             self.take()
             precedence, fn = _INFIX[op]
             right = self.binary(precedence if precedence == 5 else precedence + 1)  # ^ is right-associative
             left = ("call", fn, [left, right])
+        self.depth -= 1
         return left
 
     def unary(self):
@@ -105,6 +112,17 @@ class _Parser:
         if token[0].isalpha() or token[0] == "_":
             return ("var", token)
         raise ValueError(f"unexpected {token!r} in {self.text!r}")
+
+
+def _depth(tree) -> int:
+    """Nesting depth of a parsed formula, found without recursion."""
+    deepest, stack = 0, [(tree, 1)]
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if node[0] == "call":
+            stack.extend((argument, depth + 1) for argument in node[2])
+    return deepest
 
 
 def _run(tree, values: dict):

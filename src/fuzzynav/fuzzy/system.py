@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import inference
 from fuzzynav.fuzzy.fastpath import StrongPartitionKernel
@@ -78,9 +79,7 @@ class FuzzySystem(VariableNames):
                                    ("centroid",) if method == "mamdani" else ("weighted_sum", "weighted_average"))
         self.implication = _choice("implication", implication, inference.IMPLICATIONS)
         self.aggregation = _choice("aggregation", aggregation, inference.AGGREGATIONS)
-        if int(resolution) < 2:
-            raise InputError(f"must be an integer >= 2, got {resolution!r}", field="resolution")
-        self.resolution = int(resolution)
+        self.resolution = validation.integer(resolution, field="resolution", lo=2, hi=validation.MAX_RESOLUTION)
         self.name = name
         self.description = description
         self._check_variables()
@@ -99,6 +98,11 @@ class FuzzySystem(VariableNames):
         self.check_unique_names()
         if not self.rules:
             raise InputError("a fuzzy system needs at least one rule", field="rules")
+        for var in self.inputs:
+            for label, mf in var.terms.items():
+                if isinstance(mf, Linear):
+                    raise InputError("a linear term concludes a ts1 rule; it cannot describe an input",
+                                     field=f"inputs.{var.name}.{label}")
         allowed = {"ts0": (Singleton,), "ts1": (Singleton, Linear), "tsukamoto": (Ramp, Sigmoid)}
         for var in self.outputs:
             for label, mf in var.terms.items():

@@ -113,6 +113,9 @@ class NeuralInverseModel:
     def from_dict(cls, document, source: str | None = None) -> NeuralInverseModel:
         """Rebuild from :meth:`to_dict`'s document; InputError names the bad field."""
         check_format(document, _FORMAT, _VERSION, "an MLP", source)
+        for key, value in (("activation", "tanh"), ("output_activation", "identity")):
+            if document.get(key, value) != value:  # the only network this class evaluates
+                raise InputError(f"must be {value!r}, got {document.get(key)!r}", source=source, field=key)
         weights, biases = document.get("weights"), document.get("biases")
         if not isinstance(weights, list) or not isinstance(biases, list) or len(weights) != len(biases) or not weights:
             raise InputError("weights and biases must be lists of the same non-zero length", source=source,

@@ -25,14 +25,18 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import Controller
+from fuzzynav.errors import CommandError
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
+from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.world import add_noise
 
@@ -40,6 +44,9 @@ RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED
                                         step_kernel.TIMEOUT)
 # the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
 _NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
+# a compiled navigator decides inside the compiled step: its commands are checked in the state
+# every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
+_CHECK_EVERY = 32
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
@@ -58,10 +65,11 @@ class BatchSimulator:
         self.scenario = scenario
         self.params = robot_params
         self.sensors = sensors if sensors is not None else SensorRing()
-        self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
+        self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
-        self.max_time = float(max_time if max_time is not None else scenario.max_time)
+        self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
+                                          field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
@@ -178,13 +186,13 @@ class BatchSimulator:
         """Commands of the Python controllers, written into the state of the running robots."""
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = out[0], out[1]
+            steering, speed = check_commands(out[0], out[1], obs.active, self.n, self.controller_name, self.k)
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
         else:
             steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
             for i in np.flatnonzero(obs.active):
                 command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
-                steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
+                steering[i], speed[i], labels[i] = command_values(command, self.controller_name, self.k)
         if self._running == self.n:
             self._state[:, step_kernel.STEERING], self._state[:, step_kernel.SPEED] = steering, speed
         else:
@@ -200,14 +208,20 @@ class BatchSimulator:
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
-        self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
-                                         self._ranges, self._status)
+        try:
+            self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
+                                             self._ranges, self._status)
+        except ValueError as error:  # a compiled navigator refusing a non-finite input
+            raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
+                               field=f"step {self.k}") from None
         self._observation = None
         if running is not None:
             self._add_noise(running)
         if self.record:
             self._history["behaviour"].append(labels)
             self._record_state()
+        if self._compiled is not None and (self.k % _CHECK_EVERY == 0 or not self._running):
+            check_state(self._state, self.controller_name, self.k, self._history["state"] if self.record else None)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)

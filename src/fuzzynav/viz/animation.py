@@ -11,7 +11,6 @@ of the episode); every frame shows the time and the active behaviour.
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 from matplotlib import patches
@@ -20,6 +19,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from PIL import Image
 
+from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
 from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
@@ -74,7 +74,6 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
         images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy()))
     palette = images[-1].quantize(colors=64)  # one palette, from the busiest frame (the whole trail)
     images = [image.quantize(palette=palette, dither=Image.Dither.NONE) for image in images]
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    images[0].save(str(path), format="GIF", save_all=True, append_images=images[1:],
-                   duration=max(10, int(round(1000 / fps))), loop=0)
+    atomic_write(path, lambda handle: images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],
+                                                     duration=max(10, int(round(1000 / fps))), loop=0))
     return len(frames)

@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from fuzzynav.storage import savefig_atomic
 from fuzzynav.errors import InputError  # noqa: E402
 from fuzzynav.learn.curves import episodes_to_converge, moving_average  # noqa: E402
 
@@ -56,5 +57,5 @@ def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, lab
     ax.legend(loc="lower right", fontsize="small")
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=120, bbox_inches="tight")
+        savefig_atomic(figure, path, dpi=120, bbox_inches="tight")
     return figure

@@ -16,13 +16,13 @@ Figures are built with :class:`matplotlib.figure.Figure` (no pyplot state, no GU
 from __future__ import annotations
 
 import string
-from pathlib import Path
 
 import numpy as np
 from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
+from fuzzynav.storage import savefig_atomic
 from fuzzynav.sim.trace import Trace
 from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.world.scenario import Scenario
@@ -160,6 +160,5 @@ def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = Fa
 def save_figure(figure: Figure, path, dpi: int = 110) -> str:
     """Save ``figure`` to ``path`` (its folder created), cropped to everything drawn — the
     legends below the axes included; returns the path as a string."""
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=dpi, bbox_inches="tight")
+    savefig_atomic(figure, path, dpi=dpi, bbox_inches="tight")
     return str(path)

@@ -13,6 +13,7 @@ from pathlib import Path
 import yaml
 
 from fuzzynav.errors import InputError
+from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.scenario import Scenario, load_scenario
 
 
@@ -30,14 +31,7 @@ def scenario_yaml(scenario: Scenario, controllers: tuple[str, ...] = ()) -> str:
 def save_scenario(scenario: Scenario, path, controllers: tuple[str, ...] = ()) -> Path:
     """Write ``scenario`` as a YAML scenario file at ``path`` (atomically); returns the path."""
     path = Path(path)
-    tmp = path.with_name(f".{path.name}.tmp")
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp.write_text(scenario_yaml(scenario, controllers), encoding="utf-8")
-        tmp.replace(path)
-    except OSError as error:
-        tmp.unlink(missing_ok=True)
-        raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
+    write_text_atomic(path, scenario_yaml(scenario, controllers))
     return path
 
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fuzzynav.kernels import layout
+from fuzzynav.world import limits
 from fuzzynav.world.shapes import Circle, Ellipse, Shape
 
 
@@ -30,6 +31,10 @@ class World:
 
     def __post_init__(self):
         object.__setattr__(self, "obstacles", tuple(self.obstacles))
+        width, height = limits.world_size(self.width, self.height)
+        object.__setattr__(self, "width", width)
+        object.__setattr__(self, "height", height)
+        limits.world_contents(self.obstacles, width, height)
         circles = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Circle)]
         ellipses = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Ellipse)]
         polygons = [(i, s) for i, s in enumerate(self.obstacles) if not isinstance(s, (Circle, Ellipse))]

@@ -22,6 +22,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import defuzzify
 from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
@@ -77,8 +78,8 @@ class Engine(VariableNames):
                                                                for c in r.conclusions):
                 raise InputError("an output that rules conclude on needs a defuzzifier", field=f"{var.name}.defuzzifier")
             if var.defuzzifier is not None and var.defuzzifier.integral:
-                if var.defuzzifier.resolution < 1:
-                    raise InputError("resolution must be >= 1", field=f"{var.name}.defuzzifier")
+                validation.integer(var.defuzzifier.resolution, field=f"{var.name}.defuzzifier resolution", lo=1,
+                                   hi=validation.MAX_RESOLUTION)
                 for label, mf in var.terms.items():
                     if isinstance(mf, Function) and mf.variables:
                         raise InputError("a Function term of an integral output may use only x",

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from fuzzynav.fuzzy.engine.model import EngineRule, Operator, Proposition
 from fuzzynav.fuzzy.operators import HEDGES
+from fuzzynav.validation import MAX_DEPTH
 
 
 def _words(text: str) -> list[str]:
@@ -56,9 +57,32 @@ def _expression(words, i, variables, level=0):
     return left, i
 
 
+def _nesting(words: list[str]) -> int:
+    """The deepest bracket nesting of ``words``."""
+    depth = deepest = 0
+    for word in words:
+        depth += (word == "(") - (word == ")")
+        deepest = max(deepest, depth)
+    return deepest
+
+
+def _operator_depth(node) -> int:
+    """Depth of a premise tree, found without recursion."""
+    deepest, stack = 0, [(node, 1)]
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if isinstance(node, Operator):
+            stack.extend(((node.left, depth + 1), (node.right, depth + 1)))
+    return deepest
+
+
 def parse_engine_rule(text: str, inputs: dict[str, list[str]], outputs: dict[str, list[str]]) -> EngineRule:
-    """Parse one rule; ``inputs`` / ``outputs`` map variable names to their term labels."""
+    """Parse one rule; ``inputs`` / ``outputs`` map variable names to their term labels. A premise
+    nests at most :data:`~fuzzynav.validation.MAX_DEPTH` levels (brackets, or a chain of and / or)."""
     words = _words(text)
+    if _nesting(words) > MAX_DEPTH:
+        raise ValueError(f"brackets nested deeper than {MAX_DEPTH} levels")
     lowered = [w.lower() for w in words]
     if not words or lowered[0] != "if" or "then" not in lowered:
         raise ValueError("a rule reads 'if ... then ...'")
@@ -72,6 +96,9 @@ def parse_engine_rule(text: str, inputs: dict[str, list[str]], outputs: dict[str
             raise ValueError(f"rule weight {tail[-1]!r} is not a number") from None
         tail = tail[:-2]
     antecedent, end = _expression(words[1:then], 0, {**inputs, **outputs})
+    if _operator_depth(antecedent) > MAX_DEPTH:
+        raise ValueError(f"a premise nested deeper than {MAX_DEPTH} levels (a chain of more than {MAX_DEPTH} "
+                         "and / or)")
     if end != then - 1:
         raise ValueError(f"unexpected {words[1 + end]!r} in the premise")
     conclusions, i = [], 0

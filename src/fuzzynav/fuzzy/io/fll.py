@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from fuzzynav.validation import MAX_RESOLUTION
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVariable, RuleBlock, parse_engine_rule
 from fuzzynav.fuzzy.engine.convert import engine_to_system, system_to_engine
@@ -119,8 +120,8 @@ class _Reader:
             if len(words) > 2:
                 raise self.error(f"{kind} takes at most a resolution, got {value!r}", line)
             resolution = self.number(words[1], line, "resolution") if len(words) > 1 else 1000
-            if not math.isfinite(resolution) or resolution != int(resolution) or resolution < 1:
-                raise self.error(f"resolution must be a positive integer, got {words[1]!r}", line)
+            if not math.isfinite(resolution) or resolution != int(resolution) or not 1 <= resolution <= MAX_RESOLUTION:
+                raise self.error(f"resolution must be an integer in [1, {MAX_RESOLUTION}], got {words[1]!r}", line)
             return Defuzzifier(kind, int(resolution))
         if kind in WEIGHTED:
             kind_type = words[1] if len(words) > 1 else "Automatic"

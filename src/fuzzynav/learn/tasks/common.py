@@ -22,6 +22,7 @@ import numpy as np
 
 from fuzzynav.control.learned import check_speed, model_name
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.coverage import check_covered
 from fuzzynav.fuzzy.io.document import from_document
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
@@ -32,7 +33,7 @@ from fuzzynav.learn.curves import episodes_to_converge
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
-from fuzzynav.storage import save_document
+from fuzzynav.storage import save_document, savefig_atomic
 
 PI = math.pi
 BATCH = 50  # parallel episodes per batch (random starts)
@@ -55,6 +56,7 @@ class TrainRequest:
     """What the user asked of one training run (defaults are each task's own when ``None``)."""
 
     out: Path
+    task: str = ""  # the TASK name, recorded in checkpoints (a resume of another task is refused)
     episodes: int | None = None
     seed: int = 0
     resume: bool = False
@@ -77,8 +79,10 @@ def finish(request: TrainRequest, document: dict, phases: dict, title: str) -> d
 
 def load_fuzzy_model(document: dict, path, build):
     """The controller of a learned fuzzy model file: ``build(system, constant_speed, name)``, with
-    every error naming the file (the system is the file's ``fuzzynav-fis`` document)."""
+    every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
+    must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`)."""
     system = from_document(document, source=str(path))
+    check_covered(system, str(path))
     try:
         return build(system, check_speed(document.get("constant_speed", 1.0), "constant_speed"), model_name(document))
     except InputError as error:
@@ -146,7 +150,9 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             phase.env.batch = size
             result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
                                 checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,
-                                desc=phase.name, extra={"phase": phase.name, "seed": int(request.seed)})
+                                desc=phase.name, budget=phase.episodes,
+                                extra={"task": request.task, "phase": phase.name, "seed": int(request.seed),
+                                       "batch": batch})
             resume, continued = True, continued or result.resumed_from != result.episode
     finally:
         phase.env.batch = batch
@@ -227,8 +233,7 @@ def write_curve(request, phases: dict, title: str) -> None:
     for ax, (name, result) in zip(axes[0], phases.items()):
         plot_learning_curve(result["mean_reward"], ax=ax, window=result["window"], title=f"{title}: {name}",
                             label=name, converged_at=result["converged_at"])
-    Path(request.curve).parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(request.curve, dpi=120, bbox_inches="tight")
+    savefig_atomic(figure, request.curve, dpi=120, bbox_inches="tight")
     plt.close(figure)
 
 

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, DEFAULT_LOOKAHEAD, DEFAULT_SPEED, ModelTracker
 from fuzzynav.errors import InputError
 from fuzzynav.learn.anfis import ANFIS
@@ -134,13 +135,12 @@ def _checked(document: dict, path) -> dict:
     for key in ("model", "input_range"):
         if key not in document:
             raise InputError("missing", source=source, field=key)
-    r = document["input_range"]
-    if not (isinstance(r, list) and len(r) == 2 and all(isinstance(v, (int, float)) for v in r) and r[0] < r[1]):
-        raise InputError(f"must be [lo, hi] with lo < hi, got {r!r}", source=source, field="input_range")
+    lo, hi = validation.numbers(document["input_range"], source, "input_range", length=2)
+    if not lo < hi:
+        raise InputError(f"must be [lo, hi] with lo < hi, got {document['input_range']!r}", source=source,
+                         field="input_range")
     for key in ("speed", "corner_radius", "lookahead"):
-        value = document.get(key, 0.0)
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise InputError(f"must be a number, got {value!r}", source=source, field=key)
+        validation.number(document.get(key, 0.0), source, key, lo=-1e5, hi=1e5)
     return document
 
 
