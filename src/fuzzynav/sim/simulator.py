@@ -13,7 +13,9 @@
    boundary), task done (goal within tolerance / last waypoint / target captured), max_time.
 
 :class:`Simulator` is the one-robot case, returning a :class:`Trace`; :func:`run_episode` is
-the one-call form.
+the one-call form. The robot's parameters (size, wheelbase, limits) are the scenario's
+(:attr:`Scenario.robot`) unless ``robot_params`` overrides them; controllers find them in
+``observation.extras["robot"]``.
 """
 
 from __future__ import annotations
@@ -47,10 +49,10 @@ class BatchSimulator:
     """
 
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = scenario
-        self.params = robot_params
+        self.params = robot_params if robot_params is not None else scenario.robot
         self.sensors = sensors if sensors is not None else SensorRing()
         self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
@@ -129,7 +131,7 @@ class BatchSimulator:
             path=self.task.path,
             waypoint_index=self.task.waypoint_index.copy(),
             target_velocity=self.task.target_velocity(),
-            extras={"task": self.task.kind},
+            extras={"task": self.task.kind, "robot": self.params},
         )
 
     def _act(self, obs: BatchObservation):
@@ -232,7 +234,7 @@ class Simulator:
     """One robot, one episode: ``Simulator(scenario, controller, ...).run() -> Trace``."""
 
     def __init__(self, scenario: Scenario, controller: Controller, *,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, start=None):
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
                                      sensors=sensors, seed=seed, max_time=max_time)
