@@ -16,13 +16,17 @@ way towards it is free.
   ``gain`` for ``patience``.
 - :class:`BoundaryFollowing` is the escape mode (``BF``). It drives the navigator's own
   behaviours towards a *virtual goal* ``offset`` to one side of the heading, ``reach`` ahead,
-  so goal seeking pulls the robot towards the followed boundary and the avoiders push it away:
+  (``search``, nearer the heading, while no obstacle is near), so goal seeking pulls the robot
+  towards the followed boundary and the avoiders push it away:
   the robot runs along the boundary the way the thesis' navigator runs along the U-wall of
   Fig IV.23, and wraps around its corners (a lost boundary leaves the pull alone, which
   turns the robot back to it). The mode ends — the real goal handed back — when the goal is
-  ``gain`` nearer than at the hit and the range ray nearest the goal direction reads the way
-  free (DistBug's leaving rule), or after ``max_time``. A loop while following changes the
-  followed side.
+  ``gain`` nearer than the hit distance, taken as the best distance reached before following
+  (DistBug's d_min), and the range ray nearest the goal direction reads the way free for
+  ``free`` (or up to the goal); or after ``max_time``. (DistBug's own rule, leave where the free
+  range towards the goal would beat d_min, hands a reactive navigator back to the loop it was
+  caught in: its way to the goal is not the straight line.) The followed side is the nearest obstacle's; after
+  a following that ran out of time, or looped, the next one takes the other side.
 """
 
 from __future__ import annotations
@@ -48,6 +52,11 @@ class LoopDetector:
         self._best = math.inf
         self._t_best = None
 
+    @property
+    def best(self) -> float:
+        """The smallest goal distance seen since the last reset (m)."""
+        return self._best
+
     def update(self, t: float, x: float, y: float, goal_distance: float) -> bool:
         """Record this step; True when the robot circles (see the class docstring)."""
         if self._t_best is None or goal_distance < self._best - self.gain:
@@ -64,33 +73,50 @@ class LoopDetector:
 class BoundaryFollowing:
     """The ``BF`` mode of the module docstring for one robot."""
 
-    def __init__(self, offset: float = math.radians(75.0), reach: float = 3.0, gain: float = 0.5,
-                 free: float = 2.0, max_time: float = 60.0):
-        self.offset, self.reach, self.gain, self.free, self.max_time = (float(offset), float(reach), float(gain),
-                                                                       float(free), float(max_time))
+    def __init__(self, offset: float = math.radians(75.0), search: float = math.radians(25.0), near: float = 2.0,
+                 reach: float = 3.0, gain: float = 0.5, free: float = 2.0, max_time: float = 40.0):
+        self.offset, self.search, self.near = float(offset), float(search), float(near)
+        self.reach, self.gain, self.free, self.max_time = float(reach), float(gain), float(free), float(max_time)
         self.reset()
 
     def reset(self) -> None:
-        """Not following; the next escape follows the side of the nearest obstacle."""
+        """Not following, no side tried yet (a new episode)."""
         self.active = False
         self.side = 0
+        self._failed = 0  # the side whose last following ran out of time or looped (0: none)
 
-    def start(self, obs, side: int) -> None:
-        """Begin following the boundary on ``side`` (+1 left, −1 right) from here."""
-        self.active, self.side = True, int(side)
-        self._hit, self._t0 = float(obs.target_distance), obs.t
+    def start(self, obs, best: float) -> None:
+        """Begin following here; ``best`` is the smallest goal distance reached so far (the
+        leaving rule must beat it). The followed side is the nearest obstacle's (Bug: follow what
+        was hit), or the other one after a following on that side
+        ran out of time or looped (a loop while following ends it as failed)."""
+        if self.active:
+            self._failed = self.side
+        side = 1 if obs.obstacle_bearing >= 0 else -1
+        self.active, self.side = True, -self._failed if self._failed else side
+        self._hit, self._t0 = min(float(obs.target_distance), float(best)), obs.t
+
+    def stop(self, succeeded: bool) -> None:
+        """End the following (``succeeded``: by the leaving rule, not by time)."""
+        self._failed = 0 if succeeded else self.side
+        self.active = False
 
     def target(self, obs) -> np.ndarray:
-        """The virtual goal of this step (world frame)."""
+        """The virtual goal of this step (world frame): ``offset`` to the followed side with an
+        obstacle within ``near`` (D_ro or a reading), ``search`` without (a wide arc that finds
+        the boundary again instead of a tight circle in the open)."""
         x, y, theta = (float(v) for v in obs.pose)
-        heading = theta + self.side * self.offset
+        nearest = min(float(obs.obstacle_distance), float(np.min(obs.ranges)))
+        heading = theta + self.side * (self.offset if nearest < self.near else self.search)
         return np.array([x + self.reach * math.cos(heading), y + self.reach * math.sin(heading)])
 
+    def timed_out(self, obs) -> bool:
+        """True after ``max_time`` of following."""
+        return obs.t - self._t0 > self.max_time
+
     def should_leave(self, obs) -> bool:
-        """True when the goal is nearer than at the hit by ``gain`` and its direction is free, or
-        after ``max_time`` of following."""
-        if obs.t - self._t0 > self.max_time:
-            return True
+        """The leaving rule: the goal is ``gain`` nearer than the hit distance and the ray
+        nearest the goal direction (within the ring's ±90°) reads at least min(d, ``free``)."""
         distance, bearing = obs.target_distance, obs.target_bearing
         if distance > self._hit - self.gain or abs(bearing) > math.pi / 2 + 1e-9:
             return False

@@ -115,12 +115,11 @@ class RobustNavigator(Controller):
         x, y = float(obs.pose[0]), float(obs.pose[1])
         seen = obs
         if self.follow is not None:
-            if self.follow.active and self.follow.should_leave(obs):
-                self.follow.active = False
+            if self.follow.active and (self.follow.should_leave(obs) or self.follow.timed_out(obs)):
+                self.follow.stop(succeeded=not self.follow.timed_out(obs))
                 self.loops.reset()
             if self.loops.update(obs.t, x, y, obs.target_distance) and (self.recovery is None or self.recovery.phase is None):
-                side = -self.follow.side if self.follow.active else (1 if obs.obstacle_bearing >= 0 else -1)
-                self.follow.start(obs, side)
+                self.follow.start(obs, self.loops.best)
                 self.loops.reset()
             if self.follow.active:
                 seen = replace(obs, target=self.follow.target(obs))
