@@ -36,6 +36,8 @@ from collections import deque
 
 import numpy as np
 
+from fuzzynav.control.route import route_target
+
 
 class LoopDetector:
     """Circling without progress, from the poses and goal distances of one robot."""
@@ -74,9 +76,11 @@ class BoundaryFollowing:
     """The ``BF`` mode of the module docstring for one robot."""
 
     def __init__(self, offset: float = math.radians(75.0), search: float = math.radians(25.0), near: float = 2.0,
-                 reach: float = 3.0, gain: float = 0.5, free: float = 2.0, max_time: float = 40.0):
+                 reach: float = 3.0, gain: float = 0.5, free: float = 2.0, max_time: float = 40.0,
+                 room: float = 0.7, tight: float = 0.2, ahead: float = 2.5, replan: float = 1.0):
         self.offset, self.search, self.near = float(offset), float(search), float(near)
         self.reach, self.gain, self.free, self.max_time = float(reach), float(gain), float(free), float(max_time)
+        self.room, self.tight, self.ahead, self.replan = float(room), float(tight), float(ahead), float(replan)
         self.reset()
 
     def reset(self) -> None:
@@ -95,17 +99,28 @@ class BoundaryFollowing:
         side = 1 if obs.obstacle_bearing >= 0 else -1
         self.active, self.side = True, -self._failed if self._failed else side
         self._hit, self._t0 = min(float(obs.target_distance), float(best)), obs.t
+        self._route, self._planned = None, -math.inf
 
     def stop(self, succeeded: bool) -> None:
         """End the following (``succeeded``: by the leaving rule, not by time)."""
         self._failed = 0 if succeeded else self.side
         self.active = False
 
-    def target(self, obs) -> np.ndarray:
-        """The virtual goal of this step (world frame): ``offset`` to the followed side with an
-        obstacle within ``near`` (D_ro or a reading), ``search`` without (a wide arc that finds
-        the boundary again instead of a tight circle in the open)."""
+    def target(self, obs, points: np.ndarray, radius: float) -> np.ndarray:
+        """The virtual goal of this step (world frame): ``ahead`` m along the route round the
+        remembered obstacle ``points`` (:func:`route_target`, keeping ``radius`` + ``room``, the
+        room of a turn; where no such route exists, ``radius`` + ``tight``), planned again every ``replan`` s or when the robot is near it; without a route, a point
+        ``offset`` to the followed side with an obstacle within ``near`` (D_ro or a reading),
+        ``search`` without (a wide arc that finds the boundary again, not a tight circle)."""
         x, y, theta = (float(v) for v in obs.pose)
+        stale = self._route is None or math.hypot(self._route[0] - x, self._route[1] - y) < 1.0
+        if stale or obs.t - self._planned >= self.replan - 1e-9:
+            self._route = route_target(points, obs.pose, obs.target, radius + self.room, self.ahead)
+            if self._route is None:
+                self._route = route_target(points, obs.pose, obs.target, radius + self.tight, self.ahead)
+            self._planned = obs.t
+        if self._route is not None:
+            return self._route
         nearest = min(float(obs.obstacle_distance), float(np.min(obs.ranges)))
         heading = theta + self.side * (self.offset if nearest < self.near else self.search)
         return np.array([x + self.reach * math.cos(heading), y + self.reach * math.sin(heading)])

@@ -99,6 +99,11 @@ class ObstacleMemory:
         if grown:
             self._array = np.array(self._points)
 
+    @property
+    def points(self) -> np.ndarray:
+        """Every remembered point, ``(P, 2)`` world frame."""
+        return self._array
+
     def clearance(self, x: float, y: float) -> float:
         """Distance from (x, y) to the nearest remembered point (``inf`` with none)."""
         if not len(self._array):

@@ -122,7 +122,7 @@ class RobustNavigator(Controller):
                 self.follow.start(obs, self.loops.best)
                 self.loops.reset()
             if self.follow.active:
-                seen = replace(obs, target=self.follow.target(obs))
+                seen = replace(obs, target=self.follow.target(obs, self.memory.points, robot.radius))
         command = self.navigator.act(seen)
         label = "BF" if self.follow is not None and self.follow.active else command.behaviour
         if self.recovery is None or robot.max_reverse_speed <= 0:
