@@ -12,21 +12,24 @@ follow the obstacle's boundary, and leave it only where the goal is nearer than 
 way towards it is free.
 
 - :class:`LoopDetector` says when the robot circles: it is back within ``revisit`` of a place
-  it passed at least ``min_lap`` ago (and at most ``horizon``), and its best distance to the goal has not improved by
-  ``gain`` for ``patience``.
+  it passed at least ``min_lap`` ago (and at most ``horizon``), and its best distance to the
+  goal has not improved by ``gain`` for ``patience``.
 - :class:`BoundaryFollowing` is the escape mode (``BF``). It drives the navigator's own
-  behaviours towards a *virtual goal* ``offset`` to one side of the heading, ``reach`` ahead,
-  (``search``, nearer the heading, while no obstacle is near), so goal seeking pulls the robot
-  towards the followed boundary and the avoiders push it away:
-  the robot runs along the boundary the way the thesis' navigator runs along the U-wall of
-  Fig IV.23, and wraps around its corners (a lost boundary leaves the pull alone, which
-  turns the robot back to it). The mode ends — the real goal handed back — when the goal is
-  ``gain`` nearer than the hit distance, taken as the best distance reached before following
-  (DistBug's d_min), and the range ray nearest the goal direction reads the way free for
-  ``free`` (or up to the goal); or after ``max_time``. (DistBug's own rule, leave where the free
-  range towards the goal would beat d_min, hands a reactive navigator back to the loop it was
-  caught in: its way to the goal is not the straight line.) The followed side is the nearest obstacle's; after
-  a following that ran out of time, or looped, the next one takes the other side.
+  behaviours towards a *virtual goal*: a point 2.5 m along the shortest route to the goal round
+  the obstacles remembered so far (:mod:`fuzzynav.control.route`, unseen space assumed free),
+  which runs along the boundaries of what traps the robot, on the side the memory says is
+  shorter; the navigator's avoiders keep it off the boundary. Only where the memory leaves no
+  route does it fall back on following one side: the virtual goal ``offset`` to that side of
+  the heading, ``reach`` ahead (``search``, nearer the heading, while no obstacle is near), so
+  goal seeking pulls the robot towards the boundary and the avoiders push it away, the way the
+  thesis' navigator runs along the U-wall of Fig IV.23. The mode ends — the real goal handed
+  back — when the goal is ``gain`` nearer than the hit distance, taken as the best distance
+  reached before following (DistBug's d_min), and the range ray nearest the goal direction reads
+  the way free for ``free`` (or up to the goal); or after ``max_time``. (DistBug's own rule,
+  leave where the free range towards the goal would beat d_min, hands a reactive navigator back
+  to the loop it was caught in: its way to the goal is not the straight line.) The side
+  followed without a route is the nearest obstacle's; after a following that ran out of time,
+  or looped, the next one takes the other side.
 """
 
 from __future__ import annotations

@@ -27,7 +27,8 @@ from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.shapes import Circle, Ellipse
 
 OBSTACLE_STYLE = {"facecolor": "0.55", "edgecolor": "0.2", "linewidth": 0.8}
-BEHAVIOUR_COLOURS = ("tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown", "tab:pink")
+BEHAVIOUR_COLOURS = ("tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown", "tab:pink",
+                     "tab:gray", "tab:olive", "tab:cyan")
 
 
 def change_labels(n: int) -> list[str]:
