@@ -152,6 +152,9 @@ def main(argv=None) -> int:
                 print(f"{r['controller']:16s} {family:7s} seed {seed}: success {100 * r['success_rate']:5.1f} %  "
                       f"collisions {100 * r['collision_rate']:4.1f} %  timeouts {100 * r['timeout_rate']:4.1f} %  "
                       f"stood still >10 s: {r['stood_still_10s']}  ({r['worlds_from']})", flush=True)
+                for e in r["failures"]:
+                    print(f"    {e['scenario']}: {e['outcome']} at {e['time_s']:.1f} s, {e['goal_distance_m']:.1f} m from "
+                          f"the goal, still for the last {e['still_s']:.1f} s", flush=True)
     if args.json:
         print(json.dumps(results))
     return 0
