@@ -24,6 +24,9 @@ def test_robot_keys_default_to_the_default_robot_and_round_trip():
         (0.15, 0.4, 0.5, 2.0, 0.0)
     assert scenario_from_dict(scenario.to_dict()).robot == robot
     assert "radius" not in scenario_from_dict(_doc()).to_dict()["robot"]  # defaults are not written out
+    pursuit = {"robot": {"x": 2.0, "y": 2.0, "radius": 0.2},
+               "target": {"x": 9.0, "y": 9.0, "motion": {"type": "line", "velocity": [0.1, 0.0]}}}
+    assert scenario_from_dict(pursuit).robot.radius == 0.2  # every task keeps the robot
 
 
 @pytest.mark.parametrize("key, value, problem", [

@@ -264,8 +264,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS), required=("x", "y"))
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
                       check.number(robot.get("theta", 0.0), "robot.theta")])
-    params = _robot_params(check, robot)
-    _place(check, world, start[:2], "robot", "start", params.radius if "radius" in robot else robot_radius)
+    limits = _robot_params(check, robot)
+    _place(check, world, start[:2], "robot", "start", limits.radius if "radius" in robot else robot_radius)
 
     goal = path = target = None
     if "goal" in doc:
@@ -280,8 +280,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             if i and np.array_equal(waypoint, waypoints[i - 1]):
                 check.fail(f"path[{i}]", f"repeats path[{i - 1}] (zero-length segment)")
         speed = check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True)
-        if speed > params.max_speed:
-            check.fail("speed", f"must be at most the robot's {params.max_speed:g} m/s, got {speed:g}")
+        if speed > limits.max_speed:
+            check.fail("speed", f"must be at most the robot's {limits.max_speed:g} m/s, got {speed:g}")
         switching = doc.get("path_switching", PATH_SWITCHING[0])
         if switching not in PATH_SWITCHING:
             check.fail("path_switching", f"must be one of {', '.join(PATH_SWITCHING)}, got {switching!r}")
@@ -325,7 +325,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         description=check.text(doc.get("description", ""), "description"),
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
-        robot=params,
+        robot=limits,
     )
 
 
