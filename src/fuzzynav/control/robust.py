@@ -28,7 +28,6 @@ configuration space). With the default robot nothing changes, so the ``-thesis``
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 import numpy as np
