@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import run_episode
 from fuzzynav.world import generate

@@ -1,23 +1,21 @@
-"""Simulator-core step rate (issue 3, benchmarks): sensing (7 rays), nearest obstacle (D_ro, θ_o),
-kinematics, task and stop tests, for 1, 64 and 1,024 robots (spread over the free space) stepped
-together in a world of 15 mixed obstacles — and IR-SIM's headless step rate for one robot in the
-same world, measured in the same run (``benchmarks/irsim_peer.py`` in a subprocess).
+"""Simulator-core step rate against IR-SIM, in one run: sensing (7 rays), nearest obstacle (D_ro,
+θ_o), the controller, kinematics, task and stop tests, in a world of 15 mixed obstacles.
 
-By default the controller is a trivial vectorised law (``act_batch``: constant speed and steering,
-the robots drive circles), so the numbers measure the simulator, not a fuzzy controller; IR-SIM gets
-the same command. ``--controller fuzzy-5b`` (any registered name) puts that controller in the loop
-instead (goal at (19, 19); only robots still running count, and a batch whose robots have all
-finished starts again), while IR-SIM keeps its constant command. Rates are medians of 7 timed chunks, wall clock and this process's CPU time
-(the latter is steadier on a busy machine). The one-robot chunks alternate with IR-SIM's, so both
-see the same load, and the ratio is the median of the per-chunk ratios. Run:
+One robot is timed with a constant command (the compiled open-loop :class:`ConstantCommand`: the
+numbers measure the simulator) and, with ``--controller NAME``, with that controller in the loop
+(goal at (19, 19); an episode that ends starts again); their chunks alternate with IR-SIM's
+headless chunks of one robot under the same constant command (``benchmarks/irsim_peer.py`` in a
+subprocess), so every ratio compares chunks run under the same load (the ratio is the median of
+the per-chunk ratios). Then batches of 64, 1,024 and 8,192 robots spread over the free space
+(only robots still running count). Rates are medians of 7 chunks, wall clock and this process's
+CPU time (steadier on a busy machine).
 
-    python benchmarks/sim_core.py [--json] [--controller fuzzy-5b] [--irsim-python /work/venv-irsim/bin/python]
+IR-SIM lives in its own virtual environment (it pins its own NumPy): give its Python with
+``--irsim-python PATH`` or the ``IRSIM_PYTHON`` environment variable, or let ``--setup-peers``
+create one (``pip install ir-sim`` into ``--peers-dir``, default ``benchmarks/.peers/irsim``) and
+use it. Without IR-SIM the ratios are reported as unavailable. Run:
 
-``--profile`` instead runs the one-robot loop under cProfile and prints where a step's time goes
-(µs per step by function, cumulative; cProfile inflates each Python call, so read the shares).
-
-``--json`` prints only one JSON object. Without a usable IR-SIM interpreter (or with
-``--irsim-python ''``) the IR-SIM column is reported as unavailable.
+    python benchmarks/sim_core.py --controller fuzzy-5b-thesis --json [--irsim-python PATH | --setup-peers]
 """
 
 from __future__ import annotations
@@ -29,34 +27,22 @@ import statistics
 import subprocess
 import sys
 import time
+import venv
 from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.control.batched import ConstantCommand
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator
-from fuzzynav.world.geometry import wrap_angle
 from fuzzynav.world.scenario import scenario_from_dict
 
 COMMAND = (0.5, 0.4)  # V (m/s), α (rad): circles of radius l / tan α ≈ 1.2 m
-COUNTS = ((1, 2000), (64, 100), (1024, 10))  # robots, steps per timed chunk
-DEFAULT_IRSIM_PYTHON = "/work/venv-irsim/bin/python"
-
-
-class Circling:
-    """Constant command for every robot (they drive circles until they hit something); the
-    command arrays are built once (the simulator clips them into new arrays)."""
-
-    name = "circling"
-
-    def reset(self, rng=None):
-        self.command = None
-
-    def act_batch(self, obs):
-        if self.command is None or len(self.command[0]) != obs.n:
-            self.command = np.full(obs.n, COMMAND[1]), np.full(obs.n, COMMAND[0])
-        return self.command
+ONE_ROBOT_STEPS, IRSIM_STEPS, CHUNKS = 2000, 300, 7
+BATCHES = ((64, 100), (1024, 10), (8192, 3))  # robots, steps per timed chunk
+PEERS_DIR = Path(__file__).with_name(".peers")
 
 
 def obstacles_of_15(seed: int = 0) -> list[dict]:
@@ -106,7 +92,7 @@ class IrSim:
             raise RuntimeError("the IR-SIM peer stopped (see its stderr above)")
         return json.loads(answer)
 
-    def chunk(self, steps: int) -> tuple[float, float]:
+    def chunk(self, steps: int = IRSIM_STEPS) -> tuple[float, float]:
         """Steps per second over ``steps`` steps: (wall clock, CPU time of the peer)."""
         times = self._ask(str(steps))
         return steps / times["wall"], steps / max(times["cpu"], 1e-9)
@@ -116,115 +102,108 @@ class IrSim:
         self.process.wait(timeout=60)
 
 
-def chunks(scenario, starts, steps: int, count: int = 7, between=None, controller=None) -> list[tuple[float, float]]:
-    """``count`` timed chunks of ``steps`` steps: running-robot steps per second (wall clock, CPU
-    time of this process) each; ``between()`` runs after every chunk (IR-SIM's interleaved chunk).
-    ``controller`` defaults to :class:`Circling`; a batch whose robots have all finished restarts."""
-    sim = BatchSimulator(scenario, controller or Circling(), starts=starts, record=False)
-    for _ in range(3):
-        sim.step()
-    rates = []
-    for _ in range(count):
-        done, wall, cpu = 0, 0.0, 0.0
+def setup_irsim(peers: Path) -> str:
+    """The Python of a virtual environment with ``ir-sim`` in ``peers / "irsim"``, created if missing."""
+    home = peers / "irsim"
+    python = home / ("Scripts/python.exe" if os.name == "nt" else "bin/python")
+    if not python.exists():
+        print(f"creating the IR-SIM peer environment in {home} (pip install ir-sim) ...", file=sys.stderr)
+        venv.create(home, with_pip=True)
+        subprocess.run([str(python), "-m", "pip", "install", "--quiet", "ir-sim"], check=True)
+    return str(python)
+
+
+class Timed:
+    """One simulator whose steps are timed in chunks (an ended episode or batch starts again)."""
+
+    def __init__(self, scenario, starts, controller):
+        self.sim = BatchSimulator(scenario, controller, starts=starts, record=False)
+        for _ in range(3):
+            self.sim.step()  # compiled kernels loaded, first-step work done
+
+    def chunk(self, steps: int) -> tuple[float, float]:
+        """Running-robot steps per second over ``steps`` steps: (wall clock, CPU time)."""
+        sim, done, wall, cpu = self.sim, 0, 0.0, 0.0
         for _ in range(steps):
             if sim.done:
                 sim.reset()
-            running = int(sim.active.sum())
+            running = int(np.count_nonzero(sim.active)) if sim.n > 1 else 1
             w0, c0 = time.perf_counter(), time.process_time()
             sim.step()
             wall += time.perf_counter() - w0
             cpu += time.process_time() - c0
             done += running
-        rates.append((done / wall, done / max(cpu, 1e-9)))
-        if between is not None:
-            between()
-    return rates
+        return done / wall, done / max(cpu, 1e-9)
 
 
-def profile(scenario, start, controller, steps: int = 3000, top: int = 25) -> None:
-    """Print µs per step (cumulative, own) of the ``top`` costliest fuzzynav functions in the
-    one-robot loop, under cProfile (``--profile``)."""
-    import cProfile
-    import pstats
-
-    sim = BatchSimulator(scenario, controller or Circling(), starts=start, record=False)
-
-    def loop():
-        for _ in range(steps):
-            if sim.done:
-                sim.reset()
-            sim.step()
-
-    loop()  # warm up: caches, first-call set-up
-    profiler = cProfile.Profile()
-    profiler.runcall(loop)
-    stats = pstats.Stats(profiler).stats
-    rows = sorted(((cum, own, f"{Path(file).name}:{line}({name})") for (file, line, name), (_, _, own, cum, _)
-                   in stats.items() if "fuzzynav" in file), reverse=True)
-    print(f"{'µs/step cumulative':>18} {'own':>7}  function (cProfile, {steps} steps, one robot)")
-    for cum, own, where in rows[:top]:
-        print(f"{cum / steps * 1e6:18.1f} {own / steps * 1e6:7.1f}  {where}")
+def median(rates, k: int) -> float:
+    return statistics.median(r[k] for r in rates)
 
 
-def median_pair(rates) -> tuple[float, float]:
-    return statistics.median(r[0] for r in rates), statistics.median(r[1] for r in rates)
+def ratio(mine, peer, k: int) -> float:
+    """Median over the chunks of mine / peer (wall k = 0, CPU k = 1)."""
+    return round(statistics.median(a[k] / b[k] for a, b in zip(mine, peer)), 1)
 
 
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
-    parser.add_argument("--irsim-python", default=DEFAULT_IRSIM_PYTHON,
-                        help="Python of a venv with ir-sim installed ('' to skip)")
-    parser.add_argument("--controller", metavar="NAME",
-                        help="a registered controller in the loop (e.g. fuzzy-5b) instead of the constant command")
-    parser.add_argument("--profile", action="store_true", help="where the one-robot step's time goes (cProfile)")
+    parser.add_argument("--controller", metavar="NAME", help="a registered controller timed besides the constant "
+                                                             "command (e.g. fuzzy-5b-thesis)")
+    parser.add_argument("--irsim-python", default=os.environ.get("IRSIM_PYTHON", ""),
+                        help="Python of a virtual environment with ir-sim installed (default: $IRSIM_PYTHON)")
+    parser.add_argument("--setup-peers", action="store_true", help="create the IR-SIM environment if needed, use it")
+    parser.add_argument("--peers-dir", type=Path, default=PEERS_DIR, help=f"where --setup-peers puts it ({PEERS_DIR})")
     args = parser.parse_args(argv)
-    make = (lambda: make_controller(args.controller)) if args.controller else (lambda: None)
+    irsim_python = setup_irsim(args.peers_dir) if args.setup_peers else args.irsim_python
     scenario = world_of_15()
     one = start_poses(scenario, 1, clearance=3.0)  # room for the circle of diameter 2.4 m
-    if args.profile:
-        profile(scenario, one, make())
-        return
-    irsim, irsim_rates = None, []
-    if args.irsim_python and os.path.exists(args.irsim_python):
+    controllers = {"constant": lambda: ConstantCommand(COMMAND[1], COMMAND[0])}
+    if args.controller:
+        controllers[args.controller] = lambda: make_controller(args.controller)
+    irsim = None
+    if irsim_python:
         try:
-            irsim = IrSim(args.irsim_python, one[0])
+            irsim = IrSim(irsim_python, one[0])
         except (OSError, RuntimeError, ValueError) as error:
             print(f"IR-SIM unavailable: {error}", file=sys.stderr)
-    between = (lambda: irsim_rates.append(irsim.chunk(300))) if irsim is not None else None
-    single = chunks(scenario, one, COUNTS[0][1], between=between, controller=make())
-    results = {1: median_pair(single)}
-    for n, steps in COUNTS[1:]:
-        results[n] = median_pair(chunks(scenario, start_poses(scenario, n), steps, controller=make()))
-    report = {
-        "benchmark": "sim_core", "controller": args.controller or "circling", "obstacles": 15, "sensors": 7,
-        "robot_steps_per_s_wall": {str(n): round(w) for n, (w, _) in results.items()},
-        "robot_steps_per_s_cpu": {str(n): round(c) for n, (_, c) in results.items()},
-        "irsim": None,
-    }
+    single = {name: Timed(scenario, one, make()) for name, make in controllers.items()}
+    rates = {name: [] for name in single}
+    peer = []
+    for _ in range(CHUNKS):
+        if irsim is not None:
+            peer.append(irsim.chunk())
+        for name, timed in single.items():
+            rates[name].append(timed.chunk(ONE_ROBOT_STEPS))
+    report = {"benchmark": "sim_core", "obstacles": 15, "sensors": 7, "one_robot": {}, "robot_steps_per_s": {},
+              "irsim": None}
+    for name, r in rates.items():
+        row = {"steps_per_s_wall": round(median(r, 0)), "steps_per_s_cpu": round(median(r, 1))}
+        if peer:
+            row.update(x_irsim_wall=ratio(r, peer, 0), x_irsim_cpu=ratio(r, peer, 1))
+        report["one_robot"][name] = row
+    for name, make in controllers.items():
+        report["robot_steps_per_s"][name] = {}
+        for n, steps in BATCHES:
+            timed = Timed(scenario, start_poses(scenario, n), make())
+            r = [timed.chunk(steps) for _ in range(5)]
+            report["robot_steps_per_s"][name][str(n)] = {"wall": round(median(r, 0)), "cpu": round(median(r, 1))}
     if irsim is not None:
         irsim.close()
-        wall, cpu = median_pair(irsim_rates)
-        report["irsim"] = {
-            "version": irsim.info["version"], "beams": irsim.info["beams"],
-            "steps_per_s_wall": round(wall), "steps_per_s_cpu": round(cpu),
-            "ratio_1_robot_wall": round(statistics.median(a[0] / b[0] for a, b in zip(single, irsim_rates)), 1),
-            "ratio_1_robot_cpu": round(statistics.median(a[1] / b[1] for a, b in zip(single, irsim_rates)), 1),
-            "ratio_1024_robots_cpu": round(results[1024][1] / cpu, 1),
-        }
+        report["irsim"] = {"version": irsim.info["version"], "beams": irsim.info["beams"],
+                           "steps_per_s_wall": round(median(peer, 0)), "steps_per_s_cpu": round(median(peer, 1))}
     if args.json:
         print(json.dumps(report))
         return
-    print(f"{'robots':>7} {'robot-steps/s (wall)':>21} {'robot-steps/s (CPU)':>20} {'steps/s (wall)':>15}")
-    for n, (wall, cpu) in results.items():
-        print(f"{n:7d} {wall:21,.0f} {cpu:20,.0f} {wall / n:15,.0f}")
-    if irsim is None:
-        print("IR-SIM: unavailable (see --irsim-python)")
-    else:
-        r = report["irsim"]
-        print(f"IR-SIM {r['version']} (1 robot, {r['beams']} beams, headless): {r['steps_per_s_wall']:,} steps/s wall, "
-              f"{r['steps_per_s_cpu']:,} CPU; fuzzynav / IR-SIM: {r['ratio_1_robot_wall']}x wall, "
-              f"{r['ratio_1_robot_cpu']}x CPU (1 robot), {r['ratio_1024_robots_cpu']}x CPU (1,024 robots)")
+    for name, row in report["one_robot"].items():
+        ratios = (f"  {row['x_irsim_wall']}x IR-SIM wall, {row['x_irsim_cpu']}x CPU" if peer else "")
+        print(f"1 robot, {name:12s} {row['steps_per_s_wall']:>10,} steps/s wall {row['steps_per_s_cpu']:>10,} CPU{ratios}")
+    for name, rows in report["robot_steps_per_s"].items():
+        for n, row in rows.items():
+            print(f"{n:>5} robots, {name:10s} {row['wall']:>10,} robot-steps/s wall {row['cpu']:>10,} CPU")
+    print("IR-SIM: unavailable (--irsim-python, IRSIM_PYTHON or --setup-peers)" if irsim is None else
+          f"IR-SIM {report['irsim']['version']} (1 robot, headless): {report['irsim']['steps_per_s_wall']:,} steps/s "
+          f"wall, {report['irsim']['steps_per_s_cpu']:,} CPU")
     print(json.dumps(report))
 
 

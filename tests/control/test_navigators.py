@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import run_episode
 from fuzzynav.sim.simulator import BatchSimulator

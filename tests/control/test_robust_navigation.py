@@ -16,7 +16,7 @@ import pytest
 
 from fuzzynav.control.escape import LoopDetector
 from fuzzynav.control.recovery import recovery_system
-from fuzzynav.control.registry import CONTROLLERS, make_controller
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 

@@ -3,43 +3,53 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control import supervisor
-from fuzzynav.control.registry import make_controller
-from fuzzynav.control.turning_room import TURN_RADIUS, HitMemory, step_clearance, turning_room
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.turning_room import TURN_RADIUS
+from fuzzynav.kernels import guard
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.trajectories import merged_changes
 from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 
+RANK = (0, 1)
+
+
 def test_switch_adds_caution_at_once_and_removes_it_after_the_dwell():
-    switch = supervisor.Switch(rank=(0, 1), dwell=3)
-    free = np.ones(1, dtype=bool)
-    assert switch(np.array([0]), free)[0] == 0
-    assert switch(np.array([1]), free)[0] == 1  # more caution: immediately
-    assert [switch(np.array([0]), free)[0] for _ in range(4)] == [1, 1, 1, 0]  # less: after 3 steps held
-    assert switch(np.array([1]), free)[0] == 1
-    assert [switch(np.array([0]), ~free)[0] for _ in range(5)] == [1] * 5  # not released: stays
+    state = np.array([-1, 0])
+    assert guard.switch(state, 0, True, RANK, 3) == 0
+    assert guard.switch(state, 1, True, RANK, 3) == 1  # more caution, urgent: immediately
+    assert [guard.switch(state, 0, True, RANK, 3) for _ in range(4)] == [1, 1, 1, 0]  # less: after 3 steps held
+    assert [guard.switch(state, 1, False, RANK, 3) for _ in range(5)] == [0, 0, 0, 1, 1]  # not urgent: the dwell
+
+
+def _memory_of(points):
+    """A one-step hit memory holding the robot-frame ``points`` of a robot at the origin facing +x."""
+    memory = np.zeros((1, len(points), 3))
+    memory[0, :, :2], memory[0, :, 2] = points, 1.0
+    return memory
 
 
 def test_turning_room_of_a_wall_ahead():
     y = np.linspace(-3, 3, 61)
     for distance in (0.8, 1.5, 3.0):
-        wall = np.column_stack([np.full_like(y, distance), y])[None]
-        left, right, ahead = turning_room(wall, np.ones((1, len(y)), dtype=bool))
+        memory = _memory_of(np.column_stack([np.full_like(y, distance), y]))
+        left, right, ahead = guard.turning_room(memory, 0.0, 0.0, 0.0, 0.3, TURN_RADIUS)
         # a half turn reaches R ahead of the robot, its body 0.3 m further (eq IV.1)
-        assert left[0] == pytest.approx(distance - TURN_RADIUS - 0.3, abs=0.02) == right[0]
-        assert ahead[0] == pytest.approx(distance - 0.3)
+        assert left == pytest.approx(distance - TURN_RADIUS - 0.3, abs=0.02) == right
+        assert ahead == pytest.approx(distance - 0.3)
 
 
-def test_hit_memory_returns_points_in_the_robot_frame():
-    memory = HitMemory(steps=2)
-    pose = np.array([[1.0, 2.0, np.pi / 2]])
-    points, valid = memory.update(pose, np.array([[1.0, 4.0]]), np.array([0.0, 0.5]), max_range=4.0)
-    np.testing.assert_allclose(points[0, valid[0]], [[1.0, 0.0]], atol=1e-12)  # the max-range reading is no hit
-    moved = np.array([[1.0, 2.5, np.pi / 2]])
-    points, valid = memory.update(moved, np.array([[4.0, 4.0]]), np.array([0.0, 0.5]), max_range=4.0)
-    np.testing.assert_allclose(points[0, valid[0]], [[0.5, 0.0]], atol=1e-12)  # remembered, now 0.5 m ahead
+def test_hit_memory_keeps_world_points_seen_from_the_new_pose():
+    memory = np.zeros((2, 3, 3))  # 2 steps, 2 rays + the cone echo
+    angles = np.array([0.0, 0.5])
+    guard.remember(memory, 0, 1.0, 2.0, np.pi / 2, np.array([1.0, 4.0]), angles, 4.0, np.inf, 0.0, 0.26)
+    np.testing.assert_allclose(memory[0, :, 2], [1.0, 0.0, 0.0])  # the max-range reading is no hit, no echo
+    np.testing.assert_allclose(memory[0, 0, :2], [1.0, 3.0], atol=1e-12)
+    guard.remember(memory, 1, 1.0, 2.5, np.pi / 2, np.array([4.0, 4.0]), angles, 4.0, 2.0, 0.1, 0.26)
+    np.testing.assert_allclose(memory[1, 2, 2], 1.0)  # the nearest point within the cone: an echo
+    x, y = guard.local(memory, 0, 0, 1.0, 2.5, np.cos(np.pi / 2), np.sin(np.pi / 2))
+    assert (x, y) == pytest.approx((0.5, 0.0), abs=1e-12)  # remembered, now 0.5 m ahead
 
 
 @pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b-thesis"), ("fig-IV-15b", "fuzzy-2b-thesis"),
@@ -68,11 +78,11 @@ def test_start_facing_a_wall_turns_at_full_lock_without_collision():
 
 
 def test_step_clearance_is_the_gap_after_one_straight_step():
-    points = np.array([[[1.0, 0.0], [0.0, 2.0]]])
-    valid = np.array([[True, True]])
+    memory = _memory_of([[1.0, 0.0], [0.0, 2.0]])
     # eq IV.2: the next position is V Δt straight ahead, the body a disc of 0.3 m
-    assert step_clearance(points, valid, np.array([2.0]), 0.1)[0] == pytest.approx(1.0 - 0.2 - 0.3)
-    assert step_clearance(points, ~valid, np.array([2.0]), 0.1)[0] == np.inf
+    assert guard.step_clearance(memory, 0.0, 0.0, 0.0, 2.0 * 0.1, 0.3) == pytest.approx(1.0 - 0.2 - 0.3)
+    memory[..., 2] = 0.0
+    assert guard.step_clearance(memory, 0.0, 0.0, 0.0, 0.2, 0.3) == np.inf
 
 
 def test_safety_stop_turns_a_hidden_wall_end_into_a_stop():

@@ -1,11 +1,12 @@
-"""Batch-first controllers: one NumPy decision over many robots, a one-robot ``act`` on top.
+"""Batch-first controllers: one decision over many robots, a one-robot ``act`` on top.
 
-The chapter IV navigators map what N robots sense to (α, V) — with per-robot memory where they
-have one (the behaviour switch, the recent range hits), kept in arrays over the robot axis — so each
-implements :meth:`BatchedController.act_batch` over a
+A :class:`BatchedController` implements :meth:`BatchedController.act_batch` over a
 :class:`~fuzzynav.sim.observation.BatchObservation`-like object (arrays with a leading robot
 axis) and inherits :meth:`act`, which views one :class:`~fuzzynav.control.base.Observation` as a
-batch of one (DESIGN.md: "a scalar convenience call may wrap the batch path").
+batch of one. The chapter IV navigators are :class:`CompiledNavigator` s: their decision — with
+per-robot memory where they have one (the behaviour switch, the recent range hits), kept in
+arrays over the robot axis — is compiled (:mod:`fuzzynav.kernels.navigators`), and the simulator
+runs it inside its own compiled step.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller, Observation
 from fuzzynav.errors import InputError
-from fuzzynav.world.geometry import wrap_angle
+from fuzzynav.kernels.angles import wrap_angle
 
 
 @dataclass(frozen=True)
@@ -34,6 +35,7 @@ class OneRobot:
     pose: np.ndarray  # (1, 3)
     dt: float
     max_range: float
+    target: np.ndarray | None = None  # (1, 2)
 
     @classmethod
     def of(cls, obs: Observation) -> "OneRobot":
@@ -43,7 +45,8 @@ class OneRobot:
         return cls(one(obs.target_distance), one(obs.target_bearing),
                    None if obs.ranges is None else np.asarray(obs.ranges, dtype=float)[None, :],
                    obs.sensor_angles, one(obs.speed, 0.0), one(obs.obstacle_distance), one(obs.obstacle_bearing, 0.0),
-                   np.asarray(obs.pose, dtype=float)[None, :], float(obs.dt), float(obs.max_range))
+                   np.asarray(obs.pose, dtype=float)[None, :], float(obs.dt), float(obs.max_range),
+                   None if obs.target is None else np.asarray(obs.target, dtype=float)[None, :])
 
 
 class BatchedController(Controller):
@@ -58,26 +61,130 @@ class BatchedController(Controller):
         return Command(float(steering[0]), float(speed[0]), str(labels[0]))
 
 
-def evaluate(system, X) -> np.ndarray:
-    """``system.evaluate(X)`` for a batch ``(N, n_in)``; a single row takes the fuzzy library's
-    plain-Python scalar path (:meth:`FuzzySystem.evaluate_one`, a few µs instead of the ~0.1 ms
-    of NumPy's per-call overhead), which matters for one robot stepped at a time."""
-    if len(X) == 1:
-        return np.array([system.evaluate_one(*X[0].tolist())])
-    return system.evaluate(X)
+class CompiledNavigator(BatchedController):
+    """A navigator whose decision is compiled (:func:`fuzzynav.kernels.navigators.act`).
+
+    Subclasses set ``kind`` (a :mod:`fuzzynav.kernels.navigators` code), ``labels`` (behaviour
+    label of each mode code), ``roles`` (the names of their rule bases, in the kernel's order),
+    ``sensors_deg`` (the ring directions they read, or ``None``) and ``memory`` (steps of hit
+    memory, 0 for none), and call :meth:`_build` with their rule bases and parameters. The
+    state of each robot (mode, hold count, turn side, hits) lives in arrays; the simulator steps
+    the navigator inside its own compiled step (:meth:`compiled`).
+    """
+
+    kind: int
+    labels: tuple[str, ...]
+    roles: tuple[str, ...]
+    sensors_deg: tuple[float, ...] | None = None
+    memory: int = 0
+
+    def _build(self, systems, defaults, params: np.ndarray) -> None:
+        """Pack the rule bases (``systems`` by role, missing roles from ``defaults()``) and keep
+        ``params`` (the kernel's parameter vector, sensor columns filled in on first use)."""
+        unknown = set(systems or {}) - set(self.roles)
+        if unknown:
+            raise InputError(f"unknown role(s) {', '.join(sorted(unknown))}; {self.name} has "
+                             f"{', '.join(self.roles)}", field="systems")
+        chosen = {**defaults(), **dict(systems or {})}
+        self.systems = {role: chosen[role] for role in self.roles}
+        from fuzzynav.kernels import ts0
+
+        self.tables = ts0.pack(list(self.systems.values()), [f"{self.name} {role}" for role in self.roles]) \
+            if self.roles else np.zeros(1)
+        self.params = params
+        self._angles = None
+        self.reset()
+
+    def reset(self, rng=None) -> None:
+        """Forget the modes, turns and hits (a new episode)."""
+        self._state = None
+
+    def for_robot(self, robot) -> "CompiledNavigator":
+        """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
+        scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
+        body radius and, for ``fuzzy-5b``, a top speed no higher than the robot's. The default
+        robot leaves the parameters as built."""
+        from fuzzynav.kernels import navigators
+
+        if not hasattr(self, "_as_built"):
+            self._as_built = self.params.copy()
+        built, params = self._as_built, self.params
+        if self.kind in (navigators.CONSTANT, navigators.WALL_FOLLOWER) or built[navigators.WHEELBASE] <= 0:
+            return self
+        params[navigators.WHEELBASE] = robot.wheelbase
+        params[navigators.TURN_RADIUS] = built[navigators.TURN_RADIUS] * (robot.wheelbase / built[navigators.WHEELBASE])
+        params[navigators.BODY] = robot.radius
+        if self.kind == navigators.FIVE_BEHAVIOURS:
+            params[navigators.V_MAX] = min(built[navigators.V_MAX], robot.max_speed)
+        return self
+
+    def compiled(self, n: int, sensor_angles):
+        """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
+        ``(kind, params, tables, state, memory)``; the state is this navigator's own (kept across
+        calls, cleared by :meth:`reset`)."""
+        angles = np.asarray(sensor_angles, dtype=float).reshape(-1)
+        if self._angles is None or not np.array_equal(angles, self._angles):
+            if self.sensors_deg is not None:
+                columns = sensor_columns(angles, self.sensors_deg)
+                from fuzzynav.kernels import navigators
+
+                at = navigators.COLUMNS if self.kind == navigators.FIVE_BEHAVIOURS else navigators.WALL_COLUMNS
+                self.params[at:at + len(columns)] = columns
+            self._angles, self._state = angles.copy(), None
+        if self._state is None or len(self._state) != n:
+            self._state = np.zeros((n, 4), dtype=np.int64)
+            self._state[:, 0] = -1  # no mode yet
+            self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
+        return self.kind, self.params, self.tables, self._state, self._memory
+
+    def act_batch(self, obs):
+        """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""
+        from fuzzynav.kernels import navigators
+
+        n = len(obs.speed)
+        if obs.ranges is None and self.sensors_deg is not None:
+            raise InputError("this controller needs range sensors", field="sensors")
+        angles = obs.sensor_angles if obs.ranges is not None else np.zeros(0)
+        kind, params, tables, state, memory = self.compiled(n, angles)
+        ranges = np.zeros((n, 0)) if obs.ranges is None else obs.ranges
+        active = getattr(obs, "active", None)
+        out = np.zeros((n, 3))
+        navigators.act(kind, params, tables, state, memory, *(np.ascontiguousarray(v, dtype=float) for v in (
+            obs.pose, obs.speed, obs.target, ranges, angles)), float(obs.max_range), float(obs.dt),
+            np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
+            np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_), out)
+        return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
 
 
-def evaluate_columns(system, *columns) -> np.ndarray:
-    """:func:`evaluate` on inputs given as columns ``(N,)`` each; one robot skips the stacking."""
-    if len(columns[0]) == 1:
-        return np.array([system.evaluate_one(*[float(column[0]) for column in columns])])
-    return system.evaluate(np.column_stack(columns))
+def navigator_params(**values) -> np.ndarray:
+    """The parameter vector of :mod:`fuzzynav.kernels.navigators` with the named entries set
+    (names are its index constants in lower case)."""
+    from fuzzynav.kernels import navigators
+
+    params = np.zeros(navigators.N_PARAMS)
+    for name, value in values.items():
+        params[getattr(navigators, name.upper())] = value
+    return params
+
+
+class ConstantCommand(CompiledNavigator):
+    """The same command (α, V) at every step (open loop): a reference for timing the simulator
+    itself, and a scripted drive. Label: ``constant``."""
+
+    name = "constant"
+    labels, roles = ("constant",), ()
+
+    def __init__(self, steering: float = 0.0, speed: float = 1.0):
+        from fuzzynav.kernels import navigators
+
+        self.kind = navigators.CONSTANT
+        self._build({}, dict, navigator_params(steering=steering, speed=speed))
 
 
 def sensor_columns(angles, wanted_deg, source: str = "sensors") -> np.ndarray:
     """Indices of the readings pointing at ``wanted_deg`` (degrees, CCW from the heading).
 
-    The navigators address the thesis' sensors C1…C7 by direction (SPEC §3.3), so any ring that
+    The navigators address the thesis' sensors C1…C7 by direction (thesis §IV.7), so any ring that
     contains those directions works; a missing one raises :class:`InputError`.
     """
     if angles is None:

@@ -15,8 +15,8 @@ table) plus a ``kind`` that says how the controller reads its inputs:
   :class:`LearnedWallFollower`.
 
 The tabular Q-learning goal seeker (§VI.2, Figs VI.1–VI.4) is :class:`TabularGoalSeeker`; its
-model (kind ``q-goal``) holds a Q table and is loaded by :mod:`fuzzynav.experiments.train_rl`,
-which owns the (d_rg, θ_rg) discretiser.
+model (kind ``q-goal``) holds a Q table. Each model kind is written and read by its training task
+(one module per task family under ``fuzzynav/learn/tasks``), which owns its document.
 
 The input features — :func:`goal_inputs`, :func:`side_distances`, :func:`openness` — are defined here once and
 used by the training environments too (:mod:`fuzzynav.learn.envs`), so a controller sees exactly
@@ -25,11 +25,9 @@ what its learner saw.
 
 from __future__ import annotations
 
-from abc import abstractmethod
-
 import numpy as np
 
-from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.control.base import BatchController, thesis_angle_error
 from fuzzynav.errors import InputError
 from fuzzynav.world.geometry import wrap_angle
 
@@ -44,7 +42,7 @@ N_SENSORS = 7
 def goal_inputs(pose, target) -> np.ndarray:
     """(d_rg, θ_r − θ_d) of robots ``pose`` (B, 3) towards ``target`` (B, 2) → (B, 2).
 
-    d_rg is eq IV.6; the angle is the thesis' table input (SPEC §0, eq IV.8 with the sign that
+    d_rg is eq IV.6; the angle is the thesis' table input (eq IV.8 with the sign of :func:`~fuzzynav.control.base.thesis_angle_error` that
     makes its tables steer towards the goal): negative when the goal is on the left.
     """
     pose = np.asarray(pose, dtype=float).reshape(-1, 3)
@@ -138,21 +136,6 @@ def _batch(obs):
     return pose, target, ranges
 
 
-class _Learned(Controller):
-    """Common part: a batch policy ``_commands(obs) -> (steering, speed, labels)`` and its scalar form."""
-
-    def act_batch(self, obs):
-        return self._commands(obs)
-
-    def act(self, obs) -> Command:
-        steering, speed, labels = self._commands(obs)
-        return Command(float(steering[0]), float(speed[0]), labels[0])
-
-    @abstractmethod
-    def _commands(self, obs):
-        """``(steering (B,), speed (B,), labels)`` for a batch observation."""
-
-
 def _outputs(system, names: tuple[str, ...]) -> list[int]:
     found = [system.output_names.index(n) if n in system.output_names else -1 for n in names]
     if found[0] < 0:
@@ -161,7 +144,7 @@ def _outputs(system, names: tuple[str, ...]) -> list[int]:
     return found
 
 
-class FuzzyGoalSeeker(_Learned):
+class FuzzyGoalSeeker(BatchController):
     """Learned TS0 goal seeker (§VI.5.1): system(drg, theta) → α [, V_r]; Figs VI.10, VI.14, VI.15."""
 
     def __init__(self, system, constant_speed: float = 1.0, name: str = "fql-goal"):
@@ -173,7 +156,7 @@ class FuzzyGoalSeeker(_Learned):
         self.constant_speed = float(constant_speed)
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         pose, target, _ = _batch(obs)
         if target is None:
             raise InputError("goal seeking needs a goal (a goal task)", field="target")
@@ -182,7 +165,7 @@ class FuzzyGoalSeeker(_Learned):
         return out[:, self.alpha_index], speed, ["goal seeking"] * len(out)
 
 
-class TabularGoalSeeker(_Learned):
+class TabularGoalSeeker(BatchController):
     """Greedy policy of a Q table over (d_rg, θ_rg) states (§VI.2, Figs VI.2–VI.3).
 
     ``state_of(d_rg, angle) -> state indices`` is the discretiser the table was learned on,
@@ -199,7 +182,7 @@ class TabularGoalSeeker(_Learned):
         self.speed = check_speed(speed, "speed")
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         pose, target, _ = _batch(obs)
         x = goal_inputs(pose, target)
         actions = self.greedy[self.state_of(x[:, 0], x[:, 1])]
@@ -234,11 +217,18 @@ def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params
     return (np.where(goal, goal_command[:, 0], blended[:, 0]), np.where(goal, goal_speed, blended[:, 1]), goal)
 
 
+def with_goal_seeking(alpha, speed, free, goal_command):
+    """(α, V_r) (B,) of the learned navigator: the avoider's shares ``alpha``, ``speed`` plus
+    w_free = ``free`` times the goal seeker's command ``goal_command`` (B, 2) — the blend of
+    :class:`LearnedAvoidanceNavigator`, also what the avoider's training drives."""
+    return alpha + free * goal_command[:, 0], speed + free * goal_command[:, 1]
+
+
 GUARD_MARGIN = 0.5  # m: room the guard keeps for the full-lock half turn (as fuzzy-5b's room_margin)
 GUARD_SPEED = 0.3  # m/s: speed of the guard's turn (fuzzy-5b's v_floor)
 
 
-class LearnedAvoidanceNavigator(_Learned):
+class LearnedAvoidanceNavigator(BatchController):
     """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
 
     ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances —
@@ -303,20 +293,36 @@ class LearnedAvoidanceNavigator(_Learned):
 
     def blend(self, distances, goal_command):
         """(α, V_r, w_free) from the avoider's inputs (B, 3 or 4) and the goal seeker's (α, V_r) (B, 2)."""
+        alpha, speed, free = self.avoider_shares(distances)
+        return (*with_goal_seeking(alpha, speed, free, goal_command), free)
+
+    def avoider_shares(self, distances):
+        """(Σ_i w_i α_i, Σ_i w_i V_i, w_free) (B,) of the learned rules for the avoider's inputs."""
         out = self.avoidance.evaluate(distances)
         free = self.free_share(distances)
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
-        return out[:, self.alpha_index] + free * goal_command[:, 0], speed + free * goal_command[:, 1], free
+        return out[:, self.alpha_index], speed, free
 
-    def _commands(self, obs):
+    def goal_command(self, goal) -> np.ndarray:
+        """The goal seeker's (α, V_r) (B, 2) for (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`)."""
+        return np.column_stack(self.goal(goal[:, 0], -goal[:, 1])[:2])
+
+    def drive(self, alpha, speed, free, goal_command, ranges, goal):
+        """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended with the goal
+        seeker's ``goal_command`` by ``free`` (:func:`with_goal_seeking`) and handed to goal seeking
+        alone where the supervisor finds the way clear (:func:`supervise`). The avoider's training
+        drives the robot through this method with the learner's shares in place of the rules'."""
+        blended = np.column_stack(with_goal_seeking(alpha, speed, free, goal_command))
+        return supervise(blended, goal_command, ranges, goal[:, 0], -goal[:, 1], self.params)
+
+    def act_batch(self, obs):
         pose, target, ranges = _batch(obs)
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
-        goal_command = np.column_stack(self.goal(x[:, 0], -x[:, 1])[:2])
-        alpha, speed, _ = self.blend(avoidance_inputs(ranges, self.open_side), goal_command)
-        steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
-                                          self.params)
+        goal_command = self.goal_command(x)
+        steering, speed, goal = self.drive(*self.avoider_shares(avoidance_inputs(ranges, self.open_side)), goal_command,
+                                           ranges, x)
         labels = np.where(goal, "goal seeking", "obstacle avoidance")
         if self.guard is not None:
             steering, speed, labels = self._guarded(obs, steering, speed, labels, -x[:, 1])
@@ -336,7 +342,7 @@ class LearnedAvoidanceNavigator(_Learned):
                 np.where(turn, "turn guard", labels))
 
 
-class LearnedWallFollower(_Learned):
+class LearnedWallFollower(BatchController):
     """The FQL-optimised wall follower (§VI.5.3.2): system(dd, df, dg) → α, V_r (Figs VI.29–VI.30).
 
     The rules of the hand-made follower (:mod:`fuzzynav.control.wall_following`, Table VI.2) with
@@ -359,7 +365,7 @@ class LearnedWallFollower(_Learned):
         self.sensing = sensing
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         _, _, ranges = _batch(obs)
         if ranges is None:
             raise InputError("wall following needs the range readings", field="ranges")
@@ -376,26 +382,3 @@ def model_name(document: dict) -> str:
     if not isinstance(task, str) or not task:
         raise InputError(f"must be the name of the training task, got {task!r}", field="training.task")
     return task
-
-
-def load_fuzzy_model(document: dict, path) -> Controller:
-    """Loader of the ``fql-goal``, ``fql-avoid`` and ``fql-wall`` model kinds (fuzzynav.models)."""
-    from fuzzynav.fuzzy.io.document import from_document
-
-    kind = document.get("kind")
-    system = from_document(document, source=str(path))
-    try:
-        speed = check_speed(document.get("constant_speed", 1.0), "constant_speed")
-        name = model_name(document)
-        if kind == "fql-goal":
-            return FuzzyGoalSeeker(system, speed, name=name)
-        if kind == "fql-avoid":
-            guard = document.get("turn_guard", False)
-            if not isinstance(guard, bool):
-                raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
-            return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
-        if kind == "fql-wall":
-            return LearnedWallFollower(system, document.get("sensing", "modules"), name=name)
-    except InputError as error:
-        raise InputError(error.problem, source=str(path), field=error.field) from None
-    raise InputError(f"not a learned fuzzy controller (kind {kind!r})", source=str(path), field="kind")

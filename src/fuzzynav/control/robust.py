@@ -17,83 +17,33 @@ The thesis navigator runs every step (its hit memory and behaviour switch stay c
 layer in charge replaces its command. The labels in the trace are the navigator's, or
 ``REC-BACK``, ``REC-TURN``, ``BF``.
 
-**The robot's size and limits** come from the observation (``extras["robot"]``, the
-scenario's ``robot:`` keys): the navigator is built with the robot's wheelbase (the anti-orbit
-guard of goal seeking) and top speed, and — its tables, turning room and safety stop being
-written for the thesis' 0.3 m body — sees every range reading and D_ro shortened by the
-difference between the robot's radius and 0.3 m (the obstacles grown by it, as in a
-configuration space). With the default robot nothing changes, so the ``-thesis`` variants
-(:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`, no layers) drive exactly as published.
+**The robot's size and limits** (the scenario's ``robot:`` keys) reach the navigators through
+their compiled parameter vector: the simulator calls :meth:`CompiledNavigator.for_robot
+<fuzzynav.control.batched.CompiledNavigator.for_robot>` with its robot, which sets the wheelbase
+(the anti-orbit guard of goal seeking, the full-lock turn radius), the body radius (turning room
+and safety stop) and the top speed; the layers read the robot from ``extras["robot"]``. With the
+default robot nothing changes, so the ``-thesis`` variants (:func:`fuzzy_5b_thesis`,
+:func:`fuzzy_2b_thesis`, the compiled navigators without layers) drive exactly as published.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
 
-import numpy as np
-
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.escape import BoundaryFollowing, LoopDetector
 from fuzzynav.control.recovery import ObstacleMemory, Recovery
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
-THESIS_BODY = DEFAULT_PARAMS.radius  # the footprint the thesis navigators' distances are written for (m)
-
-
-def sized(obs, robot):
-    """``obs`` (one robot or a batch) as a robot of the thesis' body sees it: readings and D_ro
-    shortened by ``robot.radius`` − 0.3 m (a reading at the range stays "nothing seen")."""
-    grow = robot.radius - THESIS_BODY
-    if grow == 0.0:
-        return obs
-    changes = {}
-    if obs.ranges is not None:
-        ranges = np.asarray(obs.ranges, dtype=float)
-        changes["ranges"] = np.where(ranges < obs.max_range - 1e-9, np.clip(ranges - grow, 0.0, obs.max_range), ranges)
-    if obs.obstacle_distance is not None:
-        distance = np.asarray(obs.obstacle_distance, dtype=float) - grow
-        changes["obstacle_distance"] = float(distance) if distance.ndim == 0 else distance
-    return replace(obs, **changes)
-
-
-class SizedNavigator(Controller):
-    """A thesis navigator ``factory(**options)`` built for the robot of the observation and fed
-    :func:`sized` observations; one robot (:meth:`act`) or a batch (:meth:`act_batch`)."""
-
-    def __init__(self, factory, name: str, speed_option: str | None = None, **options):
-        self.factory, self.name, self.speed_option, self.options = factory, name, speed_option, options
-        self.navigator, self._built_for = None, None
-
-    def reset(self, rng=None) -> None:
-        if self.navigator is not None:
-            self.navigator.reset(rng)
-
-    def _navigator_for(self, robot):
-        """The thesis navigator built for ``robot`` (rebuilt when its wheelbase or top speed change)."""
-        key = (robot.wheelbase, robot.max_speed)
-        if self.navigator is None or self._built_for != key:
-            sizes = {"wheelbase": robot.wheelbase}
-            if self.speed_option:
-                sizes[self.speed_option] = robot.max_speed
-            self.navigator, self._built_for = self.factory(**{**sizes, **self.options}), key
-        return self.navigator
-
-    def act(self, obs) -> Command:
-        robot = obs.extras.get("robot", DEFAULT_PARAMS)
-        return self._navigator_for(robot).act(sized(obs, robot))
-
-    def act_batch(self, obs):
-        robot = obs.extras.get("robot", DEFAULT_PARAMS)
-        return self._navigator_for(robot).act_batch(sized(obs, robot))
-
 
 class RobustNavigator(Controller):
-    """A :class:`SizedNavigator` with the recovery and loop-escape layers (either can be switched
-    off: ``recovery=False``, ``escape=False``)."""
+    """A thesis navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`) with the
+    recovery and loop-escape layers (either can be switched off: ``recovery=False``,
+    ``escape=False``); ``systems`` of the navigator are its rule bases by role."""
 
-    def __init__(self, navigator: SizedNavigator, *, recovery: bool = True, escape: bool = True,
+    def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0):
-        self.navigator, self.name = navigator, navigator.name
+        self.navigator, self.name = navigator, name
         self.recovery = Recovery() if recovery else None
         self.follow = BoundaryFollowing() if escape else None
         self.loops = LoopDetector()
@@ -107,6 +57,21 @@ class RobustNavigator(Controller):
             if part is not None:
                 part.reset()
         self._stopped = 0.0
+
+    @property
+    def systems(self) -> dict:
+        """The navigator's rule bases by role."""
+        return self.navigator.systems
+
+    @property
+    def roles(self) -> tuple[str, ...]:
+        """The names of the navigator's rule bases."""
+        return self.navigator.roles
+
+    def for_robot(self, robot) -> "RobustNavigator":
+        """Size the navigator for ``robot`` (:class:`TricycleParams`)."""
+        self.navigator.for_robot(robot)
+        return self
 
     def act(self, obs) -> Command:
         robot = obs.extras.get("robot", DEFAULT_PARAMS)
@@ -141,33 +106,39 @@ class RobustNavigator(Controller):
         return Command(command.steering, command.speed, label)
 
 
-def _five(**options):
+def _five(name: str, **options):
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
 
-    return FiveBehaviourNavigator(**options)
+    navigator = FiveBehaviourNavigator(**options)
+    navigator.name = name
+    return navigator
 
 
-def _two(**options):
+def _two(name: str, **options):
     from fuzzynav.control.avoidance import TwoBehaviourNavigator
 
-    return TwoBehaviourNavigator(**options)
+    navigator = TwoBehaviourNavigator(**options)
+    navigator.name = name
+    return navigator
 
 
 def fuzzy_5b(*, recovery: bool = True, escape: bool = True, **options) -> RobustNavigator:
-    """``fuzzy-5b``: the five-behaviour navigator of §IV.7 with recovery and loop escape."""
-    return RobustNavigator(SizedNavigator(_five, "fuzzy-5b", "v_max", **options), recovery=recovery, escape=escape)
+    """``fuzzy-5b``: the five-behaviour navigator of §IV.7 with recovery and loop escape
+    (``options``, e.g. ``systems=``, go to the navigator)."""
+    return RobustNavigator(_five("fuzzy-5b", **options), "fuzzy-5b", recovery=recovery, escape=escape)
 
 
 def fuzzy_2b(*, recovery: bool = True, escape: bool = True, **options) -> RobustNavigator:
-    """``fuzzy-2b``: the two-behaviour navigator of Fig IV.9 with recovery and loop escape."""
-    return RobustNavigator(SizedNavigator(_two, "fuzzy-2b", **options), recovery=recovery, escape=escape)
+    """``fuzzy-2b``: the two-behaviour navigator of Fig IV.9 with recovery and loop escape
+    (``options``, e.g. ``systems=``, go to the navigator)."""
+    return RobustNavigator(_two("fuzzy-2b", **options), "fuzzy-2b", recovery=recovery, escape=escape)
 
 
-def fuzzy_5b_thesis(**options) -> SizedNavigator:
+def fuzzy_5b_thesis(**options):
     """``fuzzy-5b-thesis``: the five-behaviour navigator of §IV.7 as published (no layers)."""
-    return SizedNavigator(_five, "fuzzy-5b-thesis", "v_max", **options)
+    return _five("fuzzy-5b-thesis", **options)
 
 
-def fuzzy_2b_thesis(**options) -> SizedNavigator:
+def fuzzy_2b_thesis(**options):
     """``fuzzy-2b-thesis``: the two-behaviour navigator of Fig IV.9 as published (no layers)."""
-    return SizedNavigator(_two, "fuzzy-2b-thesis", **options)
+    return _two("fuzzy-2b-thesis", **options)

@@ -6,34 +6,33 @@ It reads three distances — d_d on the right (C6, −90°), d_f ahead (C1, 0°)
 episode ends at the goal only if the followed wall leads there). With nothing seen between its
 three rays, it cuts sharp corners and hits their tips or meets an acute corner too late: the
 collisions of Fig VI.28 that the QLF-optimised follower of §VI.5.3.2 removes. Label: ``WF``.
+
+Rule base by role (``systems=``): ``"wall"`` (d_d, d_f, d_g) → (α, V_r) [Table VI.2]. The decision
+is compiled (:func:`fuzzynav.kernels.navigators.act_one`).
 """
 
 from __future__ import annotations
 
-import numpy as np
+from collections.abc import Mapping
 
-from fuzzynav.control.batched import BatchedController, evaluate, sensor_columns
+from fuzzynav.control.batched import CompiledNavigator, navigator_params
 from fuzzynav.fuzzy.systems_navigation import wall_follower
+from fuzzynav.kernels.navigators import WALL_FOLLOWER
 
 WALL_SENSORS_DEG = (-90.0, 0.0, 90.0)  # d_d, d_f, d_g
 
 
-class WallFollower(BatchedController):
-    """Table VI.2 on (d_d, d_f, d_g)."""
+class WallFollower(CompiledNavigator):
+    """Table VI.2 on (d_d, d_f, d_g); role ``"wall"``. ``system_options`` go to
+    :func:`~fuzzynav.fuzzy.systems_navigation.wall_follower` (the default table)."""
 
     name = "wall-follow"
+    kind, labels, roles, sensors_deg = WALL_FOLLOWER, ("WF",), ("wall",), WALL_SENSORS_DEG
 
-    def __init__(self, **system_options):
-        self.system = wall_follower(**system_options)
-        self._columns = None
-
-    def act_batch(self, obs):
-        if self._columns is None:
-            self._columns = sensor_columns(obs.sensor_angles, WALL_SENSORS_DEG)
-        out = evaluate(self.system, np.asarray(obs.ranges, dtype=float)[:, self._columns])
-        return out[:, 0], out[:, 1], np.full(len(out), "WF")
+    def __init__(self, systems: Mapping | None = None, **system_options):
+        self._build(systems, lambda: {"wall": wall_follower(**system_options)}, navigator_params())
 
 
 def make(**options) -> WallFollower:
-    """Factory of the ``wall-follow`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``wall-follow`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return WallFollower(**options)

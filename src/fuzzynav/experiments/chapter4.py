@@ -26,10 +26,10 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory
+from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 # Fig IV.12: (start x, y, θ), (goal x, y) per panel; the first pair is the built-in scenario.
@@ -42,10 +42,7 @@ FIG_IV_12 = {
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def _outcome(trace, scenario) -> dict:
@@ -135,10 +132,12 @@ def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
         numbers = evaluate(controller, worlds, n, seed)
         numbers.pop("episodes")
         result[f"{controller}/{worlds}"] = numbers
-        rates = [numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
-        ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
-    ax.set_xticks(np.arange(3) + 0.2, ["success", "collision", "timeout"])
-    ax.set_ylim(0, 1)
-    ax.legend()
+        rates = [100 * numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
+        bars = ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
+        ax.bar_label(bars, fmt="%.0f %%", fontsize=8)
+    ax.set_xticks(np.arange(3) + 0.2, ["reached the goal", "collided", "timed out"])
+    ax.set_ylabel("share of the worlds (%)")
+    ax.set_ylim(0, 110)
+    ax.legend(loc="upper right")
     result["figure"] = _save(figure, out_dir, "eval-IV.png")
     return result

@@ -28,7 +28,7 @@ from fuzzynav.fuzzy import inference
 from fuzzynav.fuzzy.fastpath import StrongPartitionKernel
 from fuzzynav.fuzzy.membership import Linear, Ramp, Sigmoid, Singleton
 from fuzzynav.fuzzy.rules import Rule, parse_rule
-from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.fuzzy.variable import Variable, VariableNames
 
 METHODS = ("ts0", "ts1", "tsukamoto", "mamdani")
 _DEFAULT_DEFUZZIFIER = {"ts0": "weighted_average", "ts1": "weighted_average",
@@ -51,7 +51,7 @@ def _choice(name: str, value: str, allowed: Sequence[str]) -> str:
     return value
 
 
-class FuzzySystem:
+class FuzzySystem(VariableNames):
     """A fuzzy inference system: ``evaluate(X)`` maps (N, n_inputs) to (N, n_outputs)."""
 
     def __init__(
@@ -89,14 +89,6 @@ class FuzzySystem:
 
     # ------------------------------------------------------------------ construction
     @property
-    def input_names(self) -> list[str]:
-        return [v.name for v in self.inputs]
-
-    @property
-    def output_names(self) -> list[str]:
-        return [v.name for v in self.outputs]
-
-    @property
     def fast(self) -> bool:
         """True when evaluation runs on the piecewise-linear kernel of :mod:`fastpath`."""
         return self._kernel is not None
@@ -104,10 +96,7 @@ class FuzzySystem:
     def _check_variables(self) -> None:
         if not self.inputs or not self.outputs:
             raise InputError("a fuzzy system needs at least one input and one output", field="variables")
-        names = self.input_names + self.output_names
-        dupes = sorted({n for n in names if names.count(n) > 1})
-        if dupes:
-            raise InputError(f"duplicate variable name(s) {', '.join(dupes)}", field="variables")
+        self.check_unique_names()
         if not self.rules:
             raise InputError("a fuzzy system needs at least one rule", field="rules")
         allowed = {"ts0": (Singleton,), "ts1": (Singleton, Linear), "tsukamoto": (Ramp, Sigmoid)}

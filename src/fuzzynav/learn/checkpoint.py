@@ -1,7 +1,7 @@
 """Resumable training: checkpoints of a learner + RNG + episode counter + curve, and a train loop.
 
 A checkpoint is one JSON document (``.json``, or the same document stored as a 0-d string in an
-``.npz``) written atomically (temporary file, then rename — :mod:`fuzzynav.models`), so an
+``.npz``) written atomically (temporary file, then rename — :mod:`fuzzynav.storage`), so an
 interrupted run (Ctrl-C, crash) always leaves the previous checkpoint intact. It holds
 
 - ``learner``: the learner's :meth:`to_dict` (qualities, visit counts, its episode counter),
@@ -25,7 +25,6 @@ the others until the whole batch is done; their results are ignored.
 
 from __future__ import annotations
 
-import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,7 +34,7 @@ from tqdm import tqdm
 
 from fuzzynav.errors import InputError
 from fuzzynav.learn.state import episode_count, restore_state
-from fuzzynav.models import read_model, save_json_atomic, save_npz_atomic
+from fuzzynav.storage import read_document, save_document
 
 KIND = "fuzzynav-checkpoint"
 _STATE_FIELDS = ("q", "visits", "episode", "premise")
@@ -44,7 +43,7 @@ _CURVE_FIELDS = ("mean_reward", "steps", "success")
 
 def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve: dict,
                     extra: dict | None = None) -> None:
-    """Write a checkpoint atomically (``.npz`` suffix → NPZ, anything else → JSON)."""
+    """Write a checkpoint atomically in the format of its extension (``.json`` or ``.npz``)."""
     document = {
         "kind": KIND,
         "episode": int(episode),
@@ -54,21 +53,15 @@ def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve
         "extra": extra or {},
         "saved_at": time.time(),
     }
-    path = Path(path)
-    if path.suffix == ".npz":
-        save_npz_atomic(path, kind=np.array(KIND), document=np.array(json.dumps(document)))
-    else:
-        save_json_atomic(path, document)
+    save_document(Path(path), document)
 
 
 def load_checkpoint(path) -> dict:
     """Read a checkpoint document written by :func:`save_checkpoint`."""
-    document = read_model(path)
+    document = read_document(path)
     if document["kind"] != KIND:
         raise InputError(f"not a training checkpoint (kind {document['kind']!r})", source=str(path),
                          field="kind")
-    if "document" in document:
-        document = json.loads(str(document["document"]))
     for name in ("episode", "rng", "learner", "curve"):
         if name not in document:
             raise InputError("missing field in checkpoint", source=str(path), field=name)
@@ -147,7 +140,7 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
     ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
     (B) and ``desc`` only label the bar: it then counts single episodes, B per batch, starting
     from the single episodes of the curve restored (a resumed run whose earlier batches had
-    another size, e.g. the smaller last batch of ``experiments.train_rl.batch_plan``).
+    another size, e.g. the smaller last batch of ``learn.tasks.common.batch_plan``).
     """
     if int(episodes) != episodes or episodes < 0:
         raise InputError(f"must be a non-negative integer, got {episodes!r}", field="episodes")

@@ -1,4 +1,4 @@
-"""Tricycle (car-like) robot kinematics, SPEC §1 / thesis §IV.4, eq IV.1–IV.2.
+"""Tricycle (car-like) robot kinematics, thesis §IV.4, eq IV.1–IV.2.
 
 Two rear driving wheels on one motor, one steered front wheel. Controls: steering α (rad,
 α > 0 turns left) and linear speed V (m/s). State: pose (x, y, θ), θ CCW from +x.
@@ -17,13 +17,12 @@ pose ``(3,)`` with scalar commands works too.
 
 from __future__ import annotations
 
-import math
+import functools
 from dataclasses import dataclass
 
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.world.geometry import wrap_angle
 
 INTEGRATORS = ("euler", "arc")
 
@@ -67,15 +66,27 @@ class TricycleParams:
 
     def clip(self, steering, speed):
         """Clip commands to the limits: |α| ≤ max_steering, :attr:`lowest_speed` ≤ V ≤ max_speed
-        (NaN stays NaN). Returns new arrays; one robot's ``(1,)`` commands are clipped as floats."""
+        (NaN stays NaN). Returns new arrays."""
         low = self.lowest_speed
-        if isinstance(steering, np.ndarray) and isinstance(speed, np.ndarray) and steering.shape == speed.shape == (1,):
-            # max/min keep a NaN first argument, as np.maximum/np.minimum propagate it
-            return (np.array([min(max(float(steering[0]), -self.max_steering), self.max_steering)]),
-                    np.array([min(max(float(speed[0]), low), self.max_speed)]))
         steering = np.minimum(np.maximum(steering, -self.max_steering), self.max_steering)
         speed = np.minimum(np.maximum(speed, low), self.max_speed)
         return steering, speed
+
+    def array(self, integrator: str | None = None) -> np.ndarray:
+        """The parameters as the kernels read them (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`; a
+        shared read-only array)."""
+        method = integrator or self.integrator
+        if method not in INTEGRATORS:
+            raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
+        return _robot_array(self, method)
+
+
+@functools.lru_cache(maxsize=16)
+def _robot_array(params: TricycleParams, method: str) -> np.ndarray:
+    values = np.array([params.dt, params.wheelbase, params.radius, params.max_steering, params.lowest_speed,
+                       params.max_speed, float(method == "arc")])
+    values.flags.writeable = False
+    return values
 
 
 DEFAULT_PARAMS = TricycleParams()
@@ -88,51 +99,16 @@ def step(pose, steering, speed, params: TricycleParams = DEFAULT_PARAMS, integra
     ``"euler"`` is eq IV.2: x += Δt V cos θ, y += Δt V sin θ, θ += Δt V tan(α) / l.
     ``"arc"`` integrates eq IV.1 exactly: with ω = V tan(α) / l and θ' = θ + ω Δt,
     x += V (sin θ' − sin θ) / ω, y −= V (cos θ' − cos θ) / ω (the straight line when ω → 0).
-    Returns the new poses (same shape), θ wrapped to (−π, π].
-
-    One pose ``(1, 3)`` with ``(1,)`` commands is advanced with Python floats (``math``), where
-    NumPy's fixed cost per call would dominate; the formulas are the same code.
+    Returns the new poses (same shape), θ wrapped to (−π, π] (:func:`fuzzynav.kernels.motion.advance`).
     """
+    from fuzzynav.kernels import motion  # numba, imported when first needed
+
+    robot = params.array(integrator)
     pose = np.asarray(pose, dtype=float)
-    method = integrator or params.integrator
-    if method not in INTEGRATORS:
-        raise InputError(f"must be one of {', '.join(INTEGRATORS)}", field="integrator")
-    if pose.shape == (1, 3) and np.shape(steering) == (1,) and np.shape(speed) == (1,):
-        x, y, theta = pose[0].tolist()
-        try:
-            moved = _advance(x, y, theta, float(steering[0]), float(speed[0]), params, method, _FLOAT_MATH)
-        except ValueError:  # math refuses inf where NumPy returns nan
-            pass
-        else:
-            return np.array([moved])
-    x, y, theta = _advance(pose[..., 0], pose[..., 1], pose[..., 2], steering, speed, params, method, _ARRAY_MATH)
-    out = np.empty(np.broadcast(x, theta).shape + (3,))  # one array, no stacking of temporaries
-    out[..., 0] = x
-    out[..., 1] = y
-    out[..., 2] = theta
-    return out
-
-
-def _advance(x, y, theta, steering, speed, params: TricycleParams, method: str, functions):
-    """New (x, y, θ) of :func:`step`, for floats or arrays: ``functions`` = (tan, cos, sin, sinc)."""
-    tan, cos, sin, sinc = functions
-    dt = params.dt
-    omega = speed * tan(steering) / params.wheelbase
-    new_theta = wrap_angle(theta + omega * dt)
-    if method == "euler":
-        chord, direction = dt * speed, theta
-    else:  # "arc": sin/cos differences written with half-angles, well conditioned as ω → 0
-        half = 0.5 * omega * dt
-        chord = dt * speed * sinc(half / np.pi)  # = 2 V sin(half) / ω
-        direction = theta + half
-    return x + chord * cos(direction), y + chord * sin(direction), new_theta
-
-
-def _float_sinc(x: float) -> float:
-    """``numpy.sinc`` for one float (the same formula): sin(πx) / (πx), 1 at 0."""
-    y = np.pi * (1.0e-20 if x == 0 else x)
-    return math.sin(y) / y
-
-
-_ARRAY_MATH = (np.tan, np.cos, np.sin, np.sinc)
-_FLOAT_MATH = (math.tan, math.cos, math.sin, _float_sinc)
+    shape = np.broadcast_shapes(pose.shape[:-1], np.shape(steering), np.shape(speed))
+    poses = np.ascontiguousarray(pose if pose.shape[:-1] == shape else np.broadcast_to(pose, shape + (3,))).reshape(-1, 3)
+    steering, speed = (np.ascontiguousarray(v if np.shape(v) == shape else np.broadcast_to(v, shape), dtype=float)
+                       .reshape(-1) for v in (steering, speed))
+    out = np.empty_like(poses)
+    motion.advance_all(poses, steering, speed, robot, out)
+    return out.reshape(shape + (3,))

@@ -1,4 +1,4 @@
-"""Numbers of one episode (issue 3, `fuzzynav run --json`): a flat JSON-safe dict.
+"""Numbers of one episode (`fuzzynav run --json`): a flat JSON-safe dict.
 
 Always: ``scenario``, ``controller``, ``task``, ``outcome``, ``reached_goal`` (goal reached, path
 completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``,
@@ -7,7 +7,7 @@ the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
 ``mean_speed_mps``, ``final_distance_m`` (to the goal / current waypoint / target),
 ``steering_effort_rad`` (mean |α|) and ``steering_variation_rad`` (Σ |Δα|).
 Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
-``max_cross_track_m`` (distance from each visited position to the path polyline, SPEC §4).
+``max_cross_track_m`` (distance from each visited position to the path polyline, thesis §V.4).
 Target tasks add ``captured``, ``capture_time_s`` (None when not captured) and
 ``final_error_m`` (robot–target distance at the end).
 """
@@ -19,7 +19,6 @@ import math
 import numpy as np
 
 from fuzzynav.sim.trace import Trace
-from fuzzynav.world import collision
 from fuzzynav.world.scenario import Scenario
 
 
@@ -33,8 +32,10 @@ def cross_track(positions, waypoints) -> np.ndarray:
     waypoints = np.asarray(waypoints, dtype=float)
     if len(waypoints) == 1:
         return np.hypot(*(positions - waypoints[0]).T)
-    distance, _ = collision.segment_distance(np.asarray(positions, dtype=float), waypoints[:-1], waypoints[1:])
-    return distance.min(axis=1)
+    points, a, e = np.asarray(positions, dtype=float)[:, None, :], waypoints[None, :-1], np.diff(waypoints, axis=0)
+    u = np.clip(np.einsum("nmk,mk->nm", points - a, e) / np.einsum("ij,ij->i", e, e), 0.0, 1.0)
+    gap = points - (a + u[..., None] * e[None])  # to the nearest point of each segment
+    return np.hypot(gap[..., 0], gap[..., 1]).min(axis=1)
 
 
 def metrics(trace: Trace, scenario: Scenario) -> dict:

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fuzzynav.control.base import Observation
-from fuzzynav.world.geometry import wrap_angle
+from fuzzynav.kernels.angles import wrap_angle
 
 
 @dataclass(frozen=True)
@@ -49,18 +49,12 @@ class BatchObservation:
     @property
     def target_distance(self) -> np.ndarray:
         """d_rg (eq IV.6) for every robot, ``(N,)``."""
-        if self.pose.shape[0] == 1:  # one robot: floats (np.hypot keeps its rounding)
-            (tx, ty), (x, y, _) = self.target[0].tolist(), self.pose[0].tolist()
-            return np.array([np.hypot(tx - x, ty - y)])
         d = self.target - self.pose[:, :2]
         return np.hypot(d[:, 0], d[:, 1])
 
     @property
     def target_bearing(self) -> np.ndarray:
         """θ_d − θ_r (eq IV.7–IV.8), wrapped, ``(N,)``: positive when the target is on the left."""
-        if self.pose.shape[0] == 1:  # one robot: floats (np.arctan2 keeps its rounding)
-            (tx, ty), (x, y, theta) = self.target[0].tolist(), self.pose[0].tolist()
-            return np.array([wrap_angle(float(np.arctan2(ty - y, tx - x)) - theta)])
         d = self.target - self.pose[:, :2]
         return wrap_angle(np.arctan2(d[:, 1], d[:, 0]) - self.pose[:, 2])
 

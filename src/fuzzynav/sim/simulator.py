@@ -1,21 +1,24 @@
-"""The episode loop: sense → act → clip → step → record, until done (DESIGN.md, issue 3).
+"""The episode loop: sense → act → clip → step → record, until done (DESIGN.md).
 
-:class:`BatchSimulator` steps N robots of one scenario together, NumPy-vectorised: sensing
-(rays of all robots against all obstacles in one call), kinematics and task logic. Each step:
+:class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
+(:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:
 
-1. sense: range rings, nearest obstacle (D_ro, θ_o), the task's target → :class:`BatchObservation`;
-2. act: ``controller.act_batch(batch_obs)`` if the controller has it, returning
-   ``(steering (N,), speed (N,))`` or ``(steering, speed, behaviours)``; otherwise
+1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``) decides
+   inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
+   returning ``(steering (N,), speed (N,))`` or ``(steering, speed, behaviours)``, or
    ``controller.act(obs)`` per robot (one deep copy of the controller per robot when N > 1);
-3. clip the command to the robot's limits (path tasks: speed = the path's constant speed);
-4. kinematic step (eq IV.2 or the exact arc) of the robots still running;
-5. stop tests on the new state, in this order: collision (footprint disc vs obstacles and
-   boundary), task done (goal within tolerance / last waypoint / target captured), max_time.
+2. clip the command to the robot's limits (path tasks: speed = the path's constant speed);
+3. kinematic step (eq IV.2 or the exact arc) of the robots still running;
+4. stop tests on the new state, in this order: collision (footprint disc vs obstacles and
+   boundary), task done (goal within tolerance / last waypoint / target captured), max_time;
+5. sense: range rings, nearest obstacle (D_ro, θ_o), the task's target; the
+   :class:`BatchObservation` is built when asked for.
 
-:class:`Simulator` is the one-robot case, returning a :class:`Trace`; :func:`run_episode` is
-the one-call form. The robot's parameters (size, wheelbase, limits) are the scenario's
-(:attr:`Scenario.robot`) unless ``robot_params`` overrides them; controllers find them in
-``observation.extras["robot"]``.
+Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
+returning a :class:`Trace`; :func:`run_episode` is the one-call form.
+The robot's parameters (size, wheelbase, limits, reverse speed) are the scenario's
+(:attr:`Scenario.robot`) unless ``robot_params`` overrides them; they reach the compiled step
+in its ``setup`` array, and Python controllers find them in ``observation.extras["robot"]``.
 """
 
 from __future__ import annotations
@@ -26,16 +29,20 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Controller
+from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
-from fuzzynav.world.geometry import wrap_angle
 from fuzzynav.world.scenario import Scenario
+from fuzzynav.world.world import add_noise
 
-RUNNING, REACHED, COLLISION, TIMEOUT = 0, 1, 2, 3
+RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED, step_kernel.COLLISION,
+                                        step_kernel.TIMEOUT)
+# the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
+_NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
@@ -70,7 +77,16 @@ class BatchSimulator:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
         self.controllers = copies
+        for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
+            if callable(getattr(each, "for_robot", None)):
+                each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
+        self.task = TaskState(scenario, self.n)
+        self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
+                                      self.sensors.angles, 0.0)
+        self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
+        compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
+        self._compiled = compiled if callable(compiled) else None
         self.reset()
 
     # -- episode -----------------------------------------------------------------------------
@@ -80,118 +96,130 @@ class BatchSimulator:
         self.rng = np.random.default_rng(seeds[0])
         for controller, child in zip(self.controllers, seeds[1:]):
             controller.reset(np.random.default_rng(child))
+        self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
+                           else (step_kernel.NO_NAVIGATOR, *_NO_NAVIGATOR))
         self.k = 0
-        self.pose = self.starts.copy()
-        self.steering = np.zeros(self.n)
-        self.speed = np.zeros(self.n)
-        self.task = TaskState(self.scenario, self.n)
-        self._goal = np.array(self.task.target()) if self.task.kind == "goal" else None  # fixed target
-        self.status = np.full(self.n, RUNNING)
-        self._all_running = True  # no robot has finished: the masks of step() can be skipped
-        self.steps = np.zeros(self.n, dtype=int)
-        self._proximity = self.scenario.world.proximity(self.pose[:, :2])
-        self._judge(active=np.ones(self.n, dtype=bool))
-        self.observation = self.sense()
-        self._history = {key: [] for key in ("pose", "ranges", "target", "waypoint", "steering", "speed", "behaviour")}
+        self._state = np.zeros((self.n, len(step_kernel.STATE_FIELDS)))
+        self._state[:, :3] = self.starts
+        self._ranges = np.zeros((self.n, self.sensors.count))
+        self._status = np.zeros((self.n, 3), dtype=np.int64)
+        self._moving_target = self.task.kind == "target"
+        if self._moving_target:
+            self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position(0.0)
+        self._running = step_kernel.reset(self._setup, self.scenario.world.scene, self._state, self._ranges,
+                                          self._status)
+        self._add_noise(np.ones(self.n, dtype=bool))
+        self._observation = None
+        self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour")}
         self._record_state()
 
     @property
+    def pose(self) -> np.ndarray:
+        """``(N, 3)`` current poses (a view: copy to keep)."""
+        return self._state[:, step_kernel.X:step_kernel.THETA + 1]
+
+    @property
+    def steering(self) -> np.ndarray:
+        """``(N,)`` steering applied at the last step (a view)."""
+        return self._state[:, step_kernel.STEERING]
+
+    @property
+    def speed(self) -> np.ndarray:
+        """``(N,)`` speed applied at the last step, 0 once finished (a view)."""
+        return self._state[:, step_kernel.SPEED]
+
+    @property
+    def status(self) -> np.ndarray:
+        """``(N,)`` outcome codes: RUNNING, REACHED, COLLISION, TIMEOUT."""
+        return self._status[:, step_kernel.OUTCOME]
+
+    @property
+    def steps(self) -> np.ndarray:
+        """``(N,)`` steps each robot has taken."""
+        return self._status[:, step_kernel.STEPS]
+
+    @property
     def active(self) -> np.ndarray:
+        """``(N,)`` bool: still running."""
         return self.status == RUNNING
 
     @property
     def done(self) -> bool:
-        return not self._all_running and not self.active.any()
+        """Has every robot finished?"""
+        return self._running == 0
+
+    @property
+    def observation(self) -> BatchObservation:
+        """The :class:`BatchObservation` of the current state (built on first use)."""
+        if self._observation is None:
+            self._observation = self.sense()
+        return self._observation
 
     def sense(self) -> BatchObservation:
-        """The :class:`BatchObservation` of the current state."""
-        ranges = self.sensors.read(self.scenario.world, self.pose, self.rng)
-        distance, nearest, _, _ = self._proximity
-        if self.n == 1:  # θ_o of one robot with floats (NumPy's per-call cost would dominate)
-            (px, py), (x, y, theta) = nearest[0].tolist(), self.pose[0].tolist()
-            finite = math.isfinite(distance[0])
-            bearing = np.array([wrap_angle(float(np.arctan2(py - y, px - x)) - theta) if finite else 0.0])
-        else:
-            rel = nearest - self.pose[:, :2]
-            bearing = np.where(np.isfinite(distance), wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - self.pose[:, 2]), 0.0)
-        active = self.active
+        """A new :class:`BatchObservation` of the current state (its arrays are its own)."""
+        state, t = self._state.copy(), self.k * self.params.dt
         return BatchObservation(
-            t=self.k * self.params.dt,
+            t=t,
             dt=self.params.dt,
-            pose=self.pose,
-            speed=self.speed,
-            steering=self.steering,
-            target=self._goal.copy() if self._goal is not None else np.array(self.task.target()),
-            ranges=ranges,
+            pose=state[:, step_kernel.X:step_kernel.THETA + 1],
+            speed=state[:, step_kernel.SPEED],
+            steering=state[:, step_kernel.STEERING],
+            target=state[:, step_kernel.TARGET_X:step_kernel.TARGET_Y + 1],
+            ranges=self._ranges.copy(),
             sensor_angles=self.sensors.angles,
             max_range=self.sensors.max_range,
-            obstacle_distance=distance,
-            obstacle_bearing=bearing,
-            active=active,
+            obstacle_distance=state[:, step_kernel.OBSTACLE_DISTANCE],
+            obstacle_bearing=state[:, step_kernel.OBSTACLE_BEARING],
+            active=self.active,
             path=self.task.path,
-            waypoint_index=self.task.waypoint_index.copy(),
-            target_velocity=self.task.target_velocity(),
+            waypoint_index=self._status[:, step_kernel.WAYPOINT].copy(),
+            target_velocity=self.task.target_velocity(t),
             extras={"task": self.task.kind, "robot": self.params},
         )
 
     def _act(self, obs: BatchObservation):
+        """Commands of the Python controllers, written into the state of the running robots."""
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = np.asarray(out[0], dtype=float), np.asarray(out[1], dtype=float)
+            steering, speed = out[0], out[1]
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
-            return steering, speed, labels
-        steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
-        for i in np.flatnonzero(obs.active):
-            command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
-            steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
-        return steering, speed, labels
-
-    def step(self) -> BatchObservation:
-        """One step of every running robot; returns the new observation."""
-        active = self.active
-        steering, speed, labels = self._act(self.observation)
-        steering, speed = self.params.clip(steering, speed)  # new arrays, never the controller's
-        if self.task.forced_speed is not None:
-            speed = np.full(self.n, self.task.forced_speed)
-        if self._all_running and steering.shape == speed.shape == (self.n,):
-            self.steering, self.speed = steering, speed  # nothing to mask
-            self.pose = tricycle.step(self.pose, steering, speed, self.params)
         else:
-            self.steering = np.where(active, steering, self.steering)
-            self.speed = np.where(active, speed, 0.0)
-            moved = tricycle.step(self.pose, self.steering, self.speed, self.params)
-            self.pose = np.where(active[:, None], moved, self.pose)
+            steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
+            for i in np.flatnonzero(obs.active):
+                command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
+                steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
+        if self._running == self.n:
+            self._state[:, step_kernel.STEERING], self._state[:, step_kernel.SPEED] = steering, speed
+        else:
+            running = obs.active
+            for column, value in ((step_kernel.STEERING, steering), (step_kernel.SPEED, speed)):
+                self._state[running, column] = np.broadcast_to(np.asarray(value, dtype=float), (self.n,))[running]
+        return labels
+
+    def step(self) -> None:
+        """One step of every running robot (the new observation is :attr:`observation`)."""
+        running = self.active if self._noisy else None
+        labels = None if self._compiled is not None else self._act(self.observation)
+        if self._moving_target:
+            self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
-        self.steps += active
-        self._proximity = self.scenario.world.proximity(self.pose[:, :2])
-        self._judge(active)
-        self.observation = self.sense()
+        self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
+                                         self._ranges, self._status)
+        self._observation = None
+        if running is not None:
+            self._add_noise(running)
         if self.record:
-            self._history["steering"].append(self.steering.copy())
-            self._history["speed"].append(self.speed.copy())
             self._history["behaviour"].append(labels)
             self._record_state()
-        return self.observation
 
-    def _judge(self, active: np.ndarray) -> None:
-        """Stop tests on the current state for the robots in ``active`` (collision first)."""
-        distance, _, _, boundary = self._proximity
-        collided = np.minimum(distance, boundary) < self.params.radius
-        done = self.task.update(self.pose[:, :2], self.k * self.params.dt, active)
-        if self._all_running and self.k < self.max_steps and not (collided | done).any():
-            return  # every robot runs on
-        status = np.where(collided, COLLISION, np.where(done, REACHED, RUNNING))
-        if self.k >= self.max_steps:
-            status = np.where(status == RUNNING, TIMEOUT, status)
-        self.status = np.where(active, status, self.status)
-        self._all_running = not self.status.any()  # RUNNING is 0
+    def _add_noise(self, rows) -> None:
+        add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
 
     def _record_state(self) -> None:
         if self.record:
-            self._history["pose"].append(self.pose.copy())
-            self._history["ranges"].append(self.observation.ranges)
-            self._history["target"].append(self.observation.target)
-            self._history["waypoint"].append(self.task.waypoint_index.copy())
+            self._history["state"].append(self._state.copy())
+            self._history["ranges"].append(self._ranges.copy())
+            self._history["waypoint"].append(self._status[:, step_kernel.WAYPOINT].copy())
 
     def run(self) -> "BatchSimulator":
         """Step until every robot has finished; returns ``self`` (see :meth:`outcomes`, :meth:`trace`)."""
@@ -209,20 +237,25 @@ class BatchSimulator:
         if not self.record:
             raise RuntimeError("trace() needs a simulator built with record=True")
         k = int(self.steps[i])
-        h = self._history
+        states = np.array([s[i] for s in self._history["state"][: k + 1]]).reshape(k + 1, -1)
+        commands = states[1:]
+        if self._compiled is not None:
+            behaviour = np.asarray(self.controllers[0].labels)[commands[:, step_kernel.BEHAVIOUR].astype(int)]
+        else:
+            behaviour = np.array([b[i] for b in self._history["behaviour"][:k]], dtype=str)
         return Trace(
             scenario=self.scenario.name,
             controller=self.controller_name,
             task=self.task.kind,
             dt=self.params.dt,
             t=np.arange(k + 1) * self.params.dt,
-            pose=np.array([p[i] for p in h["pose"][: k + 1]]),
-            ranges=np.array([r[i] for r in h["ranges"][: k + 1]]),
-            target=np.array([g[i] for g in h["target"][: k + 1]]),
-            waypoint_index=np.array([w[i] for w in h["waypoint"][: k + 1]], dtype=int),
-            steering=np.array([s[i] for s in h["steering"][:k]]),
-            speed=np.array([v[i] for v in h["speed"][:k]]),
-            behaviour=np.array([b[i] for b in h["behaviour"][:k]], dtype=str),
+            pose=states[:, step_kernel.X:step_kernel.THETA + 1],
+            ranges=np.array([r[i] for r in self._history["ranges"][: k + 1]]),
+            target=states[:, step_kernel.TARGET_X:step_kernel.TARGET_Y + 1],
+            waypoint_index=np.array([w[i] for w in self._history["waypoint"][: k + 1]], dtype=int),
+            steering=commands[:, step_kernel.STEERING],
+            speed=commands[:, step_kernel.SPEED],
+            behaviour=behaviour.astype(str),
             sensor_angles=self.sensors.angles,
             max_range=self.sensors.max_range,
             outcome=self.outcomes()[i],

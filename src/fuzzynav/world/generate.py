@@ -1,4 +1,4 @@
-"""Seeded random worlds for benchmarking navigators (issue 3, "How we will know").
+"""Seeded random worlds for benchmarking navigators (``fuzzynav evaluate``).
 
 Two families on the thesis' 20 m × 20 m workspace:
 
@@ -20,7 +20,6 @@ draw is rejected and redrawn. World ``i`` of ``generate_worlds(kind, n, seed)`` 
 from __future__ import annotations
 
 import numpy as np
-from scipy import ndimage
 
 from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -83,6 +82,8 @@ def free_space(world: World, radius: float) -> tuple[np.ndarray, np.ndarray]:
 
 def connected(world: World, start, goal, radius: float) -> bool:
     """True when ``start`` and ``goal`` lie in one connected region of :func:`free_space`."""
+    from scipy import ndimage  # imported when first needed (not at start-up)
+
     free, _ = free_space(world, radius)
     labels, _ = ndimage.label(free)
     cell = lambda p: (min(int(p[1] / GRID), labels.shape[0] - 1), min(int(p[0] / GRID), labels.shape[1] - 1))
@@ -133,3 +134,14 @@ def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenari
     children = np.random.SeedSequence([int(seed), KINDS.index(kind)]).spawn(int(n))
     return [random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
             for i, child in enumerate(children)]
+
+
+def generated_world(name: str) -> Scenario | None:
+    """World ``i`` of ``generate_worlds(kind, n, seed)`` from its name ``<kind>-<seed>-<i>`` (as
+    ``fuzzynav evaluate`` names them), or ``None`` when ``name`` is not such a name."""
+    parts = name.rsplit("-", 2)
+    if len(parts) != 3 or parts[0] not in KINDS or not (parts[1].isdigit() and parts[2].isdigit()):
+        return None
+    kind, seed, index = parts[0], int(parts[1]), int(parts[2])
+    child = np.random.SeedSequence([seed, KINDS.index(kind)]).spawn(index + 1)[index]
+    return random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{index:03d}")

@@ -1,13 +1,3 @@
-"""Small geometric helpers shared by the robot, world and control layers."""
+"""Where :func:`wrap_angle` used to live; it is :mod:`fuzzynav.kernels.angles` now."""
 
-from __future__ import annotations
-
-import numpy as np
-
-
-def wrap_angle(angle):
-    """Wrap an angle (scalar or array, radians) to (−π, π] (SPEC §0)."""
-    if isinstance(angle, float):  # one float: the same formula without NumPy's per-call cost
-        return float(np.pi - (np.pi - angle) % (2.0 * np.pi))  # Python's float % is NumPy's mod
-    wrapped = np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
-    return float(wrapped) if np.ndim(wrapped) == 0 else wrapped
+from fuzzynav.kernels.angles import wrap_angle  # noqa: F401

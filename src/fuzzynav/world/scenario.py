@@ -1,4 +1,4 @@
-"""Scenario files: world, robot start and task, validated (issue 3; schema in docs/ARCHITECTURE.md).
+"""Scenario files: world, robot start and task, validated (schema in docs/ARCHITECTURE.md).
 
 ```yaml
 name: fig-IV-15a                      # optional (default: the file name)
@@ -17,11 +17,11 @@ max_time: 120                         # seconds, optional
 controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
-two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, SPEC
+two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, thesis
 §4, default 0.5 m), ``path_switching`` (``passed``, the default: a waypoint is also left once the
 robot is past it; ``zone``: the thesis' tolerance zone only; :mod:`fuzzynav.sim.tasks`) and
 ``speed`` (the constant tracking speed, default 1 m/s, at most the robot's 4 m/s), or ``target: {x, y, tolerance, motion: {type: static |
-line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.world.motion`).
+line | circle | sinusoid, ...}}`` (thesis §V.5, parameters in :mod:`fuzzynav.world.motion`).
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
 ``obstacles[2].circle.radius``) and what is wrong; unknown keys get the closest known key as a
@@ -74,7 +74,7 @@ class Goal:
 
 @dataclass(frozen=True)
 class PathTask:
-    """Path tracking (SPEC §4): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s) and
+    """Path tracking (thesis §V.2): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s) and
     waypoint switching rule (``passed`` | ``zone``, :mod:`fuzzynav.sim.tasks`)."""
 
     waypoints: np.ndarray
@@ -85,7 +85,7 @@ class PathTask:
 
 @dataclass(frozen=True)
 class TargetTask:
-    """Moving-target pursuit (SPEC §4.4): captured when within ``tolerance`` (m) of the target."""
+    """Moving-target pursuit (thesis §V.5): captured when within ``tolerance`` (m) of the target."""
 
     motion: TargetMotion
     tolerance: float = DEFAULT_GOAL_TOLERANCE

@@ -1,7 +1,7 @@
-"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (issue 3, SPEC §3).
+"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (obstacles of any shape, thesis §IV.7).
 
 Plain frozen records; the vectorised geometry on many shapes at once lives in
-:mod:`fuzzynav.world.collision` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
+:mod:`fuzzynav.kernels.scene` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
 rectangle of its given thickness around the segment start–end (its ends are square, so two walls
 meeting at a corner leave a notch of thickness/2 unless they overlap). ``to_dict`` gives the
 scenario-file form (docs/ARCHITECTURE.md), so generated worlds can be written back as YAML.

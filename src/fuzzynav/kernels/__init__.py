@@ -1,0 +1,20 @@
+"""The compiled hot path: one implementation, plain loops compiled with numba, serving one robot
+and a batch alike (one robot is a batch of one; the loops over robots are inside the kernels).
+
+- :mod:`~fuzzynav.kernels.angles` — the angle convention (wrap to (−π, π]), for floats, arrays and
+  the kernels;
+- :mod:`~fuzzynav.kernels.scene` — rays of a sensor ring and the nearest obstacle against
+  circles, polygons (walls are rectangles), ellipses and the boundary, with a broad phase;
+- :mod:`~fuzzynav.kernels.motion` — angle wrapping, command clipping, tricycle kinematics
+  (eq IV.2 and the exact arc of eq IV.1);
+- :mod:`~fuzzynav.kernels.ts0` — strong-partition TS0 systems evaluated from their breakpoint
+  and coefficient arrays (so an edited rule table runs compiled too);
+- :mod:`~fuzzynav.kernels.guard` — the supervisor's selection and switch, hit memory, cone
+  echo, turning room and safety stop of the chapter IV navigators;
+- :mod:`~fuzzynav.kernels.navigators` — the navigators' ``act``;
+- :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense.
+
+Every kernel is a module-level function over arrays (no closures), compiled on first use and
+cached on disk (:func:`fuzzynav.kernels.compile.jit`). ``NUMBA_DISABLE_JIT=1`` runs the very
+same code as plain Python, the way to debug it. Importing this package does not import numba.
+"""

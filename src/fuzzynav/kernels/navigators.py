@@ -1,0 +1,193 @@
+"""``act`` of the chapter IV navigators and the hand-made wall follower, compiled.
+
+One robot's decision is :func:`act_one`; :func:`act` loops it over a batch. What each navigator
+does is documented in its controller module (:mod:`fuzzynav.control.goal_seeking`,
+:mod:`~fuzzynav.control.avoidance`, :mod:`~fuzzynav.control.five_behaviours`,
+:mod:`~fuzzynav.control.wall_following`); the controller packs its parameters into ``params``
+(the indices below), its rule bases into ``tables`` (:func:`fuzzynav.kernels.ts0.pack`, in the
+order of its roles) and keeps its per-robot state: ``state`` (N, 4) ints — behaviour mode (−1:
+none yet), steps held, turn side (0: none), steps remembered — and the hit memory ``memory``
+(N, steps, S + 1, 3) of :mod:`fuzzynav.kernels.guard`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from fuzzynav.kernels import guard, ts0
+from fuzzynav.kernels.compile import jit
+from fuzzynav.kernels.motion import wrap
+
+GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
+ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7 (the full-lock turn)
+MODE, HELD, SIDE, COUNT = range(4)
+# params: shared, then per navigator
+WHEELBASE, DWELL, LANE, ROOM_MARGIN, STOP_MARGIN, V_TURN, TURN_RADIUS, BODY, HALF_CONE = range(9)
+DETECTION, SECTOR, FRONT, RISK, RELEASE = range(9, 14)  # fuzzy-2b
+V_MAX, SENSED, FRONT_5B, KEEP, CLEAR, VISION, KEPT_DETECTION, KEPT_KEEP, KEPT_CLEAR, COLUMNS = range(9, 19)  # fuzzy-5b
+WALL_COLUMNS = 9  # wall-follow: d_d, d_f, d_g
+STEERING, SPEED = 9, 10  # a constant command
+N_PARAMS = COLUMNS + 7
+GSB_VRB, TURN = 4, 5  # fuzzy-5b modes beyond guard.GSB, FOA, ROA, LOA
+RANK_5B = (0, 3, 2, 2, 1, 4)  # caution ranks of the fuzzy-5b modes
+RANK_2B = (0, 1, 2)  # GSB, OA, OA at full lock
+
+
+@jit
+def guarded_goal_seeking(tables, system, distance, bearing, wheelbase):
+    """(α, V, guard) of Table IV.1 with the anti-orbit guard: the arc through the goal
+    α_arc = atan(2 l sin β / d) when the table steers less, straight on when even α_max is too
+    wide (:mod:`fuzzynav.control.goal_seeking`)."""
+    table, speed = ts0.evaluate(tables, system, distance, -wrap(bearing), 0.0)
+    arc = math.atan(2.0 * wheelbase * math.sin(bearing) / max(distance, 1e-9))
+    if abs(arc) > ALPHA_MAX:
+        return 0.0, speed, 2
+    return (arc, speed, 1) if abs(table) < abs(arc) else (table, speed, 0)
+
+
+@jit
+def goal_seeking_all(tables, system, distance, bearing, wheelbase, out):
+    """:func:`guarded_goal_seeking` of every (distance, bearing): ``out`` (N, 3) = α, V, guard
+    (0 the table, 1 the arc through the goal, 2 straight out of the turning circle)."""
+    for n in range(distance.shape[0]):
+        out[n, 0], out[n, 1], out[n, 2] = guarded_goal_seeking(tables, system, distance[n], bearing[n], wheelbase)
+
+
+@jit
+def watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, goal_bearing, turning):
+    """Remember this step's hits and ask the turning-room guard: (turn wanted?, side)."""
+    guard.remember(memory, state[COUNT], x, y, theta, ranges, angles, max_range, d_o, b_o, params[HALF_CONE])
+    state[COUNT] += 1
+    wanted, side = guard.turn_wanted(memory, x, y, theta, v * dt, turning, goal_bearing, params[LANE],
+                                     params[ROOM_MARGIN], state[SIDE], params[BODY], params[TURN_RADIUS])
+    state[SIDE] = side
+    return wanted, side
+
+
+@jit
+def safety_stop(params, memory, x, y, theta, speed, dt):
+    """0 when one step at ``speed`` would bring the body within the stop margin of a hit."""
+    return 0.0 if guard.step_clearance(memory, x, y, theta, speed * dt, params[BODY]) < params[STOP_MARGIN] else speed
+
+
+@jit
+def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
+                   dt, d_o, b_o):
+    """fuzzy-2b (Fig IV.9): (α, V, mode 0 GSB / 1 OA / 2 OA at full lock)."""
+    steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+    d_ro, theta_o = d_o, b_o
+    k = 0
+    for j in range(1, ranges.shape[0]):
+        if ranges[j] < ranges[k]:
+            k = j
+    if ranges[k] < d_ro:  # a boundary wall, which D_ro leaves out, as the ring sees it
+        d_ro, theta_o = ranges[k], angles[k]
+    d_ro = d_ro - params[RISK]
+    sector = params[SECTOR]
+    in_way = abs(theta_o) <= params[FRONT] or (abs(theta_o) <= sector and abs(wrap(theta_o - bearing)) <= sector)
+    avoid = d_ro < params[DETECTION] and in_way and distance > d_ro
+    before = max(state[MODE], 0)
+    if before >= 1 and d_ro < params[DETECTION] + params[RELEASE] and abs(theta_o) <= sector + math.radians(15.0) \
+            and distance > d_ro:
+        avoid = True
+    turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
+                       before == 2)
+    mode = guard.switch(state, 2 if turn else (1 if avoid else 0), True, RANK_2B, params[DWELL])
+    if mode >= 1:
+        steering, speed = ts0.evaluate(tables, 1, d_ro if math.isfinite(d_ro) else 1e3, -wrap(theta_o), 0.0)
+    if mode == 2:
+        steering, speed = side * ALPHA_MAX, params[V_TURN]
+    return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
+
+
+@jit
+def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
+                    dt, d_o, b_o):
+    """fuzzy-5b (Fig IV.16): (α, V, mode GSB / FOA / ROA / LOA / GSB+VRB / full-lock turn)."""
+    c = COLUMNS
+    d0, d1, d2, d3, d4, d5 = (ranges[int(params[c])], ranges[int(params[c + 1])], ranges[int(params[c + 2])],
+                              ranges[int(params[c + 3])], ranges[int(params[c + 4])], ranges[int(params[c + 5])])
+    d6 = ranges[int(params[c + 6])]
+    d = (d0, d1, d2, d3, d4, d5, d6)
+    before = state[MODE]
+    if before == guard.GSB or before == GSB_VRB:  # goal seeking keeps the robot under relaxed thresholds
+        choice = guard.select(d, distance, bearing, params[KEPT_DETECTION], params[FRONT_5B], params[KEPT_KEEP],
+                              params[KEPT_CLEAR], params[VISION])
+    else:
+        choice = guard.select(d, distance, bearing, params[SENSED], params[FRONT_5B], params[KEEP], params[CLEAR],
+                              params[VISION])
+    dmin = min(min(min(d0, d1), min(d2, d3)), min(min(d4, d5), d6))
+    turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
+                       before == TURN)
+    wanted = TURN if turn else (GSB_VRB if choice == guard.GSB and dmin < params[SENSED] else choice)
+    mode = guard.switch(state, wanted, dmin < params[KEEP] or turn, RANK_5B, params[DWELL])
+    steering = speed = 0.0
+    if mode == guard.GSB or mode == GSB_VRB:
+        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+    elif mode == TURN:
+        steering, speed = side * ALPHA_MAX, params[V_TURN]
+    if mode != guard.GSB and mode != TURN:
+        adjust, _ = ts0.evaluate(tables, 4, v, dmin, 0.0)
+        v_vrb = min(max(v + adjust, params[V_TURN]), params[V_MAX])  # eq IV.9
+        if mode == GSB_VRB:
+            speed = min(speed, v_vrb)
+        else:
+            if mode == guard.FOA:
+                steering, _ = ts0.evaluate(tables, 1, d0, d1, d2)
+            elif mode == guard.ROA:
+                steering, _ = ts0.evaluate(tables, 2, d1, d3, d5)
+            else:
+                steering, _ = ts0.evaluate(tables, 3, d2, d4, d6)
+            speed = v_vrb
+    return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
+
+
+@jit
+def act_one(kind, params, tables, state, memory, x, y, theta, v, tx, ty, ranges, angles, max_range, dt, d_o, b_o):
+    """(α, V, behaviour code) of navigator ``kind`` for one robot at (x, y, θ) moving at ``v``,
+    aiming at (tx, ty), reading ``ranges`` along ``angles``, nearest obstacle (d_o, b_o)."""
+    distance = math.hypot(tx - x, ty - y)
+    bearing = wrap(math.atan2(ty - y, tx - x) - theta)
+    if kind == GOAL_SEEKING:
+        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+        return steering, speed, 0
+    if kind == TWO_BEHAVIOURS:
+        return two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,
+                              max_range, dt, d_o, b_o)
+    if kind == FIVE_BEHAVIOURS:
+        return five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,
+                               max_range, dt, d_o, b_o)
+    if kind == CONSTANT:
+        return params[STEERING], params[SPEED], 0
+    steering, speed = ts0.evaluate(tables, 0, ranges[int(params[WALL_COLUMNS])], ranges[int(params[WALL_COLUMNS + 1])],
+                                   ranges[int(params[WALL_COLUMNS + 2])])
+    return steering, speed, 0
+
+
+@jit
+def act(kind, params, tables, state, memory, poses, speeds, targets, ranges, angles, max_range, dt, obstacle,
+        active, out):
+    """:func:`act_one` of every ``active`` robot: ``out`` (N, 3) = α, V, behaviour code;
+    ``obstacle`` (N, 2) = D_ro, θ_o."""
+    for n in range(poses.shape[0]):
+        if active[n]:
+            out[n, 0], out[n, 1], out[n, 2] = act_one(
+                kind, params, tables, state[n], memory[n], poses[n, 0], poses[n, 1], poses[n, 2], speeds[n],
+                targets[n, 0], targets[n, 1], ranges[n], angles, max_range, dt, obstacle[n, 0], obstacle[n, 1])
+
+
+@jit
+def guard_all(params, state, memory, poses, speeds, ranges, angles, max_range, dt, obstacle, goal_bearing, turning,
+              out):
+    """The turning-room guard of every robot (:func:`watch`): ``out`` (N, 2) = turn wanted (0/1), side."""
+    for n in range(poses.shape[0]):
+        wanted, side = watch(params, state[n], memory[n], poses[n, 0], poses[n, 1], poses[n, 2], speeds[n], ranges[n],
+                             angles, max_range, dt, obstacle[n, 0], obstacle[n, 1], goal_bearing[n], turning[n])
+        out[n, 0], out[n, 1] = wanted, side
+
+
+@jit
+def stop_all(params, memory, poses, speeds, dt, out):
+    """The safety stop of every robot (:func:`safety_stop`) into ``out`` (N,)."""
+    for n in range(poses.shape[0]):
+        out[n] = safety_stop(params, memory[n], poses[n, 0], poses[n, 1], poses[n, 2], speeds[n], dt)

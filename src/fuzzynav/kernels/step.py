@@ -1,0 +1,156 @@
+"""The simulator's step for N robots, compiled: act (a compiled navigator, or commands given),
+clip, move, stop tests, sense — one call per step (:class:`fuzzynav.sim.simulator.BatchSimulator`
+documents the loop; :mod:`fuzzynav.sim.tasks` the tasks).
+
+Arrays:
+
+- ``setup`` (floats): the robot's parameters (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`),
+  the sensor range, the task (:data:`SETUP_FIELDS`), then the sensor angles and the path's
+  waypoints (x0, y0, x1, y1, …);
+- ``state`` (N, :data:`STATE_FIELDS`) floats per robot; ``ranges`` (N, S);
+- ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index.
+
+Finished robots are neither moved, judged nor sensed.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.kernels import navigators, scene
+from fuzzynav.kernels.compile import jit
+from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
+from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
+
+SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
+                               "goal_y", "n_angles")
+MAX_RANGE, TASK, TOLERANCE, FORCED_SPEED, PASSED, MAX_STEPS, GOAL_X, GOAL_Y, N_ANGLES = range(len(ROBOT_FIELDS),
+                                                                                            len(SETUP_FIELDS))
+ANGLES = len(SETUP_FIELDS)  # sensor angles, then waypoints
+GOAL, PATH, TARGET = range(3)  # task codes
+STATE_FIELDS = ("x", "y", "theta", "steering", "speed", "target_x", "target_y", "obstacle_distance", "nearest_x",
+                "nearest_y", "obstacle_column", "boundary", "obstacle_bearing", "behaviour")
+(X, Y, THETA, STEERING, SPEED, TARGET_X, TARGET_Y, OBSTACLE_DISTANCE, NEAREST_X, NEAREST_Y, OBSTACLE_COLUMN, BOUNDARY,
+ OBSTACLE_BEARING, BEHAVIOUR) = range(len(STATE_FIELDS))
+OUTCOME, STEPS, WAYPOINT = range(3)
+RUNNING, REACHED, COLLISION, TIMEOUT = range(4)
+NO_NAVIGATOR = -1  # commands given in state[:, STEERING], state[:, SPEED]
+
+
+@jit
+def waypoint(setup, i):
+    at = ANGLES + int(setup[N_ANGLES]) + 2 * i
+    return setup[at], setup[at + 1]
+
+
+@jit
+def segment_distance(px, py, ax, ay, bx, by):
+    """Distance from (px, py) to the segment a → b."""
+    dx, dy = bx - ax, by - ay
+    s = min(max(((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy), 0.0), 1.0)
+    return math.hypot(ax + s * dx - px, ay + s * dy - py)
+
+
+@jit
+def n_waypoints(setup):
+    return (setup.shape[0] - ANGLES - int(setup[N_ANGLES])) // 2
+
+
+@jit
+def passed(setup, i, px, py):
+    """Has the robot at (px, py) passed interior waypoint i: beyond the bisector of the corner
+    ((p − w_i)·(u_in + u_out) > 0, u the unit segment directions) and no farther from segment
+    i → i + 1 than from segment i − 1 → i (:mod:`fuzzynav.sim.tasks`)."""
+    if i < 1 or i >= n_waypoints(setup) - 1:
+        return False
+    ax, ay = waypoint(setup, i - 1)
+    cx, cy = waypoint(setup, i)
+    bx, by = waypoint(setup, i + 1)
+    n_in, n_out = math.hypot(cx - ax, cy - ay), math.hypot(bx - cx, by - cy)
+    fx, fy = (cx - ax) / n_in + (bx - cx) / n_out, (cy - ay) / n_in + (by - cy) / n_out
+    return ((px - cx) * fx + (py - cy) * fy > 0
+            and segment_distance(px, py, cx, cy, bx, by) <= segment_distance(px, py, ax, ay, cx, cy))
+
+
+@jit
+def task_update(setup, i, x, y):
+    """(task done?, waypoint index, target x, y) of a robot now at (x, y) that aimed at waypoint
+    ``i``: the goal or target reached within the tolerance; a path's waypoint left once inside
+    its zone (or, with the ``passed`` rule, once passed), the path done in the last zone."""
+    task = int(setup[TASK])
+    gx, gy = setup[GOAL_X], setup[GOAL_Y]
+    if task == PATH:
+        gx, gy = waypoint(setup, i)
+    inside = math.hypot(gx - x, gy - y) <= setup[TOLERANCE]
+    if task != PATH:
+        return inside, i, gx, gy
+    done = inside and i == n_waypoints(setup) - 1
+    if (inside and not done) or (setup[PASSED] != 0.0 and passed(setup, i, x, y)):
+        i += 1
+    gx, gy = waypoint(setup, i)
+    return done, i, gx, gy
+
+
+@jit
+def settle(setup, scene_array, k, state, ranges, status, n):
+    """Stop tests and sensing of robot ``n`` at step ``k`` (the state after its move): collision
+    (footprint vs obstacles and boundary) first, then the task, then the time limit; then the
+    next target, the rays and the nearest obstacle's bearing θ_o."""
+    row = state[n]
+    scene.nearest_one(scene_array, row[X], row[Y], row[OBSTACLE_DISTANCE:BOUNDARY + 1])
+    collided = min(row[OBSTACLE_DISTANCE], row[BOUNDARY]) < setup[RADIUS]
+    done, status[n, WAYPOINT], row[TARGET_X], row[TARGET_Y] = task_update(setup, status[n, WAYPOINT], row[X], row[Y])
+    outcome = COLLISION if collided else (REACHED if done else RUNNING)
+    if outcome == RUNNING and k >= setup[MAX_STEPS]:
+        outcome = TIMEOUT
+    status[n, OUTCOME] = outcome
+    n_angles = int(setup[N_ANGLES])
+    scene.ranges_one(scene_array, row[X], row[Y], row[THETA], setup[ANGLES:ANGLES + n_angles], setup[MAX_RANGE],
+                     ranges[n], np.empty(int(scene_array[N_CIRCLES] + scene_array[N_POLYGONS]
+                                             + scene_array[N_ELLIPSES]), dtype=np.int64))
+    finite = math.isfinite(row[OBSTACLE_DISTANCE])
+    row[OBSTACLE_BEARING] = wrap(math.atan2(row[NEAREST_Y] - row[Y], row[NEAREST_X] - row[X]) - row[THETA]) \
+        if finite else 0.0
+
+
+@jit
+def reset(setup, scene_array, state, ranges, status):
+    """Stop tests and sensing of every robot at step 0; returns how many still run."""
+    running = 0
+    for n in range(state.shape[0]):
+        settle(setup, scene_array, 0, state, ranges, status, n)
+        running += status[n, OUTCOME] == RUNNING
+    return running
+
+
+@jit
+def step(kind, params, tables, cstate, memory, setup, scene_array, k, state, ranges, status):
+    """One step of every running robot, ``k`` being the step count after it; returns how many
+    still run. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
+    ``tables``, ``cstate``, ``memory``) or :data:`NO_NAVIGATOR` (commands given in ``state``)."""
+    running = 0
+    n_angles = int(setup[N_ANGLES])
+    angles = setup[ANGLES:ANGLES + n_angles]
+    for n in range(state.shape[0]):
+        if status[n, OUTCOME] != RUNNING:
+            state[n, SPEED] = 0.0
+            continue
+        row = state[n]
+        steering, speed = row[STEERING], row[SPEED]
+        if kind != NO_NAVIGATOR:
+            steering, speed, code = navigators.act_one(
+                kind, params, tables, cstate[n], memory[n], row[X], row[Y], row[THETA], row[SPEED], row[TARGET_X],
+                row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0], row[OBSTACLE_DISTANCE],
+                row[OBSTACLE_BEARING])
+            row[BEHAVIOUR] = code
+        steering, speed = clip(steering, speed, setup)
+        if setup[FORCED_SPEED] == setup[FORCED_SPEED]:
+            speed = setup[FORCED_SPEED]
+        row[STEERING], row[SPEED] = steering, speed
+        row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
+        status[n, STEPS] += 1
+        settle(setup, scene_array, k, state, ranges, status, n)
+        running += status[n, OUTCOME] == RUNNING
+    return running

@@ -1,0 +1,40 @@
+"""``NUMBA_DISABLE_JIT=1`` runs the very same kernels as plain Python (the debugging story): a
+short fuzzy-5b-thesis episode and a batch of rays give the numbers of the compiled run."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+SCRIPT = """
+import json, numpy as np
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.sim import run_episode
+from fuzzynav.world.scenario import load_scenario
+import fuzzynav.kernels.scene as scene
+scenario = load_scenario("fig-IV-22a")
+trace = run_episode(scenario, make_controller("fuzzy-5b-thesis"), max_time=4.0)
+poses = np.array([[5.0, 5.0, 0.3], [12.0, 9.0, -2.0], [3.0, 16.0, 1.0]])
+ranges = scenario.world.ranges(poses, np.linspace(-np.pi, np.pi, 9), 4.0)
+print(json.dumps({"jit": hasattr(scene.ranges, "py_func"), "pose": trace.pose.tolist(),
+                  "labels": trace.behaviour.tolist(), "ranges": ranges.tolist()}))
+"""
+
+
+def _run(disable: bool) -> dict:
+    env = {**os.environ, "NUMBA_DISABLE_JIT": "1" if disable else "0"}
+    done = subprocess.run([sys.executable, "-c", SCRIPT], capture_output=True, text=True, env=env, timeout=600)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+@pytest.mark.slow
+def test_kernels_run_as_plain_python_with_the_same_numbers():
+    plain, compiled = _run(True), _run(False)
+    assert not plain["jit"] and compiled["jit"]
+    assert plain["labels"] == compiled["labels"] and len(plain["pose"]) == 41
+    np.testing.assert_allclose(plain["pose"], compiled["pose"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(plain["ranges"], compiled["ranges"], rtol=0, atol=1e-12)
