@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 
 pytestmark = pytest.mark.slow
 README = Path(__file__).resolve().parents[2] / "README.md"

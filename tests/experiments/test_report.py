@@ -5,7 +5,7 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 from fuzzynav.cli import main
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 from fuzzynav.experiments.claims import CLAIMS
 
 

@@ -16,7 +16,7 @@ import json
 from datetime import datetime, timezone
 from pathlib import Path
 
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 from fuzzynav.experiments.claims import CLAIMS
 
 RUN_FILE = "run.json"
