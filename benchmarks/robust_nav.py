@@ -117,7 +117,7 @@ def stand_still(trace) -> float:
     """Seconds the robot stood still (|V| < 1e-6) at the end of the episode."""
     moving = np.flatnonzero(np.abs(trace.speed) >= 1e-6)
     last = moving[-1] + 1 if len(moving) else 0
-    return (len(trace.speed) - last) * trace.dt
+    return float((len(trace.speed) - last) * trace.dt)
 
 
 def run(controller: str, family: str, n: int, seed: int) -> dict:
@@ -126,12 +126,12 @@ def run(controller: str, family: str, n: int, seed: int) -> dict:
     for scenario in scenarios:
         trace = run_episode(scenario, make_controller(controller), seed=seed)
         away = float(np.hypot(*(trace.pose[-1, :2] - scenario.goal.position)))
-        episodes.append({"scenario": scenario.name, "outcome": trace.outcome, "time_s": trace.time,
+        episodes.append({"scenario": scenario.name, "outcome": trace.outcome, "time_s": float(trace.time),
                          "still_s": stand_still(trace) if trace.outcome != "reached" else 0.0, "goal_distance_m": away})
     rate = lambda o: sum(e["outcome"] == o for e in episodes) / n
     return {"controller": controller, "family": family, "worlds_from": source, "seed": seed, "n": n,
             "success_rate": rate("reached"), "collision_rate": rate("collision"), "timeout_rate": rate("timeout"),
-            "stood_still_10s": sum(e["still_s"] > 10.0 for e in episodes),
+            "stood_still_10s": sum(int(e["still_s"] > 10.0) for e in episodes),
             "failures": [e for e in episodes if e["outcome"] != "reached"]}
 
 

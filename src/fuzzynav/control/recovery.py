@@ -76,7 +76,7 @@ class ObstacleMemory:
         """Forget every point (a new episode)."""
         self._cells: set[tuple[int, int]] = set()
         self._points: list[tuple[float, float]] = []
-        self._array = np.zeros((0, 2))
+        self._array = np.zeros((0, 2))  # the points as an array, built when asked for (None: stale)
 
     def add(self, obs) -> None:
         """Store the hits of the ring (readings below the range) and the nearest obstacle point."""
@@ -89,34 +89,35 @@ class ObstacleMemory:
         if obs.obstacle_distance is not None and math.isfinite(obs.obstacle_distance):
             d, b = max(float(obs.obstacle_distance), 0.0), theta + float(obs.obstacle_bearing)
             seen.append((x + d * math.cos(b), y + d * math.sin(b)))
-        grown = False
         for px, py in seen:
             cell = (math.floor(px / CELL), math.floor(py / CELL))
             if cell not in self._cells:
                 self._cells.add(cell)
                 self._points.append((px, py))
-                grown = True
-        if grown:
-            self._array = np.array(self._points)
+                self._array = None
 
     @property
     def points(self) -> np.ndarray:
         """Every remembered point, ``(P, 2)`` world frame."""
+        if self._array is None:
+            self._array = np.array(self._points).reshape(-1, 2)
         return self._array
 
     def clearance(self, x: float, y: float) -> float:
         """Distance from (x, y) to the nearest remembered point (``inf`` with none)."""
-        if not len(self._array):
+        points = self.points
+        if not len(points):
             return math.inf
-        return float(np.min(np.hypot(self._array[:, 0] - x, self._array[:, 1] - y)))
+        return float(np.min(np.hypot(points[:, 0] - x, points[:, 1] - y)))
 
     def side_room(self, pose, cap: float) -> tuple[float, float]:
         """``(left, right)``: distance to the nearest point on each side of the heading (ahead of
         the rear of the body), capped at ``cap``."""
-        if not len(self._array):
+        points = self.points
+        if not len(points):
             return cap, cap
         x, y, theta = (float(v) for v in pose)
-        rx, ry = self._array[:, 0] - x, self._array[:, 1] - y
+        rx, ry = points[:, 0] - x, points[:, 1] - y
         ahead = math.cos(theta) * rx + math.sin(theta) * ry
         lateral = math.cos(theta) * ry - math.sin(theta) * rx
         dist = np.hypot(rx, ry)
