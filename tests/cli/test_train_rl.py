@@ -57,7 +57,9 @@ def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
     checkpoint = tmp_path / "part.json.steering.checkpoint.json"
     env = dict(os.environ, PYTHONUNBUFFERED="1")
     process = subprocess.Popen([sys.executable, "-m", "fuzzynav", "train", *args, "--out", str(part)], env=env,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               # a shell's background job inherits SIGINT ignored: restore it for the child
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.time() + 60
     while not checkpoint.exists() and time.time() < deadline and process.poll() is None:
         time.sleep(0.02)

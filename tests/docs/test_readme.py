@@ -47,7 +47,7 @@ def test_the_tour_runs_top_to_bottom(tmp_path):
                           text=True, timeout=900)
     assert done.returncode == 0, f"the tour failed:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
     for made in ("u.png", "u.gif", "my-world.yaml", "outputs.csv", "tracking.fll", "anfis.json", "anfis.fll",
-                 "fql.json", "fql.png", "figures/index.html", "figures/fig-V-28/fig-V-28.png",
+                 "fql.npz", "fql.png", "figures/index.html", "figures/fig-V-28/fig-V-28.png",
                  "worlds/mixed-0-002.yaml", "my-demo/metrics.md"):
         assert (folder / made).is_file(), made
 
