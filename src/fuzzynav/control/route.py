@@ -18,8 +18,6 @@ inflation).
 
 from __future__ import annotations
 
-from collections import deque
-
 import numpy as np
 from scipy import ndimage
 
@@ -46,7 +44,7 @@ def route_target(points: np.ndarray, start, goal, inflate: float, ahead: float =
     index = lambda c: (c[0] + 1) * width + c[1] + 1
     offsets = [dx * width + dy for dx, dy in NEIGHBOURS]
     s, g = index(cell(start)), index(cell(goal))
-    steps = _wavefront(blocked.ravel().tolist(), g, offsets)
+    steps = _wavefront(~blocked, divmod(g, width), divmod(s, width)).ravel().tolist()
     if steps[s] < 0:
         return None
     here, travelled = s, 0.0
@@ -56,17 +54,18 @@ def route_target(points: np.ndarray, start, goal, inflate: float, ahead: float =
     return low + (np.array(divmod(here, width)) - 0.5) * CELL
 
 
-def _wavefront(blocked: list, goal: int, offsets) -> list:
-    """Steps from every free cell of the flat grid ``blocked`` to ``goal`` (−1: unreachable)."""
-    steps = [-1] * len(blocked)
+def _wavefront(free: np.ndarray, goal: tuple, start: tuple) -> np.ndarray:
+    """Steps (8-neighbour moves) from the free cells of the grid to ``goal``, −1 where not reached:
+    the breadth-first wavefront, grown one ring per dilation, until it reaches ``start`` (the
+    route down from ``start`` only visits cells nearer the goal than ``start``)."""
+    steps = np.full(free.shape, -1, dtype=np.int64)
     steps[goal] = 0
-    queue = deque([goal])
-    while queue:
-        here = queue.popleft()
-        d = steps[here] + 1
-        for o in offsets:
-            there = here + o
-            if steps[there] < 0 and not blocked[there]:
-                steps[there] = d
-                queue.append(there)
+    front = np.zeros(free.shape, dtype=bool)
+    front[goal] = True
+    reached, ring, d = front.copy(), np.ones((3, 3), dtype=bool), 0
+    while front.any() and steps[start] < 0:
+        d += 1
+        front = ndimage.binary_dilation(front, ring) & free & ~reached
+        steps[front] = d
+        reached |= front
     return steps
