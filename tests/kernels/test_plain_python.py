@@ -1,5 +1,5 @@
 """``NUMBA_DISABLE_JIT=1`` runs the very same kernels as plain Python (the debugging story): a
-short fuzzy-5b episode and a batch of rays give the numbers of the compiled run."""
+short fuzzy-5b-thesis episode and a batch of rays give the numbers of the compiled run."""
 
 import json
 import os
@@ -16,7 +16,7 @@ from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
 import fuzzynav.kernels.scene as scene
 scenario = load_scenario("fig-IV-22a")
-trace = run_episode(scenario, make_controller("fuzzy-5b"), max_time=4.0)
+trace = run_episode(scenario, make_controller("fuzzy-5b-thesis"), max_time=4.0)
 poses = np.array([[5.0, 5.0, 0.3], [12.0, 9.0, -2.0], [3.0, 16.0, 1.0]])
 ranges = scenario.world.ranges(poses, np.linspace(-np.pi, np.pi, 9), 4.0)
 print(json.dumps({"jit": hasattr(scene.ranges, "py_func"), "pose": trace.pose.tolist(),

@@ -13,10 +13,14 @@ from fuzzynav.lookup import descriptions, resolve
 # name -> ("module:factory", one-line description)
 CONTROLLERS: dict[str, tuple[str, str]] = {}
 CONTROLLERS["goal-seeking"] = ("fuzzynav.control.goal_seeking:make", "goal seeking alone, Table IV.1 (§IV.5.1)")
-CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.avoidance:make",
-                           "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
-CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.five_behaviours:make",
-                           "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
+CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.robust:fuzzy_2b",
+                           "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following)")
+CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.robust:fuzzy_5b",
+                           "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following)")
+CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.robust:fuzzy_2b_thesis",
+                                  "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
+CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
+                                  "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",

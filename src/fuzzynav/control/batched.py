@@ -11,6 +11,7 @@ runs it inside its own compiled step.
 
 from __future__ import annotations
 
+import math
 from abc import abstractmethod
 from dataclasses import dataclass
 
@@ -99,6 +100,25 @@ class CompiledNavigator(BatchedController):
         """Forget the modes, turns and hits (a new episode)."""
         self._state = None
 
+    def for_robot(self, robot) -> "CompiledNavigator":
+        """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
+        scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
+        body radius and, for ``fuzzy-5b``, a top speed no higher than the robot's. The default
+        robot leaves the parameters as built."""
+        from fuzzynav.kernels import navigators
+
+        if not hasattr(self, "_as_built"):
+            self._as_built = self.params.copy()
+        built, params = self._as_built, self.params
+        if self.kind in (navigators.CONSTANT, navigators.WALL_FOLLOWER) or built[navigators.WHEELBASE] <= 0:
+            return self
+        params[navigators.WHEELBASE] = robot.wheelbase
+        params[navigators.TURN_RADIUS] = built[navigators.TURN_RADIUS] * (robot.wheelbase / built[navigators.WHEELBASE])
+        params[navigators.BODY] = robot.radius
+        if self.kind == navigators.FIVE_BEHAVIOURS:
+            params[navigators.V_MAX] = min(built[navigators.V_MAX], robot.max_speed)
+        return self
+
     def compiled(self, n: int, sensor_angles):
         """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
         ``(kind, params, tables, state, memory)``; the state is this navigator's own (kept across
@@ -117,6 +137,25 @@ class CompiledNavigator(BatchedController):
             self._state[:, 0] = -1  # no mode yet
             self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
         return self.kind, self.params, self.tables, self._state, self._memory
+
+    def act(self, obs: Observation) -> Command:
+        """One robot: the compiled decision of :meth:`act_batch`'s row, called directly (no batch
+        of one is built, the cost of a navigator wrapped per robot)."""
+        if obs.ranges is None or obs.target is None:
+            return super().act(obs)
+        from fuzzynav.kernels import navigators
+
+        angles = np.ascontiguousarray(obs.sensor_angles, dtype=float)
+        kind, params, tables, state, memory = self.compiled(1, angles)
+        d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
+        b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
+        x, y, theta = (float(value) for value in obs.pose)
+        tx, ty = (float(value) for value in obs.target)
+        v = 0.0 if obs.speed is None else float(obs.speed)
+        steering, speed, code = navigators.act_one(
+            kind, params, tables, state[0], memory[0], x, y, theta, v, tx, ty,
+            np.ascontiguousarray(obs.ranges, dtype=float), self._angles, float(obs.max_range), float(obs.dt), d_o, b_o)
+        return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
     def act_batch(self, obs):
         """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""

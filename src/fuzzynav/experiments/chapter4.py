@@ -3,14 +3,17 @@
 - ``fig-IV-12``: free goal seeking (Table IV.1) from five starts to five goals per panel (a, b),
   positions read off the figure (the first pair of each panel is the built-in scenario);
 - ``fig-IV-13``: free navigation with its commands α(t), V_r(t) (Figs IV.13–IV.14);
-- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b``) past circular obstacles, with
+- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b-thesis``) past circular obstacles, with
   the behaviour changes marked A, B, … (panels a, b);
-- ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b``) in two unknown worlds (a, b);
-- ``fig-IV-23``: ``fuzzy-5b`` reaching a goal inside a U-shaped wall;
+- ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b-thesis``) in two unknown worlds (a, b);
+- ``fig-IV-23``: ``fuzzy-5b-thesis`` reaching a goal inside a U-shaped wall;
 - ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend (Fig VI.27) and
   into the sharp corner where it collides (Fig VI.28);
-- ``eval-IV``: ``fuzzy-2b`` on circle worlds and ``fuzzy-5b`` on mixed worlds (100 each, 10
-  with ``quick``), the numbers of ``fuzzynav evaluate``.
+- ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100
+  each, 10 with ``quick``), the numbers of ``fuzzynav evaluate``.
+
+The navigators are the ``-thesis`` variants, as published (the default ``fuzzy-2b`` and
+``fuzzy-5b`` add recovery and loop escape, :mod:`fuzzynav.control.robust`).
 
 Every function has the registry signature ``(out_dir, quick, seed) -> dict``, writes PNGs and
 returns the measured outcomes.
@@ -100,18 +103,18 @@ def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def fig_iv_15(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.15 (a, b): ``fuzzy-2b`` past circular obstacles, behaviour changes marked A, B, …"""
-    return _panels(["fig-IV-15a", "fig-IV-15b"], "fuzzy-2b", out_dir, "fig-IV-15.png")
+    """Fig IV.15 (a, b): ``fuzzy-2b-thesis`` past circular obstacles, behaviour changes marked A, B, …"""
+    return _panels(["fig-IV-15a", "fig-IV-15b"], "fuzzy-2b-thesis", out_dir, "fig-IV-15.png")
 
 
 def fig_iv_22(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.22 (a, b): ``fuzzy-5b`` in two unknown cluttered worlds."""
-    return _panels(["fig-IV-22a", "fig-IV-22b"], "fuzzy-5b", out_dir, "fig-IV-22.png", markers=False)
+    """Fig IV.22 (a, b): ``fuzzy-5b-thesis`` in two unknown cluttered worlds."""
+    return _panels(["fig-IV-22a", "fig-IV-22b"], "fuzzy-5b-thesis", out_dir, "fig-IV-22.png", markers=False)
 
 
 def fig_iv_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.23: ``fuzzy-5b`` reaches a goal inside a U-shaped wall by running along it."""
-    return _panels(["fig-IV-23"], "fuzzy-5b", out_dir, "fig-IV-23.png", markers=False)
+    """Fig IV.23: ``fuzzy-5b-thesis`` reaches a goal inside a U-shaped wall by running along it."""
+    return _panels(["fig-IV-23"], "fuzzy-5b-thesis", out_dir, "fig-IV-23.png", markers=False)
 
 
 def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -120,12 +123,12 @@ def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Success / collision / timeout rates of ``fuzzy-2b`` (circles) and ``fuzzy-5b`` (mixed)."""
+    """Success / collision / timeout rates of ``fuzzy-2b-thesis`` (circles) and ``fuzzy-5b-thesis`` (mixed)."""
     n = 10 if quick else 100
     result = {}
     figure = Figure(figsize=(7, 4), layout="constrained")
     ax = figure.add_subplot(111)
-    for i, (controller, worlds) in enumerate((("fuzzy-2b", "circles"), ("fuzzy-5b", "mixed"))):
+    for i, (controller, worlds) in enumerate((("fuzzy-2b-thesis", "circles"), ("fuzzy-5b-thesis", "mixed"))):
         numbers = evaluate(controller, worlds, n, seed)
         numbers.pop("episodes")
         result[f"{controller}/{worlds}"] = numbers

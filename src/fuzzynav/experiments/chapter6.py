@@ -203,14 +203,14 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
 
 
 def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
-    """Figs VI.23–VI.24: the chapter IV fuzzy navigator (fuzzy-2b) and the FQL navigator on the
+    """Figs VI.23–VI.24: the chapter IV fuzzy navigator (fuzzy-2b-thesis) and the FQL navigator on the
     same world, and both over the same random worlds."""
     _, learned, _ = _avoid_model(out_dir, quick, seed)
-    fuzzy = make_controller("fuzzy-2b")
+    fuzzy = make_controller("fuzzy-2b-thesis")
     scenario = _goal_scenarios(seed, 1, layout=RandomObstacles())[0]
     figure = Figure(figsize=(11, 5.5), layout="constrained")
     numbers = {}
-    for ax, (name, controller) in zip(figure.subplots(1, 2), (("fuzzy-2b (Fig VI.23)", fuzzy),
+    for ax, (name, controller) in zip(figure.subplots(1, 2), (("fuzzy-2b-thesis (Fig VI.23)", fuzzy),
                                                                ("FQL (Fig VI.24)", learned))):
         trace = run_episode(scenario, controller)
         plot_trajectory(trace, scenario, ax)

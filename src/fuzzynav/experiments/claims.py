@@ -81,10 +81,10 @@ def _wall_follower(numbers):
 
 
 def _eval_iv(numbers):
-    two, five = numbers["fuzzy-2b/circles"], numbers["fuzzy-5b/mixed"]
+    two, five = numbers["fuzzy-2b-thesis/circles"], numbers["fuzzy-5b-thesis/mixed"]
     ok = two["success_rate"] >= 0.9 and five["success_rate"] >= 0.9 and five["collision_rate"] == 0
-    return ok, (f"fuzzy-2b on {two['n']} circle worlds: {two['success_rate']:.0%} success, "
-                f"{two['collision_rate']:.0%} collisions; fuzzy-5b on {five['n']} mixed worlds: "
+    return ok, (f"fuzzy-2b-thesis on {two['n']} circle worlds: {two['success_rate']:.0%} success, "
+                f"{two['collision_rate']:.0%} collisions; fuzzy-5b-thesis on {five['n']} mixed worlds: "
                 f"{five['success_rate']:.0%} success, {five['collision_rate']:.0%} collisions")
 
 
@@ -225,7 +225,7 @@ CLAIMS: dict[str, Claim] = {
     "eval-IV": Claim(
         "The chapter IV navigators reach their goals in worlds they do not know (§IV.6–IV.7); the thesis gives no "
         "rates.",
-        "This package's targets: fuzzy-2b ≥ 90 % success on circle worlds; fuzzy-5b ≥ 90 % success with no "
+        "This package's targets: fuzzy-2b-thesis ≥ 90 % success on circle worlds; fuzzy-5b-thesis ≥ 90 % success with no "
         "collision on mixed worlds.", _eval_iv),
     "fig-V-7": Claim(
         "The control surface of the 25-rule fuzzy tracker (Table V.1) spans the steering range ±π/4 (Fig V.7).",

@@ -13,8 +13,8 @@ from fuzzynav.jit import jit
 
 wrap = jit(wrap_formula)
 
-ROBOT_FIELDS = ("dt", "wheelbase", "radius", "max_steering", "min_speed", "max_speed", "arc")
-DT, WHEELBASE, RADIUS, MAX_STEERING, MIN_SPEED, MAX_SPEED, ARC = range(len(ROBOT_FIELDS))
+ROBOT_FIELDS = ("dt", "wheelbase", "radius", "max_steering", "lowest_speed", "max_speed", "arc")
+DT, WHEELBASE, RADIUS, MAX_STEERING, LOWEST_SPEED, MAX_SPEED, ARC = range(len(ROBOT_FIELDS))
 
 
 @jit
@@ -30,9 +30,10 @@ def ring_gap(x, y, radius, limit):
 
 @jit
 def clip(steering, speed, robot):
-    """(α, V) within |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays NaN)."""
+    """(α, V) within |α| ≤ max_steering, lowest_speed ≤ V ≤ max_speed (NaN stays NaN); the
+    lowest speed is −max_reverse_speed for a robot that reverses (V < 0), else min_speed."""
     steering = steering if steering != steering else min(max(steering, -robot[MAX_STEERING]), robot[MAX_STEERING])
-    speed = speed if speed != speed else min(max(speed, robot[MIN_SPEED]), robot[MAX_SPEED])
+    speed = speed if speed != speed else min(max(speed, robot[LOWEST_SPEED]), robot[MAX_SPEED])
     return steering, speed
 
 

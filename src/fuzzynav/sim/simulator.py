@@ -16,6 +16,9 @@
 
 Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
 returning a :class:`Trace`; :func:`run_episode` is the one-call form.
+The robot's parameters (size, wheelbase, limits, reverse speed) are the scenario's
+(:attr:`Scenario.robot`) unless ``robot_params`` overrides them; they reach the compiled step
+in its ``setup`` array, and Python controllers find them in ``observation.extras["robot"]``.
 """
 
 from __future__ import annotations
@@ -60,10 +63,10 @@ class BatchSimulator:
     """
 
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = scenario
-        self.params = robot_params
+        self.params = robot_params if robot_params is not None else scenario.robot
         self.sensors = sensors if sensors is not None else SensorRing()
         self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
@@ -85,6 +88,9 @@ class BatchSimulator:
             if callable(getattr(copied, "prepare", None)):
                 copied.prepare(scenario)
         self.controllers = copies
+        for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
+            if callable(getattr(each, "for_robot", None)):
+                each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
@@ -179,7 +185,7 @@ class BatchSimulator:
             path=self.task.path,
             waypoint_index=self._status[:, step_kernel.WAYPOINT].copy(),
             target_velocity=self.task.target_velocity(t),
-            extras={"task": self.task.kind},
+            extras={"task": self.task.kind, "robot": self.params},
         )
 
     def _act(self, obs: BatchObservation):
@@ -278,7 +284,7 @@ class Simulator:
     """One robot, one episode: ``Simulator(scenario, controller, ...).run() -> Trace``."""
 
     def __init__(self, scenario: Scenario, controller: Controller, *,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, start=None):
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
                                      sensors=sensors, seed=seed, max_time=max_time)

@@ -5,6 +5,8 @@ name: fig-IV-15a                      # optional (default: the file name)
 description: one line for `fuzzynav scenarios`   # optional
 world: {width: 20.0, height: 20.0}    # optional, default 20 x 20; origin bottom-left
 robot: {x: 1.0, y: 1.0, theta: 0.0}   # metres, radians CCW from +x (theta optional, 0)
+# optional robot keys (defaults: robot.tricycle.TricycleParams): radius (footprint disc, 0.3 m),
+# wheelbase (0.5 m), max_steering (π/4 rad), max_speed (4 m/s), max_reverse_speed (0.5 m/s; 0: no reverse)
 goal: {x: 18.0, y: 18.0, tolerance: 0.3}
 obstacles:
   - circle: {center: [5, 5], radius: 1.0}
@@ -33,14 +35,14 @@ from __future__ import annotations
 
 import difflib
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import limits
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
 from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
@@ -55,6 +57,7 @@ PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.
 
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
             "target", "obstacles", "max_time", "controllers")
+ROBOT_KEYS = ("radius", "wheelbase", "max_steering", "max_speed", "max_reverse_speed")  # TricycleParams fields
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
     "polygon": {"points": None},
@@ -92,7 +95,8 @@ class TargetTask:
 
 @dataclass(frozen=True)
 class Scenario:
-    """A validated scenario: the world, the robot's start pose ``(3,)`` and exactly one task."""
+    """A validated scenario: the world, the robot's start pose ``(3,)`` and exactly one task;
+    ``robot`` holds the robot's size and limits (the simulator's default parameters)."""
 
     name: str
     world: World
@@ -104,6 +108,7 @@ class Scenario:
     description: str = ""
     source: str | None = None
     controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
+    robot: TricycleParams = field(default=DEFAULT_PARAMS)
 
     @property
     def task(self) -> str:
@@ -119,6 +124,8 @@ class Scenario:
             doc["controllers"] = list(self.controllers)
         doc["world"] = {"width": self.world.width, "height": self.world.height}
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
+        doc["robot"].update({key: getattr(self.robot, key) for key in ROBOT_KEYS
+                             if getattr(self.robot, key) != getattr(DEFAULT_PARAMS, key)})
         if self.goal is not None:
             doc["goal"] = {"x": float(self.goal.position[0]), "y": float(self.goal.position[1]),
                            "tolerance": self.goal.tolerance}
@@ -240,7 +247,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
                        robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
     """Validate a parsed scenario document and build the :class:`Scenario`.
 
-    ``robot_radius`` is the footprint that must fit at the start pose (default: the robot's).
+    ``robot_radius`` is the footprint that must fit at the start pose when the document's
+    ``robot`` gives no ``radius`` (default: the default robot's).
     """
     check = _Checker(source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
@@ -260,10 +268,11 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     limits.world_contents(obstacles, width, height, source)
     world = World(width, height, obstacles)
 
-    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta"), required=("x", "y"))
+    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS), required=("x", "y"))
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
                       limits.angle(robot.get("theta", 0.0), source, "robot.theta")])
-    _place(check, world, start[:2], "robot", "start", robot_radius)
+    robot_limits = _robot_params(check, robot)
+    _place(check, world, start[:2], "robot", "start", robot_limits.radius if "radius" in robot else robot_radius)
 
     goal = path = target = None
     if "goal" in doc:
@@ -279,8 +288,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             if i and np.array_equal(waypoint, waypoints[i - 1]):
                 check.fail(f"path[{i}]", f"repeats path[{i - 1}] (zero-length segment)")
         speed = check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True)
-        if speed > DEFAULT_PARAMS.max_speed:
-            check.fail("speed", f"must be at most the robot's {DEFAULT_PARAMS.max_speed:g} m/s, got {speed:g}")
+        if speed > robot_limits.max_speed:
+            check.fail("speed", f"must be at most the robot's {robot_limits.max_speed:g} m/s, got {speed:g}")
         switching = validation.choice(doc.get("path_switching", PATH_SWITCHING[0]), PATH_SWITCHING, source,
                                       "path_switching")
         path = PathTask(waypoints,
@@ -333,7 +342,21 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         description=check.text(doc.get("description", ""), "description"),
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
+        robot=robot_limits,
     )
+
+
+def _robot_params(check: _Checker, robot: dict) -> TricycleParams:
+    """The robot's size and limits from the optional keys of ``robot`` (others: the defaults)."""
+    values = {}
+    for key in ROBOT_KEYS:
+        if key in robot:
+            values[key] = check.number(robot[key], f"robot.{key}", positive=key != "max_reverse_speed")
+    if values.get("max_reverse_speed", 0.0) < 0:
+        check.fail("robot.max_reverse_speed", f"must be ≥ 0, got {values['max_reverse_speed']:g}")
+    if values.get("max_steering", 0.0) >= math.pi / 2:
+        check.fail("robot.max_steering", f"must be below π/2 (90°), got {values['max_steering']:g}")
+    return replace(DEFAULT_PARAMS, **values) if values else DEFAULT_PARAMS
 
 
 def _controller_names(check: _Checker, names) -> tuple[str, ...]:
