@@ -48,8 +48,10 @@ class FuzzynavEnv(gymnasium.Env):
         return self.episodes.batch.scenarios[0]
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """A new episode (``options={"scenario": …}``: on that scenario, a name, file or object)."""
         super().reset(seed=seed)
-        self.episodes.start([0], [self.np_random])
+        scenario = (options or {}).get("scenario")
+        self.episodes.start([0], [self.np_random], None if scenario is None else [scenario])
         self._live[0] = True
         if self.render_mode == "human":
             self.render()

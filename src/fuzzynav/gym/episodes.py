@@ -19,7 +19,7 @@ from gymnasium import spaces
 
 from fuzzynav.errors import InputError
 from fuzzynav.gym.core import RobotBatch
-from fuzzynav.gym.sources import check_task, make_source
+from fuzzynav.gym.sources import ScenarioSource, check_task, make_source
 from fuzzynav.gym.tasks import REWARDS, TASKS, dense_reward
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
@@ -116,15 +116,19 @@ class Episodes:
             return values[:, 0], np.zeros(len(values))
         return values[:, 0], values[:, 1]
 
-    def start(self, rows, rngs) -> None:
-        """New episodes in ``rows``, each drawn from its own generator."""
-        scenarios = []
-        for rng in rngs:
-            scenario = self.source.draw(rng)
+    def start(self, rows, rngs, scenarios=None) -> None:
+        """New episodes in ``rows``, each drawn from its own generator (or on the given scenarios)."""
+        rows = list(rows)
+        if scenarios is None:
+            scenarios = [self.source.draw(rng) for rng in rngs]
+        else:
+            if len(scenarios) != len(rows):
+                raise InputError(f"{len(scenarios)} scenarios for {len(rows)} environments", field="scenarios")
+            scenarios = [ScenarioSource(s).scenarios[0] for s in scenarios]
+        for scenario in scenarios:
             check_task(self.task, scenario)
-            scenarios.append(scenario)
         self.batch.start(rows, scenarios)
-        self.steps[list(rows)] = 0
+        self.steps[rows] = 0
 
     def step(self, actions, live):
         """One decision of the ``live`` rows: (rewards, terminated, truncated, info arrays)."""

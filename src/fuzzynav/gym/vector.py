@@ -45,7 +45,8 @@ class FuzzynavVectorEnv(VectorEnv):
         self._ended = np.zeros(self.num_envs, dtype=bool)
 
     def reset(self, *, seed: int | list | None = None, options: dict | None = None):
-        """New episodes everywhere; ``seed`` an int (sub-env i gets ``seed + i``) or a list."""
+        """New episodes everywhere; ``seed`` an int (sub-env i gets ``seed + i``) or a list;
+        ``options={"scenarios": [...]}`` starts sub-env i on the i-th scenario (e.g. held-out worlds)."""
         if seed is None:
             seeds = [None] * self.num_envs
         elif isinstance(seed, (int, np.integer)):
@@ -57,7 +58,8 @@ class FuzzynavVectorEnv(VectorEnv):
         for i, s in enumerate(seeds):
             if s is not None:
                 self._rngs[i] = seeding.np_random(s)[0]
-        self.episodes.start(range(self.num_envs), self._rngs)
+        scenarios = (options or {}).get("scenarios")
+        self.episodes.start(range(self.num_envs), self._rngs, scenarios)
         self._ended[:] = False
         return self.episodes.observe(), {}
 
