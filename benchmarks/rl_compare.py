@@ -2,8 +2,8 @@
 
 Every agent trains on the same environment (``fuzzynav/GoalSeeking-v0``,
 ``fuzzynav/ObstacleAvoidance-v0``), the same thesis reward (``reward="thesis"``), the same
-budget of environment steps, for the same seeds; every ``--eval-every`` steps its greedy policy
-runs the same held-out episodes (:func:`fuzzynav.gym.evaluate.success_rate`):
+budget of environment steps, for the same seeds; at the same step counts (``--checkpoints``,
+denser early on) its greedy policy runs the same held-out episodes (:func:`fuzzynav.gym.evaluate.success_rate`):
 
 - goal seeking: 100 random starts and goals in the empty workspace, sub-environment seeds
   10,000 + i (training draws from seeds 0 … 7 + 100 × seed);
@@ -46,6 +46,7 @@ SB3_SETTINGS = {
     "dqn": {"target_update_interval": 1000, "learning_starts": 1000},  # default 10,000: a third of the budget
 }
 TARGET = 0.9
+CHECKPOINTS = (500, 1000, 2000, 3000, 5000, 7500, 10000, 15000, 20000, 25000, 30000)
 
 
 def held_out(task: str) -> dict:
@@ -61,22 +62,40 @@ def evaluate(policy, task: str, discrete: bool, held: dict) -> float:
                         **TRAIN_OPTIONS[task], **held)["success"]
 
 
-def run_fql(task, seed, steps, every, held):
-    curve, clock = [], {"train": 0.0, "since": time.perf_counter(), "next": every}
+class Clock:
+    """Training time between evaluations, and the step counts still to evaluate at."""
+
+    def __init__(self, checkpoints):
+        self.pending = list(checkpoints)
+        self.train = 0.0
+        self.since = time.perf_counter()
+        self.curve = []
+
+    def due(self, steps: int) -> bool:
+        return bool(self.pending) and steps >= self.pending[0]
+
+    def record(self, steps: int, success) -> None:
+        """Stop the training clock, evaluate (``success()``), restart the clock."""
+        self.train += time.perf_counter() - self.since
+        self.curve.append((int(steps), success()))
+        while self.pending and steps >= self.pending[0]:
+            self.pending.pop(0)
+        self.since = time.perf_counter()
+
+
+def run_fql(task, seed, steps, checkpoints, held):
+    clock = Clock(checkpoints)
 
     def checkpoint(agent, done):
-        if done >= clock["next"] or done >= steps:
-            clock["train"] += time.perf_counter() - clock["since"]
-            curve.append((done, evaluate(agent.predict, task, False, held)))
-            clock["next"] += every
-            clock["since"] = time.perf_counter()
+        if clock.due(done):
+            clock.record(done, lambda: evaluate(agent.predict, task, False, held))
 
     env = FuzzynavVectorEnv(N_PARALLEL, task, **TRAIN_OPTIONS[task])
     FQLAgent(task).learn(env, steps, seed=100 * seed, callback=checkpoint)
-    return curve, clock["train"]
+    return clock.curve, clock.train
 
 
-def run_sb3(algo, task, seed, steps, every, held):
+def run_sb3(algo, task, seed, steps, checkpoints, held):
     import torch
     from stable_baselines3 import DQN, PPO, SAC
     from stable_baselines3.common.callbacks import BaseCallback
@@ -89,20 +108,17 @@ def run_sb3(algo, task, seed, steps, every, held):
                                            **TRAIN_OPTIONS[task]), n_envs=n_envs, seed=100 * seed)
     model = {"ppo": PPO, "sac": SAC, "dqn": DQN}[algo]("MlpPolicy", env, seed=seed, verbose=0, device="cpu",
                                                      **SB3_SETTINGS[algo])
-    curve, clock = [], {"train": 0.0, "since": time.perf_counter(), "next": every}
+    clock = Clock(checkpoints)
 
     class Checkpoints(BaseCallback):
         def _on_step(self):
-            if self.num_timesteps >= clock["next"]:
-                clock["train"] += time.perf_counter() - clock["since"]
-                curve.append((self.num_timesteps, evaluate(lambda o: model.predict(o, deterministic=True)[0],
-                                                           task, discrete, held)))
-                clock["next"] += every
-                clock["since"] = time.perf_counter()
+            if clock.due(self.num_timesteps):
+                clock.record(self.num_timesteps, lambda: evaluate(
+                    lambda o: model.predict(o, deterministic=True)[0], task, discrete, held))
             return True
 
     model.learn(steps, callback=Checkpoints())
-    return curve, clock["train"]
+    return clock.curve, clock.train
 
 
 def steps_to_target(curve, target=TARGET):
@@ -162,9 +178,11 @@ def main(argv=None) -> None:
     parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"], choices=["fql", "ppo", "sac", "dqn"])
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--steps", type=int, default=30_000, help="environment steps per run")
-    parser.add_argument("--eval-every", type=int, default=3_000)
+    parser.add_argument("--checkpoints", type=int, nargs="+", default=list(CHECKPOINTS),
+                        help="step counts to evaluate at (those beyond --steps are dropped; --steps is added)")
     parser.add_argument("--out", type=Path, default=Path("rl_compare"), help="writes OUT.json and OUT.png")
     args = parser.parse_args(argv)
+    checkpoints = sorted({c for c in args.checkpoints if c < args.steps} | {args.steps})
     results = {}
     for task in args.tasks:
         held = held_out(task)
@@ -173,9 +191,9 @@ def main(argv=None) -> None:
             results[task][algo] = []
             for seed in range(args.seeds):
                 if algo == "fql":
-                    curve, seconds = run_fql(task, seed, args.steps, args.eval_every, held)
+                    curve, seconds = run_fql(task, seed, args.steps, checkpoints, held)
                 else:
-                    curve, seconds = run_sb3(algo, task, seed, args.steps, args.eval_every, held)
+                    curve, seconds = run_sb3(algo, task, seed, args.steps, checkpoints, held)
                 results[task][algo].append({"seed": seed, "curve": curve, "train_seconds": seconds})
                 print(f"{task} {algo} seed {seed}: final success {curve[-1][1]:.2f}, "
                       f"{steps_to_target(curve)} steps to 90 %, {seconds:.0f} s", flush=True)
