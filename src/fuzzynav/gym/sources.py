@@ -17,13 +17,13 @@ same episode.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.learn.envs.layouts import RandomGoal, RandomObstacles, WallCourse
+from fuzzynav.learn.envs.layouts import EMPTY, RandomGoal, RandomObstacles, WallCourse
 from fuzzynav.sim.paths import path_scenario
 from fuzzynav.world.generate import KINDS, random_world
 from fuzzynav.world.scenario import Goal, Scenario, load_scenario
@@ -115,8 +115,8 @@ class RandomPaths:
                     heading += rng.uniform(-2 * np.pi / 3, 2 * np.pi / 3)
                 points.append(points[-1] + rng.uniform(3.0, 7.0) * np.array([np.cos(heading), np.sin(heading)]))
             points = np.array(points)
-            if (points >= 3.0).all() and (points <= 17.0).all():
-                return path_scenario(points.round(3), name="random-path", speed=self.speed)
+            if (points >= 3.0).all() and (points <= 17.0).all():  # one shared empty world: one batched call
+                return replace(path_scenario(points.round(3), name="random-path", speed=self.speed), world=EMPTY)
 
 
 def make_source(task: str, scenario=None, worlds: str | None = None, n_worlds: int = 1000, world_seed: int = 0):

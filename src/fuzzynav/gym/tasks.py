@@ -42,14 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fuzzynav.fuzzy.systems_navigation import D_MAX, WALL_D_M, WALL_D_S
-from fuzzynav.learn.rewards import (
-    AvoidSpeedReward,
-    AvoidSteeringReward,
-    GoalSpeedReward,
-    GoalSteeringReward,
-    WallSpeedReward,
-    WallSteeringReward,
-)
+from fuzzynav.learn import rewards
 
 PI = math.pi
 STEERING3 = (-PI / 5, 0.0, PI / 5)  # eq VI.12 / VI.18: NG, Z, PG
@@ -94,17 +87,17 @@ class TaskSpec:
 
 TASKS = {
     "goal": TaskSpec("goal", goal=True, ranges=False,
-                     heads=(("VI.2", GoalSteeringReward()), ("VI.14", GoalSpeedReward())),
+                     heads=(("VI.2", rewards.GoalSteeringReward()), ("VI.14", rewards.GoalSpeedReward())),
                      steering=STEERING3, speeds=GOAL_SPEEDS, max_steps=300, decision_steps=1),
     "avoid": TaskSpec("avoid", goal=True, ranges=True,
-                      heads=(("VI.2", GoalSteeringReward()), ("VI.20", AvoidSteeringReward(D_MAX)),
-                             ("VI.21", AvoidSpeedReward(D_MAX, low=1.0))),
+                      heads=(("VI.2", rewards.GoalSteeringReward()), ("VI.20", rewards.AvoidSteeringReward(D_MAX)),
+                             ("VI.21", rewards.AvoidSpeedReward(D_MAX, low=1.0))),
                       steering=STEERING3, speeds=AVOID_SPEEDS, max_steps=200, decision_steps=3),
     "wall": TaskSpec("wall", goal=False, ranges=True,
-                     heads=(("VI.21", WallSteeringReward(WALL_D_M)), ("VI.22", WallSpeedReward(WALL_D_S))),
+                     heads=(("VI.21", rewards.WallSteeringReward(WALL_D_M)), ("VI.22", rewards.WallSpeedReward(WALL_D_S))),
                      steering=STEERING3, speeds=AVOID_SPEEDS, max_steps=100, decision_steps=3,
                      success_on_survival=True),
-    "path": TaskSpec("path", goal=True, ranges=False, heads=(("VI.2", GoalSteeringReward()),),
+    "path": TaskSpec("path", goal=True, ranges=False, heads=(("VI.2", rewards.GoalSteeringReward()),),
                      steering=STEERING5, speeds=(), max_steps=400, decision_steps=1, steer_only=True),
 }
 
