@@ -20,7 +20,9 @@ Needs the ``sb3`` extra (stable-baselines3 and a CPU torch). Writes ``OUT.json``
 of every seed), ``OUT.png`` (success against steps, mean ± std over seeds) and prints the
 table of the README::
 
-    python benchmarks/rl_compare.py --tasks goal avoid --seeds 5 --steps 30000 --out rl_compare
+    python benchmarks/rl_compare.py --tasks goal avoid --seeds 5 --steps 20000 --out rl_compare
+
+(or one process per task and agent group, then ``--merge A.json B.json … --out rl_compare``).
 """
 
 from __future__ import annotations
@@ -46,7 +48,7 @@ SB3_SETTINGS = {
     "dqn": {"target_update_interval": 1000, "learning_starts": 1000},  # default 10,000: a third of the budget
 }
 TARGET = 0.9
-CHECKPOINTS = (500, 1000, 2000, 3000, 5000, 7500, 10000, 15000, 20000, 25000, 30000)
+CHECKPOINTS = (500, 1000, 2000, 3000, 5000, 7500, 10000, 15000, 20000, 30000, 50000, 100000)
 
 
 def held_out(task: str) -> dict:
@@ -177,11 +179,23 @@ def main(argv=None) -> None:
     parser.add_argument("--tasks", nargs="+", default=["goal", "avoid"], choices=sorted(TRAIN_OPTIONS))
     parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"], choices=["fql", "ppo", "sac", "dqn"])
     parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--steps", type=int, default=30_000, help="environment steps per run")
+    parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")
     parser.add_argument("--checkpoints", type=int, nargs="+", default=list(CHECKPOINTS),
                         help="step counts to evaluate at (those beyond --steps are dropped; --steps is added)")
     parser.add_argument("--out", type=Path, default=Path("rl_compare"), help="writes OUT.json and OUT.png")
+    parser.add_argument("--merge", type=Path, nargs="+", metavar="JSON",
+                        help="only combine the results of earlier runs (e.g. one per task or agent) into OUT")
     args = parser.parse_args(argv)
+    if args.merge:
+        results = {}
+        for path in args.merge:
+            for task, algos in json.loads(path.read_text())["results"].items():
+                results.setdefault(task, {}).update(algos)
+        args.out.with_suffix(".json").write_text(json.dumps({"merged": [str(p) for p in args.merge],
+                                                             "results": results}, indent=1))
+        plot(results, args.out.with_suffix(".png"))
+        print(table(results))
+        return
     checkpoints = sorted({c for c in args.checkpoints if c < args.steps} | {args.steps})
     results = {}
     for task in args.tasks:

@@ -46,10 +46,12 @@ class RobotBatch:
         self.tolerance = np.full(self.n, -np.inf)  # goal tolerance of the rows with a fixed goal
         self.forced_speed = np.full(self.n, np.nan)  # a path's constant speed (NaN: the agent's)
         self.state: RobotState | None = None
+        self._all_groups = None  # _groups() of every row, until an episode starts
 
     # -- episodes ----------------------------------------------------------------------------
     def start(self, rows, scenarios) -> None:
         """Begin new episodes in ``rows`` on ``scenarios`` (one each): start pose, zero command."""
+        self._all_groups = None
         for row, scenario in zip(rows, scenarios):
             self.scenarios[row] = scenario
             self.pose[row] = scenario.start
@@ -75,6 +77,8 @@ class RobotBatch:
 
     def _groups(self, rows=None):
         """``rows`` (default all) by distinct world: ``[(world, rows of that world), …]``."""
+        if rows is None and self._all_groups is not None:
+            return self._all_groups
         groups: dict[int, tuple] = {}
         for row in range(self.n) if rows is None else rows:
             scenario = self.scenarios[row]
@@ -82,7 +86,10 @@ class RobotBatch:
             if key not in groups:
                 groups[key] = (scenario.world, [])
             groups[key][1].append(row)
-        return [(world, np.array(rows)) for world, rows in groups.values()]
+        found = [(world, np.array(members)) for world, members in groups.values()]
+        if rows is None:
+            self._all_groups = found
+        return found
 
     def _state(self, pose, speed, steering, target, goal_target=None, rows=None) -> RobotState:
         """What the observations and rewards read (of ``rows`` only, if given); ``goal_target``
