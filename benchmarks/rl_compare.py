@@ -179,6 +179,7 @@ def main(argv=None) -> None:
     parser.add_argument("--tasks", nargs="+", default=["goal", "avoid"], choices=sorted(TRAIN_OPTIONS))
     parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"], choices=["fql", "ppo", "sac", "dqn"])
     parser.add_argument("--seeds", type=int, default=5)
+    parser.add_argument("--first-seed", type=int, default=0, help="run seeds FIRST … FIRST + SEEDS − 1")
     parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")
     parser.add_argument("--checkpoints", type=int, nargs="+", default=list(CHECKPOINTS),
                         help="step counts to evaluate at (those beyond --steps are dropped; --steps is added)")
@@ -203,7 +204,7 @@ def main(argv=None) -> None:
         results[task] = {}
         for algo in args.algos:
             results[task][algo] = []
-            for seed in range(args.seeds):
+            for seed in range(args.first_seed, args.first_seed + args.seeds):
                 if algo == "fql":
                     curve, seconds = run_fql(task, seed, args.steps, checkpoints, held)
                 else:
