@@ -189,9 +189,11 @@ def main(argv=None) -> None:
     args = parser.parse_args(argv)
     if args.merge:
         results = {}
-        for path in args.merge:
+        for path in args.merge:  # runs of the same task and agent are pooled, one per seed
             for task, algos in json.loads(path.read_text())["results"].items():
-                results.setdefault(task, {}).update(algos)
+                for algo, runs in algos.items():
+                    pooled = {r["seed"]: r for r in results.setdefault(task, {}).get(algo, []) + runs}
+                    results[task][algo] = [pooled[seed] for seed in sorted(pooled)]
         args.out.with_suffix(".json").write_text(json.dumps({"merged": [str(p) for p in args.merge],
                                                              "results": results}, indent=1))
         plot(results, args.out.with_suffix(".png"))
