@@ -139,7 +139,8 @@ def summarise(runs: list[dict]) -> dict:
 
 
 def table(results: dict) -> str:
-    lines = ["| task | agent | steps to 90 % (median) | seeds reaching 90 % | final success (mean ± std) | train time (s) |",
+    lines = ["| task | agent | steps to 90 % (median) | seeds reaching 90 % | final success (mean ± std) "
+             "| train time (s) |",
              "| --- | --- | --- | --- | --- | --- |"]
     for task, algos in results.items():
         for algo, runs in algos.items():
@@ -177,7 +178,8 @@ def plot(results: dict, path: Path) -> None:
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tasks", nargs="+", default=["goal", "avoid"], choices=sorted(TRAIN_OPTIONS))
-    parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"], choices=["fql", "ppo", "sac", "dqn"])
+    parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"],
+                        choices=["fql", "ppo", "sac", "dqn"])
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--first-seed", type=int, default=0, help="run seeds FIRST … FIRST + SEEDS − 1")
     parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")

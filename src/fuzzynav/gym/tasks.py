@@ -15,7 +15,8 @@ task                   observation (float32)                                    
 θ_rg is θ_r − θ_d (:func:`~fuzzynav.control.learned.goal_inputs`): negative when the goal is on
 the left, the sign of the thesis' tables. Actions: a continuous ``Box`` [−1, 1]² scaled to the
 robot's limits — α = a_0 · π/4, V_r = (a_1 + 1) / 2 · 4 m/s
-(:func:`~fuzzynav.gym.episodes.scale_actions`; path tracking: α only, the path fixes the speed) — or ``Discrete`` over the thesis' candidate conclusions (:data:`STEERING3` eq VI.12 / VI.18 ×
+(:func:`~fuzzynav.gym.episodes.scale_actions`; path tracking: α only, the path fixes the speed) —
+or ``Discrete`` over the thesis' candidate conclusions (:data:`STEERING3` eq VI.12 / VI.18 ×
 the task's candidate speeds; path tracking: :data:`STEERING5`, eq VI.15).
 
 Rewards (``reward=``):
@@ -94,7 +95,8 @@ TASKS = {
                              ("VI.21", rewards.AvoidSpeedReward(D_MAX, low=1.0))),
                       steering=STEERING3, speeds=AVOID_SPEEDS, max_steps=200, decision_steps=3),
     "wall": TaskSpec("wall", goal=False, ranges=True,
-                     heads=(("VI.21", rewards.WallSteeringReward(WALL_D_M)), ("VI.22", rewards.WallSpeedReward(WALL_D_S))),
+                     heads=(("VI.21", rewards.WallSteeringReward(WALL_D_M)),
+                            ("VI.22", rewards.WallSpeedReward(WALL_D_S))),
                      steering=STEERING3, speeds=AVOID_SPEEDS, max_steps=100, decision_steps=3,
                      success_on_survival=True),
     "path": TaskSpec("path", goal=True, ranges=False, heads=(("VI.2", rewards.GoalSteeringReward()),),
