@@ -57,6 +57,13 @@ class TaskState:
             return self.scenario.path.waypoints[0]
         return self.scenario.target.motion.position(t)
 
+    def target(self, t: float = 0.0) -> np.ndarray:
+        """``(N, 2)``: the point each robot aims at — the goal, its current waypoint (after
+        :meth:`update`), or the moving target at time ``t``."""
+        if self.kind == "path":
+            return self.scenario.path.waypoints[self.waypoint_index]
+        return np.broadcast_to(self.position(t), (self.n, 2))
+
     def target_velocity(self, t: float) -> np.ndarray | None:
         """``(N, 2)`` velocity of a moving target at time ``t``, else None."""
         if self.kind != "target":
