@@ -82,6 +82,12 @@ def _readings(ranges) -> np.ndarray:
 GROUPS = np.array([FRONT, RIGHT, LEFT])
 
 
+def as_column(values, n: int) -> np.ndarray:
+    """``values`` (a scalar or (n,)) as an (n,) float array for the kernels (no copy when it is one)."""
+    values = np.asarray(values, dtype=float)
+    return values if values.shape == (n,) else np.broadcast_to(values, (n,))
+
+
 def _module_inputs(ranges, open_side: bool) -> np.ndarray:
     """(B, 3) front, right, left distances [and (B, 4) openness] by :func:`fuzzynav.kernels.learned.module_inputs`."""
     from fuzzynav.kernels import learned
@@ -336,9 +342,9 @@ class LearnedAvoidanceNavigator(BatchController):
         ranges = _readings(ranges)
         n = len(ranges)
         out = np.empty((n, 3))
-        learned.drive(*(np.ascontiguousarray(np.broadcast_to(v, (n,)), dtype=float) for v in (alpha, speed, free)),
-                      ranges, np.ascontiguousarray(goal, dtype=float), self.goal.tables, self.goal.wheelbase,
-                      self.supervisor, out)
+        learned.drive(as_column(alpha, n), as_column(speed, n), as_column(free, n), ranges,
+                      np.ascontiguousarray(goal, dtype=float), self.goal.tables, self.goal.wheelbase, self.supervisor,
+                      out)
         return out[:, 0], out[:, 1], out[:, 2] != 0.0
 
     def act_batch(self, obs):

@@ -169,8 +169,10 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
                    decision_steps=AVOID_DECISION)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
 
+    steering_rules = steer.greedy_indices(AVOID_TOLERANCE)  # the extracted steering, frozen from here on
+
     def speed_command(a, s):
-        return navigate(s, steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], lambda free: a[:, 0])
+        return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
     speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=0,
                         alpha=avoid_rate())
