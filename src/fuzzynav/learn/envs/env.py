@@ -35,7 +35,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from fuzzynav.control.learned import as_column, goal_inputs, side_distances
-from fuzzynav.kernels import motion
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world.world import World
@@ -100,6 +99,8 @@ class RobotEnv:
         command keeps steering); the episode may end at any of them; the reward compares the
         states at both ends of the period.
         """
+        from fuzzynav.kernels import motion  # numba, imported when first needed
+
         before = self.state
         now = before
         collided = np.zeros(self.batch, dtype=bool)
