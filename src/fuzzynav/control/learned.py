@@ -44,14 +44,15 @@ def goal_inputs(pose, target) -> np.ndarray:
     d_rg is eq IV.6; the angle is the thesis' table input (eq IV.8 with the sign of :func:`~fuzzynav.control.base.thesis_angle_error` that
     makes its tables steer towards the goal): negative when the goal is on the left.
     """
-    from fuzzynav.kernels import learned
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
     pose = np.asarray(pose, dtype=float).reshape(-1, 3)
     rel = np.asarray(target, dtype=float).reshape(-1, 2) - pose[:, :2]
     out = np.empty((len(rel), 2))
     # NumPy's vectorised arctan2 (it may differ from libm's in the last bit; the models were trained with it)
     direction = np.arctan2(rel[:, 1], rel[:, 0])
-    learned.goal_inputs(rel, direction, np.ascontiguousarray(np.broadcast_to(pose[:, 2], direction.shape)), out)
+    heading = pose[:, 2] if len(pose) == len(rel) else np.broadcast_to(pose[:, 2], direction.shape)
+    learned.goal_inputs(rel, direction, heading, out)
     return out
 
 
@@ -90,7 +91,7 @@ def as_column(values, n: int) -> np.ndarray:
 
 def _module_inputs(ranges, open_side: bool) -> np.ndarray:
     """(B, 3) front, right, left distances [and (B, 4) openness] by :func:`fuzzynav.kernels.learned.module_inputs`."""
-    from fuzzynav.kernels import learned
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
     ranges = _readings(ranges)
     out = np.empty((len(ranges), 4 if open_side else 3))
@@ -228,7 +229,7 @@ def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params
     sensed (the VRB principle, Table IV.6); the blend otherwise.
     """
     from fuzzynav.control.supervisor import column
-    from fuzzynav.kernels import learned
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
     ranges = _readings(ranges)
     out = np.empty((len(ranges), 3))
@@ -337,7 +338,7 @@ class LearnedAvoidanceNavigator(BatchController):
         way clear (:func:`supervise`), in one call of :func:`fuzzynav.kernels.learned.drive`. The
         avoider's training drives the robot through this method with the learner's shares in place
         of the rules'."""
-        from fuzzynav.kernels import learned
+        import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
         ranges = _readings(ranges)
         n = len(ranges)

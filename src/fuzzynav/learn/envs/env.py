@@ -99,7 +99,7 @@ class RobotEnv:
         command keeps steering); the episode may end at any of them; the reward compares the
         states at both ends of the period.
         """
-        from fuzzynav.kernels import motion  # numba, imported when first needed
+        import fuzzynav.kernels.motion as motion  # numba, imported when first needed
 
         before = self.state
         now = before

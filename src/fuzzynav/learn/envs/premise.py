@@ -51,7 +51,7 @@ def _pack(inputs) -> tuple:
 
 
 def _strengths(inputs, X, packed=None) -> np.ndarray:
-    from fuzzynav.kernels import learned
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
     X = np.ascontiguousarray(X, dtype=float)
     out = np.empty((X.shape[0], inputs[0].mu.shape[1]))
