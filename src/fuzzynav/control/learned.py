@@ -219,26 +219,6 @@ def avoidance_supervisor(avoidance):
     return SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
 
 
-def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params):
-    """(α, V_r, goal seeking?) of the learned navigator (B,) from the blend of the avoider and the
-    goal seeker ``blended`` (B, 2), the goal seeker's ``goal_command`` (B, 2), the seven readings
-    (B, 7) and the goal's distance and bearing (B,).
-
-    As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
-    or the goal direction clear — at a speed no higher than the avoider's while something is
-    sensed (the VRB principle, Table IV.6); the blend otherwise.
-    """
-    from fuzzynav.control.supervisor import column
-    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
-
-    ranges = _readings(ranges)
-    out = np.empty((len(ranges), 3))
-    learned.supervise(np.ascontiguousarray(blended, dtype=float), np.ascontiguousarray(goal_command, dtype=float),
-                      ranges, column(goal_distance, len(ranges)), column(goal_bearing, len(ranges)),
-                      supervisor_array(params), out)
-    return out[:, 0], out[:, 1], out[:, 2] != 0.0
-
-
 def supervisor_array(params) -> np.ndarray:
     """The supervisor's thresholds as the kernels read them: detection, front, keep, clear, vision."""
     return np.array([params.detection, params.front, params.keep, params.clear, params.vision])
@@ -269,7 +249,7 @@ class LearnedAvoidanceNavigator(BatchController):
 
     When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
     obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
-    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:func:`supervise`) hands the
+    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:meth:`drive`) hands the
     robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
     it the blend keeps pulling away from obstacles beside a clear path and the robot circles
     goals placed near obstacles.
@@ -334,10 +314,12 @@ class LearnedAvoidanceNavigator(BatchController):
     def drive(self, alpha, speed, free, ranges, goal):
         """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended by ``free``
         with the goal seeker's command for ``goal`` (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`;
-        :func:`with_goal_seeking`) and handed to goal seeking alone where the supervisor finds the
-        way clear (:func:`supervise`), in one call of :func:`fuzzynav.kernels.learned.drive`. The
-        avoider's training drives the robot through this method with the learner's shares in place
-        of the rules'."""
+        :func:`with_goal_seeking`), in one call of :func:`fuzzynav.kernels.learned.drive`.
+
+        As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
+        or the goal direction clear — at a speed no higher than the avoider's while something is
+        sensed (the VRB principle, Table IV.6); the blend otherwise. The avoider's training drives
+        the robot through this method with the learner's shares in place of the rules'."""
         import fuzzynav.kernels.learned as learned  # numba, imported when first needed
 
         ranges = _readings(ranges)

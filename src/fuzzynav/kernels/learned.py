@@ -71,15 +71,6 @@ def supervise_one(blend_alpha, blend_speed, goal_alpha, goal_speed, readings, di
 
 
 @jit
-def supervise(blended, goal_command, ranges, distance, bearing, supervisor, out):
-    """:func:`supervise_one` of every row into ``out`` (N, 3) = α, V_r, goal seeking (0/1)."""
-    for n in range(ranges.shape[0]):
-        out[n, 0], out[n, 1], out[n, 2] = supervise_one(blended[n, 0], blended[n, 1], goal_command[n, 0],
-                                                        goal_command[n, 1], ranges[n], distance[n], bearing[n],
-                                                        supervisor)
-
-
-@jit
 def drive(alpha, speed, free, ranges, goal, tables, wheelbase, supervisor, out):
     """The learned navigator of every row into ``out`` (N, 3) = α, V_r, goal seeking (0/1): the
     avoider's shares (α, V_r) plus w_free times the guarded goal seeker's command for
