@@ -64,14 +64,16 @@ def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
 def test_supervisor_hands_a_clear_goal_direction_to_goal_seeking_and_slows_it():
     navigator = LearnedAvoidanceNavigator(fql_avoid.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False))
     assert (navigator.params.front, navigator.params.detection) == (fql_avoid.AVOID_D_MIN, fql_avoid.AVOID_D_SAFE)
-    blended, goal = np.array([[0.6, 0.5], [0.6, 0.5]]), np.array([[-0.2, 3.0], [-0.2, 3.0]])
     ranges = np.full((2, 7), 4.0)
     ranges[:, 6] = 2.0  # a wall on the left, 2 m away, beside a clear path ahead
     ranges[1, :3] = 1.0  # and for the second robot an obstacle dead ahead, 1 m
-    steering, speed, goal_seeking = learned.supervise(blended, goal, ranges, np.full(2, 10.0), np.zeros(2),
-                                                      navigator.params)
+    goal = np.array([[10.0, 0.2], [10.0, 0.2]])  # 10 m away, a little to the right
+    seeker_steering, seeker_speed, _ = navigator.goal(goal[:, 0], -goal[:, 1])
+    assert seeker_speed[0] > 0.5
+    steering, speed, goal_seeking = navigator.drive(0.6, 0.5, 0.0, ranges, goal)  # the avoider's (α, V_r)
     assert goal_seeking.tolist() == [True, False]
-    assert steering.tolist() == [-0.2, 0.6] and speed.tolist() == [0.5, 0.5]  # sensed: no faster than the avoider
+    assert steering.tolist() == [seeker_steering[0], 0.6]
+    assert speed.tolist() == [0.5, 0.5]  # sensed: goal seeking no faster than the avoider
 
 def test_model_files_load_as_controllers_and_errors_name_the_field(tmp_path):
     system = steering_table("Z")

@@ -27,9 +27,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.base import BatchController, thesis_angle_error
+from fuzzynav.control.base import BatchController
 from fuzzynav.errors import InputError
-from fuzzynav.world.geometry import wrap_angle
 
 # Sensor groups of the seven-sensor ring C1…C7 at 0°, −30°, +30°, −60°, +60°, −90°, +90°
 # (fuzzynav.robot.sensors), as the modules of §IV.7: front = C1, C2, C3 (FOA); right = C2, C4,
@@ -45,10 +44,16 @@ def goal_inputs(pose, target) -> np.ndarray:
     d_rg is eq IV.6; the angle is the thesis' table input (eq IV.8 with the sign of :func:`~fuzzynav.control.base.thesis_angle_error` that
     makes its tables steer towards the goal): negative when the goal is on the left.
     """
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
     pose = np.asarray(pose, dtype=float).reshape(-1, 3)
     rel = np.asarray(target, dtype=float).reshape(-1, 2) - pose[:, :2]
-    bearing = wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - pose[:, 2])
-    return np.column_stack([np.hypot(rel[:, 0], rel[:, 1]), thesis_angle_error(bearing)])
+    out = np.empty((len(rel), 2))
+    # NumPy's vectorised arctan2 (it may differ from libm's in the last bit; the models were trained with it)
+    direction = np.arctan2(rel[:, 1], rel[:, 0])
+    heading = pose[:, 2] if len(pose) == len(rel) else np.broadcast_to(pose[:, 2], direction.shape)
+    learned.goal_inputs(rel, direction, heading, out)
+    return out
 
 
 def side_distances(ranges) -> np.ndarray:
@@ -57,21 +62,41 @@ def side_distances(ranges) -> np.ndarray:
     The thesis' FQL avoider and wall follower read "the distances in three directions" (Fig VI.17);
     with the ring of §IV.7 each direction is the nearest reading of its module's three sensors.
     """
-    ranges = np.asarray(ranges, dtype=float)
-    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
-        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
-                         f"{ranges.shape}", field="ranges")
-    return np.column_stack([ranges[:, list(group)].min(axis=1) for group in (FRONT, RIGHT, LEFT)])
+    return _module_inputs(ranges, False)
 
 
 def single_rays(ranges) -> np.ndarray:
     """Front, right and left distances (B, 3) as the single rays at 0°, −90°, +90° (B, 7) → (B, 3):
     the sensing of the hand-made wall follower (:mod:`fuzzynav.control.wall_following`)."""
-    ranges = np.asarray(ranges, dtype=float)
+    return _readings(ranges)[:, list(RAYS)]
+
+
+def _readings(ranges) -> np.ndarray:
+    """``ranges`` as a contiguous float (B, 7) array, else InputError."""
+    ranges = np.ascontiguousarray(ranges, dtype=float)
     if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
         raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
                          f"{ranges.shape}", field="ranges")
-    return ranges[:, list(RAYS)]
+    return ranges
+
+
+GROUPS = np.array([FRONT, RIGHT, LEFT])
+
+
+def as_column(values, n: int) -> np.ndarray:
+    """``values`` (a scalar or (n,)) as an (n,) float array for the kernels (no copy when it is one)."""
+    values = np.asarray(values, dtype=float)
+    return values if values.shape == (n,) else np.broadcast_to(values, (n,))
+
+
+def _module_inputs(ranges, open_side: bool) -> np.ndarray:
+    """(B, 3) front, right, left distances [and (B, 4) openness] by :func:`fuzzynav.kernels.learned.module_inputs`."""
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
+    ranges = _readings(ranges)
+    out = np.empty((len(ranges), 4 if open_side else 3))
+    learned.module_inputs(ranges, GROUPS, open_side, out)
+    return out
 
 
 def openness(ranges) -> np.ndarray:
@@ -82,11 +107,7 @@ def openness(ranges) -> np.ndarray:
     with the nearest reading of each module, "front, right and left near" (a robot facing a wall
     or a corner) cannot tell which way to turn; the means of the modules can.
     """
-    ranges = np.asarray(ranges, dtype=float)
-    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
-        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
-                         f"{ranges.shape}", field="ranges")
-    return ranges[:, list(LEFT)].mean(axis=1) - ranges[:, list(RIGHT)].mean(axis=1)
+    return _module_inputs(ranges, True)[:, 3]
 
 
 AVOID_INPUTS = ["front", "right", "left"]  # the thesis' avoider (Fig VI.17)
@@ -96,8 +117,7 @@ AVOID_OPEN_INPUTS = AVOID_INPUTS + ["open"]  # plus which side is more open (:fu
 def avoidance_inputs(ranges, open_side: bool) -> np.ndarray:
     """The learned avoider's inputs (B, 3) or, with ``open_side``, (B, 4): front, right and left
     distances (:func:`side_distances`) [and :func:`openness`]."""
-    sides = side_distances(ranges)
-    return np.column_stack([sides, openness(ranges)]) if open_side else sides
+    return _module_inputs(ranges, open_side)
 
 
 SENSING = {"rays": single_rays, "modules": side_distances}  # how a model reads d_f, d_d, d_g
@@ -199,22 +219,9 @@ def avoidance_supervisor(avoidance):
     return SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
 
 
-def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params):
-    """(α, V_r, goal seeking?) of the learned navigator (B,) from the blend of the avoider and the
-    goal seeker ``blended`` (B, 2), the goal seeker's ``goal_command`` (B, 2), the seven readings
-    (B, 7) and the goal's distance and bearing (B,).
-
-    As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
-    or the goal direction clear — at a speed no higher than the avoider's while something is
-    sensed (the VRB principle, Table IV.6); the blend otherwise.
-    """
-    from fuzzynav.control import supervisor
-
-    ranges = np.asarray(ranges, dtype=float)
-    goal = supervisor.select(ranges, goal_distance, goal_bearing, params) == supervisor.GSB
-    sensed = ranges.min(axis=1) < params.detection
-    goal_speed = np.where(sensed, np.minimum(goal_command[:, 1], blended[:, 1]), goal_command[:, 1])
-    return (np.where(goal, goal_command[:, 0], blended[:, 0]), np.where(goal, goal_speed, blended[:, 1]), goal)
+def supervisor_array(params) -> np.ndarray:
+    """The supervisor's thresholds as the kernels read them: detection, front, keep, clear, vision."""
+    return np.array([params.detection, params.front, params.keep, params.clear, params.vision])
 
 
 def with_goal_seeking(alpha, speed, free, goal_command):
@@ -242,7 +249,7 @@ class LearnedAvoidanceNavigator(BatchController):
 
     When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
     obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
-    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:func:`supervise`) hands the
+    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:meth:`drive`) hands the
     robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
     it the blend keeps pulling away from obstacles beside a clear path and the robot circles
     goals placed near obstacles.
@@ -267,10 +274,11 @@ class LearnedAvoidanceNavigator(BatchController):
 
             goal = GuardedGoalSeeking()
         self.avoidance = avoidance
-        self.goal = goal  # (d_rg, bearing) -> (α, V_r, ...): the guarded GSB of chapter IV
+        self.goal = goal  # a GuardedGoalSeeking (its rule table and wheelbase run compiled in drive)
         self.alpha_index, self.speed_index = _outputs(avoidance, ("alpha", "v"))
         self.constant_speed = float(constant_speed)
         self.params = avoidance_supervisor(avoidance)
+        self.supervisor = supervisor_array(self.params)
         self.name = name
         self.guard = None
         if turn_guard:
@@ -303,26 +311,31 @@ class LearnedAvoidanceNavigator(BatchController):
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
         return out[:, self.alpha_index], speed, free
 
-    def goal_command(self, goal) -> np.ndarray:
-        """The goal seeker's (α, V_r) (B, 2) for (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`)."""
-        return np.column_stack(self.goal(goal[:, 0], -goal[:, 1])[:2])
+    def drive(self, alpha, speed, free, ranges, goal):
+        """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended by ``free``
+        with the goal seeker's command for ``goal`` (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`;
+        :func:`with_goal_seeking`), in one call of :func:`fuzzynav.kernels.learned.drive`.
 
-    def drive(self, alpha, speed, free, goal_command, ranges, goal):
-        """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended with the goal
-        seeker's ``goal_command`` by ``free`` (:func:`with_goal_seeking`) and handed to goal seeking
-        alone where the supervisor finds the way clear (:func:`supervise`). The avoider's training
-        drives the robot through this method with the learner's shares in place of the rules'."""
-        blended = np.column_stack(with_goal_seeking(alpha, speed, free, goal_command))
-        return supervise(blended, goal_command, ranges, goal[:, 0], -goal[:, 1], self.params)
+        As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
+        or the goal direction clear — at a speed no higher than the avoider's while something is
+        sensed (the VRB principle, Table IV.6); the blend otherwise. The avoider's training drives
+        the robot through this method with the learner's shares in place of the rules'."""
+        import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
+        ranges = _readings(ranges)
+        n = len(ranges)
+        out = np.empty((n, 3))
+        learned.drive(as_column(alpha, n), as_column(speed, n), as_column(free, n), ranges,
+                      np.ascontiguousarray(goal, dtype=float), self.goal.tables, self.goal.wheelbase, self.supervisor,
+                      out)
+        return out[:, 0], out[:, 1], out[:, 2] != 0.0
 
     def act_batch(self, obs):
         pose, target, ranges = _batch(obs)
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
-        goal_command = self.goal_command(x)
-        steering, speed, goal = self.drive(*self.avoider_shares(avoidance_inputs(ranges, self.open_side)), goal_command,
-                                           ranges, x)
+        steering, speed, goal = self.drive(*self.avoider_shares(avoidance_inputs(ranges, self.open_side)), ranges, x)
         labels = np.where(goal, "goal seeking", "obstacle avoidance")
         if self.guard is not None:
             steering, speed, labels = self._guarded(obs, steering, speed, labels, -x[:, 1])

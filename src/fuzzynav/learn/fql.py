@@ -252,6 +252,11 @@ class FuzzyQLearner:
             raise InputError(f"{w.shape[0]} rows for {j.shape[0]} learners; pass learner=k", field="X")
         return self._infer(self._shares(w, j))
 
+    def action(self, X, indices) -> np.ndarray:
+        """Output (B, H·D) for inputs X of the rule base whose rules conclude the candidates
+        ``indices`` (1, H, R) — e.g. a :meth:`greedy_indices` kept while the learner is frozen."""
+        return self._infer(self._shares(self.strengths(X), indices))
+
     def to_dict(self) -> dict:
         """JSON-safe learner state (the premise is stored by its owner, or via its ``to_dict``)."""
         document = {

@@ -15,7 +15,6 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control import supervisor
 from fuzzynav.control.learned import LearnedAvoidanceNavigator, avoidance_inputs
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.document import to_document
@@ -136,13 +135,14 @@ def _avoid_candidates(values: dict, open_side: bool) -> np.ndarray:
 
 def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_side: bool = AVOID_OPEN):
     """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
+    from fuzzynav.kernels import learned as learned_kernels
+
     inputs = avoid_inputs(open_side)
     free_rule = free_rules(open_side)
     template = grid_system(inputs, [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
                            [["Z"] * (free_rule[-1] + 1)], "premise", "")
     premise = GridPremise(template)
     navigator = LearnedAvoidanceNavigator(template)  # the navigator a fql-avoid model file runs
-    params = navigator.params
     layout = RandomObstacles()
     sensors = SensorRing()
 
@@ -150,14 +150,13 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
         """The avoider's inputs; where the supervisor hands the robot to goal seeking, "all far"
         (the free rules): the avoider does not act there, so its rules get no credit for it."""
         x = avoidance_inputs(s.ranges, open_side)
-        seeking = supervisor.select(s.ranges, s.goal[:, 0], -s.goal[:, 1], params) == supervisor.GSB
-        x[seeking, :3] = D_MAX
+        learned_kernels.seeking_far(s.ranges, s.goal, navigator.supervisor, D_MAX, x)
         return x
 
     def navigate(s, alpha, speed):
         """The navigator's commands with the learner's (α, V_r) shares of the avoider."""
         free = premise.firing_strengths(observe(s), normalise=False)[:, free_rule].sum(axis=1)
-        return navigator.drive(alpha, speed(free), free, navigator.goal_command(s.goal), s.ranges, s.goal)[:2]
+        return navigator.drive(alpha, speed(free), free, s.ranges, s.goal)[:2]
 
     def steer_command(a, s):
         return navigate(s, a[:, 0], lambda free: (1.0 - free) * AVOID_SPEED)
@@ -170,8 +169,10 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
                    decision_steps=AVOID_DECISION)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
 
+    steering_rules = steer.greedy_indices(AVOID_TOLERANCE)  # the extracted steering, frozen from here on
+
     def speed_command(a, s):
-        return navigate(s, steer.greedy_action(observe(s), AVOID_TOLERANCE)[:, 0], lambda free: a[:, 0])
+        return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
     speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=0,
                         alpha=avoid_rate())
