@@ -1,4 +1,4 @@
-"""The angle convention of the package (SPEC §0): radians, wrapped to (−π, π].
+"""The angle convention of the package (docs/thesis.md, conventions): radians, wrapped to (−π, π].
 
 :func:`wrap_formula` is the one formula; it runs on floats, on NumPy arrays and compiled inside
 the kernels (:data:`fuzzynav.kernels.motion.wrap`). Python's float ``%`` and NumPy's ``mod``

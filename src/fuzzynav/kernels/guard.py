@@ -16,7 +16,7 @@ from fuzzynav.jit import jit
 from fuzzynav.kernels.motion import ring_gap
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3
-# angles of C1…C7 (rad, SPEC §3.3) and the avoider on each sensor's side
+# angles of C1…C7 (rad, thesis §IV.7) and the avoider on each sensor's side
 THESIS_ANGLES = (0.0, -math.pi / 6, math.pi / 6, -math.pi / 3, math.pi / 3, -math.pi / 2, math.pi / 2)
 SIDE = (FOA, ROA, LOA, ROA, LOA, ROA, LOA)
 

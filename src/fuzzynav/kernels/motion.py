@@ -1,4 +1,4 @@
-"""Angles, command limits and tricycle kinematics, compiled (SPEC §0–§1, thesis eq IV.1–IV.2).
+"""Angles, command limits and tricycle kinematics, compiled (docs/thesis.md conventions, thesis eq IV.1–IV.2).
 
 Robot parameters travel as one float array (:data:`ROBOT_FIELDS` order, built by
 :meth:`fuzzynav.robot.tricycle.TricycleParams.array`).

@@ -1,4 +1,4 @@
-"""Rays and nearest obstacle of many robots in one world, compiled (SPEC §3.3, Table IV.2), over
+"""Rays and nearest obstacle of many robots in one world, compiled (thesis §IV.7, Table IV.2), over
 the packed shapes of :mod:`fuzzynav.kernels.layout`.
 
 Rays are ``origin + t · direction``; a ray starting inside a shape measures the distance to its
