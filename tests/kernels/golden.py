@@ -12,6 +12,8 @@ EPISODES = [(name, controller) for name in ("fig-IV-15a", "fig-IV-22a", "fig-IV-
 EPISODES += [("example-path", "fuzzy-tracker"), ("example-target", "pure-pursuit"), ("path-v", "stanley")]
 MIXED = [(i, controller) for i in (0, 3, 9) for controller in ("fuzzy-2b", "fuzzy-5b")]
 EVERY = 10  # poses kept: every 10th step and the last
+# recorded as fuzzy-2b / fuzzy-5b before those gained gap finding; the published versions keep these traces
+THESIS = {"fuzzy-2b": "fuzzy-2b-thesis", "fuzzy-5b": "fuzzy-5b-thesis"}
 
 
 def run_all() -> dict:
@@ -26,7 +28,7 @@ def run_all() -> dict:
     runs += [(f"mixed-{i}/{c}", worlds[i], c) for i, c in MIXED]
     out = {}
     for key, scenario, controller in runs:
-        trace = run_episode(scenario, make_controller(controller), seed=0)
+        trace = run_episode(scenario, make_controller(THESIS.get(controller, controller)), seed=0)
         kept = np.vstack([trace.pose[::EVERY], trace.pose[-1:]])
         out[key] = (trace.outcome, trace.steps, "|".join(trace.behaviour.tolist()), kept)
     return out

@@ -1,4 +1,4 @@
-"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--json]``.
+"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--sensors RING] [--json]``.
 
 Runs a built-in controller or a trained model file (``fuzzynav train``) over N seeded, solvable
 generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, collision and timeout
@@ -14,6 +14,7 @@ import json
 import sys
 
 from fuzzynav.cli import arguments
+from fuzzynav.cli.run import SENSORS_HELP
 from fuzzynav.control.registry import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
@@ -33,6 +34,7 @@ def register(subparsers) -> None:
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
+    parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.set_defaults(func=run)
@@ -52,7 +54,7 @@ def run(args) -> int:
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
 
     result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
-                      model=args.model)
+                      model=args.model, sensors=args.sensors)
     if args.json:
         print(json.dumps(result))
         return 0

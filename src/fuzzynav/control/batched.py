@@ -19,6 +19,7 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller, Observation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
+from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
 
 
 @dataclass(frozen=True)
@@ -66,13 +67,16 @@ class CompiledNavigator(BatchedController):
 
     Subclasses set ``kind`` (a :mod:`fuzzynav.kernels.navigators` code), ``labels`` (behaviour
     label of each mode code), ``roles`` (the names of their rule bases, in the kernel's order),
-    ``sensors_deg`` (the ring directions they read, or ``None``) and ``memory`` (steps of hit
+    ``sensors_deg`` (the ring directions they read, or ``None``), ``gap_aware`` (steer through
+    gaps of a scan, :mod:`fuzzynav.kernels.gaps`), ``sensors`` (the ring the simulator gives
+    them by default, ``None``: the thesis' seven rays) and ``memory`` (steps of hit
     memory, 0 for none), and call :meth:`_build` with their rule bases and parameters. The
     state of each robot (mode, hold count, turn side, hits) lives in arrays; the simulator steps
     the navigator inside its own compiled step (:meth:`compiled`).
     """
 
     kind: int
+    gap_aware, sensors = False, None
     labels: tuple[str, ...]
     roles: tuple[str, ...]
     sensors_deg: tuple[float, ...] | None = None
@@ -111,12 +115,22 @@ class CompiledNavigator(BatchedController):
 
                 at = navigators.COLUMNS if self.kind == navigators.FIVE_BEHAVIOURS else navigators.WALL_COLUMNS
                 self.params[at:at + len(columns)] = columns
+            self._scan_options(angles)
             self._angles, self._state = angles.copy(), None
         if self._state is None or len(self._state) != n:
             self._state = np.zeros((n, 4), dtype=np.int64)
             self._state[:, 0] = -1  # no mode yet
             self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
         return self.kind, self.params, self.tables, self._state, self._memory
+
+    def _scan_options(self, angles) -> None:
+        """Readings by 30° sector and gap finding on for a gap-aware navigator reading a scan
+        (more rays than the thesis' seven), off otherwise (:mod:`fuzzynav.kernels.gaps`)."""
+        from fuzzynav.kernels import navigators
+
+        scan = self.gap_aware and len(angles) > len(THESIS_SENSOR_ANGLES)
+        self.params[navigators.READING_HALF] = np.deg2rad(15.0) if scan else 0.0
+        self.params[navigators.GAP] = float(scan)
 
     def act_batch(self, obs):
         """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""

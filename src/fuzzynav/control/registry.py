@@ -17,6 +17,10 @@ CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.avoidance:make",
                            "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
 CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.five_behaviours:make",
                            "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
+CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.avoidance:make_thesis",
+                                  "fuzzy-2b as published: 7 single rays, no gap finding")
+CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.five_behaviours:make_thesis",
+                                  "fuzzy-5b as published: 7 single rays, no gap finding")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.experiments.train_trackers:neural_tracker",

@@ -104,17 +104,17 @@ def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 def fig_iv_15(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig IV.15 (a, b): ``fuzzy-2b`` past circular obstacles, behaviour changes marked A, B, …"""
-    return _panels(["fig-IV-15a", "fig-IV-15b"], "fuzzy-2b", out_dir, "fig-IV-15.png")
+    return _panels(["fig-IV-15a", "fig-IV-15b"], "fuzzy-2b-thesis", out_dir, "fig-IV-15.png")
 
 
 def fig_iv_22(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig IV.22 (a, b): ``fuzzy-5b`` in two unknown cluttered worlds."""
-    return _panels(["fig-IV-22a", "fig-IV-22b"], "fuzzy-5b", out_dir, "fig-IV-22.png", markers=False)
+    return _panels(["fig-IV-22a", "fig-IV-22b"], "fuzzy-5b-thesis", out_dir, "fig-IV-22.png", markers=False)
 
 
 def fig_iv_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig IV.23: ``fuzzy-5b`` reaches a goal inside a U-shaped wall by running along it."""
-    return _panels(["fig-IV-23"], "fuzzy-5b", out_dir, "fig-IV-23.png", markers=False)
+    return _panels(["fig-IV-23"], "fuzzy-5b-thesis", out_dir, "fig-IV-23.png", markers=False)
 
 
 def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -128,7 +128,7 @@ def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
     result = {}
     figure = Figure(figsize=(7, 4), layout="constrained")
     ax = figure.add_subplot(111)
-    for i, (controller, worlds) in enumerate((("fuzzy-2b", "circles"), ("fuzzy-5b", "mixed"))):
+    for i, (controller, worlds) in enumerate((("fuzzy-2b-thesis", "circles"), ("fuzzy-5b-thesis", "mixed"))):
         numbers = evaluate(controller, worlds, n, seed)
         numbers.pop("episodes")
         result[f"{controller}/{worlds}"] = numbers

@@ -190,7 +190,7 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.23–VI.24: the chapter IV fuzzy navigator (fuzzy-2b) and the FQL navigator on the
     same world, and both over the same random worlds."""
     _, learned, _ = _avoid_model(out_dir, quick, seed)
-    fuzzy = make_controller("fuzzy-2b")
+    fuzzy = make_controller("fuzzy-2b-thesis")
     scenario = _goal_scenarios(seed, 1, layout=RandomObstacles())[0]
     figure = Figure(figsize=(11, 5.5), layout="constrained")
     numbers = {}

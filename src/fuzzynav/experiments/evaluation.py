@@ -16,14 +16,17 @@ import numpy as np
 
 from fuzzynav.control.registry import make_controller
 from fuzzynav.errors import InputError
+from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_worlds
 
 
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
-             progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None) -> dict:
+             progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
+             sensors: str | None = None) -> dict:
     """Run the registered ``controller`` — or the one stored in the ``model`` file — on ``n``
-    seeded worlds of family ``worlds``.
+    seeded worlds of family ``worlds``, with the sensor ring named ``sensors`` (default: the
+    controller's, :func:`fuzzynav.sim.simulator.default_ring`).
 
     A model is loaded once; every episode starts from the simulator's ``reset(rng)`` of it, as a
     registered controller is built afresh per world.
@@ -37,10 +40,11 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         build, controller = (lambda: loaded), loaded.name
     else:
         build = lambda: make_controller(controller)
+    ring = None if sensors is None else named_ring(sensors)
     scenarios = generate_worlds(worlds, n, seed)
     runs = []
     for i, scenario in enumerate(scenarios):
-        numbers = metrics(run_episode(scenario, build(), seed=seed), scenario)
+        numbers = metrics(run_episode(scenario, build(), seed=seed, sensors=ring), scenario)
         runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
                                                     "min_clearance_m")})
         if progress is not None:

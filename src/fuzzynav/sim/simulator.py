@@ -28,7 +28,7 @@ import numpy as np
 from fuzzynav.control.base import Controller
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
-from fuzzynav.robot.sensors import SensorRing
+from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
@@ -41,6 +41,15 @@ RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED
 # the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
 _NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
+
+
+def default_ring(scenario: Scenario, controller) -> SensorRing:
+    """The ring of the scenario's ``sensors`` key, else the controller's own (``sensors``
+    attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
+    if scenario.sensors is not None:
+        return named_ring(scenario.sensors)
+    first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
+    return getattr(first, "sensors", None) or SensorRing()
 
 
 class BatchSimulator:
@@ -57,7 +66,7 @@ class BatchSimulator:
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = scenario
         self.params = robot_params
-        self.sensors = sensors if sensors is not None else SensorRing()
+        self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
         self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
@@ -77,7 +86,7 @@ class BatchSimulator:
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
-                                      self.sensors.angles, 0.0)
+                                      self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
         compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
         self._compiled = compiled if callable(compiled) else None

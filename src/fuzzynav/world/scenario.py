@@ -13,6 +13,7 @@ obstacles:
   - ellipse: {center: [14, 6], radii: [2.0, 1.0], angle: 0.3}
 max_time: 120                         # seconds, optional
 controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
+sensors: lidar                        # optional: thesis | beam | lidar (default: the controller's ring)
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
 two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, SPEC
@@ -52,7 +53,7 @@ DEFAULT_PATH_SPEED = 1.0
 PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.sim.tasks`
 
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
-            "target", "obstacles", "max_time", "controllers")
+            "target", "obstacles", "max_time", "controllers", "sensors")
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
     "polygon": {"points": None},
@@ -102,6 +103,7 @@ class Scenario:
     description: str = ""
     source: str | None = None
     controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
+    sensors: str | None = None  # the sensor ring by name (fuzzynav.robot.sensors.RINGS); None: the controller's
 
     @property
     def task(self) -> str:
@@ -115,6 +117,8 @@ class Scenario:
             doc["description"] = self.description
         if self.controllers:
             doc["controllers"] = list(self.controllers)
+        if self.sensors is not None:
+            doc["sensors"] = self.sensors
         doc["world"] = {"width": self.world.width, "height": self.world.height}
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
         if self.goal is not None:
@@ -316,7 +320,16 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         description=check.text(doc.get("description", ""), "description"),
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
+        sensors=_sensor_ring(check, doc.get("sensors")),
     )
+
+
+def _sensor_ring(check: _Checker, name) -> str | None:
+    from fuzzynav.robot.sensors import RINGS
+
+    if name is not None and name not in RINGS:
+        check.fail("sensors", f"unknown sensor ring {name!r}; known: {', '.join(RINGS)}")
+    return name
 
 
 def _controller_names(check: _Checker, names) -> tuple[str, ...]:
