@@ -52,12 +52,10 @@ import functools
 import math
 from collections.abc import Mapping
 
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
-from fuzzynav.control.five_behaviours import GAP_FIELD, GAP_LOOK, GAP_MARGIN
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
-from fuzzynav.robot.sensors import named_ring
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 
@@ -78,15 +76,12 @@ class TwoBehaviourNavigator(CompiledNavigator):
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
                  stop_margin: float = 0.02, systems: Mapping | None = None, thesis: bool = False,
                  gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
-        if thesis:
-            self.name = "fuzzy-2b-thesis"
-        else:
-            self.gap_aware, self.sensors = True, named_ring("lidar")
+        gap = self._variant(thesis, gap_margin, gap_look)
         self._build(systems, default_systems, navigator_params(
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_turn, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             detection=detection, sector=sector, front=front, risk=risk, release=release,
-            gap_clearance=DEFAULT_PARAMS.radius + gap_margin, gap_look=gap_look, gap_field=GAP_FIELD))
+            **gap))
 
 
 def make(**options) -> TwoBehaviourNavigator:

@@ -19,7 +19,12 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller, Observation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
-from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
+from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES, named_ring
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+
+GAP_MARGIN = 0.05  # m kept between the body and a post when aiming through a gap (then half, a quarter)
+GAP_LOOK = 2.0  # m: hits nearer than this shape the gaps
+GAP_FIELD = np.pi / 2  # directions searched: within ±90° of the heading
 
 
 @dataclass(frozen=True)
@@ -122,6 +127,15 @@ class CompiledNavigator(BatchedController):
             self._state[:, 0] = -1  # no mode yet
             self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
         return self.kind, self.params, self.tables, self._state, self._memory
+
+    def _variant(self, thesis: bool, gap_margin: float, gap_look: float) -> dict:
+        """The published navigator (named ``<name>-thesis``: the seven rays, no gap finding) or the
+        gap-aware default (the lidar ring); returns the gap entries of the parameter vector."""
+        if thesis:
+            self.name = f"{type(self).name}-thesis"
+        else:
+            self.gap_aware, self.sensors = True, named_ring("lidar")
+        return {"gap_clearance": DEFAULT_PARAMS.radius + gap_margin, "gap_look": gap_look, "gap_field": GAP_FIELD}
 
     def _scan_options(self, angles) -> None:
         """Readings by 30° sector and gap finding on for a gap-aware navigator reading a scan

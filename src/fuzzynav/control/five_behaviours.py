@@ -76,17 +76,12 @@ import math
 from collections.abc import Mapping
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import FIVE_BEHAVIOURS
-from fuzzynav.robot.sensors import named_ring
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-
-GAP_MARGIN = 0.05  # m kept between the body and a post when aiming through a gap (then half, a quarter)
-GAP_LOOK = 2.0  # m: hits nearer than this shape the gaps
-GAP_FIELD = math.pi / 2  # directions searched: within ±90° of the heading
 
 LABELS = ("GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB", "GAP+VRB")  # of the mode codes (full lock: FOA)
 
@@ -112,10 +107,7 @@ class FiveBehaviourNavigator(CompiledNavigator):
                  dwell: int = 10, lane: float = nav.D_M, room_margin: float = 0.5, memory: int = 10,
                  stop_margin: float = 0.02, systems: Mapping | None = None, thesis: bool = False,
                  gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
-        if thesis:
-            self.name = "fuzzy-5b-thesis"
-        else:
-            self.gap_aware, self.sensors = True, named_ring("lidar")
+        gap = self._variant(thesis, gap_margin, gap_look)
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
@@ -125,7 +117,7 @@ class FiveBehaviourNavigator(CompiledNavigator):
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,
             kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear,
-            gap_clearance=DEFAULT_PARAMS.radius + gap_margin, gap_look=gap_look, gap_field=GAP_FIELD))
+            **gap))
 
 
 def make(**options) -> FiveBehaviourNavigator:
