@@ -33,6 +33,6 @@ def test_fig_vi_28_wall_follower(tmp_path):
 
 def test_eval_iv_quick(tmp_path):
     result = experiment("eval-IV")(tmp_path, True, 0)
-    assert result["fuzzy-2b/circles"]["n"] == 10
-    assert result["fuzzy-2b/circles"]["success_rate"] >= 0.8
-    assert result["fuzzy-5b/mixed"]["success_rate"] >= 0.7
+    assert result["fuzzy-2b-thesis/circles"]["n"] == 10
+    assert result["fuzzy-2b-thesis/circles"]["success_rate"] >= 0.8
+    assert result["fuzzy-5b-thesis/mixed"]["success_rate"] >= 0.7

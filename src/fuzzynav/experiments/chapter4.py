@@ -3,13 +3,13 @@
 - ``fig-IV-12``: free goal seeking (Table IV.1) from five starts to five goals per panel (a, b),
   positions read off the figure (the first pair of each panel is the built-in scenario);
 - ``fig-IV-13``: free navigation with its commands α(t), V_r(t) (Figs IV.13–IV.14);
-- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b``) past circular obstacles, with
+- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b-thesis``, as published) past circular obstacles, with
   the behaviour changes marked A, B, … (panels a, b);
-- ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b``) in two unknown worlds (a, b);
-- ``fig-IV-23``: ``fuzzy-5b`` reaching a goal inside a U-shaped wall;
+- ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b-thesis``) in two unknown worlds (a, b);
+- ``fig-IV-23``: ``fuzzy-5b-thesis`` reaching a goal inside a U-shaped wall;
 - ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend (Fig VI.27) and
   into the sharp corner where it collides (Fig VI.28);
-- ``eval-IV``: ``fuzzy-2b`` on circle worlds and ``fuzzy-5b`` on mixed worlds (100 each, 10
+- ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100 each, 10
   with ``quick``), the numbers of ``fuzzynav evaluate``.
 
 Every function has the registry signature ``(out_dir, quick, seed) -> dict``, writes PNGs and
