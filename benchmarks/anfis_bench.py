@@ -1,4 +1,4 @@
-"""ANFIS quality and speed against its peers, measured in one run (issue 4, thesis §V.3.5, Fig V.23).
+"""ANFIS quality and speed against its peers, measured in one run (thesis §V.3.5, Fig V.23).
 
 Task: the ANFIS tracker's map α = (π/4)·tanh(1.5·θ_er), 100 training points evenly spaced on
 [−π, π], test RMSE on 1,000 fresh points drawn uniformly (seeded), 5 generalized-bell MFs.

@@ -13,7 +13,7 @@ multiplied by ``--scale`` (positions, radii, tolerance, optimal path; the time l
 Usage (the BARN folder holds ``world_N.world`` and ``path_N.npy``, e.g. a copy of
 ``jackal_helper/worlds/BARN`` of Daffan/the-barn-challenge with ``path_files/`` flattened)::
 
-    python benchmarks/barn_eval.py --barn DIR --worlds 0-149 --scale 1.0 --controller fuzzy-5b \
+    python benchmarks/barn_eval.py --barn DIR --worlds 0-149 --scale 1.0 --controller fuzzy-5b-gap \
         [--sensors thesis|beam|lidar] [--out result.json]
 """
 
@@ -71,7 +71,7 @@ def scenario(world_file: Path, scale: float):
 
 def run_world(barn: Path, index: int, scale: float, controller: str, sensors: str | None) -> dict:
     """One run: outcome, time (s) and BARN score of world ``index``."""
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim.simulator import BatchSimulator
 

@@ -12,8 +12,16 @@ AND_PRODUCT: the same TS0), scikit-fuzzy (its control API is Mamdani-only: the s
 narrow triangles at the singletons — same work per call, outputs not identical). A peer that is
 not installed is reported as such and skipped. pyfuzzylite pins numpy < 2, so it usually lives in
 its own virtual environment: if it is not importable here, the script reruns itself for that
-peer with ``--fll-python`` (default ``/work/venv-fll/bin/python`` or ``$FUZZYNAV_FLL_PYTHON``),
-e.g. ``python -m venv /work/venv-fll && /work/venv-fll/bin/pip install -e '.[fll]'``.
+peer with ``--fll-python PYTHON`` (or ``$FUZZYNAV_FLL_PYTHON``), e.g. the ``.venv-fll`` that
+``.ci/run`` creates (``python -m venv .venv-fll && .venv-fll/bin/pip install -e '.[fll]'``).
+
+``--examples DIR`` (or ``$FUZZYNAV_FLL_EXAMPLES``; fuzzylite's ``examples/``, GPL, read in place)
+times instead fuzzynav against pyfuzzylite on fuzzylite's Mamdani examples (every output
+defuzzified by an integral method) and first-order Takagi–Sugeno examples (linear conclusions):
+a batch of 10,000 random inputs each, median of 5 runs, the two engines interleaved, in the
+Python given by ``--fll-python`` (which must have both packages). ``--clock cpu`` times them by
+the CPU time of the process instead of the wall clock: steadier on a machine shared with other
+work, where a wall-clock run mostly measures who was descheduled.
 """
 
 from __future__ import annotations
@@ -36,7 +44,8 @@ from fuzzynav.fuzzy.io import to_fll
 from fuzzynav.fuzzy.systems import goal_seeking
 
 N_BATCH = 100_000
-DEFAULT_FLL_PYTHON = os.environ.get("FUZZYNAV_FLL_PYTHON", "/work/venv-fll/bin/python")
+DEFAULT_FLL_PYTHON = os.environ.get("FUZZYNAV_FLL_PYTHON")
+N_EXAMPLE_BATCH = 10_000
 
 
 def _inputs(n: int, seed: int = 0) -> np.ndarray:
@@ -170,13 +179,13 @@ PEERS = {"fuzzynav": bench_fuzzynav, "pyfuzzylite": bench_pyfuzzylite, "simpful"
 MODULES = {"pyfuzzylite": "fuzzylite", "simpful": "simpful", "scikit-fuzzy": "skfuzzy.control"}
 
 
-def run_peer(name: str, fll_python: str) -> dict:
+def run_peer(name: str, fll_python: str | None) -> dict:
     module = MODULES.get(name)
     if module:
         try:
             importlib.import_module(module)
         except ImportError as error:
-            if name == "pyfuzzylite" and Path(fll_python).exists():
+            if name == "pyfuzzylite" and fll_python and Path(fll_python).exists():
                 done = subprocess.run([fll_python, __file__, "--only", name, "--json"], capture_output=True, text=True)
                 if done.returncode == 0:
                     result = json.loads(done.stdout)[name]
@@ -187,12 +196,93 @@ def run_peer(name: str, fll_python: str) -> dict:
     return PEERS[name]()
 
 
+def _example_kind(engine) -> str | None:
+    """``mamdani`` (every output integral-defuzzified), ``ts1`` (a linear conclusion) or None."""
+    from fuzzynav.fuzzy.membership import Linear
+
+    outputs = engine.outputs
+    if all(v.defuzzifier is not None and v.defuzzifier.integral for v in outputs):
+        return "mamdani"
+    if any(isinstance(mf, Linear) for v in outputs for mf in v.terms.values()):
+        return "ts1"
+    return None
+
+
+CLOCKS = {"wall": time.perf_counter, "cpu": time.process_time}
+
+
+def bench_examples(folders: list[str], clock: str = "wall") -> dict:
+    """fuzzynav / pyfuzzylite batch time on every Mamdani and TS1 example engine under ``folders``,
+    by the ``clock`` of :data:`CLOCKS`."""
+    now = CLOCKS[clock]
+    import fuzzylite as fl
+
+    from fuzzynav.fuzzy.io.fll import from_fll_engine
+
+    rows = {}
+    for path in sorted(p for d in folders for p in Path(d).rglob("*.fll")):
+        text = path.read_text()
+        ours = from_fll_engine(text, source=str(path))
+        kind = _example_kind(ours)
+        theirs = fl.FllImporter().from_string(text)
+        if kind is None or any(type(b.activation).__name__ != "General" for b in theirs.rule_blocks):
+            continue
+        rng = np.random.default_rng(0)
+        X = np.column_stack([rng.uniform(v.minimum, v.maximum, N_EXAMPLE_BATCH) if np.isfinite(v.maximum - v.minimum)
+                             else rng.uniform(-1, 1, N_EXAMPLE_BATCH) for v in ours.inputs])
+
+        def process(batch, engine=theirs):
+            engine.input_values = batch
+            engine.process()
+        times = {"fuzzynav": [], "pyfuzzylite": []}
+        for _ in range(5):  # interleaved: both see the same machine load
+            for name, run in (("fuzzynav", lambda: ours.evaluate(X)), ("pyfuzzylite", lambda: process(X))):
+                t0 = now()
+                run()
+                times[name].append(now() - t0)
+        ours_s, theirs_s = statistics.median(times["fuzzynav"]), statistics.median(times["pyfuzzylite"])
+        rows[str(path)] = {"kind": kind, "fuzzynav_ms": 1e3 * ours_s, "pyfuzzylite_ms": 1e3 * theirs_s,
+                           "ratio": theirs_s / ours_s}
+    return rows
+
+
+def _print_examples(rows: dict, clock: str) -> None:
+    print(f"fuzzylite examples, batch of {N_EXAMPLE_BATCH:,} random inputs, median of 5 (interleaved), {clock} clock")
+    print(f"{'kind':<8} {'fuzzynav ms':>12} {'pyfuzzylite ms':>15} {'ratio':>7}  engine")
+    for path, r in sorted(rows.items(), key=lambda item: (item[1]["kind"], item[0])):
+        print(f"{r['kind']:<8} {r['fuzzynav_ms']:>12.2f} {r['pyfuzzylite_ms']:>15.2f} {r['ratio']:>7.1f}  {path}")
+    for kind in ("mamdani", "ts1"):
+        ratios = [r["ratio"] for r in rows.values() if r["kind"] == kind]
+        if ratios:
+            print(f"{kind}: {len(ratios)} engines, ratio median {statistics.median(ratios):.1f}, min {min(ratios):.1f}, "
+                  f"max {max(ratios):.1f}, geometric mean {float(np.exp(np.mean(np.log(ratios)))):.1f}")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--only", choices=list(PEERS), action="append", help="time only these")
-    parser.add_argument("--fll-python", default=DEFAULT_FLL_PYTHON, help="python of a venv with pyfuzzylite")
+    parser.add_argument("--fll-python", default=DEFAULT_FLL_PYTHON,
+                        help="python of a venv with pyfuzzylite (default $FUZZYNAV_FLL_PYTHON)")
+    parser.add_argument("--examples", action="append", metavar="DIR",
+                        help="time fuzzylite's Mamdani and TS1 example engines under DIR instead "
+                             "(default $FUZZYNAV_FLL_EXAMPLES, ':'-separated)")
+    parser.add_argument("--clock", choices=list(CLOCKS), default="wall",
+                        help="time the examples by the wall clock (default) or the process's CPU time")
     args = parser.parse_args(argv)
+    folders = args.examples or [d for d in os.environ.get("FUZZYNAV_FLL_EXAMPLES", "").split(os.pathsep) if d]
+    if folders:
+        try:
+            importlib.import_module("fuzzylite")
+        except ImportError:
+            if not args.fll_python:
+                parser.error("pyfuzzylite is not importable here: give --fll-python (a venv with fuzzynav and "
+                             "pyfuzzylite)")
+            command = [args.fll_python, __file__, "--clock", args.clock, *sum((["--examples", d] for d in folders), [])]
+            return subprocess.run(command + (["--json"] if args.json else [])).returncode
+        rows = bench_examples(folders, args.clock)
+        print(json.dumps(rows, indent=2)) if args.json else _print_examples(rows, args.clock)
+        return 0
     with contextlib.redirect_stdout(sys.stderr):  # peers chatter on stdout (simpful, on every call)
         results = {name: run_peer(name, args.fll_python) for name in (args.only or PEERS)}
     if args.json:

@@ -8,7 +8,7 @@ IR-SIM's version and the beam count, then for every line ``N`` on stdin runs N s
 ``{"wall": s, "cpu": s}`` (so the caller can interleave its own timed chunks with IR-SIM's).
 
 The world is built to match: 20 m × 20 m, one Ackermann (car-like, the tricycle's kinematics)
-robot, a 2-D lidar of 7 beams over [−90°, +90°] (the thesis layout of SPEC §3.3) with the same
+robot, a 2-D lidar of 7 beams over [−90°, +90°] (the thesis layout of §IV.7) with the same
 range, rendering off (``headless``), IR-SIM's own collision checks on. IR-SIM has no ellipse,
 so ellipses become 32-gons; walls become their rectangles.
 """

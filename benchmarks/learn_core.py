@@ -5,7 +5,7 @@ with B = 1, 16 and 256 parallel episodes, it times separately
 - the premise (``FuzzySystem.firing_strengths``, the fuzzy library),
 - the learner's own work per step (policy, Q(s, A), V*, ΔQ, traces) with the strengths given,
 - and a tabular Watkins Q(λ) step over 19 states × 5 actions (Table VI.1's largest table).
-Then it extrapolates the learner-side cost of 3,000 FQL episodes of 250 steps (issue 5's target:
+Then it extrapolates the learner-side cost of 3,000 FQL episodes of 250 steps (the target:
 under 30 s, simulator excluded). Prints a table and one JSON line (medians of 5 timed chunks, CPU time).
 Run:  python benchmarks/learn_core.py
 """

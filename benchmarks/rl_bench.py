@@ -8,8 +8,8 @@ from their fixed start), the avoidance navigator in
 100 random wall courses (the evaluation seeds differ from the training ones). It reports, per
 seed (not the best one), the training wall time, the episodes to converge of every phase
 (the budget-independent criterion of fuzzynav.learn.curves with the settings of
-fuzzynav.experiments.train_rl) and the success, collision and timeout counts; then, per task, the
-medians next to the thesis' episode counts. The speed target of issue 5 — 3,000 FQL episodes in
+fuzzynav.learn.tasks) and the success, collision and timeout counts; then, per task, the
+medians next to the thesis' episode counts. The speed target — 3,000 FQL episodes in
 under 30 s — is the wall time of ``fql-goal`` with 3,000 episodes (median over the seeds).
 
 Besides the ``fuzzynav train`` tasks, the studies of chapter VI that are not tasks of their own:
@@ -37,9 +37,12 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from fuzzynav.experiments import train_rl
-from fuzzynav.models import load_controller
-from fuzzynav.training import TrainRequest, trainer
+from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
+from fuzzynav.experiments import evaluation as evaluations
+from fuzzynav.learn import envs
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.catalog.tasks import trainer
+from fuzzynav.learn.tasks.common import TrainRequest
 
 # the thesis' episodes to converge (Table VI.1, Figs VI.1, VI.8, VI.9, VI.13, VI.16, VI.22)
 THESIS = {
@@ -69,29 +72,29 @@ def median_count(counts):
 
 
 def _tabular(n_states: int, n_actions: int, fixed: bool, default: int):
-    """A tabular study: train with train_rl.q_goal_parts, return (summary, controller)."""
+    """A tabular study: train with tabular_goal.q_goal_parts, return (summary, controller)."""
     def train(request):
-        env, learner, disc, steering = train_rl.q_goal_parts(n_states, n_actions, fixed)
+        env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed)
         episodes = request.episodes or default
-        phases, _ = train_rl.run_phases([train_rl.Phase("steering", env, learner, episodes,
-                                                        train_rl.checkpoint_path(request.out, "steering"))], request)
-        return train_rl._summary(phases), train_rl.q_goal_controller(learner, disc, steering)
+        phases, _ = common.run_phases([common.Phase("steering", env, learner, episodes,
+                                                        common.checkpoint_path(request.out, "steering"))], request)
+        return common.summarise(phases), tabular_goal.q_goal_controller(learner, disc, steering)
     return train
 
 
 def _fql_fixed(request):
     """Fig VI.8: fql-goal's steering from the fixed start (1,000 episodes by default)."""
-    task = replace(train_rl.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
-    summary = train_rl.train_goal_fql(task, replace(request, episodes=request.episodes or 1000))
+    task = replace(fql_goal.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
+    summary = fql_goal.train_goal_fql(task, replace(request, episodes=request.episodes or 1000))
     return summary, load_controller(request.out)
 
 
 STUDIES = {"q-goal-9": _tabular(9, 3, False, 4000), "q-goal-11": _tabular(11, 3, False, 4000),
            "q-goal-13": _tabular(13, 3, False, 4000), "q-goal-19x5": _tabular(19, 5, False, 4000),
            "q-goal-fixed": _tabular(13, 3, True, 1500), "fql-goal-fixed": _fql_fixed,
-           "fql-wall-modules": lambda request: (train_rl.train_fql_wall(request, "modules"),
+           "fql-wall-modules": lambda request: (fql_wall.train_fql_wall(request, "modules"),
                                                 load_controller(request.out)),
-           "fql-avoid-8": lambda request: (train_rl.train_fql_avoid(request, open_side=False),
+           "fql-avoid-8": lambda request: (fql_avoid.train_fql_avoid(request, open_side=False),
                                            load_controller(request.out))}
 
 
@@ -105,7 +108,7 @@ def _train(task: str, request):
 
 def _wall(controller) -> dict:
     """Wall follower: the Fig VI.28 corners and 100 random courses; success = no collision."""
-    result = train_rl.evaluate_wall(controller, 100)
+    result = evaluations.evaluate_wall(controller, 100)
     return {**result, "success": 1 - result["collisions"] / result["courses"], "timeouts": 0}
 
 
@@ -113,8 +116,8 @@ def _fixed(controller) -> dict:
     """Fixed-start studies (Figs VI.2, VI.7): the one trained trajectory, from the fixed start."""
     from fuzzynav.sim import run_episode
 
-    world, start, goal = train_rl.FixedGoal().sample(None, 1)
-    outcome = run_episode(train_rl._scenario(world, start[0], goal[0], "fixed start", 60.0), controller).outcome
+    world, start, goal = envs.FixedGoal().sample(None, 1)
+    outcome = run_episode(evaluations.scenario_of(world, start[0], goal[0], "fixed start", 60.0), controller).outcome
     return {"runs": 1, "success": float(outcome == "reached"), "collisions": int(outcome == "collision"),
             "timeouts": int(outcome == "timeout")}
 
@@ -126,7 +129,7 @@ def _avoid(controller) -> dict:
 
     guarded = LearnedAvoidanceNavigator(controller.avoidance, constant_speed=controller.constant_speed,
                                         name=controller.name, turn_guard=True)
-    return {**train_rl.evaluate_avoid(controller), "with_turn_guard": train_rl.evaluate_avoid(guarded)}
+    return {**evaluations.evaluate_avoid(controller), "with_turn_guard": evaluations.evaluate_avoid(guarded)}
 
 
 EVALUATE = {"fql-avoid": _avoid, "fql-avoid-8": _avoid, "fql-wall": _wall, "fql-wall-modules": _wall,
@@ -138,7 +141,7 @@ def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: b
     start = time.perf_counter()
     result, controller = _train(task, TrainRequest(out=out, episodes=episodes, seed=seed, progress=False))
     wall = time.perf_counter() - start
-    evaluation = EVALUATE.get(task, train_rl.evaluate_goal)(controller)
+    evaluation = EVALUATE.get(task, evaluations.evaluate_goal)(controller)
     phases = {k: v for k, v in result.items() if isinstance(v, dict)}
     row = {"task": task, "seed": seed, "wall_s": round(wall, 2),
            "episodes": {k: v["episodes"] for k, v in phases.items()},

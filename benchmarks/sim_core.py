@@ -15,7 +15,7 @@ IR-SIM lives in its own virtual environment (it pins its own NumPy): give its Py
 create one (``pip install ir-sim`` into ``--peers-dir``, default ``benchmarks/.peers/irsim``) and
 use it. Without IR-SIM the ratios are reported as unavailable. Run:
 
-    python benchmarks/sim_core.py --controller fuzzy-5b --json [--irsim-python PATH | --setup-peers]
+    python benchmarks/sim_core.py --controller fuzzy-5b-thesis --json [--irsim-python PATH | --setup-peers]
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.control.batched import ConstantCommand
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator
@@ -149,7 +149,7 @@ def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
     parser.add_argument("--controller", metavar="NAME", help="a registered controller timed besides the constant "
-                                                             "command (e.g. fuzzy-5b)")
+                                                             "command (e.g. fuzzy-5b-thesis)")
     parser.add_argument("--irsim-python", default=os.environ.get("IRSIM_PYTHON", ""),
                         help="Python of a virtual environment with ir-sim installed (default: $IRSIM_PYTHON)")
     parser.add_argument("--setup-peers", action="store_true", help="create the IR-SIM environment if needed, use it")

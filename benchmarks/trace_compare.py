@@ -1,6 +1,7 @@
 """Record and compare closed-loop traces of two checkouts of fuzzynav (a refactoring check).
 
-Runs the chapter IV navigators (``goal-seeking``, ``fuzzy-2b``, ``fuzzy-5b``, ``wall-follow``) on
+Runs the chapter IV navigators (``goal-seeking``, ``fuzzy-2b-thesis``, ``fuzzy-5b-thesis``, ``wall-follow``; older checkouts
+name the thesis navigators ``fuzzy-2b``, ``fuzzy-5b``) on
 every built-in scenario and on the worlds of ``fuzzynav evaluate --worlds mixed --n 100 --seed 0``,
 plus the path / target trackers on the built-in path and target scenarios, and stores each
 episode's outcome, poses, commands and behaviour labels. Run it once with the old checkout on
@@ -22,7 +23,7 @@ import time
 
 import numpy as np
 
-NAVIGATORS = ("goal-seeking", "fuzzy-2b", "fuzzy-5b", "wall-follow")
+NAVIGATORS = ("goal-seeking", "fuzzy-2b-thesis", "fuzzy-5b-thesis", "wall-follow")
 TRACKERS = ("fuzzy-tracker", "pure-pursuit", "stanley")
 
 
@@ -42,7 +43,7 @@ def episodes(n_worlds: int):
 
 
 def record(path: str, n_worlds: int) -> None:
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import run_episode
 
     arrays, meta = {}, {}

@@ -1,4 +1,4 @@
-"""Chapter V comparison table (issue 4): our three trackers against pure pursuit and Stanley.
+"""Chapter V comparison table: our three trackers against pure pursuit and Stanley.
 
 Mean / max cross-track error (distance to the path polyline), completion and time on the V, N and
 trapezoid paths (built-in scenarios ``path-v``, ``path-n``, ``path-trapezoid``: robot on the path,
@@ -25,7 +25,7 @@ import json
 import statistics
 import time
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import load_scenario
 

@@ -21,3 +21,8 @@ class InputError(ValueError):
         self.source = source
         self.field = field
         self.problem = message
+
+
+class CommandError(InputError):
+    """A controller returned a command the robot cannot take (missing, not a number, NaN or
+    infinite): the message names the controller, the step and the value."""

@@ -1,8 +1,7 @@
 """Name registries: ``name -> ("module:attribute", description)`` tables, imported lazily.
 
-The controllers (:data:`fuzzynav.control.registry.CONTROLLERS`), training tasks
-(:data:`fuzzynav.training.TRAINERS`) and thesis experiments
-(:data:`fuzzynav.experiments.registry.EXPERIMENTS`) are such tables; a module is imported only
+The tables of the command line (controllers, training tasks, thesis experiments) are such
+tables; a module is imported only
 when its entry is used, so listing names stays cheap.
 """
 

@@ -1,19 +1,21 @@
-"""A trained anfis-tracker model file reads as a fuzzy system: fis show / eval / convert (issue 4)."""
+"""A trained anfis-tracker model file (JSON or NPZ) reads as a fuzzy system: fis show / eval / convert."""
 
 import json
 
 import numpy as np
+import pytest
 
 from fuzzynav.cli import main
-from fuzzynav.experiments.train_trackers import default_document
+from fuzzynav.learn.tasks.trackers import default_document
 from fuzzynav.learn.anfis import ANFIS
-from fuzzynav.models import save_json_atomic
+from fuzzynav.storage import save_document
 
 
-def test_fis_reads_the_trained_anfis_as_its_exported_system(tmp_path, capsys):
+@pytest.mark.parametrize("suffix", [".json", ".npz"])
+def test_fis_reads_the_trained_anfis_as_its_exported_system(tmp_path, capsys, suffix):
     document = default_document("anfis-tracker")
-    path = tmp_path / "anfis.json"
-    save_json_atomic(path, document)
+    path = tmp_path / f"anfis{suffix}"
+    save_document(path, document)
     anfis = ANFIS.from_dict(document["model"])
     for theta in (-0.15, -0.02, 0.0, 0.07, 0.18):
         assert main(["fis", "eval", str(path), "--input", f"theta_er={theta}"]) == 0

@@ -6,8 +6,9 @@ import pytest
 import yaml
 
 from fuzzynav.cli import main
-from fuzzynav.control import registry
-from fuzzynav import models
+from fuzzynav.catalog import controllers as registry
+from fuzzynav import storage
+from fuzzynav.catalog import tasks
 
 TEST_CONTROLLER = ("tests.sim.controllers:HeadingController", "proportional heading (tests)")
 
@@ -63,9 +64,9 @@ def test_animation(heading, capsys, tmp_path):
 
 
 def test_model_file(monkeypatch, capsys, tmp_path):
-    monkeypatch.setitem(models.MODEL_LOADERS, "test-heading", "tests.sim.controllers:load_heading_model")
+    monkeypatch.setitem(tasks.MODEL_LOADERS, "test-heading", "tests.sim.controllers:load_heading_model")
     model = tmp_path / "model.json"
-    models.save_json_atomic(model, {"kind": "test-heading", "gain": 2.0})
+    storage.save_json_atomic(model, {"kind": "test-heading", "gain": 2.0})
     assert main(["run", "example-target", "--model", str(model), "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["task"] == "target"
 

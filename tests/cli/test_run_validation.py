@@ -62,7 +62,7 @@ CASES = [
     ("target-circle-radius", scenario_text(goal="target: {x: 4, y: 12, motion: {type: circle, center: [4, 12], speed: 1}}"), "target.motion.center: must differ from the target start"),
     ("target-inside-obstacle", scenario_text(goal="target: {x: 5, y: 5}"), "target: target (5, 5) is inside obstacles[0]"),
     ("max-time", scenario_text(extra="max_time: 0"), "max_time: must be > 0"),
-    ("unreadable-yaml", "robot: {x: 1, y: 1\ngoal: {x: 5, y: 5}\n", "unreadable YAML at line"),
+    ("unreadable-yaml", "robot: {x: 1, y: 1\ngoal: {x: 5, y: 5}\n", "line 2, column 5: invalid YAML"),
     ("duplicate-key", scenario_text(extra="goal: {x: 3, y: 3}"), "duplicate key 'goal'"),
     ("not-a-mapping", "- robot\n- goal\n", "must be a mapping, got list"),
 ]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.control.baselines import PurePursuit, Stanley
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.world.scenario import load_scenario

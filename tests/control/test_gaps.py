@@ -1,11 +1,11 @@
-"""Gap-aware avoidance (kernels.gaps): the default navigators, with the lidar scan, find and take
-the one passage wide enough for the body in a row of thin posts; the published versions keep
-their seven rays and no gap finding."""
+"""Gap-aware avoidance (kernels.gaps): the opt-in navigators fuzzy-5b-gap / fuzzy-2b-gap, with the
+lidar scan, find and take the one passage wide enough for the body in a row of thin posts; the
+published versions keep their seven rays and no gap finding."""
 
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels import gaps
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import scenario_from_dict
@@ -26,7 +26,7 @@ def post_field() -> dict:
             "max_time": 100.0}
 
 
-@pytest.mark.parametrize("name", ["fuzzy-5b", "fuzzy-2b"])
+@pytest.mark.parametrize("name", ["fuzzy-5b-gap", "fuzzy-2b-gap"])
 def test_robot_passes_through_the_gap_in_a_field_of_posts(name):
     trace = run_episode(scenario_from_dict(post_field()), make_controller(name), seed=0)
     assert trace.outcome == "reached"

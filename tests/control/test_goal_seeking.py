@@ -6,7 +6,7 @@ import pytest
 from fuzzynav.control.base import thesis_angle_error
 from fuzzynav.control.batched import BatchedController
 from fuzzynav.control.goal_seeking import GoalSeekingController, GuardedGoalSeeking
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.sim import run_episode
 from fuzzynav.sim.simulator import BatchSimulator
@@ -14,7 +14,7 @@ from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 
 class RawTable(BatchedController):
-    """Table IV.1 without the anti-orbit guard (what SPEC §3.1 warns about)."""
+    """Table IV.1 without the anti-orbit guard (the orbiting of docs/thesis.md, chapter IV)."""
 
     def __init__(self, sign=1.0):
         self.system, self.sign = goal_seeking(), sign

@@ -15,9 +15,10 @@ from fuzzynav.control.learned import (
     side_distances,
 )
 from fuzzynav.errors import InputError
-from fuzzynav.experiments import train_rl
+from fuzzynav.learn.tasks import common, fql_avoid, fql_goal
 from fuzzynav.fuzzy.io.document import from_document
-from fuzzynav.models import load_controller, save_json_atomic
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.storage import save_json_atomic
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
 
 
@@ -37,8 +38,8 @@ def test_side_distances_group_the_seven_sensors():
 
 def steering_table(conclusion):
     """A 15-rule goal seeker with the same conclusion for every rule."""
-    alpha = train_rl.output_variable("alpha", train_rl.STEERING3, (-math.pi / 5, math.pi / 5))
-    return train_rl.grid_system(train_rl.goal_partition_15(), [alpha], [[conclusion] * 15], "t", "")
+    alpha = common.output_variable("alpha", common.STEERING3, (-math.pi / 5, math.pi / 5))
+    return common.grid_system(fql_goal.goal_partition_15(), [alpha], [[conclusion] * 15], "t", "")
 
 
 def test_fuzzy_goal_seeker_turns_by_its_table_at_constant_speed():
@@ -49,7 +50,7 @@ def test_fuzzy_goal_seeker_turns_by_its_table_at_constant_speed():
 
 
 def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
-    system = train_rl.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False)  # every avoid rule: steer PG, speed low
+    system = fql_avoid.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False)  # every avoid rule: steer PG, speed low
     navigator = LearnedAvoidanceNavigator(system)
     far, near = np.full((1, 3), 4.0), np.array([[0.3, 0.3, 0.3]])
     gs = np.array([[0.1, 3.0]])
@@ -61,16 +62,18 @@ def test_avoidance_navigator_is_goal_seeking_when_everything_is_far():
 
 
 def test_supervisor_hands_a_clear_goal_direction_to_goal_seeking_and_slows_it():
-    navigator = LearnedAvoidanceNavigator(train_rl.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False))
-    assert (navigator.params.front, navigator.params.detection) == (train_rl.AVOID_D_MIN, train_rl.AVOID_D_SAFE)
-    blended, goal = np.array([[0.6, 0.5], [0.6, 0.5]]), np.array([[-0.2, 3.0], [-0.2, 3.0]])
+    navigator = LearnedAvoidanceNavigator(fql_avoid.avoid_system(np.full(7, 2), np.full(7, 0), open_side=False))
+    assert (navigator.params.front, navigator.params.detection) == (fql_avoid.AVOID_D_MIN, fql_avoid.AVOID_D_SAFE)
     ranges = np.full((2, 7), 4.0)
     ranges[:, 6] = 2.0  # a wall on the left, 2 m away, beside a clear path ahead
     ranges[1, :3] = 1.0  # and for the second robot an obstacle dead ahead, 1 m
-    steering, speed, goal_seeking = learned.supervise(blended, goal, ranges, np.full(2, 10.0), np.zeros(2),
-                                                      navigator.params)
+    goal = np.array([[10.0, 0.2], [10.0, 0.2]])  # 10 m away, a little to the right
+    seeker_steering, seeker_speed, _ = navigator.goal(goal[:, 0], -goal[:, 1])
+    assert seeker_speed[0] > 0.5
+    steering, speed, goal_seeking = navigator.drive(0.6, 0.5, 0.0, ranges, goal)  # the avoider's (α, V_r)
     assert goal_seeking.tolist() == [True, False]
-    assert steering.tolist() == [-0.2, 0.6] and speed.tolist() == [0.5, 0.5]  # sensed: no faster than the avoider
+    assert steering.tolist() == [seeker_steering[0], 0.6]
+    assert speed.tolist() == [0.5, 0.5]  # sensed: goal seeking no faster than the avoider
 
 def test_model_files_load_as_controllers_and_errors_name_the_field(tmp_path):
     system = steering_table("Z")
@@ -96,7 +99,7 @@ def test_sensor_layout_matches_the_groups():
 
 
 def test_wall_follower_sensing_single_rays_or_modules(tmp_path):
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.fuzzy.systems_navigation import wall_follower
 
     # a corner tip at −30° (C2) only: the single rays at 0°, ±90° do not see it, the modules do

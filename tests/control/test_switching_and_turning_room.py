@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.kernels import guard
 from fuzzynav.sim import run_episode
@@ -52,8 +52,8 @@ def test_hit_memory_keeps_world_points_seen_from_the_new_pose():
     assert (x, y) == pytest.approx((0.5, 0.0), abs=1e-12)  # remembered, now 0.5 m ahead
 
 
-@pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b"), ("fig-IV-15b", "fuzzy-2b"),
-                                              ("fig-IV-23", "fuzzy-5b")])
+@pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b-thesis"), ("fig-IV-15b", "fuzzy-2b-thesis"),
+                                              ("fig-IV-23", "fuzzy-5b-thesis")])
 def test_few_switches_and_no_steering_chatter(name, controller):
     scenario = load_scenario(name)
     trace = run_episode(scenario, make_controller(controller))
@@ -71,7 +71,7 @@ def test_start_facing_a_wall_turns_at_full_lock_without_collision():
     scenario = scenario_from_dict({
         "robot": {"x": 10.0, "y": 10.0, "theta": 0.0}, "goal": {"x": 4.0, "y": 10.0},
         "obstacles": [{"wall": {"start": [11.8, 6.0], "end": [11.8, 14.0], "thickness": 0.2}}], "max_time": 60})
-    for controller in ("fuzzy-5b", "fuzzy-2b"):
+    for controller in ("fuzzy-5b-thesis", "fuzzy-2b-thesis"):
         trace = run_episode(scenario, make_controller(controller))
         assert trace.reached, controller
         assert np.abs(trace.steering[:30]).max() == pytest.approx(np.pi / 5)
@@ -86,7 +86,7 @@ def test_step_clearance_is_the_gap_after_one_straight_step():
 
 
 def test_safety_stop_turns_a_hidden_wall_end_into_a_stop():
-    controller = "fuzzy-5b"
+    controller = "fuzzy-5b-thesis"
     # mixed-0-009: a thin wall end hides between the rays until no turn is free (README)
     world = generate_worlds("mixed", 10, 0)[9]
     unguarded = run_episode(world, make_controller(controller, stop_margin=-1.0), seed=0)

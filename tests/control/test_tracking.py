@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.reference import APPROACH, smoothed_path, swing_offset
 from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, FuzzyTracker
 from fuzzynav.errors import InputError

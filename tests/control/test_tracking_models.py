@@ -9,9 +9,10 @@ import numpy as np
 import pytest
 
 from fuzzynav.errors import InputError
-from fuzzynav.experiments import train_trackers as tt
-from fuzzynav.models import load_controller, read_model
-from fuzzynav.training import TrainRequest
+from fuzzynav.learn.tasks import trackers as tt
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.storage import read_document as read_model
+from fuzzynav.learn.tasks.common import TrainRequest
 
 
 def test_generalized_learning_pairs_invert_the_tricycle():

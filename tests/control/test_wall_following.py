@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
 

@@ -5,9 +5,10 @@ import json
 import numpy as np
 import pytest
 
-from fuzzynav import models, training
+from fuzzynav import storage
+from fuzzynav.catalog import tasks as training
 from fuzzynav.cli import main
-from fuzzynav.control import registry
+from fuzzynav.catalog import controllers as registry
 from fuzzynav.errors import InputError
 from fuzzynav.world.geometry import wrap_angle
 from fuzzynav.control.base import Observation, thesis_angle_error
@@ -15,25 +16,25 @@ from fuzzynav.control.base import Observation, thesis_angle_error
 
 def test_save_json_atomic_replaces_and_leaves_no_temporary(tmp_path):
     path = tmp_path / "model.json"
-    models.save_json_atomic(path, {"kind": "a", "value": 1})
-    models.save_json_atomic(path, {"kind": "a", "value": 2})
+    storage.save_json_atomic(path, {"kind": "a", "value": 1})
+    storage.save_json_atomic(path, {"kind": "a", "value": 2})
     assert json.loads(path.read_text())["value"] == 2
     assert [p.name for p in tmp_path.iterdir()] == ["model.json"]
 
 
 def test_failed_save_keeps_previous_model(tmp_path):
     path = tmp_path / "model.json"
-    models.save_json_atomic(path, {"kind": "a", "value": 1})
+    storage.save_json_atomic(path, {"kind": "a", "value": 1})
     with pytest.raises(TypeError):
-        models.save_json_atomic(path, {"kind": "a", "value": object()})
+        storage.save_json_atomic(path, {"kind": "a", "value": object()})
     assert json.loads(path.read_text())["value"] == 1
     assert [p.name for p in tmp_path.iterdir()] == ["model.json"]
 
 
 def test_npz_round_trip_without_pickle(tmp_path):
     path = tmp_path / "model.npz"
-    models.save_npz_atomic(path, kind=np.array("toy"), q=np.arange(6.0).reshape(2, 3))
-    document = models.read_model(path)
+    storage.save_npz_atomic(path, kind=np.array("toy"), q=np.arange(6.0).reshape(2, 3))
+    document = storage.read_document(path)
     assert document["kind"] == "toy"
     np.testing.assert_array_equal(document["q"], np.arange(6.0).reshape(2, 3))
 
@@ -46,7 +47,7 @@ def test_bad_model_files_name_the_file(tmp_path, content, field):
     path = tmp_path / "bad.json"
     path.write_text(content)
     with pytest.raises(InputError) as error:
-        models.load_controller(path)
+        training.load_controller(path)
     assert str(path) in str(error.value)
     if field:
         assert field in str(error.value)

@@ -2,7 +2,7 @@
 
 import pytest
 
-from fuzzynav.experiments.registry import experiment
+from fuzzynav.catalog.experiments import experiment
 
 pytestmark = pytest.mark.slow
 

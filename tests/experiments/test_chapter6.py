@@ -2,7 +2,7 @@
 
 import pytest
 
-from fuzzynav.experiments.registry import EXPERIMENTS, experiment
+from fuzzynav.catalog.experiments import EXPERIMENTS, experiment
 
 
 def test_every_chapter6_experiment_is_registered():

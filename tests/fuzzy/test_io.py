@@ -8,6 +8,7 @@ import pytest
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import Bell, FuzzySystem, Gaussian, Linear, Ramp, Sigmoid, Triangular, Variable
+from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.io import dumps, from_fll, load, loads, save, to_document
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
 
@@ -93,11 +94,11 @@ def test_fll_errors_name_the_line():
     lines = text.splitlines()
     rule_line = next(i for i, line in enumerate(lines) if line.strip().startswith("rule:")) + 1
     bad = text.replace("then alpha is PG", "then alpha is HUGE", 1)
-    with pytest.raises(InputError, match=rf"t\.fll: line {rule_line}: unknown term 'HUGE'"):
+    with pytest.raises(InputError, match=rf"t\.fll: line {rule_line}: expected a term of 'alpha'.*got 'HUGE'"):
         from_fll(bad, source="t.fll")
-    with pytest.raises(InputError, match=r"line \d+: term NG: unsupported term type 'Spike'"):
-        from_fll(text.replace("NG Constant", "NG Spike", 1), source="t.fll")
-    with pytest.raises(InputError, match="OR in rules is not supported"):
+    with pytest.raises(InputError, match=r"line \d+: term NG: unknown term type 'Blob'"):
+        from_fll(text.replace("NG Constant", "NG Blob", 1), source="t.fll")
+    with pytest.raises(InputError, match="rule uses 'or' but the block has no disjunction"):
         from_fll(text.replace(" and dtheta_er", " or dtheta_er", 1), source="t.fll")
 
 
@@ -133,7 +134,11 @@ RuleBlock:
   rule: if Ambient is BRIGHT then Power is LOW
 """
     fs = from_fll(text, source="dimmer.fll")
-    assert fs.method == "ts0" and fs.defuzzifier == "weighted_average"
+    assert isinstance(fs, Engine)  # lock-range false: fuzzylite's meaning, not a clamping FuzzySystem
     # 0.3: DARK 0.8, MEDIUM 0.2 -> (0.8·0.75 + 0.2·0.5) / 1.0
     assert fs.evaluate_one(0.3) == pytest.approx((0.7,))
     assert math.isnan(fs.evaluate_one(0.1)[0]) is False
+    # outside the range nothing fires (no clamping): NaN, as in fuzzylite; locked, the border's value
+    assert math.isnan(fs.evaluate_one(1.5)[0])
+    locked = from_fll(text.replace("lock-range: false", "lock-range: true", 1), source="dimmer.fll")
+    assert locked.method == "ts0" and locked.evaluate_one(1.5) == locked.evaluate_one(1.0)

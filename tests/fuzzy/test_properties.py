@@ -71,7 +71,7 @@ def test_table_IV1_speed_is_symmetric_in_theta(d, theta):
 @settings(max_examples=200, deadline=None)
 @given(st.floats(0.0, 5.0), st.floats(0.25, math.pi))
 def test_table_IV2_mirror_outside_the_Z_row(d, theta):
-    # the reconstruction of SPEC §3.2 is mirror symmetric except row Z (obstacle ahead: steer right)
+    # the reconstruction of Table IV.2 (§IV.5.2.1) is mirror symmetric except row Z (obstacle ahead: steer right)
     oa = get_system("obstacle-avoidance")
     left, right = oa.evaluate_one(d, theta), oa.evaluate_one(d, -theta)
     assert abs(left[0] + right[0]) <= 1e-12 and abs(left[1] - right[1]) <= 1e-12

@@ -12,13 +12,13 @@ EPISODES = [(name, controller) for name in ("fig-IV-15a", "fig-IV-22a", "fig-IV-
 EPISODES += [("example-path", "fuzzy-tracker"), ("example-target", "pure-pursuit"), ("path-v", "stanley")]
 MIXED = [(i, controller) for i in (0, 3, 9) for controller in ("fuzzy-2b", "fuzzy-5b")]
 EVERY = 10  # poses kept: every 10th step and the last
-# recorded as fuzzy-2b / fuzzy-5b before those gained gap finding; the published versions keep these traces
+# the keys keep the names recorded at the base; fuzzy-2b / fuzzy-5b there are today's thesis variants
 THESIS = {"fuzzy-2b": "fuzzy-2b-thesis", "fuzzy-5b": "fuzzy-5b-thesis"}
 
 
 def run_all() -> dict:
     """{key: (outcome, steps, behaviour labels, kept poses)} of every episode."""
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import run_episode
     from fuzzynav.world.generate import generate_worlds
     from fuzzynav.world.scenario import load_scenario

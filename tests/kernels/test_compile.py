@@ -1,5 +1,5 @@
 """Kernels still run where no cache directory is writable (a read-only install with no user
-cache): :func:`fuzzynav.kernels.compile.jit` then compiles in memory."""
+cache): :func:`fuzzynav.jit.jit` then compiles in memory."""
 
 import os
 import subprocess

@@ -1,5 +1,6 @@
 """``NUMBA_DISABLE_JIT=1`` runs the very same kernels as plain Python (the debugging story): a
-short fuzzy-5b episode and a batch of rays give the numbers of the compiled run."""
+short fuzzy-5b-thesis episode and a batch of rays, and the learned avoidance navigator's inputs,
+grid premise and drive, give the numbers of the compiled run."""
 
 import json
 import os
@@ -11,7 +12,7 @@ import pytest
 
 SCRIPT = """
 import json, numpy as np
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
 import fuzzynav.kernels.beams as beams
@@ -24,9 +25,29 @@ print(json.dumps({"jit": hasattr(beams.read, "py_func"), "pose": trace.pose.toli
 """
 
 
-def _run(disable: bool) -> dict:
+LEARNED = """
+import json, numpy as np
+from fuzzynav.control import learned
+from fuzzynav.learn.envs import GridPremise
+from fuzzynav.learn.tasks import fql_avoid
+import fuzzynav.kernels.learned as kernels
+rng = np.random.default_rng(5)
+ranges = np.minimum(rng.random((40, 7)) * 5.0, 4.0)
+pose = np.column_stack([rng.random((40, 2)) * 20.0, rng.uniform(-3.0, 3.0, 40)])
+goal = learned.goal_inputs(pose, rng.random((40, 2)) * 20.0)
+x = learned.avoidance_inputs(ranges, True)
+system = fql_avoid.avoid_system([0, 2, 1] * 4 + [0, 2], [0, 1, 2] * 4 + [2, 1])
+navigator = learned.LearnedAvoidanceNavigator(system)
+w = GridPremise(system).firing_strengths(x, normalise=False)
+drive = navigator.drive(*navigator.avoider_shares(x), ranges, goal)
+print(json.dumps({"jit": hasattr(kernels.drive, "py_func"), "values": [goal.tolist(), x.tolist(), w.tolist(),
+                  [v.tolist() for v in drive]]}))
+"""
+
+
+def _run(disable: bool, script: str = SCRIPT) -> dict:
     env = {**os.environ, "NUMBA_DISABLE_JIT": "1" if disable else "0"}
-    done = subprocess.run([sys.executable, "-c", SCRIPT], capture_output=True, text=True, env=env, timeout=600)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=600)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
 
@@ -38,3 +59,9 @@ def test_kernels_run_as_plain_python_with_the_same_numbers():
     assert plain["labels"] == compiled["labels"] and len(plain["pose"]) == 41
     np.testing.assert_allclose(plain["pose"], compiled["pose"], rtol=0, atol=1e-12)
     np.testing.assert_allclose(plain["ranges"], compiled["ranges"], rtol=0, atol=1e-12)
+
+
+def test_learned_navigator_kernels_run_as_plain_python_with_the_same_numbers():
+    plain, compiled = _run(True, LEARNED), _run(False, LEARNED)
+    assert not plain["jit"] and compiled["jit"]
+    assert plain["values"] == compiled["values"]

@@ -4,7 +4,7 @@ compiled, and refuse unknown roles or systems the compiled evaluator cannot run.
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.rules import Rule

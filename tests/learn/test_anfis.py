@@ -13,11 +13,12 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import Bell, FuzzySystem, Linear, Rule, Variable
 from fuzzynav.fuzzy.io import files
 from fuzzynav.learn import anfis_mf
-from fuzzynav.learn.anfis import ANFIS, _Grid, _StepRule
+from fuzzynav.learn.anfis import ANFIS
+from fuzzynav.learn.anfis_hybrid import Grid, StepRule
 
 
 def tracker_target(theta):
-    """The benchmark target of issue 4: α = (π/4)·tanh(1.5·θ_er)."""
+    """The benchmark target of benchmarks/anfis_bench.py: α = (π/4)·tanh(1.5·θ_er)."""
     return math.pi / 4 * np.tanh(1.5 * theta)
 
 
@@ -114,7 +115,7 @@ def test_premise_gradient_matches_finite_differences(mf):
     X = rng.uniform(-1, 1, (40, 2))
     y = rng.normal(size=40)
     rules = np.array([[i, j] for i in range(2) for j in range(3)])
-    grid = _Grid(mf, [2, 3], rules, order=1)
+    grid = Grid(mf, [2, 3], rules, order=1)
     params = np.concatenate([anfis_mf.grid_premises(mf, -1, 1, 2), anfis_mf.grid_premises(mf, -1, 1, 3)])
     params = params * (1 + 0.1 * rng.uniform(-1, 1, params.shape))
     theta = rng.normal(size=(6, 3))
@@ -137,7 +138,7 @@ def test_premise_gradient_matches_finite_differences(mf):
 
 
 def test_step_size_rules_of_jang():
-    rule = _StepRule(1.1, 0.9)
+    rule = StepRule(1.1, 0.9)
     k = 1.0
     for error in [5, 4, 3, 2]:  # first error has no predecessor: 3 decreases so far
         k = rule.update(error, k)

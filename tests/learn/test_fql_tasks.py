@@ -1,4 +1,4 @@
-"""The chapter VI sensor tasks of experiments/train_rl.py: the avoider's openness input (16 rules),
+"""The chapter VI sensor tasks of learn/tasks/: the avoider's openness input (16 rules),
 the turning-room guard of the learned navigator, and the wall follower's rewards read on the modules."""
 
 import math
@@ -9,10 +9,12 @@ import pytest
 from fuzzynav.control import learned
 from fuzzynav.control.learned import LearnedAvoidanceNavigator
 from fuzzynav.errors import InputError
-from fuzzynav.experiments import train_rl
+from fuzzynav.learn.tasks import fql_avoid, fql_wall
+from fuzzynav.experiments import evaluation
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.learn.envs import RobotState
-from fuzzynav.models import load_controller, save_json_atomic
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.storage import save_json_atomic
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.shapes import Circle
 from fuzzynav.world.world import World
@@ -27,9 +29,9 @@ def wall_ahead(open_left: bool) -> np.ndarray:
 
 
 def prior_navigator(open_side: bool, **options) -> LearnedAvoidanceNavigator:
-    """The navigator with the a-priori conclusions of every rule (train_rl.avoid_prior), speed low."""
-    n = train_rl.free_rules(open_side)[0]
-    return LearnedAvoidanceNavigator(train_rl.avoid_system(train_rl.avoid_prior(open_side)[:n], np.zeros(n, int),
+    """The navigator with the a-priori conclusions of every rule (fql_avoid.avoid_prior), speed low."""
+    n = fql_avoid.free_rules(open_side)[0]
+    return LearnedAvoidanceNavigator(fql_avoid.avoid_system(fql_avoid.avoid_prior(open_side)[:n], np.zeros(n, int),
                                                            open_side), **options)
 
 
@@ -41,7 +43,7 @@ def test_openness_is_the_left_module_mean_minus_the_right_one():
 
 
 def test_with_the_openness_input_all_near_turns_to_the_open_side_the_thesis_rules_cannot():
-    assert train_rl.free_rules(True).tolist() == [14, 15] and train_rl.free_rules(False).tolist() == [7]
+    assert fql_avoid.free_rules(True).tolist() == [14, 15] and fql_avoid.free_rules(False).tolist() == [7]
     goal = np.array([[0.0, 1.0]])
     for open_left in (True, False):
         ranges = wall_ahead(open_left)
@@ -55,8 +57,8 @@ def test_with_the_openness_input_all_near_turns_to_the_open_side_the_thesis_rule
 
 def test_the_turn_guard_saves_a_navigator_whose_avoider_drives_straight():
     world = World(20.0, 20.0, (Circle((8.0, 10.0), 1.0),))
-    scenario = train_rl._scenario(world, (4.0, 10.0, 0.0), (16.0, 10.0), "post ahead", 30.0)
-    straight = train_rl.avoid_system(np.ones(14, int), np.zeros(14, int))  # every avoid rule: Z, slow
+    scenario = evaluation.scenario_of(world, (4.0, 10.0, 0.0), (16.0, 10.0), "post ahead", 30.0)
+    straight = fql_avoid.avoid_system(np.ones(14, int), np.zeros(14, int))  # every avoid rule: Z, slow
     runs = {}
     for guard in (False, True):
         navigator = LearnedAvoidanceNavigator(straight, turn_guard=guard)
@@ -67,7 +69,7 @@ def test_the_turn_guard_saves_a_navigator_whose_avoider_drives_straight():
 
 
 def test_a_model_file_says_whether_its_navigator_is_guarded(tmp_path):
-    system = train_rl.avoid_system(np.ones(14, int), np.zeros(14, int))
+    system = fql_avoid.avoid_system(np.ones(14, int), np.zeros(14, int))
     path = tmp_path / "avoid.json"
     for guard in (False, True):
         save_json_atomic(path, {"kind": "fql-avoid", **to_document(system), "turn_guard": guard})
@@ -78,7 +80,7 @@ def test_a_model_file_says_whether_its_navigator_is_guarded(tmp_path):
 
 
 def test_wall_follower_reads_its_rays_and_is_rewarded_on_the_modules(tmp_path):
-    steering = next(train_rl.fql_wall_phases(tmp_path / "wall.json", 100, batch=2))
+    steering = next(fql_wall.fql_wall_phases(tmp_path / "wall.json", 100, batch=2))
     env = steering.env
     far = np.full((1, 7), 4.0)
     tip = far.copy()
@@ -96,7 +98,7 @@ def test_wall_follower_reads_its_rays_and_is_rewarded_on_the_modules(tmp_path):
 def test_the_avoider_is_credited_only_where_it_acts(tmp_path):
     """Where the supervisor hands the robot to goal seeking, the learner sees "all far" (the free
     rules), so the avoider's rules are not credited for the goal seeker's decisions."""
-    steering = next(train_rl.fql_avoid_phases(tmp_path / "avoid.json", 100, batch=2))
+    steering = next(fql_avoid.fql_avoid_phases(tmp_path / "avoid.json", 100, batch=2))
     ranges = np.full((2, 7), 4.0)
     ranges[:, 6] = 2.0  # a wall on the left, 2 m away, beside a clear path to the goal ahead
     ranges[1, :3] = 1.0  # and for the second robot an obstacle dead ahead, 1 m
@@ -104,23 +106,23 @@ def test_the_avoider_is_credited_only_where_it_acts(tmp_path):
     state = RobotState(World(), np.zeros((2, 3)), np.ones(2), np.zeros(2), ranges=ranges, goal=goal,
                        sides=learned.side_distances(ranges))
     x = steering.env.observe(state)
-    assert x[0, :3].tolist() == [train_rl.D_MAX] * 3  # goal seeking acts: the free rules
+    assert x[0, :3].tolist() == [fql_avoid.D_MAX] * 3  # goal seeking acts: the free rules
     assert x[1, :3].tolist() == learned.side_distances(ranges)[1].tolist()  # the avoider acts
     w = steering.learner.strengths(x)
-    assert w[0, train_rl.free_rules()].sum() == pytest.approx(1.0) and w[1, train_rl.free_rules()].sum() == 0.0
+    assert w[0, fql_avoid.free_rules()].sum() == pytest.approx(1.0) and w[1, fql_avoid.free_rules()].sum() == 0.0
 
 
 @pytest.mark.slow
 def test_a_short_training_gives_a_navigator_that_drives_around_a_post_and_a_wall(tmp_path):
-    from fuzzynav.training import TrainRequest
+    from fuzzynav.learn.tasks.common import TrainRequest
     from fuzzynav.world.shapes import Wall
 
     out = tmp_path / "avoid.json"
-    train_rl.train_fql_avoid(TrainRequest(out=out, episodes=200, seed=0, progress=False))
+    fql_avoid.train_fql_avoid(TrainRequest(out=out, episodes=200, seed=0, progress=False))
     navigator = load_controller(out)
     assert navigator.avoidance.input_names == ["front", "right", "left", "open"]
     assert len(navigator.avoidance.rules) == 14 and navigator.guard is None  # the learned avoider alone
     for obstacle in (Circle((8.0, 10.0), 0.3), Wall((8.0, 7.0), (8.0, 11.5), 0.3)):
-        scenario = train_rl._scenario(World(20.0, 20.0, (obstacle,)), (4.0, 10.0, 0.0), (16.0, 10.0), "o", 40.0)
+        scenario = evaluation.scenario_of(World(20.0, 20.0, (obstacle,)), (4.0, 10.0, 0.0), (16.0, 10.0), "o", 40.0)
         trace = BatchSimulator(scenario, navigator, record=True).run().trace(0)
         assert trace.outcome == "reached" and "obstacle avoidance" in trace.behaviour

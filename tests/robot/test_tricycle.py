@@ -60,7 +60,9 @@ def test_batch_equals_one_by_one():
 def test_clip_limits():
     steering, speed = DEFAULT_PARAMS.clip(np.array([-2.0, 0.1, 2.0]), np.array([-1.0, 2.0, 9.0]))
     np.testing.assert_allclose(steering, [-np.pi / 4, 0.1, np.pi / 4])
-    np.testing.assert_allclose(speed, [0.0, 2.0, 4.0])
+    np.testing.assert_allclose(speed, [-0.5, 2.0, 4.0])  # the default robot reverses at up to 0.5 m/s
+    no_reverse = TricycleParams(max_reverse_speed=0.0)
+    np.testing.assert_allclose(no_reverse.clip(np.zeros(3), np.array([-1.0, 2.0, 9.0]))[1], [0.0, 2.0, 4.0])
 
 
 @pytest.mark.parametrize("bad", [{"dt": 0.0}, {"wheelbase": -1.0}, {"radius": float("nan")},

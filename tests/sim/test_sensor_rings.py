@@ -1,12 +1,12 @@
 """Which sensor ring a run uses: --sensors, else the scenario's ``sensors`` key, else the
-controller's (lidar for the gap-aware fuzzy-2b / fuzzy-5b, the thesis' rays for the rest)."""
+controller's (lidar for the gap-aware fuzzy-2b-gap / fuzzy-5b-gap, the thesis' rays for the rest)."""
 
 import json
 
 import pytest
 
 from fuzzynav.cli import main
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
@@ -15,8 +15,9 @@ OPEN = {"robot": {"x": 2, "y": 2}, "goal": {"x": 15, "y": 12}}
 
 
 @pytest.mark.parametrize("controller, scenario_ring, count, beam", [
-    ("fuzzy-5b", None, 271, 0.0), ("fuzzy-2b", None, 271, 0.0), ("fuzzy-5b-thesis", None, 7, 0.0),
-    ("goal-seeking", None, 7, 0.0), ("fuzzy-5b-thesis", "beam", 7, 30.0), ("fuzzy-5b", "thesis", 7, 0.0)])
+    ("fuzzy-5b-gap", None, 271, 0.0), ("fuzzy-2b-gap", None, 271, 0.0), ("fuzzy-5b-thesis", None, 7, 0.0),
+    ("fuzzy-5b", None, 7, 0.0), ("goal-seeking", None, 7, 0.0), ("fuzzy-5b-thesis", "beam", 7, 30.0),
+    ("fuzzy-5b", "lidar", 271, 0.0), ("fuzzy-5b-gap", "thesis", 7, 0.0)])
 def test_ring_of_scenario_else_controller(controller, scenario_ring, count, beam):
     doc = {**OPEN, **({"sensors": scenario_ring} if scenario_ring else {})}
     sim = BatchSimulator(scenario_from_dict(doc), make_controller(controller), record=False)
@@ -37,5 +38,8 @@ def test_cli_sensors_option(capsys):
     assert "sensors" in capsys.readouterr().err
 
 
-def test_thesis_ring_kept_by_the_published_navigators_on_their_figures():
-    assert load_scenario("fig-IV-22a").controllers == ("fuzzy-5b-thesis",)
+@pytest.mark.parametrize("figure", ["fig-IV-15a", "fig-IV-22a", "fig-IV-23"])
+def test_thesis_ring_kept_by_the_navigators_of_the_figures(figure):
+    scenario = load_scenario(figure)
+    for controller in scenario.controllers:
+        assert BatchSimulator(scenario, make_controller(controller), record=False).sensors.count == 7

@@ -62,7 +62,7 @@ def test_path_waypoint_switching_and_cross_track():
     trace = run_episode(scenario, HeadingController(gain=3.0))
     m = metrics(trace, scenario)
     assert m["completed"] and m["waypoints_reached"] == 4
-    assert np.all(trace.speed == scenario.path.speed)  # constant tracking speed (SPEC §4)
+    assert np.all(trace.speed == scenario.path.speed)  # constant tracking speed (thesis §V.2)
     index = trace.waypoint_index
     assert np.all(np.diff(index) >= 0) and index[-1] == 3
     waypoints = scenario.path.waypoints

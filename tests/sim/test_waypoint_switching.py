@@ -6,7 +6,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.tasks import TaskState

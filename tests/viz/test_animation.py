@@ -3,7 +3,7 @@
 import numpy as np
 from PIL import Image
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.animation import animate_episode
 from fuzzynav.world.scenario import load_scenario
@@ -21,10 +21,10 @@ def _frames(path):
 def test_gif_frames_follow_the_robot_over_a_fixed_world(tmp_path):
     scenario = load_scenario("fig-IV-15a")
     trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0)
-    n = animate_episode(trace, scenario, tmp_path / "a.gif", max_frames=12, fps=5, dpi=40)
+    n = animate_episode(trace, scenario, tmp_path / "a.gif", max_frames=12, fps=5, size=200)
     frames, duration = _frames(tmp_path / "a.gif")
     assert n == len(frames) == 12 and duration == 200
-    assert frames[0].shape == (200, 200, 3)  # 5 in at 40 dpi
+    assert frames[0].shape == (200, 200, 3)  # size=200 pixels
     changed = [np.any(a != b, axis=2).mean() for a, b in zip(frames, frames[1:])]
     assert min(changed) > 0.001  # every frame moves something (robot, trail, rays, clock)
     assert max(changed) < 0.2  # ... over the same world: no redrawn or shifted background

@@ -24,6 +24,9 @@ COMMAND_MODULES: list[str] = [
     "reproduce",
     "fis",
     "evaluate",
+    "worlds",
+    "bench",
+    "importer",
 ]
 
 

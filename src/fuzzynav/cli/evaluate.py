@@ -5,17 +5,22 @@ generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, colli
 rates, the mean time and the mean path length of the successful episodes
 (:func:`fuzzynav.experiments.evaluation.evaluate`). ``--json`` prints exactly one JSON object
 (with the per-world outcomes); otherwise a short table, with ``--progress`` one line per world on
-stderr.
+stderr. A progress bar shows on a terminal (not with ``--quiet`` or ``--json``).
+``--save-failures DIR`` writes every world not reached as ``DIR/<world>.yaml`` with the plot of its
+episode, ``DIR/<world>.png``: ``fuzzynav run DIR/<world>.yaml --controller NAME`` reruns it.
 """
 
 from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 
+from fuzzynav import progress as progress_bars, validation
 from fuzzynav.cli import arguments
 from fuzzynav.cli.run import SENSORS_HELP
-from fuzzynav.control.registry import CONTROLLERS, make_controller
+from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+from fuzzynav.catalog.controllers import CONTROLLERS
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 
@@ -32,11 +37,16 @@ def register(subparsers) -> None:
                         help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
+    parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
+                        help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--save-failures", type=Path, metavar="DIR",
+                        help="write each world not reached as DIR/<world>.yaml with its plot DIR/<world>.png")
     parser.set_defaults(func=run)
 
 
@@ -45,16 +55,20 @@ def run(args) -> int:
 
     if args.worlds not in KINDS:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
-    if args.n < 1:
-        raise InputError(f"must be >= 1, got {args.n}", field="--n")
+    validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
+    if args.fis and args.model:
+        raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
+    systems = systems_from_options(args.controller, args.fis) if args.fis else None
     if args.controller is not None:
-        make_controller(args.controller)  # unknown names fail before any world is drawn
+        make_with_systems(args.controller, systems)  # unknown names fail before any world is drawn
 
     def progress(i, run):
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
 
-    result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
-                      model=args.model, sensors=args.sensors)
+    with progress_bars.quiet(args.quiet or args.json or args.progress):
+        result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
+                          model=args.model, systems=systems, save_failures=args.save_failures,
+                          sensors=args.sensors)
     if args.json:
         print(json.dumps(result))
         return 0
@@ -64,5 +78,10 @@ def run(args) -> int:
         print(f"  {key:20s} {100 * result[key]:6.1f} %")
     for key, unit in (("mean_time_s", "s"), ("mean_path_length_m", "m")):
         value = result[key]
-        print(f"  {key:20s} {'n/a' if value is None else f'{value:6.2f} {unit}'}")
+        print(f"  {key:20s} {'n/a' if value is None else f'{value:6.2f} {unit}'}  (over the episodes that reached the goal)")
+    saved = [run["saved"] for run in result["episodes"] if "saved" in run]
+    if args.save_failures is not None:
+        rerun = f"--model {args.model}" if args.model else f"--controller {args.controller}"
+        print(f"saved {len(saved)} failed worlds (scenario + plot) to {args.save_failures}/"
+              + (f"; rerun one with: fuzzynav run {saved[0]} {rerun} --seed {args.seed}" if saved else ""))
     return 0

@@ -1,13 +1,17 @@
-"""``fuzzynav fis show|eval|convert|plot`` — fuzzy systems on the command line (issue 2).
+"""``fuzzynav fis show|eval|convert|plot|export-c`` — fuzzy systems on the command line.
 
-NAME is a built-in system (``goal-seeking``, ``obstacle-avoidance``, ``tracking``) or a file
-(``.json``, ``.yaml``/``.yml``, ``.fll``).
+SYSTEM is a built-in system (``goal-seeking``, ``obstacle-avoidance``, ``tracking``, ...), a
+controller's role (``fuzzy-5b:foa``: the system that role uses) or a file (``.json``,
+``.yaml``/``.yml``, ``.fll``, MATLAB ``.fis``).
 
     fuzzynav fis show goal-seeking
     fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3      # JSON on stdout
     fuzzynav fis eval tracking --csv inputs.csv -o outputs.csv          # one column per input
     fuzzynav fis convert goal-seeking --to fll -o gs.fll
+    fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml             # edit, then run --fis foa=foa.yaml
+    fuzzynav fis convert tipper.fis --to yaml
     fuzzynav fis plot tracking --surface -o fig-V7.png
+    fuzzynav fis export-c goal-seeking -o controller.c [--fixed Q16.16]   # and controller.h
 """
 
 from __future__ import annotations
@@ -21,39 +25,55 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
+from fuzzynav.catalog.roles import ROLES, default_system
+from fuzzynav.fuzzy.engine import Engine
+from fuzzynav.fuzzy.engine.convert import engine_to_system
+from fuzzynav.fuzzy.export_c import FIXED_FORMATS
+from fuzzynav.fuzzy.fll_terms import term_to_fll
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
+from fuzzynav.storage import read_document, savefig_atomic, write_text_atomic
 
 
 def read_model_or_none(path: str) -> dict | None:
-    """The JSON object of ``path`` if it is a model file (has a ``kind``), else ``None``."""
+    """The document of ``path`` if it is a model file (JSON or NPZ with a ``kind``), else ``None``."""
     try:
-        document = json.loads(Path(path).read_text())
-    except (OSError, ValueError):
+        return read_document(path)
+    except InputError:
         return None
-    return document if isinstance(document, dict) and "kind" in document else None
 
 
-def resolve(name: str) -> FuzzySystem:
-    """A built-in system by name, or the system stored in the file ``name``."""
+def resolve(name: str) -> FuzzySystem | Engine:
+    """A built-in system by name, a controller's role (``fuzzy-5b:foa``), or the system in the file ``name``."""
     if name in SYSTEMS:
         return get_system(name)
-    if Path(name).suffix == ".json" and Path(name).is_file():
+    controller, sep, role = name.partition(":")
+    if sep and not Path(name).exists() and controller in ROLES:
+        return default_system(controller, role)
+    if Path(name).suffix in (".json", ".npz") and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
-            from fuzzynav.experiments.train_trackers import anfis_tracker_system
+            from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
-            return anfis_tracker_system(document, name)  # the trained ANFIS, exported (issue 4)
+            return anfis_tracker_system(document, name)  # the trained ANFIS, exported
+        if document is not None and Path(name).suffix == ".npz":  # a learned rule base stored as NPZ
+            from fuzzynav.fuzzy.io.document import from_document
+
+            return from_document(document, source=name)
     if Path(name).suffix:
         return load(name)
-    raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}) nor a .json/.yaml/.fll file", field=name)
+    raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}), a CONTROLLER:ROLE ({', '.join(ROLES)}) nor a "
+                     ".json/.yaml/.fll/.fis file", field=name)
 
 
-def describe(system: FuzzySystem) -> str:
+def describe(system: FuzzySystem | Engine) -> str:
     """Variables, terms and the rule base (as a grid when it is a complete two-input table)."""
+    if isinstance(system, Engine):
+        return _describe_engine(system)
     out = [f"{system.name or '(unnamed)'}: {system.description}".rstrip(": "),
            f"method {system.method}, t-norm {system.tnorm}, defuzzifier {system.defuzzifier}"
            + (f", implication {system.implication}, aggregation {system.aggregation}, resolution {system.resolution}"
@@ -67,6 +87,27 @@ def describe(system: FuzzySystem) -> str:
         out.append(grid)
     else:
         out += [f"rule {i + 1}: {rule.text()}" for i, rule in enumerate(system.rules)]
+    return "\n".join(out)
+
+
+def _describe_engine(engine: Engine) -> str:
+    """An engine's variables (with their own settings) and its rule blocks."""
+    out = [f"{engine.name or '(unnamed)'}: {engine.description}".rstrip(": ")]
+    for side, variables in (("input", engine.inputs), ("output", engine.outputs)):
+        for v in variables:
+            flags = [f"lock-range {'on' if v.lock_range else 'off'}"] + ([] if v.enabled else ["disabled"])
+            if side == "output":
+                flags += [f"aggregation {v.aggregation or 'none'}",
+                          f"defuzzifier {v.defuzzifier.text() if v.defuzzifier else 'none'}"
+                          + (" (MATLAB sampling)" if v.defuzzifier and v.defuzzifier.grid == "linspace" else ""),
+                          f"default {v.default:g}"] + (["lock-previous"] if v.lock_previous else [])
+            out.append(f"{side} {v.name} in [{v.minimum:.6g}, {v.maximum:.6g}], {', '.join(flags)}")
+            out += [f"    {label:<4} {term_to_fll(mf)}" for label, mf in v.terms.items()]
+    for b, block in enumerate(engine.blocks, start=1):
+        out.append(f"rule block {block.name or b}: conjunction {block.conjunction or 'none'}, disjunction "
+                   f"{block.disjunction or 'none'}, implication {block.implication or 'none'}, activation "
+                   f"{block.activation}{'' if block.enabled else ' (disabled)'}")
+        out += [f"rule {i + 1}: {rule.text()}" for i, rule in enumerate(block.rules)]
     return "\n".join(out)
 
 
@@ -123,18 +164,14 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
 
 
 def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
-    try:
-        text = sys.stdin.read() if path == "-" else Path(path).read_text(encoding="utf-8")
-    except OSError as error:
-        raise InputError(f"cannot read: {error.strerror or error}", source=path) from None
-    reader = csv.DictReader(io.StringIO(text))
-    header = reader.fieldnames or []
+    text = validation.read_text(sys.stdin.buffer if path == "-" else path, source=path)
+    header, table = validation.csv_table(text, path)
     missing = [n for n in system.input_names if n not in header]
     if missing:
         raise InputError(f"missing column(s) {', '.join(missing)} (header: {', '.join(header)})", source=path,
                          field="header")
     rows = []
-    for line, row in enumerate(reader, start=2):
+    for line, row in table:
         try:
             rows.append([float(row[n]) for n in system.input_names])
         except (TypeError, ValueError):
@@ -178,6 +215,23 @@ def _convert(args) -> int:
     return 0
 
 
+def _export_c(args) -> int:
+    from fuzzynav.fuzzy.export_c import to_c
+
+    system = resolve(args.system)
+    if isinstance(system, Engine):
+        system = engine_to_system(system) or system
+    source = Path(args.output)
+    if source.suffix != ".c":
+        raise InputError(f"the output is a .c file (its .h is written beside it), got {args.output!r}", field="-o")
+    header_path = source.with_suffix(".h")
+    header, code = to_c(system, name=args.name or source.stem, fixed=args.fixed, header_file=header_path.name)
+    for path, text in ((header_path, header), (source, code)):
+        write_text_atomic(path, text)
+    print(f"{source} {header_path}")
+    return 0
+
+
 def _plot(args) -> int:
     from fuzzynav.fuzzy.plot import plot_surface, plot_system
 
@@ -191,14 +245,14 @@ def _plot(args) -> int:
             raise InputError(str(error), field="--surface") from None
     else:
         fig = plot_system(system)
-    fig.savefig(args.output, dpi=120)
+    savefig_atomic(fig, args.output, dpi=120)
     print(args.output)
     return 0
 
 
 def _write(text: str, output: str | None) -> None:
     if output and output != "-":
-        Path(output).write_text(text, encoding="utf-8")
+        write_text_atomic(output, text)
     else:
         sys.stdout.write(text)
 
@@ -207,7 +261,7 @@ def register(subparsers) -> None:
     parser = subparsers.add_parser("fis", help="show, evaluate, convert or plot a fuzzy system",
                                    description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)
-    target = "built-in name (" + ", ".join(SYSTEMS) + ") or .json/.yaml/.fll file"
+    target = "built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE or .json/.yaml/.fll/.fis file"
 
     show = sub.add_parser("show", help="variables, terms and rule table")
     show.add_argument("system", help=target)
@@ -220,11 +274,20 @@ def register(subparsers) -> None:
     ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
     ev.set_defaults(func=_eval)
 
-    conv = sub.add_parser("convert", help="write the system as FLL, JSON or YAML")
+    conv = sub.add_parser("convert", help="write the system as FLL, MATLAB .fis, JSON or YAML")
     conv.add_argument("system", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True)
     conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
     conv.set_defaults(func=_convert)
+
+    export = sub.add_parser("export-c", help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
+                            description="Write SYSTEM as a dependency-free C99 function (no heap): -o controller.c "
+                                        "and controller.h beside it.")
+    export.add_argument("system", help=target)
+    export.add_argument("-o", "--output", required=True, metavar="FILE.c", help="the .c file (the .h goes beside it)")
+    export.add_argument("--fixed", choices=FIXED_FORMATS, help="fixed-point arithmetic (default: double)")
+    export.add_argument("--name", help="prefix of the C identifiers (default: the file's stem)")
+    export.set_defaults(func=_export_c)
 
     plot = sub.add_parser("plot", help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)")
     plot.add_argument("system", help=target)

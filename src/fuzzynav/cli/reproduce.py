@@ -1,40 +1,61 @@
-"""``fuzzynav reproduce ID|all --out DIR [--quick]`` — reproduce the thesis' figures and tables."""
+"""``fuzzynav reproduce ID…|all --out DIR [--quick]`` — reproduce the thesis' figures and tables.
+
+Each experiment writes into ``DIR/<id>/`` (PNG figures and ``<id>.json``, the numbers it
+measured); ``DIR/index.html`` puts the thesis' claim beside our figure and numbers for every
+experiment in DIR, with the verdict of the claim this package asserts and the run time
+(:mod:`fuzzynav.experiments.report`).
+"""
 
 from __future__ import annotations
 
-import json
 import time
 from pathlib import Path
 
+from fuzzynav import progress
 from fuzzynav.cli import arguments
-from fuzzynav.experiments import registry
+from fuzzynav.catalog import experiments as registry
 
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "reproduce",
         help="reproduce a figure or table of the thesis",
-        description="Reproduce thesis figures/tables; writes PNG figures and <ID>.json numbers.",
+        description="Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and <ID>.json numbers, "
+                    "DIR/index.html the thesis' claim beside our figure for each.",
     )
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bars")
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
+    from fuzzynav.experiments import report
+
     if args.list or not args.ids:
-        for key, text in registry.available().items():
+        listing = registry.available()
+        for key, text in listing.items():
             print(f"{key:24s} {text}")
+        print(f"{len(listing)} figures and tables")
         return 0
     ids = list(registry.available()) if args.ids == ["all"] else args.ids
     functions = [(key, registry.experiment(key)) for key in ids]  # validate every id first
     args.out.mkdir(parents=True, exist_ok=True)
-    for key, function in functions:
-        start = time.perf_counter()
-        numbers = function(args.out, quick=args.quick, seed=args.seed)
-        (args.out / f"{key}.json").write_text(json.dumps(numbers, indent=2, default=float))
-        print(f"{key}: done in {time.perf_counter() - start:.1f} s -> {args.out}", flush=True)
+    with progress.quiet(args.quiet):
+        bar = progress.bar(total=len(functions), desc="reproduce", unit="figure")
+        for key, function in functions:
+            bar.set_postfix_str(key)
+            start = time.perf_counter()
+            numbers = function(report.experiment_dir(args.out, key), quick=args.quick, seed=args.seed)
+            record = report.record_run(args.out, key, numbers, time.perf_counter() - start, quick=args.quick,
+                                       seed=args.seed)
+            report.write_index(args.out)
+            verdict = "claim holds" if record["holds"] else "claim NOT met" + (" (quick run)" if args.quick else "")
+            progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {report.experiment_dir(args.out, key)}")
+            bar.update()
+        bar.close()
+    print(f"report: {args.out / 'index.html'}")
     return 0

@@ -1,4 +1,4 @@
-"""``fuzzynav run SCENARIO --controller NAME | --model FILE`` — run one episode (issue 3).
+"""``fuzzynav run SCENARIO --controller NAME [--fis ROLE=FILE] | --model FILE`` — run one episode.
 
 SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Prints a one-line
 summary, or with ``--json`` exactly one JSON object with the metrics of
@@ -8,27 +8,38 @@ or timed out), 2 for bad input (message on stderr).
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 
 from fuzzynav.cli import arguments
+from fuzzynav.catalog.controllers import available
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
-                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-2b / fuzzy-5b, "
-                "thesis for the -thesis variants)")
+                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-2b-gap / "
+                "fuzzy-5b-gap, thesis for the others)")
 
 
 def register(subparsers) -> None:
+    width = max(map(len, available()))
     parser = subparsers.add_parser(
         "run",
         help="run a controller on a scenario",
-        description="Run one episode of a controller on a scenario file or built-in scenario.",
+        description="Run one episode of a controller on a scenario file or built-in scenario "
+                    "(`fuzzynav scenarios` lists the built-ins).",
+        epilog="controllers (--controller NAME):\n" + "\n".join(f"  {name:{width}s}  {text}"
+                                                               for name, text in available().items()),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("scenario", metavar="SCENARIO", help="scenario YAML file or built-in name")
+    parser.add_argument("scenario", metavar="SCENARIO",
+                        help="scenario YAML file, built-in name, or generated world (e.g. mixed-0-009)")
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--controller", metavar="NAME", help="built-in controller name")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
+    parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
+                        help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
+                             ".fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` writes a start)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
     parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
@@ -36,24 +47,33 @@ def register(subparsers) -> None:
     parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
     parser.add_argument("--animate", metavar="GIF", type=arguments.gif_path, help="write an animated GIF of the episode")
+    parser.add_argument("--size", type=int, default=400, metavar="PX",
+                        help="width and height of the --animate GIF in pixels (default 400)")
+    parser.add_argument("--fps", type=float, default=10.0, help="frames per second of the --animate GIF (default 10)")
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
-    from fuzzynav.control.registry import make_controller
+    from fuzzynav.catalog.roles import make_with_systems, systems_from_options
     from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim import metrics, run_episode
-    from fuzzynav.world.scenario import load_scenario
+    from fuzzynav.world.scenario_file import open_scenario
 
     if args.max_time is not None and not (math.isfinite(args.max_time) and args.max_time > 0):
         raise InputError(f"must be a finite number > 0, got {args.max_time!r}", field="--max-time")
-    scenario = load_scenario(args.scenario)
+    if args.fis and args.model:
+        raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
+    if not 64 <= args.size <= 4000:
+        raise InputError(f"must be between 64 and 4000 pixels, got {args.size}", field="--size")
+    if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
+        raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
+    scenario = open_scenario(args.scenario)
     if args.model:
-        from fuzzynav.models import load_controller
+        from fuzzynav.catalog.tasks import load_controller
 
         controller = load_controller(args.model)
     else:
-        controller = make_controller(args.controller)
+        controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
                         sensors=None if args.sensors is None else named_ring(args.sensors))
     numbers = metrics(trace, scenario)
@@ -64,7 +84,7 @@ def run(args) -> int:
     if args.animate:
         from fuzzynav.viz.animation import animate_episode
 
-        animate_episode(trace, scenario, args.animate)
+        animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
     if args.json:
         print(json.dumps(numbers))
     else:

@@ -5,9 +5,12 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from fuzzynav import training
+from fuzzynav import progress, validation
+from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
+from fuzzynav.learn.tasks.common import TrainRequest
+from fuzzynav.storage import document_format
 
 
 def register(subparsers) -> None:
@@ -15,12 +18,12 @@ def register(subparsers) -> None:
         "train",
         help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
         description="Train a learning controller and write its model file (atomically). Tasks: "
-        + ", ".join(f"{name} ({text})" for name, text in training.available().items()),
+        + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()),
     )
     parser.add_argument("task", metavar="TASK", help="training task name")
     parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
-    parser.add_argument("--out", type=Path, help="model file to write (default TASK.json)")
+    parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
     parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
@@ -30,27 +33,29 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
-    train = training.trainer(args.task)
-    if args.episodes is not None and args.episodes <= 0:
-        raise InputError("must be a positive integer", field="--episodes")
-    if args.checkpoint_every is not None and args.checkpoint_every <= 0:
-        raise InputError("must be a positive integer", field="--checkpoint-every")
+    train = tasks.trainer(args.task)
+    for flag, value in (("--episodes", args.episodes), ("--checkpoint-every", args.checkpoint_every)):
+        if value is not None:
+            validation.integer(value, field=flag, lo=1, hi=validation.MAX_EPISODES)
     out = args.out or Path(f"{args.task}.json")
     if out.is_dir():
         raise InputError(f"{out} is a directory; give the model file to write", field="--out")
-    request = training.TrainRequest(
+    document_format(out)  # .json or .npz, refused before any training
+    request = TrainRequest(
         out=out,
+        task=args.task,
         episodes=args.episodes,
         seed=args.seed,
         resume=args.resume,
         checkpoint_every=args.checkpoint_every,
         curve=args.curve,
-        progress=not (args.quiet or args.json),
+        progress=progress.enabled() and not (args.quiet or args.json),
     )
     result = train(request)
     if args.json:
         print(json.dumps(result, default=str))
     else:
-        for key, value in result.items():
-            print(f"{key}: {value}")
+        from fuzzynav.cli.printing import result_lines
+
+        print("\n".join(result_lines(result)))
     return 0

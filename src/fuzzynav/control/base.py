@@ -4,7 +4,7 @@ A controller maps an :class:`Observation` to a :class:`Command`; it knows nothin
 episode loop. Fuzzy behaviours, supervisors, trackers, learned policies and baselines all
 implement :class:`Controller`, so the same scenario runs with any of them by name.
 
-Sign convention (SPEC §0) — solved in exactly one place, :func:`thesis_angle_error`:
+Sign convention (docs/thesis.md, "The sign of the angle error") — solved in exactly one place, :func:`thesis_angle_error`:
 geometry in this package uses the mathematical convention (angles CCW, a bearing > 0 means
 "to the left", steering α > 0 turns left). The thesis' rule tables (IV.1, IV.2, V.1) are
 consistent only if the angle error they read is θ_r − θ_d ("negative = target on the left").
@@ -23,7 +23,7 @@ from fuzzynav.world.geometry import wrap_angle
 
 
 def thesis_angle_error(bearing):
-    """Angle input of the thesis' tables from a bearing (SPEC §0, eq IV.8, eq V.4).
+    """Angle input of the thesis' tables from a bearing (eq IV.8, eq V.4).
 
     ``bearing`` is θ_d − θ_r wrapped to (−π, π] (positive when the target is on the left).
     The published tables map a *negative* error to a *positive* (left) steering, so they are fed
@@ -77,7 +77,12 @@ class Command:
 
 
 class Controller(ABC):
-    """Maps observations to commands. Subclasses set ``name`` and implement :meth:`act`."""
+    """Maps observations to commands. Subclasses set ``name`` and implement :meth:`act`.
+
+    The controllers of this package decide for many robots at once and derive from
+    :class:`BatchController`; a controller that can only decide for one robot at a time (a user's
+    own, say) implements :meth:`act` alone and the simulator calls it robot by robot.
+    """
 
     name: str = "controller"
 
@@ -87,3 +92,28 @@ class Controller(ABC):
     @abstractmethod
     def act(self, obs: Observation) -> Command:
         """Return the command for this observation."""
+
+
+class BatchController(Controller):
+    """A controller whose one decision is :meth:`act_batch` over N robots; :meth:`act` is its
+    one-robot case, inherited (DESIGN.md: one robot is a batch of one).
+
+    ``act_batch`` takes a batch observation — arrays with a leading robot axis, as the simulator's
+    ``BatchObservation`` — and returns ``(steering (N,), speed (N,), behaviours (N,))``. :meth:`act`
+    views one :class:`Observation` as a batch of one through :meth:`one_robot` and returns the
+    first command. The default view is the observation itself, for batch code that reads its
+    arrays with ``np.atleast_2d`` / ``reshape(-1, …)``; a subclass whose batch code reads other
+    fields overrides :meth:`one_robot` once for all its controllers.
+    """
+
+    @abstractmethod
+    def act_batch(self, obs):
+        """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""
+
+    def one_robot(self, obs: Observation):
+        """The batch of one that :meth:`act_batch` reads for the single observation ``obs``."""
+        return obs
+
+    def act(self, obs: Observation) -> Command:
+        steering, speed, labels = self.act_batch(self.one_robot(obs))
+        return Command(float(steering[0]), float(speed[0]), str(labels[0]))

@@ -1,4 +1,4 @@
-"""Classic geometric path trackers, the baselines of the chapter V comparison (issue 4).
+"""Classic geometric path trackers, the baselines of the chapter V comparison.
 
 Both run on the same tricycle (eq IV.1, θ̇ = V tan α / l, (x, y) the rear-axle reference point)
 with the same limits (|α| ≤ π/4, the simulator clips) and the same constant speed as the thesis'
@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.base import Command, Controller
+from fuzzynav.control.base import BatchController
 from fuzzynav.errors import InputError
 from fuzzynav.world.geometry import wrap_angle
 
@@ -49,7 +49,7 @@ def _window(path: np.ndarray, index: np.ndarray):
     return path[j], path[j + 1], j, valid
 
 
-class _PathBaseline(Controller):
+class _PathBaseline(BatchController):
     """Constant speed, batch and single-robot entry points; subclasses give ``_steer(obs)``."""
 
     label = "track"
@@ -62,10 +62,6 @@ class _PathBaseline(Controller):
         alpha = self._steer(np.atleast_2d(obs.pose), np.atleast_2d(obs.target), obs.path,
                             np.atleast_1d(obs.waypoint_index), np.atleast_1d(obs.speed))
         return alpha, np.full(len(alpha), self.speed), [self.label] * len(alpha)
-
-    def act(self, obs) -> Command:
-        alpha, speed, _ = self.act_batch(obs)
-        return Command(float(alpha[0]), float(speed[0]), self.label)
 
 
 class PurePursuit(_PathBaseline):

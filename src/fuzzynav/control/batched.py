@@ -11,6 +11,7 @@ runs it inside its own compiled step.
 
 from __future__ import annotations
 
+import math
 from abc import abstractmethod
 from dataclasses import dataclass
 
@@ -108,6 +109,27 @@ class CompiledNavigator(BatchedController):
         """Forget the modes, turns and hits (a new episode)."""
         self._state = None
 
+    def for_robot(self, robot) -> "CompiledNavigator":
+        """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
+        scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
+        body radius and, for ``fuzzy-5b``, a top speed no higher than the robot's. The default
+        robot leaves the parameters as built."""
+        from fuzzynav.kernels import navigators
+
+        if not hasattr(self, "_as_built"):
+            self._as_built = self.params.copy()
+        built, params = self._as_built, self.params
+        if self.kind in (navigators.CONSTANT, navigators.WALL_FOLLOWER) or built[navigators.WHEELBASE] <= 0:
+            return self
+        params[navigators.WHEELBASE] = robot.wheelbase
+        params[navigators.TURN_RADIUS] = built[navigators.TURN_RADIUS] * (robot.wheelbase / built[navigators.WHEELBASE])
+        params[navigators.BODY] = robot.radius
+        if self.kind == navigators.FIVE_BEHAVIOURS:
+            params[navigators.V_MAX] = min(built[navigators.V_MAX], robot.max_speed)
+        if self.gap_aware:  # the same margin around this body
+            params[navigators.GAP_CLEARANCE] = robot.radius + built[navigators.GAP_CLEARANCE] - built[navigators.BODY]
+        return self
+
     def compiled(self, n: int, sensor_angles):
         """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
         ``(kind, params, tables, state, memory)``; the state is this navigator's own (kept across
@@ -128,12 +150,30 @@ class CompiledNavigator(BatchedController):
             self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
         return self.kind, self.params, self.tables, self._state, self._memory
 
-    def _variant(self, thesis: bool, gap_margin: float, gap_look: float) -> dict:
-        """The published navigator (named ``<name>-thesis``: the seven rays, no gap finding) or the
-        gap-aware default (the lidar ring); returns the gap entries of the parameter vector."""
-        if thesis:
-            self.name = f"{type(self).name}-thesis"
-        else:
+    def act(self, obs: Observation) -> Command:
+        """One robot: the compiled decision of :meth:`act_batch`'s row, called directly (no batch
+        of one is built, the cost of a navigator wrapped per robot)."""
+        if obs.ranges is None or obs.target is None:
+            return super().act(obs)
+        from fuzzynav.kernels import navigators
+
+        angles = np.ascontiguousarray(obs.sensor_angles, dtype=float)
+        kind, params, tables, state, memory = self.compiled(1, angles)
+        d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
+        b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
+        x, y, theta = (float(value) for value in obs.pose)
+        tx, ty = (float(value) for value in obs.target)
+        v = 0.0 if obs.speed is None else float(obs.speed)
+        steering, speed, code = navigators.act_one(
+            kind, params, tables, state[0], memory[0], x, y, theta, v, tx, ty,
+            np.ascontiguousarray(obs.ranges, dtype=float), self._angles, float(obs.max_range), float(obs.dt), d_o, b_o)
+        return Command(float(steering), float(speed), str(self.labels[int(code)]))
+
+    def _variant(self, gap: bool, gap_margin: float, gap_look: float) -> dict:
+        """The published navigator (the seven rays, no gap finding) or, with ``gap``, the
+        gap-aware ``<name>-gap`` (the lidar ring); returns the gap entries of the parameter vector."""
+        if gap:
+            self.name = f"{type(self).name}-gap"
             self.gap_aware, self.sensors = True, named_ring("lidar")
         return {"gap_clearance": DEFAULT_PARAMS.radius + gap_margin, "gap_look": gap_look, "gap_field": GAP_FIELD}
 
@@ -193,7 +233,7 @@ class ConstantCommand(CompiledNavigator):
 def sensor_columns(angles, wanted_deg, source: str = "sensors") -> np.ndarray:
     """Indices of the readings pointing at ``wanted_deg`` (degrees, CCW from the heading).
 
-    The navigators address the thesis' sensors C1…C7 by direction (SPEC §3.3), so any ring that
+    The navigators address the thesis' sensors C1…C7 by direction (thesis §IV.7), so any ring that
     contains those directions works; a missing one raises :class:`InputError`.
     """
     if angles is None:

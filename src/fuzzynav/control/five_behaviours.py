@@ -50,8 +50,8 @@ run the same code; :meth:`reset` clears the state.
 Behaviour labels: ``GSB``, ``FOA+VRB``, ``ROA+VRB``, ``LOA+VRB``, ``GSB+VRB`` (goal seeking with
 obstacles sensed, speed capped by VRB).
 
-**Through the gaps** (this package's; ``fuzzy-5b-thesis`` is the navigator as published, on the
-seven single rays and without it). By default the navigator reads the ``lidar`` ring
+**Through the gaps** (this package's, opt-in as ``fuzzy-5b-gap``, ``gap=True``; without it the
+navigator is the one published, on the seven single rays). The navigator reads the ``lidar`` ring
 (:func:`fuzzynav.robot.sensors.named_ring`): d1…d7 are the nearest readings of each sensor's 30°
 sector, so the supervisor and the avoiders see 15 cm posts that the seven rays miss, and the whole
 scan is searched for the passage that fits the body plus ``gap_margin`` (0.05 m; where none does,
@@ -105,9 +105,9 @@ class FiveBehaviourNavigator(CompiledNavigator):
                  v_floor: float = 0.3, v_max: float = DEFAULT_PARAMS.max_speed,
                  params: supervisor.SupervisorParams | None = None, wheelbase: float = DEFAULT_PARAMS.wheelbase,
                  dwell: int = 10, lane: float = nav.D_M, room_margin: float = 0.5, memory: int = 10,
-                 stop_margin: float = 0.02, systems: Mapping | None = None, thesis: bool = False,
+                 stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
                  gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
-        gap = self._variant(thesis, gap_margin, gap_look)
+        gaps = self._variant(gap, gap_margin, gap_look)
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
@@ -117,14 +117,14 @@ class FiveBehaviourNavigator(CompiledNavigator):
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,
             kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear,
-            **gap))
+            **gaps))
 
 
 def make(**options) -> FiveBehaviourNavigator:
-    """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return FiveBehaviourNavigator(**options)
 
 
-def make_thesis(**options) -> FiveBehaviourNavigator:
-    """Factory of ``fuzzy-5b-thesis``: the seven rays of §IV.7, no gap finding."""
-    return FiveBehaviourNavigator(thesis=True, **options)
+def make_gap(**options) -> FiveBehaviourNavigator:
+    """Factory of ``fuzzy-5b-gap``: the lidar ring, gap finding on (opt-in: it regresses on mixed worlds)."""
+    return FiveBehaviourNavigator(gap=True, **options)

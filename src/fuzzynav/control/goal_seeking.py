@@ -1,10 +1,10 @@
 """Goal-seeking behaviour GSB (thesis §IV.5.1, Figs IV.4–IV.8, Table IV.1) and the ``goal-seeking``
 controller (Figs IV.12–IV.14).
 
-The table reads d_rg (eq IV.6) and θ_rg; the sign problem of SPEC §0 is solved by
+The table reads d_rg (eq IV.6) and θ_rg; the sign problem of the angle error (docs/thesis.md) is solved by
 :func:`~fuzzynav.control.base.thesis_angle_error`, which feeds it θ_r − θ_d.
 
-**Orbiting** (SPEC §3.1). Table IV.1 alone can circle a goal it comes close to: near the goal
+**Orbiting** (thesis §IV.5.1). Table IV.1 alone can circle a goal it comes close to: near the goal
 its steering is small (PM, PP in the Z column: turning radii of 1.5 m and more) while the speed
 F = 1 m/s of the P column never falls enough, so the robot passes beside the goal and circles it.
 A goal at distance d and bearing β is hit by the forward arc of steering
@@ -75,5 +75,5 @@ class GoalSeekingController(CompiledNavigator):
 
 
 def make(**options) -> GoalSeekingController:
-    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return GoalSeekingController(**options)

@@ -15,8 +15,8 @@ table) plus a ``kind`` that says how the controller reads its inputs:
   :class:`LearnedWallFollower`.
 
 The tabular Q-learning goal seeker (§VI.2, Figs VI.1–VI.4) is :class:`TabularGoalSeeker`; its
-model (kind ``q-goal``) holds a Q table and is loaded by :mod:`fuzzynav.experiments.train_rl`,
-which owns the (d_rg, θ_rg) discretiser.
+model (kind ``q-goal``) holds a Q table. Each model kind is written and read by its training task
+(one module per task family under ``fuzzynav/learn/tasks``), which owns its document.
 
 The input features — :func:`goal_inputs`, :func:`side_distances`, :func:`openness` — are defined here once and
 used by the training environments too (:mod:`fuzzynav.learn.envs`), so a controller sees exactly
@@ -25,13 +25,10 @@ what its learner saw.
 
 from __future__ import annotations
 
-from abc import abstractmethod
-
 import numpy as np
 
-from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.control.base import BatchController
 from fuzzynav.errors import InputError
-from fuzzynav.world.geometry import wrap_angle
 
 # Sensor groups of the seven-sensor ring C1…C7 at 0°, −30°, +30°, −60°, +60°, −90°, +90°
 # (fuzzynav.robot.sensors), as the modules of §IV.7: front = C1, C2, C3 (FOA); right = C2, C4,
@@ -44,13 +41,19 @@ N_SENSORS = 7
 def goal_inputs(pose, target) -> np.ndarray:
     """(d_rg, θ_r − θ_d) of robots ``pose`` (B, 3) towards ``target`` (B, 2) → (B, 2).
 
-    d_rg is eq IV.6; the angle is the thesis' table input (SPEC §0, eq IV.8 with the sign that
+    d_rg is eq IV.6; the angle is the thesis' table input (eq IV.8 with the sign of :func:`~fuzzynav.control.base.thesis_angle_error` that
     makes its tables steer towards the goal): negative when the goal is on the left.
     """
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
     pose = np.asarray(pose, dtype=float).reshape(-1, 3)
     rel = np.asarray(target, dtype=float).reshape(-1, 2) - pose[:, :2]
-    bearing = wrap_angle(np.arctan2(rel[:, 1], rel[:, 0]) - pose[:, 2])
-    return np.column_stack([np.hypot(rel[:, 0], rel[:, 1]), thesis_angle_error(bearing)])
+    out = np.empty((len(rel), 2))
+    # NumPy's vectorised arctan2 (it may differ from libm's in the last bit; the models were trained with it)
+    direction = np.arctan2(rel[:, 1], rel[:, 0])
+    heading = pose[:, 2] if len(pose) == len(rel) else np.broadcast_to(pose[:, 2], direction.shape)
+    learned.goal_inputs(rel, direction, heading, out)
+    return out
 
 
 def side_distances(ranges) -> np.ndarray:
@@ -59,21 +62,41 @@ def side_distances(ranges) -> np.ndarray:
     The thesis' FQL avoider and wall follower read "the distances in three directions" (Fig VI.17);
     with the ring of §IV.7 each direction is the nearest reading of its module's three sensors.
     """
-    ranges = np.asarray(ranges, dtype=float)
-    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
-        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
-                         f"{ranges.shape}", field="ranges")
-    return np.column_stack([ranges[:, list(group)].min(axis=1) for group in (FRONT, RIGHT, LEFT)])
+    return _module_inputs(ranges, False)
 
 
 def single_rays(ranges) -> np.ndarray:
     """Front, right and left distances (B, 3) as the single rays at 0°, −90°, +90° (B, 7) → (B, 3):
     the sensing of the hand-made wall follower (:mod:`fuzzynav.control.wall_following`)."""
-    ranges = np.asarray(ranges, dtype=float)
+    return _readings(ranges)[:, list(RAYS)]
+
+
+def _readings(ranges) -> np.ndarray:
+    """``ranges`` as a contiguous float (B, 7) array, else InputError."""
+    ranges = np.ascontiguousarray(ranges, dtype=float)
     if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
         raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
                          f"{ranges.shape}", field="ranges")
-    return ranges[:, list(RAYS)]
+    return ranges
+
+
+GROUPS = np.array([FRONT, RIGHT, LEFT])
+
+
+def as_column(values, n: int) -> np.ndarray:
+    """``values`` (a scalar or (n,)) as an (n,) float array for the kernels (no copy when it is one)."""
+    values = np.asarray(values, dtype=float)
+    return values if values.shape == (n,) else np.broadcast_to(values, (n,))
+
+
+def _module_inputs(ranges, open_side: bool) -> np.ndarray:
+    """(B, 3) front, right, left distances [and (B, 4) openness] by :func:`fuzzynav.kernels.learned.module_inputs`."""
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
+    ranges = _readings(ranges)
+    out = np.empty((len(ranges), 4 if open_side else 3))
+    learned.module_inputs(ranges, GROUPS, open_side, out)
+    return out
 
 
 def openness(ranges) -> np.ndarray:
@@ -84,11 +107,7 @@ def openness(ranges) -> np.ndarray:
     with the nearest reading of each module, "front, right and left near" (a robot facing a wall
     or a corner) cannot tell which way to turn; the means of the modules can.
     """
-    ranges = np.asarray(ranges, dtype=float)
-    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
-        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
-                         f"{ranges.shape}", field="ranges")
-    return ranges[:, list(LEFT)].mean(axis=1) - ranges[:, list(RIGHT)].mean(axis=1)
+    return _module_inputs(ranges, True)[:, 3]
 
 
 AVOID_INPUTS = ["front", "right", "left"]  # the thesis' avoider (Fig VI.17)
@@ -98,8 +117,7 @@ AVOID_OPEN_INPUTS = AVOID_INPUTS + ["open"]  # plus which side is more open (:fu
 def avoidance_inputs(ranges, open_side: bool) -> np.ndarray:
     """The learned avoider's inputs (B, 3) or, with ``open_side``, (B, 4): front, right and left
     distances (:func:`side_distances`) [and :func:`openness`]."""
-    sides = side_distances(ranges)
-    return np.column_stack([sides, openness(ranges)]) if open_side else sides
+    return _module_inputs(ranges, open_side)
 
 
 SENSING = {"rays": single_rays, "modules": side_distances}  # how a model reads d_f, d_d, d_g
@@ -138,21 +156,6 @@ def _batch(obs):
     return pose, target, ranges
 
 
-class _Learned(Controller):
-    """Common part: a batch policy ``_commands(obs) -> (steering, speed, labels)`` and its scalar form."""
-
-    def act_batch(self, obs):
-        return self._commands(obs)
-
-    def act(self, obs) -> Command:
-        steering, speed, labels = self._commands(obs)
-        return Command(float(steering[0]), float(speed[0]), labels[0])
-
-    @abstractmethod
-    def _commands(self, obs):
-        """``(steering (B,), speed (B,), labels)`` for a batch observation."""
-
-
 def _outputs(system, names: tuple[str, ...]) -> list[int]:
     found = [system.output_names.index(n) if n in system.output_names else -1 for n in names]
     if found[0] < 0:
@@ -161,7 +164,7 @@ def _outputs(system, names: tuple[str, ...]) -> list[int]:
     return found
 
 
-class FuzzyGoalSeeker(_Learned):
+class FuzzyGoalSeeker(BatchController):
     """Learned TS0 goal seeker (§VI.5.1): system(drg, theta) → α [, V_r]; Figs VI.10, VI.14, VI.15."""
 
     def __init__(self, system, constant_speed: float = 1.0, name: str = "fql-goal"):
@@ -173,7 +176,7 @@ class FuzzyGoalSeeker(_Learned):
         self.constant_speed = float(constant_speed)
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         pose, target, _ = _batch(obs)
         if target is None:
             raise InputError("goal seeking needs a goal (a goal task)", field="target")
@@ -182,7 +185,7 @@ class FuzzyGoalSeeker(_Learned):
         return out[:, self.alpha_index], speed, ["goal seeking"] * len(out)
 
 
-class TabularGoalSeeker(_Learned):
+class TabularGoalSeeker(BatchController):
     """Greedy policy of a Q table over (d_rg, θ_rg) states (§VI.2, Figs VI.2–VI.3).
 
     ``state_of(d_rg, angle) -> state indices`` is the discretiser the table was learned on,
@@ -199,7 +202,7 @@ class TabularGoalSeeker(_Learned):
         self.speed = check_speed(speed, "speed")
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         pose, target, _ = _batch(obs)
         x = goal_inputs(pose, target)
         actions = self.greedy[self.state_of(x[:, 0], x[:, 1])]
@@ -216,29 +219,23 @@ def avoidance_supervisor(avoidance):
     return SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
 
 
-def supervise(blended, goal_command, ranges, goal_distance, goal_bearing, params):
-    """(α, V_r, goal seeking?) of the learned navigator (B,) from the blend of the avoider and the
-    goal seeker ``blended`` (B, 2), the goal seeker's ``goal_command`` (B, 2), the seven readings
-    (B, 7) and the goal's distance and bearing (B,).
+def supervisor_array(params) -> np.ndarray:
+    """The supervisor's thresholds as the kernels read them: detection, front, keep, clear, vision."""
+    return np.array([params.detection, params.front, params.keep, params.clear, params.vision])
 
-    As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
-    or the goal direction clear — at a speed no higher than the avoider's while something is
-    sensed (the VRB principle, Table IV.6); the blend otherwise.
-    """
-    from fuzzynav.control import supervisor
 
-    ranges = np.asarray(ranges, dtype=float)
-    goal = supervisor.select(ranges, goal_distance, goal_bearing, params) == supervisor.GSB
-    sensed = ranges.min(axis=1) < params.detection
-    goal_speed = np.where(sensed, np.minimum(goal_command[:, 1], blended[:, 1]), goal_command[:, 1])
-    return (np.where(goal, goal_command[:, 0], blended[:, 0]), np.where(goal, goal_speed, blended[:, 1]), goal)
+def with_goal_seeking(alpha, speed, free, goal_command):
+    """(α, V_r) (B,) of the learned navigator: the avoider's shares ``alpha``, ``speed`` plus
+    w_free = ``free`` times the goal seeker's command ``goal_command`` (B, 2) — the blend of
+    :class:`LearnedAvoidanceNavigator`, also what the avoider's training drives."""
+    return alpha + free * goal_command[:, 0], speed + free * goal_command[:, 1]
 
 
 GUARD_MARGIN = 0.5  # m: room the guard keeps for the full-lock half turn (as fuzzy-5b's room_margin)
 GUARD_SPEED = 0.3  # m/s: speed of the guard's turn (fuzzy-5b's v_floor)
 
 
-class LearnedAvoidanceNavigator(_Learned):
+class LearnedAvoidanceNavigator(BatchController):
     """Goal seeking plus the learned obstacle avoider: the navigator of Figs VI.20 and VI.24.
 
     ``avoidance`` is the learned TS0 system over (``front``, ``right``, ``left``) distances —
@@ -252,7 +249,7 @@ class LearnedAvoidanceNavigator(_Learned):
 
     When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
     obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
-    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:func:`supervise`) hands the
+    the fuzzy partition of Fig VI.17. The chapter IV supervisor (:meth:`drive`) hands the
     robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
     it the blend keeps pulling away from obstacles beside a clear path and the robot circles
     goals placed near obstacles.
@@ -277,10 +274,11 @@ class LearnedAvoidanceNavigator(_Learned):
 
             goal = GuardedGoalSeeking()
         self.avoidance = avoidance
-        self.goal = goal  # (d_rg, bearing) -> (α, V_r, ...): the guarded GSB of chapter IV
+        self.goal = goal  # a GuardedGoalSeeking (its rule table and wheelbase run compiled in drive)
         self.alpha_index, self.speed_index = _outputs(avoidance, ("alpha", "v"))
         self.constant_speed = float(constant_speed)
         self.params = avoidance_supervisor(avoidance)
+        self.supervisor = supervisor_array(self.params)
         self.name = name
         self.guard = None
         if turn_guard:
@@ -303,20 +301,41 @@ class LearnedAvoidanceNavigator(_Learned):
 
     def blend(self, distances, goal_command):
         """(α, V_r, w_free) from the avoider's inputs (B, 3 or 4) and the goal seeker's (α, V_r) (B, 2)."""
+        alpha, speed, free = self.avoider_shares(distances)
+        return (*with_goal_seeking(alpha, speed, free, goal_command), free)
+
+    def avoider_shares(self, distances):
+        """(Σ_i w_i α_i, Σ_i w_i V_i, w_free) (B,) of the learned rules for the avoider's inputs."""
         out = self.avoidance.evaluate(distances)
         free = self.free_share(distances)
         speed = out[:, self.speed_index] if self.speed_index >= 0 else (1.0 - free) * self.constant_speed
-        return out[:, self.alpha_index] + free * goal_command[:, 0], speed + free * goal_command[:, 1], free
+        return out[:, self.alpha_index], speed, free
 
-    def _commands(self, obs):
+    def drive(self, alpha, speed, free, ranges, goal):
+        """(α, V_r, goal seeking?) (B,): the avoider's shares ``alpha``, ``speed`` blended by ``free``
+        with the goal seeker's command for ``goal`` (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`;
+        :func:`with_goal_seeking`), in one call of :func:`fuzzynav.kernels.learned.drive`.
+
+        As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
+        or the goal direction clear — at a speed no higher than the avoider's while something is
+        sensed (the VRB principle, Table IV.6); the blend otherwise. The avoider's training drives
+        the robot through this method with the learner's shares in place of the rules'."""
+        import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
+        ranges = _readings(ranges)
+        n = len(ranges)
+        out = np.empty((n, 3))
+        learned.drive(as_column(alpha, n), as_column(speed, n), as_column(free, n), ranges,
+                      np.ascontiguousarray(goal, dtype=float), self.goal.tables, self.goal.wheelbase, self.supervisor,
+                      out)
+        return out[:, 0], out[:, 1], out[:, 2] != 0.0
+
+    def act_batch(self, obs):
         pose, target, ranges = _batch(obs)
         if target is None or ranges is None:
             raise InputError("the navigator needs a goal and the range readings", field="observation")
         x = goal_inputs(pose, target)
-        goal_command = np.column_stack(self.goal(x[:, 0], -x[:, 1])[:2])
-        alpha, speed, _ = self.blend(avoidance_inputs(ranges, self.open_side), goal_command)
-        steering, speed, goal = supervise(np.column_stack([alpha, speed]), goal_command, ranges, x[:, 0], -x[:, 1],
-                                          self.params)
+        steering, speed, goal = self.drive(*self.avoider_shares(avoidance_inputs(ranges, self.open_side)), ranges, x)
         labels = np.where(goal, "goal seeking", "obstacle avoidance")
         if self.guard is not None:
             steering, speed, labels = self._guarded(obs, steering, speed, labels, -x[:, 1])
@@ -336,7 +355,7 @@ class LearnedAvoidanceNavigator(_Learned):
                 np.where(turn, "turn guard", labels))
 
 
-class LearnedWallFollower(_Learned):
+class LearnedWallFollower(BatchController):
     """The FQL-optimised wall follower (§VI.5.3.2): system(dd, df, dg) → α, V_r (Figs VI.29–VI.30).
 
     The rules of the hand-made follower (:mod:`fuzzynav.control.wall_following`, Table VI.2) with
@@ -359,7 +378,7 @@ class LearnedWallFollower(_Learned):
         self.sensing = sensing
         self.name = name
 
-    def _commands(self, obs):
+    def act_batch(self, obs):
         _, _, ranges = _batch(obs)
         if ranges is None:
             raise InputError("wall following needs the range readings", field="ranges")
@@ -376,26 +395,3 @@ def model_name(document: dict) -> str:
     if not isinstance(task, str) or not task:
         raise InputError(f"must be the name of the training task, got {task!r}", field="training.task")
     return task
-
-
-def load_fuzzy_model(document: dict, path) -> Controller:
-    """Loader of the ``fql-goal``, ``fql-avoid`` and ``fql-wall`` model kinds (fuzzynav.models)."""
-    from fuzzynav.fuzzy.io.document import from_document
-
-    kind = document.get("kind")
-    system = from_document(document, source=str(path))
-    try:
-        speed = check_speed(document.get("constant_speed", 1.0), "constant_speed")
-        name = model_name(document)
-        if kind == "fql-goal":
-            return FuzzyGoalSeeker(system, speed, name=name)
-        if kind == "fql-avoid":
-            guard = document.get("turn_guard", False)
-            if not isinstance(guard, bool):
-                raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
-            return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
-        if kind == "fql-wall":
-            return LearnedWallFollower(system, document.get("sensing", "modules"), name=name)
-    except InputError as error:
-        raise InputError(error.problem, source=str(path), field=error.field) from None
-    raise InputError(f"not a learned fuzzy controller (kind {kind!r})", source=str(path), field="kind")

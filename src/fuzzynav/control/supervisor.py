@@ -4,7 +4,7 @@ The thesis states it in words: with no obstacle sensed, goal seeking alone; othe
 the behaviours is activated according to the perceived situation" (FOA, ROA or LOA), with the
 velocity reducing behaviour VRB in parallel; and (Fig IV.23) the robot runs along a wall "until
 the orientation error enters a predefined vision interval", then heads for the goal. Made
-precise here, per robot, from the seven readings d1…d7 (SPEC §3.3: d1 ahead; d2, d4, d6 at
+precise here, per robot, from the seven readings d1…d7 (thesis §IV.7: d1 ahead; d2, d4, d6 at
 −30°, −60°, −90°; d3, d5, d7 at +30°, +60°, +90°):
 
 1. **GSB** when no reading is below ``detection`` (an obstacle-free neighbourhood), or when the
@@ -40,7 +40,7 @@ import numpy as np
 from fuzzynav.fuzzy.systems_navigation import D_M, D_S
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3  # fuzzynav.kernels.guard.GSB, FOA, ROA, LOA
-THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (SPEC §3.3)
+THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (thesis §IV.7)
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,7 @@ The robot aims at a point — the current waypoint of a path (the simulator swit
 inside the tolerance zone, §V.2) or a moving target (§V.5) — at constant speed; the only command
 is the steering α. With e_x = x_p − x_r, e_y = y_p − y_r, θ_d = atan2(e_y, e_x) (eqs V.1–V.3),
 the angular error fed to the thesis' controllers is θ_er = θ_r − θ_d (eq V.4 with the sign of
-SPEC §0, :func:`~fuzzynav.control.base.thesis_angle_error`).
+:func:`~fuzzynav.control.base.thesis_angle_error`).
 
 - :class:`FuzzyTracker` (``fuzzy-tracker``): Table V.1 on (θ_er, dθ_er), dθ_er the change of
   θ_er over one step (§V.3.1, Figs V.3–V.7).
@@ -35,20 +35,20 @@ from abc import abstractmethod
 
 import numpy as np
 
-from fuzzynav.control.base import Command, Controller, thesis_angle_error
+from fuzzynav.control.base import BatchController, thesis_angle_error
 from fuzzynav.control.reference import STEP, WINDOW, advance, smoothed_path
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems import tracking
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.geometry import wrap_angle
 
-DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the issue's comparison
+DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the chapter V comparison
 DEFAULT_CORNER_RADIUS = DEFAULT_PARAMS.wheelbase / np.tan(DEFAULT_PARAMS.max_steering)  # R_min = 0.5 m
 DEFAULT_LOOKAHEAD = 0.35  # m, see the module docstring
 FUZZY_LOOKAHEAD = 1.5  # m, the fuzzy tracker's (Table V.1 steers gently: π/8 at θ_er = π/6)
 
 
-class AngleErrorTracker(Controller):
+class AngleErrorTracker(BatchController):
     """Base of the chapter V trackers: θ_er (and its change) → α, constant ``speed``.
 
     Subclasses implement :meth:`steering` on arrays. Works on batches (``act_batch``) and on one
@@ -109,10 +109,6 @@ class AngleErrorTracker(Controller):
         self._previous = theta_er
         alpha = self.steering(theta_er, dtheta_er)
         return alpha, np.full(len(alpha), self.speed), [self.label] * len(alpha)
-
-    def act(self, obs) -> Command:
-        alpha, speed, _ = self.act_batch(obs)
-        return Command(float(alpha[0]), float(speed[0]), self.label)
 
 
 class FuzzyTracker(AngleErrorTracker):

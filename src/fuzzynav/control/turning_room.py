@@ -24,7 +24,7 @@ sent the robot of Fig IV.22a round an extra loop, out of its time.) This module 
   of radius R through the robot, centre at (0, ±R) in the robot frame) and those points, and the
   free length of the straight lane ahead (points within ``body`` of the heading line).
 
-Robot frame: x ahead, y to the left (α > 0 turns left, SPEC §0). All of it is compiled
+Robot frame: x ahead, y to the left (α > 0 turns left, docs/thesis.md). All of it is compiled
 (:mod:`fuzzynav.kernels.guard`) and runs inside the navigators' ``act``; :class:`TurnGuard` offers
 it to other controllers.
 """

@@ -34,5 +34,5 @@ class WallFollower(CompiledNavigator):
 
 
 def make(**options) -> WallFollower:
-    """Factory of the ``wall-follow`` entry of :data:`fuzzynav.control.registry.CONTROLLERS`."""
+    """Factory of the ``wall-follow`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return WallFollower(**options)

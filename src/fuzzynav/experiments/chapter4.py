@@ -3,14 +3,17 @@
 - ``fig-IV-12``: free goal seeking (Table IV.1) from five starts to five goals per panel (a, b),
   positions read off the figure (the first pair of each panel is the built-in scenario);
 - ``fig-IV-13``: free navigation with its commands α(t), V_r(t) (Figs IV.13–IV.14);
-- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b-thesis``, as published) past circular obstacles, with
+- ``fig-IV-15``: goal seeking + obstacle avoidance (``fuzzy-2b-thesis``) past circular obstacles, with
   the behaviour changes marked A, B, … (panels a, b);
 - ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b-thesis``) in two unknown worlds (a, b);
 - ``fig-IV-23``: ``fuzzy-5b-thesis`` reaching a goal inside a U-shaped wall;
 - ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend (Fig VI.27) and
   into the sharp corner where it collides (Fig VI.28);
-- ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100 each, 10
-  with ``quick``), the numbers of ``fuzzynav evaluate``.
+- ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100
+  each, 10 with ``quick``), the numbers of ``fuzzynav evaluate``.
+
+The navigators are the ``-thesis`` variants, as published (the default ``fuzzy-2b`` and
+``fuzzy-5b`` add recovery and loop escape, :mod:`fuzzynav.control.robust`).
 
 Every function has the registry signature ``(out_dir, quick, seed) -> dict``, writes PNGs and
 returns the measured outcomes.
@@ -23,10 +26,10 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory
+from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 # Fig IV.12: (start x, y, θ), (goal x, y) per panel; the first pair is the built-in scenario.
@@ -39,10 +42,7 @@ FIG_IV_12 = {
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def _outcome(trace, scenario) -> dict:
@@ -103,17 +103,17 @@ def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def fig_iv_15(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.15 (a, b): ``fuzzy-2b`` past circular obstacles, behaviour changes marked A, B, …"""
+    """Fig IV.15 (a, b): ``fuzzy-2b-thesis`` past circular obstacles, behaviour changes marked A, B, …"""
     return _panels(["fig-IV-15a", "fig-IV-15b"], "fuzzy-2b-thesis", out_dir, "fig-IV-15.png")
 
 
 def fig_iv_22(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.22 (a, b): ``fuzzy-5b`` in two unknown cluttered worlds."""
+    """Fig IV.22 (a, b): ``fuzzy-5b-thesis`` in two unknown cluttered worlds."""
     return _panels(["fig-IV-22a", "fig-IV-22b"], "fuzzy-5b-thesis", out_dir, "fig-IV-22.png", markers=False)
 
 
 def fig_iv_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig IV.23: ``fuzzy-5b`` reaches a goal inside a U-shaped wall by running along it."""
+    """Fig IV.23: ``fuzzy-5b-thesis`` reaches a goal inside a U-shaped wall by running along it."""
     return _panels(["fig-IV-23"], "fuzzy-5b-thesis", out_dir, "fig-IV-23.png", markers=False)
 
 
@@ -123,7 +123,7 @@ def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Success / collision / timeout rates of ``fuzzy-2b`` (circles) and ``fuzzy-5b`` (mixed)."""
+    """Success / collision / timeout rates of ``fuzzy-2b-thesis`` (circles) and ``fuzzy-5b-thesis`` (mixed)."""
     n = 10 if quick else 100
     result = {}
     figure = Figure(figsize=(7, 4), layout="constrained")
@@ -132,10 +132,12 @@ def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
         numbers = evaluate(controller, worlds, n, seed)
         numbers.pop("episodes")
         result[f"{controller}/{worlds}"] = numbers
-        rates = [numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
-        ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
-    ax.set_xticks(np.arange(3) + 0.2, ["success", "collision", "timeout"])
-    ax.set_ylim(0, 1)
-    ax.legend()
+        rates = [100 * numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
+        bars = ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
+        ax.bar_label(bars, fmt="%.0f %%", fontsize=8)
+    ax.set_xticks(np.arange(3) + 0.2, ["reached the goal", "collided", "timed out"])
+    ax.set_ylabel("share of the worlds (%)")
+    ax.set_ylim(0, 110)
+    ax.legend(loc="upper right")
     result["figure"] = _save(figure, out_dir, "eval-IV.png")
     return result

@@ -32,53 +32,22 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.control.registry import make_controller
-from fuzzynav.experiments import train_trackers as tt
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
-from fuzzynav.viz.trajectories import draw_world
+from fuzzynav.viz import palette
+from fuzzynav.viz.training import plot_training
+from fuzzynav.viz.trajectories import draw_world, save_figure
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
-COLOURS = {"fuzzy-tracker": "tab:blue", "neural-tracker": "tab:red", "anfis-tracker": "tab:green"}
+COLOURS = {name: colour for name, (colour, _) in palette.TRACKERS.items()}
 PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
 PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
-    path = Path(out_dir) / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(path, dpi=110)
-    return str(path)
-
-
-def plot_training(kind: str, model, data: tt.TrackerData, path) -> Figure:
-    """Figs V.15 / V.23: (a) desired and model output on the validation pairs, (b) their error,
-    (c) the training curve (MLP loss per iteration, or ANFIS RMSE per epoch)."""
-    figure = Figure(figsize=(13, 3.8), layout="constrained")
-    a, b, c = figure.subplots(1, 3)
-    order = np.argsort(data.x_val[:, 0])
-    predicted = model.predict(data.x_val)
-    k = np.arange(len(order))
-    a.plot(k, data.y_val[order], "o", markersize=3, label="desired output")
-    a.plot(k, predicted[order], "-", label="real output")
-    a.set(xlabel="validation sample (sorted by θ_er)", ylabel="α (rad)", title="(a) outputs")
-    a.legend()
-    b.plot(k, (data.y_val - predicted)[order])
-    b.set(xlabel="validation sample", ylabel="error (rad)", title="(b) learning error")
-    if kind == "anfis-tracker":
-        c.semilogy(model.history_["train_rmse"], label="training RMSE")
-        if model.history_["validation_rmse"] is not None:
-            c.semilogy(model.history_["validation_rmse"], label="validation RMSE")
-        c.set(xlabel="epoch", ylabel="RMSE (rad)", title="(c) hybrid learning (Table V.2)")
-        c.legend()
-    else:
-        c.semilogy(model.loss_curve if len(model.loss_curve) > 1 else model.loss_curve * 2)
-        c.set(xlabel="iteration", ylabel="loss", title="(c) back-propagation")
-    figure.suptitle(f"{kind}: generalized learning, validation on {len(order)} unseen pairs")
-    if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
-    return figure
+    return save_figure(figure, Path(out_dir) / name)
 
 
 def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -89,6 +58,9 @@ def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
     system = tracking()
     _, _, alpha = surface(system)
     figure = plot_surface(system)
+    ax = figure.axes[0]
+    ax.set(xlabel="θ_er (rad)", ylabel="dθ_er (rad per step of 0.1 s)", zlabel="steering α (rad)",
+           title="Fuzzy tracker, Table V.1: control surface")
     return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
             "alpha_max_rad": float(alpha.max())}
 

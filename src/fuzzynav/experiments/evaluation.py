@@ -1,54 +1,89 @@
-"""A controller over many generated worlds: success, collision and timeout rates (issue 3).
+"""Evaluations of a controller in the simulator: success, collision and timeout rates.
 
 :func:`evaluate` runs one episode per world of :func:`fuzzynav.world.generate.generate_worlds`
 and summarises them: ``success_rate``, ``collision_rate``, ``timeout_rate`` (fractions of the
 ``n`` worlds), ``mean_time_s`` and ``mean_path_length_m`` over the successful episodes, plus the
 per-world outcomes. ``fuzzynav evaluate`` prints it. The controller is a registered name or a
-trained model file (``model``, built by :func:`fuzzynav.models.load_controller`).
+trained model file (``model``, built by :func:`fuzzynav.catalog.tasks.load_controller`). With
+``save_failures`` (a folder), each world not reached is written there as a scenario file with
+the plot of its episode (:func:`save_failure`), so ``fuzzynav run FILE`` reruns it.
+
+The learned controllers of chapter VI are evaluated as the thesis does: :func:`evaluate_goal`
+(random starts and goals in the empty workspace, Figs VI.3, VI.10, VI.14), :func:`evaluate_avoid`
+(random obstacle worlds, §VI.5.2) and :func:`evaluate_wall` (the corners of Fig VI.28 and random
+wall courses, §VI.5.3).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.registry import make_controller
+from fuzzynav import progress as progress_bars
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
+from fuzzynav.learn.envs import RandomGoal, RandomObstacles, WallCourse
+from fuzzynav.learn.tasks.common import GOAL_TOLERANCE
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.generate import generate_worlds
+from fuzzynav.world.scenario import Goal, Scenario, load_scenario
+
+
+def save_failure(folder: Path, scenario, trace, controllers: tuple[str, ...] = ()) -> Path:
+    """Write a failed world as ``folder/<world>.yaml`` (naming the built-in ``controllers``, for
+    ``fuzzynav demo --scenario FILE``) and the plot of the episode as ``folder/<world>.png``;
+    returns the scenario file."""
+    from fuzzynav.viz.trajectories import plot_episode
+    from fuzzynav.world.scenario_file import save_scenario
+
+    path = save_scenario(scenario, Path(folder) / f"{scenario.name}.yaml", controllers=controllers)
+    plot_episode(trace, scenario, path.with_suffix(".png"))
+    return path
 
 
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
-             sensors: str | None = None) -> dict:
-    """Run the registered ``controller`` — or the one stored in the ``model`` file — on ``n``
-    seeded worlds of family ``worlds``, with the sensor ring named ``sensors`` (default: the
-    controller's, :func:`fuzzynav.sim.simulator.default_ring`).
+             systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None) -> dict:
+    """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given) —
+    or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
+    sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
+    ``progress(i, outcome)`` is called after each world.
 
     A model is loaded once; every episode starts from the simulator's ``reset(rng)`` of it, as a
-    registered controller is built afresh per world.
+    registered controller is built afresh per world. A progress bar shows on a terminal
+    (:mod:`fuzzynav.progress`).
     """
     if (controller is None) == (model is None):
         raise InputError("give exactly one of a controller name and a model file", field="controller")
     if model is not None:
-        from fuzzynav.models import load_controller
+        from fuzzynav.catalog.tasks import load_controller
 
         loaded = load_controller(model)
         build, controller = (lambda: loaded), loaded.name
     else:
-        build = lambda: make_controller(controller)
+        build = lambda: make_controller(controller, systems=systems) if systems else make_controller(controller)
     ring = None if sensors is None else named_ring(sensors)
     scenarios = generate_worlds(worlds, n, seed)
     runs = []
+    bar = progress_bars.bar(total=len(scenarios), desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
     for i, scenario in enumerate(scenarios):
-        numbers = metrics(run_episode(scenario, build(), seed=seed, sensors=ring), scenario)
+        trace = run_episode(scenario, build(), seed=seed, sensors=ring)
+        numbers = metrics(trace, scenario)
         runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
                                                     "min_clearance_m")})
+        if save_failures is not None and numbers["outcome"] != "reached":
+            named = () if model is not None else (controller,)
+            runs[-1]["saved"] = str(save_failure(save_failures, scenario, trace, named))
+        bar.update()
+        bar.set_postfix(reached=sum(r["outcome"] == "reached" for r in runs))
         if progress is not None:
             progress(i, runs[-1])
+    bar.close()
     outcomes = np.array([r["outcome"] for r in runs])
     reached = outcomes == "reached"
     rate = lambda name: float(np.mean(outcomes == name))
@@ -66,3 +101,57 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
                                if reached.any() else None),
         "episodes": runs,
     }
+
+
+def scenario_of(world, start, goal, name: str, max_time: float):
+    """A goal scenario of one start in ``world`` (as drawn by the training layouts)."""
+    return Scenario(name=name, world=world, start=np.asarray(start, dtype=float),
+                    goal=Goal(np.asarray(goal, dtype=float), GOAL_TOLERANCE), max_time=max_time)
+
+
+def evaluate_goal(controller, n: int = 100, seed: int = 12345, goals: int = 10, max_time: float = 60.0) -> dict:
+    """Success of a goal seeker in the simulator from ``n`` random starts (≥ 3 m from their goal)
+    towards ``goals`` random goals in the empty 20 m × 20 m workspace (Figs VI.3, VI.10, VI.14)."""
+    rng = np.random.default_rng(seed)
+    layout = RandomGoal()
+    outcomes = []
+    for g in range(goals):
+        world, candidates, targets = layout.sample(rng, 8 * math.ceil(n / goals))
+        far = np.hypot(*(candidates[:, :2] - targets[0]).T) >= layout.min_distance
+        starts = candidates[far][: n // goals + (g < n % goals)]
+        scenario = scenario_of(world, starts[0], targets[0], f"random-goal-{g}", max_time)
+        outcomes += BatchSimulator(scenario, controller, starts=starts, record=False).run().outcomes()
+    outcomes = outcomes[:n]
+    return {"runs": len(outcomes), "success": outcomes.count("reached") / len(outcomes),
+            "collisions": outcomes.count("collision"), "timeouts": outcomes.count("timeout")}
+
+
+def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float = 60.0) -> dict:
+    """Success and collisions of a navigator in ``n`` random obstacle worlds (one start and goal
+    each, drawn as in training but from another seed) — the evaluation of §VI.5.2."""
+    rng = np.random.default_rng(seed)
+    outcomes = []
+    for k in progress_bars.bar(range(n), desc="evaluation in obstacle worlds", unit="world", leave=False):
+        world, starts, goals = RandomObstacles().sample(rng, 1)
+        scenario = scenario_of(world, starts[0], goals[0], f"random-world-{k}", max_time)
+        outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
+    return {"runs": n, "success": outcomes.count("reached") / n, "collisions": outcomes.count("collision"),
+            "timeouts": outcomes.count("timeout")}
+
+
+def wall_course_scenario(rng, name: str, max_time: float = 30.0):
+    """A random wall course as a scenario. The follower ignores goals: the goal, in a corner of
+    the workspace, only gives the episode a task; success is lasting ``max_time`` without collision."""
+    world, starts, _ = WallCourse().sample(rng, 1)
+    return scenario_of(world, starts[0], (0.5, 0.5), name, max_time)
+
+
+def evaluate_wall(controller, n: int = 20, seed: int = 777, max_time: float = 30.0) -> dict:
+    """Collisions of a wall follower on the Fig VI.28 corners and on ``n`` random wall courses."""
+    corners = BatchSimulator(load_scenario("fig-VI-28"), controller, record=False).run().outcomes()[0]
+    rng = np.random.default_rng(seed)
+    outcomes = []
+    for k in progress_bars.bar(range(n), desc="evaluation on wall courses", unit="course", leave=False):
+        scenario = wall_course_scenario(rng, f"wall-course-{k}", max_time)
+        outcomes += BatchSimulator(scenario, controller, record=False).run().outcomes()
+    return {"fig-VI-28": corners, "courses": n, "collisions": outcomes.count("collision")}

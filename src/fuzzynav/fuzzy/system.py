@@ -23,12 +23,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import inference
 from fuzzynav.fuzzy.fastpath import StrongPartitionKernel
 from fuzzynav.fuzzy.membership import Linear, Ramp, Sigmoid, Singleton
 from fuzzynav.fuzzy.rules import Rule, parse_rule
-from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.fuzzy.variable import Variable, VariableNames
 
 METHODS = ("ts0", "ts1", "tsukamoto", "mamdani")
 _DEFAULT_DEFUZZIFIER = {"ts0": "weighted_average", "ts1": "weighted_average",
@@ -51,7 +52,7 @@ def _choice(name: str, value: str, allowed: Sequence[str]) -> str:
     return value
 
 
-class FuzzySystem:
+class FuzzySystem(VariableNames):
     """A fuzzy inference system: ``evaluate(X)`` maps (N, n_inputs) to (N, n_outputs)."""
 
     def __init__(
@@ -78,9 +79,7 @@ class FuzzySystem:
                                    ("centroid",) if method == "mamdani" else ("weighted_sum", "weighted_average"))
         self.implication = _choice("implication", implication, inference.IMPLICATIONS)
         self.aggregation = _choice("aggregation", aggregation, inference.AGGREGATIONS)
-        if int(resolution) < 2:
-            raise InputError(f"must be an integer >= 2, got {resolution!r}", field="resolution")
-        self.resolution = int(resolution)
+        self.resolution = validation.integer(resolution, field="resolution", lo=2, hi=validation.MAX_RESOLUTION)
         self.name = name
         self.description = description
         self._check_variables()
@@ -89,14 +88,6 @@ class FuzzySystem:
 
     # ------------------------------------------------------------------ construction
     @property
-    def input_names(self) -> list[str]:
-        return [v.name for v in self.inputs]
-
-    @property
-    def output_names(self) -> list[str]:
-        return [v.name for v in self.outputs]
-
-    @property
     def fast(self) -> bool:
         """True when evaluation runs on the piecewise-linear kernel of :mod:`fastpath`."""
         return self._kernel is not None
@@ -104,12 +95,14 @@ class FuzzySystem:
     def _check_variables(self) -> None:
         if not self.inputs or not self.outputs:
             raise InputError("a fuzzy system needs at least one input and one output", field="variables")
-        names = self.input_names + self.output_names
-        dupes = sorted({n for n in names if names.count(n) > 1})
-        if dupes:
-            raise InputError(f"duplicate variable name(s) {', '.join(dupes)}", field="variables")
+        self.check_unique_names()
         if not self.rules:
             raise InputError("a fuzzy system needs at least one rule", field="rules")
+        for var in self.inputs:
+            for label, mf in var.terms.items():
+                if isinstance(mf, Linear):
+                    raise InputError("a linear term concludes a ts1 rule; it cannot describe an input",
+                                     field=f"inputs.{var.name}.{label}")
         allowed = {"ts0": (Singleton,), "ts1": (Singleton, Linear), "tsukamoto": (Ramp, Sigmoid)}
         for var in self.outputs:
             for label, mf in var.terms.items():

@@ -1,8 +1,8 @@
-"""The thesis' fuzzy systems, ready-made (SPEC §3.1, §3.2, §4.1).
+"""The thesis' fuzzy systems, ready-made (thesis §IV.5.1, §IV.5.2.1, §V.3.1).
 
 All three are zero-order Takagi–Sugeno systems with strong triangular/trapezoidal input
 partitions, product T-norm (eq IV.5) and weighted-sum output (eq IV.4). The rule grids below are
-typed cell by cell as printed (rows × columns); the sign problem of SPEC §0 is *not* solved
+typed cell by cell as printed (rows × columns); the sign problem of the angle error (docs/thesis.md) is *not* solved
 here but in :func:`fuzzynav.control.base.thesis_angle_error`, which feeds the tables
 θ_r − θ_d.
 
@@ -21,31 +21,20 @@ from __future__ import annotations
 import math
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.command_sets import ANGLE7_LABELS, speed, steering
 from fuzzynav.fuzzy.membership import Singleton, Trapezoidal
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.systems_navigation import SYSTEMS as _NAVIGATION_SYSTEMS
 from fuzzynav.fuzzy.variable import Variable
 
 PI = math.pi
 D_MAX_GOAL = 20.0 * math.sqrt(2.0)
 ANGLE_UNIVERSE = (-PI, PI)
 
-# Figs IV.6, IV.11: θ_rg and θ_o, seven sets
-ANGLE7_LABELS = ("NG", "NM", "NP", "Z", "PP", "PM", "PG")
+# Figs IV.6, IV.11: θ_rg and θ_o, seven sets (labels as the α singletons of Fig IV.7)
 ANGLE7_PEAKS = (-1.5, -0.75, -0.25, 0.0, 0.25, 0.75, 1.5)
-
-
-def _steering() -> Variable:
-    """α singletons of Fig IV.7: ±π/5, ±π/10, ±π/20, 0 (rad)."""
-    values = (-PI / 5, -PI / 10, -PI / 20, 0.0, PI / 20, PI / 10, PI / 5)
-    return Variable("alpha", (-PI / 5, PI / 5), {k: Singleton(v) for k, v in zip(ANGLE7_LABELS, values)})
-
-
-def _speed() -> Variable:
-    """V_r singletons of Fig IV.8: Z 0, F 1, M 1.8, G 3, TG 4 (m/s)."""
-    values = {"Z": 0.0, "F": 1.0, "M": 1.8, "G": 3.0, "TG": 4.0}
-    return Variable("v", (0.0, 4.0), {k: Singleton(v) for k, v in values.items()})
 
 
 def _angle7(name: str) -> Variable:
@@ -77,13 +66,13 @@ def goal_seeking() -> FuzzySystem:
     theta = _angle7("theta")
     rules = rules_from_grid("theta", "drg", ANGLE7_LABELS, drg_labels, TABLE_IV_1, ("alpha", "v"),
                             source="Table IV.1")
-    return FuzzySystem([drg, theta], [_steering(), _speed()], rules, method="ts0", tnorm="product",
+    return FuzzySystem([drg, theta], [steering(), speed()], rules, method="ts0", tnorm="product",
                        defuzzifier="weighted_sum", name="goal-seeking",
                        description="Goal seeking, thesis §IV.5.1, Table IV.1 (TS0, product, weighted sum)")
 
 
 # Table IV.2 — rows θ_o (NG … PG), columns D_ro (P M G), cells α / V_r. The extraction scrambled
-# the printed table; this is the mirror-symmetric reconstruction of SPEC §3.2, which keeps the
+# the printed table; this is the mirror-symmetric reconstruction of thesis §IV.5.2.1, which keeps the
 # surviving rows NG and NM verbatim and matches the scrambled fragments of rows NP…PG.
 TABLE_IV_2 = (
     "NM/F NP/M Z/M",  # NG
@@ -101,7 +90,7 @@ def obstacle_avoidance() -> FuzzySystem:
 
     Inputs ``dro`` (D_ro, m: P = [0, 0, 0.5, 1], M = [0.5, 1, 2.8, 4], G = [2.8, 4, ∞), Fig IV.10)
     and ``theta_o`` (θ_o, rad: the seven sets of Fig IV.6, Fig IV.11); outputs ``alpha`` and ``v``
-    as for goal seeking. Table IV.2 is the reconstruction of SPEC §3.2 (see ``TABLE_IV_2``).
+    as for goal seeking. Table IV.2 is the reconstruction of §IV.5.2.1 (see ``TABLE_IV_2``).
     """
     dro = Variable("dro", (0.0, 4.0), {
         "P": Trapezoidal(0.0, 0.0, 0.5, 1.0),
@@ -111,10 +100,10 @@ def obstacle_avoidance() -> FuzzySystem:
     theta_o = _angle7("theta_o")
     rules = rules_from_grid("theta_o", "dro", ANGLE7_LABELS, ("P", "M", "G"), TABLE_IV_2, ("alpha", "v"),
                             source="Table IV.2")
-    return FuzzySystem([dro, theta_o], [_steering(), _speed()], rules, method="ts0", tnorm="product",
+    return FuzzySystem([dro, theta_o], [steering(), speed()], rules, method="ts0", tnorm="product",
                        defuzzifier="weighted_sum", name="obstacle-avoidance",
                        description="Obstacle avoidance by distance and angle, thesis §IV.5.2.1, "
-                                   "Table IV.2 as reconstructed in SPEC §3.2 (TS0, product, weighted sum)")
+                                   "Table IV.2 as reconstructed (TS0, product, weighted sum)")
 
 
 # Table V.1 — rows θ_er (NG NM Z PM PG), columns dθ_er (NG NM Z PM PG), cells α, as printed.
@@ -155,8 +144,6 @@ SYSTEMS = {
 
 # The range-sensor systems of §IV.7 and §VI.5.3.1 (FOA, ROA, LOA, VRB, wall follower) live in
 # their own module; registered here so every built-in system is found by name.
-from fuzzynav.fuzzy.systems_navigation import SYSTEMS as _NAVIGATION_SYSTEMS  # noqa: E402
-
 SYSTEMS.update(_NAVIGATION_SYSTEMS)
 
 

@@ -2,8 +2,8 @@
 
 All are zero-order Takagi–Sugeno systems with strong input partitions, product T-norm (eq IV.5)
 and weighted-sum output (eq IV.4), like those of :mod:`fuzzynav.fuzzy.systems`. The printed
-tables (IV.3–IV.6, VI.2) were scrambled by the text extraction; SPEC §3.3 and §5.5 quote the
-surviving fragments. Each table below is typed in the printed layout, and every cell that differs
+tables (IV.3–IV.6, VI.2) were scrambled by the text extraction; the surviving fragments are
+quoted next to each table. Each table below is typed in the printed layout, and every cell that differs
 from the fragment is listed next to it with the reason (the principle the thesis states for the
 module). Universes and breakpoints the thesis leaves symbolic are fixed here:
 
@@ -23,6 +23,7 @@ module). Universes and breakpoints the thesis leaves symbolic are fixed here:
 
 from __future__ import annotations
 
+from fuzzynav.fuzzy.command_sets import steering
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import Rule
@@ -37,13 +38,6 @@ WALL_D_M, WALL_D_S = 0.9, 1.6  # d_m, d_s of the wall follower (Fig VI.17), m
 WALL_V1, WALL_V2 = 0.6, 1.2  # P and M speed singletons of Fig VI.26 (m/s)
 
 NEAR_FAR = ("P", "L")
-
-
-def _alpha() -> Variable:
-    """α singletons of Fig IV.7 (±π/5, ±π/10, ±π/20, 0), shared with the goal-seeking system."""
-    from fuzzynav.fuzzy import systems  # deferred: systems registers this module's builders
-
-    return systems._steering()
 
 
 def distance_variable(name: str, d_m: float = D_M, d_s: float = D_S, d_max: float = D_MAX) -> Variable:
@@ -68,7 +62,7 @@ def _three_distance_rules(names, table, outputs) -> list[Rule]:
 
 def _avoider(names, table, name, description, d_m, d_s, d_max) -> FuzzySystem:
     inputs = [distance_variable(n, d_m, d_s, d_max) for n in names]
-    return FuzzySystem(inputs, [_alpha()], _three_distance_rules(names, table, ("alpha",)), method="ts0",
+    return FuzzySystem(inputs, [steering()], _three_distance_rules(names, table, ("alpha",)), method="ts0",
                        tnorm="product", defuzzifier="weighted_sum", name=name, description=description)
 
 
@@ -96,7 +90,7 @@ TABLE_IV_3 = {"P": "NG Z NG Z", "L": "PG PM PG Z"}
 #   (d4 L, d2 L, d6 L): PM -> Z   nothing near: no avoidance steering (as FOA's all-far cell).
 TABLE_IV_4 = {"P": "PM Z PM Z", "L": "PG PM PG Z"}
 
-# Table IV.5 — LOA (module 3: d3 at +30°, d5 at +60°, d7 at +90°). The fragment (SPEC §3.3:
+# Table IV.5 — LOA (module 3: d3 at +30°, d5 at +60°, d7 at +90°). The fragment (thesis §IV.7:
 # "NM NM NG NM … Z NM", 5 NM, 2 NG, 1 Z among the legible cells) is the mirror of ROA up to one
 # cell; the mirror image of Table IV.4 above is used (≤ 0: an obstacle on the left turns the
 # robot right), so the left and right avoiders are symmetric.
@@ -125,7 +119,7 @@ def left_avoider(d_m: float = D_M, d_s: float = D_S, d_max: float = D_MAX) -> Fu
                     "(mirror of Table IV.4; TS0, product, weighted sum)", d_m, d_s, d_max)
 
 
-# Table IV.6 — VRB, decoded unambiguously (SPEC §3.3): rows D_min, columns V_r = F M G.
+# Table IV.6 — VRB, decoded unambiguously (thesis §IV.7): rows D_min, columns V_r = F M G.
 TABLE_IV_6 = {"P": ("AC", "D", "DI"), "L": ("A", "AC", "DI")}
 
 
@@ -149,7 +143,7 @@ def velocity_reducer(v_breaks=V_BREAKS, d1: float = D_M, d2: float = D_S, d_max:
 
 
 # Table VI.2 — hand-made wall follower: inputs d_d (right, −90°), d_f (front), d_g (left, +90°).
-# Fragment as extracted (SPEC §5.5): "NG Z PG Z | NP PG M | Z Z PG M | NM M PP P", read as
+# Fragment as extracted (thesis §VI.5.3): "NG Z PG Z | NP PG M | Z Z PG M | NM M PP P", read as
 # columns d_g = P | L, rows (d_d, d_f) = (P,P) (P,L) (L,P) (L,L), each cell α / V_r:
 #   (P,P): NG/Z  PG/Z    (P,L): NP/·  PG/M    (L,P): Z/Z  PG/M    (L,L): NM/M  PP/P
 # The last row fixes the followed side — the LEFT wall: too close to it (d_g P) turn right
@@ -176,7 +170,7 @@ def wall_follower(d_m: float = WALL_D_M, d_s: float = WALL_D_S, d_max: float = D
     inputs = [distance_variable(n, d_m, d_s, d_max) for n in ("dd", "df", "dg")]
     speed = Variable("v", (0.0, v2), {"Z": Singleton(0.0), "P": Singleton(v1), "M": Singleton(v2)})
     rules = _three_distance_rules(("df", "dd", "dg"), TABLE_VI_2, ("alpha", "v"))
-    return FuzzySystem(inputs, [_alpha(), speed], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
+    return FuzzySystem(inputs, [steering(), speed], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
                        name="wall-follow", description="Hand-made wall follower, thesis §VI.5.3.1, Table VI.2 "
                                                        "as reconstructed (TS0, product, weighted sum)")
 

@@ -79,3 +79,25 @@ class Variable:
 
     def __repr__(self) -> str:
         return f"Variable({self.name!r}, {self.universe!r}, {self.terms!r})"
+
+
+class VariableNames:
+    """``input_names`` / ``output_names`` of anything holding ``inputs`` and ``outputs`` variables."""
+
+    inputs: list
+    outputs: list
+
+    @property
+    def input_names(self) -> list[str]:
+        return [v.name for v in self.inputs]
+
+    @property
+    def output_names(self) -> list[str]:
+        return [v.name for v in self.outputs]
+
+    def check_unique_names(self) -> None:
+        """InputError naming the variables that share a name."""
+        names = self.input_names + self.output_names
+        dupes = sorted({n for n in names if names.count(n) > 1})
+        if dupes:
+            raise InputError(f"duplicate variable name(s) {', '.join(dupes)}", field="variables")

@@ -15,6 +15,6 @@ and a batch alike (one robot is a batch of one; the loops over robots are inside
 - :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense.
 
 Every kernel is a module-level function over arrays (no closures), compiled on first use and
-cached on disk (:func:`fuzzynav.kernels.compile.jit`). ``NUMBA_DISABLE_JIT=1`` runs the very
+cached on disk (:func:`fuzzynav.jit.jit`). ``NUMBA_DISABLE_JIT=1`` runs the very
 same code as plain Python, the way to debug it. Importing this package does not import numba.
 """

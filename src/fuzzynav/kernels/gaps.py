@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 from fuzzynav.kernels.guard import THESIS_ANGLES
 from fuzzynav.kernels.motion import wrap
 

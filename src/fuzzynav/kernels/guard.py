@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 from fuzzynav.kernels.motion import ring_gap
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3

@@ -9,12 +9,12 @@ from __future__ import annotations
 import math
 
 from fuzzynav.kernels.angles import wrap_formula
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 
 wrap = jit(wrap_formula)
 
-ROBOT_FIELDS = ("dt", "wheelbase", "radius", "max_steering", "min_speed", "max_speed", "arc")
-DT, WHEELBASE, RADIUS, MAX_STEERING, MIN_SPEED, MAX_SPEED, ARC = range(len(ROBOT_FIELDS))
+ROBOT_FIELDS = ("dt", "wheelbase", "radius", "max_steering", "lowest_speed", "max_speed", "arc")
+DT, WHEELBASE, RADIUS, MAX_STEERING, LOWEST_SPEED, MAX_SPEED, ARC = range(len(ROBOT_FIELDS))
 
 
 @jit
@@ -30,9 +30,10 @@ def ring_gap(x, y, radius, limit):
 
 @jit
 def clip(steering, speed, robot):
-    """(α, V) within |α| ≤ max_steering, min_speed ≤ V ≤ max_speed (NaN stays NaN)."""
+    """(α, V) within |α| ≤ max_steering, lowest_speed ≤ V ≤ max_speed (NaN stays NaN); the
+    lowest speed is −max_reverse_speed for a robot that reverses (V < 0), else min_speed."""
     steering = steering if steering != steering else min(max(steering, -robot[MAX_STEERING]), robot[MAX_STEERING])
-    speed = speed if speed != speed else min(max(speed, robot[MIN_SPEED]), robot[MAX_SPEED])
+    speed = speed if speed != speed else min(max(speed, robot[LOWEST_SPEED]), robot[MAX_SPEED])
     return steering, speed
 
 
@@ -61,3 +62,19 @@ def advance_all(poses, steering, speed, robot, out):
     """:func:`advance` of every row of ``poses`` (N, 3) into ``out`` (N, 3)."""
     for n in range(poses.shape[0]):
         out[n, 0], out[n, 1], out[n, 2] = advance(poses[n, 0], poses[n, 1], poses[n, 2], steering[n], speed[n], robot)
+
+
+@jit
+def move_live(poses, steering, speed, live, robot, out, commands):
+    """One step of the ``live`` rows of ``poses`` (N, 3) into ``out`` (N, 3) under their clipped
+    commands; the others keep their pose at speed 0. ``commands`` (N, 2) receives the applied
+    (α, V)."""
+    for n in range(poses.shape[0]):
+        a, v = clip(steering[n], speed[n], robot)
+        if not live[n]:
+            v = 0.0
+        commands[n, 0], commands[n, 1] = a, v
+        if live[n]:
+            out[n, 0], out[n, 1], out[n, 2] = advance(poses[n, 0], poses[n, 1], poses[n, 2], a, v, robot)
+        else:
+            out[n, 0], out[n, 1], out[n, 2] = poses[n, 0], poses[n, 1], poses[n, 2]

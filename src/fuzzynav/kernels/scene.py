@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 from fuzzynav.kernels.motion import ring_gap
 from fuzzynav.kernels.layout import (AT_CIRCLES, AT_EDGES, AT_ELLIPSES, AT_POLYGONS, HEIGHT, N_CIRCLES, N_ELLIPSES,
                                      N_POLYGONS, WIDTH)

@@ -17,8 +17,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from fuzzynav.kernels import beams, navigators, scene
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
+from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",

@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.kernels.compile import jit
+from fuzzynav.jit import jit
 
 MAX_INPUTS, MAX_OUTPUTS = 3, 2
 

@@ -1,6 +1,6 @@
 """ANFIS, Jang's adaptive-network fuzzy inference system, as a scikit-learn estimator (thesis §V.3.4).
 
-The five layers (§V.3.4, eqs V.8–V.12, SPEC §4.3), for any number of inputs and a grid partition
+The five layers (§V.3.4, eqs V.8–V.12), for any number of inputs and a grid partition
 (every combination of one MF per input is a rule):
 
 1. fuzzification μ_ij(x_i), generalized bell (eq V.8) or Gaussian — the *premise* parameters S1 (V.13);
@@ -40,16 +40,25 @@ import numbers
 from collections.abc import Sequence
 
 import numpy as np
-import scipy.linalg
 from sklearn.base import BaseEstimator, RegressorMixin
 from sklearn.utils.validation import check_is_fitted
 
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
+from fuzzynav.learn.anfis_hybrid import TINY, Grid, StepRule
+from fuzzynav.learn.estimator_checks import (
+    check_format,
+    check_premises,
+    check_x,
+    check_xy,
+    finite_array,
+    finite_float,
+    positive_float,
+    positive_int,
+)
 
 _FORMAT = "fuzzynav-anfis"
 _VERSION = 1
-_TINY = np.finfo(float).tiny
 
 
 class ANFIS(RegressorMixin, BaseEstimator):
@@ -71,17 +80,13 @@ class ANFIS(RegressorMixin, BaseEstimator):
         Factors of Jang's step-size rules (after 4 decreases / after 2 oscillations).
     validation_fraction : float in [0, 1)
         Share of the samples held out (at random) for the best-epoch checkpoint and early stopping.
-    n_iter_no_change : int
-        Stop when the monitored error has not improved for this many epochs.
-    tol : float
-        Stop as soon as the monitored RMSE is at most ``tol``.
+    n_iter_no_change, tol : int, float
+        Stop when the monitored error has not improved for this many epochs, or is at most ``tol``.
     ridge : float
-        0 for plain least squares (minimum norm); > 0 adds ``ridge · N · ‖θ‖²`` to the
-        forward-pass objective (else a rank-revealing QR gives the minimum-norm solution).
+        0: plain least squares (rank-revealing QR, minimum norm); > 0 adds ``ridge · N · ‖θ‖²``.
     premises : sequence of (n_mfs_i, P) arrays, optional
-        Initial premise parameters per input (rows (a, b, c) for bell, (σ, m) for Gaussian);
-        when given they fix the number of MFs per input and ``n_mfs`` is not used.
-        Default: Jang's grid partition of the training range (:func:`anfis_mf.grid_premises`).
+        Initial premises per input (rows (a, b, c) for bell, (σ, m) for Gaussian), replacing ``n_mfs``;
+        default: Jang's grid partition of the training range (:func:`anfis_mf.grid_premises`).
     learn_premises : bool
         False keeps the premises fixed: the fit is then the single least-squares pass.
     random_state : int, numpy.random.Generator or None
@@ -95,8 +100,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     input_range_ : (n_features, 2) array — training range of each input (the exported universes).
     output_range_ : (2,) array — training range of the target.
     history_ : dict — per epoch ``train_rmse``, ``validation_rmse`` (``None`` without a split), ``step_size``.
-    best_epoch_, n_epochs_ : int — epoch of the kept parameters (0-based), epochs run.
-    n_features_in_ : int
+    best_epoch_, n_epochs_, n_features_in_ : int — epoch kept (0-based), epochs run, inputs.
     """
 
     def __init__(
@@ -137,20 +141,20 @@ class ANFIS(RegressorMixin, BaseEstimator):
             raise InputError(f"must be one of {', '.join(anfis_mf.FAMILIES)}, got {self.mf!r}", field="mf")
         if self.order not in (0, 1) or isinstance(self.order, bool):
             raise InputError(f"must be 0 or 1, got {self.order!r}", field="order")
-        _positive_int("epochs", self.epochs)
-        _positive_int("n_iter_no_change", self.n_iter_no_change)
+        positive_int("epochs", self.epochs)
+        positive_int("n_iter_no_change", self.n_iter_no_change)
         for name in ("step_size", "step_increase"):
-            _positive_float(name, getattr(self, name))
-        if not 0.0 < _positive_float("step_decrease", self.step_decrease) < 1.0:
+            positive_float(name, getattr(self, name))
+        if not 0.0 < positive_float("step_decrease", self.step_decrease) < 1.0:
             raise InputError(f"must be in (0, 1), got {self.step_decrease!r}", field="step_decrease")
         if self.step_increase < 1.0:
             raise InputError(f"must be >= 1, got {self.step_increase!r}", field="step_increase")
-        if not 0.0 <= _finite_float("validation_fraction", self.validation_fraction) < 1.0:
+        if not 0.0 <= finite_float("validation_fraction", self.validation_fraction) < 1.0:
             raise InputError(f"must be in [0, 1), got {self.validation_fraction!r}", field="validation_fraction")
-        if _finite_float("tol", self.tol) < 0 or _finite_float("ridge", self.ridge) < 0:
+        if finite_float("tol", self.tol) < 0 or finite_float("ridge", self.ridge) < 0:
             raise InputError("tol and ridge must be >= 0", field="tol" if self.tol < 0 else "ridge")
         if self.premises is not None:
-            return [len(p) for p in _check_premises(self.premises, self.mf, n_features, "premises")]
+            return [len(p) for p in check_premises(self.premises, self.mf, n_features, "premises")]
         counts = [self.n_mfs] * n_features if isinstance(self.n_mfs, numbers.Integral) else list(self.n_mfs)
         if len(counts) != n_features or not all(isinstance(c, numbers.Integral) and c >= 1 for c in counts):
             raise InputError(f"must be an integer >= 1 or {n_features} of them, got {self.n_mfs!r}", field="n_mfs")
@@ -159,7 +163,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     # ------------------------------------------------------------------ training
     def fit(self, X, y):
         """Hybrid learning (Table V.2) on samples ``X`` (N, n_features) and targets ``y`` (N,)."""
-        X, y = _check_xy(X, y)
+        X, y = check_xy(X, y)
         counts = self._check_hyper_parameters(X.shape[1])
         n_samples, n_features = X.shape
         rng = np.random.default_rng(self.random_state)
@@ -175,7 +179,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
         spans = self.input_range_[:, 1] - self.input_range_[:, 0]
         spans = np.where(spans > 0, spans, 1.0)
         self.rules_ = np.array(list(itertools.product(*(range(c) for c in counts))), dtype=np.intp).reshape(-1, n_features)
-        grid = _Grid(self.mf, counts, self.rules_, self.order)
+        grid = Grid(self.mf, counts, self.rules_, self.order)
         if self.premises is not None:
             params = np.concatenate([np.array(p, dtype=float) for p in self.premises])
         else:
@@ -190,7 +194,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
         xa_train = grid.augmented(Xt)
         k = float(self.step_size)
         history = {"train_rmse": [], "validation_rmse": [] if n_val else None, "step_size": []}
-        steps = _StepRule(self.step_increase, self.step_decrease)
+        steps = StepRule(self.step_increase, self.step_decrease)
         best = (math.inf, -1, params.copy(), None)
         for epoch in range(self.epochs):
             need_grad = self.learn_premises and epoch < self.epochs - 1
@@ -232,13 +236,13 @@ class ANFIS(RegressorMixin, BaseEstimator):
         return self
 
     # ------------------------------------------------------------------ inference
-    def _grid(self) -> _Grid:
-        return _Grid(self.mf, [len(p) for p in self.premises_], self.rules_, self.order)
+    def _grid(self) -> Grid:
+        return Grid(self.mf, [len(p) for p in self.premises_], self.rules_, self.order)
 
     def predict(self, X) -> np.ndarray:
         """Outputs (N,) for inputs ``X`` (N, n_features): layers 1–5, vectorised."""
         check_is_fitted(self, "consequents_")
-        X = _check_x(X, self.n_features_in_)
+        X = check_x(X, self.n_features_in_)
         return self._grid().predict(X, np.concatenate(self.premises_), self.consequents_)
 
     def _compile_scalar(self) -> None:
@@ -257,7 +261,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     def predict_one(self, x) -> float:
         """Output for one input vector (or one number, for a single-input ANFIS), in plain Python.
 
-        The control-loop call: no NumPy dispatch, about 2 µs for 1 input × 5 MFs. Same result as
+        The control-loop call: no NumPy dispatch (timed by benchmarks/anfis_bench.py). Same result as
         :meth:`predict` up to rounding (falls back to it where a membership power would overflow).
         """
         single = self._scalar_single
@@ -277,7 +281,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
                         w = math.exp(-0.5 * u * u)
                         num += w * (p * x + r)
                         den += w
-                return num / (den if den > _TINY else _TINY)
+                return num / (den if den > TINY else TINY)
             return self._predict_one_grid(tuple(float(v) for v in np.ravel(x)))
         except OverflowError:
             return float(self.predict(np.array([np.ravel(x)], dtype=float))[0])
@@ -300,7 +304,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
                 f += c * xi
             num += w * f
             den += w
-        return num / (den if den > _TINY else _TINY)
+        return num / (den if den > TINY else TINY)
 
     # ------------------------------------------------------------------ files and export
     def to_dict(self) -> dict:
@@ -329,10 +333,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     @classmethod
     def from_dict(cls, document, source: str | None = None) -> ANFIS:
         """Rebuild a fitted estimator from :meth:`to_dict`'s document (InputError naming the field)."""
-        if not isinstance(document, dict) or document.get("format") != _FORMAT:
-            raise InputError(f"not an ANFIS document (format must be {_FORMAT!r})", source=source, field="format")
-        if document.get("version") != _VERSION:
-            raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
+        check_format(document, _FORMAT, _VERSION, "an ANFIS", source)
         try:
             model = cls(**document["params"])
             n = int(document["n_features_in"])
@@ -343,15 +344,15 @@ class ANFIS(RegressorMixin, BaseEstimator):
             raise InputError(error.problem, source=source, field=f"params.{error.field}") from None
         if model.premises is not None:
             counts = [len(p) for p in model.premises]
-        premises = _check_premises(document.get("premises"), model.mf, n, "premises", source)
+        premises = check_premises(document.get("premises"), model.mf, n, "premises", source)
         if [len(p) for p in premises] != counts:
             raise InputError(f"MF counts {[len(p) for p in premises]} do not match n_mfs {counts}",
                              source=source, field="premises")
         model.rules_ = np.array(list(itertools.product(*(range(c) for c in counts))), dtype=np.intp).reshape(-1, n)
         width = n + 1 if model.order == 1 else 1
-        model.consequents_ = _finite_array(document.get("consequents"), (len(model.rules_), width), "consequents", source)
-        model.input_range_ = _finite_array(document.get("input_range"), (n, 2), "input_range", source)
-        model.output_range_ = _finite_array(document.get("output_range"), (2,), "output_range", source)
+        model.consequents_ = finite_array(document.get("consequents"), (len(model.rules_), width), "consequents", source)
+        model.input_range_ = finite_array(document.get("input_range"), (n, 2), "input_range", source)
+        model.output_range_ = finite_array(document.get("output_range"), (2,), "output_range", source)
         model.premises_ = premises
         model.n_features_in_ = n
         model.best_epoch_ = int(document.get("best_epoch", -1))
@@ -396,171 +397,3 @@ class ANFIS(RegressorMixin, BaseEstimator):
         return FuzzySystem(inputs, [output], rules, method="ts1" if self.order == 1 else "ts0",
                            tnorm="product", defuzzifier="weighted_average", name=name,
                            description="exported from a trained ANFIS (thesis §V.3.4)")
-
-
-class _Grid:
-    """Index bookkeeping and the batch kernels of one grid-partitioned ANFIS structure."""
-
-    def __init__(self, family: str, counts: Sequence[int], rules: np.ndarray, order: int):
-        self.family = family
-        self.order = order
-        self.offsets = np.concatenate([[0], np.cumsum(counts)])
-        self.mf_input = np.repeat(np.arange(len(counts)), counts)  # input read by each MF
-        self.columns = rules + self.offsets[:-1]  # (R, n): global MF column of each premise
-        n_rules, n_in = rules.shape
-        self.incidence = np.zeros((n_rules * n_in, self.offsets[-1]))  # one-hot (rule, input) -> MF
-        self.incidence[np.arange(n_rules * n_in), self.columns.ravel()] = 1.0
-
-    def split(self, params: np.ndarray) -> list[np.ndarray]:
-        return [params[a:b].copy() for a, b in zip(self.offsets[:-1], self.offsets[1:])]
-
-    def forward(self, X: np.ndarray, params: np.ndarray, with_gradient: bool, xa: np.ndarray | None = None) -> dict:
-        """Layers 1–3 on a batch: μ, premise degrees per rule, w, Σw, w̄ (and ∂μ/∂params).
-
-        ``xa`` — :meth:`augmented` of ``X`` when the caller keeps it across epochs.
-        """
-        xcol = X[:, self.mf_input]
-        if with_gradient:
-            mu, dmu = anfis_mf.evaluate_with_gradient(self.family, xcol, params)
-        else:
-            mu, dmu = anfis_mf.evaluate(self.family, xcol, params), None
-        degrees = mu[:, self.columns]  # (N, R, n)
-        w = degrees.prod(axis=2)
-        total = np.maximum(w.sum(axis=1), _TINY)
-        return {"xa": self.augmented(X) if xa is None else xa, "dmu": dmu, "degrees": degrees, "total": total,
-                "wbar": w / total[:, None]}
-
-    def augmented(self, X: np.ndarray) -> np.ndarray:
-        """Regressors of one rule's consequent: [x, 1] (first order) or [1] (order 0)."""
-        return np.column_stack([X, np.ones(len(X))]) if self.order == 1 else np.ones((len(X), 1))
-
-    def least_squares(self, fwd: dict, y: np.ndarray, ridge: float) -> np.ndarray:
-        """Forward pass of Table V.2: consequents (R, n+1 or 1) minimising ‖A θ − y‖² (+ ridge)."""
-        xa = fwd["xa"]
-        n_rules = fwd["wbar"].shape[1]
-        design = (fwd["wbar"][:, :, None] * xa[:, None, :]).reshape(len(y), -1)
-        if ridge > 0.0:
-            k = design.shape[1]
-            design = np.vstack([design, math.sqrt(ridge * len(y)) * np.eye(k)])
-            y = np.concatenate([y, np.zeros(k)])
-        # rank-revealing QR (LAPACK gelsy): the minimum-norm solution when rules barely fire
-        theta = scipy.linalg.lstsq(design, y, lapack_driver="gelsy", check_finite=False)[0]
-        return theta.reshape(n_rules, xa.shape[1])
-
-    def outputs(self, fwd: dict, theta: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Layers 4–5: rule outputs f (N, R) and y (N,)."""
-        f = fwd["xa"] @ theta.T
-        return f, (fwd["wbar"] * f).sum(axis=1)
-
-    def predict(self, X: np.ndarray, params: np.ndarray, theta: np.ndarray) -> np.ndarray:
-        return self.outputs(self.forward(X, params, False), theta)[1]
-
-    def premise_gradient(self, fwd: dict, f: np.ndarray, out: np.ndarray, err: np.ndarray) -> np.ndarray:
-        """Backward pass of Table V.2: ∂E/∂premises (M, P) for E = ½ Σ e², consequents fixed.
-
-        ∂y/∂w_r = (f_r − y) / Σw, ∂w_r/∂μ_i = Π_{k≠i} μ_k (prefix × suffix products, no division).
-        """
-        degrees = fwd["degrees"]
-        n, n_rules, n_in = degrees.shape
-        d_w = err[:, None] * (f - out[:, None]) / fwd["total"][:, None]  # (N, R)
-        ones = np.ones((n, n_rules, 1))
-        prefix = np.cumprod(np.concatenate([ones, degrees[:, :, :-1]], axis=2), axis=2)
-        suffix = np.cumprod(np.concatenate([ones, degrees[:, :, :0:-1]], axis=2), axis=2)[:, :, ::-1]
-        d_mu = ((d_w[:, :, None] * prefix * suffix).reshape(n, n_rules * n_in)) @ self.incidence  # (N, M)
-        return np.einsum("nm,nmp->mp", d_mu, fwd["dmu"])
-
-
-class _StepRule:
-    """Jang's step-size rules: ×increase after 4 consecutive decreases, ×decrease after 2 oscillations."""
-
-    def __init__(self, increase: float, decrease: float):
-        self.increase, self.decrease = increase, decrease
-        self.last = None
-        self.signs: list[int] = []  # +1 error went up, −1 went down, since the last change of k
-
-    def update(self, error: float, k: float) -> float:
-        if self.last is not None:
-            self.signs.append(1 if error > self.last else -1)
-        self.last = error
-        recent = self.signs[-4:]
-        if len(recent) == 4 and all(s < 0 for s in recent):
-            self.signs.clear()
-            return k * self.increase
-        if len(recent) == 4 and all(recent[i] != recent[i + 1] for i in range(3)):
-            self.signs.clear()
-            return k * self.decrease
-        return k
-
-
-# ---------------------------------------------------------------------- validation helpers
-def _check_xy(X, y) -> tuple[np.ndarray, np.ndarray]:
-    X = _check_x(X, None)
-    y = np.asarray(y, dtype=float)
-    if y.ndim == 2 and y.shape[1] == 1:
-        y = y[:, 0]
-    if y.shape != (X.shape[0],):
-        raise InputError(f"expected shape ({X.shape[0]},), got {y.shape}", field="y")
-    if not np.isfinite(y).all():
-        raise InputError("contains NaN or infinite values", field="y")
-    return X, y
-
-
-def _check_x(X, n_features: int | None) -> np.ndarray:
-    try:
-        X = np.asarray(X, dtype=float)
-    except (TypeError, ValueError) as error:
-        raise InputError(f"not a numeric array ({error})", field="X") from None
-    if X.ndim != 2 or X.shape[0] == 0 or (n_features is not None and X.shape[1] != n_features):
-        want = f"(N, {n_features})" if n_features is not None else "(N, n_features)"
-        raise InputError(f"expected a non-empty array of shape {want}, got {X.shape}", field="X")
-    if not np.isfinite(X).all():
-        raise InputError("contains NaN or infinite values", field="X")
-    return X
-
-
-def _check_premises(premises, family: str, n_features: int, field: str, source: str | None = None) -> list[np.ndarray]:
-    width = len(anfis_mf.PARAMETER_NAMES[family])
-    if not isinstance(premises, (list, tuple)) or len(premises) != n_features:
-        raise InputError(f"expected one parameter table per input ({n_features})", source=source, field=field)
-    tables = []
-    for i, p in enumerate(premises):
-        try:
-            table = np.array(p, dtype=float)
-        except (TypeError, ValueError):
-            table = None
-        if table is None or table.ndim != 2 or table.shape[0] < 1 or table.shape[1] != width:
-            raise InputError(f"expected rows of {width} numbers {anfis_mf.PARAMETER_NAMES[family]}",
-                             source=source, field=f"{field}[{i}]")
-        if not np.isfinite(table).all() or not (table[:, 0] > 0).all() or (family == "bell" and not (table[:, 1] > 0).all()):
-            raise InputError("parameters must be finite with widths (and bell slopes b) > 0",
-                             source=source, field=f"{field}[{i}]")
-        tables.append(table)
-    return tables
-
-
-def _finite_array(value, shape: tuple, field: str, source: str | None) -> np.ndarray:
-    try:
-        array = np.array(value, dtype=float)
-    except (TypeError, ValueError):
-        array = None
-    if array is None or array.shape != shape or not np.isfinite(array).all():
-        raise InputError(f"expected finite numbers of shape {shape}", source=source, field=field)
-    return array
-
-
-def _finite_float(name: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
-        raise InputError(f"must be a finite number, got {value!r}", field=name)
-    return float(value)
-
-
-def _positive_float(name: str, value) -> float:
-    if _finite_float(name, value) <= 0:
-        raise InputError(f"must be > 0, got {value!r}", field=name)
-    return float(value)
-
-
-def _positive_int(name: str, value) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
-        raise InputError(f"must be an integer >= 1, got {value!r}", field=name)
-    return int(value)

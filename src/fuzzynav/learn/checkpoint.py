@@ -1,12 +1,18 @@
 """Resumable training: checkpoints of a learner + RNG + episode counter + curve, and a train loop.
 
 A checkpoint is one JSON document (``.json``, or the same document stored as a 0-d string in an
-``.npz``) written atomically (temporary file, then rename — :mod:`fuzzynav.models`), so an
+``.npz``) written atomically (temporary file, then rename — :mod:`fuzzynav.storage`), so an
 interrupted run (Ctrl-C, crash) always leaves the previous checkpoint intact. It holds
 
 - ``learner``: the learner's :meth:`to_dict` (qualities, visit counts, its episode counter),
 - ``rng``: ``Generator.bit_generator.state`` (JSON-safe: big integers are exact in JSON),
-- ``episode``: batches of episodes completed, and ``curve``: the per-episode records so far.
+- ``episode``: batches of episodes completed, and ``curve``: the per-episode records so far,
+- ``extra``: the settings that shape the run (task, phase, seed, batch size, ...).
+
+Resuming is refused — an :class:`~fuzzynav.errors.InputError` naming the field — when the
+checkpoint belongs to another run: any setting of ``extra`` or of the learner differs, or the
+checkpoint has already done more episodes than the run asks for (:func:`check_same_run`).
+Temporary files a killed save left beside the checkpoint are removed when training starts.
 
 Checkpoints are taken between batches of episodes only, so no environment state needs saving;
 :func:`train_loop` resumed from a checkpoint therefore continues *exactly* where it stopped: the
@@ -25,7 +31,6 @@ the others until the whole batch is done; their results are ignored.
 
 from __future__ import annotations
 
-import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -33,9 +38,10 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.state import episode_count, restore_state
-from fuzzynav.models import read_model, save_json_atomic, save_npz_atomic
+from fuzzynav.storage import read_document, remove_stale_temporaries, save_document
 
 KIND = "fuzzynav-checkpoint"
 _STATE_FIELDS = ("q", "visits", "episode", "premise")
@@ -44,7 +50,7 @@ _CURVE_FIELDS = ("mean_reward", "steps", "success")
 
 def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve: dict,
                     extra: dict | None = None) -> None:
-    """Write a checkpoint atomically (``.npz`` suffix → NPZ, anything else → JSON)."""
+    """Write a checkpoint atomically in the format of its extension (``.json`` or ``.npz``)."""
     document = {
         "kind": KIND,
         "episode": int(episode),
@@ -54,29 +60,55 @@ def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve
         "extra": extra or {},
         "saved_at": time.time(),
     }
-    path = Path(path)
-    if path.suffix == ".npz":
-        save_npz_atomic(path, kind=np.array(KIND), document=np.array(json.dumps(document)))
-    else:
-        save_json_atomic(path, document)
+    save_document(Path(path), document)
 
 
 def load_checkpoint(path) -> dict:
     """Read a checkpoint document written by :func:`save_checkpoint`."""
-    document = read_model(path)
+    document = read_document(path)
     if document["kind"] != KIND:
         raise InputError(f"not a training checkpoint (kind {document['kind']!r})", source=str(path),
                          field="kind")
-    if "document" in document:
-        document = json.loads(str(document["document"]))
     for name in ("episode", "rng", "learner", "curve"):
         if name not in document:
             raise InputError("missing field in checkpoint", source=str(path), field=name)
     episode_count(document["episode"], str(path), "episode")
+    for name in ("rng", "learner"):
+        validation.mapping(document[name], str(path), name)
     curve = document["curve"]
     if not isinstance(curve, dict) or not all(isinstance(curve.get(key), list) for key in _CURVE_FIELDS):
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
+    for key in _CURVE_FIELDS:
+        for i, row in enumerate(curve[key]):
+            try:
+                kind = np.asarray(row).dtype.kind
+            except ValueError:  # ragged
+                kind = "O"
+            if kind not in "biuf":
+                raise InputError(f"must hold numbers, got {str(row)[:60]}", source=str(path), field=f"curve.{key}[{i}]")
     return document
+
+
+def check_same_run(document: dict, settings: dict, budget: int | None = None, source: str = "checkpoint") -> None:
+    """Refuse to resume from ``document`` when it was written by another run: every key of
+    ``settings`` (and of the checkpoint's own ``extra``) must hold the same value, and the single
+    episodes it has done must not exceed ``budget`` (when given)."""
+    saved = document.get("extra")
+    if not isinstance(saved, dict):
+        raise InputError("the checkpoint does not record the settings of its run", source=source, field="extra")
+    for name in sorted(settings.keys() | saved.keys()):
+        if name not in saved:
+            raise InputError(f"the checkpoint does not record {name} (this run: {settings[name]!r}); "
+                             "train afresh without --resume", source=source, field=name)
+        if saved[name] != settings.get(name):
+            raise InputError(f"the checkpoint was written by a run with {name} {saved[name]!r}, this run has "
+                             f"{settings.get(name)!r}: resume with the same settings, or train afresh without --resume",
+                             source=source, field=name)
+    done = sum(len(row) if isinstance(row, list) else 1 for row in document["curve"]["success"])
+    if budget is not None and done > budget:
+        raise InputError(f"the checkpoint has already done {done} episodes of phase {saved.get('phase', '?')!r}, "
+                         f"more than the {budget} this run asks for: resume with at least as many episodes, "
+                         "or train afresh without --resume", source=source, field="episodes")
 
 
 def restore(learner, rng: np.random.Generator, document: dict, source: str = "checkpoint") -> None:
@@ -93,7 +125,7 @@ def restore(learner, rng: np.random.Generator, document: dict, source: str = "ch
     restore_state(learner, saved, source)
     try:
         rng.bit_generator.state = document["rng"]
-    except (TypeError, ValueError, KeyError) as error:
+    except (TypeError, ValueError, KeyError, OverflowError) as error:
         raise InputError(f"bad RNG state ({error})", source=source, field="rng") from None
 
 
@@ -137,7 +169,8 @@ def run_episodes(env, learner, rng: np.random.Generator) -> dict:
 
 def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpoint=None,
                checkpoint_every: int = 0, resume: bool = False, progress: bool = False,
-               extra: dict | None = None, batch_size: int = 1, desc: str | None = None) -> TrainResult:
+               extra: dict | None = None, batch_size: int = 1, desc: str | None = None,
+               budget: int | None = None) -> TrainResult:
     """Train ``learner`` for ``episodes`` batches of episodes on ``env``, resumably.
 
     With ``checkpoint`` (a path), a checkpoint is written every ``checkpoint_every`` batches
@@ -147,14 +180,19 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
     ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
     (B) and ``desc`` only label the bar: it then counts single episodes, B per batch, starting
     from the single episodes of the curve restored (a resumed run whose earlier batches had
-    another size, e.g. the smaller last batch of ``experiments.train_rl.batch_plan``).
+    another size, e.g. the smaller last batch of ``learn.tasks.common.batch_plan``).
+    ``extra`` holds the settings that shape the run and ``budget`` the single episodes it is to
+    do in all: a checkpoint of another run, or one past the budget, is refused (:func:`check_same_run`).
     """
     if int(episodes) != episodes or episodes < 0:
         raise InputError(f"must be a non-negative integer, got {episodes!r}", field="episodes")
     curve = {"mean_reward": [], "steps": [], "success": []}
     start = resumed_from = None
+    if checkpoint is not None:
+        remove_stale_temporaries(checkpoint)
     if resume and checkpoint is not None and Path(checkpoint).exists():
         document = load_checkpoint(checkpoint)
+        check_same_run(document, extra or {}, budget, str(checkpoint))
         restore(learner, rng, document, str(checkpoint))
         curve = document["curve"]
         start = resumed_from = int(document["episode"])

@@ -1,4 +1,4 @@
-"""Fuzzy Q-learning (thesis §VI.3–VI.4, Algorithm VI.1; SPEC §5.2), vectorised over rules and episodes.
+"""Fuzzy Q-learning (thesis §VI.3–VI.4, Algorithm VI.1), vectorised over rules and episodes.
 
 A zero-order Takagi–Sugeno rule base with fixed membership functions (the *premise*: any object
 with ``firing_strengths(X, normalise=True) -> (N, n_rules)``, e.g. the fuzzy library's system)
@@ -161,7 +161,7 @@ class FuzzyQLearner:
         n = self.q.shape[-1]
         if j.size < 1024:
             return (j[..., None] == np.arange(n)) * w[:, None, :, None]
-        shares = np.zeros(j.shape + (n,))  # large batches: scatter the strengths (3× faster)
+        shares = np.zeros(j.shape + (n,))  # large batches: scatter the strengths (faster than the comparison above)
         shares.reshape(-1, n)[np.arange(j.size), j.ravel()] = np.broadcast_to(w[:, None, :], j.shape).ravel()
         return shares
 
@@ -251,6 +251,11 @@ class FuzzyQLearner:
         if j.shape[0] not in (1, w.shape[0]):
             raise InputError(f"{w.shape[0]} rows for {j.shape[0]} learners; pass learner=k", field="X")
         return self._infer(self._shares(w, j))
+
+    def action(self, X, indices) -> np.ndarray:
+        """Output (B, H·D) for inputs X of the rule base whose rules conclude the candidates
+        ``indices`` (1, H, R) — e.g. a :meth:`greedy_indices` kept while the learner is frozen."""
+        return self._infer(self._shares(self.strengths(X), indices))
 
     def to_dict(self) -> dict:
         """JSON-safe learner state (the premise is stored by its owner, or via its ``to_dict``)."""

@@ -58,7 +58,7 @@ class GoalSpeedReward:
 
     The text keeps three conditions, the values −1, −1, 1, 0 and "ailleurs" (otherwise):
     "if d_rg and θ_rg decrease and the speed increases", "if θ_rg decreases, the speed and d_rg
-    increase", "if the robot reaches the target with a low speed". SPEC §5.3 and the principle of
+    increase", "if the robot reaches the target with a low speed". Thesis §VI.5.1 and the principle of
     the section (speed up when heading well for the goal, not while going away, arrive slowly)
     give the rebuild used here:
 

@@ -1,4 +1,4 @@
-"""Range-sensor ring of the robot, SPEC §3.3 / thesis §IV.7 (Figs IV.16–IV.18).
+"""Range-sensor ring of the robot, thesis §IV.7 (Figs IV.16–IV.18).
 
 The thesis' robot carries seven ultrasonic sensors C1…C7 measuring distances d1…d7: d1 straight
 ahead, d2/d4/d6 on the right side, d3/d5/d7 on the left side. Their angles are not given; this

@@ -1,4 +1,4 @@
-"""Numbers of one episode (issue 3, `fuzzynav run --json`): a flat JSON-safe dict.
+"""Numbers of one episode (`fuzzynav run --json`): a flat JSON-safe dict.
 
 Always: ``scenario``, ``controller``, ``task``, ``outcome``, ``reached_goal`` (goal reached, path
 completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``,
@@ -7,7 +7,7 @@ the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
 ``mean_speed_mps``, ``final_distance_m`` (to the goal / current waypoint / target),
 ``steering_effort_rad`` (mean |α|) and ``steering_variation_rad`` (Σ |Δα|).
 Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
-``max_cross_track_m`` (distance from each visited position to the path polyline, SPEC §4).
+``max_cross_track_m`` (distance from each visited position to the path polyline, thesis §V.4).
 Target tasks add ``captured``, ``capture_time_s`` (None when not captured) and
 ``final_error_m`` (robot–target distance at the end).
 """

@@ -1,4 +1,4 @@
-"""Reference paths of chapter V (SPEC §4, thesis §V.2): waypoint polylines and their scenarios.
+"""Reference paths of chapter V (thesis §V.2): waypoint polylines and their scenarios.
 
 A path is an ``(n, 2)`` array of waypoints joined by straight segments (discontinuous headings).
 The generators below build the thesis' test paths:
@@ -8,7 +8,7 @@ The generators below build the thesis' test paths:
   they are spread every 60° here;
 - :func:`segment`: a single straight segment (Figs V.8, V.16, V.24);
 - :func:`n_path`, :func:`trapezoid_path`, :func:`v_path`: the N, trapezoid (Figs V.11, V.19,
-  V.27) and V paths (Fig V.28) with the corner coordinates fixed in SPEC / issue 4.
+  V.27) and V paths (Fig V.28) with the corner coordinates fixed here.
 
 :func:`path_scenario` wraps waypoints into a :class:`~fuzzynav.world.scenario.Scenario` with a
 waypoint tolerance zone (the simulator switches to the next waypoint once inside) and a
@@ -91,7 +91,7 @@ def path_scenario(waypoints, *, name: str = "path", start=None, theta: float | N
     """A path-tracking :class:`~fuzzynav.world.scenario.Scenario` on an empty 20 m × 20 m world.
 
     The robot starts at ``start`` (default: the first waypoint) with heading ``theta`` (default:
-    along the first segment — "the robot starts on the path", SPEC §4.2). ``max_time`` defaults
+    along the first segment — "the robot starts on the path", thesis §V.3.2). ``max_time`` defaults
     to three times the time needed to drive the path at ``speed``, plus 10 s.
     """
     points = _waypoints(waypoints)

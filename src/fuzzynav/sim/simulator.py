@@ -16,6 +16,9 @@
 
 Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
 returning a :class:`Trace`; :func:`run_episode` is the one-call form.
+The robot's parameters (size, wheelbase, limits, reverse speed) are the scenario's
+(:attr:`Scenario.robot`) unless ``robot_params`` overrides them; they reach the compiled step
+in its ``setup`` array, and Python controllers find them in ``observation.extras["robot"]``.
 """
 
 from __future__ import annotations
@@ -25,14 +28,18 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import Controller
+from fuzzynav.errors import CommandError
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
+from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
 from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.world import add_noise
 
@@ -40,6 +47,9 @@ RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED
                                         step_kernel.TIMEOUT)
 # the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
 _NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
+# a compiled navigator decides inside the compiled step: its commands are checked in the state
+# every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
+_CHECK_EVERY = 32
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
@@ -62,15 +72,16 @@ class BatchSimulator:
     """
 
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = scenario
-        self.params = robot_params
+        self.params = robot_params if robot_params is not None else scenario.robot
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
-        self.starts = (np.asarray(starts, dtype=float).reshape(-1, 3) if starts is not None
+        self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
-        self.max_time = float(max_time if max_time is not None else scenario.max_time)
+        self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
+                                          field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
@@ -82,7 +93,13 @@ class BatchSimulator:
             if len(copies) != self.n:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
+        for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
+            if callable(getattr(copied, "prepare", None)):
+                copied.prepare(scenario)
         self.controllers = copies
+        for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
+            if callable(getattr(each, "for_robot", None)):
+                each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
@@ -177,20 +194,20 @@ class BatchSimulator:
             path=self.task.path,
             waypoint_index=self._status[:, step_kernel.WAYPOINT].copy(),
             target_velocity=self.task.target_velocity(t),
-            extras={"task": self.task.kind},
+            extras={"task": self.task.kind, "robot": self.params},
         )
 
     def _act(self, obs: BatchObservation):
         """Commands of the Python controllers, written into the state of the running robots."""
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = out[0], out[1]
+            steering, speed = check_commands(out[0], out[1], obs.active, self.n, self.controller_name, self.k)
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
         else:
             steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
             for i in np.flatnonzero(obs.active):
                 command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
-                steering[i], speed[i], labels[i] = command.steering, command.speed, command.behaviour
+                steering[i], speed[i], labels[i] = command_values(command, self.controller_name, self.k)
         if self._running == self.n:
             self._state[:, step_kernel.STEERING], self._state[:, step_kernel.SPEED] = steering, speed
         else:
@@ -206,14 +223,20 @@ class BatchSimulator:
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
-        self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
-                                         self._ranges, self._status)
+        try:
+            self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
+                                             self._ranges, self._status)
+        except ValueError as error:  # a compiled navigator refusing a non-finite input
+            raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
+                               field=f"step {self.k}") from None
         self._observation = None
         if running is not None:
             self._add_noise(running)
         if self.record:
             self._history["behaviour"].append(labels)
             self._record_state()
+        if self._compiled is not None and (self.k % _CHECK_EVERY == 0 or not self._running):
+            check_state(self._state, self.controller_name, self.k, self._history["state"] if self.record else None)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
@@ -270,7 +293,7 @@ class Simulator:
     """One robot, one episode: ``Simulator(scenario, controller, ...).run() -> Trace``."""
 
     def __init__(self, scenario: Scenario, controller: Controller, *,
-                 robot_params: TricycleParams = tricycle.DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, start=None):
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
                                      sensors=sensors, seed=seed, max_time=max_time)

@@ -1,7 +1,7 @@
 """Tasks of an episode, vectorised over robots: goal, path tracking, moving target.
 
 - goal (chapter IV): reached when d_rg ≤ goal tolerance.
-- path (SPEC §4, thesis §V.3): the robot aims at the current waypoint; once inside its tolerance
+- path (thesis §V.2–§V.3): the robot aims at the current waypoint; once inside its tolerance
   zone (``path_tolerance``) it switches to the next one (no stop, no turn on the spot); the task
   is complete when the last waypoint's zone is entered. The speed is the path's constant speed.
   With ``path_switching: passed`` (the default; an addition to the thesis) an interior waypoint
@@ -13,7 +13,7 @@
   zone (0.5 m, §V.2; e.g. 0.71 m on the 136° corners of ``example-path``) goes on with the path
   instead of circling back to the missed waypoint. ``path_switching: zone`` is the thesis' rule
   alone. The last waypoint is always the zone.
-- target (SPEC §4.4, §V.5): the target moves by its :class:`~fuzzynav.world.motion.TargetMotion`;
+- target (thesis §V.5): the target moves by its :class:`~fuzzynav.world.motion.TargetMotion`;
   captured when the robot is within the target tolerance.
 
 The tests run compiled, robot by robot, in the simulator's step (:func:`fuzzynav.kernels.step.task_update`);
@@ -56,6 +56,13 @@ class TaskState:
         if self.kind == "path":
             return self.scenario.path.waypoints[0]
         return self.scenario.target.motion.position(t)
+
+    def target(self, t: float = 0.0) -> np.ndarray:
+        """``(N, 2)``: the point each robot aims at — the goal, its current waypoint (after
+        :meth:`update`), or the moving target at time ``t``."""
+        if self.kind == "path":
+            return self.scenario.path.waypoints[self.waypoint_index]
+        return np.broadcast_to(self.position(t), (self.n, 2))
 
     def target_velocity(self, t: float) -> np.ndarray | None:
         """``(N, 2)`` velocity of a moving target at time ``t``, else None."""

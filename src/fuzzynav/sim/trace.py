@@ -39,18 +39,22 @@ class Trace:
 
     @property
     def steps(self) -> int:
+        """Number of control steps (commands) in the episode."""
         return int(len(self.steering))
 
     @property
     def time(self) -> float:
+        """Duration of the episode (s)."""
         return float(self.t[-1])
 
     @property
     def reached(self) -> bool:
+        """True when the task was achieved (goal reached, path completed, target captured)."""
         return self.outcome == "reached"
 
     @property
     def collision(self) -> bool:
+        """True when the episode ended in a collision."""
         return self.outcome == "collision"
 
     def behaviour_changes(self) -> list[int]:

@@ -1,8 +1,8 @@
 """Animated GIF of an episode: the robot, its trail and its sensor rays over the world.
 
 The world (obstacles, start, goal or path, axes and ticks) is rendered once with Agg and kept as
-a background; every frame restores it and draws only the moving artists (trail, body, heading,
-rays, target, title) — blitting, far cheaper than redrawing and re-laying out the whole figure
+a background; every frame restores it and draws only the moving artists (trail coloured by
+behaviour as in the static plots, body, heading, rays, target, title) — blitting, far cheaper than redrawing and re-laying out the whole figure
 per frame — and the frames, mapped to one 64-colour palette, are written with Pillow (no ffmpeg
 needed). Long
 episodes are subsampled to at most ``max_frames`` evenly spaced frames (the last one is the end
@@ -11,7 +11,6 @@ of the episode); every frame shows the time and the active behaviour.
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 from matplotlib import patches
@@ -20,26 +19,34 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from PIL import Image
 
+from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
+from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
 
 
-def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: int = 10, max_frames: int = 100,
-                    rays: bool = True, dpi: int = 60) -> int:
-    """Write the episode as a GIF to ``path`` (5 in square at ``dpi``); returns the number of frames."""
+def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, max_frames: int = 100,
+                    rays: bool = True, size: int = 400) -> int:
+    """Write the episode as a GIF of ``size`` × ``size`` pixels at ``fps`` frames per second to
+    ``path``; returns the number of frames."""
+    dpi = size / 5
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
     draw_world(ax, scenario, trace)
     frames = np.unique(np.linspace(0, len(trace.pose) - 1, min(max_frames, len(trace.pose))).round().astype(int))
-    trail, = ax.plot([], [], color="tab:blue", linewidth=1.5)
+    trail = LineCollection([], linewidths=1.8, antialiaseds=False)  # coloured by behaviour, as in the static plots
+    ax.add_collection(trail)
+    xy = trace.pose[:, :2]
+    segments = np.stack([xy[:-1], xy[1:]], axis=1)
+    colours = [behaviour_style(str(b))[0] for b in trace.behaviour]
     body = patches.Circle(trace.pose[0, :2], trace.robot_radius, fill=False, edgecolor="k")
     ax.add_patch(body)
     heading, = ax.plot([], [], color="k", linewidth=1.5)
-    beams = LineCollection([], colors="tab:orange", linewidths=0.7, alpha=0.8)
+    beams = LineCollection([], colors=RAY_COLOUR, linewidths=0.7, alpha=0.8)
     ax.add_collection(beams)
-    target, = ax.plot([], [], "*", color="tab:green", markersize=12)
+    target, = ax.plot([], [], "*", color=GOAL_COLOUR, markersize=12)
     title = ax.set_title(f"{trace.scenario} — {trace.controller}  t = {trace.t[-1]:.1f} s", fontsize=9)
     moving = (trail, body, heading, beams, target, title)
     for artist in moving:
@@ -51,7 +58,8 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: int = 10, ma
     images = []
     for k in frames:
         pose = trace.pose[k]
-        trail.set_data(trace.pose[: k + 1, 0], trace.pose[: k + 1, 1])
+        trail.set_segments(segments[:k])
+        trail.set_color(colours[:k])
         body.center = pose[:2]
         tip = pose[:2] + 2 * trace.robot_radius * np.array([np.cos(pose[2]), np.sin(pose[2])])
         heading.set_data([pose[0], tip[0]], [pose[1], tip[1]])
@@ -66,7 +74,6 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: int = 10, ma
         images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy()))
     palette = images[-1].quantize(colors=64)  # one palette, from the busiest frame (the whole trail)
     images = [image.quantize(palette=palette, dither=Image.Dither.NONE) for image in images]
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    images[0].save(str(path), format="GIF", save_all=True, append_images=images[1:],
-                   duration=int(round(1000 / fps)), loop=0)
+    atomic_write(path, lambda handle: images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],
+                                                     duration=max(10, int(round(1000 / fps))), loop=0))
     return len(frames)

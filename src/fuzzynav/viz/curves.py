@@ -4,7 +4,7 @@
 several seeds (a 2-D array, episodes × seeds), the mean over seeds with a min–max band; a dashed
 vertical line marks the convergence episode — ``converged_at`` when the caller has it (a training
 phase's own count, under its task's criterion), else :func:`fuzzynav.learn.curves.episodes_to_converge`
-with its defaults on the seed mean. Uses the non-interactive Agg backend; returns the figure.
+with its defaults on the seed mean; a count past the curve is written "not converged within N episodes". Uses the non-interactive Agg backend; returns the figure.
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from fuzzynav.storage import savefig_atomic
 from fuzzynav.errors import InputError  # noqa: E402
 from fuzzynav.learn.curves import episodes_to_converge, moving_average  # noqa: E402
 
@@ -47,6 +48,8 @@ def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, lab
         if converged <= values.shape[0]:
             ax.axvline(converged, linestyle="--", color="k", linewidth=0.8,
                        label=f"converged: episode {converged}")
+        else:
+            ax.plot([], [], " ", label=f"not converged within {values.shape[0]} episodes")
     ax.set_xlabel("episodes")
     ax.set_ylabel(ylabel)
     ax.set_title(title)
@@ -54,5 +57,5 @@ def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, lab
     ax.legend(loc="lower right", fontsize="small")
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=120, bbox_inches="tight")
+        savefig_atomic(figure, path, dpi=120, bbox_inches="tight")
     return figure

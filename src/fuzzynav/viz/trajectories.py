@@ -2,12 +2,13 @@
 
 - :func:`draw_world`: boundary, obstacles, start pose, goal (with its tolerance), path
   waypoints or the moving target's course.
-- :func:`plot_trajectory`: the driven path coloured by active behaviour, with the points where
-  the behaviour changes lettered A, B, C… as in Fig IV.15 (changes closer than 0.5 m and 1 s to
-  the previous marker share it: :func:`merged_changes`), the robot footprint at the end, and
-  optionally the sensor rays every few steps.
+- :func:`plot_trajectory`: the driven path coloured by active behaviour (one colour per behaviour
+  in every figure, :mod:`fuzzynav.viz.palette`, with a legend saying what each code means), with
+  the points where the behaviour changes lettered A, B, C… as in Fig IV.15 (changes closer than
+  0.5 m and 1 s to the previous marker share it: :func:`merged_changes`), the robot footprint at
+  the end, and optionally the sensor rays every few steps, in a colour of their own.
 - :func:`plot_commands`: steering α and speed V_r against time (Fig IV.14).
-- :func:`plot_episode`: both side by side, saved to a PNG.
+- :func:`plot_episode`: both side by side, saved to a PNG (:func:`save_figure`).
 
 Figures are built with :class:`matplotlib.figure.Figure` (no pyplot state, no GUI backend).
 """
@@ -15,19 +16,19 @@ Figures are built with :class:`matplotlib.figure.Figure` (no pyplot state, no GU
 from __future__ import annotations
 
 import string
-from pathlib import Path
 
 import numpy as np
 from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
+from fuzzynav.storage import savefig_atomic
 from fuzzynav.sim.trace import Trace
+from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.shapes import Circle, Ellipse
 
 OBSTACLE_STYLE = {"facecolor": "0.55", "edgecolor": "0.2", "linewidth": 0.8}
-BEHAVIOUR_COLOURS = ("tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown", "tab:pink")
 
 
 def change_labels(n: int) -> list[str]:
@@ -67,16 +68,16 @@ def draw_world(ax, scenario: Scenario, trace: Trace | None = None) -> None:
                 arrowprops={"arrowstyle": "->", "color": "k"})
     if scenario.goal is not None:
         gx, gy = scenario.goal.position
-        ax.add_patch(patches.Circle((gx, gy), scenario.goal.tolerance, fill=False, edgecolor="tab:green"))
-        ax.plot(gx, gy, "*", color="tab:green", markersize=12, label="goal")
+        ax.add_patch(patches.Circle((gx, gy), scenario.goal.tolerance, fill=False, edgecolor=GOAL_COLOUR))
+        ax.plot(gx, gy, "*", color=GOAL_COLOUR, markersize=12, label="goal")
     if scenario.path is not None:
         w = scenario.path.waypoints
         ax.plot(w[:, 0], w[:, 1], "--", color="0.3", linewidth=1.0, label="path")
         ax.plot(w[:, 0], w[:, 1], "o", color="0.3", markersize=3)
     if scenario.target is not None:
         course = trace.target if trace is not None else scenario.target.motion.position(np.array([0.0]))
-        ax.plot(course[:, 0], course[:, 1], ":", color="tab:green", linewidth=1.2, label="target")
-        ax.plot(course[-1, 0], course[-1, 1], "*", color="tab:green", markersize=12)
+        ax.plot(course[:, 0], course[:, 1], ":", color=GOAL_COLOUR, linewidth=1.2, label="target's course")
+        ax.plot(course[-1, 0], course[-1, 1], "*", color=GOAL_COLOUR, markersize=12)
     ax.set_xlim(-0.5, world.width + 0.5)
     ax.set_ylim(-0.5, world.height + 0.5)
     ax.set_aspect("equal")
@@ -93,34 +94,38 @@ def sensor_segments(pose, angles, ranges) -> np.ndarray:
 
 def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = False, ray_every: int = 20,
                     markers: bool = True):
-    """Trajectory of ``trace`` on the world; returns the axes."""
+    """Trajectory of ``trace`` on the world; returns the axes. The legend, below the axes, names
+    each behaviour's code and meaning and what the letters mark."""
     if ax is None:
-        ax = Figure(figsize=(6, 6)).add_subplot(111)
+        ax = Figure(figsize=(6, 7), layout="constrained").add_subplot(111)
     draw_world(ax, scenario, trace)
     xy = trace.pose[:, :2]
-    labels = list(dict.fromkeys(trace.behaviour))  # behaviours in order of first use
+    labels = sorted(dict.fromkeys(trace.behaviour), key=legend_order)  # the legend lists them in one order
     if len(labels) > 1 or (labels and labels[0]):
-        colour = {b: BEHAVIOUR_COLOURS[i % len(BEHAVIOUR_COLOURS)] for i, b in enumerate(labels)}
+        style = {b: behaviour_style(str(b)) for b in labels}
         segments = np.stack([xy[:-1], xy[1:]], axis=1)
-        ax.add_collection(LineCollection(segments, colors=[colour[b] for b in trace.behaviour], linewidths=1.8))
+        ax.add_collection(LineCollection(segments, colors=[style[b][0] for b in trace.behaviour], linewidths=1.8))
         for b in labels:
-            ax.plot([], [], color=colour[b], label=b or "(none)")
+            ax.plot([], [], color=style[b][0], linewidth=1.8, label=style[b][1])
     else:
-        ax.plot(xy[:, 0], xy[:, 1], color="tab:blue", linewidth=1.8, label="robot")
+        ax.plot(xy[:, 0], xy[:, 1], color=behaviour_style("")[0], linewidth=1.8, label="robot")
     if rays:
         for k in range(0, len(trace.pose), max(1, ray_every)):
             segs = sensor_segments(trace.pose[k], trace.sensor_angles, trace.ranges[k])
-            ax.add_collection(LineCollection(segs, colors="tab:orange", linewidths=0.5, alpha=0.6))
+            ax.add_collection(LineCollection(segs, colors=RAY_COLOUR, linewidths=0.6, alpha=0.7))
+        ax.plot([], [], color=RAY_COLOUR, linewidth=0.6, label=f"range sensors, every {max(1, ray_every)} steps")
     if markers:
         changes = merged_changes(trace)
         for name, k in zip(change_labels(len(changes)), changes):
             ax.plot(*xy[k], "k.", markersize=5)
             ax.annotate(name, xy[k], xytext=(4, 4), textcoords="offset points", fontsize=9, weight="bold")
+        if changes:
+            ax.plot([], [], "k.", markersize=5, label=CHANGE_LEGEND)
     end = trace.pose[-1]
     colour = "tab:red" if trace.collision else "k"
     ax.add_patch(patches.Circle(end[:2], trace.robot_radius, fill=False, edgecolor=colour))
     ax.set_title(f"{trace.scenario} — {trace.controller}: {trace.outcome} at t = {trace.time:.1f} s", fontsize=9)
-    ax.legend(loc="upper left", fontsize=7, framealpha=0.8)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=1, fontsize=7.5, frameon=False)
     return ax
 
 
@@ -143,11 +148,17 @@ def plot_commands(trace: Trace, axes=None):
 
 def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = False) -> Figure:
     """Trajectory (left) and commands (right) in one figure; saved to ``path`` (PNG) if given."""
-    figure = Figure(figsize=(12, 6), layout="constrained")
+    figure = Figure(figsize=(12, 7.5), layout="constrained")
     left, right = figure.subfigures(1, 2, width_ratios=[1.1, 1.0])
     plot_trajectory(trace, scenario, left.add_subplot(111), rays=rays)
     plot_commands(trace, right.subplots(2, 1, sharex=True))
     if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(path, dpi=110)
+        save_figure(figure, path)
     return figure
+
+
+def save_figure(figure: Figure, path, dpi: int = 110) -> str:
+    """Save ``figure`` to ``path`` (its folder created), cropped to everything drawn — the
+    legends below the axes included; returns the path as a string."""
+    savefig_atomic(figure, path, dpi=dpi, bbox_inches="tight")
+    return str(path)

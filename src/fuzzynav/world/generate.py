@@ -1,10 +1,15 @@
-"""Seeded random worlds for benchmarking navigators (issue 3, "How we will know").
+"""Seeded random worlds for benchmarking navigators (``fuzzynav evaluate``).
 
-Two families on the thesis' 20 m × 20 m workspace:
+Four families on the thesis' 20 m × 20 m workspace:
 
 - ``"circles"`` — 8 to 14 discs of radius 0.4–1.4 m, the obstacles of Table IV.2 / Fig IV.15;
 - ``"mixed"`` — 8 to 12 obstacles drawn among circles, convex polygons, walls (thick segments,
-  2–6 m long) and ellipses, the shapes of §IV.7 / Fig IV.22.
+  2–6 m long) and ellipses, the shapes of §IV.7 / Fig IV.22;
+- ``"dense"`` — the shapes of ``mixed``, 14 to 20 drawn (as in every family, those within 1.5 m
+  of the start or the goal are dropped: 12 to 20 remain);
+- ``"utrap"`` — a U-shaped trap of three walls (opening 3–5 m wide, 2–4 m deep) across the line
+  from the start to the goal, its opening towards the start (the local minimum of reactive
+  navigation, Fig IV.23's U-wall), plus 2 to 5 discs.
 
 Start and goal are at least 10 m apart, ≥ 2.5 m from the boundary walls and ≥ 1.5 m from every
 obstacle; the start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
@@ -27,7 +32,7 @@ from fuzzynav.world.scenario import Scenario, scenario_from_dict
 from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall
 from fuzzynav.world.world import World
 
-KINDS = ("circles", "mixed")
+KINDS = ("circles", "mixed", "dense", "utrap")  # append only: the index seeds each family
 WIDTH = HEIGHT = 20.0
 MIN_START_GOAL = 10.0  # m between start and goal
 POINT_CLEARANCE = 1.5  # m of free space around start and goal
@@ -66,8 +71,28 @@ def _ellipse(rng):
 
 
 _CLASSES = {"circle": Circle, "polygon": Polygon, "wall": Wall, "ellipse": Ellipse}
-_MAKERS = {"circles": (_circle,), "mixed": (_circle, _polygon, _wall, _ellipse)}
-_COUNTS = {"circles": (8, 14), "mixed": (8, 12)}
+def _u_trap(rng, start, goal) -> list[dict]:
+    """Three walls forming a U across the start–goal line, its opening towards the start."""
+    direction = (goal - start) / np.hypot(*(goal - start))
+    normal = np.array([-direction[1], direction[0]])
+    width, depth = rng.uniform(3.0, 5.0), rng.uniform(2.0, 4.0)
+    back_centre = start + rng.uniform(0.6, 0.75) * np.hypot(*(goal - start)) * direction
+    corners = [back_centre + side * width / 2 * normal for side in (-1, 1)]
+    mouths = [corner - depth * direction for corner in corners]
+    segments = [(corners[0], corners[1]), (corners[0], mouths[0]), (corners[1], mouths[1])]
+    return [{"wall": {"start": np.clip(a, 0.5, 19.5).round(2).tolist(), "end": np.clip(b, 0.5, 19.5).round(2).tolist(),
+                      "thickness": 0.3}} for a, b in segments]
+
+
+_MAKERS = {"circles": (_circle,), "mixed": (_circle, _polygon, _wall, _ellipse),
+           "dense": (_circle, _polygon, _wall, _ellipse), "utrap": (_circle,)}
+_COUNTS = {"circles": (8, 14), "mixed": (8, 12), "dense": (14, 20), "utrap": (2, 5)}
+
+
+def _clear_of(shapes: list[dict], start, goal) -> bool:
+    """True when every shape keeps ``POINT_CLEARANCE`` from the start and the goal."""
+    shapes = [_CLASSES[kind](**params) for shape in shapes for kind, params in shape.items()]
+    return bool((World(WIDTH, HEIGHT, tuple(shapes)).nearest_obstacle(np.array([start, goal]))[0] >= POINT_CLEARANCE).all())
 
 
 def free_space(world: World, radius: float) -> tuple[np.ndarray, np.ndarray]:
@@ -103,12 +128,13 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
             start, goal = rng.uniform(BORDER, WIDTH - BORDER, (2, 2))
             if np.hypot(*(goal - start)) >= MIN_START_GOAL:
                 break
-        obstacles = []
+        obstacles = _u_trap(rng, start, goal) if kind == "utrap" else []
+        if obstacles and not _clear_of(obstacles, start, goal):
+            continue
         for _ in range(int(rng.integers(lo, hi + 1))):
             shape = makers[int(rng.integers(len(makers)))](rng)
             (kind_key, params), = shape.items()
-            alone = World(WIDTH, HEIGHT, (_CLASSES[kind_key](**params),))
-            if (alone.nearest_obstacle(np.array([start, goal]))[0] >= POINT_CLEARANCE).all():
+            if _clear_of([shape], start, goal):
                 obstacles.append(shape)
         document = {
             "name": name,
@@ -125,12 +151,27 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
     raise RuntimeError(f"no solvable {kind} world in {MAX_DRAWS} draws")  # pragma: no cover - never seen
 
 
+def generate_world(kind: str, seed: int, i: int, **options) -> Scenario:
+    """World ``i`` of :func:`generate_worlds` ``(kind, n, seed)`` for any ``n > i``, drawn alone."""
+    if kind not in KINDS:
+        raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
+    child = np.random.SeedSequence([int(seed), KINDS.index(kind)], spawn_key=(int(i),))
+    return random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
+
+
 def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenario]:
     """``n`` solvable worlds of family ``kind``; world ``i`` depends only on ``(kind, seed, i)``."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
     if int(n) < 1:
         raise InputError(f"must be >= 1, got {n!r}", field="--n")
-    children = np.random.SeedSequence([int(seed), KINDS.index(kind)]).spawn(int(n))
-    return [random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
-            for i, child in enumerate(children)]
+    return [generate_world(kind, seed, i, **options) for i in range(int(n))]
+
+
+def generated_world(name: str) -> Scenario | None:
+    """World ``i`` of ``generate_worlds(kind, n, seed)`` from its name ``<kind>-<seed>-<i>`` (as
+    ``fuzzynav evaluate`` names them), or ``None`` when ``name`` is not such a name."""
+    parts = name.rsplit("-", 2)
+    if len(parts) != 3 or parts[0] not in KINDS or not (parts[1].isdigit() and parts[2].isdigit()):
+        return None
+    return generate_world(parts[0], int(parts[1]), int(parts[2]))

@@ -1,4 +1,4 @@
-"""Motions of a moving target, SPEC §4.4 / thesis §V.5 (Figs V.29–V.34).
+"""Motions of a moving target, thesis §V.5 (Figs V.29–V.34).
 
 The target starts at its scenario position p0 and moves along a straight line, a circle or a
 sinusoid; its position (and velocity) are known at all times. Every motion is a closed-form

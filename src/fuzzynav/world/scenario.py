@@ -1,10 +1,12 @@
-"""Scenario files: world, robot start and task, validated (issue 3; schema in docs/ARCHITECTURE.md).
+"""Scenario files: world, robot start and task, validated (schema in docs/ARCHITECTURE.md).
 
 ```yaml
 name: fig-IV-15a                      # optional (default: the file name)
 description: one line for `fuzzynav scenarios`   # optional
 world: {width: 20.0, height: 20.0}    # optional, default 20 x 20; origin bottom-left
 robot: {x: 1.0, y: 1.0, theta: 0.0}   # metres, radians CCW from +x (theta optional, 0)
+# optional robot keys (defaults: robot.tricycle.TricycleParams): radius (footprint disc, 0.3 m),
+# wheelbase (0.5 m), max_steering (π/4 rad), max_speed (4 m/s), max_reverse_speed (0.5 m/s; 0: no reverse)
 goal: {x: 18.0, y: 18.0, tolerance: 0.3}
 obstacles:
   - circle: {center: [5, 5], radius: 1.0}
@@ -16,34 +18,36 @@ controllers: [fuzzy-2b]               # optional: the controllers the thesis run
 sensors: lidar                        # optional: thesis | beam | lidar (default: the controller's ring)
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
-two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, SPEC
+two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, thesis
 §4, default 0.5 m), ``path_switching`` (``passed``, the default: a waypoint is also left once the
 robot is past it; ``zone``: the thesis' tolerance zone only; :mod:`fuzzynav.sim.tasks`) and
 ``speed`` (the constant tracking speed, default 1 m/s, at most the robot's 4 m/s), or ``target: {x, y, tolerance, motion: {type: static |
-line | circle | sinusoid, ...}}`` (SPEC §4.4, parameters in :mod:`fuzzynav.world.motion`).
+line | circle | sinusoid, ...}}`` (thesis §V.5, parameters in :mod:`fuzzynav.world.motion`).
 
 Every problem raises :class:`~fuzzynav.errors.InputError` naming the file, the field (e.g.
 ``obstacles[2].circle.radius``) and what is wrong; unknown keys get the closest known key as a
-hint. YAML is read with ``yaml.safe_load`` semantics (plus a duplicate-key check and YAML 1.2's
-``1e3`` floats: :mod:`fuzzynav.yaml_loader`).
+hint. YAML is read safely by the YAML 1.2 rules (:mod:`fuzzynav.yaml_loader`: ``1:20`` is not
+80, ``1e3`` is a float, duplicate keys refused); every value is bounded by the documented limits
+of :mod:`fuzzynav.world.limits` (``docs/limits.md``), and a goal the robot's body can never reach
+or an obstacle wholly outside the world is refused.
 """
 
 from __future__ import annotations
 
 import difflib
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
-import yaml
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
+from fuzzynav.world import limits
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
 from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
 from fuzzynav.world.world import World
-from fuzzynav.yaml_loader import load_yaml
 
 BUILTIN_DIR = Path(__file__).with_name("scenarios")
 DEFAULT_MAX_TIME = 120.0
@@ -54,6 +58,7 @@ PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.
 
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
             "target", "obstacles", "max_time", "controllers", "sensors")
+ROBOT_KEYS = ("radius", "wheelbase", "max_steering", "max_speed", "max_reverse_speed")  # TricycleParams fields
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
     "polygon": {"points": None},
@@ -72,7 +77,7 @@ class Goal:
 
 @dataclass(frozen=True)
 class PathTask:
-    """Path tracking (SPEC §4): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s) and
+    """Path tracking (thesis §V.2): waypoints ``(n, 2)``, tolerance zone (m), constant speed (m/s) and
     waypoint switching rule (``passed`` | ``zone``, :mod:`fuzzynav.sim.tasks`)."""
 
     waypoints: np.ndarray
@@ -83,7 +88,7 @@ class PathTask:
 
 @dataclass(frozen=True)
 class TargetTask:
-    """Moving-target pursuit (SPEC §4.4): captured when within ``tolerance`` (m) of the target."""
+    """Moving-target pursuit (thesis §V.5): captured when within ``tolerance`` (m) of the target."""
 
     motion: TargetMotion
     tolerance: float = DEFAULT_GOAL_TOLERANCE
@@ -91,7 +96,8 @@ class TargetTask:
 
 @dataclass(frozen=True)
 class Scenario:
-    """A validated scenario: the world, the robot's start pose ``(3,)`` and exactly one task."""
+    """A validated scenario: the world, the robot's start pose ``(3,)`` and exactly one task;
+    ``robot`` holds the robot's size and limits (the simulator's default parameters)."""
 
     name: str
     world: World
@@ -103,6 +109,7 @@ class Scenario:
     description: str = ""
     source: str | None = None
     controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
+    robot: TricycleParams = field(default=DEFAULT_PARAMS)
     sensors: str | None = None  # the sensor ring by name (fuzzynav.robot.sensors.RINGS); None: the controller's
 
     @property
@@ -115,12 +122,12 @@ class Scenario:
         doc: dict = {"name": self.name}
         if self.description:
             doc["description"] = self.description
-        if self.controllers:
-            doc["controllers"] = list(self.controllers)
-        if self.sensors is not None:
-            doc["sensors"] = self.sensors
+        doc.update({"controllers": list(self.controllers)} if self.controllers else {})
+        doc.update({"sensors": self.sensors} if self.sensors is not None else {})
         doc["world"] = {"width": self.world.width, "height": self.world.height}
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
+        doc["robot"].update({key: getattr(self.robot, key) for key in ROBOT_KEYS
+                             if getattr(self.robot, key) != getattr(DEFAULT_PARAMS, key)})
         if self.goal is not None:
             doc["goal"] = {"x": float(self.goal.position[0]), "y": float(self.goal.position[1]),
                            "tolerance": self.goal.tolerance}
@@ -143,78 +150,83 @@ class Scenario:
 
 
 class _Checker:
-    """Type and value checks that raise InputError naming the source and the field."""
+    """The checks of :mod:`fuzzynav.validation` bound to one source file, with the scenario's
+    ranges (:mod:`fuzzynav.world.limits`)."""
 
     def __init__(self, source: str):
         self.source = source
 
     def fail(self, field: str, problem: str):
-        raise InputError(problem, source=self.source, field=field)
+        validation.fail(problem, self.source, field)
 
     def mapping(self, value, field: str, known, required=()) -> dict:
-        if not isinstance(value, dict):
-            self.fail(field, f"must be a mapping, got {type(value).__name__}")
-        for key in value:
-            if not isinstance(key, str) or key not in known:
-                close = difflib.get_close_matches(str(key), list(known), n=1)
-                hint = f" (did you mean {close[0]!r}?)" if close else ""
-                self.fail(f"{field}.{key}" if field else str(key),
-                          f"unknown key {key!r}{hint}; known: {', '.join(known)}")
-        for key in required:
-            if key not in value:
-                self.fail(f"{field}.{key}" if field else key, "missing")
-        return value
+        return validation.known_keys(value, known, self.source, field, required=required)
 
     def number(self, value, field: str, positive: bool = False) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            self.fail(field, f"must be a number, got {type(value).__name__} {value!r}")
-        if not math.isfinite(value):
-            self.fail(field, f"must be finite, got {value!r}")
-        if positive and value <= 0:
-            self.fail(field, f"must be > 0, got {value!r}")
-        return float(value)
+        """A length (m, :func:`~fuzzynav.world.limits.length`) when ``positive``, else a coordinate."""
+        return (limits.length if positive else limits.coordinate)(value, self.source, field)
 
     def point(self, value, field: str, positive: bool = False) -> np.ndarray:
         if not isinstance(value, (list, tuple)) or len(value) != 2:
-            self.fail(field, f"must be a list of two numbers [x, y], got {value!r}")
+            self.fail(field, f"must be a list of two numbers [x, y], got {validation._shown(value)}")
         return np.array([self.number(v, f"{field}[{i}]", positive) for i, v in enumerate(value)])
 
-    def points(self, value, field: str, minimum: int) -> np.ndarray:
-        if not isinstance(value, (list, tuple)):
-            self.fail(field, f"must be a list of [x, y] points, got {type(value).__name__}")
-        if len(value) < minimum:
-            self.fail(field, f"needs at least {minimum} points, got {len(value)}")
-        return np.array([self.point(v, f"{field}[{i}]") for i, v in enumerate(value)])
+    def points(self, value, field: str, minimum: int, maximum: int) -> np.ndarray:
+        items = validation.sequence(value, self.source, field)
+        if len(items) < minimum:
+            self.fail(field, f"needs at least {minimum} points, got {len(items)}")
+        if len(items) > maximum:
+            self.fail(field, f"at most {maximum} points (docs/limits.md), got {len(items)}")
+        return np.array([self.point(v, f"{field}[{i}]") for i, v in enumerate(items)])
 
     def text(self, value, field: str) -> str:
-        if not isinstance(value, str):
-            self.fail(field, f"must be a string, got {type(value).__name__}")
-        return value
+        return validation.text(value, self.source, field, max_length=1000)
 
 
 def _shape(check: _Checker, entry, field: str):
     if not isinstance(entry, dict) or len(entry) != 1:
         check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPE_KEYS))
-    (kind, params), = entry.items()
-    check.mapping(entry, field, SHAPE_KEYS)
+    (kind, params), = check.mapping(entry, field, SHAPE_KEYS).items()
     keys = SHAPE_KEYS[kind]
     f = f"{field}.{kind}"
     params = check.mapping(params, f, keys, required=[k for k, v in keys.items() if v is None])
     get = {k: params.get(k, default) for k, default in keys.items()}
-    if kind == "circle":
-        return Circle(check.point(get["center"], f"{f}.center"), check.number(get["radius"], f"{f}.radius", True))
-    if kind == "ellipse":
-        return Ellipse(check.point(get["center"], f"{f}.center"), check.point(get["radii"], f"{f}.radii", True),
-                       check.number(get["angle"], f"{f}.angle"))
-    if kind == "wall":
-        start, end = check.point(get["start"], f"{f}.start"), check.point(get["end"], f"{f}.end")
-        if np.array_equal(start, end):
-            check.fail(f"{f}.end", "must differ from start (zero-length wall)")
-        return Wall(start, end, check.number(get["thickness"], f"{f}.thickness", True))
-    points = check.points(get["points"], f"{f}.points", 3)
-    if polygon_self_intersects(points):
-        check.fail(f"{f}.points", "polygon is self-intersecting (or has repeated points / zero area)")
-    return Polygon(points)
+    try:
+        if kind == "circle":
+            return Circle(check.point(get["center"], f"{f}.center"), check.number(get["radius"], f"{f}.radius", True))
+        if kind == "ellipse":
+            return Ellipse(check.point(get["center"], f"{f}.center"), check.point(get["radii"], f"{f}.radii", True),
+                           limits.angle(get["angle"], check.source, f"{f}.angle"))
+        if kind == "wall":
+            return Wall(check.point(get["start"], f"{f}.start"), check.point(get["end"], f"{f}.end"),
+                        check.number(get["thickness"], f"{f}.thickness", True))
+        points = check.points(get["points"], f"{f}.points", 3, limits.MAX_POLYGON_VERTICES)
+        if polygon_self_intersects(points):
+            check.fail(f"{f}.points", "polygon is self-intersecting (or has repeated points / zero area)")
+        return Polygon(points)
+    except InputError as error:
+        if error.source:
+            raise
+        check.fail(f"{f}.{error.field}", error.problem)
+
+
+def _reachable(check: _Checker, world: World, point, tolerance: float, radius: float, field: str, what: str):
+    """Some centre within ``tolerance`` of ``point`` keeps the robot's body (a disc of ``radius``)
+    inside the world and off the nearest obstacle; otherwise the task can never be done."""
+    x, y = point
+    lo_x, hi_x, lo_y, hi_y = radius, world.width - radius, radius, world.height - radius
+    if lo_x > hi_x or lo_y > hi_y:
+        check.fail("world", f"the {world.width:g} x {world.height:g} m world is smaller than the robot "
+                            f"(radius {radius:g} m)")
+    gap = math.hypot(x - min(max(x, lo_x), hi_x), y - min(max(y, lo_y), hi_y))
+    if gap >= tolerance:
+        check.fail(field, f"{what} ({x:g}, {y:g}) cannot be reached within its tolerance {tolerance:g} m: the "
+                          f"robot (radius {radius:g} m) cannot come closer than {gap:g} m at the world boundary")
+    if world.obstacles:
+        dist, _, index = world.nearest_obstacle(np.asarray(point, dtype=float).reshape(1, 2))
+        if dist[0] + tolerance < radius:
+            check.fail(field, f"{what} ({x:g}, {y:g}) cannot be reached within its tolerance {tolerance:g} m: "
+                              f"obstacles[{index[0]}] keeps the robot (radius {radius:g} m) away")
 
 
 def _place(check: _Checker, world: World, point, field: str, what: str, radius: float = 0.0):
@@ -237,7 +249,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
                        robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
     """Validate a parsed scenario document and build the :class:`Scenario`.
 
-    ``robot_radius`` is the footprint that must fit at the start pose (default: the robot's).
+    ``robot_radius`` is the footprint that must fit at the start pose when the document's
+    ``robot`` gives no ``radius`` (default: the default robot's).
     """
     check = _Checker(source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
@@ -250,17 +263,18 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             check.fail(key, "only allowed with a path task")
 
     world_doc = check.mapping(doc.get("world", {}), "world", ("width", "height"))
-    width = check.number(world_doc.get("width", 20.0), "world.width", True)
-    height = check.number(world_doc.get("height", 20.0), "world.height", True)
-    obstacles_doc = doc.get("obstacles", []) or []
-    if not isinstance(obstacles_doc, list):
-        check.fail("obstacles", f"must be a list, got {type(obstacles_doc).__name__}")
-    world = World(width, height, tuple(_shape(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc)))
+    width, height = limits.world_size(world_doc.get("width", 20.0), world_doc.get("height", 20.0), source)
+    obstacles_doc = validation.sequence(doc.get("obstacles", []) or [], source, "obstacles",
+                                        max_length=limits.MAX_OBSTACLES)
+    obstacles = tuple(_shape(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc))
+    limits.world_contents(obstacles, width, height, source)
+    world = World(width, height, obstacles)
 
-    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta"), required=("x", "y"))
+    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS), required=("x", "y"))
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
-                      check.number(robot.get("theta", 0.0), "robot.theta")])
-    _place(check, world, start[:2], "robot", "start", robot_radius)
+                      limits.angle(robot.get("theta", 0.0), source, "robot.theta")])
+    robot_limits = _robot_params(check, robot)
+    _place(check, world, start[:2], "robot", "start", robot_limits.radius if "radius" in robot else robot_radius)
 
     goal = path = target = None
     if "goal" in doc:
@@ -268,18 +282,18 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         position = np.array([check.number(g["x"], "goal.x"), check.number(g["y"], "goal.y")])
         _place(check, world, position, "goal", "goal")
         goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
+        _reachable(check, world, position, goal.tolerance, robot_radius, "goal", "goal")
     elif "path" in doc:
-        waypoints = check.points(doc["path"], "path", 2)
+        waypoints = check.points(doc["path"], "path", 2, limits.MAX_WAYPOINTS)
         for i, waypoint in enumerate(waypoints):
             _place(check, world, waypoint, f"path[{i}]", "waypoint")
             if i and np.array_equal(waypoint, waypoints[i - 1]):
                 check.fail(f"path[{i}]", f"repeats path[{i - 1}] (zero-length segment)")
         speed = check.number(doc.get("speed", DEFAULT_PATH_SPEED), "speed", True)
-        if speed > DEFAULT_PARAMS.max_speed:
-            check.fail("speed", f"must be at most the robot's {DEFAULT_PARAMS.max_speed:g} m/s, got {speed:g}")
-        switching = doc.get("path_switching", PATH_SWITCHING[0])
-        if switching not in PATH_SWITCHING:
-            check.fail("path_switching", f"must be one of {', '.join(PATH_SWITCHING)}, got {switching!r}")
+        if speed > robot_limits.max_speed:
+            check.fail("speed", f"must be at most the robot's {robot_limits.max_speed:g} m/s, got {speed:g}")
+        switching = validation.choice(doc.get("path_switching", PATH_SWITCHING[0]), PATH_SWITCHING, source,
+                                      "path_switching")
         path = PathTask(waypoints,
                         check.number(doc.get("path_tolerance", DEFAULT_PATH_TOLERANCE), "path_tolerance", True),
                         speed, switching)
@@ -291,7 +305,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         if not isinstance(motion_doc, dict) or "type" not in motion_doc:
             check.fail("target.motion.type", "missing (one of: " + ", ".join(MOTION_PARAMS) + ")")
         kind = motion_doc["type"]
-        if kind not in MOTION_PARAMS:
+        if not isinstance(kind, str) or kind not in MOTION_PARAMS:
             close = difflib.get_close_matches(str(kind), list(MOTION_PARAMS), n=1)
             hint = f" (did you mean {close[0]!r}?)" if close else ""
             check.fail("target.motion.type", f"unknown motion {kind!r}{hint}; known: {', '.join(MOTION_PARAMS)}")
@@ -300,10 +314,19 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         values = {}
         for key in params:
             field = f"target.motion.{key}"
-            if key in ("velocity", "center"):
+            if key == "center":
                 values[key] = check.point(motion_doc[key], field)
+            elif key == "velocity":
+                values[key] = np.array(validation.numbers(motion_doc[key], source, field, length=2,
+                                                          lo=-limits.MAX_TARGET_SPEED, hi=limits.MAX_TARGET_SPEED))
+            elif key == "speed":
+                values[key] = validation.number(motion_doc[key], source, field, lo=-limits.MAX_TARGET_SPEED,
+                                                hi=limits.MAX_TARGET_SPEED)
+            elif key == "period":
+                values[key] = validation.number(motion_doc[key], source, field, lo=0.0, lo_open=True,
+                                                hi=limits.MAX_TIME)
             else:
-                values[key] = check.number(motion_doc[key], field, positive=key == "period")
+                values[key] = check.number(motion_doc[key], field, positive=key != "amplitude")
         if kind == "circle" and np.allclose(values["center"], position):
             check.fail("target.motion.center", "must differ from the target start (zero radius)")
         target = TargetTask(TargetMotion(type=kind, start=position, **values),
@@ -316,42 +339,40 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         goal=goal,
         path=path,
         target=target,
-        max_time=check.number(doc.get("max_time", DEFAULT_MAX_TIME), "max_time", True),
+        max_time=validation.number(doc.get("max_time", DEFAULT_MAX_TIME), source, "max_time", lo=0.0, lo_open=True,
+                                   hi=limits.MAX_TIME),
         description=check.text(doc.get("description", ""), "description"),
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
-        sensors=_sensor_ring(check, doc.get("sensors")),
+        robot=robot_limits,
+        sensors=limits.sensor_ring(doc.get("sensors"), source),
     )
 
 
-def _sensor_ring(check: _Checker, name) -> str | None:
-    from fuzzynav.robot.sensors import RINGS
-
-    if name is not None and name not in RINGS:
-        check.fail("sensors", f"unknown sensor ring {name!r}; known: {', '.join(RINGS)}")
-    return name
+def _robot_params(check: _Checker, robot: dict) -> TricycleParams:
+    """The robot's size and limits from the optional keys of ``robot`` (others: the defaults)."""
+    values = {}
+    for key in ROBOT_KEYS:
+        if key in robot:
+            values[key] = check.number(robot[key], f"robot.{key}", positive=key != "max_reverse_speed")
+    if values.get("max_reverse_speed", 0.0) < 0:
+        check.fail("robot.max_reverse_speed", f"must be ≥ 0, got {values['max_reverse_speed']:g}")
+    if values.get("max_steering", 0.0) >= math.pi / 2:
+        check.fail("robot.max_steering", f"must be below π/2 (90°), got {values['max_steering']:g}")
+    return replace(DEFAULT_PARAMS, **values) if values else DEFAULT_PARAMS
 
 
 def _controller_names(check: _Checker, names) -> tuple[str, ...]:
     """The optional ``controllers`` key: a list of controller names (checked when they are run)."""
-    if not isinstance(names, list) or not all(isinstance(name, str) and name for name in names):
+    if not isinstance(names, list) or not all(isinstance(name, str) and 0 < len(name) <= 100 for name in names):
         check.fail("controllers", "must be a list of controller names, e.g. [goal-seeking, fuzzy-5b]")
     return tuple(names)
 
 
 def read_yaml(path: Path):
-    """Parse a YAML file safely; unreadable files raise InputError naming the file (and line)."""
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise InputError(f"cannot read file ({error})", source=str(path)) from None
-    try:
-        return load_yaml(text)
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(error, "problem", None) or str(error)
-        raise InputError(f"unreadable YAML{where}: {problem}", source=str(path)) from None
+    """Parse a YAML file safely and within bounds (:func:`fuzzynav.validation.load_document`):
+    unreadable files raise InputError naming the file (and line)."""
+    return validation.load_document(path, "yaml")
 
 
 def list_scenarios() -> dict[str, str]:

@@ -1,4 +1,4 @@
-"""The world: a rectangle [0, W] × [0, H] bounded by walls, with obstacles (SPEC §0, §3).
+"""The world: a rectangle [0, W] × [0, H] bounded by walls, with obstacles (docs/thesis.md: conventions).
 
 Every figure of the thesis uses a 20 m × 20 m workspace with the origin bottom-left. The shapes
 are packed into one array when the world is built (:func:`fuzzynav.kernels.layout.pack`); every
@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from fuzzynav.kernels import layout
+from fuzzynav.world import limits
 from fuzzynav.world.shapes import Circle, Ellipse, Shape
 
 
@@ -30,6 +31,10 @@ class World:
 
     def __post_init__(self):
         object.__setattr__(self, "obstacles", tuple(self.obstacles))
+        width, height = limits.world_size(self.width, self.height)
+        object.__setattr__(self, "width", width)
+        object.__setattr__(self, "height", height)
+        limits.world_contents(self.obstacles, width, height)
         circles = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Circle)]
         ellipses = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Ellipse)]
         polygons = [(i, s) for i, s in enumerate(self.obstacles) if not isinstance(s, (Circle, Ellipse))]
@@ -79,7 +84,7 @@ class World:
     def ranges(self, poses, angles, max_range: float, noise_std: float = 0.0, rng: np.random.Generator | None = None,
                beam_width: float = 0.0):
         """Range readings ``(N, S)``: rays from each pose's (x, y) at heading θ + angle, cast
-        against every obstacle and the boundary, capped at ``max_range`` (SPEC §3.3).
+        against every obstacle and the boundary, capped at ``max_range`` (thesis §IV.7).
 
         ``noise_std`` > 0 adds Gaussian noise from ``rng`` (required then), clipped to
         [0, max_range]. A ray starting inside an obstacle measures the distance to its surface.

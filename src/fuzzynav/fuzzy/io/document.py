@@ -33,6 +33,7 @@ from __future__ import annotations
 import difflib
 import math
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import make
 from fuzzynav.fuzzy.rules import parse_rule, rules_from_grid
@@ -51,8 +52,10 @@ def _number_out(value: float):
 def _number_in(value, source, field) -> float:
     if isinstance(value, bool):
         raise InputError(f"expected a number, got {value!r}", source=source, field=field)
-    if isinstance(value, (int, float)):
-        return float(value)
+    if isinstance(value, float):
+        return value
+    if isinstance(value, int):  # a 400-digit integer is refused, not an OverflowError
+        return validation.number(value, source, field)
     if isinstance(value, str) and value.strip().lower() in ("inf", "+inf", "-inf", ".inf", "-.inf"):
         return -math.inf if value.strip().startswith("-") else math.inf
     raise InputError(f"expected a number, got {value!r}", source=source, field=field)
@@ -160,12 +163,26 @@ def _rules(doc, inputs, source) -> list:
         cells = _require(grid, "cells", list, source, "rules.grid")
         row_labels = grid.get("row_labels", by_name[names["rows"]].labels)
         column_labels = grid.get("column_labels", by_name[names["columns"]].labels)
+        for key, value in (("outputs", outputs), ("row_labels", row_labels), ("column_labels", column_labels),
+                           ("cells", cells)):
+            _grid_strings(value, key == "cells", source, f"rules.grid.{key}")
         try:
             return rules_from_grid(names["rows"], names["columns"], row_labels, column_labels, cells, outputs,
                                    columns_first=bool(grid.get("columns_first", True)), source=source)
         except InputError as error:
             raise InputError(error.problem, source=source, field=f"rules.grid: {error.field}") from None
     raise InputError("rules must be a list of text rules or {grid: {...}}", source=source, field="rules")
+
+
+def _grid_strings(value, rows: bool, source, field) -> None:
+    """A grid list of labels (strings); with ``rows``, each item a string or a list of strings."""
+    validation.sequence(value, source, field)
+    for i, item in enumerate(value):
+        if rows and isinstance(item, list):
+            for j, cell in enumerate(item):
+                validation.text(cell, source, f"{field}[{i}][{j}]")
+        else:
+            validation.text(item, source, f"{field}[{i}]")
 
 
 def from_document(doc, source: str | None = None) -> FuzzySystem:

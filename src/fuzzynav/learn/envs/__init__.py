@@ -3,7 +3,7 @@
 :class:`~.env.RobotEnv` steps B episodes together on the robot and world layers; the layouts of
 :mod:`.layouts` say where they start; :class:`~.premise.GridPremise` is the fast premise of the
 fuzzy Q-learners. The tasks themselves (which inputs, actions and rewards) are assembled in
-:mod:`fuzzynav.experiments.train_rl`.
+:mod:`fuzzynav.learn.tasks`.
 """
 
 from fuzzynav.learn.envs.env import RobotEnv, RobotState

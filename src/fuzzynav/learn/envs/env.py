@@ -34,8 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fuzzynav.control.learned import goal_inputs, side_distances
-from fuzzynav.robot import tricycle
+from fuzzynav.control.learned import as_column, goal_inputs, side_distances
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world.world import World
@@ -100,6 +99,8 @@ class RobotEnv:
         command keeps steering); the episode may end at any of them; the reward compares the
         states at both ends of the period.
         """
+        import fuzzynav.kernels.motion as motion  # numba, imported when first needed
+
         before = self.state
         now = before
         collided = np.zeros(self.batch, dtype=bool)
@@ -107,12 +108,10 @@ class RobotEnv:
         for _ in range(self.decision_steps):
             live = ~(self.done | collided | reached)
             steering, speed = self.command(action, now)
-            steering, speed = self.params.clip(np.broadcast_to(steering, (self.batch,)),
-                                               np.broadcast_to(speed, (self.batch,)))
-            speed = np.where(live, speed, 0.0)
-            moved = tricycle.step(now.pose, steering, speed, self.params)
-            pose = np.where(live[:, None], moved, now.pose)
-            now = self._state(now.world, pose, speed, steering, now.target)
+            pose, commands = np.empty((self.batch, 3)), np.empty((self.batch, 2))
+            motion.move_live(now.pose, as_column(steering, self.batch), as_column(speed, self.batch), live,
+                             self.params.array(), pose, commands)
+            now = self._state(now.world, pose, commands[:, 1], commands[:, 0], now.target)
             collided |= live & (now.world.clearance(pose[:, :2]) < self.params.radius)
             if now.goal is not None:
                 reached |= live & ~collided & (now.goal[:, 0] <= self.tolerance)

@@ -19,8 +19,9 @@ from fuzzynav.errors import InputError
 class _Interpolated:
     """Membership degrees of one input, gathered for the rules, by interpolation between breakpoints.
 
-    ``columns`` selects, for every rule, the term of this input it names: ``__call__`` returns
-    μ_{t(r)}(x) for every rule r, shape (N, R).
+    ``columns`` selects, for every rule, the term of this input it names: between consecutive
+    breakpoints ``bp`` the degrees of the rules' terms are ``mu[k] + (x − bp[k]) · slope[k]``
+    (each (n_bp − 1, R)), evaluated by :func:`fuzzynav.kernels.learned.grid_strengths`.
     """
 
     def __init__(self, variable, columns):
@@ -29,16 +30,33 @@ class _Interpolated:
         bp = np.array(sorted(inner | {lo, hi}))
         mu = variable.fuzzify(bp, clamp=False)  # (n_bp, n_terms)
         slope = np.diff(mu, axis=0) / np.diff(bp)[:, None]
-        self.lo, self.hi, self.bp, self.inner = lo, hi, bp, bp[1:-1].copy()
+        self.lo, self.hi, self.bp = lo, hi, bp
         self.mu, self.slope = mu[:-1, columns], slope[:, columns]
         mid = 0.5 * (bp[:-1] + bp[1:])
-        if not np.allclose(self(mid), variable.fuzzify(mid, clamp=False)[:, columns], atol=1e-12):
+        if not np.allclose(_strengths([self], mid[:, None]), variable.fuzzify(mid, clamp=False)[:, columns],
+                           atol=1e-12):
             raise InputError(f"input {variable.name!r} is not piecewise linear", field="premise")
 
-    def __call__(self, x):
-        x = np.minimum(np.maximum(x, self.lo), self.hi)
-        k = np.searchsorted(self.inner, x, side="right")
-        return np.take(self.mu, k, axis=0) + (x - np.take(self.bp, k))[:, None] * np.take(self.slope, k, axis=0)
+
+def _pack(inputs) -> tuple:
+    """The kernel's arrays of the inputs' interpolations (padded to the longest breakpoint list)."""
+    size = max(len(p.bp) for p in inputs)
+    n_rules = inputs[0].mu.shape[1]
+    bp = np.zeros((len(inputs), size))
+    mu, slope = np.zeros((len(inputs), size - 1, n_rules)), np.zeros((len(inputs), size - 1, n_rules))
+    for i, p in enumerate(inputs):
+        bp[i, :len(p.bp)], mu[i, :len(p.mu)], slope[i, :len(p.slope)] = p.bp, p.mu, p.slope
+    return (np.array([p.lo for p in inputs], dtype=float), np.array([p.hi for p in inputs], dtype=float), bp,
+            np.array([len(p.bp) - 2 for p in inputs]), mu, slope)
+
+
+def _strengths(inputs, X, packed=None) -> np.ndarray:
+    import fuzzynav.kernels.learned as learned  # numba, imported when first needed
+
+    X = np.ascontiguousarray(X, dtype=float)
+    out = np.empty((X.shape[0], inputs[0].mu.shape[1]))
+    learned.grid_strengths(X, *(packed or _pack(inputs)), out)
+    return out
 
 
 class GridPremise:
@@ -51,13 +69,11 @@ class GridPremise:
         self.system = system
         self.premises = premises
         self.inputs = [_Interpolated(v, premises[:, i]) for i, v in enumerate(system.inputs)]
+        self.packed = _pack(self.inputs)
         self.n_rules = premises.shape[0]
 
     def firing_strengths(self, X, normalise: bool = True) -> np.ndarray:
-        X = np.asarray(X, dtype=float)
-        w = self.inputs[0](X[:, 0])
-        for i in range(1, len(self.inputs)):
-            w *= self.inputs[i](X[:, i])
+        w = _strengths(self.inputs, np.asarray(X, dtype=float).reshape(-1, len(self.inputs)), self.packed)
         if normalise:
             total = w.sum(axis=1, keepdims=True)
             w = np.divide(w, total, out=np.zeros_like(w), where=total > 0)

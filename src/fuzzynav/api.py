@@ -1,0 +1,39 @@
+"""Conveniences of the public Python API that have no home lower down (see :mod:`fuzzynav`).
+
+:func:`train` runs a training task by name, as ``fuzzynav train TASK`` does;
+:func:`list_controllers` and :func:`list_training_tasks` name what
+:func:`fuzzynav.make_controller` and :func:`train` accept.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def list_controllers() -> dict[str, str]:
+    """The built-in controller names with a one-line description each (``fuzzynav run --help``)."""
+    from fuzzynav.catalog.controllers import available
+
+    return available()
+
+
+def list_training_tasks() -> dict[str, str]:
+    """The training task names with a one-line description each (``fuzzynav train --help``)."""
+    from fuzzynav.catalog.tasks import available
+
+    return available()
+
+
+def train(task: str, out: str | Path, *, episodes: int | None = None, seed: int = 0, resume: bool = False,
+          curve: str | Path | None = None, progress: bool = False) -> dict:
+    """Train the learning controller ``task`` (see :func:`list_training_tasks`) and write its model
+    file to ``out``; returns the results (``model`` and what the task measured, e.g.
+    ``converged_at`` per phase). ``episodes`` defaults to the task's own budget; ``curve`` writes
+    the learning-curve plot; :func:`fuzzynav.load_controller` reads the model back.
+    """
+    from fuzzynav.catalog.tasks import trainer
+    from fuzzynav.learn.tasks.common import TrainRequest
+
+    request = TrainRequest(out=Path(out), episodes=episodes, seed=seed, resume=resume,
+                           curve=None if curve is None else Path(curve), progress=progress)
+    return trainer(task)(request)

@@ -1,0 +1,147 @@
+"""A campaign: suites × controllers × seeds, written as it runs, resumable, in a fixed final order.
+
+Files in the output folder:
+
+- ``runs.jsonl`` and ``runs.csv``: one row per run (:data:`COLUMNS`), appended as each cell
+  finishes. An interrupted campaign restarted with ``--resume`` reads ``runs.jsonl`` (a line cut
+  by the interruption is dropped), skips the runs already there and runs the rest; a folder that
+  already holds runs is not overwritten without ``--resume``.
+- At the end both files are rewritten in the campaign's order (suites as given, then seed,
+  world, controller as given), so they are byte-identical whatever the backend, the number of
+  workers, or where an interruption fell; then the reports (:mod:`.report`).
+- ``cache/shortest/``: the shortest path of each world (:mod:`.measures`).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from fuzzynav.bench.backends import execute
+from fuzzynav.bench.cells import Cell
+from fuzzynav.bench.files import write_atomic
+from fuzzynav.bench.suites import Suite
+from fuzzynav.errors import InputError
+
+COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
+           "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",
+           "barn_score")
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What to run: ``suites``, ``controllers`` ((label, spec) pairs), ``seeds`` (count), robot ``radius``."""
+
+    suites: tuple[Suite, ...]
+    controllers: tuple[tuple[str, str], ...]
+    seeds: int
+    radius: float
+
+    def order(self) -> dict[tuple, int]:
+        """Position of every run key (suite, world, seed, controller) in the final files."""
+        keys = {}
+        for suite in self.suites:
+            for seed in range(self.seeds):
+                for index in range(suite.size):
+                    world = suite.world_name(index, seed)
+                    for label, _ in self.controllers:
+                        keys[(suite.name, world, seed, label)] = len(keys)
+        return keys
+
+    def cells(self, done: set, cache_dir: str | None) -> list[Cell]:
+        """The cells with at least one run not in ``done``, each with its missing controllers only."""
+        cells = []
+        for suite in self.suites:
+            for seed in range(self.seeds):
+                for index in range(suite.size):
+                    world = suite.world_name(index, seed)
+                    todo = tuple((label, spec) for label, spec in self.controllers
+                                 if (suite.name, world, seed, label) not in done)
+                    if todo:
+                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir))
+        return cells
+
+
+def key(row: dict) -> tuple:
+    return (row["suite"], row["world"], int(row["seed"]), row["controller"])
+
+
+def _csv_value(value) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def csv_lines(rows) -> str:
+    """The CSV text of ``rows`` (no header), one line each, ``\\n`` line ends."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    for row in rows:
+        writer.writerow([_csv_value(row.get(column)) for column in COLUMNS])
+    return buffer.getvalue()
+
+
+def json_lines(rows) -> str:
+    return "".join(json.dumps({column: row.get(column) for column in COLUMNS}) + "\n" for row in rows)
+
+
+def read_runs(out: Path) -> list[dict]:
+    """The complete rows of ``out/runs.jsonl`` (a cut last line is dropped)."""
+    file = out / "runs.jsonl"
+    if not file.is_file():
+        return []
+    rows = []
+    for line in file.read_text(encoding="utf-8").splitlines():
+        try:
+            row = json.loads(line)
+        except ValueError:
+            continue
+        if isinstance(row, dict) and all(column in row for column in COLUMNS):
+            rows.append(row)
+    return rows
+
+
+def _write_all(out: Path, rows: list[dict]) -> None:
+    write_atomic(out / "runs.jsonl", json_lines(rows))
+    write_atomic(out / "runs.csv", ",".join(COLUMNS) + "\n" + csv_lines(rows))
+
+
+def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
+                 address: str | None = None, progress: bool = True) -> list[dict]:
+    """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
+    out.mkdir(parents=True, exist_ok=True)
+    previous = read_runs(out)
+    if previous and not resume:
+        raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
+                         "another --out", source=str(out), field="--out")
+    rows = {key(row): row for row in previous}
+    _write_all(out, list(rows.values()))  # drop a line cut by an interruption
+    cells = plan.cells(set(rows), str(out / "cache"))
+    total = sum(len(cell.controllers) for cell in cells)
+    from tqdm import tqdm
+
+    bar = tqdm(total=total, unit="run", file=sys.stderr, disable=not progress or not total, dynamic_ncols=True)
+    with open(out / "runs.jsonl", "a", encoding="utf-8") as jsonl, open(out / "runs.csv", "a", encoding="utf-8") as table:
+        def on_rows(new_rows):
+            jsonl.write(json_lines(new_rows))
+            table.write(csv_lines(new_rows))
+            jsonl.flush()
+            table.flush()
+            for row in new_rows:
+                rows[key(row)] = json.loads(json.dumps(row))  # the stored form, as a resume reads it
+            bar.update(len(new_rows))
+
+        try:
+            execute(cells, on_rows, backend=backend, workers=workers, address=address)
+        finally:
+            bar.close()
+    order = plan.order()
+    final = sorted(rows.values(), key=lambda row: (order.get(key(row), len(order)), key(row)))
+    _write_all(out, final)
+    return final

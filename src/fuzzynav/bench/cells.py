@@ -1,0 +1,62 @@
+"""One unit of campaign work, run in a worker: a world under one seed, with every controller
+still to run on it. The world is drawn (or read) and its shortest path computed once, then each
+controller runs one episode. Workers keep their imports, loaded model files and cached shortest
+paths between cells (:data:`_MODELS`, :mod:`.measures`), so a cell costs little beyond its episodes.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+from pathlib import Path
+
+from fuzzynav.bench.measures import run_row, shortest_length
+from fuzzynav.bench.suites import Suite
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.sim import metrics, run_episode
+
+_MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
+MODEL_SUFFIXES = (".json", ".npz")
+
+
+@dataclass(frozen=True)
+class Cell:
+    """World ``index`` of ``suite`` under ``seed``, to run with ``controllers`` ((label, spec)
+    pairs: a registered name or a model file); ``radius`` is the simulated robot's."""
+
+    suite: Suite
+    index: int
+    seed: int
+    controllers: tuple[tuple[str, str], ...]
+    radius: float
+    cache_dir: str | None = None
+
+
+def is_model_file(spec: str) -> bool:
+    """True when a ``--controllers`` entry names a model file rather than a registered controller."""
+    return spec.endswith(MODEL_SUFFIXES)
+
+
+def build_controller(spec: str):
+    """A fresh controller for ``spec`` (registered name, or model file loaded once per process)."""
+    if not is_model_file(spec):
+        return make_controller(spec)
+    if spec not in _MODELS:
+        from fuzzynav.catalog.tasks import load_controller
+
+        _MODELS[spec] = load_controller(Path(spec))
+    return copy.deepcopy(_MODELS[spec])
+
+
+def run_cell(cell: Cell) -> list[dict]:
+    """The rows (runs.csv fields, :mod:`.campaign`) of every controller of ``cell``."""
+    scenario = cell.suite.scenario(cell.index, cell.seed)
+    shortest = shortest_length(scenario, cell.radius, cell.cache_dir)
+    reference = cell.suite.reference(cell.index)
+    rows = []
+    for label, spec in cell.controllers:
+        trace = run_episode(scenario, build_controller(spec), seed=cell.seed)
+        rows.append({"suite": cell.suite.name, "world": cell.suite.world_name(cell.index, cell.seed),
+                     "seed": cell.seed, "controller": label,
+                     **run_row(metrics(trace, scenario), shortest, reference)})
+    return rows

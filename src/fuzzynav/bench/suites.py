@@ -1,0 +1,101 @@
+"""What ``fuzzynav bench SUITE…`` runs on: folders of scenario files and generated families.
+
+A SUITE argument is either
+
+- a folder: every ``*.yaml`` scenario file in it, in name order (``world_10`` after ``world_9``:
+  numbers sort as numbers); a ``benchmark.json`` beside them (written by ``fuzzynav import
+  barn``) adds per-scenario reference data, e.g. BARN's optimal path length for its score;
+- ``FAMILY[:COUNT[:SEED]]`` with FAMILY one of :data:`fuzzynav.world.generate.KINDS` (COUNT
+  default 100, SEED default 0): the solvable worlds of :func:`~fuzzynav.world.generate.generate_world`.
+
+With ``--seeds K``, seed k ∈ 0…K−1 of a generated family draws its own worlds (world seed
+SEED + k) and runs them with episode seed k; a folder's worlds are fixed and run with episode
+seed k (which only matters for noisy sensors or random controllers).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from fuzzynav.errors import InputError
+from fuzzynav.world.generate import KINDS, generate_world
+from fuzzynav.world.scenario import Scenario, load_scenario
+
+DEFAULT_COUNT = 100
+REFERENCE_FILE = "benchmark.json"
+
+
+def _natural(path: Path):
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", path.stem)]
+
+
+@dataclass(frozen=True)
+class Suite:
+    """A named list of worlds: ``files`` (a folder suite) or ``family``/``count``/``seed``."""
+
+    name: str
+    family: str | None = None
+    count: int = 0
+    seed: int = 0
+    files: tuple[str, ...] = ()
+    references: dict = field(default_factory=dict, hash=False, compare=False)
+
+    @property
+    def size(self) -> int:
+        return len(self.files) if self.family is None else self.count
+
+    def world_name(self, index: int, seed: int) -> str:
+        """The identifier of world ``index`` under run seed ``seed`` (a column of runs.csv)."""
+        if self.family is None:
+            return Path(self.files[index]).stem
+        return f"{self.family}-{self.seed + seed}-{index:03d}"
+
+    def scenario(self, index: int, seed: int) -> Scenario:
+        """The scenario of world ``index`` under run seed ``seed``."""
+        if self.family is None:
+            return load_scenario(self.files[index])
+        return generate_world(self.family, self.seed + seed, index)
+
+    def reference(self, index: int) -> dict:
+        """Reference data of world ``index`` from ``benchmark.json`` (empty when there is none)."""
+        if self.family is not None:
+            return {}
+        return self.references.get(Path(self.files[index]).stem, {})
+
+
+def _count(text: str, field_name: str, spec: str) -> int:
+    if not re.fullmatch(r"\d+", text):
+        raise InputError(f"{field_name} must be a whole number in {spec!r}", field="SUITE")
+    return int(text)
+
+
+def parse_suite(spec: str) -> Suite:
+    """The :class:`Suite` a SUITE argument names (module docstring); InputError otherwise."""
+    path = Path(spec)
+    if path.is_dir():
+        files = sorted(path.glob("*.yaml"), key=_natural)
+        if not files:
+            raise InputError("folder has no scenario files (*.yaml)", source=spec, field="SUITE")
+        references = {}
+        if (path / REFERENCE_FILE).is_file():
+            try:
+                references = json.loads((path / REFERENCE_FILE).read_text(encoding="utf-8")).get("scenarios", {})
+            except (ValueError, AttributeError) as error:
+                raise InputError(f"unreadable reference file ({error})", source=str(path / REFERENCE_FILE)) from None
+            if not isinstance(references, dict):
+                raise InputError("'scenarios' must be a mapping", source=str(path / REFERENCE_FILE), field="scenarios")
+        return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
+    family, *rest = spec.split(":")
+    if family not in KINDS:
+        raise InputError(f"{spec!r} is neither a folder nor a world family ({', '.join(KINDS)}) "
+                         "written FAMILY[:COUNT[:SEED]]", field="SUITE")
+    if len(rest) > 2:
+        raise InputError(f"too many ':' in {spec!r} (FAMILY[:COUNT[:SEED]])", field="SUITE")
+    count = _count(rest[0], "COUNT", spec) if rest else DEFAULT_COUNT
+    if count < 1:
+        raise InputError(f"COUNT must be >= 1 in {spec!r}", field="SUITE")
+    seed = _count(rest[1], "SEED", spec) if len(rest) > 1 else 0
+    return Suite(name=f"{family}:{count}:{seed}", family=family, count=count, seed=seed)

@@ -1,0 +1,101 @@
+"""The rule bases each fuzzy controller uses, by role, and replacements read from files.
+
+Every fuzzy controller names its systems by role — ``goal-seeking``: ``gsb`` (Table IV.1);
+``fuzzy-2b``: ``gsb`` and ``oab`` (Table IV.2); ``fuzzy-5b``: ``gsb``, ``foa``, ``roa``, ``loa``,
+``vrb`` (§IV.7), the same for their ``-thesis`` and ``-gap`` variants; ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
+``systems={role: system}``. A replacement comes from any file :func:`fuzzynav.fuzzy.io.load`
+reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the role: the same input variables in
+the same order (the controller feeds them by position) and the same outputs; otherwise an
+:class:`InputError` names the file, the variable and what was expected.
+
+    fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml      # a role's system, to edit
+    fuzzynav run fig-IV-22a --controller fuzzy-5b --fis foa=foa.yaml
+"""
+
+from __future__ import annotations
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.systems import get_system
+
+# controller -> {role: built-in fuzzy system (fuzzynav.fuzzy.systems.SYSTEMS)}
+ROLES: dict[str, dict[str, str]] = {
+    "goal-seeking": {"gsb": "goal-seeking"},
+    "fuzzy-2b": {"gsb": "goal-seeking", "oab": "obstacle-avoidance"},
+    "fuzzy-5b": {"gsb": "goal-seeking", "foa": "foa", "roa": "roa", "loa": "loa", "vrb": "vrb"},
+    "wall-follow": {"wall": "wall-follow"},
+}
+ROLES["fuzzy-2b-thesis"], ROLES["fuzzy-5b-thesis"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]  # the same rule bases
+ROLES["fuzzy-2b-gap"], ROLES["fuzzy-5b-gap"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]
+
+
+def roles_of(controller: str) -> dict[str, str]:
+    """``{role: built-in system}`` of ``controller`` (InputError for a controller without roles)."""
+    if controller not in ROLES:
+        raise InputError(f"controller {controller!r} has no replaceable fuzzy systems (those that do: "
+                         f"{', '.join(ROLES)})", field="--fis")
+    return ROLES[controller]
+
+
+def default_system(controller: str, role: str):
+    """The system ``controller`` uses for ``role`` unless told otherwise."""
+    roles = roles_of(controller)
+    if role not in roles:
+        raise InputError(f"{controller} has no role {role!r} (its roles: {', '.join(roles)})", field="--fis")
+    return get_system(roles[role])
+
+
+def check_fits(system, expected, source: str, role: str) -> None:
+    """InputError unless ``system`` reads ``expected``'s inputs in order and gives its outputs."""
+    for side in ("input", "output"):
+        got, want = getattr(system, f"{side}_names"), getattr(expected, f"{side}_names")
+        if got == want:
+            continue
+        verb = "reads" if side == "input" else "gives"
+        for k, name in enumerate(want):
+            if k >= len(got) or got[k] != name:
+                found = f"{got[k]!r}" if k < len(got) else "missing"
+                raise InputError(f"{side} {k + 1} is {found}, expected {name!r} (the role {role} {verb} "
+                                 f"{', '.join(want)})", source=source, field=f"{side} {name}")
+        extra = got[len(want)]
+        raise InputError(f"{side} {extra!r} is one too many (the role {role} {verb} {', '.join(want)})",
+                         source=source, field=f"{side} {extra}")
+
+
+def load_replacement(controller: str, role: str, path: str):
+    """The system in ``path``, checked to fit ``controller``'s ``role``."""
+    from fuzzynav.fuzzy.io import load
+
+    expected = default_system(controller, role)
+    system = load(path)
+    check_fits(system, expected, str(path), role)
+    return system
+
+
+def systems_from_options(controller: str, options: list[str] | None) -> dict:
+    """``{role: system}`` from ``--fis ROLE=FILE`` options (empty when there are none)."""
+    systems = {}
+    for option in options or []:
+        role, sep, path = option.partition("=")
+        if not sep or not role or not path:
+            raise InputError(f"expected ROLE=FILE, got {option!r}", field="--fis")
+        if role in systems:
+            raise InputError(f"role {role} is given twice", field=f"--fis {option}")
+        default_system(controller, role)  # names the known roles when this one is not
+        systems[role] = load_replacement(controller, role, path)
+    return systems
+
+
+def make_with_systems(controller: str, systems: dict, **options):
+    """``make_controller(controller, systems=systems)``; a controller whose factory does not take
+    replacement systems is refused with an InputError (not a TypeError)."""
+    from fuzzynav.catalog.controllers import make_controller
+
+    if not systems:
+        return make_controller(controller, **options)
+    try:
+        return make_controller(controller, systems=systems, **options)
+    except TypeError as error:
+        if "systems" not in str(error):
+            raise
+        raise InputError(f"controller {controller} does not take replacement systems in this version",
+                         field="--fis") from None

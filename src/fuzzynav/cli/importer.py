@@ -1,0 +1,67 @@
+"""``fuzzynav import barn WORLD.world… --out DIR [--scale S]`` — BARN worlds as scenario files.
+
+Writes ``DIR/world_N.yaml`` for each world (:mod:`fuzzynav.world.barn`) and ``DIR/benchmark.json``
+with BARN's optimal path length of each (read from ``path_N.npy`` beside the world file or in
+``path_files/``; without it the BARN score is not computed), so ``fuzzynav bench DIR`` runs them.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from fuzzynav.errors import InputError
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "import",
+        help="convert standard benchmark worlds into scenario files",
+        description="Convert worlds of a standard benchmark into scenario files (`fuzzynav bench DIR` runs them).",
+    )
+    formats = parser.add_subparsers(dest="format", metavar="FORMAT", required=True)
+    barn = formats.add_parser("barn", help="BARN worlds (Gazebo .world files of the BARN Challenge)",
+                              description="BARN worlds: posts become circles; the challenge's start, goal "
+                                          "(1 m tolerance), 100 s limit and optimal path (for its score).")
+    barn.add_argument("worlds", nargs="+", metavar="WORLD.world", help="BARN world files (world_N.world)")
+    barn.add_argument("--out", required=True, metavar="DIR", help="folder for the scenario files")
+    barn.add_argument("--scale", type=float, default=1.0, metavar="S",
+                      help="multiply every length by S (default 1: BARN's true size)")
+    barn.set_defaults(func=run)
+
+
+def run(args) -> int:
+    import yaml
+
+    from fuzzynav.bench.files import write_atomic
+    from fuzzynav.bench.suites import REFERENCE_FILE
+    from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
+    from fuzzynav.world.scenario import scenario_from_dict
+
+    if not (args.scale > 0 and args.scale < float("inf")):
+        raise InputError(f"must be a finite number > 0, got {args.scale!r}", field="--scale")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    reference_file = out / REFERENCE_FILE
+    references = {}
+    if reference_file.is_file():
+        try:
+            references = json.loads(reference_file.read_text(encoding="utf-8"))["scenarios"]
+        except (ValueError, KeyError, TypeError):
+            raise InputError("unreadable reference file", source=str(reference_file)) from None
+    for name in args.worlds:
+        path = Path(name)
+        document = barn_scenario(read_posts(path), path.stem, args.scale)
+        scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
+        write_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
+        entry = {"barn_world": world_index(path), "scale": args.scale}
+        path_file = find_path_file(path)
+        if path_file is None:
+            print(f"fuzzynav import: {path}: no path_N.npy found, no BARN score for it", file=sys.stderr)
+        else:
+            entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
+        references[path.stem] = entry
+    write_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
+    print(f"{len(args.worlds)} BARN worlds -> {out}", file=sys.stderr)
+    return 0

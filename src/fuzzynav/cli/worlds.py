@@ -1,0 +1,42 @@
+"""``fuzzynav worlds generate FAMILY --n N --seed S --out DIR`` — generated worlds as scenario files.
+
+Writes ``DIR/<family>-<seed>-<i>.yaml`` for the N seeded, solvable worlds of
+:func:`fuzzynav.world.generate.generate_worlds` — the very worlds ``fuzzynav evaluate --worlds
+FAMILY --n N --seed S`` runs — so each can be opened, edited and run with ``fuzzynav run FILE``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from fuzzynav.cli import arguments
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser("worlds", help="write generated worlds as scenario files",
+                                   description="Generated worlds (the ones `fuzzynav evaluate` runs) as files.")
+    actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    generate = actions.add_parser(
+        "generate", help="write N generated worlds of a family as scenario files",
+        description=__doc__.split("\n\n")[1])
+    generate.add_argument("family", metavar="FAMILY", help="world family, e.g. circles or mixed (an unknown name lists them all)")
+    generate.add_argument("--n", type=int, default=10, help="number of worlds (default 10)")
+    generate.add_argument("--seed", type=arguments.seed, default=0, help="world seed (default 0)")
+    generate.add_argument("--out", type=Path, default=Path("worlds"), help="output folder (default worlds/)")
+    generate.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from fuzzynav import progress
+    from fuzzynav.errors import InputError
+    from fuzzynav.world.generate import KINDS, generate_worlds
+    from fuzzynav.world.scenario_file import save_scenario
+
+    if args.family not in KINDS:
+        raise InputError(f"unknown world family {args.family!r} (known: {', '.join(KINDS)})", field="FAMILY")
+    scenarios = generate_worlds(args.family, args.n, args.seed)
+    for scenario in progress.bar(scenarios, desc="worlds", unit="world"):
+        save_scenario(scenario, args.out / f"{scenario.name}.yaml")
+    print(f"wrote {len(scenarios)} scenario files to {args.out}/ "
+          f"({scenarios[0].name}.yaml … {scenarios[-1].name}.yaml); run one with `fuzzynav run FILE --controller NAME`")
+    return 0

@@ -1,0 +1,104 @@
+"""The reproduction report: ``DIR/index.html``, the thesis' claim beside our figure, per experiment.
+
+``fuzzynav reproduce ID… --out DIR`` runs each experiment in its own folder ``DIR/<id>/`` (its
+figures, ``<id>.json`` with the numbers it measured) and records the run in ``DIR/<id>/run.json``
+(:func:`record_run`: seconds, quick or full, seed, the verdict of its
+:class:`~fuzzynav.experiments.claims.Claim`). :func:`write_index` then writes one self-contained
+page over every experiment recorded in DIR (runs of earlier commands included), in the order of
+``fuzzynav reproduce --list``: no script, no style sheet or font from the network — it opens
+offline from the folder.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from datetime import datetime, timezone
+from pathlib import Path
+
+from fuzzynav.catalog import experiments as registry
+from fuzzynav.experiments.claims import CLAIMS
+from fuzzynav.storage import write_text_atomic
+
+RUN_FILE = "run.json"
+STYLE = """
+body { font-family: sans-serif; max-width: 1500px; margin: 1em auto; padding: 0 1em; color: #222; }
+section { border-top: 1px solid #bbb; padding: 0.6em 0 1em; }
+.claims { display: grid; grid-template-columns: 1fr 1fr; gap: 0.5em 2em; }
+.claims h3 { font-size: 0.95em; margin: 0.3em 0; color: #555; }
+.pass { color: #16702a; font-weight: bold; } .fail { color: #b3261e; font-weight: bold; }
+img { max-width: 100%; border: 1px solid #ddd; margin-top: 0.6em; }
+table { border-collapse: collapse; } td, th { padding: 0.2em 0.7em; text-align: left; }
+pre { background: #f5f5f5; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
+"""
+
+
+def experiment_dir(out_dir: Path, key: str) -> Path:
+    """The folder of experiment ``key`` inside the report folder."""
+    return Path(out_dir) / key
+
+
+def record_run(out_dir: Path, key: str, numbers: dict, seconds: float, *, quick: bool, seed: int) -> dict:
+    """Write ``<id>.json`` (the numbers) and ``run.json`` (time, setting, verdict); returns the record."""
+    folder = experiment_dir(out_dir, key)
+    folder.mkdir(parents=True, exist_ok=True)
+    write_text_atomic(folder / f"{key}.json", json.dumps(numbers, indent=2, default=float))
+    holds, verdict = CLAIMS[key].check(numbers)
+    record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "holds": holds,
+              "verdict": verdict, "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
+    write_text_atomic(folder / RUN_FILE, json.dumps(record, indent=2))
+    return record
+
+
+def _section(out_dir: Path, key: str, record: dict, description: str) -> str:
+    claim = CLAIMS[key]
+    folder = experiment_dir(out_dir, key)
+    status = '<span class="pass">claim holds</span>' if record["holds"] else '<span class="fail">claim not met</span>'
+    setting = "quick run (short budgets)" if record["quick"] else "full run"
+    images = "".join(f'<img src="{html.escape(f"{key}/{image.name}")}" alt="{html.escape(key)}: our figure">'
+                     for image in sorted(folder.glob("*.png")))
+    numbers = (folder / f"{key}.json").read_text()
+    e = html.escape
+    return f"""<section id="{e(key)}">
+<h2>{e(key)} — {e(description)}</h2>
+<div class="claims">
+<div><h3>The thesis</h3><p>{e(claim.thesis)}</p></div>
+<div><h3>Asserted here: {status}</h3><p>{e(claim.asserted)}</p><p>Measured: {e(record["verdict"])}</p></div>
+</div>
+<p>{e(setting)}, seed {record["seed"]}, run time {record["seconds"]:.1f} s (finished {e(record["finished"])})</p>
+{images}
+<details><summary>all numbers ({e(key)}/{e(key)}.json)</summary><pre>{e(numbers)}</pre></details>
+</section>"""
+
+
+def write_index(out_dir: Path) -> Path:
+    """Write ``out_dir/index.html`` over every experiment recorded in ``out_dir``; returns its path."""
+    out_dir = Path(out_dir)
+    listing = registry.available()
+    records = {}
+    for key in listing:
+        run_file = experiment_dir(out_dir, key) / RUN_FILE
+        if run_file.is_file():
+            records[key] = json.loads(run_file.read_text())
+    held = sum(r["holds"] for r in records.values())
+    rows = "".join(f'<tr><td><a href="#{html.escape(k)}">{html.escape(k)}</a></td>'
+                   f'<td class="{"pass" if r["holds"] else "fail"}">{"holds" if r["holds"] else "not met"}</td>'
+                   f'<td>{r["seconds"]:.1f} s</td><td>{"quick" if r["quick"] else "full"}</td></tr>'
+                   for k, r in records.items())
+    sections = "\n".join(_section(out_dir, key, record, listing[key]) for key, record in records.items())
+    page = f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>fuzzynav — reproduction of the thesis</title>
+<style>{STYLE}</style></head><body>
+<h1>Reproduction of the thesis' figures and tables</h1>
+<p>L. Cherroun, <i>Navigation autonome d'un robot mobile par des techniques neuro-floues</i> (doctoral thesis,
+Université de Biskra, 2014). Each section puts the thesis' claim (translated) beside the figure and the numbers
+of this run, and says whether the claim this package asserts holds. {len(records)} of {len(listing)}
+experiments in this folder; claims held: {held} of {len(records)}; total run time
+{sum(r["seconds"] for r in records.values()):.0f} s.</p>
+<table><tr><th>experiment</th><th>claim</th><th>run time</th><th>setting</th></tr>{rows}</table>
+{sections}
+</body></html>
+"""
+    path = out_dir / "index.html"
+    write_text_atomic(path, page)
+    return path

@@ -1,0 +1,361 @@
+"""The compiled part of :class:`~fuzzynav.fuzzy.engine.Engine`: rules, aggregation, defuzzification.
+
+Plain loops over the rows of a batch, compiled with numba (:func:`fuzzynav.jit.jit`;
+``NUMBA_DISABLE_JIT=1`` runs them as Python). The engine fuzzifies in NumPy (one vectorised
+evaluation per input term and hedge) and hands these kernels flat arrays:
+
+- :func:`rule_degrees` — each rule's antecedent as a postfix program over the fuzzified
+  propositions (``AND`` / ``OR`` join the two values on top of the stack with the block's
+  T-norm / S-norm), times the rule's weight;
+- :func:`integral` — a Mamdani output: every activation implies its term (sampled once at the
+  defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
+  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum);
+- :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
+  combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``), with
+  :func:`affine` values z of constant and linear terms (:func:`weighted_affine`: all three by
+  chunks of rows);
+- :func:`finish` — ``lock-previous``, ``default`` and ``lock-range`` of an output.
+
+The norms are fuzzylite 8's (thesis §II.3), NaN-propagating as NumPy's ``maximum`` /
+``minimum``. A Mamdani row whose activation degrees all lie in [0, 1] skips what cannot change
+the result: activations of degree 0 and samples outside a term's support (T(w, 0) = 0 and
+S(a, 0) = a for every norm here on [0, 1]); other rows sample every term everywhere.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.fuzzy.operators import SNORMS, TNORMS
+from fuzzynav.jit import jit
+
+REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
+AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
+CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
+MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
+
+
+@jit
+def _max(a, b):
+    return a if (a >= b or a != a) else b
+
+
+@jit
+def _min(a, b):
+    return a if (a <= b or a != a) else b
+
+
+@jit
+def tnorm(kind, a, b):
+    """T-norm ``TNORMS[kind]`` of a and b."""
+    if kind == 0:
+        return a * b
+    if kind == 1:
+        return _max(0.0, a + b - 1.0)
+    if kind == 2:
+        return _min(a, b) if _max(a, b) == 1.0 else 0.0
+    if kind == 3:
+        return (a * b) / (2.0 - (a + b - a * b))
+    if kind == 4:
+        return (a * b) / (a + b - a * b) if a + b != 0.0 else 0.0
+    if kind == 5:
+        return _min(a, b)
+    return _min(a, b) if a + b > 1.0 else 0.0
+
+
+@jit
+def snorm(kind, a, b):
+    """S-norm ``SNORMS[kind]`` of a and b."""
+    if kind == 0:
+        return a + b - a * b
+    if kind == 1:
+        return _min(1.0, a + b)
+    if kind == 2:
+        return _max(a, b) if _min(a, b) == 0.0 else 1.0
+    if kind == 3:
+        return (a + b) / (1.0 + a * b)
+    if kind == 4:
+        return (a + b - 2.0 * a * b) / (1.0 - a * b) if a * b != 1.0 else 1.0
+    if kind == 5:
+        return _max(a, b)
+    if kind == 6:
+        return _max(a, b) if a + b < 1.0 else 1.0
+    if kind == 7:
+        return (a + b) / _max(1.0, a + b)
+    return a + b
+
+
+@jit
+def tnorm_into(kind, a, b):
+    """a ← T(a, b) elementwise, one loop per T-norm: with the norm a constant, the loops vectorise."""
+    if kind == 0:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(0, a[k], b[k])
+    elif kind == 1:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(1, a[k], b[k])
+    elif kind == 2:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(2, a[k], b[k])
+    elif kind == 3:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(3, a[k], b[k])
+    elif kind == 4:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(4, a[k], b[k])
+    elif kind == 5:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(5, a[k], b[k])
+    elif kind == 6:
+        for k in range(a.shape[0]):
+            a[k] = tnorm(6, a[k], b[k])
+
+
+@jit
+def snorm_into(kind, a, b):
+    """a ← S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
+    if kind == 0:
+        for k in range(a.shape[0]):
+            a[k] = snorm(0, a[k], b[k])
+    elif kind == 1:
+        for k in range(a.shape[0]):
+            a[k] = snorm(1, a[k], b[k])
+    elif kind == 2:
+        for k in range(a.shape[0]):
+            a[k] = snorm(2, a[k], b[k])
+    elif kind == 3:
+        for k in range(a.shape[0]):
+            a[k] = snorm(3, a[k], b[k])
+    elif kind == 4:
+        for k in range(a.shape[0]):
+            a[k] = snorm(4, a[k], b[k])
+    elif kind == 5:
+        for k in range(a.shape[0]):
+            a[k] = snorm(5, a[k], b[k])
+    elif kind == 6:
+        for k in range(a.shape[0]):
+            a[k] = snorm(6, a[k], b[k])
+    elif kind == 7:
+        for k in range(a.shape[0]):
+            a[k] = snorm(7, a[k], b[k])
+    elif kind == 8:
+        for k in range(a.shape[0]):
+            a[k] = snorm(8, a[k], b[k])
+
+
+@jit
+def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
+    """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
+    ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N). Rows go
+    by chunks that stay in cache."""
+    n = table.shape[1]
+    stack = np.empty((max(1, program.shape[0]), CHUNK))
+    for lo in range(0, n, CHUNK):
+        size = min(n, lo + CHUNK) - lo
+        for r in range(starts.shape[0] - 1):
+            top = 0
+            for i in range(starts[r], starts[r + 1]):
+                code = program[i]
+                if code >= 0:
+                    stack[top, :size] = table[code, lo:lo + size]
+                    top += 1
+                    continue
+                top -= 1
+                if code == AND:
+                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size])
+                else:
+                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size])
+            degree, weight, first = out[r, lo:lo + size], weights[r], stack[0, :size]
+            for k in range(size):
+                degree[k] = weight * first[k]
+
+
+@jit
+def _reduce(kind, mu, x, area, lo, hi):
+    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
+    outside samples [lo, hi)."""
+    size = mu.shape[0]
+    if kind == 0:
+        total, moment = 0.0, 0.0
+        m, at = mu[lo:hi], x[lo:hi]
+        for k in range(m.shape[0]):
+            total += m[k]
+            moment += m[k] * at[k]
+        return moment / total
+    if kind == 1:  # the samples where the running area is closest to half of it, averaged
+        total = 0.0
+        for k in range(size):
+            if mu[k] == mu[k]:
+                total += mu[k]
+            area[k] = total
+        best = np.inf
+        for k in range(size):
+            gap = abs(area[k] / total - 0.5)
+            if gap != gap:
+                return np.nan
+            best = min(best, gap)
+        count, where = 0, 0.0
+        for k in range(size):
+            if abs(area[k] / total - 0.5) == best:
+                count += 1
+                where += x[k]
+        return where / count if count > 0 else np.nan
+    m, nan = mu[lo:hi], False
+    for k in range(m.shape[0]):
+        nan |= m[k] != m[k]
+    if nan:
+        return np.nan
+    top = 0.0
+    for k in range(m.shape[0]):
+        top = m[k] if m[k] > top else top
+    if not top > 0.0:
+        return np.nan
+    at = x[lo:hi]
+    if kind == 2:
+        count, where = 0, 0.0
+        for k in range(m.shape[0]):
+            tie = m[k] == top
+            count += tie
+            where += at[k] * tie
+        return where / count
+    step = 1 if kind == 3 else -1
+    k = 0 if kind == 3 else m.shape[0] - 1
+    while m[k] != top:
+        k += step
+    return at[k]
+
+
+@jit
+def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
+    """A Mamdani output for every row n: activation a has degree ``degrees[rows[a], n]`` and
+    belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
+    activation of the same term and implication, whose degrees max-combine first: T is
+    monotone); unit u implies term ``unit_term[u]`` sampled as ``shapes`` (T, R) at ``x`` with the
+    T-norm ``unit_implication[u]``. ``support[t]`` = (first, end) of term t's non-zero samples,
+    (-1, R) when a sample lies outside [0, 1]."""
+    n_units, size = unit_term.shape[0], x.shape[0]
+    w = np.empty(n_units)
+    mu, scratch, area = np.empty(size), np.empty(size), np.empty(size)
+    for n in range(degrees.shape[1]):
+        for u in range(n_units):
+            w[u] = -np.inf
+        for a in range(rows.shape[0]):
+            v = degrees[rows[a], n]
+            u = units[a]
+            if v > w[u] or v != v:
+                w[u] = v
+        bounded = True
+        for u in range(n_units):
+            bounded = bounded and 0.0 <= w[u] <= 1.0
+        mu[:] = 0.0
+        lo, hi = size, 0  # the samples any unit touched
+        for u in range(n_units):
+            t, wu = unit_term[u], w[u]
+            first, end = 0, size
+            if bounded and support[t, 0] >= 0:
+                if wu == 0.0:
+                    continue
+                first, end = support[t, 0], support[t, 1]
+            lo, hi = min(lo, first), max(hi, end)
+            imp, m, shape = unit_implication[u], mu[first:end], shapes[t, first:end]  # slices: loops vectorise
+            if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
+                for k in range(m.shape[0]):  # no NaN can occur: plain max / min
+                    m[k] = max(m[k], min(wu, shape[k]))
+            else:
+                implied = scratch[first:end]
+                implied[:] = wu
+                tnorm_into(imp, implied, shape)
+                snorm_into(aggregation, m, implied)
+        out[n] = _reduce(reduction, mu, x, area, lo, max(lo, hi))
+
+
+@jit
+def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, present):
+    """Per term group g and row n: ``degree[g, n]`` the S-norm ``aggregation`` folded over its
+    activations' degrees in order (``opens[a]``: a is the group's first; 0 where not triggered),
+    ``present[g, n]`` whether any triggered (``masked`` False: every activation triggers)."""
+    zeroed = np.empty(degrees.shape[1])
+    for a in range(rows.shape[0]):
+        g, v = groups[a], degrees[rows[a]]
+        if masked:
+            for n in range(v.shape[0]):
+                zeroed[n] = v[n] if triggered[a, n] else 0.0
+            v = zeroed
+        if opens[a]:
+            degree[g] = v
+            if masked:
+                present[g] = triggered[a]
+            else:
+                present[g] = True
+            continue
+        snorm_into(aggregation, degree[g], v)
+        if masked:
+            for n in range(v.shape[0]):
+                present[g, n] = present[g, n] or triggered[a, n]
+
+
+@jit
+def weighted_average(degree, present, z, weighted_sum, out):
+    """Σ_g g z_g / Σ_g g over the groups present in each row (times Σ g for a weighted sum);
+    NaN where none is."""
+    n = out.shape[0]
+    num, den, seen = np.zeros(n), np.zeros(n), np.zeros(n, dtype=np.bool_)
+    for g in range(degree.shape[0]):
+        for k in range(n):
+            if present[g, k]:
+                seen[k] = True
+                num[k] += degree[g, k] * z[g, k]
+                den[k] += degree[g, k]
+    for k in range(n):
+        y = num[k] / den[k]
+        if weighted_sum:
+            y = y * den[k]
+        out[k] = y if seen[k] else np.nan
+
+
+@jit
+def affine(coefficients, constants, inputs, z):
+    """``z[g, n]`` = ``constants[g]`` + Σ_i ``coefficients[g, i]`` × ``inputs[i, n]``: constant and
+    linear terms' values on every row."""
+    for g in range(z.shape[0]):
+        z[g] = constants[g]
+        for i in range(coefficients.shape[1]):
+            c, x = coefficients[g, i], inputs[i]
+            for n in range(z.shape[1]):
+                z[g, n] += c * x[n]
+
+
+@jit
+def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation, coefficients, constants, inputs,
+                    weighted_sum, out):
+    """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
+    cache: a weighted output whose terms are all constant or linear."""
+    n_groups, n = coefficients.shape[0], out.shape[0]
+    degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)
+    z = np.empty((n_groups, CHUNK))
+    for lo in range(0, n, CHUNK):
+        hi = min(n, lo + CHUNK)
+        size = hi - lo
+        group(degrees[:, lo:hi], rows, groups, opens, triggered[:, lo:hi] if masked else triggered, masked,
+              aggregation, degree[:, :size], present[:, :size])
+        affine(coefficients, constants, inputs[:, lo:hi], z[:, :size])
+        weighted_average(degree[:, :size], present[:, :size], z[:, :size], weighted_sum, out[lo:hi])
+
+
+@jit
+def finish(y, lock_previous, default, lock_range, minimum, maximum):
+    """In place: NaN becomes the previous row's value (``lock_previous``), then ``default`` (if
+    not NaN); then clipped to [minimum, maximum] if ``lock_range``."""
+    previous = np.nan
+    for n in range(y.shape[0]):
+        v = y[n]
+        if lock_previous:
+            if v != v:
+                v = previous
+            else:
+                previous = v
+        if v != v:
+            v = default
+        if lock_range and v == v:
+            v = min(max(v, minimum), maximum)
+        y[n] = v

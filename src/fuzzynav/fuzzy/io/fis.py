@@ -1,0 +1,312 @@
+"""MATLAB Fuzzy Logic Toolbox ``.fis`` files: import and export.
+
+Sections ``[System]``, ``[InputN]``, ``[OutputN]``, ``[Rules]``. Membership functions: trimf,
+trapmf, gaussmf, gauss2mf, gbellmf, sigmf, dsigmf, psigmf, zmf, smf, pimf, constant, linear, and
+the names fuzzylite adds for its other terms (rampmf, concavemf, cosinemf, spikemf, rectmf,
+binarymf, discretemf, function; an extra last parameter is a height). Methods: and/or/imp/agg
+``min max prod probor sum`` (and fuzzylite's other norm names), defuzzification ``centroid
+bisector mom lom som wtaver wtsum``. A rule line ``1 0 -2, 3 (0.5) : 1`` gives one term index per
+input then per output (0: the variable is left out; negative: NOT; a decimal part is a hedge as
+fuzzylite writes it: .01 seldom, .05 somewhat, .2 very, .3 extremely, .4 very very, .99 any), the
+weight in parentheses and the connective (1 AND, 2 OR).
+
+**Semantics** (``semantics="matlab"``, the default) — where MATLAB's ``evalfis`` differs from
+fuzzylite's reading of the same file (``semantics="fuzzylite"``, what fuzzylite's FisImporter
+builds, used to compare with fuzzylite):
+
+- a Mamdani output is defuzzified on 101 points from end to end of its range (``linspace``),
+  fuzzylite on the midpoints of ``resolution`` cells (1000 unless the file says otherwise);
+- an output on which no rule fires takes the middle of its range, fuzzylite gives NaN;
+- a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;
+  fuzzylite first aggregates the rules sharing an output term with it.
+
+Neither clips inputs to their range (MATLAB warns and evaluates the value as it is). Errors raise
+:class:`InputError` naming the file, the line and the field.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.engine import (Defuzzifier, Engine, EngineRule, InputVariable, Operator, OutputVariable,
+                                   Proposition, RuleBlock)
+from fuzzynav.fuzzy.engine.convert import engine_to_system
+from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
+from fuzzynav.fuzzy.system import FuzzySystem
+
+MATLAB_POINTS = 101  # evalfis' default number of output samples
+_TNORMS = {"min": "Minimum", "prod": "AlgebraicProduct", "bounded_difference": "BoundedDifference",
+           "drastic_product": "DrasticProduct", "einstein_product": "EinsteinProduct",
+           "hamacher_product": "HamacherProduct", "nilpotent_minimum": "NilpotentMinimum"}
+_SNORMS = {"max": "Maximum", "probor": "AlgebraicSum", "bounded_sum": "BoundedSum", "drastic_sum": "DrasticSum",
+           "einstein_sum": "EinsteinSum", "hamacher_sum": "HamacherSum", "nilpotent_maximum": "NilpotentMaximum",
+           "normalized_sum": "NormalizedSum", "sum": "UnboundedSum"}
+_DEFUZZ = {"centroid": "Centroid", "bisector": "Bisector", "mom": "MeanOfMaximum", "lom": "LargestOfMaximum",
+           "som": "SmallestOfMaximum", "wtaver": "WeightedAverage", "wtsum": "WeightedSum"}
+_HEDGE_CODES = {0.01: ("seldom",), 0.05: ("somewhat",), 0.2: ("very",), 0.3: ("extremely",), 0.4: ("very", "very"),
+                0.99: ("any",)}
+
+
+def _inverse(table: dict, value, what: str) -> str:
+    for k, v in table.items():
+        if v == value:
+            return k
+    raise InputError(f"{what} {value!r} has no .fis name", field=what)
+
+
+class _Lines:
+    """Sections of a .fis file: ``{"name": "[Input1]", "line": n, "items": [(key, value, line)]}``."""
+
+    def __init__(self, text: str, source):
+        self.source = source
+        self.sections: list[dict] = []
+        for number, raw in enumerate(text.splitlines(), start=1):
+            line = raw.split("%", 1)[0].split("#", 1)[0].strip()
+            if not line:
+                continue
+            if line.startswith("["):
+                self.sections.append({"name": line, "line": number, "items": []})
+            elif not self.sections:
+                raise self.error("text before the first [Section]", number)
+            elif self.sections[-1]["name"] == "[Rules]":
+                self.sections[-1]["items"].append(("rule", line, number))
+            else:
+                key, sep, value = line.partition("=")
+                if not sep:
+                    raise self.error(f"expected 'Key=value', got {line!r}", number)
+                self.sections[-1]["items"].append((key.strip(), value.strip(), number))
+
+    def error(self, message: str, line, field: str | None = None) -> InputError:
+        where = f"line {line}" if line else None
+        return InputError(message, source=self.source, field=f"{where} ({field})" if field and where else where or field)
+
+
+def _text(value: str) -> str:
+    return value.strip().strip("'\"")
+
+
+def _range(value: str, lines: _Lines, line) -> tuple[float, float]:
+    """``[lo hi]``; each end a number or a constant expression MATLAB accepts (``-pi/4``)."""
+    parts = value.strip().strip("[]").replace(",", " ").split()
+    try:
+        lo, hi = (float(Function(p)(0.0)) for p in parts)
+    except ValueError:
+        raise lines.error(f"Range must be [lo hi], got {value!r}", line, "Range") from None
+    return lo, hi
+
+
+def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
+    """The variable and its term labels in file order (rules refer to terms by position).
+
+    MATLAB tells terms apart by position, so a repeated name gets a suffix (``_2``, ``_3``, …);
+    fuzzylite resolves the name, so its reading keeps the last term of that name."""
+    cls = OutputVariable if output else InputVariable
+    var = cls("", -math.inf, math.inf)
+    order = []
+    for key, value, line in section["items"]:
+        if key == "Name":
+            var.name = re.sub(r"\W", "", _text(value)) or "_"
+        elif key == "Range":
+            var.minimum, var.maximum = _range(value, lines, line)
+        elif key.startswith("MF"):
+            label, mf = term_from_fis(value, lines.source, line)
+            if matlab and label in var.terms:
+                label = next(f"{label}_{k}" for k in range(2, len(var.terms) + 3) if f"{label}_{k}" not in var.terms)
+            var.terms[label] = mf
+            order.append(label)
+        elif key in ("Enabled", "Default", "LockPrevious", "LockRange") and (output or key == "Enabled"):
+            try:
+                number = float(value)
+            except ValueError:
+                raise lines.error(f"{key} must be a number, got {value!r}", line, key) from None
+            if key == "Default":
+                var.default = number
+            else:
+                attribute = {"Enabled": "enabled", "LockPrevious": "lock_previous", "LockRange": "lock_range"}[key]
+                setattr(var, attribute, number == 1.0)
+        elif key != "NumMFs":
+            raise lines.error(f"unknown key {key!r} in {section['name']}", line, key)
+    if not var.name:
+        raise lines.error(f"{section['name']} has no Name", section["line"], "Name")
+    return var, order
+
+
+def _proposition(code: float, var, order: list, lines: _Lines, line) -> Proposition | None:
+    if code == 0:
+        return None
+    index = int(math.floor(abs(code))) - 1
+    fraction = round(abs(code) - math.floor(abs(code)), 2)
+    hedges = ("not",) if code < 0 else ()
+    if fraction:
+        if fraction not in _HEDGE_CODES:
+            raise lines.error(f"no hedge for the code {code!r}", line, var.name)
+        hedges += _HEDGE_CODES[fraction]
+    if hedges[-1:] == ("any",):
+        return Proposition(var.name, hedges, None)
+    if not 0 <= index < len(order):
+        raise lines.error(f"term {index + 1} of {var.name} does not exist (it has {len(order)})", line, var.name)
+    return Proposition(var.name, hedges, order[index])
+
+
+def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[EngineRule, int]:
+    match = re.fullmatch(r"([-\d.\s]+),([-\d.\s]+)\(\s*([-\d.eE+]+)\s*\)\s*:\s*(\d)", text)
+    if not match:
+        raise lines.error(f"a rule reads 'i1 i2 ..., o1 ... (weight) : 1|2', got {text!r}", line)
+    try:
+        ins, outs = ([float(v) for v in group.split()] for group in match.group(1, 2))
+        weight = float(match.group(3))
+    except ValueError as error:
+        raise lines.error(f"rule codes and weight are numbers: {error}", line) from None
+    if len(ins) != len(inputs) or len(outs) != len(outputs):
+        raise lines.error(f"expected {len(inputs)} input and {len(outputs)} output codes, got {len(ins)} and "
+                          f"{len(outs)}", line)
+    premises = [p for p in (_proposition(c, *v, lines, line) for c, v in zip(ins, inputs)) if p]
+    conclusions = tuple(p for p in (_proposition(c, *v, lines, line) for c, v in zip(outs, outputs)) if p)
+    connective = int(match.group(4))
+    if connective not in (1, 2):
+        raise lines.error(f"the connective is 1 (AND) or 2 (OR), got {connective}", line)
+    if not premises or not conclusions:
+        raise lines.error("a rule needs at least one premise and one conclusion (a .fis rule cannot read an output)",
+                          line)
+    antecedent = premises[0]
+    for p in premises[1:]:
+        antecedent = Operator("and" if connective == 1 else "or", antecedent, p)
+    return EngineRule(antecedent, conclusions, weight), connective
+
+
+def _system_options(section: dict, lines: _Lines) -> dict:
+    options = {}
+    for key, value, line in section["items"]:
+        value = _text(value)
+        table = {"AndMethod": _TNORMS, "ImpMethod": _TNORMS, "OrMethod": _SNORMS, "AggMethod": _SNORMS,
+                 "DefuzzMethod": _DEFUZZ}.get(key)
+        if table is not None:
+            if value and value not in table:
+                raise lines.error(f"unknown {key} {value!r} (known: {', '.join(table)})", line, key)
+            options[key] = table.get(value)
+        elif key in ("Name", "Type"):
+            options[key] = value
+        elif key not in ("Version", "NumInputs", "NumOutputs", "NumRules"):
+            raise lines.error(f"unknown key {key!r} in [System]", line, key)
+    return options
+
+
+def from_fis_engine(text: str, source: str | None = None, semantics: str = "matlab") -> Engine:
+    """Parse a ``.fis`` file into an :class:`Engine` (``semantics``: see module docstring)."""
+    if semantics not in ("matlab", "fuzzylite"):
+        raise InputError(f"semantics is 'matlab' or 'fuzzylite', got {semantics!r}", field="semantics")
+    lines = _Lines(text, source)
+    system = [s for s in lines.sections if s["name"] == "[System]"]
+    if len(system) != 1:
+        raise lines.error("a .fis file has one [System] section", None)
+    options = _system_options(system[0], lines)
+    matlab = semantics == "matlab"
+    in_vars = [_variable(s, lines, False, matlab) for s in lines.sections if s["name"].startswith("[Input")]
+    out_vars = [_variable(s, lines, True, matlab) for s in lines.sections if s["name"].startswith("[Output")]
+    inputs, outputs = [v for v, _ in in_vars], [v for v, _ in out_vars]
+    unknown = [s for s in lines.sections if not re.fullmatch(r"\[(System|Input\d+|Output\d+|Rules)\]", s["name"])]
+    if unknown:
+        raise lines.error(f"unknown section {unknown[0]['name']}", unknown[0]["line"])
+    for var in outputs:  # MATLAB's Linear has n + 1 coefficients; fuzzylite's may omit the constant
+        for label, mf in var.terms.items():
+            if type(mf).__name__ == "Linear" and len(mf.params()) == len(inputs):
+                var.terms[label] = type(mf)(mf.params(), 0.0)
+    defuzz = options.get("DefuzzMethod")
+    kind = options.get("Type", "mamdani").lower()
+    for var in outputs:
+        if defuzz in ("Centroid", "Bisector", "MeanOfMaximum", "LargestOfMaximum", "SmallestOfMaximum"):
+            var.defuzzifier = Defuzzifier(defuzz, MATLAB_POINTS, grid="linspace") if matlab else Defuzzifier(defuzz)
+            var.aggregation = options.get("AggMethod")
+        elif defuzz is not None:
+            var.defuzzifier = Defuzzifier(defuzz, type="Tsukamoto" if kind == "tsukamoto" else "Automatic")
+            var.aggregation = None if matlab and kind == "sugeno" else options.get("AggMethod")
+        if matlab and math.isnan(var.default):
+            var.default = 0.5 * (var.minimum + var.maximum)
+    rules, connectives = [], set()
+    for section in (s for s in lines.sections if s["name"] == "[Rules]"):
+        for _, value, line in section["items"]:
+            rule, connective = _rule(value, in_vars, out_vars, lines, line)
+            rules.append(rule)
+            connectives.add(connective)
+    block = RuleBlock(rules, conjunction=options.get("AndMethod"), disjunction=options.get("OrMethod"),
+                      implication=options.get("ImpMethod"))
+    try:
+        return Engine(inputs, outputs, [block], name=options.get("Name", ""))
+    except InputError as error:
+        raise InputError(error.problem, source=source, field=error.field) from None
+
+
+def from_fis(text: str, source: str | None = None, semantics: str = "matlab") -> FuzzySystem | Engine:
+    """Parse a ``.fis`` file: a :class:`FuzzySystem` when it is exactly one, else an :class:`Engine`."""
+    engine = from_fis_engine(text, source, semantics)
+    return engine_to_system(engine) or engine
+
+
+# ---------------------------------------------------------------------------------------- export
+def _code(prop: Proposition, var) -> str:
+    hedges = list(prop.hedges)
+    negative = hedges[:1] == ["not"]
+    hedges = hedges[1:] if negative else hedges
+    fraction = next((f for f, h in _HEDGE_CODES.items() if list(h) == hedges), None) if hedges else 0.0
+    if fraction is None:
+        raise InputError(f"hedges {' '.join(prop.hedges)} have no .fis code", field=prop.text())
+    index = 0 if prop.term is None else var.labels.index(prop.term) + 1
+    value = index + fraction
+    return repr(-value if negative else value) if fraction else str(-index if negative else index)
+
+
+def _flat(node) -> tuple[list[Proposition], str | None]:
+    if isinstance(node, Proposition):
+        return [node], None
+    left, op1 = _flat(node.left)
+    right, op2 = _flat(node.right)
+    ops = {node.name} | ({op1} if op1 else set()) | ({op2} if op2 else set())
+    if len(ops) > 1:
+        raise InputError("a .fis rule joins its premises by AND or by OR, not both", field="rules")
+    return left + right, node.name
+
+
+def to_fis(system: FuzzySystem | Engine) -> str:
+    """``system`` as a MATLAB ``.fis`` file (full precision); InputError if it cannot be one."""
+    from fuzzynav.fuzzy.engine.convert import system_to_engine
+
+    engine = system_to_engine(system) if isinstance(system, FuzzySystem) else system
+    if len(engine.blocks) != 1:
+        raise InputError(".fis holds one rule block", field="rules")
+    block, outs = engine.blocks[0], engine.outputs
+    d = outs[0].defuzzifier
+    if any(v.defuzzifier != d or v.aggregation != outs[0].aggregation for v in outs):
+        raise InputError(".fis gives every output the same defuzzifier and aggregation", field="outputs")
+    integral = d is not None and d.integral
+    kind = "mamdani" if integral else ("tsukamoto" if d and d.type == "Tsukamoto" else "sugeno")
+    lines = ["[System]", f"Name='{engine.name}'", f"Type='{kind}'", "Version=2.0",
+             f"NumInputs={len(engine.inputs)}", f"NumOutputs={len(outs)}", f"NumRules={len(block.rules)}",
+             f"AndMethod='{_inverse(_TNORMS, block.conjunction, 'conjunction') if block.conjunction else 'min'}'",
+             f"OrMethod='{_inverse(_SNORMS, block.disjunction, 'disjunction') if block.disjunction else 'max'}'",
+             f"ImpMethod='{_inverse(_TNORMS, block.implication, 'implication') if block.implication else 'prod'}'",
+             f"AggMethod='{_inverse(_SNORMS, outs[0].aggregation, 'aggregation') if outs[0].aggregation else 'sum'}'",
+             f"DefuzzMethod='{_inverse(_DEFUZZ, d.kind, 'defuzzifier') if d else 'wtaver'}'"]
+    for section, variables in (("Input", engine.inputs), ("Output", outs)):
+        for i, v in enumerate(variables, start=1):
+            lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
+                      f"NumMFs={len(v.terms)}"]
+            lines += [f"MF{k}='{label}':{term_to_fis(mf)}" for k, (label, mf) in enumerate(v.terms.items(), 1)]
+            if isinstance(v, OutputVariable) and v.lock_range:
+                lines.append("LockRange=1")
+    lines += ["", "[Rules]"]
+    by_name = {v.name: v for v in engine.inputs + outs}
+    for rule in block.rules:
+        premises, op = _flat(rule.antecedent)
+        if len({p.variable for p in premises}) != len(premises) or any(p.variable not in
+                                                                         {v.name for v in engine.inputs}
+                                                                         for p in premises):
+            raise InputError("a .fis rule names each input at most once", field=rule.text())
+        codes = {p.variable: _code(p, by_name[p.variable]) for p in premises}
+        results = {c.variable: _code(c, by_name[c.variable]) for c in rule.conclusions}
+        ins = " ".join(codes.get(v.name, "0") for v in engine.inputs)
+        outs_text = " ".join(results.get(v.name, "0") for v in outs)
+        lines.append(f"{ins}, {outs_text} ({number(rule.weight)}) : {2 if op == 'or' else 1}")
+    return "\n".join(lines) + "\n"

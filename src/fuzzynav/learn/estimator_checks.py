@@ -1,0 +1,96 @@
+"""Input checks of the learned estimators (ANFIS, MLP): arrays, hyper-parameters, fitted-model documents.
+
+Every failure is an :class:`~fuzzynav.errors.InputError` naming the field (and the file, when a
+document is read from one).
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+from fuzzynav.learn import anfis_mf
+
+
+def check_format(document, fmt: str, version: int, what: str, source: str | None = None) -> None:
+    """A fitted-model document of format ``fmt`` and ``version`` (``what``: "an ANFIS", "an MLP")."""
+    if not isinstance(document, dict) or document.get("format") != fmt:
+        raise InputError(f"not {what} document (format must be {fmt!r})", source=source, field="format")
+    if document.get("version") != version:
+        raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
+
+
+def check_xy(X, y) -> tuple[np.ndarray, np.ndarray]:
+    X = check_x(X, None)
+    y = np.asarray(y, dtype=float)
+    if y.ndim == 2 and y.shape[1] == 1:
+        y = y[:, 0]
+    if y.shape != (X.shape[0],):
+        raise InputError(f"expected shape ({X.shape[0]},), got {y.shape}", field="y")
+    if not np.isfinite(y).all():
+        raise InputError("contains NaN or infinite values", field="y")
+    return X, y
+
+
+def check_x(X, n_features: int | None) -> np.ndarray:
+    try:
+        X = np.asarray(X, dtype=float)
+    except (TypeError, ValueError) as error:
+        raise InputError(f"not a numeric array ({error})", field="X") from None
+    if X.ndim != 2 or X.shape[0] == 0 or (n_features is not None and X.shape[1] != n_features):
+        want = f"(N, {n_features})" if n_features is not None else "(N, n_features)"
+        raise InputError(f"expected a non-empty array of shape {want}, got {X.shape}", field="X")
+    if not np.isfinite(X).all():
+        raise InputError("contains NaN or infinite values", field="X")
+    return X
+
+
+def check_premises(premises, family: str, n_features: int, field: str, source: str | None = None) -> list[np.ndarray]:
+    width = len(anfis_mf.PARAMETER_NAMES[family])
+    if not isinstance(premises, (list, tuple)) or len(premises) != n_features:
+        raise InputError(f"expected one parameter table per input ({n_features})", source=source, field=field)
+    tables = []
+    for i, p in enumerate(premises):
+        try:
+            table = np.array(p, dtype=float)
+        except (TypeError, ValueError):
+            table = None
+        if table is None or table.ndim != 2 or table.shape[0] < 1 or table.shape[1] != width:
+            raise InputError(f"expected rows of {width} numbers {anfis_mf.PARAMETER_NAMES[family]}",
+                             source=source, field=f"{field}[{i}]")
+        if not np.isfinite(table).all() or not (table[:, 0] > 0).all() or (family == "bell" and not (table[:, 1] > 0).all()):
+            raise InputError("parameters must be finite with widths (and bell slopes b) > 0",
+                             source=source, field=f"{field}[{i}]")
+        tables.append(table)
+    return tables
+
+
+def finite_array(value, shape: tuple, field: str, source: str | None) -> np.ndarray:
+    try:
+        array = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        array = None
+    if array is None or array.shape != shape or not np.isfinite(array).all():
+        raise InputError(f"expected finite numbers of shape {shape}", source=source, field=field)
+    return array
+
+
+def finite_float(name: str, value) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+        raise InputError(f"must be a finite number, got {value!r}", field=name)
+    return float(value)
+
+
+def positive_float(name: str, value) -> float:
+    if finite_float(name, value) <= 0:
+        raise InputError(f"must be > 0, got {value!r}", field=name)
+    return float(value)
+
+
+def positive_int(name: str, value) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
+        raise InputError(f"must be an integer >= 1, got {value!r}", field=name)
+    return int(value)

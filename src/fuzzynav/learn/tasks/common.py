@@ -1,0 +1,264 @@
+"""What the learning tasks share: the request, phases and their budgets, convergence, curves, model files.
+
+A reinforcement-learning task (one module of this package per task family) assembles, for each of
+its *phases* (steering, then speed), a :class:`~fuzzynav.learn.envs.RobotEnv` (layout, inputs,
+actions, a reward of :mod:`fuzzynav.learn.rewards`) and a learner of :mod:`fuzzynav.learn`; it trains
+them resumably with :func:`run_phases` (:func:`~fuzzynav.learn.checkpoint.train_loop` underneath,
+one checkpoint per phase next to ``--out``), extracts the controller and writes its model file with
+:func:`save_model`. B episodes run in parallel per batch (:data:`BATCH`, :data:`FIXED_BATCH`);
+every count of episodes (``--episodes``, checkpoints, curves, episodes to converge) counts single
+episodes. ``converged_at`` of a phase is :func:`fuzzynav.learn.curves.episodes_to_converge` under
+the task's criterion (:data:`GOAL_CONVERGENCE`, or :data:`WORLD_CONVERGENCE` where one batch is one
+random world). The reasons for these settings, with what was measured, are in docs/training.md.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav.control.learned import check_speed, model_name
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.coverage import check_covered
+from fuzzynav.fuzzy.io.document import from_document
+from fuzzynav.fuzzy.membership import Singleton
+from fuzzynav.fuzzy.rules import Rule
+from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.learn.checkpoint import train_loop
+from fuzzynav.learn.curves import episodes_to_converge
+from fuzzynav.learn.exploration import EpsilonGreedy
+from fuzzynav.learn.fql import FuzzyQLearner
+from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
+from fuzzynav.storage import save_document, savefig_atomic
+
+PI = math.pi
+BATCH = 50  # parallel episodes per batch (random starts)
+FIXED_BATCH = 10  # parallel episodes per batch from a fixed start (Figs VI.1, VI.8)
+SPEED_SHARE = 0.25  # share of a two-phase task's episodes given to the speed phase
+TOLERANCE = 0.05  # extraction: minimum quality gain over the prior conclusion
+GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
+STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
+MAX_STEPS = 300  # 30 s per episode
+GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
+WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered": True}  # one random world per batch
+
+STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
+STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
+SPEED3 = {"F": 1.0, "M": 1.8, "G": 3.0}  # eq VI.13, the F, M, G singletons of Fig IV.8
+
+
+@dataclass(frozen=True)
+class TrainRequest:
+    """What the user asked of one training run (defaults are each task's own when ``None``)."""
+
+    out: Path
+    task: str = ""  # the TASK name, recorded in checkpoints (a resume of another task is refused)
+    episodes: int | None = None
+    seed: int = 0
+    resume: bool = False
+    checkpoint_every: int | None = None
+    curve: Path | None = None  # learning-curve plot to write, if any
+    progress: bool = True
+
+
+def save_model(request: TrainRequest, document: dict) -> None:
+    """Write a task's model document to ``request.out`` (atomically, in the format of its extension)."""
+    save_document(request.out, document)
+
+
+def finish(request: TrainRequest, document: dict, phases: dict, title: str) -> dict:
+    """Write the model and (if asked) the learning curves; the results ``fuzzynav train`` prints."""
+    save_model(request, document)
+    write_curve(request, phases, title)
+    return {"model": str(request.out), **summarise(phases)}
+
+
+def load_fuzzy_model(document: dict, path, build):
+    """The controller of a learned fuzzy model file: ``build(system, constant_speed, name)``, with
+    every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
+    must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`)."""
+    system = from_document(document, source=str(path))
+    check_covered(system, str(path))
+    try:
+        return build(system, check_speed(document.get("constant_speed", 1.0), "constant_speed"), model_name(document))
+    except InputError as error:
+        raise InputError(error.problem, source=str(path), field=error.field) from None
+
+
+# -- rule bases ------------------------------------------------------------------------------
+def output_variable(name: str, values: dict[str, float], universe) -> Variable:
+    """An output variable of singletons ``label -> value`` (the candidates of a learned conclusion)."""
+    return Variable(name, universe, {label: Singleton(v) for label, v in values.items()})
+
+
+def grid_system(inputs, outputs, conclusions, name: str, description: str) -> FuzzySystem:
+    """TS0 system over the full term grid of ``inputs`` (first input varying slowest), product
+    T-norm, weighted sum (eq IV.4); ``conclusions[o][r]`` is the label of output o for rule r."""
+    grids = np.meshgrid(*[np.arange(len(v.terms)) for v in inputs], indexing="ij")
+    cells = np.column_stack([g.ravel() for g in grids])
+    rules = [Rule(tuple((v.name, v.labels[c]) for v, c in zip(inputs, cell)),
+                  tuple((out.name, labels[r]) for out, labels in zip(outputs, conclusions)))
+             for r, cell in enumerate(cells)]
+    return FuzzySystem(inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
+                       name=name, description=description)
+
+
+# -- running a phase -------------------------------------------------------------------------
+@dataclass
+class Phase:
+    """One learning run: its env, learner, episode budget and checkpoint file."""
+
+    name: str
+    env: RobotEnv
+    learner: object
+    episodes: int
+    checkpoint: Path
+    convergence: dict = None  # settings of the criterion: GOAL_CONVERGENCE (default) or WORLD_CONVERGENCE
+
+
+def checkpoint_path(out: Path, phase: str) -> Path:
+    return Path(out).with_name(f"{Path(out).name}.{phase}.checkpoint.json")
+
+
+def batch_plan(episodes: int, batch: int) -> list[tuple[int, int]]:
+    """(batches to reach, episodes per batch) of a phase of ``episodes`` single episodes: full
+    batches of ``batch``, then one last batch of the remainder (fewer parallel episodes) if any."""
+    full, rest = divmod(int(episodes), int(batch))
+    return [(n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
+
+
+def episode_curve(curve: dict, field: str) -> np.ndarray:
+    """One field of a :func:`~fuzzynav.learn.checkpoint.train_loop` curve, one value per episode
+    in order (batches of unequal size: the last one may be smaller, :func:`batch_plan`)."""
+    return np.concatenate([np.ravel(np.asarray(row, dtype=float)) for row in curve[field]])
+
+
+def run_phase(phase: Phase, request, seed_offset: int) -> dict:
+    """Train one phase of exactly ``phase.episodes`` episodes resumably; returns its per-episode
+    curves and convergence. The last partial batch continues from the checkpoint of the full
+    ones (restoring it is exact, so a resumed run equals an uninterrupted one)."""
+    batch = phase.env.batch
+    every = math.ceil(request.checkpoint_every / batch) if request.checkpoint_every else 0
+    rng = np.random.default_rng([int(request.seed), seed_offset])
+    resume, continued = request.resume, False
+    try:
+        for batches, size in batch_plan(phase.episodes, batch):
+            phase.env.batch = size
+            result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
+                                checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,
+                                desc=phase.name, budget=phase.episodes,
+                                extra={"task": request.task, "phase": phase.name, "seed": int(request.seed),
+                                       "batch": batch})
+            resume, continued = True, continued or result.resumed_from != result.episode
+    finally:
+        phase.env.batch = batch
+    reward, success = episode_curve(result.curve, "mean_reward"), episode_curve(result.curve, "success")
+    return {"episodes": int(reward.size), "mean_reward": reward, "success": success, "continued": continued,
+            "converged_at": converged_at(reward, success, batch, phase.convergence),
+            "window": convergence_window(phase.convergence or GOAL_CONVERGENCE, batch)[0],
+            "final_success": float(success[-min(success.size, 5 * batch):].mean())}
+
+
+def convergence_window(settings: dict, batch: int) -> tuple[int, int]:
+    """(window, hold) in episodes of a convergence setting: given in episodes (``window``,
+    ``hold``) or, where one batch is one random world, in worlds (``worlds``, ``hold_worlds``)."""
+    if "worlds" in settings:
+        return settings["worlds"] * batch, settings["hold_worlds"] * batch
+    return settings["window"], settings["hold"]
+
+
+def converged_at(reward, success, batch: int, settings: dict | None = None) -> int:
+    """Episodes to converge of one phase (module docstring, :mod:`fuzzynav.learn.curves`)."""
+    settings = settings or GOAL_CONVERGENCE
+    window, hold = convergence_window(settings, batch)
+    return episodes_to_converge(reward, window=window, hold=hold, batch=batch,
+                                success=None if settings["target"] is None else success,
+                                target=settings["target"] or 0.0, clustered=settings.get("clustered", False))
+
+
+class PhaseSummary(dict):
+    """The train results of one phase: ``episodes``, ``converged_at`` (``None`` when the curve did
+    not settle within the budget) and ``final_training_success``; JSON as a plain mapping, and
+    printed by ``fuzzynav train`` as one readable line ("not converged within N episodes" for ``None``)."""
+
+    def __str__(self) -> str:
+        converged = (f"not converged within {self['episodes']} episodes (the mean reward per episode did not "
+                     f"settle on a plateau; more --episodes may help)" if self["converged_at"] is None
+                     else f"converged at episode {self['converged_at']}")
+        return (f"{self['episodes']} episodes, {converged}; success in the last training episodes "
+                f"{self['final_training_success']:.1%} (goal reached, or for wall following no collision before "
+                f"the time limit; exploration still on)")
+
+
+def summarise(phases: dict) -> dict:
+    """Per phase, :class:`PhaseSummary` (``converged_at`` beyond the curve → ``None``)."""
+    return {name: PhaseSummary(episodes=r["episodes"],
+                               converged_at=r["converged_at"] if r["converged_at"] <= r["episodes"] else None,
+                               final_training_success=round(r["final_success"], 4))
+            for name, r in phases.items()}
+
+
+def episode_budget(request, default: int) -> int:
+    """The task's total episodes: ``--episodes``, else its ``default``; at least one."""
+    episodes = default if request.episodes is None else int(request.episodes)
+    if episodes < 1:
+        raise InputError("must be a positive integer", field="--episodes")
+    return episodes
+
+
+def steering_episodes(episodes: int, speed_share: float) -> int:
+    """Episodes of the steering phase when ``episodes`` in total are split with the share
+    ``speed_share`` for the speed phase (0: a single phase); each phase gets at least one."""
+    if not speed_share:
+        return episodes
+    if episodes < 2:
+        raise InputError(f"a two-phase task (steering, then speed) needs at least 2 episodes, got {episodes}",
+                         field="--episodes")
+    return episodes - min(episodes - 1, max(1, round(speed_share * episodes)))
+
+
+def write_curve(request, phases: dict, title: str) -> None:
+    """The learning curve of every phase, side by side, into ``request.curve`` (if given)."""
+    if request.curve is None:
+        return
+    import matplotlib.pyplot as plt
+
+    from fuzzynav.viz.curves import plot_learning_curve
+
+    figure, axes = plt.subplots(1, len(phases), figsize=(6.4 * len(phases), 4.0), squeeze=False)
+    for ax, (name, result) in zip(axes[0], phases.items()):
+        plot_learning_curve(result["mean_reward"], ax=ax, window=result["window"], title=f"{title}: {name}",
+                            label=name, converged_at=result["converged_at"])
+    savefig_atomic(figure, request.curve, dpi=120, bbox_inches="tight")
+    plt.close(figure)
+
+
+def run_phases(phases, request) -> tuple[dict, dict]:
+    """Run the phases in order; a later phase resumes only if every earlier one was already
+    complete in its checkpoint (otherwise it is retrained on the changed earlier result)."""
+    results, learners = {}, {}
+    for offset, phase in enumerate(phases):
+        results[phase.name] = run_phase(phase, request, offset)
+        learners[phase.name] = phase.learner
+        if results[phase.name].pop("continued"):
+            request = replace(request, resume=False)
+    return results, learners
+
+
+def batch_size(fixed: bool) -> int:
+    """Parallel episodes of a task: :data:`FIXED_BATCH` from a fixed start, else :data:`BATCH`."""
+    return FIXED_BATCH if fixed else BATCH
+
+
+def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
+    """The FQL settings of every task: γ = 0.9, β = 1 / (1 + visits) (eq III.24) floored so the
+    B parallel corrections stay small, ε-greedy per rule with ε decaying 0.3 → 0.02 (× 0.85 per batch)."""
+    alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
+    return FuzzyQLearner(premise, candidates, gamma=0.9, alpha=alpha,
+                         policy=EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02)), lam=lam,
+                         normalise=False, prior=prior)
+

@@ -1,0 +1,46 @@
+"""Progress bars for the long commands (``evaluate``, ``reproduce``, ``train``), on stderr.
+
+A bar is drawn only when stderr is a terminal and the user did not ask for quiet output
+(``--quiet``, :func:`quiet`): piped or redirected output and ``--json`` stay clean. tqdm is
+imported on first use, so importing this module costs nothing at start-up.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
+_QUIET: ContextVar[bool] = ContextVar("fuzzynav_quiet", default=False)
+
+
+def enabled() -> bool:
+    """True when a progress bar would be shown: stderr is a terminal and output is not quiet."""
+    return not _QUIET.get() and sys.stderr.isatty()
+
+
+@contextmanager
+def quiet(on: bool = True) -> Iterator[None]:
+    """Within the block, no progress bar is shown (``on=False`` leaves the setting as it is)."""
+    token = _QUIET.set(_QUIET.get() or on)
+    try:
+        yield
+    finally:
+        _QUIET.reset(token)
+
+
+def bar(iterable: Iterable | None = None, *, total: int | None = None, desc: str | None = None,
+        unit: str = "it", leave: bool = True):
+    """A tqdm bar on stderr, disabled unless :func:`enabled`; iterate it or call ``update``."""
+    from tqdm import tqdm
+
+    return tqdm(iterable, total=total, desc=desc, unit=unit, leave=leave, disable=not enabled(),
+                file=sys.stderr, dynamic_ncols=True)
+
+
+def write(text: str) -> None:
+    """Print ``text`` to stdout without breaking a progress bar being drawn on stderr."""
+    from tqdm import tqdm
+
+    tqdm.write(text, file=sys.stdout)

@@ -1,0 +1,167 @@
+"""Files a user keeps: trained models and checkpoints, written atomically and read safely.
+
+A document (a JSON object with a ``kind`` field) is stored in the format its file's extension
+names: ``.json`` → JSON text, ``.npz`` → a NumPy archive holding ``kind`` and the JSON text as
+0-d strings (``document``). Any other extension is refused before anything is trained
+(:func:`document_format`). Reading looks at the content, not the name, so either reader accepts
+either format and a misnamed file still loads; an ``.npz`` is opened with ``allow_pickle=False``
+and never unpickled. Writing goes through a temporary file renamed onto the target, so a crash
+while saving never corrupts the previous file.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav import validation
+from fuzzynav.errors import InputError
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def remove_stale_temporaries(path, older_than: float | None = None) -> list[Path]:
+    """Remove the ``.NAME.*.tmp`` files beside ``path`` (those last modified before
+    ``older_than``, a ``time.time()``, when given) that a killed save left; returns the files removed."""
+    path = Path(path)
+    removed = []
+    for tmp in path.parent.glob(f".{path.name}.*.tmp") if path.parent.is_dir() else ():
+        try:
+            if older_than is None or tmp.stat().st_mtime < older_than:
+                tmp.unlink()
+                removed.append(tmp)
+        except OSError:
+            continue  # gone already, or not ours to remove
+    return removed
+
+
+def atomic_write(path, write) -> None:
+    """Write through ``write(handle)`` (a binary file) to a temporary file ``.NAME.XXXX.tmp``
+    beside ``path``, then rename it onto ``path``; temporaries an earlier killed save left
+    beside ``path`` are then removed (:func:`remove_stale_temporaries`).
+
+    The file gets the usual permissions (0666 less the umask, not mkstemp's 0600); a path that
+    cannot be written (missing permission, a directory, ...) is an :class:`InputError` naming it.
+    """
+    path = Path(path)
+    tmp = None
+    started = time.time()
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+        with os.fdopen(fd, "wb") as handle:
+            write(handle)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
+        os.replace(tmp, path)
+    except BaseException as error:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+        if isinstance(error, OSError):
+            raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
+        raise
+    remove_stale_temporaries(path, older_than=started - 1.0)
+
+
+def write_text_atomic(path, text: str) -> None:
+    """Write ``text`` (UTF-8) to ``path`` atomically."""
+    data = text.encode("utf-8")
+    atomic_write(path, lambda handle: handle.write(data))
+
+
+def savefig_atomic(figure, path, **options) -> None:
+    """``figure.savefig(path, **options)`` atomically (format from the suffix, PNG without one)."""
+    suffix = Path(path).suffix.lower().lstrip(".")
+    options.setdefault("format", suffix or "png")
+    atomic_write(path, lambda handle: figure.savefig(handle, **options))
+
+
+def save_json_atomic(path, document: dict) -> None:
+    """Write ``document`` as JSON to ``path`` atomically (temporary file, then rename)."""
+    data = json.dumps(document, indent=2, sort_keys=False).encode()
+    atomic_write(path, lambda handle: handle.write(data))
+
+
+def save_npz_atomic(path, **arrays) -> None:
+    """Write arrays as ``.npz`` atomically; strings are stored as 0-d unicode arrays."""
+    atomic_write(path, lambda handle: np.savez(handle, **arrays))
+
+
+FORMATS = {".json": "JSON", ".npz": "NPZ"}
+_NPZ_MAGIC = b"PK"  # an .npz is a zip archive
+
+
+def document_format(path, field: str = "--out") -> str:
+    """``".json"`` or ``".npz"``: the format ``path`` names; another extension is an InputError."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in FORMATS:
+        raise InputError(f"must end in {' or '.join(FORMATS)} (the format to write)", source=str(path), field=field)
+    return suffix
+
+
+def save_document(path, document: dict) -> None:
+    """Write ``document`` atomically in the format of ``path``'s extension (module docstring)."""
+    if document_format(path) == ".npz":
+        save_npz_atomic(path, kind=np.array(str(document["kind"])), document=np.array(json.dumps(document)))
+    else:
+        save_json_atomic(path, document)
+
+
+def _read_npz(path: Path) -> dict:
+    validation.check_npz(path)  # sizes and dtypes its headers declare, before decompressing
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            document = {key: data[key] for key in data.files}
+    except Exception as error:  # corrupt data past the checked headers (zlib, CRC, truncation, ...)
+        raise InputError(f"cannot read model file: not a valid NumPy archive ({type(error).__name__}: {error})",
+                         source=str(path)) from None
+    if "document" in document:  # a JSON document stored in an archive (save_document)
+        text = validation.text(str(document["document"]), str(path), "document", max_length=validation.MAX_MODEL_BYTES)
+        return validation.parse_json(text, str(path))
+    if "kind" in document:
+        document["kind"] = str(document["kind"]) if document["kind"].dtype.kind == "U" else document["kind"]
+    return document
+
+
+def read_document(path) -> dict:
+    """Read a document written by :func:`save_document` (either format, whatever the name says)
+    or an archive of arrays with a ``kind``; a file that is neither is an InputError naming it.
+
+    Bounded before anything is decoded (:mod:`fuzzynav.validation`): a JSON file by its size,
+    nesting and values; an ``.npz`` by the sizes its zip and array headers declare
+    (:func:`fuzzynav.validation.check_npz`), never unpickled.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("no such model file", source=str(path))
+    try:
+        with path.open("rb") as handle:
+            npz = handle.read(len(_NPZ_MAGIC)) == _NPZ_MAGIC
+    except OSError as error:
+        raise InputError(f"cannot read model file ({error.strerror or error})", source=str(path)) from None
+    if npz:
+        document = _read_npz(path)
+    else:
+        data = validation.read_bytes(path, max_bytes=validation.MAX_MODEL_BYTES)
+        try:
+            document = validation.parse_json(validation.decode(data, str(path)), str(path))
+        except InputError as error:
+            if not error.problem.startswith(("invalid JSON", "cannot read file")):
+                raise  # valid JSON past a limit: the error names the field
+            where = f", {error.field}" if error.field else ""
+            raise InputError(f"cannot read model file: not a valid JSON document ({error.problem}{where})",
+                             source=str(path)) from None
+    if not isinstance(document, dict) or "kind" not in document:
+        raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
+    validation.text(document["kind"], str(path), "kind", max_length=100)
+    return document

@@ -1,0 +1,74 @@
+"""Resource limits of a world and of a scenario, and the checks of a world's size and contents.
+
+Each limit keeps one scenario's cost (memory, time per step, steps per run) bounded whatever a
+file says; past a limit the scenario is refused with an :class:`~fuzzynav.errors.InputError`
+naming the field. The table of every limit of fuzzynav is ``docs/limits.md``.
+"""
+
+from __future__ import annotations
+
+from fuzzynav import validation
+
+MAX_WORLD_SIZE = 10_000.0  # m: world width and height
+MAX_COORDINATE = 100_000.0  # m: |x| and |y| of any point of a scenario
+MIN_LENGTH = 1e-3  # m: smallest radius, semi-axis, wall thickness and tolerance
+MAX_LENGTH = 100_000.0  # m: largest radius, semi-axis, wall thickness and tolerance
+MAX_ANGLE = 1_000.0  # rad: |angle| of a pose or an ellipse
+MAX_OBSTACLES = 2_000
+MAX_POLYGON_VERTICES = 1_000
+MAX_TOTAL_VERTICES = 20_000  # polygon vertices + 4 per wall, over the whole world
+MAX_WAYPOINTS = 10_000
+MAX_TIME = 3_600.0  # s: a run's simulated time (36,000 steps of the default 0.1 s)
+MAX_TARGET_SPEED = 100.0  # m/s: speed of a moving target
+
+
+def coordinate(value, source=None, field=None) -> float:
+    """One coordinate (m) of a point: finite, at most :data:`MAX_COORDINATE` in magnitude."""
+    return validation.number(value, source, field, lo=-MAX_COORDINATE, hi=MAX_COORDINATE)
+
+
+def length(value, source=None, field=None) -> float:
+    """A radius, semi-axis, thickness or tolerance (m): in [MIN_LENGTH, MAX_LENGTH]."""
+    result = validation.number(value, source, field, lo=0.0, lo_open=True, hi=MAX_LENGTH)
+    if result < MIN_LENGTH:
+        validation.fail(f"must be at least {MIN_LENGTH:g} m, got {result!r}", source, field)
+    return result
+
+
+def angle(value, source=None, field=None) -> float:
+    """An angle (rad): finite, at most :data:`MAX_ANGLE` in magnitude."""
+    return validation.number(value, source, field, lo=-MAX_ANGLE, hi=MAX_ANGLE)
+
+
+def world_size(width, height, source=None, field: str = "world") -> tuple[float, float]:
+    """Width and height (m) of a world: each in (0, MAX_WORLD_SIZE]."""
+    return tuple(validation.number(value, source, f"{field}.{name}", lo=0.0, lo_open=True, hi=MAX_WORLD_SIZE)
+                 for name, value in (("width", width), ("height", height)))
+
+
+def world_contents(obstacles, width: float, height: float, source=None, field: str = "obstacles") -> None:
+    """At most :data:`MAX_OBSTACLES` obstacles and :data:`MAX_TOTAL_VERTICES` vertices, each
+    obstacle meeting the ``width`` × ``height`` world (one wholly outside it is a mistake)."""
+    if len(obstacles) > MAX_OBSTACLES:
+        validation.fail(f"at most {MAX_OBSTACLES} obstacles, got {len(obstacles)}", source, field)
+    total = 0
+    for i, shape in enumerate(obstacles):
+        if not callable(getattr(shape, "bounds", None)):
+            validation.fail(f"must be a Circle, Polygon, Wall or Ellipse, got {type(shape).__name__}", source,
+                            f"{field}[{i}]")
+        lo, hi = shape.bounds()
+        if hi[0] < 0 or hi[1] < 0 or lo[0] > width or lo[1] > height:
+            validation.fail(f"{shape.kind} lies wholly outside the {width:g} x {height:g} m world", source,
+                            f"{field}[{i}]")
+        total += len(getattr(shape, "points", ())) + (4 if shape.kind == "wall" else 0)
+    if total > MAX_TOTAL_VERTICES:
+        validation.fail(f"at most {MAX_TOTAL_VERTICES} polygon and wall vertices in a world, got {total}", source,
+                        field)
+
+
+def sensor_ring(name, source=None, field: str = "sensors") -> str | None:
+    """The scenario's optional ``sensors`` key: a ring of :data:`fuzzynav.robot.sensors.RINGS`
+    (``thesis``, ``beam``, ``lidar``), or None where absent (the controller's ring)."""
+    from fuzzynav.robot.sensors import RINGS
+
+    return None if name is None else validation.choice(name, tuple(RINGS), source, field)

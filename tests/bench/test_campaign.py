@@ -1,0 +1,129 @@
+"""``fuzzynav bench``: files, resume after a kill, local = Ray, bad input."""
+
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from fuzzynav.bench.measures import barn_score
+from fuzzynav.cli import main
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "barn"
+FINAL = ("runs.csv", "runs.jsonl", "summary.json", "summary.md")
+CONTROLLERS = "goal-seeking,vfh"
+
+
+def _bench(out, *extra):
+    return main(["bench", "circles:3:5", "--controllers", CONTROLLERS, "--seeds", "2", "--workers", "1",
+                 "--out", str(out), "--quiet", "--gallery", "1", *extra])
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench") / "reference"
+    assert _bench(out) == 0
+    return out
+
+
+def test_files_rows_and_summary(reference):
+    for name in (*FINAL, "index.html", "rates.png", "path_ratio.png"):
+        assert (reference / name).is_file(), name
+    lines = (reference / "runs.csv").read_text().splitlines()
+    assert lines[0].startswith("suite,world,seed,controller,outcome,time_s,path_length_m,shortest_path_m,path_ratio")
+    assert len(lines) == 1 + 3 * 2 * 2
+    rows = [json.loads(line) for line in (reference / "runs.jsonl").read_text().splitlines()]
+    assert [r["world"] for r in rows[:4]] == ["circles-5-000"] * 2 + ["circles-5-001"] * 2  # seed 0 first
+    assert {r["world"][:9] for r in rows[6:]} == {"circles-6"}  # seed 1 draws its own worlds
+    for r in rows:
+        assert r["shortest_path_m"] > 0
+        if r["outcome"] == "reached":
+            assert r["path_ratio"] >= 1.0 - 1e-9
+    summary = json.loads((reference / "summary.json").read_text())
+    assert [(s["suite"], s["controller"]) for s in summary["results"]] == [("circles:3:5", "goal-seeking"),
+                                                                           ("circles:3:5", "vfh")]
+    assert "failures-" in (reference / "index.html").read_text() or all(r["outcome"] == "reached" for r in rows)
+    assert (reference / "cache" / "shortest").is_dir() and len(list((reference / "cache" / "shortest").iterdir())) == 6
+
+
+def test_existing_campaign_needs_resume(reference, tmp_path, capsys):
+    copy = tmp_path / "copy"
+    shutil.copytree(reference, copy)
+    assert _bench(copy) == 2
+    assert "--resume" in capsys.readouterr().err
+    assert _bench(copy, "--resume") == 0  # nothing left to run: the same files
+    for name in FINAL:
+        assert (copy / name).read_bytes() == (reference / name).read_bytes(), name
+
+
+@pytest.mark.slow
+def test_killed_half_way_then_resumed_gives_the_same_files(reference, tmp_path):
+    out = tmp_path / "killed"
+    command = [sys.executable, "-c", "import sys; from fuzzynav.cli import main; sys.exit(main(sys.argv[1:]))", "bench", "circles:3:5", "--controllers", CONTROLLERS,
+               "--seeds", "2", "--workers", "1", "--out", str(out), "--quiet", "--gallery", "1"]
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and process.poll() is None:
+        jsonl = out / "runs.jsonl"
+        if jsonl.is_file() and len(jsonl.read_text().splitlines()) >= 4:
+            break
+        time.sleep(0.02)
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait()
+    done = len((out / "runs.jsonl").read_text().splitlines())
+    assert 4 <= done < 12, "the campaign must be killed half-way"
+    with open(out / "runs.jsonl", "a") as handle:  # a line cut by the kill
+        handle.write('{"suite": "circles:3:5", "wor')
+    assert main([*command[3:], "--resume"]) == 0
+    for name in FINAL:
+        assert (out / name).read_bytes() == (reference / name).read_bytes(), name
+
+
+@pytest.mark.slow
+def test_ray_backend_gives_byte_identical_runs(reference, tmp_path):
+    if os.environ.get("CI"):  # .ci/run installs the 'cluster' extra: there the test must run, never skip
+        import ray  # noqa: F401
+    else:
+        pytest.importorskip("ray", reason="the Ray backend is the 'cluster' extra (.ci/run installs it)")
+    out = tmp_path / "ray"
+    assert _bench(out, "--backend", "ray", "--workers", "2") == 0
+    for name in FINAL:
+        assert (out / name).read_bytes() == (reference / name).read_bytes(), name
+
+
+def test_folder_suite_with_barn_reference_scores(tmp_path):
+    barn = tmp_path / "barn"
+    assert main(["import", "barn", str(DATA / "world_0.world"), "--out", str(barn), "--scale", "1.5"]) == 0
+    out = tmp_path / "out"
+    assert main(["bench", str(barn), "--controllers", "astar-pp", "--workers", "1", "--out", str(out), "--quiet"]) == 0
+    (row,) = [json.loads(line) for line in (out / "runs.jsonl").read_text().splitlines()]
+    assert row["suite"] == "barn" and row["world"] == "world_0"
+    assert row["outcome"] == "reached"
+    optimal = json.loads((barn / "benchmark.json").read_text())["scenarios"]["world_0"]["barn_optimal_path_m"]
+    assert row["barn_score"] == pytest.approx(barn_score(True, row["time_s"], optimal))
+    assert 0.0 < row["barn_score"] <= 0.5
+
+
+def test_barn_score_follows_run_py():
+    assert barn_score(True, 3.0, 10.0) == pytest.approx(5.0 / 10.0)  # clipped below at 2 t_opt
+    assert barn_score(True, 20.0, 10.0) == pytest.approx(5.0 / 20.0)
+    assert barn_score(True, 90.0, 10.0) == pytest.approx(5.0 / 40.0)  # clipped above at 8 t_opt
+    assert barn_score(False, 20.0, 10.0) == 0.0
+
+
+@pytest.mark.parametrize("argv, field", [
+    (["bench", "nowhere", "--controllers", "dwa"], "SUITE"),
+    (["bench", "mixed:x", "--controllers", "dwa"], "COUNT"),
+    (["bench", "mixed:2", "--controllers", "dwb"], "--controllers"),
+    (["bench", "mixed:2", "--controllers", "missing.json"], "missing.json"),
+    (["bench", "mixed:2", "--controllers", "dwa,dwa"], "repeat"),
+    (["bench", "mixed:2", "mixed:2", "--controllers", "dwa"], "repeat"),
+])
+def test_bad_input_exits_2_naming_the_field(argv, field, capsys, tmp_path):
+    assert main([*argv, "--out", str(tmp_path / "o")]) == 2
+    assert field in capsys.readouterr().err

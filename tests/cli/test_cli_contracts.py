@@ -1,0 +1,169 @@
+"""The command-line contracts: bad input exits 2 with a message naming the
+option or file, never a traceback; files written atomically keep ordinary permissions."""
+
+import os
+import stat
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from fuzzynav.cli import main
+from fuzzynav.fuzzy.io import dumps
+from fuzzynav.fuzzy.io.document import to_document
+from fuzzynav.fuzzy.systems import get_system
+from fuzzynav.storage import save_json_atomic
+
+
+def run_cli(capsys, *argv):
+    """Exit status and stderr of ``fuzzynav argv`` (argparse errors exit through SystemExit)."""
+    try:
+        status = main(list(argv))
+    except SystemExit as exit_:
+        status = exit_.code
+    return status, capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv", [
+    ["run", "path-v", "--controller", "stanley"],
+    ["train", "q-goal", "--episodes", "1", "--quiet"],
+    ["evaluate", "--controller", "fuzzy-2b", "--worlds", "circles", "--n", "1"],
+    ["reproduce", "fig-IV-12", "--quick"],
+])
+def test_negative_seed_is_a_usage_error(capsys, tmp_path, monkeypatch, argv):
+    monkeypatch.chdir(tmp_path)
+    status, err = run_cli(capsys, *argv, "--seed", "-1")
+    assert status == 2
+    assert "--seed: must be a non-negative integer, got -1" in err
+    assert "Traceback" not in err and not list(tmp_path.iterdir())
+
+
+def test_corrupt_npz_model_is_input_error(capsys, tmp_path):
+    model = tmp_path / "model.npz"
+    model.write_bytes(b"PK\x03\x04 not really a zip archive")
+    status, err = run_cli(capsys, "run", "path-v", "--model", str(model))
+    assert status == 2
+    assert f"{model}: cannot read model file" in err
+
+
+def test_atomic_model_file_has_umask_permissions(tmp_path):
+    path = tmp_path / "m.json"
+    save_json_atomic(path, {"kind": "q-goal"})
+    mask = os.umask(0)
+    os.umask(mask)
+    assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~mask
+    assert [p.name for p in tmp_path.iterdir()] == ["m.json"]  # no temporary file left
+
+
+def test_unwritable_model_path_is_input_error(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("a file, not a folder")
+    out = blocker / "model.json"
+    status, err = run_cli(capsys, "train", "q-goal", "--episodes", "1", "--quiet", "--out", str(out))
+    assert status == 2
+    assert "cannot write" in err and str(blocker) in err and "Traceback" not in err
+
+
+def test_train_out_directory_rejected_before_training(capsys, tmp_path):
+    status, err = run_cli(capsys, "train", "q-goal", "--quiet", "--out", str(tmp_path))
+    assert status == 2
+    assert "--out:" in err and "is a directory" in err
+    assert not list(tmp_path.iterdir())  # nothing trained, no checkpoint
+
+
+def test_unwritable_output_file_exits_2_naming_it(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    status, err = run_cli(capsys, "fis", "convert", "goal-seeking", "--to", "fll", "-o", str(blocker / "gs.fll"))
+    assert status == 2
+    assert str(blocker / "gs.fll") in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["run", "path-v", "--controller", "stanley", "--plot", "out.jpgx"], "matplotlib cannot write '.jpgx'"),
+    (["run", "path-v", "--controller", "stanley", "--animate", "out.mp4"], "ending in .gif"),
+    (["fis", "plot", "goal-seeking", "-o", "out.foo"], "matplotlib cannot write '.foo'"),
+])
+def test_figure_file_types_checked_before_running(capsys, tmp_path, monkeypatch, argv, message):
+    monkeypatch.chdir(tmp_path)
+    status, err = run_cli(capsys, *argv)
+    assert status == 2 and message in err
+    assert not list(tmp_path.iterdir())
+
+
+def test_closed_stdout_pipe_ends_quietly():
+    process = subprocess.Popen([sys.executable, "-m", "fuzzynav", "fis", "show", "goal-seeking"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    process.stdout.close()  # the reader (``| head``) goes away before the command writes
+    err = process.stderr.read().decode()
+    assert process.wait(timeout=60) == 141
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize("inputs, message", [
+    (["drg=5", "theta=0", "drg=6"], "--input drg=6: drg is given twice"),
+    (["drg=nan", "theta=0"], "--input drg=nan: NaN input"),
+])
+def test_fis_eval_rejects_ambiguous_inputs(capsys, inputs, message):
+    argv = ["fis", "eval", "goal-seeking"]
+    for pair in inputs:
+        argv += ["--input", pair]
+    status, err = run_cli(capsys, *argv)
+    assert status == 2 and message in err
+
+
+def test_fis_eval_csv_nan_names_file_and_line(capsys, tmp_path):
+    table = tmp_path / "in.csv"
+    table.write_text("drg,theta\n5,0.3\n2,nan\n")
+    status, err = run_cli(capsys, "fis", "eval", "goal-seeking", "--csv", str(table))
+    assert status == 2
+    assert f"{table}: line 3: NaN input" in err
+
+
+def _yaml_with(tmp_path, old, new):
+    text = dumps(get_system("goal-seeking"), "yaml")
+    assert old in text
+    path = tmp_path / "fis.yaml"
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ("tnorm: product", "tnrom: min", "tnrom: unknown key 'tnrom' (did you mean 'tnorm'?)"),
+    ("  universe:", "  universes:", "inputs[0].universes: unknown key 'universes' (did you mean 'universe'?)"),
+    ("      kind: singleton", "      knd: singleton", "outputs[0].terms.NG.knd: unknown key 'knd'"),
+])
+def test_fis_document_typos_are_rejected(capsys, tmp_path, old, new, message):
+    status, err = run_cli(capsys, "fis", "show", str(_yaml_with(tmp_path, old, new)))
+    assert status == 2 and message in err
+
+
+def test_fis_document_keeps_a_model_files_own_keys(tmp_path):
+    """A learned controller's file is a fuzzy system plus its kind and training record."""
+    system = get_system("goal-seeking")
+    document = {"kind": "fql-goal", **to_document(system), "constant_speed": None, "training": {"episodes": 3}}
+    path = tmp_path / "model.json"
+    save_json_atomic(path, document)
+    from fuzzynav.fuzzy.io import load
+
+    X = np.array([[5.0, 0.3], [1.0, -1.0]])
+    np.testing.assert_array_equal(load(path).evaluate(X), system.evaluate(X))
+
+
+def test_fll_unknown_key_names_the_line(capsys, tmp_path):
+    text = dumps(get_system("goal-seeking"), "fll")
+    path = tmp_path / "gs.fll"
+    path.write_text(text.replace("  lock-range: true", "  lock-rnge: true", 1))
+    line = text.splitlines().index("  lock-range: true") + 1
+    status, err = run_cli(capsys, "fis", "show", str(path))
+    assert status == 2
+    assert f"line {line}: 'lock-rnge' is not a key of InputVariable" in err
+
+
+def test_fis_show_of_a_non_fuzzy_model_file_says_what_it_is(capsys, tmp_path):
+    path = tmp_path / "q.json"
+    save_json_atomic(path, {"kind": "q-goal", "q": [[0.0]]})
+    status, err = run_cli(capsys, "fis", "show", str(path))
+    assert status == 2
+    assert f"{path}: kind: a 'q-goal' model file, not a fuzzy system" in err

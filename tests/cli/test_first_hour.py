@@ -1,0 +1,141 @@
+"""What a new user meets first: generated worlds as files, failures to rerun, a user's world in
+the demo, help that lists the controllers, progress bars only on a terminal, readable numbers."""
+
+import json
+
+import numpy as np
+import pytest
+
+from fuzzynav import progress
+from fuzzynav.cli import main
+from fuzzynav.cli.demo import markdown_table
+from fuzzynav.cli.printing import result_lines
+from fuzzynav.catalog.controllers import available, make_controller
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.viz.palette import BEHAVIOURS, behaviour_style
+from fuzzynav.world.generate import generate_worlds
+from fuzzynav.world.scenario import load_scenario
+
+
+def test_worlds_generate_writes_the_worlds_evaluate_runs(tmp_path, capsys):
+    assert main(["worlds", "generate", "circles", "--n", "2", "--seed", "3", "--out", str(tmp_path)]) == 0
+    assert "wrote 2 scenario files" in capsys.readouterr().out
+    for original in generate_worlds("circles", 2, 3):
+        again = load_scenario(tmp_path / f"{original.name}.yaml")
+        assert again.to_dict() == original.to_dict()
+    assert main(["worlds", "generate", "circle", "--out", str(tmp_path)]) == 2
+    assert "FAMILY" in capsys.readouterr().err
+
+
+def test_save_failures_writes_worlds_that_rerun_to_the_same_outcome(tmp_path, capsys):
+    out = tmp_path / "failed"
+    assert main(["evaluate", "--controller", "goal-seeking", "--worlds", "mixed", "--n", "3", "--json",
+                 "--save-failures", str(out)]) == 0
+    result = json.loads(capsys.readouterr().out)
+    failed = [run for run in result["episodes"] if run["outcome"] != "reached"]
+    assert failed, "goal seeking alone should hit an obstacle in one of these worlds"
+    assert sorted(p.name for p in out.iterdir()) == sorted(f"{r['scenario']}.{ext}" for r in failed
+                                                           for ext in ("png", "yaml"))
+    for run in failed:
+        scenario = load_scenario(out / f"{run['scenario']}.yaml")
+        assert scenario.controllers == ("goal-seeking",)
+        again = metrics(run_episode(scenario, make_controller("goal-seeking"), seed=0), scenario)
+        assert (again["outcome"], again["time_s"]) == (run["outcome"], run["time_s"])
+
+
+def test_demo_runs_a_users_world_with_the_controllers_given(tmp_path, capsys):
+    world = tmp_path / "mine.yaml"
+    world.write_text("robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nobstacles:\n  - circle: {center: [8, 8], radius: 1}\n")
+    assert main(["demo", "--scenario", str(world), "--out", str(tmp_path / "none")]) == 2
+    assert "--controllers" in capsys.readouterr().err
+    assert main(["demo", "--scenario", str(world), "--scenario", "path-v", "--controllers", "fuzzy-2b,fuzzy-tracker",
+                 "--out", str(tmp_path / "out"), "--no-plots"]) == 0
+    assert "wrote 4 runs" in capsys.readouterr().out
+    table = (tmp_path / "out" / "metrics.md").read_text()
+    assert "mean_cross_track_m" in table.splitlines()[0] and "| mine | fuzzy-2b |" in table
+
+
+def test_metrics_table_carries_each_tasks_own_columns():
+    rows = [{"scenario": "g", "controller": "c", "task": "goal", "outcome": "reached", "time_s": 1.0},
+            {"scenario": "p", "controller": "c", "task": "path", "outcome": "reached", "time_s": 2.0,
+             "mean_cross_track_m": 0.0123, "max_cross_track_m": 0.2, "waypoints_reached": 3}]
+    header, _, goal, path = markdown_table(rows).splitlines()
+    assert header.endswith("| mean_cross_track_m | max_cross_track_m | waypoints_reached |")
+    assert goal.endswith("|  |  |  |") and path.endswith("| 0.012 | 0.200 | 3 |")
+
+
+def test_run_help_lists_every_controller(capsys):
+    with pytest.raises(SystemExit):
+        main(["run", "--help"])
+    text = capsys.readouterr().out
+    assert all(name in text for name in available())
+
+
+def test_progress_bars_only_on_a_terminal(monkeypatch):
+    monkeypatch.setattr("sys.stderr.isatty", lambda: False, raising=False)
+    assert not progress.enabled()
+    monkeypatch.setattr("sys.stderr.isatty", lambda: True, raising=False)
+    assert progress.enabled()
+    with progress.quiet():
+        assert not progress.enabled() and progress.bar(total=3).disable
+    assert progress.enabled()
+
+
+def test_printed_results_carry_units_and_meaning():
+    lines = result_lines({"train_seconds": 0.05, "validation_rmse_rad": 5e-4, "solver_iterations": 27,
+                          "success_rate": 0.9})
+    assert lines == ["training time: 0.05 s", "validation RMSE (steering angle): 5.00e-04 rad",
+                     "solver iterations (L-BFGS): 27", "success rate: 90.0 %"]
+
+
+def test_a_behaviour_keeps_its_colour_whatever_the_order():
+    colours = [behaviour_style(label)[0] for label in BEHAVIOURS]
+    assert behaviour_style("FOA+VRB") == BEHAVIOURS["FOA+VRB"]
+    assert behaviour_style("my own") == behaviour_style("my own")
+    assert len(set(colours[:5])) == 5  # the five-behaviour navigator's labels are told apart
+
+
+def test_plot_colours_follow_the_behaviour_not_its_order():
+    from fuzzynav.viz.trajectories import plot_trajectory
+
+    scenario = load_scenario("fig-IV-15a")
+    trace = run_episode(scenario, make_controller("fuzzy-2b"))
+    ax = plot_trajectory(trace, scenario)
+    segments = ax.collections[0]
+    first = np.asarray(segments.get_colors())
+    expected = {"GSB": behaviour_style("GSB")[0], "OA": behaviour_style("OA")[0]}
+    from matplotlib.colors import to_rgba
+
+    assert all(np.allclose(first[k], to_rgba(expected[str(b)])) for k, b in enumerate(trace.behaviour))
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "GSB: goal seeking (Table IV.1)" in legend and any(t.startswith("A, B") for t in legend)
+
+
+def test_a_generated_world_opens_by_the_name_evaluate_gives_it(capsys):
+    from fuzzynav.world.generate import generated_world
+
+    assert generated_world("circles-2-004").to_dict() == generate_worlds("circles", 5, 2)[4].to_dict()
+    assert generated_world("fig-IV-23") is None and generated_world("mixed-a-1") is None
+    assert main(["run", "circles-2-004", "--controller", "goal-seeking"]) == 0
+    assert capsys.readouterr().out.startswith("circles-2-004 / goal-seeking:")
+    assert main(["run", "circles-2-x", "--controller", "goal-seeking"]) == 2
+
+
+def test_neural_tracker_training_reports_its_solver_iterations(tmp_path, capsys):
+    assert main(["train", "neural-tracker", "--out", str(tmp_path / "nt.json")]) == 0
+    lines = dict(line.split(": ", 1) for line in capsys.readouterr().out.splitlines())
+    assert int(lines["solver iterations (L-BFGS)"]) > 1
+    assert lines["training time"].endswith(" s") and lines["validation RMSE (steering angle)"].endswith(" rad")
+    assert main(["run", "path-v", "--model", str(tmp_path / "nt.json")]) == 0
+
+
+def test_animation_size_and_rate(tmp_path, capsys):
+    from PIL import Image
+
+    gif = tmp_path / "a.gif"
+    assert main(["run", "fig-IV-13", "--controller", "goal-seeking", "--max-time", "2", "--animate", str(gif),
+                 "--size", "160", "--fps", "20"]) == 0
+    with Image.open(gif) as image:
+        assert image.size == (160, 160) and image.info["duration"] == 50
+    assert main(["run", "fig-IV-13", "--controller", "goal-seeking", "--animate", str(gif), "--size", "9"]) == 2
+    assert "--size" in capsys.readouterr().err

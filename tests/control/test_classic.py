@@ -1,0 +1,67 @@
+"""The classic navigators (dwa, apf, vfh, astar-pp): closed-loop runs on generated worlds."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.control.classic.astar_pp import AStarPurePursuit
+from fuzzynav.catalog.controllers import available, make_controller
+from fuzzynav.errors import InputError
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.world.generate import generate_world
+from fuzzynav.world.scenario import scenario_from_dict
+
+CLASSIC = ("dwa", "apf", "vfh", "astar-pp")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", CLASSIC)
+def test_reaches_the_goal_on_mixed_worlds_without_collision(name):
+    for i in range(3):
+        scenario = generate_world("mixed", 0, i)
+        trace = run_episode(scenario, make_controller(name), seed=0)
+        assert trace.outcome == "reached", (name, scenario.name, trace.outcome)
+        assert metrics(trace, scenario)["min_clearance_m"] > 0
+
+
+def test_registered_and_map_awareness_labelled():
+    listing = available()
+    assert set(CLASSIC) <= set(listing)
+    assert "MAP-AWARE" in listing["astar-pp"]
+    assert getattr(make_controller("astar-pp"), "map_aware", False)
+    assert not any(getattr(make_controller(name), "map_aware", False) for name in ("dwa", "apf", "vfh"))
+
+
+WALL = {"robot": {"x": 2, "y": 5, "theta": 0}, "goal": {"x": 18, "y": 5},
+        "obstacles": [{"wall": {"start": [10, 3.5], "end": [10, 6.5], "thickness": 0.3}}], "max_time": 60}
+
+
+@pytest.mark.parametrize("name", ("dwa", "apf", "vfh"))
+def test_reactive_navigators_pass_a_wall_they_only_see_with_the_range_sensors(name):
+    """A 3 m wall across the way. (A 7.6 m one traps all three in loops in front of it: they
+    remember one second of range hits, so the wall's far parts are forgotten while they turn.)"""
+    scenario = scenario_from_dict(dict(WALL, world={"width": 20, "height": 10}))
+    trace = run_episode(scenario, make_controller(name), seed=0)
+    assert trace.outcome == "reached"
+    assert trace.pose[:, 1].max() > 6.5 or trace.pose[:, 1].min() < 3.5  # went round an end of the wall
+
+
+def test_astar_pp_plans_for_its_body_radius():
+    """A 1.0 m gap: a 0.3 m body passes through it, a 0.6 m body must go round."""
+    doc = {"world": {"width": 20, "height": 12}, "robot": {"x": 2, "y": 6, "theta": 0}, "goal": {"x": 18, "y": 6},
+           "obstacles": [{"wall": {"start": [10, 0], "end": [10, 5.5], "thickness": 0.3}},
+                         {"wall": {"start": [10, 6.5], "end": [10, 10], "thickness": 0.3}}]}
+    scenario = scenario_from_dict(doc)
+    small, large = AStarPurePursuit(radius=0.3), AStarPurePursuit(radius=0.6)
+    small.prepare(scenario)
+    large.prepare(scenario)
+    crossing = lambda path: path[np.argmin(np.abs(path[:, 0] - 10.0)), 1]
+    assert 5.5 < crossing(small.path) < 6.5
+    assert crossing(large.path) > 10.0
+    assert run_episode(scenario, AStarPurePursuit(radius=0.3), seed=0).outcome == "reached"
+
+
+@pytest.mark.parametrize("name, option", [("dwa", "braking"), ("apf", "influence"), ("vfh", "window"),
+                                          ("astar-pp", "lookahead"), ("dwa", "radius")])
+def test_bad_options_name_the_field(name, option):
+    with pytest.raises(InputError, match=option):
+        make_controller(name, **{option: -1.0})

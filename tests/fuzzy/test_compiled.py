@@ -1,0 +1,82 @@
+"""The compiled engine kernels: norms at their boundaries, and the shortcuts that must not change a bit
+(skipped samples and activations of a Mamdani output, chunks of rows)."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.fuzzy.engine import compiled
+from fuzzynav.fuzzy.engine.defuzzify import midpoints
+from fuzzynav.fuzzy.io.fll import from_fll_engine
+from fuzzynav.fuzzy.operators import SNORMS, TNORMS
+from tests.fuzzy.fll_fixtures import ENGINES
+
+GRID = np.linspace(0.0, 1.0, 101)
+
+
+@pytest.mark.parametrize("kind", range(len(TNORMS)), ids=TNORMS)
+def test_tnorm_has_one_as_identity_and_zero_as_absorbing(kind):
+    for a in GRID:
+        assert compiled.tnorm(kind, a, 1.0) == pytest.approx(a, abs=1e-15) == compiled.tnorm(kind, 1.0, a)
+        assert compiled.tnorm(kind, a, 0.0) == 0.0 and compiled.tnorm(kind, 0.0, a) == 0.0  # exactly: see integral
+
+
+@pytest.mark.parametrize("kind", range(len(SNORMS)), ids=SNORMS)
+def test_snorm_has_zero_as_identity(kind):
+    for a in GRID:  # exactly: see integral
+        assert compiled.snorm(kind, a, 0.0) == a and compiled.snorm(kind, 0.0, a) == a
+
+
+def test_minimum_and_maximum_propagate_nan_as_numpy_does():
+    for a, b in ((np.nan, 0.3), (0.3, np.nan)):
+        assert np.isnan(compiled.tnorm(TNORMS.index("Minimum"), a, b))
+        assert np.isnan(compiled.snorm(SNORMS.index("Maximum"), a, b))
+
+
+def _shapes(rng, n_terms, size):
+    """Triangles, some narrow (short support), plus one term nowhere zero."""
+    x = midpoints(0.0, 1.0, size)
+    centres, widths = rng.uniform(0, 1, n_terms), rng.uniform(0.02, 0.6, n_terms)
+    shapes = np.clip(1.0 - np.abs(x[None, :] - centres[:, None]) / widths[:, None], 0.0, 1.0)
+    shapes[0] = 0.5 + 0.5 * np.cos(3 * x)
+    return np.ascontiguousarray(shapes), x
+
+
+@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+def test_integral_skips_only_what_cannot_change_the_result(reduction):
+    """Skipping zero activations and samples outside a term's support gives the very bits of
+    sampling every term everywhere, for every implication and aggregation."""
+    rng = np.random.default_rng(reduction)
+    shapes, x = _shapes(rng, 5, 97)
+    degrees = rng.uniform(0, 1, (7, 300))
+    degrees[rng.uniform(size=degrees.shape) < 0.4] = 0.0
+    degrees[:, :3] = 0.0  # rows where nothing fires: NaN
+    degrees[2, 3] = 1.5  # a row outside [0, 1] takes the full path
+    rows = np.arange(7, dtype=np.int64)
+    terms = np.array([0, 1, 2, 3, 4, 1, 3], dtype=np.int64)
+    support = np.array([[np.flatnonzero(s)[0], np.flatnonzero(s)[-1] + 1] for s in shapes], dtype=np.int64)
+    everywhere = np.tile(np.array([-1, x.size], dtype=np.int64), (5, 1))
+    for aggregation in range(len(SNORMS)):
+        for implication in range(len(TNORMS)):
+            if SNORMS[aggregation] == "Maximum":  # units: one per (term, implication)
+                units, unit_term = terms, np.arange(5, dtype=np.int64)
+            else:
+                units, unit_term = rows, terms
+            imps = np.full(unit_term.size, implication, dtype=np.int64)
+            fast, full = np.empty(300), np.empty(300)
+            compiled.integral(degrees, rows, units, unit_term, imps, shapes, support, x, aggregation, reduction, fast)
+            compiled.integral(degrees, rows, units, unit_term, imps, shapes, everywhere, x, aggregation, reduction, full)
+            np.testing.assert_array_equal(fast, full, err_msg=f"{SNORMS[aggregation]} / {TNORMS[implication]}")
+            assert np.isnan(fast[:3]).all()
+            if (SNORMS[aggregation], TNORMS[implication]) == ("Maximum", "Minimum"):
+                assert (np.isfinite(fast) == (degrees > 0).any(axis=0)).all()
+
+
+@pytest.mark.parametrize("name", ["takagi-sugeno", "mamdani", "chained", "activation-Highest", "snorm-EinsteinSum"])
+def test_a_batch_equals_its_rows_evaluated_apart(name):
+    """Chunks of rows (rule degrees, weighted outputs) change nothing."""
+    engine = from_fll_engine(ENGINES[name])
+    rng = np.random.default_rng(1)
+    X = np.column_stack([rng.uniform(v.minimum - 2, v.maximum + 2, 1300) for v in engine.inputs])
+    whole = engine.evaluate(X)
+    apart = np.vstack([engine.evaluate(X[k:k + 1]) for k in range(0, 1300, 97)])
+    np.testing.assert_array_equal(whole[::97], apart)

@@ -1,0 +1,189 @@
+"""MATLAB .fis files: every membership function against its formula in the Fuzzy Logic Toolbox
+reference (written out here independently), MATLAB's semantics, round trips, errors."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fuzzynav.cli import main
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.engine import Engine
+from fuzzynav.fuzzy.fis_terms import term_from_fis, term_to_fis
+from fuzzynav.fuzzy.io import dumps, load, loads
+from fuzzynav.fuzzy.io.fis import from_fis
+from fuzzynav.fuzzy.systems import get_system
+
+X = np.linspace(-3.0, 13.0, 3201)
+
+
+def _sig(x, a, c):
+    return 1.0 / (1.0 + np.exp(-a * (x - c)))
+
+
+def _smf(x, a, b):
+    m = (a + b) / 2
+    return np.select([x <= a, x <= m, x <= b], [0.0, 2 * ((x - a) / (b - a)) ** 2, 1 - 2 * ((x - b) / (b - a)) ** 2], 1.0)
+
+
+def _zmf(x, a, b):
+    return 1.0 - _smf(x, a, b)
+
+
+MATLAB = {  # name: (parameters, formula of the MATLAB reference page)
+    "trimf": ([1.0, 4.0, 9.0], lambda x, a, b, c: np.maximum(np.minimum((x - a) / (b - a), (c - x) / (c - b)), 0)),
+    "trapmf": ([0.0, 2.0, 5.0, 11.0],
+               lambda x, a, b, c, d: np.maximum(np.minimum(np.minimum((x - a) / (b - a), 1), (d - x) / (d - c)), 0)),
+    "gaussmf": ([1.7, 4.0], lambda x, s, c: np.exp(-((x - c) ** 2) / (2 * s * s))),
+    "gauss2mf": ([1.0, 3.0, 2.0, 6.0], lambda x, s1, c1, s2, c2: np.where(x <= c1, np.exp(-((x - c1) ** 2) / (2 * s1 * s1)), 1)
+                 * np.where(x >= c2, np.exp(-((x - c2) ** 2) / (2 * s2 * s2)), 1)),
+    "gbellmf": ([2.0, 3.0, 5.0], lambda x, a, b, c: 1 / (1 + np.abs((x - c) / a) ** (2 * b))),
+    "sigmf": ([2.0, 4.0], lambda x, a, c: _sig(x, a, c)),
+    "dsigmf": ([5.0, 2.0, 5.0, 7.0], lambda x, a1, c1, a2, c2: np.abs(_sig(x, a1, c1) - _sig(x, a2, c2))),
+    "psigmf": ([2.0, 3.0, -5.0, 8.0], lambda x, a1, c1, a2, c2: _sig(x, a1, c1) * _sig(x, a2, c2)),
+    "smf": ([1.0, 8.0], _smf),
+    "zmf": ([3.0, 7.0], _zmf),
+    "pimf": ([1.0, 4.0, 5.0, 10.0], lambda x, a, b, c, d: _smf(x, a, b) * _zmf(x, c, d)),
+    "linsmf": ([2.0, 6.0], lambda x, a, b: np.clip((x - a) / (b - a), 0, 1)),
+    "linzmf": ([2.0, 6.0], lambda x, a, b: np.clip((b - x) / (b - a), 0, 1)),
+}
+
+
+@pytest.mark.parametrize("kind", list(MATLAB))
+def test_membership_function_matches_matlab_formula(kind):
+    params, formula = MATLAB[kind]
+    label, mf = term_from_fis(f"'t':'{kind}',[{' '.join(map(str, params))}]", "t.fis", 1)
+    assert label == "t"
+    np.testing.assert_allclose(mf(X), formula(X, *params), rtol=0, atol=1e-12)
+    # written back the same way
+    assert term_to_fis(mf) == f"'{kind}',[{' '.join(repr(float(p)) for p in params)}]"
+
+
+def test_constant_and_linear_conclusions():
+    text = """[System]
+Name='lin'
+Type='sugeno'
+NumInputs=2
+NumOutputs=1
+AndMethod='prod'
+OrMethod='probor'
+DefuzzMethod='wtaver'
+
+[Input1]
+Name='a'
+Range=[0 1]
+MF1='lo':'trimf',[-1 0 1]
+MF2='hi':'trimf',[0 1 2]
+
+[Input2]
+Name='b'
+Range=[0 2]
+MF1='all':'trapmf',[-1 0 2 3]
+
+[Output1]
+Name='y'
+Range=[-10 10]
+MF1='c':'constant',[2.5]
+MF2='l':'linear',[1 -2 0.5]
+
+[Rules]
+1 1, 1 (1) : 1
+2 0, 2 (0.5) : 1
+"""
+    system = loads(text, "fis", source="lin.fis")
+    a, b = 0.3, 1.2
+    w1, w2 = 0.7, 0.5 * 0.3
+    expected = (w1 * 2.5 + w2 * (a - 2 * b + 0.5)) / (w1 + w2)
+    assert system.evaluate_one(a, b)[0] == pytest.approx(expected, abs=1e-14)
+
+
+MAMDANI = """[System]
+Name='tip'
+Type='mamdani'
+Version=2.0
+NumInputs=1
+NumOutputs=1
+NumRules=2
+AndMethod='min'
+OrMethod='max'
+ImpMethod='min'
+AggMethod='max'
+DefuzzMethod='centroid'
+
+[Input1]
+Name='service'
+Range=[0 10]
+NumMFs=2
+MF1='poor':'trapmf',[0 0 2 6]
+MF2='good':'trapmf',[4 8 10 10]
+
+[Output1]
+Name='tip'
+Range=[0 30]
+NumMFs=2
+MF1='low':'trimf',[0 5 15]
+MF2='high':'trimf',[10 25 30]
+
+[Rules]
+1, 1 (1) : 1
+-2, 2 (0.5) : 1
+"""
+
+
+def test_matlab_semantics():
+    system = loads(MAMDANI, "fis", source="tip.fis")
+    assert isinstance(system, Engine)
+    # MATLAB: the output sampled at 101 points from end to end (evalfis' default), clipped by min, max-aggregated
+    s = 5.0
+    poor, good = max(0, min(1, (6 - s) / 4)), max(0, min(1, (s - 4) / 4))
+    w = [poor, 0.5 * (1 - good)]  # rule 2: NOT good, weight 0.5
+    y = np.linspace(0, 30, 101)
+    low = np.maximum(np.minimum((y - 0) / 5, (15 - y) / 10), 0)
+    high = np.maximum(np.minimum((y - 10) / 15, (30 - y) / 5), 0)
+    mu = np.maximum(np.minimum(w[0], low), np.minimum(w[1], high))
+    assert system.evaluate_one(s)[0] == pytest.approx((mu * y).sum() / mu.sum(), abs=1e-12)
+    # MATLAB: no rule fires -> the middle of the output range (fuzzylite's reading: NaN)
+    only_not_good = MAMDANI.replace("[Rules]\n1, 1 (1) : 1\n", "[Rules]\n")
+    matlab = loads(only_not_good, "fis", source="tip.fis")
+    assert matlab.evaluate_one(2.0)[0] != 15.0  # good = 0: "not good" fires
+    assert matlab.evaluate_one(10.0)[0] == 15.0  # good = 1: nothing fires
+    assert math.isnan(from_fis(only_not_good, semantics="fuzzylite").evaluate_one(10.0)[0])
+    # inputs are not clipped: at 40 "good" (trapmf [4 8 10 10]) is 0, so "not good" fires as at 2
+    # (clipped to 10, nothing would fire)
+    assert matlab.evaluate_one(40.0) == matlab.evaluate_one(2.0)
+
+
+def test_round_trips(tmp_path):
+    system = loads(MAMDANI, "fis", source="tip.fis")
+    text = dumps(system, "fis")
+    again = loads(text, "fis", source="again.fis")
+    x = np.linspace(-2, 12, 301)[:, None]
+    np.testing.assert_array_equal(again.evaluate(x), system.evaluate(x))
+    assert dumps(again, "fis") == text
+    # a .fis read MATLAB's way and written as FLL computes the same in fuzzylite terms
+    fll = loads(dumps(system, "fll"), "fll", source="x.fll")
+    np.testing.assert_allclose(fll.evaluate(x), system.evaluate(x), rtol=0, atol=1e-12)
+    # the thesis' systems as .fis (open shoulders as linzmf / linsmf) and back
+    gsb = get_system("goal-seeking")
+    path = tmp_path / "gsb.fis"
+    assert main(["fis", "convert", "goal-seeking", "--to", "fis", "-o", str(path)]) == 0
+    assert "'linzmf',[0.1 3.5]" in path.read_text()
+    X = np.random.default_rng(1).uniform([0, -3], [28, 3], (500, 2))
+    np.testing.assert_allclose(load(path).evaluate(X), gsb.evaluate(X), rtol=0, atol=1e-12)
+
+
+def test_errors_name_file_line_and_field(tmp_path):
+    bad = MAMDANI.replace("MF2='high':'trimf',[10 25 30]", "MF2='high':'blobmf',[10 25 30]")
+    with pytest.raises(InputError, match=r"t\.fis: line 26: high: unknown membership function 'blobmf'"):
+        loads(bad, "fis", source="t.fis")
+    with pytest.raises(InputError, match=r"t\.fis: line 30 \(tip\): term 3 of tip does not exist"):
+        loads(MAMDANI.replace("-2, 2 (0.5) : 1", "-2, 3 (0.5) : 1"), "fis", source="t.fis")
+    with pytest.raises(InputError, match=r"t\.fis: line \d+ \(AndMethod\): unknown AndMethod 'avg'"):
+        loads(MAMDANI.replace("AndMethod='min'", "AndMethod='avg'"), "fis", source="t.fis")
+    with pytest.raises(InputError, match=r"t\.fis: line 30: expected 1 input and 1 output codes"):
+        loads(MAMDANI.replace("-2, 2 (0.5) : 1", "-2 1, 2 (0.5) : 1"), "fis", source="t.fis")
+    with pytest.raises(InputError, match=r"t\.fis: line 16 \(Range\): Range must be \[lo hi\]"):
+        loads(MAMDANI.replace("Range=[0 10]", "Range=[0 ten]"), "fis", source="t.fis")
+    path = tmp_path / "x.fis"
+    path.write_text(MAMDANI.replace("Range=[0 10]", "Range=[0 ten]"))
+    assert main(["fis", "show", str(path)]) == 2
