@@ -62,7 +62,7 @@ def obstacles_of_15(seed: int = 0) -> list[dict]:
 
 def world_of_15(seed: int = 0):
     return scenario_from_dict({"name": "bench-15", "robot": {"x": 1, "y": 1}, "goal": {"x": 19, "y": 19},
-                               "obstacles": obstacles_of_15(seed), "max_time": 1e9}, source="benchmark")
+                               "obstacles": obstacles_of_15(seed), "max_time": 3600.0}, source="benchmark")
 
 
 def start_poses(scenario, n: int, clearance: float = 0.5) -> np.ndarray:

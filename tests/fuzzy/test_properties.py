@@ -75,3 +75,17 @@ def test_table_IV2_mirror_outside_the_Z_row(d, theta):
     oa = get_system("obstacle-avoidance")
     left, right = oa.evaluate_one(d, theta), oa.evaluate_one(d, -theta)
     assert abs(left[0] + right[0]) <= 1e-12 and abs(left[1] - right[1]) <= 1e-12
+
+
+def test_a_sub_normal_shoulder_cell_neither_fails_nor_gives_nan():
+    """A universe whose end lies a sub-normal distance beyond the first peak (found by the property
+    above): the cell is too narrow for 1/width, so it is flat, and the output stays exact."""
+    x = Variable("x", (-5e-324, 1.0), strong_partition(np.array([0.0, 1.0]), ["A", "B"], (-5e-324, 1.0)))
+    y = Variable("y", (-1.0, 1.0), strong_partition(np.array([-1.0, 1.0]), ["N", "P"], (-1.0, 1.0)))
+    out = Variable("z", (-10.0, 10.0), {"S0": Singleton(1.0), "S1": Singleton(2.0)})
+    rules = rules_from_grid("y", "x", y.labels, x.labels, [["S0", "S1"], ["S1", "S0"]], ["z"])
+    system = FuzzySystem([x, y], [out], rules, defuzzifier="weighted_sum")
+    X = np.array([[-5e-324, 0.5], [-1e3, 0.0], [0.5, 0.2]])
+    expected = [0.25 * 1.0 + 0.75 * 2.0, 1.5, 1.5]
+    np.testing.assert_allclose(system.evaluate(X)[:, 0], expected, rtol=0, atol=1e-12)
+    np.testing.assert_allclose([system.evaluate_one(*row)[0] for row in X], expected, rtol=0, atol=1e-12)

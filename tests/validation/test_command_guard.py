@@ -61,10 +61,10 @@ def test_compiled_run_that_reads_a_nan_stops_naming_the_step():
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.kernels import step as step_kernel
 
-    sim = BatchSimulator(load_scenario("example-goal"), make_controller("fuzzy-5b"))
+    sim = BatchSimulator(load_scenario("example-goal"), make_controller("fuzzy-5b-thesis"))
     assert sim._compiled is not None  # the compiled path is the one under test
     for _ in range(3):
         sim.step()
     sim._state[0, step_kernel.X] = np.nan
-    with pytest.raises(CommandError, match=r"controller fuzzy-5b: step 5: stopped: NaN input to a fuzzy system"):
+    with pytest.raises(CommandError, match=r"controller fuzzy-5b-thesis: step 5: stopped: NaN input to a fuzzy system"):
         sim.run()

@@ -55,7 +55,10 @@ class _InputPartition:
             self.term[: len(idx), k] = idx * stride
             self.ml[: len(idx), k] = left[k, idx]
             self.dm[: len(idx), k] = right[k, idx] - left[k, idx]
-        self.inv_width = 1.0 / np.diff(self.bp)
+        with np.errstate(divide="ignore", over="ignore"):
+            inv_width = 1.0 / np.diff(self.bp)
+        # a cell too narrow for 1/width (sub-normal) is flat: x in it takes its left values
+        self.inv_width = np.where(np.isfinite(inv_width), inv_width, 0.0)
         self._build_lookup()
         # plain-Python copies for the scalar path
         self.bp_list = self.bp.tolist()
@@ -73,8 +76,8 @@ class _InputPartition:
         two comparisons; falls back to the search when the grid would be too large.
         """
         gap = float(np.diff(self.bp).min())
-        with np.errstate(over="ignore"):
-            ratio = (self.hi - self.lo) / (0.5 * gap)  # inf for sub-normal gaps: no grid
+        with np.errstate(over="ignore", divide="ignore"):
+            ratio = np.float64(self.hi - self.lo) / (0.5 * gap)  # inf for sub-normal gaps: no grid
         self.inner = self.bp[1:-1].copy()
         self.lut = None
         if ratio < MAX_LOOKUP_CELLS:
