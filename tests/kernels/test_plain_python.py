@@ -15,12 +15,12 @@ import json, numpy as np
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
-import fuzzynav.kernels.scene as scene
+import fuzzynav.kernels.beams as beams
 scenario = load_scenario("fig-IV-22a")
 trace = run_episode(scenario, make_controller("fuzzy-5b-thesis"), max_time=4.0)
 poses = np.array([[5.0, 5.0, 0.3], [12.0, 9.0, -2.0], [3.0, 16.0, 1.0]])
 ranges = scenario.world.ranges(poses, np.linspace(-np.pi, np.pi, 9), 4.0)
-print(json.dumps({"jit": hasattr(scene.ranges, "py_func"), "pose": trace.pose.tolist(),
+print(json.dumps({"jit": hasattr(beams.read, "py_func"), "pose": trace.pose.tolist(),
                   "labels": trace.behaviour.tolist(), "ranges": ranges.tolist()}))
 """
 

@@ -20,7 +20,7 @@ def _frames(path):
 
 def test_gif_frames_follow_the_robot_over_a_fixed_world(tmp_path):
     scenario = load_scenario("fig-IV-15a")
-    trace = run_episode(scenario, make_controller("fuzzy-2b"), seed=0)
+    trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0)
     n = animate_episode(trace, scenario, tmp_path / "a.gif", max_frames=12, fps=5, size=200)
     frames, duration = _frames(tmp_path / "a.gif")
     assert n == len(frames) == 12 and duration == 200
@@ -35,5 +35,5 @@ def test_gif_frames_follow_the_robot_over_a_fixed_world(tmp_path):
 
 def test_short_episode_keeps_every_step(tmp_path):
     scenario = load_scenario("fig-IV-15a")
-    trace = run_episode(scenario, make_controller("fuzzy-2b"), seed=0, max_time=0.5)
+    trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0, max_time=0.5)
     assert animate_episode(trace, scenario, tmp_path / "s.gif", rays=False) == len(trace.pose)

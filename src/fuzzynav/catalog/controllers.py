@@ -21,6 +21,10 @@ CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.robust:fuzzy_2b_thesis",
                                   "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
 CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
                                   "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
+CONTROLLERS["fuzzy-2b-gap"] = ("fuzzynav.control.avoidance:make_gap",
+                               "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
+CONTROLLERS["fuzzy-5b-gap"] = ("fuzzynav.control.five_behaviours:make_gap",
+                               "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",

@@ -1,4 +1,4 @@
-"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--json]``.
+"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--sensors RING] [--json]``.
 
 Runs a built-in controller or a trained model file (``fuzzynav train``) over N seeded, solvable
 generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, collision and timeout
@@ -18,6 +18,7 @@ from pathlib import Path
 
 from fuzzynav import progress as progress_bars, validation
 from fuzzynav.cli import arguments
+from fuzzynav.cli.run import SENSORS_HELP
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.catalog.controllers import CONTROLLERS
 from fuzzynav.errors import InputError
@@ -40,6 +41,7 @@ def register(subparsers) -> None:
                         help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")
     parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
+    parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -65,7 +67,8 @@ def run(args) -> int:
 
     with progress_bars.quiet(args.quiet or args.json or args.progress):
         result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
-                          model=args.model, systems=systems, save_failures=args.save_failures)
+                          model=args.model, systems=systems, save_failures=args.save_failures,
+                          sensors=args.sensors)
     if args.json:
         print(json.dumps(result))
         return 0

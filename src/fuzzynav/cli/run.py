@@ -16,6 +16,10 @@ from fuzzynav.cli import arguments
 from fuzzynav.catalog.controllers import available
 from fuzzynav.errors import InputError
 
+SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
+                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-2b-gap / "
+                "fuzzy-5b-gap, thesis for the others)")
+
 
 def register(subparsers) -> None:
     width = max(map(len, available()))
@@ -38,6 +42,7 @@ def register(subparsers) -> None:
                              ".fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` writes a start)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
     parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
+    parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
     parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
@@ -50,6 +55,7 @@ def register(subparsers) -> None:
 
 def run(args) -> int:
     from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+    from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.world.scenario_file import open_scenario
 
@@ -68,7 +74,8 @@ def run(args) -> int:
         controller = load_controller(args.model)
     else:
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
-    trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time)
+    trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
+                        sensors=None if args.sensors is None else named_ring(args.sensors))
     numbers = metrics(trace, scenario)
     if args.plot:
         from fuzzynav.viz.trajectories import plot_episode

@@ -36,6 +36,12 @@ remembered hit, :mod:`fuzzynav.control.five_behaviours`). The state is one
 mode per robot plus the guard's memory; :meth:`reset` clears it. The decision is compiled
 (:func:`fuzzynav.kernels.navigators.two_behaviours`).
 
+**Through the gaps** (this package's, opt-in as ``fuzzy-2b-gap``, ``gap=True``; as
+``fuzzy-5b-gap``). The navigator reads the ``lidar`` ring, and when the avoider would take over and a
+passage that fits the body and can be turned to exists (:mod:`fuzzynav.kernels.gaps`), the mode
+``GAP`` steers by Table IV.1 towards the passage's direction at Table IV.2's speed, without the
+full-lock turn.
+
 Rule bases by role (``systems=``): ``"gsb"`` (d_rg, θ_r − θ_d) → (α, V_r) [Table IV.1] and
 ``"oab"`` (D_ro, θ_o) → (α, V_r) [Table IV.2, the obstacle-avoidance behaviour of Fig IV.9].
 """
@@ -46,7 +52,7 @@ import functools
 import math
 from collections.abc import Mapping
 
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
@@ -63,18 +69,26 @@ class TwoBehaviourNavigator(CompiledNavigator):
     """GSB (Table IV.1) and OA (Table IV.2) with the switch of Fig IV.9; roles ``"gsb"``, ``"oab"``."""
 
     name = "fuzzy-2b"
-    kind, labels, roles, memory = TWO_BEHAVIOURS, ("GSB", "OA", "OA"), ("gsb", "oab"), 10
+    kind, labels, roles, memory = TWO_BEHAVIOURS, ("GSB", "OA", "OA", "GAP"), ("gsb", "oab"), 10
 
     def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, front: float = math.pi / 4,
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
-                 stop_margin: float = 0.02, systems: Mapping | None = None):
+                 stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+        gaps = self._variant(gap, gap_margin, gap_look)
         self._build(systems, default_systems, navigator_params(
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_turn, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
-            detection=detection, sector=sector, front=front, risk=risk, release=release))
+            detection=detection, sector=sector, front=front, risk=risk, release=release,
+            **gaps))
 
 
 def make(**options) -> TwoBehaviourNavigator:
     """Factory of the ``fuzzy-2b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return TwoBehaviourNavigator(**options)
+
+
+def make_gap(**options) -> TwoBehaviourNavigator:
+    """Factory of ``fuzzy-2b-gap``: the lidar ring, gap finding on (opt-in: it regresses on mixed worlds)."""
+    return TwoBehaviourNavigator(gap=True, **options)

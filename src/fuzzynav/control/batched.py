@@ -20,6 +20,12 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller, Observation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
+from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES, named_ring
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+
+GAP_MARGIN = 0.05  # m kept between the body and a post when aiming through a gap (then half, a quarter)
+GAP_LOOK = 2.0  # m: hits nearer than this shape the gaps
+GAP_FIELD = np.pi / 2  # directions searched: within ±90° of the heading
 
 
 @dataclass(frozen=True)
@@ -67,13 +73,16 @@ class CompiledNavigator(BatchedController):
 
     Subclasses set ``kind`` (a :mod:`fuzzynav.kernels.navigators` code), ``labels`` (behaviour
     label of each mode code), ``roles`` (the names of their rule bases, in the kernel's order),
-    ``sensors_deg`` (the ring directions they read, or ``None``) and ``memory`` (steps of hit
+    ``sensors_deg`` (the ring directions they read, or ``None``), ``gap_aware`` (steer through
+    gaps of a scan, :mod:`fuzzynav.kernels.gaps`), ``sensors`` (the ring the simulator gives
+    them by default, ``None``: the thesis' seven rays) and ``memory`` (steps of hit
     memory, 0 for none), and call :meth:`_build` with their rule bases and parameters. The
     state of each robot (mode, hold count, turn side, hits) lives in arrays; the simulator steps
     the navigator inside its own compiled step (:meth:`compiled`).
     """
 
     kind: int
+    gap_aware, sensors = False, None
     labels: tuple[str, ...]
     roles: tuple[str, ...]
     sensors_deg: tuple[float, ...] | None = None
@@ -117,6 +126,8 @@ class CompiledNavigator(BatchedController):
         params[navigators.BODY] = robot.radius
         if self.kind == navigators.FIVE_BEHAVIOURS:
             params[navigators.V_MAX] = min(built[navigators.V_MAX], robot.max_speed)
+        if self.gap_aware:  # the same margin around this body
+            params[navigators.GAP_CLEARANCE] = robot.radius + built[navigators.GAP_CLEARANCE] - built[navigators.BODY]
         return self
 
     def compiled(self, n: int, sensor_angles):
@@ -131,6 +142,7 @@ class CompiledNavigator(BatchedController):
 
                 at = navigators.COLUMNS if self.kind == navigators.FIVE_BEHAVIOURS else navigators.WALL_COLUMNS
                 self.params[at:at + len(columns)] = columns
+            self._scan_options(angles)
             self._angles, self._state = angles.copy(), None
         if self._state is None or len(self._state) != n:
             self._state = np.zeros((n, 4), dtype=np.int64)
@@ -156,6 +168,23 @@ class CompiledNavigator(BatchedController):
             kind, params, tables, state[0], memory[0], x, y, theta, v, tx, ty,
             np.ascontiguousarray(obs.ranges, dtype=float), self._angles, float(obs.max_range), float(obs.dt), d_o, b_o)
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
+
+    def _variant(self, gap: bool, gap_margin: float, gap_look: float) -> dict:
+        """The published navigator (the seven rays, no gap finding) or, with ``gap``, the
+        gap-aware ``<name>-gap`` (the lidar ring); returns the gap entries of the parameter vector."""
+        if gap:
+            self.name = f"{type(self).name}-gap"
+            self.gap_aware, self.sensors = True, named_ring("lidar")
+        return {"gap_clearance": DEFAULT_PARAMS.radius + gap_margin, "gap_look": gap_look, "gap_field": GAP_FIELD}
+
+    def _scan_options(self, angles) -> None:
+        """Readings by 30° sector and gap finding on for a gap-aware navigator reading a scan
+        (more rays than the thesis' seven), off otherwise (:mod:`fuzzynav.kernels.gaps`)."""
+        from fuzzynav.kernels import navigators
+
+        scan = self.gap_aware and len(angles) > len(THESIS_SENSOR_ANGLES)
+        self.params[navigators.READING_HALF] = np.deg2rad(15.0) if scan else 0.0
+        self.params[navigators.GAP] = float(scan)
 
     def act_batch(self, obs):
         """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""

@@ -50,6 +50,20 @@ run the same code; :meth:`reset` clears the state.
 Behaviour labels: ``GSB``, ``FOA+VRB``, ``ROA+VRB``, ``LOA+VRB``, ``GSB+VRB`` (goal seeking with
 obstacles sensed, speed capped by VRB).
 
+**Through the gaps** (this package's, opt-in as ``fuzzy-5b-gap``, ``gap=True``; without it the
+navigator is the one published, on the seven single rays). The navigator reads the ``lidar`` ring
+(:func:`fuzzynav.robot.sensors.named_ring`): d1…d7 are the nearest readings of each sensor's 30°
+sector, so the supervisor and the avoiders see 15 cm posts that the seven rays miss, and the whole
+scan is searched for the passage that fits the body plus ``gap_margin`` (0.05 m; where none does,
+half and then a quarter of it) within ``gap_look`` (2 m) and can be turned to
+(:mod:`fuzzynav.kernels.gaps`: VFH+'s enlarged obstacles and masked directions, follow-the-gap's
+choice of the free direction nearest to the goal). When the supervisor would hand over to an
+avoider or cap goal seeking by VRB and such a passage exists, the mode ``GAP+VRB`` takes over at
+once: Table IV.1 with the passage's direction in place of the goal's bearing (the goal's distance
+kept), at the speed of VRB and at most 1.5 /s × the body's clearance to the nearest reading (never
+below ``v_floor``); the full-lock turn is not needed. With no passage, the thesis' avoiders, turn
+and safety stop act as above.
+
 Rule bases by role (``systems=``, defaults in brackets): ``"gsb"`` (d_rg, θ_r − θ_d) → (α, V_r)
 [Table IV.1]; ``"foa"`` (d1, d2, d3) → α [Table IV.3]; ``"roa"`` (d2, d4, d6) → α [Table IV.4];
 ``"loa"`` (d3, d5, d7) → α [Table IV.5]; ``"vrb"`` (V_r, D_min) → V_adjust [Table IV.6].
@@ -62,14 +76,14 @@ import math
 from collections.abc import Mapping
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import FIVE_BEHAVIOURS
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
-LABELS = ("GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB")  # of the mode codes (the last: full lock)
+LABELS = ("GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB", "GAP+VRB")  # of the mode codes (full lock: FOA)
 
 
 @functools.lru_cache(maxsize=4)
@@ -91,7 +105,9 @@ class FiveBehaviourNavigator(CompiledNavigator):
                  v_floor: float = 0.3, v_max: float = DEFAULT_PARAMS.max_speed,
                  params: supervisor.SupervisorParams | None = None, wheelbase: float = DEFAULT_PARAMS.wheelbase,
                  dwell: int = 10, lane: float = nav.D_M, room_margin: float = 0.5, memory: int = 10,
-                 stop_margin: float = 0.02, systems: Mapping | None = None):
+                 stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+        gaps = self._variant(gap, gap_margin, gap_look)
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
@@ -100,9 +116,15 @@ class FiveBehaviourNavigator(CompiledNavigator):
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,
-            kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear))
+            kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear,
+            **gaps))
 
 
 def make(**options) -> FiveBehaviourNavigator:
     """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
     return FiveBehaviourNavigator(**options)
+
+
+def make_gap(**options) -> FiveBehaviourNavigator:
+    """Factory of ``fuzzy-5b-gap``: the lidar ring, gap finding on (opt-in: it regresses on mixed worlds)."""
+    return FiveBehaviourNavigator(gap=True, **options)

@@ -27,6 +27,7 @@ from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.learn.envs import RandomGoal, RandomObstacles, WallCourse
 from fuzzynav.learn.tasks.common import GOAL_TOLERANCE
+from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.generate import generate_worlds
@@ -47,9 +48,10 @@ def save_failure(folder: Path, scenario, trace, controllers: tuple[str, ...] = (
 
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
-             systems: dict | None = None, save_failures: str | Path | None = None) -> dict:
+             systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None) -> dict:
     """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given) —
-    or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``;
+    or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
+    sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
     ``progress(i, outcome)`` is called after each world.
 
     A model is loaded once; every episode starts from the simulator's ``reset(rng)`` of it, as a
@@ -65,11 +67,12 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         build, controller = (lambda: loaded), loaded.name
     else:
         build = lambda: make_controller(controller, systems=systems) if systems else make_controller(controller)
+    ring = None if sensors is None else named_ring(sensors)
     scenarios = generate_worlds(worlds, n, seed)
     runs = []
     bar = progress_bars.bar(total=len(scenarios), desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
     for i, scenario in enumerate(scenarios):
-        trace = run_episode(scenario, build(), seed=seed)
+        trace = run_episode(scenario, build(), seed=seed, sensors=ring)
         numbers = metrics(trace, scenario)
         runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
                                                     "min_clearance_m")})

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels import guard, ts0
+from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.jit import jit
 from fuzzynav.kernels.motion import wrap
 
@@ -27,10 +27,14 @@ DETECTION, SECTOR, FRONT, RISK, RELEASE = range(9, 14)  # fuzzy-2b
 V_MAX, SENSED, FRONT_5B, KEEP, CLEAR, VISION, KEPT_DETECTION, KEPT_KEEP, KEPT_CLEAR, COLUMNS = range(9, 19)  # fuzzy-5b
 WALL_COLUMNS = 9  # wall-follow: d_d, d_f, d_g
 STEERING, SPEED = 9, 10  # a constant command
-N_PARAMS = COLUMNS + 7
-GSB_VRB, TURN = 4, 5  # fuzzy-5b modes beyond guard.GSB, FOA, ROA, LOA
-RANK_5B = (0, 3, 2, 2, 1, 4)  # caution ranks of the fuzzy-5b modes
-RANK_2B = (0, 1, 2)  # GSB, OA, OA at full lock
+# shared again, after the longest block: readings by sector, gap finding (kernels.gaps)
+READING_HALF, GAP, GAP_CLEARANCE, GAP_LOOK, GAP_FIELD = range(COLUMNS + 7, COLUMNS + 12)
+N_PARAMS = GAP_FIELD + 1
+GSB_VRB, TURN, GAP_5B = 4, 5, 6  # fuzzy-5b modes beyond guard.GSB, FOA, ROA, LOA
+RANK_5B = (0, 3, 2, 2, 1, 4, 2)  # caution ranks of the fuzzy-5b modes
+GAP_2B = 3
+GAP_BRAKE = 1.5  # 1/s: through a gap, V ≤ this × the body's clearance to the nearest reading
+RANK_2B = (0, 1, 2, 1)  # GSB, OA, OA at full lock, through the gap
 
 
 @jit
@@ -71,6 +75,22 @@ def safety_stop(params, memory, x, y, theta, speed, dt):
 
 
 @jit
+def through_gap(params, ranges, angles, bearing):
+    """(found, heading) of :func:`fuzzynav.kernels.gaps.gap_heading` with this navigator's
+    clearance, look-ahead and field — where no passage keeps that margin, the one that keeps half
+    of it, then a quarter; never found where gap finding is off."""
+    if params[GAP] == 0.0:
+        return False, 0.0
+    margin = params[GAP_CLEARANCE] - params[BODY]
+    for share in (1.0, 0.5, 0.25):
+        found, heading, _ = gaps.gap_heading(ranges, angles, bearing, params[BODY] + share * margin,
+                                             params[GAP_LOOK], params[GAP_FIELD], params[TURN_RADIUS])
+        if found:
+            return True, heading
+    return False, 0.0
+
+
+@jit
 def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
                    dt, d_o, b_o):
     """fuzzy-2b (Fig IV.9): (α, V, mode 0 GSB / 1 OA / 2 OA at full lock)."""
@@ -92,9 +112,16 @@ def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bear
         avoid = True
     turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
                        before == 2)
-    mode = guard.switch(state, 2 if turn else (1 if avoid else 0), True, RANK_2B, params[DWELL])
+    gap, heading = through_gap(params, ranges, angles, bearing) if avoid else (False, 0.0)
+    turn = turn and not gap  # a passage that fits and can be turned to: no full-lock turn needed
+    mode = guard.switch(state, 2 if turn else ((GAP_2B if gap else 1) if avoid else 0), True, RANK_2B,
+                        params[DWELL])
     if mode >= 1:
         steering, speed = ts0.evaluate(tables, 1, d_ro if math.isfinite(d_ro) else 1e3, -wrap(theta_o), 0.0)
+    if mode == GAP_2B and not gap:  # held by the switch: this step's gap, if any
+        gap, heading = through_gap(params, ranges, angles, bearing)
+    if mode == GAP_2B and gap:  # Table IV.1 towards the gap, at the avoider's speed
+        steering = guarded_goal_seeking(tables, 0, distance, heading, params[WHEELBASE])[0]
     if mode == 2:
         steering, speed = side * ALPHA_MAX, params[V_TURN]
     return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
@@ -105,9 +132,12 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
                     dt, d_o, b_o):
     """fuzzy-5b (Fig IV.16): (α, V, mode GSB / FOA / ROA / LOA / GSB+VRB / full-lock turn)."""
     c = COLUMNS
-    d0, d1, d2, d3, d4, d5 = (ranges[int(params[c])], ranges[int(params[c + 1])], ranges[int(params[c + 2])],
-                              ranges[int(params[c + 3])], ranges[int(params[c + 4])], ranges[int(params[c + 5])])
-    d6 = ranges[int(params[c + 6])]
+    if params[READING_HALF] > 0.0:
+        d0, d1, d2, d3, d4, d5, d6 = gaps.sector_readings(ranges, angles, params[READING_HALF], max_range)
+    else:
+        d0, d1, d2, d3, d4, d5 = (ranges[int(params[c])], ranges[int(params[c + 1])], ranges[int(params[c + 2])],
+                                  ranges[int(params[c + 3])], ranges[int(params[c + 4])], ranges[int(params[c + 5])])
+        d6 = ranges[int(params[c + 6])]
     d = (d0, d1, d2, d3, d4, d5, d6)
     before = state[MODE]
     if before == guard.GSB or before == GSB_VRB:  # goal seeking keeps the robot under relaxed thresholds
@@ -120,19 +150,27 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
     turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
                        before == TURN)
     wanted = TURN if turn else (GSB_VRB if choice == guard.GSB and dmin < params[SENSED] else choice)
-    mode = guard.switch(state, wanted, dmin < params[KEEP] or turn, RANK_5B, params[DWELL])
+    gap, heading = through_gap(params, ranges, angles, bearing) if wanted != guard.GSB else (False, 0.0)
+    if gap:  # a passage that fits and can be turned to: no full-lock turn needed
+        wanted, turn = GAP_5B, False
+    mode = guard.switch(state, wanted, dmin < params[KEEP] or turn or gap, RANK_5B, params[DWELL])
+    if mode == GAP_5B and not gap:  # held by the switch: this step's gap, else the front avoider
+        gap, heading = through_gap(params, ranges, angles, bearing)
     steering = speed = 0.0
-    if mode == guard.GSB or mode == GSB_VRB:
-        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+    if mode == guard.GSB or mode == GSB_VRB or (mode == GAP_5B and gap):
+        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, heading if mode == GAP_5B else bearing,
+                                                  params[WHEELBASE])
     elif mode == TURN:
         steering, speed = side * ALPHA_MAX, params[V_TURN]
     if mode != guard.GSB and mode != TURN:
         adjust, _ = ts0.evaluate(tables, 4, v, dmin, 0.0)
         v_vrb = min(max(v + adjust, params[V_TURN]), params[V_MAX])  # eq IV.9
-        if mode == GSB_VRB:
+        if mode == GAP_5B and gap:  # slow enough to turn before the nearest post
+            speed = min(min(speed, v_vrb), max(params[V_TURN], GAP_BRAKE * (dmin - params[BODY])))
+        elif mode == GSB_VRB:
             speed = min(speed, v_vrb)
         else:
-            if mode == guard.FOA:
+            if mode == guard.FOA or mode == GAP_5B:
                 steering, _ = ts0.evaluate(tables, 1, d0, d1, d2)
             elif mode == guard.ROA:
                 steering, _ = ts0.evaluate(tables, 2, d1, d3, d5)

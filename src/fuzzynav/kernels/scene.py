@@ -65,12 +65,9 @@ def bounding_disc(scene, column):
 
 
 @jit
-def ranges_one(scene, x, y, theta, angles, max_range, out, near):
-    """Readings of rays from (x, y) at headings θ + angles, capped at ``max_range``, into ``out``.
-    Broad phase: only shapes whose bounding disc (grown by a rounding margin) comes within
-    ``max_range`` are listed in ``near`` (scratch, one slot per column), and a ray skips a disc
-    it misses or meets beyond its best hit so far."""
-    width, height = scene[WIDTH], scene[HEIGHT]
+def near_columns(scene, x, y, max_range, near):
+    """Broad phase: list in ``near`` (scratch, one slot per column) the shapes whose bounding
+    disc (grown by a rounding margin) comes within ``max_range`` of (x, y); returns how many."""
     total = int(scene[N_CIRCLES] + scene[N_POLYGONS] + scene[N_ELLIPSES])
     count = 0
     for column in range(total):
@@ -79,6 +76,21 @@ def ranges_one(scene, x, y, theta, angles, max_range, out, near):
         if (cx - x) ** 2 + (cy - y) ** 2 < reach * reach:
             near[count] = column
             count += 1
+    return count
+
+
+@jit
+def ranges_one(scene, x, y, theta, angles, max_range, out, near):
+    """Readings of rays from (x, y) at headings θ + angles, capped at ``max_range``, into ``out``
+    (``near``: scratch of :func:`near_columns`)."""
+    cast(scene, x, y, theta, angles, max_range, out, near, near_columns(scene, x, y, max_range, near))
+
+
+@jit
+def cast(scene, x, y, theta, angles, max_range, out, near, count):
+    """The rays of :func:`ranges_one` against the walls and the ``count`` shapes listed in
+    ``near``; a ray skips a disc it misses or meets beyond its best hit so far."""
+    width, height = scene[WIDTH], scene[HEIGHT]
     for j in range(angles.shape[0]):
         heading = theta + angles[j]
         dx, dy = math.cos(heading), math.sin(heading)
@@ -109,14 +121,6 @@ def ranges_one(scene, x, y, theta, angles, max_range, out, near):
             if t < best:
                 best = t
         out[j] = best
-
-
-@jit
-def ranges(scene, poses, angles, max_range, out):
-    """Readings ``out`` (N, S) of robots at ``poses`` (N, 3)."""
-    near = np.empty(int(scene[N_CIRCLES] + scene[N_POLYGONS] + scene[N_ELLIPSES]), dtype=np.int64)
-    for n in range(poses.shape[0]):
-        ranges_one(scene, poses[n, 0], poses[n, 1], poses[n, 2], angles, max_range, out[n], near)
 
 
 @jit

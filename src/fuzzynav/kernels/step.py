@@ -5,7 +5,7 @@ documents the loop; :mod:`fuzzynav.sim.tasks` the tasks).
 Arrays:
 
 - ``setup`` (floats): the robot's parameters (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`),
-  the sensor range, the task (:data:`SETUP_FIELDS`), then the sensor angles and the path's
+  the sensor range (and, last, the sensors' half beam width), the task (:data:`SETUP_FIELDS`), then the sensor angles and the path's
   waypoints (x0, y0, x1, y1, …);
 - ``state`` (N, :data:`STATE_FIELDS`) floats per robot; ``ranges`` (N, S);
 - ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index.
@@ -19,15 +19,15 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import navigators, scene
+from fuzzynav.kernels import beams, navigators, scene
 from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
-                               "goal_y", "n_angles")
-MAX_RANGE, TASK, TOLERANCE, FORCED_SPEED, PASSED, MAX_STEPS, GOAL_X, GOAL_Y, N_ANGLES = range(len(ROBOT_FIELDS),
-                                                                                            len(SETUP_FIELDS))
+                               "goal_y", "n_angles", "half_beam")
+(MAX_RANGE, TASK, TOLERANCE, FORCED_SPEED, PASSED, MAX_STEPS, GOAL_X, GOAL_Y, N_ANGLES,
+ HALF_BEAM) = range(len(ROBOT_FIELDS), len(SETUP_FIELDS))
 ANGLES = len(SETUP_FIELDS)  # sensor angles, then waypoints
 GOAL, PATH, TARGET = range(3)  # task codes
 STATE_FIELDS = ("x", "y", "theta", "steering", "speed", "target_x", "target_y", "obstacle_distance", "nearest_x",
@@ -107,9 +107,8 @@ def settle(setup, scene_array, k, state, ranges, status, n):
         outcome = TIMEOUT
     status[n, OUTCOME] = outcome
     n_angles = int(setup[N_ANGLES])
-    scene.ranges_one(scene_array, row[X], row[Y], row[THETA], setup[ANGLES:ANGLES + n_angles], setup[MAX_RANGE],
-                     ranges[n], np.empty(int(scene_array[N_CIRCLES] + scene_array[N_POLYGONS]
-                                             + scene_array[N_ELLIPSES]), dtype=np.int64))
+    beams.read_one(scene_array, row[X], row[Y], row[THETA], setup[ANGLES:ANGLES + n_angles], setup[HALF_BEAM],
+                   setup[MAX_RANGE], ranges[n])
     finite = math.isfinite(row[OBSTACLE_DISTANCE])
     row[OBSTACLE_BEARING] = wrap(math.atan2(row[NEAREST_Y] - row[Y], row[NEAREST_X] - row[X]) - row[THETA]) \
         if finite else 0.0

@@ -33,7 +33,7 @@ from fuzzynav.control.base import Controller
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
-from fuzzynav.robot.sensors import SensorRing
+from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
 from fuzzynav.sim.observation import BatchObservation
@@ -53,6 +53,15 @@ _CHECK_EVERY = 32
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
+def default_ring(scenario: Scenario, controller) -> SensorRing:
+    """The ring of the scenario's ``sensors`` key, else the controller's own (``sensors``
+    attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
+    if scenario.sensors is not None:
+        return named_ring(scenario.sensors)
+    first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
+    return getattr(first, "sensors", None) or SensorRing()
+
+
 class BatchSimulator:
     """N robots on one scenario, stepped together.
 
@@ -67,7 +76,7 @@ class BatchSimulator:
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = scenario
         self.params = robot_params if robot_params is not None else scenario.robot
-        self.sensors = sensors if sensors is not None else SensorRing()
+        self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
         self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (n, 1)))
         self.n = len(self.starts)
@@ -94,7 +103,7 @@ class BatchSimulator:
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
-                                      self.sensors.angles, 0.0)
+                                      self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
         compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
         self._compiled = compiled if callable(compiled) else None

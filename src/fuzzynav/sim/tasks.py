@@ -70,16 +70,17 @@ class TaskState:
             return None
         return np.broadcast_to(self.scenario.target.motion.velocity_at(t), (self.n, 2))
 
-    def setup(self, robot: np.ndarray, max_range: float, max_steps: int, angles, t: float) -> np.ndarray:
+    def setup(self, robot: np.ndarray, max_range: float, max_steps: int, angles, t: float,
+              half_beam: float = 0.0) -> np.ndarray:
         """The kernels' set-up array (:data:`fuzzynav.kernels.step.SETUP_FIELDS`): ``robot``
         (:meth:`TricycleParams.array`), the sensors, this task at time ``t``, then the sensor
-        ``angles`` and the path's waypoints."""
+        ``angles`` (of half beam width ``half_beam``) and the path's waypoints."""
         forced = self.forced_speed
         passed = self.kind == "path" and self.scenario.path.switching == "passed"
         waypoints = self.path if self.kind == "path" else np.zeros((0, 2))
         angles = np.asarray(angles, dtype=float).reshape(-1)
         return np.concatenate([robot, [max_range, TASK_CODES[self.kind], self.tolerance, np.nan if forced is None else forced,
-                                       float(passed), max_steps, *self.position(t), len(angles)],
+                                       float(passed), max_steps, *self.position(t), len(angles), half_beam],
                                angles, np.asarray(waypoints, dtype=float).ravel()])
 
     def update(self, positions: np.ndarray, t: float, active: np.ndarray) -> np.ndarray:

@@ -64,3 +64,11 @@ def world_contents(obstacles, width: float, height: float, source=None, field: s
     if total > MAX_TOTAL_VERTICES:
         validation.fail(f"at most {MAX_TOTAL_VERTICES} polygon and wall vertices in a world, got {total}", source,
                         field)
+
+
+def sensor_ring(name, source=None, field: str = "sensors") -> str | None:
+    """The scenario's optional ``sensors`` key: a ring of :data:`fuzzynav.robot.sensors.RINGS`
+    (``thesis``, ``beam``, ``lidar``), or None where absent (the controller's ring)."""
+    from fuzzynav.robot.sensors import RINGS
+
+    return None if name is None else validation.choice(name, tuple(RINGS), source, field)

@@ -15,6 +15,7 @@ obstacles:
   - ellipse: {center: [14, 6], radii: [2.0, 1.0], angle: 0.3}
 max_time: 120                         # seconds, optional
 controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
+sensors: lidar                        # optional: thesis | beam | lidar (default: the controller's ring)
 ```
 Exactly one task: ``goal`` (chapter IV), ``path: [[x, y], ...]`` (two or more waypoints, no
 two consecutive ones equal) with optional ``path_tolerance`` (the waypoint tolerance zone, thesis
@@ -56,7 +57,7 @@ DEFAULT_PATH_SPEED = 1.0
 PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.sim.tasks`
 
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
-            "target", "obstacles", "max_time", "controllers")
+            "target", "obstacles", "max_time", "controllers", "sensors")
 ROBOT_KEYS = ("radius", "wheelbase", "max_steering", "max_speed", "max_reverse_speed")  # TricycleParams fields
 SHAPE_KEYS = {
     "circle": {"center": None, "radius": None},
@@ -109,6 +110,7 @@ class Scenario:
     source: str | None = None
     controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
     robot: TricycleParams = field(default=DEFAULT_PARAMS)
+    sensors: str | None = None  # the sensor ring by name (fuzzynav.robot.sensors.RINGS); None: the controller's
 
     @property
     def task(self) -> str:
@@ -120,8 +122,8 @@ class Scenario:
         doc: dict = {"name": self.name}
         if self.description:
             doc["description"] = self.description
-        if self.controllers:
-            doc["controllers"] = list(self.controllers)
+        doc.update({"controllers": list(self.controllers)} if self.controllers else {})
+        doc.update({"sensors": self.sensors} if self.sensors is not None else {})
         doc["world"] = {"width": self.world.width, "height": self.world.height}
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
         doc["robot"].update({key: getattr(self.robot, key) for key in ROBOT_KEYS
@@ -343,6 +345,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
         robot=robot_limits,
+        sensors=limits.sensor_ring(doc.get("sensors"), source),
     )
 
 

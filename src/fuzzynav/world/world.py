@@ -81,19 +81,22 @@ class World:
         return self.boundary_distance(points) >= 0.0
 
     # -- range sensors -----------------------------------------------------------------------
-    def ranges(self, poses, angles, max_range: float, noise_std: float = 0.0, rng: np.random.Generator | None = None):
+    def ranges(self, poses, angles, max_range: float, noise_std: float = 0.0, rng: np.random.Generator | None = None,
+               beam_width: float = 0.0):
         """Range readings ``(N, S)``: rays from each pose's (x, y) at heading θ + angle, cast
         against every obstacle and the boundary, capped at ``max_range`` (thesis §IV.7).
 
         ``noise_std`` > 0 adds Gaussian noise from ``rng`` (required then), clipped to
         [0, max_range]. A ray starting inside an obstacle measures the distance to its surface.
+        ``beam_width`` > 0 (rad) reads the nearest echo inside each sensor's cone instead
+        (:mod:`fuzzynav.kernels.beams`).
         """
-        from fuzzynav.kernels import scene
+        from fuzzynav.kernels import beams
 
         poses = np.ascontiguousarray(np.asarray(poses, dtype=float).reshape(-1, 3))
         angles = np.ascontiguousarray(np.asarray(angles, dtype=float).reshape(-1))
         readings = np.empty((len(poses), len(angles)))
-        scene.ranges(self.scene, poses, angles, float(max_range), readings)
+        beams.read(self.scene, poses, angles, 0.5 * float(beam_width), float(max_range), readings)
         return add_noise(readings, max_range, noise_std, rng)
 
 

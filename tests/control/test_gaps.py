@@ -1,0 +1,55 @@
+"""Gap-aware avoidance (kernels.gaps): the opt-in navigators fuzzy-5b-gap / fuzzy-2b-gap, with the
+lidar scan, find and take the one passage wide enough for the body in a row of thin posts; the
+published versions keep their seven rays and no gap finding."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.kernels import gaps
+from fuzzynav.sim import run_episode
+from fuzzynav.world.scenario import scenario_from_dict
+
+POST, GAP_X, GAP, ROW_Y = 0.075, 11.5, 1.2, 10.0
+
+
+def post_field() -> dict:
+    """A row of 15 cm posts 0.3 m apart across a 20 m world, open only at a 1.2 m gap (post
+    surface to post surface) 1.5 m to the right of the start-goal line, a few posts before it."""
+    half = GAP / 2 + POST
+    row = [x for x in np.arange(0.3, 19.8, 0.3) if abs(x - GAP_X) > half + 0.15] + [GAP_X - half, GAP_X + half]
+    scattered = [(9.2, 6.5), (10.6, 7.4), (8.0, 8.2), (12.8, 7.0)]
+    circles = [(x, ROW_Y) for x in row] + scattered
+    return {"name": "post-field", "world": {"width": 20.0, "height": 20.0},
+            "robot": {"x": 10.0, "y": 3.0, "theta": float(np.pi / 2)}, "goal": {"x": 10.0, "y": 17.0},
+            "obstacles": [{"circle": {"center": [float(x), float(y)], "radius": POST}} for x, y in circles],
+            "max_time": 100.0}
+
+
+@pytest.mark.parametrize("name", ["fuzzy-5b-gap", "fuzzy-2b-gap"])
+def test_robot_passes_through_the_gap_in_a_field_of_posts(name):
+    trace = run_episode(scenario_from_dict(post_field()), make_controller(name), seed=0)
+    assert trace.outcome == "reached"
+    crossing = np.flatnonzero(np.diff(np.sign(trace.pose[:, 1] - ROW_Y)) != 0)
+    assert len(crossing) == 1
+    assert abs(trace.pose[crossing[0], 0] - GAP_X) < GAP / 2  # through the gap
+    assert "GAP" in "|".join(trace.behaviour.tolist())
+
+
+def test_published_navigator_does_not_find_the_gap():
+    trace = run_episode(scenario_from_dict(post_field()), make_controller("fuzzy-5b-thesis"), seed=0)
+    assert trace.outcome != "reached"
+    assert not any("GAP" in label for label in trace.behaviour.tolist())
+
+
+def test_gap_heading_is_the_goal_bearing_when_free_else_the_nearest_free_direction():
+    angles = np.deg2rad(np.arange(-90.0, 90.5, 1.0))
+    free = np.full(angles.size, 4.0)
+    found, heading, width = gaps.gap_heading(free, angles, 0.2, 0.4, 2.0, np.pi / 2, 0.69)
+    assert found and heading == pytest.approx(angles[np.argmin(abs(angles - 0.2))]) and width == pytest.approx(np.pi)
+    ahead = free.copy()
+    ahead[np.abs(angles) <= np.deg2rad(3.0)] = 1.0  # a post 1 m ahead: blocks ±asin(0.4) around it
+    found, heading, _ = gaps.gap_heading(ahead, angles, 0.0, 0.4, 2.0, np.pi / 2, 0.69)
+    assert found and np.deg2rad(3.0) + np.arcsin(0.4) < abs(heading) < np.deg2rad(3.0) + np.arcsin(0.4) + 0.1
+    wall = np.full(angles.size, 0.5)
+    assert not gaps.gap_heading(wall, angles, 0.0, 0.4, 2.0, np.pi / 2, 0.69)[0]
