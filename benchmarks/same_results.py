@@ -5,8 +5,8 @@ with a small budget and fixed seeds, and runs ``fuzzynav reproduce all --quick``
 two ``fuzzynav`` executables (e.g. the venv of a worktree at the base commit and the venv of the
 working tree), then compares every model file and every reproduce ``<id>.json`` byte for byte.
 
-    python benchmarks/same_results.py --base /path/to/base/.venv/bin/fuzzynav \
-        --new .venv/bin/fuzzynav --out /tmp/same-results
+    python benchmarks/same_results.py --base BASE_DIR/.venv/bin/fuzzynav \
+        --new .venv/bin/fuzzynav --out OUT_DIR
 
 Paths inside the run's directory are compared relative to it; fields that measure wall time (any key ending in ``_seconds``, and a checkpoint's ``saved_at``) are removed
 before comparing, since they differ between any two runs; everything else must be identical.

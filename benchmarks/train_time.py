@@ -4,7 +4,7 @@ interleaved with another version of the package, whose model files must then be 
 Each run is a fresh process (start-up, imports and loading the compiled kernels included); CPU
 time is the child's user + system time, which a shared machine does not inflate as it does the
 wall clock. ``--peer-src DIR`` (or ``FUZZYNAV_PEER_SRC``) names the ``src`` folder of another
-checkout (e.g. ``git worktree add /tmp/before <commit>``, then ``/tmp/before/src``): every seed
+checkout (e.g. ``git worktree add BEFORE_DIR <commit>``, then ``BEFORE_DIR/src``): every seed
 is then trained by the peer and by this package in turn, with the same Python, and the two model
 files are compared byte for byte. The first run of a version may include compiling its kernels
 (``--warm`` runs one short training of each first, untimed).

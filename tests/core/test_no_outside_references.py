@@ -5,7 +5,7 @@ import re
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-OUTSIDE = re.compile(r"\bSPEC\b|\b[Ii]ssue[ -]?#?\d+|\.\./shared\b")
+OUTSIDE = re.compile(r"\bSPEC\b|\bDESIGN\.md\b|\b[Ii]ssue[ -]?#?\d+|\.\./shared\b")
 
 
 def project_texts():

@@ -62,7 +62,7 @@ class _Reverse:
     name = "reverse"
 
     def reset(self, rng=None):
-        pass
+        """Nothing to forget between episodes."""
 
     def act(self, obs):
         from fuzzynav.control.base import Command

@@ -1,4 +1,4 @@
-"""The one controller interface for everything that drives the robot (DESIGN.md).
+"""The one controller interface for everything that drives the robot (docs/ARCHITECTURE.md).
 
 A controller maps an :class:`Observation` to a :class:`Command`; it knows nothing of the
 episode loop. Fuzzy behaviours, supervisors, trackers, learned policies and baselines all
@@ -96,7 +96,7 @@ class Controller(ABC):
 
 class BatchController(Controller):
     """A controller whose one decision is :meth:`act_batch` over N robots; :meth:`act` is its
-    one-robot case, inherited (DESIGN.md: one robot is a batch of one).
+    one-robot case, inherited (one robot is a batch of one).
 
     ``act_batch`` takes a batch observation — arrays with a leading robot axis, as the simulator's
     ``BatchObservation`` — and returns ``(steering (N,), speed (N,), behaviours (N,))``. :meth:`act`

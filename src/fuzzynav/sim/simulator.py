@@ -1,4 +1,4 @@
-"""The episode loop: sense → act → clip → step → record, until done (DESIGN.md).
+"""The episode loop: sense → act → clip → step → record, until done (docs/ARCHITECTURE.md, "Data flow of one run").
 
 :class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
 (:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:

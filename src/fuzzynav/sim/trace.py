@@ -1,4 +1,4 @@
-"""The record of one episode: arrays over time (DESIGN.md, data flow of one run).
+"""The record of one episode: arrays over time (docs/ARCHITECTURE.md, "Data flow of one run").
 
 Row k of the *state* arrays (``t``, ``pose``, ``ranges``, ``target``, ``waypoint_index``) is the
 state at t_k = k Δt, k = 0 … K; row k of the *command* arrays (``steering``, ``speed``,
