@@ -8,7 +8,7 @@ import pytest
 from fuzzynav.control.baselines import PurePursuit, Stanley
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.sim.observation import BatchObservation
+from fuzzynav.control.base import BatchObservation
 from fuzzynav.world.scenario import load_scenario
 
 

@@ -3,8 +3,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.base import thesis_angle_error
-from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.base import BatchController, thesis_angle_error
 from fuzzynav.control.goal_seeking import GoalSeekingController, GuardedGoalSeeking
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.fuzzy.systems import goal_seeking
@@ -13,7 +12,7 @@ from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 
-class RawTable(BatchedController):
+class RawTable(BatchController):
     """Table IV.1 without the anti-orbit guard (the orbiting of docs/thesis.md, chapter IV)."""
 
     def __init__(self, sign=1.0):

@@ -11,7 +11,7 @@ from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, FuzzyTracker
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.sim.metrics import cross_track
-from fuzzynav.sim.observation import BatchObservation
+from fuzzynav.control.base import BatchObservation
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = ("fuzzy-tracker", "neural-tracker", "anfis-tracker")

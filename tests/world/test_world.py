@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.world import Circle, Ellipse, Polygon, Wall, World
-from fuzzynav.world.shapes import polygon_self_intersects
+from fuzzynav.world.polygons import polygon_self_intersects
 
 MIXED = World(obstacles=(
     Circle([5, 5], 1.0),

@@ -1,9 +1,7 @@
-"""Batch-first controllers: one decision over many robots, a one-robot ``act`` on top.
+"""The compiled navigators: one decision over many robots, compiled.
 
-A :class:`BatchedController` implements :meth:`BatchedController.act_batch` over a
-:class:`~fuzzynav.sim.observation.BatchObservation`-like object (arrays with a leading robot
-axis) and inherits :meth:`act`, which views one :class:`~fuzzynav.control.base.Observation` as a
-batch of one. The chapter IV navigators are :class:`CompiledNavigator` s: their decision — with
+The chapter IV navigators are :class:`CompiledNavigator` s (a
+:class:`~fuzzynav.control.base.BatchController`): their decision — with
 per-robot memory where they have one (the behaviour switch, the recent range hits), kept in
 arrays over the robot axis — is compiled (:mod:`fuzzynav.kernels.navigators`), and the simulator
 runs it inside its own compiled step.
@@ -12,12 +10,10 @@ runs it inside its own compiled step.
 from __future__ import annotations
 
 import math
-from abc import abstractmethod
-from dataclasses import dataclass
 
 import numpy as np
 
-from fuzzynav.control.base import Command, Controller, Observation
+from fuzzynav.control.base import BatchController, Command, Observation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES, named_ring
@@ -28,47 +24,7 @@ GAP_LOOK = 2.0  # m: hits nearer than this shape the gaps
 GAP_FIELD = np.pi / 2  # directions searched: within ±90° of the heading
 
 
-@dataclass(frozen=True)
-class OneRobot:
-    """An :class:`Observation` seen as a batch of one (the fields the navigators read)."""
-
-    target_distance: np.ndarray
-    target_bearing: np.ndarray
-    ranges: np.ndarray | None
-    sensor_angles: np.ndarray | None
-    speed: np.ndarray
-    obstacle_distance: np.ndarray
-    obstacle_bearing: np.ndarray
-    pose: np.ndarray  # (1, 3)
-    dt: float
-    max_range: float
-    target: np.ndarray | None = None  # (1, 2)
-
-    @classmethod
-    def of(cls, obs: Observation) -> "OneRobot":
-        def one(value, default=np.inf):
-            return np.array([default if value is None else value], dtype=float)
-
-        return cls(one(obs.target_distance), one(obs.target_bearing),
-                   None if obs.ranges is None else np.asarray(obs.ranges, dtype=float)[None, :],
-                   obs.sensor_angles, one(obs.speed, 0.0), one(obs.obstacle_distance), one(obs.obstacle_bearing, 0.0),
-                   np.asarray(obs.pose, dtype=float)[None, :], float(obs.dt), float(obs.max_range),
-                   None if obs.target is None else np.asarray(obs.target, dtype=float)[None, :])
-
-
-class BatchedController(Controller):
-    """A controller whose decision is :meth:`act_batch`; :meth:`act` is its one-robot case."""
-
-    @abstractmethod
-    def act_batch(self, obs):
-        """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""
-
-    def act(self, obs: Observation) -> Command:
-        steering, speed, labels = self.act_batch(OneRobot.of(obs))
-        return Command(float(steering[0]), float(speed[0]), str(labels[0]))
-
-
-class CompiledNavigator(BatchedController):
+class CompiledNavigator(BatchController):
     """A navigator whose decision is compiled (:func:`fuzzynav.kernels.navigators.act`).
 
     Subclasses set ``kind`` (a :mod:`fuzzynav.kernels.navigators` code), ``labels`` (behaviour

@@ -343,13 +343,11 @@ class LearnedAvoidanceNavigator(BatchController):
 
     def _guarded(self, obs, steering, speed, labels, bearing):
         """The turning-room guard over the navigator's commands (class docstring)."""
-        from fuzzynav.control.batched import OneRobot
         from fuzzynav.control.turning_room import ALPHA_MAX
 
-        batch = obs if np.ndim(obs.ranges) == 2 else OneRobot.of(obs)
         if self._turning is None or self._turning.size != steering.size:
             self._turning = np.zeros(steering.size, dtype=bool)
-        turn, side = self.guard(batch, self._turning, bearing)
+        turn, side = self.guard(obs, self._turning, bearing)
         self._turning = turn
         return (np.where(turn, side * ALPHA_MAX, steering), np.where(turn, GUARD_SPEED, speed),
                 np.where(turn, "turn guard", labels))

@@ -4,7 +4,8 @@ so a world can be built without compiling anything).
 One flat float array: a header (:data:`HEADER` fields), then circles (cx, cy, r), polygons (first
 edge, end edge, centre x, y, bounding radius), polygon edges (ax, ay, bx, by, ex, ey, |e|²; walls
 are rectangles) and ellipses (cx, cy, a, b, cos φ, sin φ, bounding radius). Obstacle *columns*
-count circles, then polygons, then ellipses.
+count circles, then polygons, then ellipses (:data:`PRIMITIVES`; the obstacle types of
+:mod:`fuzzynav.world.shapes` each pack as one of them).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import numpy as np
 
 WIDTH, HEIGHT, N_CIRCLES, N_POLYGONS, N_EDGES, N_ELLIPSES, AT_CIRCLES, AT_POLYGONS, AT_EDGES, AT_ELLIPSES = range(10)
 HEADER = 10
+PRIMITIVES = ("circle", "polygon", "ellipse")  # the shape kinds the kernels know, in column order (code = index)
 NEAREST_COLUMNS = 5  # rows of nearest(): signed distance, nearest x, nearest y, column (-1: none), boundary
 
 

@@ -32,7 +32,8 @@ corrections add up).
 Extraction (:meth:`FuzzyQLearner.greedy_indices`): each rule keeps its best candidate — unless the
 quality gap between that candidate and the rule's *prior* conclusion is at most ``tolerance``, in
 which case the prior is kept. :func:`extract_system` turns the result into an ordinary TS0
-:class:`~fuzzynav.fuzzy.FuzzySystem` (savable, printable as a rule table). The prior defaults to the middle candidate (the neutral one of a
+:class:`~fuzzynav.fuzzy.FuzzySystem` (savable, printable as a rule table) through the one
+extractor of :mod:`fuzzynav.learn.extraction`. The prior defaults to the middle candidate (the neutral one of a
 symmetric set such as {−π/5, 0, π/5}), may be the hand-made controller's conclusion (wall
 following, §VI.5.3) or the previous extraction; rules never fired keep their prior. So tiny
 quality differences cannot flip the extracted controller.
@@ -43,8 +44,8 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict, row_max
+from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
 from fuzzynav.learn.state import restore_state
 
@@ -291,48 +292,30 @@ class FuzzyQLearner:
         return learner
 
 
-def extract_system(learner: FuzzyQLearner, outputs, *, learner_index: int = 0, tolerance: float = 0.0,
-                   prior=None, name: str = "", description: str = ""):
-    """The learned controller as an ordinary TS0 :class:`~fuzzynav.fuzzy.FuzzySystem` (§VI.4).
+def extract_system(learners, outputs, *, learner_index: int = 0, tolerance: float = 0.0, prior=None,
+                   rules: int | None = None, name: str = "", description: str = ""):
+    """The learned controller as an ordinary TS0 :class:`~fuzzynav.fuzzy.FuzzySystem` (§VI.4),
+    through the one extractor :func:`fuzzynav.learn.extraction.rule_table`.
 
-    The premise must be a fuzzy system (its inputs and rule premises are kept); each rule
-    concludes the candidate :meth:`FuzzyQLearner.greedy_indices` extracts. ``outputs`` names the
-    H·D outputs: a name (a variable of singletons ``c0, c1, …``, one per distinct candidate value,
-    in increasing order, is built) or a :class:`~fuzzynav.fuzzy.Variable` whose singletons
-    include every extracted value (e.g. the thesis' steering variable, for readable labels).
-    Inference: product / weighted average, i.e. Σ w_i a_i with the normalised strengths of FQL.
+    ``learners``: one :class:`FuzzyQLearner`, or several over the same premise (learned in turn,
+    e.g. the steering, then the speed); the premise must be a fuzzy system (or hold one as
+    ``system``), whose inputs and rule premises are kept (the first ``rules`` rules, default all).
+    Each rule concludes the candidate :meth:`FuzzyQLearner.greedy_indices` extracts (row
+    ``learner_index``). ``outputs`` names the H·D outputs of each learner in turn: a name, a
+    :class:`~fuzzynav.fuzzy.Variable` or an :class:`~fuzzynav.learn.extraction.Interpretations`
+    (:mod:`fuzzynav.learn.extraction`). Inference: product / weighted average, i.e. Σ w_i a_i with
+    the normalised strengths of FQL (weighted sum when the learners do not normalise).
     """
-    premise = learner.premise
-    if not hasattr(premise, "inputs") or not hasattr(premise, "rules"):
-        raise InputError("the premise is not a fuzzy system (no inputs / rules)", field="premise")
-    values = learner.greedy_conclusions(tolerance, prior)[learner_index]  # (H, R, D)
-    columns = values.transpose(0, 2, 1).reshape(-1, values.shape[1])  # (H·D, R)
+    learners = [learners] if isinstance(learners, FuzzyQLearner) else list(learners)
+    columns = []
+    for learner in learners:
+        chosen = learner.greedy_indices(tolerance, prior)[learner_index]  # (H, R)
+        h_count, _, _, d_count = learner.candidates.shape
+        columns += [(learner.candidates[h, :, :, d], chosen[h]) for h in range(h_count) for d in range(d_count)]
     outputs = list(outputs)
-    if len(outputs) != columns.shape[0]:
-        raise InputError(f"{len(outputs)} output(s) for {columns.shape[0]} learned output(s)", field="outputs")
-    variables, labels = [], []
-    for o, (output, column) in enumerate(zip(outputs, columns)):
-        if isinstance(output, Variable):
-            singles = {label: mf.value for label, mf in output.terms.items() if isinstance(mf, Singleton)}
-            label_of = {}
-            for value in column:
-                match = [label for label, v in singles.items() if np.isclose(v, value, rtol=0, atol=1e-9)]
-                if not match:
-                    raise InputError(f"no singleton of value {value!r}", field=f"outputs.{output.name}")
-                label_of[value] = match[0]
-            variables.append(output)
-        else:
-            h, d = divmod(o, learner.candidates.shape[3])
-            distinct = np.unique(learner.candidates[h, :, :, d])
-            label_of = {value: f"c{int(np.argmin(np.abs(distinct - value)))}" for value in column}
-            lo, hi = float(distinct[0]), float(distinct[-1])
-            universe = (lo, hi) if hi > lo else (lo - 1.0, hi + 1.0)
-            variables.append(Variable(str(output), universe,
-                                      {f"c{k}": Singleton(float(v)) for k, v in enumerate(distinct)}))
-        labels.append([label_of[value] for value in column])
-    rules = [Rule(rule.premises, tuple((var.name, labels[o][i]) for o, var in enumerate(variables)), rule.weight)
-             for i, rule in enumerate(premise.rules)]
-    return FuzzySystem(premise.inputs, variables, rules, method="ts0", tnorm=premise.tnorm,
-                       defuzzifier="weighted_average" if learner.normalise else "weighted_sum",
-                       name=name or "fuzzy-q-learned", description=description or
-                       "TS0 rule base whose conclusions were learned by fuzzy Q-learning (Algorithm VI.1)")
+    if len(outputs) != len(columns):
+        raise InputError(f"{len(outputs)} output(s) for {len(columns)} learned output(s)", field="outputs")
+    return rule_table(learners[0].premise, [(o, *column) for o, column in zip(outputs, columns)], rules=rules,
+                      defuzzifier="weighted_average" if learners[0].normalise else "weighted_sum",
+                      name=name or "fuzzy-q-learned", description=description or
+                      "TS0 rule base whose conclusions were learned by fuzzy Q-learning (Algorithm VI.1)")

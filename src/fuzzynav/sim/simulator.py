@@ -29,14 +29,13 @@ import math
 import numpy as np
 
 from fuzzynav import validation
-from fuzzynav.control.base import Controller
+from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
-from fuzzynav.sim.observation import BatchObservation
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.limits import MAX_TIME

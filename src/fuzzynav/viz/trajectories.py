@@ -26,7 +26,6 @@ from fuzzynav.storage import savefig_atomic
 from fuzzynav.sim.trace import Trace
 from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.world.scenario import Scenario
-from fuzzynav.world.shapes import Circle, Ellipse
 
 OBSTACLE_STYLE = {"facecolor": "0.55", "edgecolor": "0.2", "linewidth": 0.8}
 
@@ -55,13 +54,7 @@ def draw_world(ax, scenario: Scenario, trace: Trace | None = None) -> None:
     world = scenario.world
     ax.add_patch(patches.Rectangle((0, 0), world.width, world.height, fill=False, edgecolor="k", linewidth=1.5))
     for shape in world.obstacles:
-        if isinstance(shape, Circle):
-            ax.add_patch(patches.Circle(shape.center, shape.radius, **OBSTACLE_STYLE))
-        elif isinstance(shape, Ellipse):
-            ax.add_patch(patches.Ellipse(shape.center, 2 * shape.radii[0], 2 * shape.radii[1],
-                                         angle=np.degrees(shape.angle), **OBSTACLE_STYLE))
-        else:
-            ax.add_patch(patches.Polygon(shape.vertices, closed=True, **OBSTACLE_STYLE))
+        ax.add_patch(shape.patch(**OBSTACLE_STYLE))  # each obstacle type draws itself (fuzzynav.world.shapes)
     x, y, theta = scenario.start
     ax.plot(x, y, "ks", markersize=6, label="start")
     ax.annotate("", xy=(x + 0.8 * np.cos(theta), y + 0.8 * np.sin(theta)), xytext=(x, y),

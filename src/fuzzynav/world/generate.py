@@ -29,7 +29,7 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
-from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall
+from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
 KINDS = ("circles", "mixed", "dense", "utrap")  # append only: the index seeds each family
@@ -42,35 +42,6 @@ MAX_DRAWS = 200
 TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(np.pi / 5)  # m, l / tan(α_max) = 0.69 m
 
 
-def _circle(rng):
-    return {"circle": {"center": rng.uniform(1.0, 19.0, 2).round(2).tolist(),
-                       "radius": round(float(rng.uniform(0.4, 1.4)), 2)}}
-
-
-def _polygon(rng):
-    center = rng.uniform(1.5, 18.5, 2)
-    n = int(rng.integers(3, 7))
-    angles = np.linspace(0, 2 * np.pi, n, endpoint=False) + rng.uniform(0, 2 * np.pi)
-    radius = rng.uniform(0.6, 1.6) * rng.uniform(0.8, 1.0, n)  # a jittered regular fan: simple, star-shaped
-    points = center + np.column_stack([radius * np.cos(angles), radius * np.sin(angles)])
-    return {"polygon": {"points": points.round(2).tolist()}}
-
-
-def _wall(rng):
-    start = rng.uniform(1.0, 19.0, 2)
-    heading = rng.uniform(0, np.pi)
-    end = np.clip(start + rng.uniform(2.0, 6.0) * np.array([np.cos(heading), np.sin(heading)]), 0.5, 19.5)
-    return {"wall": {"start": start.round(2).tolist(), "end": end.round(2).tolist(),
-                     "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
-
-
-def _ellipse(rng):
-    radii = rng.uniform(0.4, 1.6, 2)
-    return {"ellipse": {"center": rng.uniform(1.5, 18.5, 2).round(2).tolist(), "radii": radii.round(2).tolist(),
-                        "angle": round(float(rng.uniform(-np.pi / 2, np.pi / 2)), 3)}}
-
-
-_CLASSES = {"circle": Circle, "polygon": Polygon, "wall": Wall, "ellipse": Ellipse}
 def _u_trap(rng, start, goal) -> list[dict]:
     """Three walls forming a U across the start–goal line, its opening towards the start."""
     direction = (goal - start) / np.hypot(*(goal - start))
@@ -84,14 +55,16 @@ def _u_trap(rng, start, goal) -> list[dict]:
                       "thickness": 0.3}} for a, b in segments]
 
 
-_MAKERS = {"circles": (_circle,), "mixed": (_circle, _polygon, _wall, _ellipse),
-           "dense": (_circle, _polygon, _wall, _ellipse), "utrap": (_circle,)}
+# the obstacle types each family draws (:data:`fuzzynav.world.shapes.SHAPES`, each type's ``random``); a
+# family's list is part of its worlds: extend it and its worlds change — add a family instead
+_MAKERS = {"circles": ("circle",), "mixed": ("circle", "polygon", "wall", "ellipse"),
+           "dense": ("circle", "polygon", "wall", "ellipse"), "utrap": ("circle",)}
 _COUNTS = {"circles": (8, 14), "mixed": (8, 12), "dense": (14, 20), "utrap": (2, 5)}
 
 
 def _clear_of(shapes: list[dict], start, goal) -> bool:
     """True when every shape keeps ``POINT_CLEARANCE`` from the start and the goal."""
-    shapes = [_CLASSES[kind](**params) for shape in shapes for kind, params in shape.items()]
+    shapes = [SHAPES[kind](**params) for shape in shapes for kind, params in shape.items()]
     return bool((World(WIDTH, HEIGHT, tuple(shapes)).nearest_obstacle(np.array([start, goal]))[0] >= POINT_CLEARANCE).all())
 
 
@@ -132,8 +105,7 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
         if obstacles and not _clear_of(obstacles, start, goal):
             continue
         for _ in range(int(rng.integers(lo, hi + 1))):
-            shape = makers[int(rng.integers(len(makers)))](rng)
-            (kind_key, params), = shape.items()
+            shape = SHAPES[makers[int(rng.integers(len(makers)))]].random(rng)
             if _clear_of([shape], start, goal):
                 obstacles.append(shape)
         document = {

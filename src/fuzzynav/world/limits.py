@@ -16,7 +16,7 @@ MAX_LENGTH = 100_000.0  # m: largest radius, semi-axis, wall thickness and toler
 MAX_ANGLE = 1_000.0  # rad: |angle| of a pose or an ellipse
 MAX_OBSTACLES = 2_000
 MAX_POLYGON_VERTICES = 1_000
-MAX_TOTAL_VERTICES = 20_000  # polygon vertices + 4 per wall, over the whole world
+MAX_TOTAL_VERTICES = 20_000  # polygon vertices the kernels hold (4 per wall), over the whole world
 MAX_WAYPOINTS = 10_000
 MAX_TIME = 3_600.0  # s: a run's simulated time (36,000 steps of the default 0.1 s)
 MAX_TARGET_SPEED = 100.0  # m/s: speed of a moving target
@@ -53,14 +53,14 @@ def world_contents(obstacles, width: float, height: float, source=None, field: s
         validation.fail(f"at most {MAX_OBSTACLES} obstacles, got {len(obstacles)}", source, field)
     total = 0
     for i, shape in enumerate(obstacles):
-        if not callable(getattr(shape, "bounds", None)):
-            validation.fail(f"must be a Circle, Polygon, Wall or Ellipse, got {type(shape).__name__}", source,
-                            f"{field}[{i}]")
+        if not callable(getattr(shape, "vertex_count", None)):
+            validation.fail(f"must be an obstacle shape (fuzzynav.world.shapes.SHAPES), got {type(shape).__name__}",
+                            source, f"{field}[{i}]")
         lo, hi = shape.bounds()
         if hi[0] < 0 or hi[1] < 0 or lo[0] > width or lo[1] > height:
             validation.fail(f"{shape.kind} lies wholly outside the {width:g} x {height:g} m world", source,
                             f"{field}[{i}]")
-        total += len(getattr(shape, "points", ())) + (4 if shape.kind == "wall" else 0)
+        total += shape.vertex_count()
     if total > MAX_TOTAL_VERTICES:
         validation.fail(f"at most {MAX_TOTAL_VERTICES} polygon and wall vertices in a world, got {total}", source,
                         field)

@@ -45,8 +45,9 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import limits
+from fuzzynav.world.checks import Checks, ShapeFields
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
-from fuzzynav.world.shapes import Circle, Ellipse, Polygon, Wall, polygon_self_intersects
+from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
 BUILTIN_DIR = Path(__file__).with_name("scenarios")
@@ -59,12 +60,6 @@ PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
             "target", "obstacles", "max_time", "controllers", "sensors")
 ROBOT_KEYS = ("radius", "wheelbase", "max_steering", "max_speed", "max_reverse_speed")  # TricycleParams fields
-SHAPE_KEYS = {
-    "circle": {"center": None, "radius": None},
-    "polygon": {"points": None},
-    "wall": {"start": None, "end": None, "thickness": 0.2},
-    "ellipse": {"center": None, "radii": None, "angle": 0.0},
-}
 
 
 @dataclass(frozen=True)
@@ -149,68 +144,24 @@ class Scenario:
         return doc
 
 
-class _Checker:
-    """The checks of :mod:`fuzzynav.validation` bound to one source file, with the scenario's
-    ranges (:mod:`fuzzynav.world.limits`)."""
-
-    def __init__(self, source: str):
-        self.source = source
-
-    def fail(self, field: str, problem: str):
-        validation.fail(problem, self.source, field)
-
-    def mapping(self, value, field: str, known, required=()) -> dict:
-        return validation.known_keys(value, known, self.source, field, required=required)
-
-    def number(self, value, field: str, positive: bool = False) -> float:
-        """A length (m, :func:`~fuzzynav.world.limits.length`) when ``positive``, else a coordinate."""
-        return (limits.length if positive else limits.coordinate)(value, self.source, field)
-
-    def point(self, value, field: str, positive: bool = False) -> np.ndarray:
-        if not isinstance(value, (list, tuple)) or len(value) != 2:
-            self.fail(field, f"must be a list of two numbers [x, y], got {validation._shown(value)}")
-        return np.array([self.number(v, f"{field}[{i}]", positive) for i, v in enumerate(value)])
-
-    def points(self, value, field: str, minimum: int, maximum: int) -> np.ndarray:
-        items = validation.sequence(value, self.source, field)
-        if len(items) < minimum:
-            self.fail(field, f"needs at least {minimum} points, got {len(items)}")
-        if len(items) > maximum:
-            self.fail(field, f"at most {maximum} points (docs/limits.md), got {len(items)}")
-        return np.array([self.point(v, f"{field}[{i}]") for i, v in enumerate(items)])
-
-    def text(self, value, field: str) -> str:
-        return validation.text(value, self.source, field, max_length=1000)
-
-
-def _shape(check: _Checker, entry, field: str):
+def _shape(check: Checks, entry, field: str):
+    """The obstacle of the scenario entry ``{kind: {parameters}}``, by its type in the registry
+    :data:`fuzzynav.world.shapes.SHAPES` (schema, defaults and parsing)."""
     if not isinstance(entry, dict) or len(entry) != 1:
-        check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPE_KEYS))
-    (kind, params), = check.mapping(entry, field, SHAPE_KEYS).items()
-    keys = SHAPE_KEYS[kind]
+        check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPES))
+    (kind, params), = check.mapping(entry, field, SHAPES).items()
+    shape, keys = SHAPES[kind], SHAPES[kind].schema()
     f = f"{field}.{kind}"
     params = check.mapping(params, f, keys, required=[k for k, v in keys.items() if v is None])
-    get = {k: params.get(k, default) for k, default in keys.items()}
     try:
-        if kind == "circle":
-            return Circle(check.point(get["center"], f"{f}.center"), check.number(get["radius"], f"{f}.radius", True))
-        if kind == "ellipse":
-            return Ellipse(check.point(get["center"], f"{f}.center"), check.point(get["radii"], f"{f}.radii", True),
-                           limits.angle(get["angle"], check.source, f"{f}.angle"))
-        if kind == "wall":
-            return Wall(check.point(get["start"], f"{f}.start"), check.point(get["end"], f"{f}.end"),
-                        check.number(get["thickness"], f"{f}.thickness", True))
-        points = check.points(get["points"], f"{f}.points", 3, limits.MAX_POLYGON_VERTICES)
-        if polygon_self_intersects(points):
-            check.fail(f"{f}.points", "polygon is self-intersecting (or has repeated points / zero area)")
-        return Polygon(points)
+        return shape.parse(ShapeFields(check, {k: params.get(k, default) for k, default in keys.items()}, f))
     except InputError as error:
         if error.source:
             raise
         check.fail(f"{f}.{error.field}", error.problem)
 
 
-def _reachable(check: _Checker, world: World, point, tolerance: float, radius: float, field: str, what: str):
+def _reachable(check: Checks, world: World, point, tolerance: float, radius: float, field: str, what: str):
     """Some centre within ``tolerance`` of ``point`` keeps the robot's body (a disc of ``radius``)
     inside the world and off the nearest obstacle; otherwise the task can never be done."""
     x, y = point
@@ -229,7 +180,7 @@ def _reachable(check: _Checker, world: World, point, tolerance: float, radius: f
                               f"obstacles[{index[0]}] keeps the robot (radius {radius:g} m) away")
 
 
-def _place(check: _Checker, world: World, point, field: str, what: str, radius: float = 0.0):
+def _place(check: Checks, world: World, point, field: str, what: str, radius: float = 0.0):
     """A point must lie in the world and outside every obstacle (a disc of ``radius`` around it)."""
     point = np.asarray(point, dtype=float).reshape(1, 2)
     if not world.contains(point)[0]:
@@ -252,7 +203,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     ``robot_radius`` is the footprint that must fit at the start pose when the document's
     ``robot`` gives no ``radius`` (default: the default robot's).
     """
-    check = _Checker(source)
+    check = Checks(source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
     tasks = [key for key in ("goal", "path", "target") if key in doc]
     if len(tasks) != 1:
@@ -349,7 +300,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     )
 
 
-def _robot_params(check: _Checker, robot: dict) -> TricycleParams:
+def _robot_params(check: Checks, robot: dict) -> TricycleParams:
     """The robot's size and limits from the optional keys of ``robot`` (others: the defaults)."""
     values = {}
     for key in ROBOT_KEYS:
@@ -362,7 +313,7 @@ def _robot_params(check: _Checker, robot: dict) -> TricycleParams:
     return replace(DEFAULT_PARAMS, **values) if values else DEFAULT_PARAMS
 
 
-def _controller_names(check: _Checker, names) -> tuple[str, ...]:
+def _controller_names(check: Checks, names) -> tuple[str, ...]:
     """The optional ``controllers`` key: a list of controller names (checked when they are run)."""
     if not isinstance(names, list) or not all(isinstance(name, str) and 0 < len(name) <= 100 for name in names):
         check.fail("controllers", "must be a list of controller names, e.g. [goal-seeking, fuzzy-5b]")

@@ -1,22 +1,56 @@
-"""Obstacle shapes of a world: circle, polygon, wall (thick segment), ellipse (obstacles of any shape, thesis §IV.7).
+"""The registry of obstacle types: each declares, in its one class, everything the package does with it.
 
-Frozen records that check their values when built (an :class:`~fuzzynav.errors.InputError`
-naming the field: NaN sizes, a negative radius, a 2-point polygon, a zero-length wall are
-refused; ranges in :mod:`fuzzynav.world.limits`). The vectorised geometry on many shapes at once
-lives in :mod:`fuzzynav.kernels.scene` and :class:`fuzzynav.world.world.World`. A :class:`Wall` is the
-rectangle of its given thickness around the segment start–end (its ends are square, so two walls
-meeting at a corner leave a notch of thickness/2 unless they overlap). ``to_dict`` gives the
-scenario-file form (docs/ARCHITECTURE.md), so generated worlds can be written back as YAML.
+An obstacle type is a frozen dataclass deriving :class:`Shape`, added to :data:`SHAPES` by the
+:func:`register` decorator. Its class is the one place that says
+
+- its **scenario schema**: the key (``kind``) and the parameters — the dataclass fields, those
+  with a default optional — that scenario files (docs/ARCHITECTURE.md) and :meth:`Shape.to_dict`
+  use;
+- its **validation**: ``__post_init__`` checks the values (an :class:`~fuzzynav.errors.InputError`
+  naming the field; ranges in :mod:`fuzzynav.world.limits`) and ``parse(fields)`` reads a scenario
+  entry through :class:`fuzzynav.world.checks.ShapeFields` (the checks of
+  :mod:`fuzzynav.validation`, errors naming the file and ``obstacles[i].<kind>.<key>``);
+- its **packing** for the compiled kernels: ``primitive``, one of the shape kinds the kernels know
+  (:data:`fuzzynav.kernels.layout.PRIMITIVES`: a disc, a polygon, an ellipse), and ``packed()``,
+  its row of that kind (:func:`fuzzynav.kernels.layout.pack`) — collisions, nearest points and
+  rays (:mod:`fuzzynav.kernels.scene`, :mod:`fuzzynav.kernels.beams`) follow from it, and so do
+  its bounding box (:meth:`Shape.bounds`) and its drawing (:meth:`Shape.patch`, for
+  :func:`fuzzynav.viz.trajectories.draw_world`): what is drawn is what the robot senses;
+- its **generation**: ``random(rng)``, one random instance (scenario-file form) in the 20 m × 20 m
+  workspace of the generated families (:mod:`fuzzynav.world.generate` names the types each family
+  draws).
+
+The scenario parser, the world, the generator and the plots read :data:`SHAPES` and these
+methods; none lists the types. Obstacles of any shape are thesis §IV.7. A type whose geometry is
+none of the kernels' primitives (a capsule, say) needs a new primitive in the kernels first
+(CONTRIBUTING.md, "An obstacle type").
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
 from fuzzynav.errors import InputError
+from fuzzynav.kernels.layout import PRIMITIVES
 from fuzzynav.world import limits
+from fuzzynav.world.polygons import polygon_self_intersects
+
+SHAPES: dict[str, type["Shape"]] = {}  # scenario key -> obstacle type, in the order registered
+
+
+def register(cls: type["Shape"]) -> type["Shape"]:
+    """Class decorator: add the obstacle type ``cls`` to :data:`SHAPES` under ``cls.kind``."""
+    if not (dataclasses.is_dataclass(cls) and issubclass(cls, Shape)):
+        raise TypeError(f"{cls.__name__} must be a dataclass deriving fuzzynav.world.shapes.Shape")
+    if cls.primitive not in PRIMITIVES:
+        raise TypeError(f"{cls.__name__}.primitive must be one of {PRIMITIVES}, got {cls.primitive!r}")
+    if cls.kind in SHAPES:
+        raise TypeError(f"the obstacle type {cls.kind!r} is already registered ({SHAPES[cls.kind].__name__})")
+    SHAPES[cls.kind] = cls
+    return cls
 
 
 def _array(values, field: str, shape: tuple) -> np.ndarray:
@@ -36,33 +70,101 @@ def _point(values, field: str = "center") -> np.ndarray:
     return _array(values, field, (2,))
 
 
+class Shape:
+    """An obstacle type (see the module docstring); subclasses are frozen dataclasses that set
+    ``kind`` and ``primitive`` and implement :meth:`parse` and :meth:`packed` (and :meth:`random`
+    when generated worlds draw them)."""
+
+    kind: str = ""  # the scenario-file key
+    primitive: str = ""  # the kernels' shape kind it packs as (fuzzynav.kernels.layout.PRIMITIVES)
+
+    @classmethod
+    def schema(cls) -> dict:
+        """Scenario parameters: name -> default (``None``: required), the dataclass fields."""
+        return {f.name: None if f.default is dataclasses.MISSING else f.default for f in dataclasses.fields(cls)}
+
+    @classmethod
+    def parse(cls, fields) -> "Shape":
+        """The obstacle of a scenario entry, its values read through ``fields``
+        (:class:`fuzzynav.world.checks.ShapeFields`)."""
+        raise NotImplementedError
+
+    @classmethod
+    def random(cls, rng: np.random.Generator) -> dict:
+        """One random instance in the generated families' 20 m × 20 m workspace, scenario-file form."""
+        raise NotImplementedError(f"no random {cls.kind} (fuzzynav.world.generate)")
+
+    def packed(self):
+        """Its row for the kernels: (cx, cy, r) for a disc, the vertices ``(V, 2)`` of a simple
+        polygon, (cx, cy, a, b, angle) for an ellipse."""
+        raise NotImplementedError
+
+    def to_dict(self) -> dict:
+        """The scenario-file form: ``{kind: {parameter: value}}``."""
+        values = {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+        return {self.kind: {k: v.tolist() if isinstance(v, np.ndarray) else v for k, v in values.items()}}
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower-left and upper-right corners of a bounding box of its packed geometry (an
+        ellipse's: the disc of its major semi-axis)."""
+        row = self.packed()
+        if self.primitive == "polygon":
+            return row.min(axis=0), row.max(axis=0)
+        reach = row[2] if self.primitive == "circle" else max(row[2], row[3])
+        return np.array(row[:2]) - reach, np.array(row[:2]) + reach
+
+    def vertex_count(self) -> int:
+        """Polygon vertices it adds to the kernels' scene (:data:`~fuzzynav.world.limits.MAX_TOTAL_VERTICES`)."""
+        return len(self.packed()) if self.primitive == "polygon" else 0
+
+    def patch(self, **style):
+        """A :mod:`matplotlib.patches` patch of its packed geometry, drawn with ``style``."""
+        from matplotlib import patches  # plotting only
+
+        row = self.packed()
+        if self.primitive == "circle":
+            return patches.Circle(row[:2], row[2], **style)
+        if self.primitive == "ellipse":
+            return patches.Ellipse(row[:2], 2 * row[2], 2 * row[3], angle=np.degrees(row[4]), **style)
+        return patches.Polygon(row, closed=True, **style)
+
+
+@register
 @dataclass(frozen=True)
-class Circle:
+class Circle(Shape):
     """Disc of ``radius`` (m) around ``center``; the obstacle of Table IV.2 / Fig IV.15."""
 
     center: np.ndarray
     radius: float
     kind = "circle"
+    primitive = "circle"
 
     def __post_init__(self):
         object.__setattr__(self, "center", _point(self.center))
         object.__setattr__(self, "radius", limits.length(self.radius, field="radius"))
 
-    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """Lower-left and upper-right corners of the bounding box."""
-        return self.center - self.radius, self.center + self.radius
+    @classmethod
+    def parse(cls, fields) -> "Circle":
+        return cls(fields.point("center"), fields.length("radius"))
 
-    def to_dict(self) -> dict:
-        return {"circle": {"center": self.center.tolist(), "radius": self.radius}}
+    @classmethod
+    def random(cls, rng) -> dict:
+        return {"circle": {"center": rng.uniform(1.0, 19.0, 2).round(2).tolist(),
+                           "radius": round(float(rng.uniform(0.4, 1.4)), 2)}}
+
+    def packed(self):
+        return (*self.center, self.radius)
 
 
+@register
 @dataclass(frozen=True)
-class Polygon:
+class Polygon(Shape):
     """Simple polygon given by its vertices ``(n, 2)`` (3 ≤ n ≤ MAX_POLYGON_VERTICES, either
     orientation); scenario files are also checked by :func:`polygon_self_intersects`."""
 
     points: np.ndarray
     kind = "polygon"
+    primitive = "polygon"
 
     def __post_init__(self):
         points = _array(self.points, "points", (-1, 2))
@@ -70,26 +172,42 @@ class Polygon:
             raise InputError(f"needs 3 to {limits.MAX_POLYGON_VERTICES} points, got {len(points)}", field="points")
         object.__setattr__(self, "points", points)
 
-    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """Lower-left and upper-right corners of the bounding box."""
-        return self.points.min(axis=0), self.points.max(axis=0)
+    @classmethod
+    def parse(cls, fields) -> "Polygon":
+        points = fields.points("points", 3, limits.MAX_POLYGON_VERTICES)
+        if polygon_self_intersects(points):
+            fields.fail("points", "polygon is self-intersecting (or has repeated points / zero area)")
+        return cls(points)
+
+    @classmethod
+    def random(cls, rng) -> dict:
+        center = rng.uniform(1.5, 18.5, 2)
+        n = int(rng.integers(3, 7))
+        angles = np.linspace(0, 2 * np.pi, n, endpoint=False) + rng.uniform(0, 2 * np.pi)
+        radius = rng.uniform(0.6, 1.6) * rng.uniform(0.8, 1.0, n)  # a jittered regular fan: simple, star-shaped
+        points = center + np.column_stack([radius * np.cos(angles), radius * np.sin(angles)])
+        return {"polygon": {"points": points.round(2).tolist()}}
 
     @property
     def vertices(self) -> np.ndarray:
         return self.points
 
-    def to_dict(self) -> dict:
-        return {"polygon": {"points": self.points.tolist()}}
+    def packed(self):
+        return self.points
 
 
+@register
 @dataclass(frozen=True)
-class Wall:
-    """Thick segment: the rectangle of width ``thickness`` (m) centred on ``start``–``end``."""
+class Wall(Shape):
+    """Thick segment: the rectangle of width ``thickness`` (m) centred on ``start``–``end`` (its
+    ends are square, so two walls meeting at a corner leave a notch of thickness/2 unless they
+    overlap)."""
 
     start: np.ndarray
     end: np.ndarray
     thickness: float = 0.2
     kind = "wall"
+    primitive = "polygon"
 
     def __post_init__(self):
         object.__setattr__(self, "start", _point(self.start, "start"))
@@ -98,10 +216,17 @@ class Wall:
         if np.hypot(*(self.end - self.start)) < limits.MIN_LENGTH:
             raise InputError(f"must differ from start by at least {limits.MIN_LENGTH:g} m (zero-length wall)", field="end")
 
-    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """Lower-left and upper-right corners of the bounding box."""
-        corners = self.vertices
-        return corners.min(axis=0), corners.max(axis=0)
+    @classmethod
+    def parse(cls, fields) -> "Wall":
+        return cls(fields.point("start"), fields.point("end"), fields.length("thickness"))
+
+    @classmethod
+    def random(cls, rng) -> dict:
+        start = rng.uniform(1.0, 19.0, 2)
+        heading = rng.uniform(0, np.pi)
+        end = np.clip(start + rng.uniform(2.0, 6.0) * np.array([np.cos(heading), np.sin(heading)]), 0.5, 19.5)
+        return {"wall": {"start": start.round(2).tolist(), "end": end.round(2).tolist(),
+                         "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
 
     @property
     def vertices(self) -> np.ndarray:
@@ -111,18 +236,20 @@ class Wall:
         normal = np.array([-direction[1], direction[0]]) / length * (0.5 * self.thickness)
         return np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
 
-    def to_dict(self) -> dict:
-        return {"wall": {"start": self.start.tolist(), "end": self.end.tolist(), "thickness": self.thickness}}
+    def packed(self):
+        return self.vertices
 
 
+@register
 @dataclass(frozen=True)
-class Ellipse:
+class Ellipse(Shape):
     """Ellipse with semi-axes ``radii`` = (a, b) (m) around ``center``, rotated by ``angle`` (rad)."""
 
     center: np.ndarray
     radii: np.ndarray
     angle: float = 0.0
     kind = "ellipse"
+    primitive = "ellipse"
 
     def __post_init__(self):
         object.__setattr__(self, "center", _point(self.center))
@@ -130,68 +257,15 @@ class Ellipse:
         object.__setattr__(self, "radii", np.array([limits.length(r, field=f"radii[{i}]") for i, r in enumerate(radii)]))
         object.__setattr__(self, "angle", limits.angle(self.angle, field="angle"))
 
-    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """Lower-left and upper-right corners of a bounding box (the disc of the major semi-axis)."""
-        reach = float(self.radii.max())
-        return self.center - reach, self.center + reach
+    @classmethod
+    def parse(cls, fields) -> "Ellipse":
+        return cls(fields.point("center"), fields.point("radii", positive=True), fields.angle("angle"))
 
-    def to_dict(self) -> dict:
-        return {"ellipse": {"center": self.center.tolist(), "radii": self.radii.tolist(), "angle": self.angle}}
+    @classmethod
+    def random(cls, rng) -> dict:
+        radii = rng.uniform(0.4, 1.6, 2)
+        return {"ellipse": {"center": rng.uniform(1.5, 18.5, 2).round(2).tolist(), "radii": radii.round(2).tolist(),
+                            "angle": round(float(rng.uniform(-np.pi / 2, np.pi / 2)), 3)}}
 
-
-Shape = Circle | Polygon | Wall | Ellipse
-
-
-def _overlapping_pairs(a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Index pairs (i < j) of the edges a→b whose x-extents overlap: edges sorted by their left
-    end, each paired with the run of edges starting before its right end (a sweep over x).
-    O(n log n + k) for k overlapping pairs; k ≤ n²/2 and n ≤ MAX_POLYGON_VERTICES bound it."""
-    left, right = np.minimum(a[:, 0], b[:, 0]), np.maximum(a[:, 0], b[:, 0])
-    order = np.argsort(left, kind="stable")
-    stop = np.searchsorted(left[order], right[order], side="right")  # edges order[k+1:stop[k]] overlap
-    counts = np.maximum(stop - np.arange(len(order)) - 1, 0)
-    first = np.repeat(np.arange(len(order)), counts)
-    offset = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
-    i, j = order[first], order[first + 1 + offset]
-    return np.minimum(i, j), np.maximum(i, j)
-
-
-def polygon_self_intersects(points) -> bool:
-    """True when two edges of the closed polygon ``points`` cross or touch (other than neighbours
-    at their shared vertex), or when it has a repeated vertex or zero area. Only edges whose
-    x-extents overlap are compared (:func:`_overlapping_pairs`)."""
-    pts = np.asarray(points, dtype=float)
-    n = len(pts)
-    a, b = pts, np.roll(pts, -1, axis=0)
-    if np.any(np.hypot(*(b - a).T) == 0.0):
-        return True
-    area = 0.5 * np.sum(a[:, 0] * b[:, 1] - b[:, 0] * a[:, 1])
-    if area == 0.0:
-        return True
-
-    def orient(p, q, r):
-        return np.sign((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
-
-    i, j = _overlapping_pairs(a, b)
-    keep = (j - i != 1) & ~((i == 0) & (j == n - 1))  # skip neighbouring edges
-    i, j = i[keep], j[keep]
-    p1, p2, q1, q2 = a[i], b[i], a[j], b[j]
-    o1, o2 = orient(p1, p2, q1), orient(p1, p2, q2)
-    o3, o4 = orient(q1, q2, p1), orient(q1, q2, p2)
-    proper = (o1 * o2 < 0) & (o3 * o4 < 0)
-
-    def on_segment(p, q, r):  # r collinear with p–q and within its box
-        return (
-            (orient(p, q, r) == 0)
-            & (np.minimum(p[:, 0], q[:, 0]) <= r[:, 0]) & (r[:, 0] <= np.maximum(p[:, 0], q[:, 0]))
-            & (np.minimum(p[:, 1], q[:, 1]) <= r[:, 1]) & (r[:, 1] <= np.maximum(p[:, 1], q[:, 1]))
-        )
-
-    touching = on_segment(p1, p2, q1) | on_segment(p1, p2, q2) | on_segment(q1, q2, p1) | on_segment(q1, q2, p2)
-    # neighbours share a vertex; they only "touch" badly when they fold back onto each other
-    k = np.arange(n)
-    prev_, cur, next_ = a[k], b[k], b[(k + 1) % n]
-    folds = (orient(prev_, cur, next_) == 0) & (
-        np.einsum("ij,ij->i", cur - prev_, next_ - cur) < 0
-    )
-    return bool(np.any(proper | touching) or np.any(folds))
+    def packed(self):
+        return (*self.center, *self.radii, self.angle)

@@ -1,7 +1,8 @@
 """The world: a rectangle [0, W] × [0, H] bounded by walls, with obstacles (docs/thesis.md: conventions).
 
 Every figure of the thesis uses a 20 m × 20 m workspace with the origin bottom-left. The shapes
-are packed into one array when the world is built (:func:`fuzzynav.kernels.layout.pack`); every
+are packed into one array when the world is built (:func:`fuzzynav.kernels.layout.pack`, each
+obstacle as its type's ``primitive`` and ``packed()`` row, :mod:`fuzzynav.world.shapes`); every
 query runs the compiled kernels of :mod:`fuzzynav.kernels.scene` over all points / robots (numba is
 imported at the first query).
 
@@ -16,7 +17,7 @@ import numpy as np
 
 from fuzzynav.kernels import layout
 from fuzzynav.world import limits
-from fuzzynav.world.shapes import Circle, Ellipse, Shape
+from fuzzynav.world.shapes import Shape
 
 
 @dataclass(frozen=True)
@@ -35,13 +36,12 @@ class World:
         object.__setattr__(self, "width", width)
         object.__setattr__(self, "height", height)
         limits.world_contents(self.obstacles, width, height)
-        circles = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Circle)]
-        ellipses = [(i, s) for i, s in enumerate(self.obstacles) if isinstance(s, Ellipse)]
-        polygons = [(i, s) for i, s in enumerate(self.obstacles) if not isinstance(s, (Circle, Ellipse))]
-        packed = layout.pack(self.width, self.height, [(*s.center, s.radius) for _, s in circles],
-                            [s.vertices for _, s in polygons], [(*s.center, *s.radii, s.angle) for _, s in ellipses])
+        columns = {primitive: [i for i, s in enumerate(self.obstacles) if s.primitive == primitive]
+                   for primitive in layout.PRIMITIVES}  # obstacle indices of each kernel shape kind
+        packed = layout.pack(self.width, self.height, *([self.obstacles[i].packed() for i in columns[primitive]]
+                                                         for primitive in layout.PRIMITIVES))
         object.__setattr__(self, "scene", packed)
-        object.__setattr__(self, "order", np.array([i for group in (circles, polygons, ellipses) for i, _ in group]
+        object.__setattr__(self, "order", np.array([i for primitive in layout.PRIMITIVES for i in columns[primitive]]
                                                    + [-1], dtype=int))
 
     # -- distances ---------------------------------------------------------------------------

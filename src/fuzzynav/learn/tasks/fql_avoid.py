@@ -23,6 +23,7 @@ from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems_navigation import D_MAX
 from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import GridPremise, RandomObstacles, RobotEnv
+from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay
 from fuzzynav.learn.tasks.common import (
@@ -106,23 +107,27 @@ def avoid_prior(open_side: bool = AVOID_OPEN) -> tuple:
     return tuple(j for r, p in enumerate(AVOID_PRIOR) for j in OPEN_PRIOR.get(r, (p, p)))
 
 
+def avoid_template(open_side: bool = AVOID_OPEN) -> FuzzySystem:
+    """The avoider's premise: the rules of its whole input grid, the free rules included (every
+    conclusion Z until learned)."""
+    return grid_system(avoid_inputs(open_side), [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
+                       [["Z"] * (free_rules(open_side)[-1] + 1)], "premise", "")
+
+
 def avoid_system(steering_index, speed_index=None, open_side: bool = AVOID_OPEN) -> FuzzySystem:
     """The learned avoider: the rules of Fig VI.17 with an obstacle near (the free rules of
-    :func:`free_rules` excluded), conclusions by candidate index (steering, and speed if given)."""
-    inputs = avoid_inputs(open_side)
-    free = free_rules(open_side)
-    outputs = [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))]
-    conclusions = [[outputs[0].labels[j] for j in steering_index]]
+    :func:`free_rules` excluded), conclusions by candidate index (steering, and speed if given),
+    built by the one extractor :func:`~fuzzynav.learn.extraction.rule_table`."""
+    outputs = [(output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5)),
+                _avoid_candidates(AVOID_STEERING, open_side), steering_index)]
     if speed_index is not None:
-        outputs.append(output_variable("v", AVOID_SPEEDS, (0.0, 4.0)))
-        conclusions.append([outputs[1].labels[j] for j in speed_index])
-    full = grid_system(inputs, outputs, [c + [c[0]] * free.size for c in conclusions], "fql-avoid", "")
+        outputs.append((output_variable("v", AVOID_SPEEDS, (0.0, 4.0)), _avoid_candidates(AVOID_SPEEDS, open_side),
+                        speed_index))
     extra = " and which side is more open (a deviation: 16 rules instead of 8)" if open_side else ""
-    return FuzzySystem(inputs, outputs, full.rules[:free[0]], method="ts0", tnorm="product",
-                       defuzzifier="weighted_sum", name="fql-avoid",
-                       description="Obstacle avoidance learned by fuzzy Q-learning (thesis §VI.5.2, eqs VI.18-VI.21) "
-                                   f"over front, right, left distances{extra}; "
-                                   "the situation 'front, right and left far' is goal seeking (Table IV.1)")
+    return rule_table(avoid_template(open_side), outputs, rules=free_rules(open_side)[0], name="fql-avoid",
+                      description="Obstacle avoidance learned by fuzzy Q-learning (thesis §VI.5.2, eqs VI.18-VI.21) "
+                                  f"over front, right, left distances{extra}; "
+                                  "the situation 'front, right and left far' is goal seeking (Table IV.1)")
 
 
 def _avoid_candidates(values: dict, open_side: bool) -> np.ndarray:
@@ -137,10 +142,8 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
     """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
     from fuzzynav.kernels import learned as learned_kernels
 
-    inputs = avoid_inputs(open_side)
     free_rule = free_rules(open_side)
-    template = grid_system(inputs, [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
-                           [["Z"] * (free_rule[-1] + 1)], "premise", "")
+    template = avoid_template(open_side)
     premise = GridPremise(template)
     navigator = LearnedAvoidanceNavigator(template)  # the navigator a fql-avoid model file runs
     layout = RandomObstacles()

@@ -26,6 +26,7 @@ from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import D_MAX_GOAL, goal_seeking
 from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
+from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
 from fuzzynav.learn.tasks.common import (
     GOAL_TOLERANCE, MAX_STEPS, PI, SPEED3, SPEED_SHARE, STEERING3, STEERING5, STEERING_SPEED, TOLERANCE, Phase,
@@ -101,19 +102,17 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None =
 
 
 def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
-    """The extracted controller: every rule with its best conclusion(s), as a TS0 system."""
-    inputs = task.inputs()
-    outputs, conclusions = [], []
-    for name, values, universe in (("steering", task.steering, (-PI / 5, PI / 5)), ("speed", SPEED3, (0.0, 4.0))):
-        if name in learners:
-            variable = output_variable("alpha" if name == "steering" else "v", values, universe)
-            outputs.append(variable)
-            conclusions.append([variable.labels[j] for j in learners[name].greedy_indices(TOLERANCE)[0, 0]])
-    rules = math.prod(len(v.terms) for v in inputs)
-    return grid_system(inputs, outputs, conclusions, task.name,
-                       f"Goal seeking learned by fuzzy Q-learning (thesis §VI.5.1, Algorithm VI.1): {rules} rules, "
-                       f"{len(task.steering)} steering conclusions" + (", speed learned" if "speed" in learners else ""))
-
+    """The extracted controller: every rule with its best conclusion(s), as a TS0 system
+    (:func:`~fuzzynav.learn.fql.extract_system`)."""
+    outputs = {"steering": output_variable("alpha", task.steering, (-PI / 5, PI / 5)),
+               "speed": output_variable("v", SPEED3, (0.0, 4.0))}
+    learned = [name for name in outputs if name in learners]
+    rules = math.prod(len(v.terms) for v in task.inputs())
+    return extract_system([learners[name] for name in learned], [outputs[name] for name in learned],
+                          tolerance=TOLERANCE, name=task.name,
+                          description=f"Goal seeking learned by fuzzy Q-learning (thesis §VI.5.1, Algorithm VI.1): "
+                                      f"{rules} rules, {len(task.steering)} steering conclusions"
+                                      + (", speed learned" if "speed" in learners else ""))
 
 
 def train_goal_fql(task: GoalFQL, request) -> dict:

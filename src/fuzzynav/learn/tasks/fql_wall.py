@@ -17,12 +17,11 @@ import numpy as np
 
 from fuzzynav.control.learned import SENSING, LearnedWallFollower
 from fuzzynav.fuzzy.io.document import to_document
-from fuzzynav.fuzzy.membership import Singleton
-from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S, wall_follower
-from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import GridPremise, RobotEnv, WallCourse
+from fuzzynav.learn.extraction import Interpretations
+from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import WallSpeedReward, WallSteeringReward
 from fuzzynav.learn.tasks.common import (
     BATCH, PI, SPEED_SHARE, WORLD_CONVERGENCE, Phase, checkpoint_path, episode_budget, finish, fql_learner,
@@ -83,25 +82,20 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
     yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
 
 
-def wall_system(handmade, candidates: dict, learners: dict, sensing: str = WALL_SENSING) -> FuzzySystem:
+def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING) -> FuzzySystem:
     """The optimised follower: Table VI.2's rules with the chosen interpretation of each label
-    (``PG_lo`` / ``PG`` / ``PG_hi`` = value − 10°, value, value + 10°; speeds × 0.7, 1, 1.3)."""
-    outputs, conclusions = [], []
-    for o, (name, universe) in enumerate((("alpha", (-PI / 4, PI / 4)), ("v", (0.0, 4.0)))):
-        chosen = learners["steering" if o == 0 else "speed"].greedy_indices(WALL_TOLERANCE)[0, 0]
-        terms, labels = {}, []
-        for r, rule in enumerate(handmade.rules):
-            label = dict(rule.conclusions)[name] + WALL_SUFFIXES[chosen[r]]
-            terms[label] = Singleton(float(candidates[name][r, chosen[r]]))
-            labels.append(label)
-        outputs.append(Variable(name, universe, terms))
-        conclusions.append(labels)
-    rules = [Rule(rule.premises, ((outputs[0].name, conclusions[0][r]), (outputs[1].name, conclusions[1][r])))
-             for r, rule in enumerate(handmade.rules)]
-    return FuzzySystem(handmade.inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
-                       name="fql-wall", description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
-                                                    f"(thesis §VI.5.3.2, eqs VI.21-VI.22); sensing: {sensing} "
-                                                    f"({WALL_SENSINGS[sensing]})")
+    (``PG_lo`` / ``PG`` / ``PG_hi`` = value − 10°, value, value + 10°; speeds × 0.7, 1, 1.3),
+    extracted by :func:`~fuzzynav.learn.fql.extract_system`."""
+    def interpretations(name, universe):
+        base = [dict(rule.conclusions)[name] for rule in handmade.rules]
+        return Interpretations(name, universe, lambda r, j: base[r] + WALL_SUFFIXES[j])
+
+    return extract_system([learners["steering"], learners["speed"]],
+                          [interpretations("alpha", (-PI / 4, PI / 4)), interpretations("v", (0.0, 4.0))],
+                          tolerance=WALL_TOLERANCE, name="fql-wall",
+                          description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
+                                      f"(thesis §VI.5.3.2, eqs VI.21-VI.22); sensing: {sensing} "
+                                      f"({WALL_SENSINGS[sensing]})")
 
 
 WALL_SENSINGS = {"rays": "single rays at -90, 0, +90 degrees, as the hand-made follower",
@@ -111,9 +105,8 @@ WALL_SENSINGS = {"rays": "single rays at -90, 0, +90 degrees, as the hand-made f
 def train_fql_wall(request, sensing: str = WALL_SENSING) -> dict:
     """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30) on the
     hand-made follower's single rays (``sensing``: :data:`WALL_SENSINGS`)."""
-    handmade, _, alpha, speed = wall_parts()
     phases, learners = run_phases(fql_wall_phases(request.out, episode_budget(request, 1500), sensing=sensing), request)
-    system = wall_system(handmade, {"alpha": alpha, "v": speed}, learners, sensing)
+    system = wall_system(wall_follower(), learners, sensing)
     document = {"kind": "fql-wall", "sensing": sensing, **to_document(system),
                 "training": {"task": "fql-wall", "seed": request.seed, **summarise(phases)}}
     return finish(request, document, phases, "fql-wall")
