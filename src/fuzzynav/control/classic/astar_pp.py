@@ -33,6 +33,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, arcs, positive
+from fuzzynav.errors import InputError
 from fuzzynav.world.hybrid_astar import Car, Search, hybrid_astar
 from fuzzynav.world.planning import shortest_path
 
@@ -42,22 +43,24 @@ PLANNERS: Counter = Counter()  # planner used per prepared world: "hybrid-A*", "
 SPACING = 0.05  # m between path points
 
 
-def _plan(scenario, body: Body, inflation: float, search: Search):
+def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
     """(planner, path points ``(m, 2)``, curvature ``(m,)``) on ``scenario`` (cached per world and
     parameters within the process); the points are None without a path."""
-    key = (json.dumps(scenario.to_dict(), sort_keys=True), body, inflation, search)
+    key = (json.dumps(scenario.to_dict(), sort_keys=True), body, inflation, search, hybrid)
     if key not in _PLANS:
         if len(_PLANS) >= _MAX_PLANS:
             _PLANS.clear()
-        _PLANS[key] = _search(scenario, body, inflation, search)
+        _PLANS[key] = plan_path(scenario, body, inflation, search, hybrid)
     return _PLANS[key]
 
 
-def _search(scenario, body: Body, inflation: float, search: Search):
+def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bool = True):
+    """Uncached (planner, points, curvature) of :func:`_plan`: hybrid A* (unless ``hybrid`` is
+    False), else grid A*."""
     goal = scenario.goal.position
     reach = Search(**{**search.__dict__, "reach": min(search.reach, scenario.goal.tolerance)})
     plan = hybrid_astar(scenario.world, scenario.start, goal,
-                        Car(body.radius + inflation, body.wheelbase, body.max_steering), reach)
+                        Car(body.radius + inflation, body.wheelbase, body.max_steering), reach) if hybrid else None
     if plan is not None:
         tail = _densify(np.array([plan.poses[-1, :2], goal]), SPACING)[1:]  # on to the goal itself
         return "hybrid-A*", np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
@@ -82,7 +85,8 @@ def _densify(path: np.ndarray, step: float) -> np.ndarray:
 class AStarPurePursuit(Controller):
     """Map-aware hybrid A* + pure pursuit (module docstring). Options: robot ``radius``/
     ``wheelbase``/``max_steering``/``max_speed``, ``inflation``, ``comfort`` (m), ``weight``
-    (clearance cost), ``lookahead`` (m), ``lateral`` (m/s², speed in bends), ``check_margin`` (m)."""
+    (clearance cost), ``lookahead`` (m), ``lateral`` (m/s², speed in bends), ``check_margin`` (m),
+    ``planner`` (``"hybrid"``, or ``"grid"``: grid A* only, to measure what hybrid A* adds)."""
 
     name = "astar-pp"
     map_aware = True
@@ -90,12 +94,15 @@ class AStarPurePursuit(Controller):
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  inflation: float = 0.05, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 0.6,
-                 lateral: float = 2.0, check_margin: float = 0.03):
+                 lateral: float = 2.0, check_margin: float = 0.03, planner: str = "hybrid"):
+        if planner not in ("hybrid", "grid"):
+            raise InputError(f"must be hybrid or grid, got {planner!r}", field="planner")
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.inflation = float(inflation)
         self.search = Search(weight=float(weight), comfort=float(comfort))
         self.lookahead, self.lateral = positive(lookahead, "lookahead"), positive(lateral, "lateral")
         self.check_margin = float(check_margin)
+        self.hybrid = planner == "hybrid"
         self.steering = np.linspace(-max_steering, max_steering, 15)
         self.world = None
         self.planner, self.path, self.curvature = "none", None, None
@@ -106,7 +113,7 @@ class AStarPurePursuit(Controller):
         self.world = scenario.world
         self.planner, self.path, self.curvature = "none", None, None
         if scenario.goal is not None:
-            self.planner, self.path, self.curvature = _plan(scenario, self.body, self.inflation, self.search)
+            self.planner, self.path, self.curvature = _plan(scenario, self.body, self.inflation, self.search, self.hybrid)
             PLANNERS[self.planner] += 1
         self._index = 0
 
