@@ -7,11 +7,12 @@ Coulter, CMU-RI-TR-92-01, 1992).
 
 The planner runs once per world in :meth:`prepare` (the simulator calls it with the scenario
 before the episode) and is cached per world within the process, so several seeds on one world
-plan once. The planned disc is the body radius plus ``inflation``. When hybrid A* finds no path
-within its node budget, the grid A* path (Hart, Nilsson & Raphael 1968,
-:func:`fuzzynav.world.planning.shortest_path`, which ignores the heading) is followed instead;
-:data:`PLANNERS` counts which planner each prepared world got. Without either (the start cannot
-reach the goal on the map inflated by ``inflation``, nor by 2 cm) it stays put.
+plan once. The planned disc is the body radius plus ``inflation`` (where that closes every way,
+plus 2 cm). When hybrid A* finds no path within its node budget, the grid A* path (Hart,
+Nilsson & Raphael 1968, :func:`fuzzynav.world.planning.shortest_path`, which ignores the
+heading) is followed instead; :data:`PLANNERS` counts which planner each prepared world got.
+Without either (the start cannot reach the goal on the map inflated by ``inflation``, nor by
+2 cm) it stays put.
 
 The tracker aims at the path point ``lookahead`` metres beyond the robot's projection on the
 path (searched forward from the last one, so progress is monotonic) and drives at
@@ -56,15 +57,16 @@ def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
 
 def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bool = True):
     """Uncached (planner, points, curvature) of :func:`_plan`: hybrid A* (unless ``hybrid`` is
-    False), else grid A*."""
+    False), else grid A*; each on the map inflated by the body + ``inflation``, then by the body + 2 cm."""
     goal = scenario.goal.position
     reach = Search(**{**search.__dict__, "reach": min(search.reach, scenario.goal.tolerance)})
-    plan = hybrid_astar(scenario.world, scenario.start, goal,
-                        Car(body.radius + inflation, body.wheelbase, body.max_steering), reach) if hybrid else None
-    if plan is not None:
-        tail = _densify(np.array([plan.poses[-1, :2], goal]), SPACING)[1:]  # on to the goal itself
-        return "hybrid-A*", np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
-    for radius in (body.radius + inflation, body.radius + 0.02):  # inflated first, then the body + 2 cm
+    radii = (body.radius + inflation, body.radius + 0.02)
+    for radius in radii if hybrid else ():
+        plan = hybrid_astar(scenario.world, scenario.start, goal, Car(radius, body.wheelbase, body.max_steering), reach)
+        if plan is not None:
+            tail = _densify(np.array([plan.poses[-1, :2], goal]), SPACING)[1:]  # on to the goal itself
+            return "hybrid-A*", np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
+    for radius in radii:
         path = shortest_path(scenario.world, scenario.start, goal, radius, weight=search.weight,
                              comfort=search.comfort)
         if path is not None:
