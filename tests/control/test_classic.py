@@ -3,12 +3,13 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.classic.astar_pp import AStarPurePursuit
+from fuzzynav.control.classic.astar_pp import PLANNERS, AStarPurePursuit
 from fuzzynav.catalog.controllers import available, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_world
 from fuzzynav.world.scenario import scenario_from_dict
+from tests.world.test_hybrid_astar import bay
 
 CLASSIC = ("dwa", "apf", "vfh", "astar-pp")
 
@@ -60,8 +61,24 @@ def test_astar_pp_plans_for_its_body_radius():
     assert run_episode(scenario, AStarPurePursuit(radius=0.3), seed=0).outcome == "reached"
 
 
+def test_astar_pp_drives_round_where_the_grid_path_cannot_be_driven():
+    """Start facing away from the goal in a corridor too narrow to turn round in (1.4 m between
+    the walls' axes, a U-turn needs 1.6 m): the grid A* path leads straight back, and the car
+    following it hits a wall; the hybrid A* path turns in the room beyond, and the car gets there."""
+    scenario = bay(1.4)
+    grid = AStarPurePursuit(planner="grid")
+    assert run_episode(scenario, grid, seed=0).outcome == "collision" and grid.planner == "grid-A*"
+    before = PLANNERS["hybrid-A*"]
+    hybrid = AStarPurePursuit()
+    trace = run_episode(scenario, hybrid, seed=0)
+    assert trace.outcome == "reached" and hybrid.planner == "hybrid-A*"
+    assert PLANNERS["hybrid-A*"] == before + 1
+    assert metrics(trace, scenario)["min_clearance_m"] > 0.1
+    assert trace.pose[:, 0].max() > 6.0  # turned round in the room
+
+
 @pytest.mark.parametrize("name, option", [("dwa", "braking"), ("apf", "influence"), ("vfh", "window"),
-                                          ("astar-pp", "lookahead"), ("dwa", "radius")])
+                                          ("astar-pp", "lookahead"), ("astar-pp", "planner"), ("dwa", "radius")])
 def test_bad_options_name_the_field(name, option):
     with pytest.raises(InputError, match=option):
         make_controller(name, **{option: -1.0})

@@ -180,6 +180,19 @@ def shortest_path(world: World, start, goal, radius: float, *, cell: float | Non
     return shorten(grid, path)
 
 
+def cost_to_go(grid: Grid, goal, radius: float, *, weight: float = 0.0, comfort: float = 0.0) -> np.ndarray | None:
+    """The search cost (m, with the clearance cost of the module docstring) from every cell of
+    ``grid`` ``(ny, nx)`` to the free cell nearest ``goal`` (inf where unreachable), or None
+    when no free cell lies near the goal: the heuristic of :mod:`fuzzynav.world.hybrid_astar`."""
+    target = _nearest_free(grid, np.asarray(goal, dtype=float)[:2])
+    if target is None:
+        return None
+    nx = grid.free.shape[1]
+    distance = csgraph.dijkstra(_graph(grid, radius, weight, comfort), directed=False,
+                                indices=target[0] * nx + target[1])
+    return distance.reshape(grid.free.shape)
+
+
 def path_length(path: np.ndarray) -> float:
     """Length (m) of a polyline ``(m, 2)``."""
     return float(np.hypot(*np.diff(path, axis=0).T).sum())
