@@ -9,7 +9,7 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   T-norm / S-norm), times the rule's weight;
 - :func:`integral` — a Mamdani output: every activation implies its term (sampled once at the
   defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
-  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum);
+  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.reduce`);
 - :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
   combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``), with
   :func:`affine` values z of constant and linear terms (:func:`weighted_affine`: all three by
@@ -26,10 +26,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, reduce_sampled
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
 
-REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
 CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
 MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
@@ -171,89 +171,6 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 
 @jit
-def _centroid_sums(mu, x, lo, hi):
-    """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere: four running sums,
-    sample k in sum k mod 4 (not one: four independent additions per step instead of a chain of
-    dependent ones), added as (s0 + s1) + (s2 + s3). Anchored on the sample index, so any [lo, hi)
-    holding the non-zero samples gives the same bits."""
-    size = mu.shape[0]
-    first, end = lo - lo % 4, min(size, hi + (-hi) % 4)
-    t0 = t1 = t2 = t3 = m0 = m1 = m2 = m3 = 0.0
-    k = first
-    while k + 4 <= end:
-        t0 += mu[k]
-        t1 += mu[k + 1]
-        t2 += mu[k + 2]
-        t3 += mu[k + 3]
-        m0 += mu[k] * x[k]
-        m1 += mu[k + 1] * x[k + 1]
-        m2 += mu[k + 2] * x[k + 2]
-        m3 += mu[k + 3] * x[k + 3]
-        k += 4
-    if k < end:
-        t0 += mu[k]
-        m0 += mu[k] * x[k]
-    if k + 1 < end:
-        t1 += mu[k + 1]
-        m1 += mu[k + 1] * x[k + 1]
-    if k + 2 < end:
-        t2 += mu[k + 2]
-        m2 += mu[k + 2] * x[k + 2]
-    return (t0 + t1) + (t2 + t3), (m0 + m1) + (m2 + m3)
-
-
-@jit
-def _reduce(kind, mu, x, area, lo, hi):
-    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
-    outside samples [lo, hi)."""
-    size = mu.shape[0]
-    if kind == 0:
-        total, moment = _centroid_sums(mu, x, lo, hi)
-        return moment / total
-    if kind == 1:  # the samples where the running area is closest to half of it, averaged
-        total = 0.0
-        for k in range(size):
-            if mu[k] == mu[k]:
-                total += mu[k]
-            area[k] = total
-        best = np.inf
-        for k in range(size):
-            gap = abs(area[k] / total - 0.5)
-            if gap != gap:
-                return np.nan
-            best = min(best, gap)
-        count, where = 0, 0.0
-        for k in range(size):
-            if abs(area[k] / total - 0.5) == best:
-                count += 1
-                where += x[k]
-        return where / count if count > 0 else np.nan
-    m, nan = mu[lo:hi], False
-    for k in range(m.shape[0]):
-        nan |= m[k] != m[k]
-    if nan:
-        return np.nan
-    top = 0.0
-    for k in range(m.shape[0]):
-        top = m[k] if m[k] > top else top
-    if not top > 0.0:
-        return np.nan
-    at = x[lo:hi]
-    if kind == 2:
-        count, where = 0, 0.0
-        for k in range(m.shape[0]):
-            tie = m[k] == top
-            count += tie
-            where += at[k] * tie
-        return where / count
-    step = 1 if kind == 3 else -1
-    k = 0 if kind == 3 else m.shape[0] - 1
-    while m[k] != top:
-        k += step
-    return at[k]
-
-
-@jit
 def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
     """A Mamdani output for every row n: activation a has degree ``degrees[rows[a], n]`` and
     belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
@@ -294,7 +211,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 implied[:] = wu
                 tnorm_into(imp, implied, shape)
                 snorm_into(aggregation, m, implied)
-        out[n] = _reduce(reduction, mu, x, area, lo, max(lo, hi))
+        out[n] = reduce_sampled(reduction, mu, x, area, lo, max(lo, hi))
 
 
 @jit

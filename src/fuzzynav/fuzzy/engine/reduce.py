@@ -1,0 +1,114 @@
+"""The reductions of a sampled Mamdani output (fuzzylite 8's integral defuzzifiers), compiled.
+
+:func:`reduce_sampled` turns the aggregated set, sampled at the defuzzifier's points, into the
+crisp value: centroid Σ μ x / Σ μ, bisector (the samples where the running area is closest to half
+of it, averaged), mean / smallest / largest of the samples of maximum membership; NaN for an empty
+set. Used row by row by :func:`fuzzynav.fuzzy.engine.compiled.integral`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.jit import jit
+
+REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
+
+
+@jit
+def _centroid_sums(mu, x, lo, hi):
+    """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere: eight running sums,
+    sample k in sum k mod 8 (not one: eight independent additions per step instead of a chain of
+    dependent ones), added pairwise. Anchored on the sample index, so any [lo, hi) holding the
+    non-zero samples gives the same bits."""
+    first, end = lo - lo % 8, min(mu.shape[0], hi + (-hi) % 8)
+    t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
+    m0 = m1 = m2 = m3 = m4 = m5 = m6 = m7 = 0.0
+    k = first
+    while k + 8 <= end:
+        t0 += mu[k]
+        t1 += mu[k + 1]
+        t2 += mu[k + 2]
+        t3 += mu[k + 3]
+        t4 += mu[k + 4]
+        t5 += mu[k + 5]
+        t6 += mu[k + 6]
+        t7 += mu[k + 7]
+        m0 += mu[k] * x[k]
+        m1 += mu[k + 1] * x[k + 1]
+        m2 += mu[k + 2] * x[k + 2]
+        m3 += mu[k + 3] * x[k + 3]
+        m4 += mu[k + 4] * x[k + 4]
+        m5 += mu[k + 5] * x[k + 5]
+        m6 += mu[k + 6] * x[k + 6]
+        m7 += mu[k + 7] * x[k + 7]
+        k += 8
+    for j in range(k, end):  # the last samples (fewer than 8, at the end of the range only)
+        lane = j - k
+        if lane == 0:
+            t0, m0 = t0 + mu[j], m0 + mu[j] * x[j]
+        elif lane == 1:
+            t1, m1 = t1 + mu[j], m1 + mu[j] * x[j]
+        elif lane == 2:
+            t2, m2 = t2 + mu[j], m2 + mu[j] * x[j]
+        elif lane == 3:
+            t3, m3 = t3 + mu[j], m3 + mu[j] * x[j]
+        elif lane == 4:
+            t4, m4 = t4 + mu[j], m4 + mu[j] * x[j]
+        elif lane == 5:
+            t5, m5 = t5 + mu[j], m5 + mu[j] * x[j]
+        else:
+            t6, m6 = t6 + mu[j], m6 + mu[j] * x[j]
+    total = ((t0 + t1) + (t2 + t3)) + ((t4 + t5) + (t6 + t7))
+    return total, ((m0 + m1) + (m2 + m3)) + ((m4 + m5) + (m6 + m7))
+
+
+@jit
+def reduce_sampled(kind, mu, x, area, lo, hi):
+    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
+    outside samples [lo, hi)."""
+    size = mu.shape[0]
+    if kind == 0:
+        total, moment = _centroid_sums(mu, x, lo, hi)
+        return moment / total
+    if kind == 1:  # the samples where the running area is closest to half of it, averaged
+        total = 0.0
+        for k in range(size):
+            if mu[k] == mu[k]:
+                total += mu[k]
+            area[k] = total
+        best = np.inf
+        for k in range(size):
+            gap = abs(area[k] / total - 0.5)
+            if gap != gap:
+                return np.nan
+            best = min(best, gap)
+        count, where = 0, 0.0
+        for k in range(size):
+            if abs(area[k] / total - 0.5) == best:
+                count += 1
+                where += x[k]
+        return where / count if count > 0 else np.nan
+    m, nan = mu[lo:hi], False
+    for k in range(m.shape[0]):
+        nan |= m[k] != m[k]
+    if nan:
+        return np.nan
+    top = 0.0
+    for k in range(m.shape[0]):
+        top = m[k] if m[k] > top else top
+    if not top > 0.0:
+        return np.nan
+    at = x[lo:hi]
+    if kind == 2:
+        count, where = 0, 0.0
+        for k in range(m.shape[0]):
+            tie = m[k] == top
+            count += tie
+            where += at[k] * tie
+        return where / count
+    step = 1 if kind == 3 else -1
+    k = 0 if kind == 3 else m.shape[0] - 1
+    while m[k] != top:
+        k += step
+    return at[k]
