@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, reduce_sampled
+from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, padded, reduce_sampled
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
 
@@ -180,7 +180,9 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu, scratch, area = np.empty(size), np.empty(size), np.empty(size)
+    mu, scratch, area = np.empty(padded(size)), np.empty(size), np.empty(size)
+    at = np.zeros(padded(size))  # the points, padded for reduce_sampled
+    at[:size] = x
     for n in range(degrees.shape[1]):
         for u in range(n_units):
             w[u] = -np.inf
@@ -211,7 +213,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 implied[:] = wu
                 tnorm_into(imp, implied, shape)
                 snorm_into(aggregation, m, implied)
-        out[n] = reduce_sampled(reduction, mu, x, area, lo, max(lo, hi))
+        out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi))
 
 
 @jit

@@ -17,11 +17,12 @@ REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "Lar
 
 @jit
 def _centroid_sums(mu, x, lo, hi):
-    """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere: eight running sums,
+    """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere (and padded with zeros,
+    as ``x``, to a multiple of 8 samples): eight running sums,
     sample k in sum k mod 8 (not one: eight independent additions per step instead of a chain of
     dependent ones), added pairwise. Anchored on the sample index, so any [lo, hi) holding the
     non-zero samples gives the same bits."""
-    first, end = lo - lo % 8, min(mu.shape[0], hi + (-hi) % 8)
+    first, end = lo - lo % 8, hi + (-hi) % 8  # mu and x are padded with zeros to a multiple of 8
     t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
     m0 = m1 = m2 = m3 = m4 = m5 = m6 = m7 = 0.0
     k = first
@@ -43,31 +44,22 @@ def _centroid_sums(mu, x, lo, hi):
         m6 += mu[k + 6] * x[k + 6]
         m7 += mu[k + 7] * x[k + 7]
         k += 8
-    for j in range(k, end):  # the last samples (fewer than 8, at the end of the range only)
-        lane = j - k
-        if lane == 0:
-            t0, m0 = t0 + mu[j], m0 + mu[j] * x[j]
-        elif lane == 1:
-            t1, m1 = t1 + mu[j], m1 + mu[j] * x[j]
-        elif lane == 2:
-            t2, m2 = t2 + mu[j], m2 + mu[j] * x[j]
-        elif lane == 3:
-            t3, m3 = t3 + mu[j], m3 + mu[j] * x[j]
-        elif lane == 4:
-            t4, m4 = t4 + mu[j], m4 + mu[j] * x[j]
-        elif lane == 5:
-            t5, m5 = t5 + mu[j], m5 + mu[j] * x[j]
-        else:
-            t6, m6 = t6 + mu[j], m6 + mu[j] * x[j]
     total = ((t0 + t1) + (t2 + t3)) + ((t4 + t5) + (t6 + t7))
     return total, ((m0 + m1) + (m2 + m3)) + ((m4 + m5) + (m6 + m7))
 
 
 @jit
+def padded(size):
+    """The length of the sample arrays :func:`reduce_sampled` reads: ``size`` rounded up to 8."""
+    return size + (-size) % 8
+
+
+@jit
 def reduce_sampled(kind, mu, x, area, lo, hi):
     """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
-    outside samples [lo, hi)."""
-    size = mu.shape[0]
+    outside samples [lo, hi); ``area`` (one value per sample) is scratch; ``mu`` and ``x`` are padded
+    with zeros beyond them to a multiple of 8 (see :func:`padded`)."""
+    size = area.shape[0]
     if kind == 0:
         total, moment = _centroid_sums(mu, x, lo, hi)
         return moment / total
