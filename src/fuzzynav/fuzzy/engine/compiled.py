@@ -171,6 +171,16 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 
 @jit
+def _max_min(mu, shapes, t, first, end, w):
+    """mu ← max(mu, min(w, term t)) on the samples [first, end), where no NaN can occur. Its own
+    function, given whole arrays (measured: 1.5-2x faster than the same loop on views made in the
+    caller's row loop)."""
+    m, shape = mu[first:end], shapes[t, first:end]
+    for k in range(m.shape[0]):
+        m[k] = max(m[k], min(w, shape[k]))
+
+
+@jit
 def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
     """A Mamdani output for every row n: activation a has degree ``degrees[rows[a], n]`` and
     belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
@@ -204,15 +214,14 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                     continue
                 first, end = support[t, 0], support[t, 1]
             lo, hi = min(lo, first), max(hi, end)
-            imp, m, shape = unit_implication[u], mu[first:end], shapes[t, first:end]  # slices: loops vectorise
+            imp = unit_implication[u]
             if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
-                for k in range(m.shape[0]):  # no NaN can occur: plain max / min
-                    m[k] = max(m[k], min(wu, shape[k]))
+                _max_min(mu, shapes, t, first, end, wu)
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
-                tnorm_into(imp, implied, shape)
-                snorm_into(aggregation, m, implied)
+                tnorm_into(imp, implied, shapes[t, first:end])
+                snorm_into(aggregation, mu[first:end], implied)
         out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi))
 
 
