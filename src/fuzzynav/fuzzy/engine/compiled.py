@@ -190,7 +190,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu, scratch, area = np.empty(padded(size)), np.empty(size), np.empty(size)
+    mu, scratch, area = np.empty(padded(size)), np.empty(size), np.empty(padded(size))
     at = np.zeros(padded(size))  # the points, padded for reduce_sampled
     at[:size] = x
     for n in range(degrees.shape[1]):
@@ -222,7 +222,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 implied[:] = wu
                 tnorm_into(imp, implied, shapes[t, first:end])
                 snorm_into(aggregation, mu[first:end], implied)
-        out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi))
+        out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi), size)
 
 
 @jit

@@ -49,17 +49,27 @@ def _centroid_sums(mu, x, lo, hi):
 
 
 @jit
+def _top(mu, lo, hi):
+    """The largest of ``mu[lo:hi]`` (no NaN there; 0 if empty): eight running maxima."""
+    first, end = lo - lo % 8, hi + (-hi) % 8
+    t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
+    for k in range(first, end, 8):
+        t0, t1, t2, t3 = max(t0, mu[k]), max(t1, mu[k + 1]), max(t2, mu[k + 2]), max(t3, mu[k + 3])
+        t4, t5, t6, t7 = max(t4, mu[k + 4]), max(t5, mu[k + 5]), max(t6, mu[k + 6]), max(t7, mu[k + 7])
+    return max(max(max(t0, t1), max(t2, t3)), max(max(t4, t5), max(t6, t7)))
+
+
+@jit
 def padded(size):
     """The length of the sample arrays :func:`reduce_sampled` reads: ``size`` rounded up to 8."""
     return size + (-size) % 8
 
 
 @jit
-def reduce_sampled(kind, mu, x, area, lo, hi):
+def reduce_sampled(kind, mu, x, area, lo, hi, size):
     """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
-    outside samples [lo, hi); ``area`` (one value per sample) is scratch; ``mu`` and ``x`` are padded
-    with zeros beyond them to a multiple of 8 (see :func:`padded`)."""
-    size = area.shape[0]
+    outside samples [lo, hi); ``area`` (as long as ``mu``) is scratch; ``mu`` and ``x`` are padded
+    with zeros beyond them to a multiple of 8 (see :func:`padded`), ``size`` samples before."""
     if kind == 0:
         total, moment = _centroid_sums(mu, x, lo, hi)
         return moment / total
@@ -81,26 +91,22 @@ def reduce_sampled(kind, mu, x, area, lo, hi):
                 count += 1
                 where += x[k]
         return where / count if count > 0 else np.nan
-    m, nan = mu[lo:hi], False
-    for k in range(m.shape[0]):
-        nan |= m[k] != m[k]
+    nan = False
+    for k in range(lo, hi):
+        nan |= mu[k] != mu[k]
     if nan:
         return np.nan
-    top = 0.0
-    for k in range(m.shape[0]):
-        top = m[k] if m[k] > top else top
+    top = _top(mu, lo, hi)
     if not top > 0.0:
         return np.nan
-    at = x[lo:hi]
-    if kind == 2:
-        count, where = 0, 0.0
-        for k in range(m.shape[0]):
-            tie = m[k] == top
-            count += tie
-            where += at[k] * tie
+    if kind == 2:  # the samples of maximum membership (area: 1 there, else 0), averaged
+        first, end = lo - lo % 8, hi + (-hi) % 8
+        for k in range(first, end):
+            area[k] = 1.0 if mu[k] == top else 0.0
+        count, where = _centroid_sums(area, x, lo, hi)
         return where / count
     step = 1 if kind == 3 else -1
-    k = 0 if kind == 3 else m.shape[0] - 1
-    while m[k] != top:
+    k = lo if kind == 3 else hi - 1
+    while mu[k] != top:
         k += step
-    return at[k]
+    return x[k]
