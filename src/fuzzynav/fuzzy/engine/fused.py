@@ -10,8 +10,8 @@ from the conclusions before, as fuzzylite does); each conclusion's degree (hedge
 one conclusion to the next); then each output — Mamdani by :func:`~.compiled.integral`, weighted
 by :func:`~.compiled.weighted_affine` — and its ``lock-previous`` / ``default`` / ``lock-range``
 (:func:`~.compiled.finish`). The same operations in the same order as that path, so the same
-numbers (the NumPy path stays for what :func:`~.pack.pack` refuses, and is what the tests compare
-this kernel with, bit for bit, on every fuzzylite example).
+bits (the NumPy path stays for what :func:`~.pack.pack` refuses; the tests compare the two on the
+test engines and on pyfuzzylite's examples).
 """
 
 from __future__ import annotations
