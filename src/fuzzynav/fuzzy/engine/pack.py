@@ -1,8 +1,8 @@
 """An :class:`~fuzzynav.fuzzy.engine.Engine` packed into flat arrays once, for the fused kernel.
 
-:func:`pack` returns the propositions to fuzzify in NumPy before the kernel (``exp``-based terms,
-``Function`` and ``Linear`` premises: see :mod:`.term_columns`) and a :class:`Packed` record of
-arrays that :func:`fuzzynav.fuzzy.engine.fused.run` reads, or — for what the kernel does not cover
+:func:`pack` returns the propositions to fuzzify in NumPy before the kernel (terms built on
+``exp`` or ``pow``, ``Function`` and ``Linear`` premises: see :mod:`.term_columns`) and a
+:class:`Packed` record of arrays that :func:`fuzzynav.fuzzy.engine.fused.run` reads, or — for what the kernel does not cover
 — the reason the engine keeps its NumPy path: an activation method other than General, or a
 weighted output whose conclusions are not all constant or linear (Tsukamoto's inverses, functions
 of the degree). Index ranges are ``X_start[k]:X_start[k + 1]``.
