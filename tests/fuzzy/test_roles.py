@@ -108,3 +108,47 @@ def test_every_role_drives_the_compiled_navigators(controller, scenario, tmp_pat
                            seed=0)
     assert replaced.outcome == original.outcome
     np.testing.assert_allclose(replaced.pose, original.pose, rtol=0, atol=1e-9)
+
+
+def _campaign(out, *extra):
+    return main(["bench", "circles:3:2", "--controllers", "goal-seeking,fuzzy-2b,pure-pursuit", "--workers", "1",
+                 "--quiet", "--gallery", "0", "--out", str(out), *extra])
+
+
+def _runs(out):
+    return {(r["world"], r["controller"]): r for r in map(json.loads, (out / "runs.jsonl").read_text().splitlines())}
+
+
+def test_bench_fis_replaces_the_role_in_every_controller_that_has_it(edited_gsb, tmp_path, capsys):
+    assert _campaign(tmp_path / "plain") == 0
+    assert _campaign(tmp_path / "edited", "--fis", f"gsb={edited_gsb}") == 0
+    plain, edited = _runs(tmp_path / "plain"), _runs(tmp_path / "edited")
+    assert plain.keys() == edited.keys()
+    changed = {key[1] for key, row in edited.items() if row["path_length_m"] != plain[key]["path_length_m"]}
+    assert changed == {"goal-seeking", "fuzzy-2b"}  # both have gsb; pure pursuit has no fuzzy system
+    summary = json.loads((tmp_path / "edited" / "summary.json").read_text())
+    assert summary["arguments"]["fis"] == {"gsb": str(edited_gsb.resolve())}
+    # --resume checks the replacement: other rule bases (or none) cannot be mixed into these runs
+    capsys.readouterr()
+    assert _campaign(tmp_path / "edited", "--resume") == 2
+    assert "no --fis" in capsys.readouterr().err
+    other = tmp_path / "other.yaml"
+    other.write_text(edited_gsb.read_text().replace("alpha IS NG", "alpha IS NM", 1))
+    assert _campaign(tmp_path / "edited", "--resume", "--fis", f"gsb={other}") == 2
+    assert "cannot be mixed" in capsys.readouterr().err
+    assert _campaign(tmp_path / "plain", "--resume", "--fis", f"gsb={edited_gsb}") == 2
+    assert _campaign(tmp_path / "edited", "--resume", "--fis", f"gsb={edited_gsb}") == 0  # the same: nothing to run
+    assert _runs(tmp_path / "edited") == edited
+
+
+def test_bench_fis_is_refused_when_it_does_not_fit(edited_gsb, tmp_path, capsys):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(edited_gsb.read_text().replace("drg", "dist"))
+    assert _campaign(tmp_path / "o", "--fis", f"gsb={bad}") == 2
+    err = capsys.readouterr().err
+    assert "bad.yaml" in err and "'dist'" in err and "expected 'drg'" in err
+    assert _campaign(tmp_path / "o", "--fis", f"foa={edited_gsb}") == 2
+    assert "no controller of the campaign has the role foa (their roles: gsb, oab)" in capsys.readouterr().err
+    assert _campaign(tmp_path / "o", "--fis", str(edited_gsb)) == 2
+    assert "expected ROLE=FILE" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists() or not (tmp_path / "o" / "runs.jsonl").exists()

@@ -10,11 +10,14 @@ Files in the output folder:
   world, controller as given), so they are byte-identical whatever the backend, the number of
   workers, or where an interruption fell; then the reports (:mod:`.report`).
 - ``cache/shortest/``: the shortest path of each world (:mod:`.measures`).
+- ``fis.json``: the rule-base replacements (``--fis``: role, file, SHA-256 of its content); a
+  ``--resume`` with other replacements (or none where there were some) is refused.
 """
 
 from __future__ import annotations
 
 import csv
+import hashlib
 import io
 import json
 import sys
@@ -34,12 +37,14 @@ COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_le
 
 @dataclass(frozen=True)
 class Plan:
-    """What to run: ``suites``, ``controllers`` ((label, spec) pairs), ``seeds`` (count), robot ``radius``."""
+    """What to run: ``suites``, ``controllers`` ((label, spec) pairs), ``seeds`` (count), robot
+    ``radius``, and ``fis``: (role, file) rule-base replacements (``--fis``)."""
 
     suites: tuple[Suite, ...]
     controllers: tuple[tuple[str, str], ...]
     seeds: int
     radius: float
+    fis: tuple[tuple[str, str], ...] = ()
 
     def order(self) -> dict[tuple, int]:
         """Position of every run key (suite, world, seed, controller) in the final files."""
@@ -62,7 +67,7 @@ class Plan:
                     todo = tuple((label, spec) for label, spec in self.controllers
                                  if (suite.name, world, seed, label) not in done)
                     if todo:
-                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir))
+                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir, self.fis))
         return cells
 
 
@@ -112,6 +117,26 @@ def _write_all(out: Path, rows: list[dict]) -> None:
     write_atomic(out / "runs.csv", ",".join(COLUMNS) + "\n" + csv_lines(rows))
 
 
+def _describe(record: dict) -> str:
+    return ", ".join(f"--fis {role}={item['file']} (sha256 {item['sha256'][:12]})" for role, item in record.items()) \
+        or "no --fis"
+
+
+def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
+    """Record the rule-base replacements (role, file, content hash) in ``fis.json``; a campaign
+    whose runs were made with other ones (or none) is refused: it cannot mix them."""
+    record = {role: {"file": path, "sha256": hashlib.sha256(Path(path).read_bytes()).hexdigest()}
+              for role, path in fis}
+    path = out / "fis.json"
+    if resuming:
+        before = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
+        if {r: v["sha256"] for r, v in before.items()} != {r: v["sha256"] for r, v in record.items()}:
+            raise InputError(f"its runs were made with {_describe(before)}, this campaign gives {_describe(record)}: "
+                             "runs of different rule bases cannot be mixed (resume with the same --fis, or choose "
+                             "another --out)", source=str(out), field="--fis")
+    write_atomic(path, json.dumps(record, indent=1) + "\n")
+
+
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
                  address: str | None = None, progress: bool = True) -> list[dict]:
     """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
@@ -120,6 +145,7 @@ def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = 
     if previous and not resume:
         raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
                          "another --out", source=str(out), field="--out")
+    _check_replacements(out, plan.fis, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))

@@ -13,16 +13,19 @@ from pathlib import Path
 from fuzzynav.bench.measures import run_row, shortest_length
 from fuzzynav.bench.suites import Suite
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
 from fuzzynav.sim import metrics, run_episode
 
 _MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
+_SYSTEMS: dict[tuple, dict] = {}  # (controller, its (role, file) pairs) -> {role: replacement system}
 MODEL_SUFFIXES = (".json", ".npz")
 
 
 @dataclass(frozen=True)
 class Cell:
     """World ``index`` of ``suite`` under ``seed``, to run with ``controllers`` ((label, spec)
-    pairs: a registered name or a model file); ``radius`` is the simulated robot's."""
+    pairs: a registered name or a model file); ``radius`` is the simulated robot's; ``fis``
+    ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it."""
 
     suite: Suite
     index: int
@@ -30,6 +33,7 @@ class Cell:
     controllers: tuple[tuple[str, str], ...]
     radius: float
     cache_dir: str | None = None
+    fis: tuple[tuple[str, str], ...] = ()
 
 
 def is_model_file(spec: str) -> bool:
@@ -37,10 +41,16 @@ def is_model_file(spec: str) -> bool:
     return spec.endswith(MODEL_SUFFIXES)
 
 
-def build_controller(spec: str):
-    """A fresh controller for ``spec`` (registered name, or model file loaded once per process)."""
+def build_controller(spec: str, fis: tuple[tuple[str, str], ...] = ()):
+    """A fresh controller for ``spec`` (registered name, or model file loaded once per process),
+    with the replacements ``fis`` ((role, file) pairs, read once per process) of the roles it has."""
     if not is_model_file(spec):
-        return make_controller(spec)
+        mine = tuple((role, path) for role, path in fis if role in ROLES.get(spec, {}))
+        if not mine:
+            return make_controller(spec)
+        if (spec, mine) not in _SYSTEMS:
+            _SYSTEMS[(spec, mine)] = {role: load_replacement(spec, role, path) for role, path in mine}
+        return make_with_systems(spec, _SYSTEMS[(spec, mine)])
     if spec not in _MODELS:
         from fuzzynav.catalog.tasks import load_controller
 
@@ -55,7 +65,7 @@ def run_cell(cell: Cell) -> list[dict]:
     reference = cell.suite.reference(cell.index)
     rows = []
     for label, spec in cell.controllers:
-        trace = run_episode(scenario, build_controller(spec), seed=cell.seed)
+        trace = run_episode(scenario, build_controller(spec, cell.fis), seed=cell.seed)
         rows.append({"suite": cell.suite.name, "world": cell.suite.world_name(cell.index, cell.seed),
                      "seed": cell.seed, "controller": label,
                      **run_row(metrics(trace, scenario), shortest, reference)})

@@ -71,13 +71,19 @@ def load_replacement(controller: str, role: str, path: str):
     return system
 
 
+def parse_option(option: str) -> tuple[str, str]:
+    """(role, file) of one ``--fis ROLE=FILE`` option."""
+    role, sep, path = option.partition("=")
+    if not sep or not role or not path:
+        raise InputError(f"expected ROLE=FILE, got {option!r}", field="--fis")
+    return role, path
+
+
 def systems_from_options(controller: str, options: list[str] | None) -> dict:
     """``{role: system}`` from ``--fis ROLE=FILE`` options (empty when there are none)."""
     systems = {}
     for option in options or []:
-        role, sep, path = option.partition("=")
-        if not sep or not role or not path:
-            raise InputError(f"expected ROLE=FILE, got {option!r}", field="--fis")
+        role, path = parse_option(option)
         if role in systems:
             raise InputError(f"role {role} is given twice", field=f"--fis {option}")
         default_system(controller, role)  # names the known roles when this one is not

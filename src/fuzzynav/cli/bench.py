@@ -1,11 +1,12 @@
-"""``fuzzynav bench SUITE… --controllers a,b,c [--seeds K] [--workers N] [--backend local|ray]
-[--out DIR] [--resume]`` — a benchmark campaign (:mod:`fuzzynav.bench`).
+"""``fuzzynav bench SUITE… --controllers a,b,c [--fis ROLE=FILE] [--seeds K] [--workers N]
+[--backend local|ray] [--out DIR] [--resume]`` — a benchmark campaign (:mod:`fuzzynav.bench`).
 
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
 family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap). Controllers are registered
 names (``fuzzynav run --help`` lists them) or trained model files (``.json``/``.npz``, labelled by
-their file name without the suffix). Writes runs.csv / runs.jsonl as runs finish, then
-summary.md, summary.json, plots and index.html into --out.
+their file name without the suffix). ``--fis ROLE=FILE`` replaces that rule base in every
+controller of the campaign that has the role (as ``fuzzynav run --fis`` does). Writes runs.csv /
+runs.jsonl as runs finish, then summary.md, summary.json, plots and index.html into --out.
 """
 
 from __future__ import annotations
@@ -38,6 +39,9 @@ def register(subparsers) -> None:
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",
                         help="comma-separated controller names or model files (.json/.npz)")
+    parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
+                        help="replace the fuzzy system for ROLE in every controller that has it (any "
+                             ".yaml/.json/.fll/.fis; repeat per role; part of what --resume checks)")
     parser.add_argument("--seeds", type=_positive_int, default=1, metavar="K",
                         help="seeds 0..K-1 (generated families: K world sets; default 1)")
     parser.add_argument("--workers", type=_positive_int, default=None, metavar="N",
@@ -79,6 +83,28 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     return tuple(pairs)
 
 
+def _replacements(options: list[str] | None, controllers) -> tuple[tuple[str, str], ...]:
+    """(role, absolute file) of every ``--fis ROLE=FILE``, each checked against every controller
+    that has the role (InputError when none has it, or when the file does not fit)."""
+    from fuzzynav.bench.cells import is_model_file
+    from fuzzynav.catalog.roles import ROLES, make_with_systems, parse_option, systems_from_options
+
+    if not options:
+        return ()
+    pairs = [parse_option(option) for option in options]
+    names = [spec for _, spec in controllers if not is_model_file(spec)]
+    for option, (role, _) in zip(options, pairs):
+        if not any(role in ROLES.get(name, {}) for name in names):
+            known = sorted({r for name in names for r in ROLES.get(name, {})})
+            raise InputError(f"no controller of the campaign has the role {role} (their roles: "
+                             f"{', '.join(known) or 'none'})", field=f"--fis {option}")
+    for name in names:
+        mine = [option for option, (role, _) in zip(options, pairs) if role in ROLES.get(name, {})]
+        if mine:
+            make_with_systems(name, systems_from_options(name, mine))
+    return tuple((role, str(Path(path).resolve())) for role, path in pairs)
+
+
 def run(args) -> int:
     from fuzzynav.bench.campaign import Plan, run_campaign
     from fuzzynav.bench.report import write_reports
@@ -89,12 +115,14 @@ def run(args) -> int:
     names = [suite.name for suite in suites]
     if len(set(names)) != len(names):
         raise InputError(f"suites repeat ({', '.join(names)})", field="SUITE")
-    plan = Plan(suites, _controllers(args.controllers), args.seeds, DEFAULT_PARAMS.radius)
+    controllers = _controllers(args.controllers)
+    plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers))
     out = Path(args.out)
     workers = args.workers or os.cpu_count() or 1
     rows = run_campaign(plan, out, resume=args.resume, backend=args.backend, workers=workers,
                         address=args.ray_address, progress=not args.quiet)
-    arguments_used = {"suites": names, "controllers": [label for label, _ in plan.controllers], "seeds": args.seeds}
+    arguments_used = {"suites": names, "controllers": [label for label, _ in plan.controllers], "seeds": args.seeds,
+                      **({"fis": dict(plan.fis)} if plan.fis else {})}
     write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
     print(f"{len(rows)} runs in {out}: summary.md, summary.json, index.html", file=sys.stderr)
     return 0

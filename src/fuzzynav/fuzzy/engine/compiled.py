@@ -9,7 +9,7 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   T-norm / S-norm), times the rule's weight;
 - :func:`integral` — a Mamdani output: every activation implies its term (sampled once at the
   defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
-  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum);
+  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.reduce`);
 - :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
   combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``), with
   :func:`affine` values z of constant and linear terms (:func:`weighted_affine`: all three by
@@ -26,10 +26,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, padded, reduce_sampled
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
 
-REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
 CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
 MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
@@ -171,58 +171,13 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 
 @jit
-def _reduce(kind, mu, x, area, lo, hi):
-    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
-    outside samples [lo, hi)."""
-    size = mu.shape[0]
-    if kind == 0:
-        total, moment = 0.0, 0.0
-        m, at = mu[lo:hi], x[lo:hi]
-        for k in range(m.shape[0]):
-            total += m[k]
-            moment += m[k] * at[k]
-        return moment / total
-    if kind == 1:  # the samples where the running area is closest to half of it, averaged
-        total = 0.0
-        for k in range(size):
-            if mu[k] == mu[k]:
-                total += mu[k]
-            area[k] = total
-        best = np.inf
-        for k in range(size):
-            gap = abs(area[k] / total - 0.5)
-            if gap != gap:
-                return np.nan
-            best = min(best, gap)
-        count, where = 0, 0.0
-        for k in range(size):
-            if abs(area[k] / total - 0.5) == best:
-                count += 1
-                where += x[k]
-        return where / count if count > 0 else np.nan
-    m, nan = mu[lo:hi], False
+def _max_min(mu, shapes, t, first, end, w):
+    """mu ← max(mu, min(w, term t)) on the samples [first, end), where no NaN can occur. Its own
+    function, given whole arrays (measured: 1.5-2x faster than the same loop on views made in the
+    caller's row loop)."""
+    m, shape = mu[first:end], shapes[t, first:end]
     for k in range(m.shape[0]):
-        nan |= m[k] != m[k]
-    if nan:
-        return np.nan
-    top = 0.0
-    for k in range(m.shape[0]):
-        top = m[k] if m[k] > top else top
-    if not top > 0.0:
-        return np.nan
-    at = x[lo:hi]
-    if kind == 2:
-        count, where = 0, 0.0
-        for k in range(m.shape[0]):
-            tie = m[k] == top
-            count += tie
-            where += at[k] * tie
-        return where / count
-    step = 1 if kind == 3 else -1
-    k = 0 if kind == 3 else m.shape[0] - 1
-    while m[k] != top:
-        k += step
-    return at[k]
+        m[k] = max(m[k], min(w, shape[k]))
 
 
 @jit
@@ -235,7 +190,9 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu, scratch, area = np.empty(size), np.empty(size), np.empty(size)
+    mu, scratch, area = np.empty(padded(size)), np.empty(size), np.empty(padded(size))
+    at = np.zeros(padded(size))  # the points, padded for reduce_sampled
+    at[:size] = x
     for n in range(degrees.shape[1]):
         for u in range(n_units):
             w[u] = -np.inf
@@ -257,16 +214,15 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                     continue
                 first, end = support[t, 0], support[t, 1]
             lo, hi = min(lo, first), max(hi, end)
-            imp, m, shape = unit_implication[u], mu[first:end], shapes[t, first:end]  # slices: loops vectorise
+            imp = unit_implication[u]
             if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
-                for k in range(m.shape[0]):  # no NaN can occur: plain max / min
-                    m[k] = max(m[k], min(wu, shape[k]))
+                _max_min(mu, shapes, t, first, end, wu)
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
-                tnorm_into(imp, implied, shape)
-                snorm_into(aggregation, m, implied)
-        out[n] = _reduce(reduction, mu, x, area, lo, max(lo, hi))
+                tnorm_into(imp, implied, shapes[t, first:end])
+                snorm_into(aggregation, mu[first:end], implied)
+        out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi), size)
 
 
 @jit

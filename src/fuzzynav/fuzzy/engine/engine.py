@@ -11,9 +11,15 @@ A premise on an output variable reads the degree its term has accumulated so far
 system). ``Function`` terms read the current value of every variable (outputs not yet
 defuzzified read NaN, the state of a fresh engine). Each call is independent: ``lock_previous``
 carries a value from one *row* of the batch to the next, as fuzzylite's vectorised engine does,
-starting from NaN. NaN inputs propagate (fuzzylite's behaviour). Terms and hedges are evaluated
-in NumPy over the batch, once per proposition; rules, aggregation and defuzzification run
-compiled over the rows (:mod:`fuzzynav.fuzzy.engine.compiled`, numba, imported on first use).
+starting from NaN. NaN inputs propagate (fuzzylite's behaviour).
+
+An engine with General activation and constant, linear or integral-defuzzified outputs (every
+Mamdani and Takagi–Sugeno example fuzzylite ships) is packed into arrays on first use and
+evaluated by one compiled call (:mod:`fuzzynav.fuzzy.engine.fused`), only its ``exp``/``pow``
+terms fuzzified in NumPy first. Others (:attr:`Engine.fallback` says why) take the NumPy path:
+terms and hedges in NumPy over the batch, once per proposition; rules, aggregation and
+defuzzification compiled over the rows (:mod:`fuzzynav.fuzzy.engine.compiled`). Both give the
+same bits (tested on every fuzzylite example).
 """
 
 from __future__ import annotations
@@ -48,6 +54,7 @@ class Engine(VariableNames):
         self._check()
         self._programs = [_program(block, {v.name for v in self.outputs}) for block in self.blocks]
         self._sampled: dict = {}  # integral outputs' terms sampled at their defuzzifier's points, on first use
+        self._packed = None  # the engine as the fused kernel's arrays (or why not), on first use
 
     # ------------------------------------------------------------------ construction
     @property
@@ -127,14 +134,31 @@ class Engine(VariableNames):
             values[var.name] = np.full(X.shape[0], np.nan)
         return columns, values
 
+    @property
+    def fallback(self) -> str | None:
+        """Why :meth:`evaluate` keeps the NumPy path; None when one compiled kernel evaluates the
+        engine (:mod:`fuzzynav.fuzzy.engine.fused`)."""
+        from fuzzynav.fuzzy.engine.pack import pack
+
+        if self._packed is None:
+            self._packed = pack(self)
+        return self._packed if isinstance(self._packed, str) else None
+
     def evaluate(self, X) -> np.ndarray:
         """Outputs for a batch of inputs: X (N, n_in) -> (N, n_out), columns in ``output_names``."""
-        from fuzzynav.fuzzy.engine import compiled
+        from fuzzynav.fuzzy.engine import compiled, fused
+        from fuzzynav.fuzzy.engine.pack import NUMPY
 
         X = np.asarray(X, dtype=float)
         columns, values = self._values(X)
         n = X.shape[0]
         state = _State(self, values, n)
+        if self.fallback is None:
+            literals, packed = self._packed
+            table = np.empty((len(literals), n))
+            for row in np.flatnonzero(packed.literal[:, 0] == NUMPY):
+                table[row] = state.degree(literals[row])
+            return fused.evaluate(packed, table, X)
         for block, program in zip(self.blocks, self._programs):
             if block.enabled and block.rules:
                 state.run(block, program)

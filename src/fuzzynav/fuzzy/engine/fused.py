@@ -1,0 +1,140 @@
+"""One compiled kernel from an engine's input batch to its outputs.
+
+:func:`run` takes the arrays of :mod:`.pack` (built once per engine) and the degrees of the few
+propositions fuzzified in NumPy, and does in one call what :class:`~fuzzynav.fuzzy.engine.Engine`
+otherwise does in Python around several kernels: the input values (clipped where
+``lock-range``); every proposition's degree (:func:`~.term_columns.term_column`, then its hedges);
+each block's rules (:func:`~.compiled.rule_degrees`: postfix antecedents with the block's norms,
+times the weights; a block reading an output term runs rule by rule, that degree accumulated
+from the conclusions before, as fuzzylite does); each conclusion's degree (hedges carried from
+one conclusion to the next); then each output — Mamdani by :func:`~.compiled.integral`, weighted
+by :func:`~.compiled.weighted_affine` — and its ``lock-previous`` / ``default`` / ``lock-range``
+(:func:`~.compiled.finish`). The same operations in the same order as that path, so the same
+bits (the NumPy path stays for what :func:`~.pack.pack` refuses; the tests compare the two on the
+test engines and on pyfuzzylite's examples).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.fuzzy.engine import compiled
+from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, TERM, WEIGHTED, ZERO, Packed
+from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
+from fuzzynav.jit import jit
+
+_EVERY_ROW = np.ones((0, 0), dtype=np.bool_)  # the "triggered" mask weighted_affine does not read (General)
+
+
+def evaluate(packed: Packed, table: np.ndarray, X: np.ndarray) -> np.ndarray:
+    """Outputs (N, K) for the inputs X (N, n_inputs); ``table`` (L, N) holds the degrees of the
+    propositions :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
+    out = np.empty((X.shape[0], packed.output.shape[0]))
+    run(np.ascontiguousarray(X, dtype=float), table, *packed, _EVERY_ROW, out)
+    return out
+
+
+@jit
+def _hedges(d, hedges, first, end):
+    for h in range(first, end):
+        hedge_column(hedges[h], d)
+
+
+@jit
+def _accumulate(value, conclusions, conclusion_row, before, aggregation, d):
+    """``d`` = the S-norm ``aggregation`` of the degrees (rows ``conclusion_row`` of ``value``) of
+    ``conclusions`` (one output term, in order) numbered below ``before``; 0 where there is none."""
+    opened = False
+    for c in conclusions:
+        if c >= before:
+            break
+        if opened:
+            compiled.snorm_into(aggregation, d, value[conclusion_row[c]])
+        else:
+            d[:] = value[conclusion_row[c]]
+            opened = True
+    if not opened:
+        d[:] = 0.0
+
+
+@jit
+def _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table):
+    """``inputs`` (n_inputs, N): X's columns clipped where locked; ``table`` rows of the
+    propositions evaluated here."""
+    for i in range(lo.shape[0]):
+        for n in range(X.shape[0]):
+            v = X[n, i]
+            inputs[i, n] = min(max(v, lo[i]), hi[i]) if lock[i] and v == v else v
+    for lit in range(literal.shape[0]):
+        how, i, t, first, end = literal[lit, 0], literal[lit, 1], literal[lit, 2], literal[lit, 3], literal[lit, 4]
+        row = table[lit]
+        if how == TERM:
+            term_column(term_code[t], params, term_start[t], term_start[t + 1], term_height[t], inputs[i], row)
+        elif how == ZERO:
+            row[:] = 0.0
+            continue
+        elif how == ANY:
+            row[:] = np.nan
+        else:
+            continue  # NumPy's (hedges applied) or chained (filled rule by rule)
+        _hedges(row, hedges, first, end)
+
+
+@jit
+def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_row):
+    """The degrees of rule r's hedged conclusions (the others read the rule's row of ``value``):
+    the degree before, hedged, carried from one conclusion to the next."""
+    row = r
+    for c in range(rule_conclusions[r], rule_conclusions[r + 1]):
+        if conclusion_row[c] != row:
+            value[conclusion_row[c]] = value[row]
+            row = conclusion_row[c]
+            _hedges(value[row], hedges, conclusion_hedges[c], conclusion_hedges[c + 1])
+
+
+@jit
+def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+        chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+        conclusion_hedges, conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start,
+        unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
+        coefficients, constants, every_row, out):
+    """Outputs ``out`` (N, K) of the packed engine for the inputs X (module docstring)."""
+    n = X.shape[0]
+    inputs = np.empty((lo.shape[0], n))
+    _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table)
+    n_rules = rule_weight.shape[0]
+    value = np.empty((max(n_rules, conclusion_row.max() + 1 if conclusion_row.shape[0] else 0), n))
+    for b in range(block.shape[0]):
+        first, end, conjunction, disjunction = block[b, 0], block[b, 1], block[b, 2], block[b, 3]
+        step = 1 if block_chained[b] else end - first  # rule by rule when a premise reads an output
+        for r0 in range(first, end, step):
+            r1 = r0 + step
+            for j in range(chained.shape[0] if block_chained[b] else 0):
+                lit = chained[j, 0]
+                _accumulate(value, chained_conclusions[chained_start[j]:chained_start[j + 1]], conclusion_row,
+                            rule_conclusions[r0], chained[j, 1], table[lit])
+                _hedges(table[lit], hedges, literal[lit, 3], literal[lit, 4])
+            compiled.rule_degrees(table, program, rule_start[r0:r1 + 1], rule_weight[r0:r1], conjunction,
+                                  disjunction, value[r0:r1])
+            for r in range(r0, r1):
+                _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_row)
+    y = np.empty(n)
+    for k in range(output.shape[0]):
+        kind, acts, units = output[k, 0], act_conclusion[act_start[k]:act_start[k + 1]], act_unit[act_start[k]:act_start[k + 1]]
+        first, end = unit_start[k], unit_start[k + 1]
+        if kind == INTEGRAL:
+            n_terms, size = support_start[k + 1] - support_start[k], points_start[k + 1] - points_start[k]
+            sampled = shapes[shape_start[k]:shape_start[k + 1]].reshape((n_terms, size))
+            compiled.integral(value, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
+                              support[support_start[k]:support_start[k + 1]], points[points_start[k]:points_start[k + 1]],
+                              output[k, 1], output[k, 2], y)
+        elif kind == WEIGHTED:
+            compiled.weighted_affine(value, acts, units, act_opens[act_start[k]:act_start[k + 1]], every_row, False,
+                                     output[k, 1], coefficients[first:end], constants[first:end], inputs,
+                                     output[k, 3] != 0, y)
+        else:
+            y[:] = np.nan
+        if kind != NAN_OUTPUT:
+            compiled.finish(y, output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0, output_limits[k, 1],
+                            output_limits[k, 2])
+        out[:, k] = y

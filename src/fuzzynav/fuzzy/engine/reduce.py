@@ -1,0 +1,112 @@
+"""The reductions of a sampled Mamdani output (fuzzylite 8's integral defuzzifiers), compiled.
+
+:func:`reduce_sampled` turns the aggregated set, sampled at the defuzzifier's points, into the
+crisp value: centroid Σ μ x / Σ μ, bisector (the samples where the running area is closest to half
+of it, averaged), mean / smallest / largest of the samples of maximum membership; NaN for an empty
+set. Used row by row by :func:`fuzzynav.fuzzy.engine.compiled.integral`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.jit import jit
+
+REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
+
+
+@jit
+def _centroid_sums(mu, x, lo, hi):
+    """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere (and padded with zeros,
+    as ``x``, to a multiple of 8 samples): eight running sums,
+    sample k in sum k mod 8 (not one: eight independent additions per step instead of a chain of
+    dependent ones), added pairwise. Anchored on the sample index, so any [lo, hi) holding the
+    non-zero samples gives the same bits."""
+    first, end = lo - lo % 8, hi + (-hi) % 8  # mu and x are padded with zeros to a multiple of 8
+    t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
+    m0 = m1 = m2 = m3 = m4 = m5 = m6 = m7 = 0.0
+    k = first
+    while k + 8 <= end:
+        t0 += mu[k]
+        t1 += mu[k + 1]
+        t2 += mu[k + 2]
+        t3 += mu[k + 3]
+        t4 += mu[k + 4]
+        t5 += mu[k + 5]
+        t6 += mu[k + 6]
+        t7 += mu[k + 7]
+        m0 += mu[k] * x[k]
+        m1 += mu[k + 1] * x[k + 1]
+        m2 += mu[k + 2] * x[k + 2]
+        m3 += mu[k + 3] * x[k + 3]
+        m4 += mu[k + 4] * x[k + 4]
+        m5 += mu[k + 5] * x[k + 5]
+        m6 += mu[k + 6] * x[k + 6]
+        m7 += mu[k + 7] * x[k + 7]
+        k += 8
+    total = ((t0 + t1) + (t2 + t3)) + ((t4 + t5) + (t6 + t7))
+    return total, ((m0 + m1) + (m2 + m3)) + ((m4 + m5) + (m6 + m7))
+
+
+@jit
+def _top(mu, lo, hi):
+    """The largest of ``mu[lo:hi]`` (no NaN there; 0 if empty): eight running maxima."""
+    first, end = lo - lo % 8, hi + (-hi) % 8
+    t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
+    for k in range(first, end, 8):
+        t0, t1, t2, t3 = max(t0, mu[k]), max(t1, mu[k + 1]), max(t2, mu[k + 2]), max(t3, mu[k + 3])
+        t4, t5, t6, t7 = max(t4, mu[k + 4]), max(t5, mu[k + 5]), max(t6, mu[k + 6]), max(t7, mu[k + 7])
+    return max(max(max(t0, t1), max(t2, t3)), max(max(t4, t5), max(t6, t7)))
+
+
+@jit
+def padded(size):
+    """The length of the sample arrays :func:`reduce_sampled` reads: ``size`` rounded up to 8."""
+    return size + (-size) % 8
+
+
+@jit
+def reduce_sampled(kind, mu, x, area, lo, hi, size):
+    """``REDUCTIONS[kind]`` of the sampled set ``mu`` at ``x`` (NaN when it is empty), which is 0
+    outside samples [lo, hi); ``area`` (as long as ``mu``) is scratch; ``mu`` and ``x`` are padded
+    with zeros beyond them to a multiple of 8 (see :func:`padded`), ``size`` samples before."""
+    if kind == 0:
+        total, moment = _centroid_sums(mu, x, lo, hi)
+        return moment / total
+    if kind == 1:  # the samples where the running area is closest to half of it, averaged
+        total = 0.0
+        for k in range(size):
+            if mu[k] == mu[k]:
+                total += mu[k]
+            area[k] = total
+        best = np.inf
+        for k in range(size):
+            gap = abs(area[k] / total - 0.5)
+            if gap != gap:
+                return np.nan
+            best = min(best, gap)
+        count, where = 0, 0.0
+        for k in range(size):
+            if abs(area[k] / total - 0.5) == best:
+                count += 1
+                where += x[k]
+        return where / count if count > 0 else np.nan
+    nan = False
+    for k in range(lo, hi):
+        nan |= mu[k] != mu[k]
+    if nan:
+        return np.nan
+    top = _top(mu, lo, hi)
+    if not top > 0.0:
+        return np.nan
+    if kind == 2:  # the samples of maximum membership (area: 1 there, else 0), averaged
+        first, end = lo - lo % 8, hi + (-hi) % 8
+        for k in range(first, end):
+            area[k] = 1.0 if mu[k] == top else 0.0
+        count, where = _centroid_sums(area, x, lo, hi)
+        return where / count
+    step = 1 if kind == 3 else -1
+    k = lo if kind == 3 else hi - 1
+    while mu[k] != top:
+        k += step
+    return x[k]

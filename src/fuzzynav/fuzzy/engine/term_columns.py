@@ -1,0 +1,193 @@
+"""Terms and hedges over a column of values, compiled: the fuzzification of :mod:`fuzzynav.fuzzy.engine.fused`.
+
+:func:`term_column` evaluates a term given by its code (:func:`pack_term`) on every value of a
+column, one loop per term type (so each loop is a plain sequence of arithmetic that the compiler
+vectorises), with the formulas, branches and NaN behaviour of the NumPy ``__call__`` of
+:mod:`fuzzynav.fuzzy.membership` and :mod:`fuzzynav.fuzzy.terms` (fuzzylite 8's definitions):
+each ``np.where`` is the same test here, so a NaN or an infinite input takes the same branch.
+:func:`hedge_column` is :data:`fuzzynav.fuzzy.operators.HEDGES`.
+
+Terms built on ``exp`` or ``pow`` (Gaussian, Bell, Sigmoid, Spike, the sigmoid and Gaussian
+products) have no code here: NumPy evaluates those over an array with SIMD instructions, several
+times faster than the C library's functions a compiled loop calls value by value (a Gaussian
+term: ~1 ns a value against ~10 ns), so the engine fuzzifies them in NumPy before the kernel, as
+``Function`` and ``Linear`` premises.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.fuzzy import terms as extra
+from fuzzynav.fuzzy.membership import Singleton, Trapezoidal
+from fuzzynav.jit import jit
+
+HEDGE_CODES = {"not": 0, "very": 1, "somewhat": 2, "extremely": 3, "seldom": 4, "any": 5}
+(TRAPEZOID, SINGLETON, CONSTANT, SSHAPE, ZSHAPE, PISHAPE, COSINE, CONCAVE, ARC, BINARY, SEMIELLIPSE, RECTANGLE,
+ DISCRETE) = range(13)
+_CODES = {Trapezoidal: TRAPEZOID, Singleton: SINGLETON, extra.Constant: CONSTANT, extra.SShape: SSHAPE,
+          extra.ZShape: ZSHAPE, extra.PiShape: PISHAPE, extra.Cosine: COSINE, extra.Concave: CONCAVE,
+          extra.Arc: ARC, extra.Binary: BINARY, extra.SemiEllipse: SEMIELLIPSE, extra.Rectangle: RECTANGLE,
+          extra.Discrete: DISCRETE}
+
+
+def pack_term(mf) -> tuple[int, tuple, float] | None:
+    """(code, parameters, height) of a term, or None when NumPy evaluates it. Triangles and ramps
+    are trapezoids with their open shoulders made explicit; a discrete term's parameters are its
+    abscissae then its ordinates."""
+    height = 1.0
+    if isinstance(mf, extra.Scaled):
+        mf, height = mf.term, mf.height
+    code = next((c for cls, c in _CODES.items() if isinstance(mf, cls)), None)
+    if code is None:
+        return None
+    params = mf._edges() if code == TRAPEZOID else (*mf.x.tolist(), *mf.y.tolist()) if code == DISCRETE else mf.params()
+    return code, tuple(float(p) for p in params), float(height)
+
+
+@jit
+def _min(a, b):  # np.minimum: NaN wins
+    return a if (a <= b or a != a) else b
+
+
+@jit
+def _trapezoid(x, a, b, c, d):
+    mu = 1.0
+    if b > -math.inf:
+        mu = _min(mu, (x - a) / (b - a) if b > a else (0.0 if x < a else 1.0))
+    if c < math.inf:
+        mu = _min(mu, (d - x) / (d - c) if d > c else (0.0 if x > d else 1.0))
+    return 0.0 if mu < 0.0 else (1.0 if mu > 1.0 else mu)  # np.clip: NaN stays
+
+
+@jit
+def _sshape(x, s, e):
+    if x <= s:
+        return 0.0
+    if x <= 0.5 * (s + e):
+        t = (x - s) / (e - s)
+        return 2.0 * (t * t)
+    if x < e:
+        t = (x - e) / (e - s)
+        return 1.0 - 2.0 * (t * t)
+    return 1.0
+
+
+@jit
+def _zshape(x, s, e):
+    if x <= s:
+        return 1.0
+    if x < 0.5 * (s + e):
+        t = (x - s) / (e - s)
+        return 1.0 - 2.0 * (t * t)
+    if x < e:
+        t = (x - e) / (e - s)
+        return 2.0 * (t * t)
+    return 0.0
+
+
+@jit
+def _arc(x, s, e):
+    r = e - s
+    if (s > e and e <= x and x <= s) or (s < e and s <= x and x <= e):
+        d = x - e
+        return np.sqrt(r * r - d * d) / abs(r)
+    return 1.0 if (s > e and x < e) or (s < e and x > e) else 0.0
+
+
+@jit
+def _concave(x, i, e):
+    if i <= e and x < e:
+        return (e - i) / (2.0 * e - i - x)
+    if i >= e and x > e:
+        return (i - e) / (i - 2.0 * e + x)
+    return 1.0
+
+
+@jit
+def _semiellipse(x, s, e):
+    r, c = (e - s) / 2.0, (s + e) / 2.0
+    if x >= s and x <= e:
+        d = x - c
+        return np.sqrt(r * r - d * d) / r
+    return 0.0
+
+
+@jit
+def term_column(code, params, first, end, height, x, out):
+    """``out[k]`` = height × the term ``code`` with parameters ``params[first:end]`` at ``x[k]``."""
+    p = params[first:end]
+    n = x.shape[0]
+    if code == TRAPEZOID:
+        for k in range(n):
+            out[k] = _trapezoid(x[k], p[0], p[1], p[2], p[3])
+    elif code == SINGLETON:
+        for k in range(n):
+            out[k] = 1.0 if x[k] == p[0] else 0.0
+    elif code == CONSTANT:
+        out[:] = p[0]
+    elif code == SSHAPE:
+        for k in range(n):
+            out[k] = _sshape(x[k], p[0], p[1])
+    elif code == ZSHAPE:
+        for k in range(n):
+            out[k] = _zshape(x[k], p[0], p[1])
+    elif code == PISHAPE:
+        for k in range(n):
+            out[k] = _sshape(x[k], p[0], p[1]) * _zshape(x[k], p[2], p[3])
+    elif code == COSINE:
+        c, w = p[0], p[1]
+        for k in range(n):
+            on = math.isfinite(x[k]) and x[k] >= c - 0.5 * w and x[k] <= c + 0.5 * w
+            out[k] = 0.5 * (1.0 + np.cos(2.0 / w * np.pi * (x[k] - c))) if on else 0.0
+    elif code == CONCAVE:
+        for k in range(n):
+            out[k] = _concave(x[k], p[0], p[1])
+    elif code == ARC:
+        for k in range(n):
+            out[k] = _arc(x[k], p[0], p[1])
+    elif code == BINARY:
+        s, d = p[0], p[1]
+        for k in range(n):
+            out[k] = 1.0 if (d > s and x[k] >= s) or (d < s and x[k] <= s) else 0.0
+    elif code == SEMIELLIPSE:
+        s, e = min(p[0], p[1]), max(p[0], p[1])
+        for k in range(n):
+            out[k] = _semiellipse(x[k], s, e)
+    elif code == RECTANGLE:
+        s, e = min(p[0], p[1]), max(p[0], p[1])
+        for k in range(n):
+            out[k] = 1.0 if s <= x[k] and x[k] <= e else 0.0
+    else:  # DISCRETE
+        half = p.shape[0] // 2
+        out[:] = np.interp(x, p[:half], p[half:])
+    if height != 1.0:
+        for k in range(n):
+            out[k] = height * out[k]
+
+
+@jit
+def hedge_column(code, d):
+    """In place: the hedge ``code`` (:data:`HEDGE_CODES`) of every degree of ``d``."""
+    n = d.shape[0]
+    if code == 0:
+        for k in range(n):
+            d[k] = 1.0 - d[k]
+    elif code == 1:
+        for k in range(n):
+            d[k] = d[k] * d[k]
+    elif code == 2:
+        for k in range(n):
+            d[k] = np.sqrt(d[k])
+    elif code == 3:
+        for k in range(n):
+            v = d[k]
+            d[k] = 2.0 * v * v if v <= 0.5 else 1.0 - 2.0 * ((1.0 - v) * (1.0 - v))
+    elif code == 4:
+        for k in range(n):
+            v = d[k]
+            d[k] = np.sqrt(0.5 * v) if v <= 0.5 else 1.0 - np.sqrt(0.5 * (1.0 - v))
+    else:
+        d[:] = 1.0

@@ -1,0 +1,77 @@
+"""The fused kernel (one compiled call from the inputs to the outputs) gives the very bits of the
+engine's NumPy path, on every fixture engine it takes, and says why it does not take the others."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.fuzzy.engine.pack import NUMPY, TERM
+from fuzzynav.fuzzy.io.fll import from_fll_engine
+from tests.fuzzy.fll_fixtures import ENGINES, INPUT_TERMS
+
+NUMPY_PATH = "forced by the test"  # an Engine whose packed form is a reason keeps its NumPy path
+FALLBACKS = {"activation-First", "activation-Last", "activation-Highest", "activation-Lowest",
+             "activation-Proportional", "activation-Threshold", "takagi-sugeno", "tsukamoto"}
+
+
+def _inputs(engine, n=3000):
+    rng = np.random.default_rng(7)
+    X = np.column_stack([rng.uniform(v.minimum - 3, v.maximum + 3, n) for v in engine.inputs])
+    X[0], X[1], X[2] = np.nan, np.inf, -np.inf  # NaN and infinities propagate as in NumPy
+    X[3, 0] = np.nan
+    return X
+
+
+@pytest.mark.parametrize("name", sorted(set(ENGINES) - FALLBACKS))
+def test_fused_kernel_gives_the_bits_of_the_numpy_path(name):
+    engine = from_fll_engine(ENGINES[name])
+    assert engine.fallback is None
+    X = _inputs(engine)
+    fused = engine.evaluate(X)
+    packed, engine._packed = engine._packed, NUMPY_PATH
+    np.testing.assert_array_equal(fused, engine.evaluate(X))
+    engine._packed = packed
+    np.testing.assert_array_equal(fused[::101], np.vstack([engine.evaluate(X[k:k + 1]) for k in range(0, len(X), 101)]))
+
+
+def _every_term_engine() -> str:
+    """One input with every term type, one rule per term (hedged, every other one) on two outputs."""
+    labels = [line.split()[1] for line in INPUT_TERMS.splitlines()]
+    hedges = ["", "very ", "somewhat ", "extremely ", "seldom ", "not "]
+    rules = "".join(f"  rule: if x is {hedges[k % 6]}{label} then y is {'lo' if k % 2 else 'hi'} and w is c{k % 2}\n"
+                    for k, label in enumerate(labels))
+    return (f"Engine: every\nInputVariable: x\n  enabled: true\n  range: 0.0 10.0\n  lock-range: false\n{INPUT_TERMS}"
+            "OutputVariable: y\n  enabled: true\n  range: 0.0 1.0\n  lock-range: false\n  aggregation: Maximum\n"
+            "  defuzzifier: Centroid 200\n  default: nan\n  lock-previous: false\n"
+            "  term: lo Triangle 0.0 0.25 0.5\n  term: hi Gaussian 0.7 0.1\n"
+            "OutputVariable: w\n  enabled: true\n  range: -1.0 1.0\n  lock-range: true\n  aggregation: none\n"
+            "  defuzzifier: WeightedAverage\n  default: 0.0\n  lock-previous: true\n"
+            "  term: c0 Constant -0.5\n  term: c1 Linear 2.0 0.1\n"
+            "RuleBlock: rules\n  enabled: true\n  conjunction: Minimum\n  disjunction: Maximum\n"
+            f"  implication: AlgebraicProduct\n  activation: General\n{rules}")
+
+
+def test_every_term_type_and_hedge_in_the_kernel_or_numpy():
+    """Terms without exp or pow are fuzzified in the kernel, the others (and Function) by NumPy;
+    either way the bits of the NumPy path."""
+    engine = from_fll_engine(_every_term_engine())
+    assert engine.fallback is None
+    literals, packed = engine._packed
+    how = {p.term: int(packed.literal[k, 0]) for k, p in enumerate(literals)}
+    assert {t for t, h in how.items() if h == NUMPY} == {"bell", "gauss", "gprod", "sig", "sdiff", "sprod", "spike",
+                                                          "fun"}
+    assert {t for t, h in how.items() if h == TERM} == {"tri", "trap", "s", "z", "pi", "cos", "conc", "conc2", "arc",
+                                                         "bin", "ell", "rect", "ramp", "disc", "half"}
+    X = _inputs(engine, 5000)
+    fused = engine.evaluate(X)
+    engine._packed = NUMPY_PATH
+    np.testing.assert_array_equal(fused, engine.evaluate(X))
+    assert np.isfinite(fused).mean() > 0.9
+
+
+@pytest.mark.parametrize("name, reason", [("activation-Highest", "an activation method other than General"),
+                                          ("tsukamoto", "a weighted conclusion that is not constant or linear"),
+                                          ("takagi-sugeno", "output z: a weighted conclusion")])
+def test_what_the_kernel_does_not_take_keeps_the_numpy_path_and_says_why(name, reason):
+    engine = from_fll_engine(ENGINES[name])
+    assert reason in engine.fallback
+    assert np.isfinite(engine.evaluate(_inputs(engine)[4:])).any()
