@@ -31,7 +31,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import Controller
 from fuzzynav.errors import CommandError
-from fuzzynav.kernels import step as step_kernel
+from fuzzynav.kernels import layers as layer_arrays, step as step_kernel
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
@@ -45,8 +45,8 @@ from fuzzynav.world.world import add_noise
 
 RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED, step_kernel.COLLISION,
                                         step_kernel.TIMEOUT)
-# the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
-_NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
+# the arguments of a step without a compiled navigator: params, tables, state, memory, layers (unused)
+_NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)), layer_arrays.none())
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
@@ -230,6 +230,8 @@ class BatchSimulator:
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
+        if self._navigator[5][layer_arrays.GROW][0]:  # a layer's arrays need room: the navigator makes it
+            self._navigator = self._compiled(self.n, self.sensors.angles)
         if running is not None:
             self._add_noise(running)
         if self.record:
