@@ -103,9 +103,9 @@ class RobustNavigator(BatchedController):
         if self._layers is None or self._state is not state:
             slots = FIRST_SLOTS * (len(np.atleast_1d(sensor_angles)) + 1)
             places = int(self.params[layers.HORIZON] / (self.params[layers.SAMPLE_EVERY] - 1e-9)) + 3
-            self._state, self._layers = state, (self.params, self.tables, layers.fresh_state(n), np.zeros((n, slots, 2)),
-                                                np.zeros((n, _hash_size(slots)), dtype=np.int64),
-                                                np.zeros((n, places, 3)), np.zeros(1, dtype=np.int64))
+            self._state, self._layers = state, (
+                self.params, self.tables, layers.fresh_state(n), np.zeros((n, slots, 2)),
+                np.zeros((n, _hash_size(slots)), dtype=np.int64), np.zeros((n, places, 3)), np.zeros(1, dtype=np.int64))
         elif self._layers[layers.GROW][0]:
             self._layers = _grown(self._layers)
         return kind, params, tables, state, memory, self._layers
@@ -142,9 +142,11 @@ class RobustNavigator(BatchedController):
         tx, ty = (float(value) for value in obs.target)
         d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
         b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
+        v = 0.0 if obs.speed is None else float(obs.speed)
         steering, speed, code = robust.act_one(
-            kind, params, tables, state[0], memory[0], arrays, 0, x, y, theta, 0.0 if obs.speed is None else float(obs.speed), tx, ty, np.ascontiguousarray(obs.ranges, dtype=float),
-            angles, float(obs.max_range), float(obs.dt), d_o, b_o, float(obs.t))
+            kind, params, tables, state[0], memory[0], arrays, 0, x, y, theta, v, tx, ty,
+            np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
+            float(obs.t))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
 

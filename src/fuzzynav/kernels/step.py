@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import beams, robust, scene
+from fuzzynav.kernels import beams, layers, robust, scene
 from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
@@ -37,6 +37,13 @@ STATE_FIELDS = ("x", "y", "theta", "steering", "speed", "target_x", "target_y", 
 OUTCOME, STEPS, WAYPOINT = range(3)
 RUNNING, REACHED, COLLISION, TIMEOUT = range(4)
 NO_NAVIGATOR = -1  # commands given in state[:, STEERING], state[:, SPEED]
+
+
+def idle_arguments() -> tuple:
+    """The navigator arguments of :func:`step` without a compiled navigator (kind, then unused
+    params, tables, state, memory, layers)."""
+    return (NO_NAVIGATOR, np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)),
+            layers.none())
 
 
 @jit

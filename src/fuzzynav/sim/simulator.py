@@ -45,8 +45,6 @@ from fuzzynav.world.world import add_noise
 
 RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED, step_kernel.COLLISION,
                                         step_kernel.TIMEOUT)
-# the arguments of a step without a compiled navigator: params, tables, state, memory, layers (unused)
-_NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)), layer_arrays.none())
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
@@ -117,7 +115,7 @@ class BatchSimulator:
         for controller, child in zip(self.controllers, seeds[1:]):
             controller.reset(np.random.default_rng(child))
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
-                           else (step_kernel.NO_NAVIGATOR, *_NO_NAVIGATOR))
+                           else step_kernel.idle_arguments())
         self.k = 0
         self._state = np.zeros((self.n, len(step_kernel.STATE_FIELDS)))
         self._state[:, :3] = self.starts
@@ -230,7 +228,7 @@ class BatchSimulator:
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
-        if self._navigator[5][layer_arrays.GROW][0]:  # a layer's arrays need room: the navigator makes it
+        if self._navigator[-1][layer_arrays.GROW][0]:  # a layer's arrays need room: the navigator makes it
             self._navigator = self._compiled(self.n, self.sensors.angles)
         if running is not None:
             self._add_noise(running)
