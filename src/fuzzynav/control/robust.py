@@ -32,6 +32,7 @@ default robot nothing changes, so the ``-thesis`` variants (:func:`fuzzy_5b_thes
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -56,14 +57,12 @@ class RobustNavigator(BatchedController):
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0):
-        from fuzzynav.kernels import ts0
-
         self.navigator, self.name = navigator, name
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF")
         values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
                   "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
         self.params = np.array([values.get(key, 0.0) for key in layers.PARAM_NAMES])
-        self.tables = ts0.pack([recovery_system()], [f"{name} recovery"])
+        self.tables = _recovery_tables()
         self.for_robot(DEFAULT_PARAMS, navigator=False)
         self.reset()
 
@@ -148,6 +147,14 @@ class RobustNavigator(BatchedController):
             np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
             float(obs.t))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
+
+
+@functools.cache
+def _recovery_tables() -> np.ndarray:
+    """The recovery's rule base packed for the kernels (built once; the kernels only read it)."""
+    from fuzzynav.kernels import ts0
+
+    return ts0.pack([recovery_system()], ["recovery"])
 
 
 def _hash_size(slots: int) -> int:
