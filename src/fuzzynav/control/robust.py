@@ -1,9 +1,9 @@
 """The default chapter IV navigators, ``fuzzy-5b`` and ``fuzzy-2b``: the thesis' navigators with
 a supervisor layer that never lets them freeze, sized to the scenario's robot.
 
-:class:`RobustNavigator` wraps a thesis navigator (:mod:`fuzzynav.control.five_behaviours`,
-:mod:`fuzzynav.control.avoidance`) through the :class:`Controller` interface and adds two
-behaviours to its supervisor:
+:class:`RobustNavigator` wraps a compiled navigator — a thesis one
+(:mod:`fuzzynav.control.five_behaviours`, :mod:`fuzzynav.control.avoidance`) or any other
+:class:`~fuzzynav.control.batched.CompiledNavigator` — and adds two behaviours to its supervisor:
 
 - **recovery** (:mod:`fuzzynav.control.recovery`): when the navigator's safety stop has held the
   robot for ``stop_wait`` seconds away from the goal, the robot backs out on an arc and turns the
@@ -25,9 +25,9 @@ their compiled parameter vector: the simulator calls :meth:`CompiledNavigator.fo
 (the anti-orbit guard of goal seeking, the full-lock turn radius), the body radius (turning room
 and safety stop) and the top speed; :meth:`RobustNavigator.for_robot` gives the layers the
 robot's radius and reverse speed (a one-robot :meth:`~RobustNavigator.act` reads them from
-``extras["robot"]`` when there). With the
-default robot nothing changes, so the ``-thesis`` variants (:func:`fuzzy_5b_thesis`,
-:func:`fuzzy_2b_thesis`, the compiled navigators without layers) drive exactly as published.
+``extras["robot"]`` when there). With the default robot nothing changes, so the ``-thesis``
+variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`, the compiled navigators without
+layers) drive exactly as published.
 """
 
 from __future__ import annotations
