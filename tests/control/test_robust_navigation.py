@@ -74,7 +74,8 @@ def test_loop_detector_fires_on_a_circle_not_on_a_straight_run():
     from fuzzynav.kernels import escape, layers
 
     params = make_controller("fuzzy-5b").params
-    state, places = layers.fresh_state(1)[0], np.zeros((183, 3))
+    state = layers.fresh_state(1, params)[0]
+    places = layers.places_of(params, state)
     fired = [escape.circling(state, places, params, 0.1 * k, 5 + math.cos(0.05 * k), 5 + math.sin(0.05 * k), 10.0)
              for k in range(600)]
     assert any(fired) and not any(fired[:200])  # after the patience, back where it was

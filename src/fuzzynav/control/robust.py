@@ -61,15 +61,15 @@ class RobustNavigator(BatchedController):
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF")
         values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
                   "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
-        self.params = np.array([values.get(key, 0.0) for key in layers.PARAM_NAMES])
-        self.tables = _recovery_tables()
+        values["places_slots"] = int(LOOP["horizon"] / (LOOP["sample_every"] - 1e-9)) + 3  # never all in use
+        self.params = np.concatenate([[values.get(key, 0.0) for key in layers.PARAM_NAMES], _recovery_tables()])
         self.for_robot(DEFAULT_PARAMS, navigator=False)
         self.reset()
 
     def reset(self, rng=None) -> None:
         """Forget the layers' state and the navigator's (a new episode)."""
         self.navigator.reset(rng)
-        self._layers = None
+        self._rows = None
 
     @property
     def systems(self) -> dict:
@@ -96,18 +96,16 @@ class RobustNavigator(BatchedController):
 
     def compiled(self, n: int, sensor_angles):
         """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
-        the navigator's, with the layers' arrays (:mod:`fuzzynav.kernels.layers`) — new when the
-        navigator's state is new, larger when a step has asked for room."""
-        kind, params, tables, state, memory, _ = self.navigator.compiled(n, sensor_angles)
-        if self._layers is None or self._state is not state:
+        the navigator's, with the layers' parameters and state (:mod:`fuzzynav.kernels.layers`) —
+        a new state when the navigator's is new, a wider one when a step has asked for room."""
+        kind, params, tables, state, memory, *_ = self.navigator.compiled(n, sensor_angles)
+        if self._rows is None or self._inner is not state:
             slots = FIRST_SLOTS * (len(np.atleast_1d(sensor_angles)) + 1)
-            places = int(self.params[layers.HORIZON] / (self.params[layers.SAMPLE_EVERY] - 1e-9)) + 3
-            self._state, self._layers = state, (
-                self.params, self.tables, layers.fresh_state(n), np.zeros((n, slots, 2)),
-                np.zeros((n, _hash_size(slots)), dtype=np.int64), np.zeros((n, places, 3)), np.zeros(1, dtype=np.int64))
-        elif self._layers[layers.GROW][0]:
-            self._layers = _grown(self._layers)
-        return kind, params, tables, state, memory, self._layers
+            self.params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = slots, _hash_size(slots), 0.0
+            self._inner, self._rows = state, layers.fresh_state(n, self.params)
+        elif self.params[layers.GROW]:
+            self._rows = _grown(self.params, self._rows)
+        return kind, params, tables, state, memory, self.params, self._rows
 
     def act_batch(self, obs):
         """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""
@@ -136,14 +134,14 @@ class RobustNavigator(BatchedController):
         if robot is not None:
             self.for_robot(robot, navigator=False)
         angles = np.ascontiguousarray(obs.sensor_angles, dtype=float)
-        kind, params, tables, state, memory, arrays = self.compiled(1, angles)
+        kind, params, tables, state, memory, layer_params, rows = self.compiled(1, angles)
         x, y, theta = (float(value) for value in obs.pose)
         tx, ty = (float(value) for value in obs.target)
         d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
         b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
         v = 0.0 if obs.speed is None else float(obs.speed)
         steering, speed, code = robust.act_one(
-            kind, params, tables, state[0], memory[0], arrays, 0, x, y, theta, v, tx, ty,
+            kind, params, tables, state[0], memory[0], layer_params, rows[0], x, y, theta, v, tx, ty,
             np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
             float(obs.t))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
@@ -162,19 +160,17 @@ def _hash_size(slots: int) -> int:
     return 1 << (2 * slots - 1).bit_length()
 
 
-def _grown(arrays: tuple) -> tuple:
-    """The layers' arrays with twice the obstacle point slots per robot."""
-    from fuzzynav.kernels import sightings
+def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """The layers' state ``rows`` with twice the obstacle point slots per robot (``params`` updated)."""
+    from fuzzynav.kernels import robust
 
-    params, tables, state, points, _, places, grow = arrays
-    n, slots = points.shape[0], 2 * points.shape[1]
-    more = np.zeros((n, slots, 2))
-    more[:, :points.shape[1]] = points
-    cells = np.zeros((n, _hash_size(slots)), dtype=np.int64)
-    for i in range(n):
-        sightings.rehash(more[i], int(state[i, layers.COUNT]), cells[i])
-    grow[0] = 0
-    return params, tables, state, more, cells, places, grow
+    slots = int(params[layers.POINTS_SLOTS])
+    kept = layers.PLACES_AT + 3 * int(params[layers.PLACES_SLOTS]) + 2 * slots  # the state, places and points
+    params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = 2 * slots, _hash_size(2 * slots), 0.0
+    wider = layers.fresh_state(len(rows), params)
+    wider[:, :kept] = rows[:, :kept]
+    robust.rehash_all(params, wider)
+    return wider
 
 
 def _five(name: str, **options):

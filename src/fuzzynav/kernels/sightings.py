@@ -5,8 +5,9 @@ A robot remembers, in the world frame, the hits of its ring (readings below the 
 nearest obstacle point (D_ro, θ_o, which the observation gives all round, so obstacles behind it
 are known without rear sensors), one point per ``CELL`` grid cell — the first seen there.
 Arrays of one robot: ``points`` (P, 2) in the order seen (the count is kept by the caller) and
-``cells`` (H,), an open-addressing hash set of their grid cells (point index + 1, 0: empty; H a
-power of two, at least twice P), so a point is added in constant time whatever the count.
+``cells`` (H,) floats, an open-addressing hash set of their grid cells (point index + 1, 0:
+empty; H a power of two, at least twice P), so a point is added in constant time whatever the
+count.
 """
 
 from __future__ import annotations
@@ -31,7 +32,8 @@ def add(points, cells, count, px, py):
     mask = cells.shape[0] - 1
     s = ((cx * 73856093) ^ (cy * 19349663)) & mask
     while cells[s] != 0:
-        qx, qy = cell_of(points[cells[s] - 1, 0], points[cells[s] - 1, 1])
+        i = int(cells[s]) - 1
+        qx, qy = cell_of(points[i, 0], points[i, 1])
         if qx == cx and qy == cy:
             return count
         s = (s + 1) & mask

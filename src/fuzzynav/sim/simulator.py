@@ -228,7 +228,7 @@ class BatchSimulator:
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
-        if self._navigator[-1][layer_arrays.GROW][0]:  # a layer's arrays need room: the navigator makes it
+        if self._navigator[-2][layer_arrays.GROW]:  # a layer's arrays need room: the navigator makes it
             self._navigator = self._compiled(self.n, self.sensors.angles)
         if running is not None:
             self._add_noise(running)
