@@ -136,7 +136,8 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
     """One step of every running robot, ``k`` being the step count after it; returns how many
     still run. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
     ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
-    loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR` (commands given in ``state``)."""
+    loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
+    (commands given in ``state``)."""
     running = 0
     n_angles = int(setup[N_ANGLES])
     angles = setup[ANGLES:ANGLES + n_angles]
