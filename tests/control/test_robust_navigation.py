@@ -14,7 +14,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fuzzynav.control.escape import LoopDetector
 from fuzzynav.control.recovery import recovery_system
 from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.sim import run_episode
@@ -72,11 +71,16 @@ def test_without_reverse_gear_there_is_no_recovery():
 
 
 def test_loop_detector_fires_on_a_circle_not_on_a_straight_run():
-    detector = LoopDetector()
-    fired = [detector.update(0.1 * k, 5 + math.cos(0.05 * k), 5 + math.sin(0.05 * k), 10.0) for k in range(600)]
+    from fuzzynav.kernels import escape, layers
+
+    params = make_controller("fuzzy-5b").params
+    state = layers.fresh_state(1, params)[0]
+    places = layers.places_of(params, state)
+    fired = [escape.circling(state, places, params, 0.1 * k, 5 + math.cos(0.05 * k), 5 + math.sin(0.05 * k), 10.0)
+             for k in range(600)]
     assert any(fired) and not any(fired[:200])  # after the patience, back where it was
-    detector.reset()
-    assert not any(detector.update(0.1 * k, 0.1 * k, 0.0, 10.0) for k in range(600))  # never revisits
+    escape.forget_places(state)
+    assert not any(escape.circling(state, places, params, 0.1 * k, 0.1 * k, 0.0, 10.0) for k in range(600))
 
 
 def test_recovery_rule_base_swings_the_nose_to_the_roomier_side():

@@ -1,11 +1,13 @@
 """``NUMBA_DISABLE_JIT=1`` runs the very same kernels as plain Python (the debugging story): a
-short fuzzy-5b-thesis episode and a batch of rays, and the learned avoidance navigator's inputs,
-grid premise and drive, give the numbers of the compiled run."""
+short fuzzy-5b-thesis episode and a batch of rays, the learned avoidance navigator's inputs,
+grid premise and drive, and a default fuzzy-2b episode that backs out, turns and follows a
+boundary (recovery, loop escape, route), give the numbers of the compiled run."""
 
 import json
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -44,6 +46,19 @@ print(json.dumps({"jit": hasattr(kernels.drive, "py_func"), "values": [goal.toli
                   [v.tolist() for v in drive]]}))
 """
 
+ROBUST = """
+import json
+from pathlib import Path
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.sim import run_episode
+from fuzzynav.world.scenario import scenario_from_dict
+import fuzzynav.kernels.route as route
+worlds = json.loads(Path(%r).read_text())["worlds"]
+trace = run_episode(scenario_from_dict(worlds["dense-0-007"]), make_controller("fuzzy-2b"), seed=0)
+print(json.dumps({"jit": hasattr(route.target, "py_func"), "pose": trace.pose.tolist(),
+                  "labels": trace.behaviour.tolist()}))
+""" % str(Path(__file__).parents[1] / "control" / "data" / "robust_traces.json")
+
 
 def _run(disable: bool, script: str = SCRIPT) -> dict:
     env = {**os.environ, "NUMBA_DISABLE_JIT": "1" if disable else "0"}
@@ -65,3 +80,11 @@ def test_learned_navigator_kernels_run_as_plain_python_with_the_same_numbers():
     plain, compiled = _run(True, LEARNED), _run(False, LEARNED)
     assert not plain["jit"] and compiled["jit"]
     assert plain["values"] == compiled["values"]
+
+
+@pytest.mark.slow
+def test_layers_of_the_default_navigators_run_as_plain_python_with_the_same_numbers():
+    plain, compiled = _run(True, ROBUST), _run(False, ROBUST)
+    assert not plain["jit"] and compiled["jit"]
+    assert plain["labels"] == compiled["labels"] and {"REC-BACK", "REC-TURN", "BF"} <= set(plain["labels"])
+    np.testing.assert_allclose(plain["pose"], compiled["pose"], rtol=0, atol=1e-12)

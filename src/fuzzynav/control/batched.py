@@ -53,12 +53,12 @@ class CompiledNavigator(BatchController):
                              f"{', '.join(self.roles)}", field="systems")
         chosen = {**defaults(), **dict(systems or {})}
         self.systems = {role: chosen[role] for role in self.roles}
-        from fuzzynav.kernels import ts0
+        from fuzzynav.kernels import layers, ts0
 
         self.tables = ts0.pack(list(self.systems.values()), [f"{self.name} {role}" for role in self.roles]) \
             if self.roles else np.zeros(1)
         self.params = params
-        self._angles = None
+        self._angles, self._no_layers = None, layers.none()
         self.reset()
 
     def reset(self, rng=None) -> None:
@@ -88,8 +88,9 @@ class CompiledNavigator(BatchController):
 
     def compiled(self, n: int, sensor_angles):
         """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
-        ``(kind, params, tables, state, memory)``; the state is this navigator's own (kept across
-        calls, cleared by :meth:`reset`)."""
+        ``(kind, params, tables, state, memory, layer params, layer state)``; the state is this
+        navigator's own (kept across calls, cleared by :meth:`reset`); no layers
+        (:func:`fuzzynav.kernels.layers.none`)."""
         angles = np.asarray(sensor_angles, dtype=float).reshape(-1)
         if self._angles is None or not np.array_equal(angles, self._angles):
             if self.sensors_deg is not None:
@@ -104,7 +105,7 @@ class CompiledNavigator(BatchController):
             self._state = np.zeros((n, 4), dtype=np.int64)
             self._state[:, 0] = -1  # no mode yet
             self._memory = np.zeros((n, max(self.memory, 1), len(angles) + 1, 3))
-        return self.kind, self.params, self.tables, self._state, self._memory
+        return (self.kind, self.params, self.tables, self._state, self._memory, *self._no_layers)
 
     def act(self, obs: Observation) -> Command:
         """One robot: the compiled decision of :meth:`act_batch`'s row, called directly (no batch
@@ -114,7 +115,7 @@ class CompiledNavigator(BatchController):
         from fuzzynav.kernels import navigators
 
         angles = np.ascontiguousarray(obs.sensor_angles, dtype=float)
-        kind, params, tables, state, memory = self.compiled(1, angles)
+        kind, params, tables, state, memory, *_ = self.compiled(1, angles)
         d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
         b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
         x, y, theta = (float(value) for value in obs.pose)
@@ -150,7 +151,7 @@ class CompiledNavigator(BatchController):
         if obs.ranges is None and self.sensors_deg is not None:
             raise InputError("this controller needs range sensors", field="sensors")
         angles = obs.sensor_angles if obs.ranges is not None else np.zeros(0)
-        kind, params, tables, state, memory = self.compiled(n, angles)
+        kind, params, tables, state, memory, *_ = self.compiled(n, angles)
         ranges = np.zeros((n, 0)) if obs.ranges is None else obs.ranges
         active = getattr(obs, "active", None)
         out = np.zeros((n, 3))

@@ -3,8 +3,9 @@
 The thesis' robot has no reverse gear (§IV.4) and its navigators, kept as published for
 ``fuzzy-5b-thesis`` / ``fuzzy-2b-thesis``, stop for good when no forward turn is free (the
 safety stop of :mod:`fuzzynav.control.five_behaviours`). A car-like robot that can reverse
-makes a K-turn instead, and this module is that behaviour of the supervisor
-(:mod:`fuzzynav.control.robust`):
+makes a K-turn instead, and this is that behaviour of the supervisor
+(:mod:`fuzzynav.control.robust`), compiled in :mod:`fuzzynav.kernels.recovery` (this module
+holds its rule base and constants):
 
 1. **Back** (``REC-BACK``): reverse at ``v_back`` along a circular arc whose steering comes
    from a small zero-order Takagi–Sugeno rule base in the thesis' style (strong partitions,
@@ -14,10 +15,10 @@ makes a K-turn instead, and this module is that behaviour of the supervisor
    (eq IV.1: θ̇ = V tan α / l with V < 0), so the rules swing it towards the roomier side, or
    the goal's side when both are alike, and back straight when the goal is ahead and both
    sides are alike. Every reverse step is checked against the remembered obstacle points
-   (:class:`ObstacleMemory`: the ring's hits and the nearest obstacle point, D_ro / θ_o,
-   which the observation gives all round, so obstacles behind the robot are known without
-   rear sensors); the back-up ends after ``back_distance`` or when the next step would bring
-   the body within ``margin`` of a point.
+   (:mod:`fuzzynav.kernels.sightings`: the ring's hits and the nearest obstacle point, D_ro /
+   θ_o, which the observation gives all round, so obstacles behind the robot are known without
+   rear sensors); the back-up ends after ``back_distance``
+   or when the next step would bring the body within ``margin`` of a point.
 2. **Turn** (``REC-TURN``): forward at full lock the other way — the turn direction changed —
    until the heading has turned ``turn_angle`` or the lane ahead is free, each step checked
    the same way; then the navigator takes the robot back. A second recovery started near
@@ -28,8 +29,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import rules_from_grid
@@ -37,7 +36,11 @@ from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
 
 ALPHA_TURN = math.pi / 5  # the largest steering singleton of Fig IV.7
-CELL = 0.05  # m: obstacle points closer than this on a grid are remembered once
+# the manoeuvre: back at v_back (m/s) for up to back_distance (m), keeping margin (m); turn at v_turn
+# (m/s) up to turn_angle (rad) or until the rays within ±31° read lane (m) free; all within
+# recovery_time (s)
+RECOVERY = {"v_back": 0.3, "back_distance": 0.8, "margin": 0.05, "v_turn": 0.3, "turn_angle": math.pi / 3,
+            "lane": 1.5, "recovery_time": 6.0}
 
 # Reverse steering, rows room (N: the right roomier, Z: alike, P: the left roomier), columns
 # the goal bearing (N: right, Z: ahead, P: left); cells are Fig IV.7's singletons. α > 0
@@ -64,127 +67,3 @@ def recovery_system() -> FuzzySystem:
                             columns_first=False, source="TABLE_RECOVERY")
     return FuzzySystem([room, theta], [alpha], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
                        name="recovery", description="Back-up arc of the recovery manoeuvre (TS0, product, weighted sum)")
-
-
-class ObstacleMemory:
-    """Obstacle points seen during the episode, in the world frame, one per ``CELL`` grid cell."""
-
-    def __init__(self):
-        self.reset()
-
-    def reset(self) -> None:
-        """Forget every point (a new episode)."""
-        self._cells: set[tuple[int, int]] = set()
-        self._points: list[tuple[float, float]] = []
-        self._array = np.zeros((0, 2))  # the points as an array, built when asked for (None: stale)
-
-    def add(self, obs) -> None:
-        """Store the hits of the ring (readings below the range) and the nearest obstacle point."""
-        x, y, theta = (float(v) for v in obs.pose)
-        seen = []
-        if obs.ranges is not None:
-            for r, a in zip(np.asarray(obs.ranges, dtype=float).tolist(), np.asarray(obs.sensor_angles).tolist()):
-                if math.isfinite(r) and r < obs.max_range - 1e-9:
-                    seen.append((x + r * math.cos(theta + a), y + r * math.sin(theta + a)))
-        if obs.obstacle_distance is not None and math.isfinite(obs.obstacle_distance):
-            d, b = max(float(obs.obstacle_distance), 0.0), theta + float(obs.obstacle_bearing)
-            seen.append((x + d * math.cos(b), y + d * math.sin(b)))
-        for px, py in seen:
-            cell = (math.floor(px / CELL), math.floor(py / CELL))
-            if cell not in self._cells:
-                self._cells.add(cell)
-                self._points.append((px, py))
-                self._array = None
-
-    @property
-    def points(self) -> np.ndarray:
-        """Every remembered point, ``(P, 2)`` world frame."""
-        if self._array is None:
-            self._array = np.array(self._points).reshape(-1, 2)
-        return self._array
-
-    def clearance(self, x: float, y: float) -> float:
-        """Distance from (x, y) to the nearest remembered point (``inf`` with none)."""
-        points = self.points
-        if not len(points):
-            return math.inf
-        return float(np.min(np.hypot(points[:, 0] - x, points[:, 1] - y)))
-
-    def side_room(self, pose, cap: float) -> tuple[float, float]:
-        """``(left, right)``: distance to the nearest point on each side of the heading (ahead of
-        the rear of the body), capped at ``cap``."""
-        points = self.points
-        if not len(points):
-            return cap, cap
-        x, y, theta = (float(v) for v in pose)
-        rx, ry = points[:, 0] - x, points[:, 1] - y
-        ahead = math.cos(theta) * rx + math.sin(theta) * ry
-        lateral = math.cos(theta) * ry - math.sin(theta) * rx
-        dist = np.hypot(rx, ry)
-        near = ahead > -0.3
-        left = dist[near & (lateral > 0)]
-        right = dist[near & (lateral <= 0)]
-        return (min(float(left.min()) if len(left) else cap, cap), min(float(right.min()) if len(right) else cap, cap))
-
-
-class Recovery:
-    """The K-turn of the module docstring for one robot: :meth:`start`, then :meth:`command`
-    each step until it returns ``None`` (the navigator takes over)."""
-
-    def __init__(self, v_back: float = 0.3, back_distance: float = 0.8, margin: float = 0.05,
-                 v_turn: float = 0.3, turn_angle: float = math.pi / 3, lane: float = 1.5, max_time: float = 6.0):
-        self.system = recovery_system()
-        self.v_back, self.back_distance, self.margin = float(v_back), float(back_distance), float(margin)
-        self.v_turn, self.turn_angle, self.lane, self.max_time = float(v_turn), float(turn_angle), float(lane), float(max_time)
-        self.reset()
-
-    def reset(self) -> None:
-        """No manoeuvre under way, none remembered."""
-        self.phase = None
-        self._last_place = None
-        self._flip = False
-
-    def start(self, obs, memory: ObstacleMemory, robot) -> None:
-        """Begin a manoeuvre here (``robot``: the robot's :class:`TricycleParams`)."""
-        pose = np.asarray(obs.pose, dtype=float)
-        left, right = memory.side_room(pose, obs.max_range)
-        steering = self.system.evaluate_one(left - right, obs.target_bearing)[0]
-        again = self._last_place is not None and math.hypot(*(pose[:2] - self._last_place)) < 1.0
-        self._flip = (not self._flip) if again else False
-        if self._flip:
-            steering = -steering if abs(steering) > 1e-9 else ALPHA_TURN * (1 if obs.target_bearing >= 0 else -1)
-        self._last_place = pose[:2].copy()
-        self.phase, self._start_pose, self._t0 = "REC-BACK", pose.copy(), obs.t
-        self._steering = float(steering)
-        self._speed = -min(self.v_back, robot.max_reverse_speed)
-
-    def command(self, obs, memory: ObstacleMemory, robot) -> tuple[float, float, str] | None:
-        """``(α, V, label)`` of this step of the manoeuvre, or ``None`` when it has ended."""
-        x, y, theta = (float(v) for v in obs.pose)
-        if obs.t - self._t0 > self.max_time:
-            self.phase = None
-        if self.phase == "REC-BACK":
-            backed = math.hypot(x - self._start_pose[0], y - self._start_pose[1])
-            if backed < self.back_distance:
-                for steering in (self._steering, 0.0):  # the rule base's arc, else straight back
-                    if self._safe(memory, robot, obs.pose, steering, self._speed, obs.dt):
-                        return steering, self._speed, "REC-BACK"
-            self.phase = "REC-TURN" if abs(self._steering) > ALPHA_TURN / 4 else None
-            self._heading = theta
-        if self.phase == "REC-TURN":
-            turned = abs(math.remainder(theta - self._heading, math.tau))
-            steering = -math.copysign(ALPHA_TURN, self._steering)
-            ahead = np.asarray(obs.ranges, dtype=float)[np.abs(np.asarray(obs.sensor_angles)) <= math.radians(31)]
-            if (turned < self.turn_angle and not (ahead >= self.lane).all()
-                    and self._safe(memory, robot, obs.pose, steering, self.v_turn, obs.dt)):
-                return steering, self.v_turn, "REC-TURN"
-            self.phase = None
-        return None
-
-    def _safe(self, memory: ObstacleMemory, robot, pose, steering: float, speed: float, dt: float) -> bool:
-        """True when one step of (α, V) (eq IV.2) leaves the body ``margin`` from every remembered
-        point, or at least no nearer to them than now (and clear of them)."""
-        x, y, theta = (float(v) for v in pose)
-        now = memory.clearance(x, y)
-        after = memory.clearance(x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta))
-        return after >= robot.radius + self.margin or (after >= now and after > robot.radius + 0.01)

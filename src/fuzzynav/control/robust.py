@@ -1,9 +1,9 @@
 """The default chapter IV navigators, ``fuzzy-5b`` and ``fuzzy-2b``: the thesis' navigators with
 a supervisor layer that never lets them freeze, sized to the scenario's robot.
 
-:class:`RobustNavigator` wraps a thesis navigator (:mod:`fuzzynav.control.five_behaviours`,
-:mod:`fuzzynav.control.avoidance`) through the :class:`Controller` interface and adds two
-behaviours to its supervisor:
+:class:`RobustNavigator` wraps a compiled navigator — a thesis one
+(:mod:`fuzzynav.control.five_behaviours`, :mod:`fuzzynav.control.avoidance`) or any other
+:class:`~fuzzynav.control.batched.CompiledNavigator` — and adds two behaviours to its supervisor:
 
 - **recovery** (:mod:`fuzzynav.control.recovery`): when the navigator's safety stop has held the
   robot for ``stop_wait`` seconds away from the goal, the robot backs out on an arc and turns the
@@ -15,48 +15,61 @@ behaviours to its supervisor:
 
 The thesis navigator runs every step (its hit memory and behaviour switch stay current); a
 layer in charge replaces its command. The labels in the trace are the navigator's, or
-``REC-BACK``, ``REC-TURN``, ``BF``.
+``REC-BACK``, ``REC-TURN``, ``BF``. The layers are compiled around any compiled navigator
+(:mod:`fuzzynav.kernels.robust`), so the simulator runs the whole decision inside its own
+compiled step, for one robot or a batch.
 
 **The robot's size and limits** (the scenario's ``robot:`` keys) reach the navigators through
 their compiled parameter vector: the simulator calls :meth:`CompiledNavigator.for_robot
 <fuzzynav.control.batched.CompiledNavigator.for_robot>` with its robot, which sets the wheelbase
 (the anti-orbit guard of goal seeking, the full-lock turn radius), the body radius (turning room
-and safety stop) and the top speed; the layers read the robot from ``extras["robot"]``. With the
-default robot nothing changes, so the ``-thesis`` variants (:func:`fuzzy_5b_thesis`,
-:func:`fuzzy_2b_thesis`, the compiled navigators without layers) drive exactly as published.
+and safety stop) and the top speed; :meth:`RobustNavigator.for_robot` gives the layers the
+robot's radius and reverse speed (a one-robot :meth:`~RobustNavigator.act` reads them from
+``extras["robot"]`` when there). With the default robot nothing changes, so the ``-thesis``
+variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`, the compiled navigators without
+layers) drive exactly as published.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
+import functools
+import math
 
-from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.escape import BoundaryFollowing, LoopDetector
-from fuzzynav.control.recovery import ObstacleMemory, Recovery
+import numpy as np
+
+from fuzzynav.control.base import Command
+from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.escape import FOLLOW, LOOP
+from fuzzynav.control.recovery import RECOVERY, recovery_system
+from fuzzynav.errors import InputError
+from fuzzynav.kernels import layers
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
+FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
 
-class RobustNavigator(Controller):
-    """A thesis navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`) with the
-    recovery and loop-escape layers (either can be switched off: ``recovery=False``,
-    ``escape=False``); ``systems`` of the navigator are its rule bases by role."""
+
+class RobustNavigator(BatchedController):
+    """A compiled navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`, or anything
+    with its ``compiled``, ``labels``, ``reset``, ``for_robot``) with the recovery and
+    loop-escape layers (either can be switched off: ``recovery=False``, ``escape=False``;
+    ``stop_wait``: seconds of safety stop before a recovery); ``systems`` of the navigator are
+    its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0):
         self.navigator, self.name = navigator, name
-        self.recovery = Recovery() if recovery else None
-        self.follow = BoundaryFollowing() if escape else None
-        self.loops = LoopDetector()
-        self.memory = ObstacleMemory()
-        self.stop_wait = float(stop_wait)
+        self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF")
+        values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
+                  "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
+        values["places_slots"] = int(LOOP["horizon"] / (LOOP["sample_every"] - 1e-9)) + 3  # never all in use
+        self.params = np.concatenate([[values.get(key, 0.0) for key in layers.PARAM_NAMES], _recovery_tables()])
+        self.for_robot(DEFAULT_PARAMS, navigator=False)
         self.reset()
 
     def reset(self, rng=None) -> None:
+        """Forget the layers' state and the navigator's (a new episode)."""
         self.navigator.reset(rng)
-        for part in (self.recovery, self.follow, self.loops, self.memory):
-            if part is not None:
-                part.reset()
-        self._stopped = 0.0
+        self._rows = None
 
     @property
     def systems(self) -> dict:
@@ -68,42 +81,96 @@ class RobustNavigator(Controller):
         """The names of the navigator's rule bases."""
         return self.navigator.roles
 
-    def for_robot(self, robot) -> "RobustNavigator":
-        """Size the navigator for ``robot`` (:class:`TricycleParams`)."""
-        self.navigator.for_robot(robot)
+    @property
+    def sensors(self):
+        """The ring the navigator reads by default (``None``: the thesis' seven rays)."""
+        return getattr(self.navigator, "sensors", None)
+
+    def for_robot(self, robot, navigator: bool = True) -> "RobustNavigator":
+        """Size the navigator (unless ``navigator`` is False) and the layers for ``robot``
+        (:class:`TricycleParams`)."""
+        if navigator:
+            self.navigator.for_robot(robot)
+        self.params[layers.RADIUS], self.params[layers.MAX_REVERSE_SPEED] = robot.radius, robot.max_reverse_speed
         return self
 
+    def compiled(self, n: int, sensor_angles):
+        """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
+        the navigator's, with the layers' parameters and state (:mod:`fuzzynav.kernels.layers`) —
+        a new state when the navigator's is new, a wider one when a step has asked for room."""
+        kind, params, tables, state, memory, *_ = self.navigator.compiled(n, sensor_angles)
+        if self._rows is None or self._inner is not state:
+            slots = FIRST_SLOTS * (len(np.atleast_1d(sensor_angles)) + 1)
+            self.params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = slots, _hash_size(slots), 0.0
+            self._inner, self._rows = state, layers.fresh_state(n, self.params)
+        elif self.params[layers.GROW]:
+            self._rows = _grown(self.params, self._rows)
+        return kind, params, tables, state, memory, self.params, self._rows
+
+    def act_batch(self, obs):
+        """``(steering (N,), speed (N,), behaviours (N,))`` for a batch observation."""
+        from fuzzynav.kernels import robust
+
+        n = len(obs.speed)
+        if obs.ranges is None:
+            raise InputError("this controller needs range sensors", field="sensors")
+        arguments = self.compiled(n, obs.sensor_angles)
+        active = getattr(obs, "active", None)
+        out = np.zeros((n, 3))
+        robust.act(*arguments, *(np.ascontiguousarray(v, dtype=float) for v in (
+            obs.pose, obs.speed, obs.target, obs.ranges, obs.sensor_angles)), float(obs.max_range), float(obs.dt),
+            np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
+            np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_),
+            float(obs.t), out)
+        return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
+
     def act(self, obs) -> Command:
-        robot = obs.extras.get("robot", DEFAULT_PARAMS)
-        self.memory.add(obs)
-        x, y = float(obs.pose[0]), float(obs.pose[1])
-        seen = obs
-        if self.follow is not None:
-            if self.follow.active and (self.follow.should_leave(obs) or self.follow.timed_out(obs)):
-                self.follow.stop(succeeded=not self.follow.timed_out(obs))
-                self.loops.reset()
-            if self.loops.update(obs.t, x, y, obs.target_distance) and (self.recovery is None or self.recovery.phase is None):
-                self.follow.start(obs, self.loops.best)
-                self.loops.reset()
-            if self.follow.active:
-                seen = replace(obs, target=self.follow.target(obs, self.memory.points, robot.radius))
-        command = self.navigator.act(seen)
-        label = "BF" if self.follow is not None and self.follow.active else command.behaviour
-        if self.recovery is None or robot.max_reverse_speed <= 0:
-            return Command(command.steering, command.speed, label)
-        if self.recovery.phase is not None:
-            manoeuvre = self.recovery.command(obs, self.memory, robot)
-            if manoeuvre is not None:
-                return Command(*manoeuvre)
-        stopped = command.speed == 0.0 and obs.target_distance > 0.5
-        self._stopped = self._stopped + obs.dt if stopped else 0.0
-        if self._stopped >= self.stop_wait - 1e-9:
-            self._stopped = 0.0
-            self.recovery.start(obs, self.memory, robot)
-            manoeuvre = self.recovery.command(obs, self.memory, robot)
-            if manoeuvre is not None:
-                return Command(*manoeuvre)
-        return Command(command.steering, command.speed, label)
+        """One robot: the compiled decision, called directly (no batch of one is built)."""
+        if obs.ranges is None or obs.target is None:
+            raise InputError("this controller needs range sensors and a target", field="sensors")
+        from fuzzynav.kernels import robust
+
+        robot = obs.extras.get("robot")
+        if robot is not None:
+            self.for_robot(robot, navigator=False)
+        angles = np.ascontiguousarray(obs.sensor_angles, dtype=float)
+        kind, params, tables, state, memory, layer_params, rows = self.compiled(1, angles)
+        x, y, theta = (float(value) for value in obs.pose)
+        tx, ty = (float(value) for value in obs.target)
+        d_o = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
+        b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
+        v = 0.0 if obs.speed is None else float(obs.speed)
+        steering, speed, code = robust.act_one(
+            kind, params, tables, state[0], memory[0], layer_params, rows[0], x, y, theta, v, tx, ty,
+            np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
+            float(obs.t))
+        return Command(float(steering), float(speed), str(self.labels[int(code)]))
+
+
+@functools.cache
+def _recovery_tables() -> np.ndarray:
+    """The recovery's rule base packed for the kernels (built once; the kernels only read it)."""
+    from fuzzynav.kernels import ts0
+
+    return ts0.pack([recovery_system()], ["recovery"])
+
+
+def _hash_size(slots: int) -> int:
+    """Slots of the hash set of the obstacle points' cells: a power of two ≥ twice ``slots``."""
+    return 1 << (2 * slots - 1).bit_length()
+
+
+def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """The layers' state ``rows`` with twice the obstacle point slots per robot (``params`` updated)."""
+    from fuzzynav.kernels import robust
+
+    slots = int(params[layers.POINTS_SLOTS])
+    kept = layers.PLACES_AT + 3 * int(params[layers.PLACES_SLOTS]) + 2 * slots  # the state, places and points
+    params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = 2 * slots, _hash_size(2 * slots), 0.0
+    wider = layers.fresh_state(len(rows), params)
+    wider[:, :kept] = rows[:, :kept]
+    robust.rehash_all(params, wider)
+    return wider
 
 
 def _five(name: str, **options):

@@ -12,6 +12,10 @@ and a batch alike (one robot is a batch of one; the loops over robots are inside
 - :mod:`~fuzzynav.kernels.guard` — the supervisor's selection and switch, hit memory, cone
   echo, turning room and safety stop of the chapter IV navigators;
 - :mod:`~fuzzynav.kernels.navigators` — the navigators' ``act``;
+- :mod:`~fuzzynav.kernels.robust` — the default navigators' ``act``: any navigator inside the
+  recovery (:mod:`~fuzzynav.kernels.recovery`) and loop-escape (:mod:`~fuzzynav.kernels.escape`,
+  :mod:`~fuzzynav.kernels.route`) layers, on the obstacle points seen
+  (:mod:`~fuzzynav.kernels.sightings`), arrays laid out in :mod:`~fuzzynav.kernels.layers`;
 - :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense.
 
 Every kernel is a module-level function over arrays (no closures), compiled on first use and

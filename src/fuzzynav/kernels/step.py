@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import beams, navigators, scene
+from fuzzynav.kernels import beams, layers, robust, scene
 from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
@@ -37,6 +37,13 @@ STATE_FIELDS = ("x", "y", "theta", "steering", "speed", "target_x", "target_y", 
 OUTCOME, STEPS, WAYPOINT = range(3)
 RUNNING, REACHED, COLLISION, TIMEOUT = range(4)
 NO_NAVIGATOR = -1  # commands given in state[:, STEERING], state[:, SPEED]
+
+
+def idle_arguments() -> tuple:
+    """The navigator arguments of :func:`step` without a compiled navigator (kind, then unused
+    params, tables, state, memory, layer params and state)."""
+    return (NO_NAVIGATOR, np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)),
+            *layers.none())
 
 
 @jit
@@ -125,10 +132,12 @@ def reset(setup, scene_array, state, ranges, status):
 
 
 @jit
-def step(kind, params, tables, cstate, memory, setup, scene_array, k, state, ranges, status):
+def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, scene_array, k, state, ranges, status):
     """One step of every running robot, ``k`` being the step count after it; returns how many
     still run. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
-    ``tables``, ``cstate``, ``memory``) or :data:`NO_NAVIGATOR` (commands given in ``state``)."""
+    ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
+    loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
+    (commands given in ``state``)."""
     running = 0
     n_angles = int(setup[N_ANGLES])
     angles = setup[ANGLES:ANGLES + n_angles]
@@ -139,10 +148,10 @@ def step(kind, params, tables, cstate, memory, setup, scene_array, k, state, ran
         row = state[n]
         steering, speed = row[STEERING], row[SPEED]
         if kind != NO_NAVIGATOR:
-            steering, speed, code = navigators.act_one(
-                kind, params, tables, cstate[n], memory[n], row[X], row[Y], row[THETA], row[SPEED], row[TARGET_X],
-                row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0], row[OBSTACLE_DISTANCE],
-                row[OBSTACLE_BEARING])
+            steering, speed, code = robust.act_one(
+                kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], row[X], row[Y], row[THETA],
+                row[SPEED], row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0],
+                row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING], (k - 1) * setup[0])
             row[BEHAVIOUR] = code
         steering, speed = clip(steering, speed, setup)
         if setup[FORCED_SPEED] == setup[FORCED_SPEED]:

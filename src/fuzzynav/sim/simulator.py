@@ -31,7 +31,8 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.errors import CommandError
-from fuzzynav.kernels import step as step_kernel
+from fuzzynav.kernels import layers, step as step_kernel
+from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
@@ -42,10 +43,6 @@ from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.world import add_noise
 
-RUNNING, REACHED, COLLISION, TIMEOUT = (step_kernel.RUNNING, step_kernel.REACHED, step_kernel.COLLISION,
-                                        step_kernel.TIMEOUT)
-# the arguments of a step without a compiled navigator: params, tables, state, memory (unused)
-_NO_NAVIGATOR = (np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)))
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
@@ -116,7 +113,8 @@ class BatchSimulator:
         for controller, child in zip(self.controllers, seeds[1:]):
             controller.reset(np.random.default_rng(child))
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
-                           else (step_kernel.NO_NAVIGATOR, *_NO_NAVIGATOR))
+                           else step_kernel.idle_arguments())
+        self._layer_params = self._navigator[-2]  # its GROW flag: a layer's arrays need room
         self.k = 0
         self._state = np.zeros((self.n, len(step_kernel.STATE_FIELDS)))
         self._state[:, :3] = self.starts
@@ -229,6 +227,8 @@ class BatchSimulator:
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
+        if self._layer_params[layers.GROW]:  # the navigator makes room (the parameter array stays the same)
+            self._navigator = self._compiled(self.n, self.sensors.angles)
         if running is not None:
             self._add_noise(running)
         if self.record:

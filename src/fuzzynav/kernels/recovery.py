@@ -1,0 +1,90 @@
+"""The recovery manoeuvre of the default navigators, compiled: back out of a dead end on an arc,
+then turn the other way (a K-turn; ``REC-BACK``, ``REC-TURN``). What it does and why is told in
+:mod:`fuzzynav.control.recovery`; these are its steps for one robot, on its ``state`` row
+(:mod:`fuzzynav.kernels.layers` names the columns and ``params``) and the obstacle points it has
+seen (:mod:`fuzzynav.kernels.sightings`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from fuzzynav.jit import jit
+from fuzzynav.kernels import sightings, ts0
+from fuzzynav.kernels.layers import (BACK, BACK_DISTANCE, BACK_SPEED, BACK_STEERING, FLIP, HEADING, LANE, LAST_X,
+                                     LAST_Y, MARGIN, MAX_REVERSE_SPEED, NO_PHASE, PHASE, RADIUS, RECOVERY_TIME,
+                                     START_X, START_Y, T_RECOVERY, TURN, TURN_ANGLE, V_BACK, V_TURN)
+
+ALPHA_TURN = math.pi / 5  # the largest steering singleton of Fig IV.7
+LANE_HALF = math.radians(31)  # the rays that must read the lane free to end the turn early
+
+
+@jit
+def remainder(x, y):
+    """IEEE 754 remainder of x by y > 0, in (−y/2, y/2] (Python's ``math.remainder``, exact)."""
+    ax = abs(x)
+    m = ax % y  # fmod: both positive
+    c = y - m
+    if m < c:
+        r = m
+    elif m > c:
+        r = -c
+    else:  # half-way: the even multiple
+        r = m - 2.0 * ((0.5 * (ax - m)) % y)
+    return math.copysign(1.0, x) * r
+
+
+@jit
+def start(state, params, tables, points, count, x, y, theta, goal_bearing, cap, t):
+    """Begin a manoeuvre at (x, y, θ): the back-up arc's steering from the rule base (room on the
+    left − room on the right within ``cap``, the goal bearing); a second recovery within 1 m of
+    the last one swings the other way (full lock towards the goal when the rule base says
+    straight)."""
+    left, right = sightings.side_room(points, count, x, y, theta, cap)
+    steering = ts0.evaluate(tables, 0, left - right, goal_bearing, 0.0)[0]
+    again = state[LAST_X] == state[LAST_X] and math.hypot(x - state[LAST_X], y - state[LAST_Y]) < 1.0
+    state[FLIP] = (1.0 - state[FLIP]) if again else 0.0
+    if state[FLIP]:
+        steering = -steering if abs(steering) > 1e-9 else ALPHA_TURN * (1.0 if goal_bearing >= 0 else -1.0)
+    state[LAST_X], state[LAST_Y] = x, y
+    state[PHASE], state[START_X], state[START_Y], state[T_RECOVERY] = BACK, x, y, t
+    state[BACK_STEERING], state[BACK_SPEED] = steering, -min(params[V_BACK], params[MAX_REVERSE_SPEED])
+
+
+@jit
+def command(state, params, points, count, x, y, theta, ranges, angles, dt, t):
+    """(moving, α, V, phase) of this step of the manoeuvre; ``moving`` is False when it has ended
+    (the navigator takes over). Backing ends after ``back_distance`` or when the next step would
+    not be safe; the turn at full lock the other way (only after an arc) ends after
+    ``turn_angle``, when the rays within ±31° read the lane free, or when not safe; the whole
+    manoeuvre after ``recovery_time``."""
+    if t - state[T_RECOVERY] > params[RECOVERY_TIME]:
+        state[PHASE] = NO_PHASE
+    if state[PHASE] == BACK:
+        backed = math.hypot(x - state[START_X], y - state[START_Y])
+        if backed < params[BACK_DISTANCE] and safe(params, points, count, x, y, theta, state[BACK_SPEED], dt):
+            return True, state[BACK_STEERING], state[BACK_SPEED], BACK
+        state[PHASE] = TURN if abs(state[BACK_STEERING]) > ALPHA_TURN / 4 else NO_PHASE
+        state[HEADING] = theta
+    if state[PHASE] == TURN:
+        turned = abs(remainder(theta - state[HEADING], math.tau))
+        steering = -math.copysign(ALPHA_TURN, state[BACK_STEERING])
+        lane_free = True
+        for i in range(angles.shape[0]):
+            if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[LANE]:
+                lane_free = False
+        if turned < params[TURN_ANGLE] and not lane_free and safe(params, points, count, x, y, theta,
+                                                                   params[V_TURN], dt):
+            return True, steering, params[V_TURN], TURN
+        state[PHASE] = NO_PHASE
+    return False, 0.0, 0.0, NO_PHASE
+
+
+@jit
+def safe(params, points, count, x, y, theta, speed, dt):
+    """True when one step at speed V (eq IV.2: the position moves along the present heading,
+    whatever the steering) leaves the body ``margin`` from every remembered point, or at least
+    no nearer to them than now (and clear of them)."""
+    now = sightings.clearance(points, count, x, y)
+    after = sightings.clearance(points, count, x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta))
+    return after >= params[RADIUS] + params[MARGIN] or (after >= now and after > params[RADIUS] + 0.01)

@@ -1,0 +1,88 @@
+"""``act`` of the default navigators, compiled: any compiled navigator
+(:func:`fuzzynav.kernels.navigators.act_one`) inside the recovery and loop-escape layers of
+:mod:`fuzzynav.control.robust`. The navigator runs every step (its hit memory and behaviour
+switch stay current); a layer in charge replaces its command. Behaviour codes are the
+navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``, ``BF``.
+"""
+
+from __future__ import annotations
+
+import math
+
+from fuzzynav.jit import jit
+from fuzzynav.kernels import escape, navigators, recovery, sightings
+from fuzzynav.kernels.layers import (ACTIVE, COUNT, ESCAPE, GROW, MAX_REVERSE_SPEED, N_LABELS, NO_PHASE, ON, PHASE,
+                                     RADIUS, RECOVERY, STOP_WAIT, STOPPED, TABLES_AT, cells_of, places_of, points_of)
+from fuzzynav.kernels.motion import wrap
+
+
+@jit
+def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, ty, ranges, angles, max_range, dt, d_o,
+            b_o, t):
+    """(α, V, behaviour code) of one robot at time ``t`` (the arguments of
+    :func:`fuzzynav.kernels.navigators.act_one`, plus the layers' ``params`` ``p`` and the
+    robot's ``state`` row, :mod:`fuzzynav.kernels.layers`)."""
+    if p[ON] == 0.0:
+        return navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, tx, ty, ranges, angles,
+                                  max_range, dt, d_o, b_o)
+    points = points_of(p, state)
+    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), x, y, theta, ranges, angles, max_range, d_o,
+                          b_o)
+    state[COUNT] = count
+    if count + ranges.shape[0] + 1 > points.shape[0]:  # the next step could fill the slots
+        p[GROW] = 1.0
+    distance = math.hypot(tx - x, ty - y)
+    bearing = wrap(math.atan2(ty - y, tx - x) - theta)
+    aim_x, aim_y, following = tx, ty, False
+    if p[ESCAPE] != 0.0:
+        if state[ACTIVE] != 0.0 and (escape.should_leave(state, p, distance, bearing, ranges, angles)
+                                     or escape.timed_out(state, p, t)):
+            escape.stop(state, not escape.timed_out(state, p, t))
+            escape.forget_places(state)
+        if escape.circling(state, places_of(p, state), p, t, x, y, distance) and (
+                p[RECOVERY] == 0.0 or state[PHASE] == NO_PHASE):
+            escape.start(state, t, distance, b_o)
+            escape.forget_places(state)
+        if state[ACTIVE] != 0.0:
+            following = True
+            aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
+    steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
+                                               ranges, angles, max_range, dt, d_o, b_o)
+    labels = int(p[N_LABELS])
+    if following:
+        code = labels + 2
+    if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
+        return steering, speed, code
+    if state[PHASE] != NO_PHASE:
+        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        if moving:
+            return a, u, labels + phase - 1
+    state[STOPPED] = state[STOPPED] + dt if speed == 0.0 and distance > 0.5 else 0.0
+    if state[STOPPED] >= p[STOP_WAIT] - 1e-9:
+        state[STOPPED] = 0.0
+        recovery.start(state, p, p[TABLES_AT:], points, count, x, y, theta, bearing, max_range, t)
+        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        if moving:
+            return a, u, labels + phase - 1
+    return steering, speed, code
+
+
+@jit
+def act(kind, params, tables, cstate, memory, layer_params, layer_state, poses, speeds, targets, ranges, angles,
+        max_range, dt, obstacle, active, t, out):
+    """:func:`act_one` of every ``active`` robot at time ``t``: ``out`` (N, 3) = α, V, behaviour
+    code; ``obstacle`` (N, 2) = D_ro, θ_o."""
+    for n in range(poses.shape[0]):
+        if active[n]:
+            out[n, 0], out[n, 1], out[n, 2] = act_one(
+                kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], poses[n, 0], poses[n, 1],
+                poses[n, 2], speeds[n], targets[n, 0], targets[n, 1], ranges[n], angles, max_range, dt, obstacle[n, 0],
+                obstacle[n, 1], t)
+
+
+@jit
+def rehash_all(params, state):
+    """Fill every robot's hash set of cells again (after its point slots grew)."""
+    for n in range(state.shape[0]):
+        row = state[n]
+        sightings.rehash(points_of(params, row), int(row[COUNT]), cells_of(params, row))
