@@ -37,8 +37,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.control.base import Command
-from fuzzynav.control.batched import BatchedController
+from fuzzynav.control.base import BatchController, Command
 from fuzzynav.control.escape import FOLLOW, LOOP
 from fuzzynav.control.recovery import RECOVERY, recovery_system
 from fuzzynav.errors import InputError
@@ -48,7 +47,7 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
 
 
-class RobustNavigator(BatchedController):
+class RobustNavigator(BatchController):
     """A compiled navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`, or anything
     with its ``compiled``, ``labels``, ``reset``, ``for_robot``) with the recovery and
     loop-escape layers (either can be switched off: ``recovery=False``, ``escape=False``;
