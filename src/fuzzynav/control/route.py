@@ -26,18 +26,20 @@ MARGIN = 3.0  # m of grid around the robot, the goal and the points
 NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))
 
 
-def route_target(points: np.ndarray, start, goal, inflate: float, ahead: float = 2.5) -> np.ndarray | None:
-    """A point ``ahead`` m along the shortest grid route from ``start`` to ``goal`` that keeps
-    ``inflate`` from every point ``(P, 2)`` (world frame), or ``None`` when no route exists."""
+def route_target(points: np.ndarray, start, goal, inflate: float, ahead: float = 2.5,
+                 cell_size: float = CELL) -> np.ndarray | None:
+    """A point ``ahead`` m along the shortest route, on a grid of ``cell_size`` m, from ``start``
+    to ``goal`` that keeps ``inflate`` from every point ``(P, 2)`` (world frame), or ``None`` when
+    no route exists."""
     start, goal = np.asarray(start, dtype=float)[:2], np.asarray(goal, dtype=float)[:2]
     corners = np.vstack([points, start, goal]) if len(points) else np.vstack([start, goal])
     low = corners.min(axis=0) - MARGIN
-    shape = tuple((np.ceil((corners.max(axis=0) + MARGIN - low) / CELL)).astype(int) + 1)
-    cell = lambda p: tuple(np.clip(((np.asarray(p) - low) / CELL).astype(int), 0, np.array(shape) - 1))
+    shape = tuple((np.ceil((corners.max(axis=0) + MARGIN - low) / cell_size)).astype(int) + 1)
+    cell = lambda p: tuple(np.clip(((np.asarray(p) - low) / cell_size).astype(int), 0, np.array(shape) - 1))
     occupied = np.zeros(shape, dtype=bool)
     if len(points):
-        occupied[tuple(np.clip(((points - low) / CELL).astype(int), 0, np.array(shape) - 1).T)] = True
-    blocked = ndimage.distance_transform_edt(~occupied) * CELL < inflate
+        occupied[tuple(np.clip(((points - low) / cell_size).astype(int), 0, np.array(shape) - 1).T)] = True
+    blocked = ndimage.distance_transform_edt(~occupied) * cell_size < inflate
     blocked[cell(start)] = blocked[cell(goal)] = False
     blocked = np.pad(blocked, 1, constant_values=True)  # a blocked rim: no bounds checks below
     width = blocked.shape[1]
@@ -50,8 +52,8 @@ def route_target(points: np.ndarray, start, goal, inflate: float, ahead: float =
     here, travelled = s, 0.0
     while here != g and travelled < ahead:
         here = min((here + o for o in offsets if steps[here + o] >= 0), key=steps.__getitem__)
-        travelled += CELL
-    return low + (np.array(divmod(here, width)) - 0.5) * CELL
+        travelled += cell_size
+    return low + (np.array(divmod(here, width)) - 0.5) * cell_size
 
 
 def _wavefront(free: np.ndarray, goal: tuple, start: tuple) -> np.ndarray:
