@@ -50,18 +50,11 @@ class RouteGuidance(Controller):
         self.navigator.reset(rng)
         self._waypoint, self._planned = None, -math.inf
 
-    @property
-    def systems(self) -> dict:
-        """The navigator's rule bases by role."""
-        return self.navigator.systems
-
-    @property
-    def roles(self) -> tuple[str, ...]:
-        """The names of the navigator's rule bases."""
-        return self.navigator.roles
+    systems = property(lambda self: self.navigator.systems, doc="The navigator's rule bases by role.")
+    roles = property(lambda self: self.navigator.roles, doc="The names of the navigator's rule bases.")
 
     def for_robot(self, robot) -> "RouteGuidance":
-        """Size the navigator for ``robot`` (:class:`TricycleParams`)."""
+        """The navigator sized for ``robot`` (:class:`TricycleParams`), guided by this."""
         self.navigator.for_robot(robot)
         return self
 
