@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.errors import InputError
 from fuzzynav.kernels import guidance, layers
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import scenario_from_dict
@@ -66,3 +67,10 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
     first = guidance.aim(state, params, wall, len(wall), 0.0, 0.0, 0.0, 10.0, 0.0, radius)
     assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 0.5, radius) == first  # not re-planned yet
     assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
+
+
+def test_route_guidance_options_are_checked_and_off_in_the_default_navigator():
+    assert make_controller("fuzzy-5b").params[layers.GUIDE] == 0.0
+    assert make_controller("fuzzy-5b-gap-robust").params[layers.GUIDE] == 1.0
+    with pytest.raises(InputError, match="guide_lookahead"):
+        make_controller("fuzzy-5b-gap-robust", guidance={"guide_lookahead": 2.0})
