@@ -1,4 +1,5 @@
-"""Gap-aware avoidance (kernels.gaps): the opt-in navigators fuzzy-5b-gap / fuzzy-2b-gap, with the
+"""Gap-aware avoidance (kernels.gaps): the opt-in navigators fuzzy-5b-gap / fuzzy-2b-gap (and
+fuzzy-5b-gap inside the layers, fuzzy-5b-gap-robust), with the
 lidar scan, find and take the one passage wide enough for the body in a row of thin posts; the
 published versions keep their seven rays and no gap finding."""
 
@@ -26,7 +27,7 @@ def post_field() -> dict:
             "max_time": 100.0}
 
 
-@pytest.mark.parametrize("name", ["fuzzy-5b-gap", "fuzzy-2b-gap"])
+@pytest.mark.parametrize("name", ["fuzzy-5b-gap", "fuzzy-2b-gap", "fuzzy-5b-gap-robust"])
 def test_robot_passes_through_the_gap_in_a_field_of_posts(name):
     trace = run_episode(scenario_from_dict(post_field()), make_controller(name), seed=0)
     assert trace.outcome == "reached"

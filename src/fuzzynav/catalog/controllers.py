@@ -25,6 +25,8 @@ CONTROLLERS["fuzzy-2b-gap"] = ("fuzzynav.control.avoidance:make_gap",
                                "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
 CONTROLLERS["fuzzy-5b-gap"] = ("fuzzynav.control.five_behaviours:make_gap",
                                "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
+CONTROLLERS["fuzzy-5b-gap-robust"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
+                                      "fuzzy-5b-gap aimed along a route round what it has seen, with recovery and loop escape")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",

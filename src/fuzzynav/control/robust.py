@@ -13,6 +13,10 @@ a supervisor layer that never lets them freeze, sized to the scenario's robot.
   beside it (``BF``) until the goal is nearer than where following began and its direction is
   free (the Bug algorithms' rule).
 
+An opt-in third layer, the **route guidance** (:mod:`fuzzynav.kernels.guidance`, used by
+``fuzzy-5b-gap-robust``, :mod:`fuzzynav.control.through_gaps`), aims the navigator along the
+shortest route round the obstacles seen so far; the default navigators do not use it.
+
 The thesis navigator runs every step (its hit memory and behaviour switch stay current); a
 layer in charge replaces its command. The labels in the trace are the navigator's, or
 ``REC-BACK``, ``REC-TURN``, ``BF``. The layers are compiled around any compiled navigator
@@ -51,15 +55,19 @@ class RobustNavigator(BatchController):
     """A compiled navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`, or anything
     with its ``compiled``, ``labels``, ``reset``, ``for_robot``) with the recovery and
     loop-escape layers (either can be switched off: ``recovery=False``, ``escape=False``;
-    ``stop_wait``: seconds of safety stop before a recovery); ``systems`` of the navigator are
-    its rule bases by role."""
+    ``stop_wait``: seconds of safety stop before a recovery) and, given ``guidance`` (the
+    ``guide_*`` values of :mod:`fuzzynav.kernels.layers`, e.g.
+    :data:`fuzzynav.control.through_gaps.GUIDANCE`), the route guidance
+    (:mod:`fuzzynav.kernels.guidance`); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0):
+                 stop_wait: float = 1.0, guidance: dict | None = None):
         self.navigator, self.name = navigator, name
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF")
         values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
                   "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
+        if guidance is not None:
+            values.update(_guidance(guidance))
         values["places_slots"] = int(LOOP["horizon"] / (LOOP["sample_every"] - 1e-9)) + 3  # never all in use
         self.params = np.concatenate([[values.get(key, 0.0) for key in layers.PARAM_NAMES], _recovery_tables()])
         self.for_robot(DEFAULT_PARAMS, navigator=False)
@@ -144,6 +152,15 @@ class RobustNavigator(BatchController):
             np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
             float(obs.t))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
+
+
+def _guidance(values: dict) -> dict:
+    """The layers' values that switch the route guidance on with ``values`` (every ``guide_*``
+    parameter but the switch)."""
+    names = {name for name in layers.PARAM_NAMES if name.startswith("guide_")}
+    if set(values) != names:
+        raise InputError(f"route guidance needs exactly {sorted(names)}, got {sorted(values)}", field="guidance")
+    return {"guide": 1.0, **{name: float(value) for name, value in values.items()}}
 
 
 @functools.cache

@@ -1,5 +1,6 @@
-"""Array layout of the recovery and loop-escape layers of the default navigators (the kernels:
-:mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`, :mod:`~fuzzynav.kernels.robust`;
+"""Array layout of the recovery and loop-escape layers of the default navigators, and of the
+route guidance that ``fuzzy-5b-gap-robust`` adds (the kernels: :mod:`~fuzzynav.kernels.recovery`,
+:mod:`~fuzzynav.kernels.escape`, :mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.robust`;
 the controller: :mod:`fuzzynav.control.robust`).
 
 The layers travel as two float arrays (two arguments of the compiled step, whose every array
@@ -33,6 +34,9 @@ PARAM_NAMES = (
     "revisit", "min_lap", "patience", "loop_gain", "sample_every", "horizon",
     # boundary following (kernels.escape)
     "offset", "search", "near", "reach", "leave_gain", "free", "follow_time", "room", "tight", "ahead", "replan",
+    # the route guidance (kernels.guidance; off unless ``guide``): grid cell, look-ahead, re-plan
+    # period, straight-line reach, and the room kept, widest first (contiguous)
+    "guide", "guide_cell", "guide_ahead", "guide_replan", "guide_direct", "guide_room", "guide_narrow", "guide_bare",
     # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     "places_slots", "points_slots", "cell_slots", "grow",
 )
@@ -40,6 +44,7 @@ PARAM_NAMES = (
  V_BACK, BACK_DISTANCE, MARGIN, V_TURN, TURN_ANGLE, LANE, RECOVERY_TIME,
  REVISIT, MIN_LAP, PATIENCE, LOOP_GAIN, SAMPLE_EVERY, HORIZON,
  OFFSET, SEARCH, NEAR, REACH, LEAVE_GAIN, FREE, FOLLOW_TIME, ROOM, TIGHT, AHEAD, REPLAN,
+ GUIDE, GUIDE_CELL, GUIDE_AHEAD, GUIDE_REPLAN, GUIDE_DIRECT, GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE,
  PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
 TABLES_AT = len(PARAM_NAMES)
 STATE_NAMES = (
@@ -51,10 +56,12 @@ STATE_NAMES = (
     "best", "t_best", "first", "places",
     # boundary following: on, side, side that failed, hit distance, start, route point, when planned
     "active", "side", "failed", "hit", "t_follow", "route_x", "route_y", "planned",
+    # route guidance: the route point given (NaN: the goal itself), when planned
+    "guide_x", "guide_y", "guide_planned",
 )
 (STOPPED, COUNT, PHASE, T_RECOVERY, START_X, START_Y, BACK_STEERING, BACK_SPEED, HEADING, FLIP, LAST_X, LAST_Y,
  BEST, T_BEST, FIRST, PLACES_KEPT, ACTIVE, SIDE, FAILED, HIT, T_FOLLOW, ROUTE_X, ROUTE_Y,
- PLANNED) = range(len(STATE_NAMES))
+ PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED) = range(len(STATE_NAMES))
 PLACES_AT = len(STATE_NAMES)
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
 
@@ -84,8 +91,8 @@ def fresh_state(n: int, params: np.ndarray) -> np.ndarray:
     """The ``state`` of ``n`` robots at the start of an episode, sized by ``params``."""
     width = PLACES_AT + 3 * int(params[PLACES_SLOTS]) + 2 * int(params[POINTS_SLOTS]) + int(params[CELL_SLOTS])
     state = np.zeros((n, width))
-    state[:, [LAST_X, LAST_Y, T_BEST, ROUTE_X, ROUTE_Y]] = np.nan
-    state[:, BEST], state[:, PLANNED] = np.inf, -np.inf
+    state[:, [LAST_X, LAST_Y, T_BEST, ROUTE_X, ROUTE_Y, GUIDE_X, GUIDE_Y]] = np.nan
+    state[:, BEST], state[:, [PLANNED, GUIDE_PLANNED]] = np.inf, -np.inf
     return state
 
 

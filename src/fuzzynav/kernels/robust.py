@@ -1,8 +1,11 @@
 """``act`` of the default navigators, compiled: any compiled navigator
 (:func:`fuzzynav.kernels.navigators.act_one`) inside the recovery and loop-escape layers of
-:mod:`fuzzynav.control.robust`. The navigator runs every step (its hit memory and behaviour
-switch stay current); a layer in charge replaces its command. Behaviour codes are the
-navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``, ``BF``.
+:mod:`fuzzynav.control.robust`, optionally aimed by the route guidance
+(:mod:`fuzzynav.kernels.guidance`: the navigator's target, the goal or the loop escape's virtual
+goal, replaced by a point towards the route round what was seen). The navigator runs every step
+(its hit memory and behaviour switch stay current); a layer in charge replaces its command.
+Behaviour codes are the navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``,
+``BF``.
 """
 
 from __future__ import annotations
@@ -10,9 +13,10 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels import escape, navigators, recovery, sightings
-from fuzzynav.kernels.layers import (ACTIVE, COUNT, ESCAPE, GROW, MAX_REVERSE_SPEED, N_LABELS, NO_PHASE, ON, PHASE,
-                                     RADIUS, RECOVERY, STOP_WAIT, STOPPED, TABLES_AT, cells_of, places_of, points_of)
+from fuzzynav.kernels import escape, guidance, navigators, recovery, sightings
+from fuzzynav.kernels.layers import (ACTIVE, COUNT, ESCAPE, GROW, GUIDE, MAX_REVERSE_SPEED, N_LABELS, NO_PHASE, ON,
+                                     PHASE, RADIUS, RECOVERY, STOP_WAIT, STOPPED, TABLES_AT, cells_of, places_of,
+                                     points_of)
 from fuzzynav.kernels.motion import wrap
 
 
@@ -46,6 +50,8 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
         if state[ACTIVE] != 0.0:
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
+    if p[GUIDE] != 0.0:
+        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, aim_x, aim_y, t, p[RADIUS])
     steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
                                                ranges, angles, max_range, dt, d_o, b_o)
     labels = int(p[N_LABELS])

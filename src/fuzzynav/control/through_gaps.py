@@ -1,0 +1,44 @@
+"""The gap-aware five-behaviour navigator inside the recovery and loop-escape layers, guided by
+a route round the obstacles seen so far: ``fuzzy-5b-gap-robust``.
+
+- The inner navigator is the compiled ``fuzzy-5b-gap`` (:mod:`fuzzynav.control.five_behaviours`:
+  the lidar ring, readings by sector, VFH+-style gap finding with follow-the-gap's choice nearest
+  to the goal).
+- The route guidance (:mod:`fuzzynav.kernels.guidance`) aims it along the shortest route to the
+  goal round the obstacle points remembered so far, unseen space assumed free (the freespace
+  assumption of D*, Stentz 1994): the navigator is given a goal in the direction of the point
+  ``guide_ahead`` m along that route, at the goal's distance, so Table IV.1 and the gap finder
+  steer towards the passage the route takes instead of the straight line's, while the fuzzy
+  behaviours keep the body off what the memory has not seen yet. This is the split of the ROS
+  navigation stack that the BARN challenge's DWA baseline runs (a global planner on the sensed
+  costmap, a local controller following it). The route keeps the body's radius plus
+  ``guide_room``, else ``guide_narrow``, else ``guide_bare`` (none: the real goal); where the
+  straight line to the goal keeps the radius plus ``guide_room`` from every remembered point for
+  ``guide_direct`` m, the goal itself is given.
+- :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
+  (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
+  escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
+  while it follows a boundary.
+
+All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernels.robust`).
+"""
+
+from __future__ import annotations
+
+from fuzzynav.control.robust import RobustNavigator
+
+GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_direct": 3.0,
+            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0}  # m, m, s, m, m, m, m
+
+
+def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
+                        **options) -> RobustNavigator:
+    """``fuzzy-5b-gap-robust``: ``fuzzy-5b-gap`` (``options`` go to it), route-guided
+    (``guidance``: values replacing those of :data:`GUIDANCE`), with recovery and loop escape
+    (either can be switched off)."""
+    from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
+
+    navigator = FiveBehaviourNavigator(gap=True, **options)
+    navigator.name = "fuzzy-5b-gap-robust"
+    return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
+                           guidance={**GUIDANCE, **(guidance or {})})

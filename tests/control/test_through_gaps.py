@@ -1,0 +1,76 @@
+"""The gap-aware navigators inside the recovery and loop-escape layers, guided by a route round
+what they have seen (fuzzynav.control.through_gaps, kernels.guidance): they back out of a pocket
+of posts too narrow to turn in, and the route leads round a wall of posts to its opening."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.errors import InputError
+from fuzzynav.kernels import guidance, layers
+from fuzzynav.sim import run_episode
+from fuzzynav.world.scenario import scenario_from_dict
+
+POST = 0.075
+
+
+def pocket() -> dict:
+    """A dead end of 15 cm posts 0.3 m apart, 1.6 m wide (too narrow for a full-lock turn of the
+    car, 2 × 0.69 m + its 0.6 m body), the robot inside facing its closed end, the goal beyond it."""
+    left, right, end = 9.2, 10.8, 9.6
+    posts = [(x, y) for y in np.arange(7.0, end, 0.3) for x in (left, right)]
+    posts += [(float(x), end) for x in np.linspace(left, right, 7)]
+    return {"name": "pocket", "world": {"width": 20.0, "height": 20.0},
+            "robot": {"x": 10.0, "y": 7.6, "theta": float(np.pi / 2)}, "goal": {"x": 10.0, "y": 15.0},
+            "obstacles": [{"circle": {"center": [float(x), float(y)], "radius": POST}} for x, y in posts],
+            "max_time": 60.0}
+
+
+def test_the_combined_navigator_backs_out_of_a_pocket_and_reaches_the_goal():
+    world = scenario_from_dict(pocket())
+    stuck = run_episode(world, make_controller("fuzzy-5b-gap"), seed=0)
+    assert stuck.outcome == "timeout"  # forwards only, the gap navigator cannot leave
+    trace = run_episode(world, make_controller("fuzzy-5b-gap-robust"), seed=0)
+    assert trace.reached and not trace.collision
+    reversing = trace.speed < 0
+    assert reversing.any()
+    assert set(trace.behaviour[reversing].tolist()) == {"REC-BACK"}
+    assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
+
+
+def _aim(points, pose=(0.0, 0.0)) -> np.ndarray:
+    """The target fuzzy-5b-gap-robust's route guidance gives a robot at ``pose`` that has seen
+    ``points``, the goal at (0, 10), at its first plan."""
+    params = make_controller("fuzzy-5b-gap-robust").params
+    state = layers.fresh_state(1, params)[0]
+    points = np.asarray(points, dtype=float)
+    return np.array(guidance.aim(state, params, points, len(points), *pose, 0.0, 10.0, 0.0, params[layers.RADIUS]))
+
+
+@pytest.mark.parametrize("side", [1.0, -1.0])
+def test_route_guidance_leads_round_a_wall_of_posts_on_the_side_of_its_opening(side):
+    given = _aim([(side * x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])  # open beyond x = ±1
+    assert np.hypot(*given) == pytest.approx(10.0)  # the goal's distance kept
+    assert side * given[0] > 1.0  # towards the opening, not straight at the goal
+
+
+def test_route_guidance_gives_the_goal_where_the_straight_line_is_free():
+    given = _aim([(x, 2.0) for x in np.arange(-4.0, -0.99, 0.1)])  # left of the line only
+    np.testing.assert_allclose(given, [0.0, 10.0])
+
+
+def test_route_guidance_keeps_its_route_point_until_it_plans_again():
+    params = make_controller("fuzzy-5b-gap-robust").params
+    state = layers.fresh_state(1, params)[0]
+    wall = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
+    radius = params[layers.RADIUS]
+    first = guidance.aim(state, params, wall, len(wall), 0.0, 0.0, 0.0, 10.0, 0.0, radius)
+    assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 0.5, radius) == first  # not re-planned yet
+    assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
+
+
+def test_route_guidance_options_are_checked_and_off_in_the_default_navigator():
+    assert make_controller("fuzzy-5b").params[layers.GUIDE] == 0.0
+    assert make_controller("fuzzy-5b-gap-robust").params[layers.GUIDE] == 1.0
+    with pytest.raises(InputError, match="guide_lookahead"):
+        make_controller("fuzzy-5b-gap-robust", guidance={"guide_lookahead": 2.0})
