@@ -134,9 +134,6 @@ def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
             "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values())}
 
 
-
-
-
 def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
     """Figs V.11 / V.19 / V.27: N (a) and trapezoid (b) paths by tracker ``kind``, as in the
     thesis (solid) and with corner anticipation (dashed)."""
@@ -157,9 +154,6 @@ def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
                                  "anticipation": _numbers(m_anticipating, PATH_KEYS)}
     figure.suptitle(f"{TRACKERS[kind]} ({kind}): N and trapezoid paths")
     return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
-
-
-
 
 
 def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -194,9 +188,6 @@ def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
         ax.legend(loc="upper right", fontsize=7)
     return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
             **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
-
-
-
 
 
 def _overlay(ax, scenario, runs: dict, title: str) -> None:
