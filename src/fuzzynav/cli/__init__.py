@@ -1,7 +1,8 @@
 """Command line: ``fuzzynav <command> ...``.
 
 Each sub-command lives in its own module under :mod:`fuzzynav.cli` and exposes
-``register(subparsers)``, which adds its parser and sets ``func(args) -> int``. Bad input
+``register(subparsers)``, which declares it with :func:`fuzzynav.cli.arguments.command` (its
+parser, and the ``func(args) -> int`` it runs) and adds its arguments. Bad input
 raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the exit status is 2.
 """
 

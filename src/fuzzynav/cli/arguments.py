@@ -1,4 +1,5 @@
-"""Argument types shared by the sub-commands (not a sub-command itself).
+"""What the sub-commands share (not a sub-command itself): :func:`command`, which declares one,
+and the argument types.
 
 A bad value is an argparse error: usage and message on stderr, exit status 2, no traceback.
 """
@@ -6,6 +7,15 @@ A bad value is an argparse error: usage and message on stderr, exit status 2, no
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
+
+
+def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], **texts) -> argparse.ArgumentParser:
+    """The parser of sub-command ``name`` (``texts``: ``help``, ``description``… of ``add_parser``),
+    which runs ``run(args) -> exit status``; the caller adds its arguments."""
+    parser = subparsers.add_parser(name, **texts)
+    parser.set_defaults(func=run)
+    return parser
 
 
 def seed(text: str) -> int:

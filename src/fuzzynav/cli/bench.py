@@ -29,12 +29,11 @@ def _positive_int(text: str) -> int:
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "bench",
-        help="run navigators against each other on suites of worlds",
-        description="Run every controller on every world of the suites (x seeds), write runs.csv as runs "
-                    "finish, then rates with 95 %% Wilson intervals, medians, plots and index.html.",
-    )
+    parser = arguments.command(subparsers, "bench", run,
+                               help="run navigators against each other on suites of worlds",
+                               description="Run every controller on every world of the suites (x seeds), write "
+                                           "runs.csv as runs finish, then rates with 95 %% Wilson intervals, medians, "
+                                           "plots and index.html.")
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",
@@ -55,7 +54,6 @@ def register(subparsers) -> None:
     parser.add_argument("--gallery", type=arguments.seed, default=6, metavar="N",
                         help="failed runs drawn per controller (default 6, 0: none)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
-    parser.set_defaults(func=run)
 
 
 def _controllers(text: str) -> tuple[tuple[str, str], ...]:

@@ -17,6 +17,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from fuzzynav.cli import arguments
+
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
@@ -24,18 +26,15 @@ TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_r
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "demo",
-        help="run the thesis' controllers on the built-in scenarios (plots + metrics table)",
-        description=__doc__.split("\n\n")[1],
-    )
+    parser = arguments.command(subparsers, "demo", run,
+                               help="run the thesis' controllers on the built-in scenarios (plots + metrics table)",
+                               description=__doc__.split("\n\n")[1])
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out"), help="output folder")
     parser.add_argument("--scenario", action="append", metavar="NAME|FILE",
                         help="only this built-in scenario or scenario file (repeatable)")
     parser.add_argument("--controllers", metavar="A,B", type=lambda text: [n for n in text.split(",") if n],
                         help="run these controllers (comma-separated) instead of each scenario's own list")
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
-    parser.set_defaults(func=run)
 
 
 def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:

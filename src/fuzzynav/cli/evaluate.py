@@ -26,12 +26,10 @@ from fuzzynav.world.generate import KINDS
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "evaluate",
-        help="run a controller over N generated worlds",
-        description="Success / collision / timeout rates, mean time and path length of a controller "
-                    "over N seeded random worlds (solvable by construction).",
-    )
+    parser = arguments.command(subparsers, "evaluate", run,
+                               help="run a controller over N generated worlds",
+                               description="Success / collision / timeout rates, mean time and path length of a "
+                                           "controller over N seeded random worlds (solvable by construction).")
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--controller", metavar="NAME",
                         help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
@@ -47,7 +45,6 @@ def register(subparsers) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--save-failures", type=Path, metavar="DIR",
                         help="write each world not reached as DIR/<world>.yaml with its plot DIR/<world>.png")
-    parser.set_defaults(func=run)
 
 
 def run(args) -> int:

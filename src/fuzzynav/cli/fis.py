@@ -263,35 +263,32 @@ def register(subparsers) -> None:
     sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)
     target = "built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE or .json/.yaml/.fll/.fis file"
 
-    show = sub.add_parser("show", help="variables, terms and rule table")
+    show = arguments.command(sub, "show", _show, help="variables, terms and rule table")
     show.add_argument("system", help=target)
-    show.set_defaults(func=_show)
 
-    ev = sub.add_parser("eval", help="evaluate for one input (--input) or a CSV table (--csv)")
+    ev = arguments.command(sub, "eval", _eval, help="evaluate for one input (--input) or a CSV table (--csv)")
     ev.add_argument("system", help=target)
     ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
     ev.add_argument("--csv", metavar="IN.csv", help="CSV with one column per input ('-' = stdin)")
     ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
-    ev.set_defaults(func=_eval)
 
-    conv = sub.add_parser("convert", help="write the system as FLL, MATLAB .fis, JSON or YAML")
+    conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML")
     conv.add_argument("system", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True)
     conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
-    conv.set_defaults(func=_convert)
 
-    export = sub.add_parser("export-c", help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
-                            description="Write SYSTEM as a dependency-free C99 function (no heap): -o controller.c "
-                                        "and controller.h beside it.")
+    export = arguments.command(sub, "export-c", _export_c,
+                               help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
+                               description="Write SYSTEM as a dependency-free C99 function (no heap): "
+                                           "-o controller.c and controller.h beside it.")
     export.add_argument("system", help=target)
     export.add_argument("-o", "--output", required=True, metavar="FILE.c", help="the .c file (the .h goes beside it)")
     export.add_argument("--fixed", choices=FIXED_FORMATS, help="fixed-point arithmetic (default: double)")
     export.add_argument("--name", help="prefix of the C identifiers (default: the file's stem)")
-    export.set_defaults(func=_export_c)
 
-    plot = sub.add_parser("plot", help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)")
+    plot = arguments.command(sub, "plot", _plot,
+                             help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)")
     plot.add_argument("system", help=target)
     plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
     plot.add_argument("--output-variable", dest="surface_output", help="output drawn by --surface")
     plot.add_argument("-o", "--output", required=True, metavar="FILE.png", type=arguments.figure_path)
-    plot.set_defaults(func=_plot)

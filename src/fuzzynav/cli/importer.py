@@ -11,6 +11,7 @@ import json
 import sys
 from pathlib import Path
 
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
 
@@ -21,14 +22,13 @@ def register(subparsers) -> None:
         description="Convert worlds of a standard benchmark into scenario files (`fuzzynav bench DIR` runs them).",
     )
     formats = parser.add_subparsers(dest="format", metavar="FORMAT", required=True)
-    barn = formats.add_parser("barn", help="BARN worlds (Gazebo .world files of the BARN Challenge)",
-                              description="BARN worlds: posts become circles; the challenge's start, goal "
-                                          "(1 m tolerance), 100 s limit and optimal path (for its score).")
+    barn = arguments.command(formats, "barn", run, help="BARN worlds (Gazebo .world files of the BARN Challenge)",
+                             description="BARN worlds: posts become circles; the challenge's start, goal "
+                                         "(1 m tolerance), 100 s limit and optimal path (for its score).")
     barn.add_argument("worlds", nargs="+", metavar="WORLD.world", help="BARN world files (world_N.world)")
     barn.add_argument("--out", required=True, metavar="DIR", help="folder for the scenario files")
     barn.add_argument("--scale", type=float, default=1.0, metavar="S",
                       help="multiply every length by S (default 1: BARN's true size)")
-    barn.set_defaults(func=run)
 
 
 def run(args) -> int:

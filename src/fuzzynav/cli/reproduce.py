@@ -17,19 +17,17 @@ from fuzzynav.catalog import experiments as registry
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "reproduce",
-        help="reproduce a figure or table of the thesis",
-        description="Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and <ID>.json numbers, "
-                    "DIR/index.html the thesis' claim beside our figure for each.",
-    )
+    parser = arguments.command(subparsers, "reproduce", run,
+                               help="reproduce a figure or table of the thesis",
+                               description="Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and "
+                                           "<ID>.json numbers, DIR/index.html the thesis' claim beside our figure for "
+                                           "each.")
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--quiet", action="store_true", help="no progress bars")
-    parser.set_defaults(func=run)
 
 
 def run(args) -> int:

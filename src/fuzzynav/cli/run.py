@@ -23,15 +23,13 @@ SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 
 
 def register(subparsers) -> None:
     width = max(map(len, available()))
-    parser = subparsers.add_parser(
-        "run",
-        help="run a controller on a scenario",
-        description="Run one episode of a controller on a scenario file or built-in scenario "
-                    "(`fuzzynav scenarios` lists the built-ins).",
-        epilog="controllers (--controller NAME):\n" + "\n".join(f"  {name:{width}s}  {text}"
-                                                               for name, text in available().items()),
-        formatter_class=argparse.RawDescriptionHelpFormatter,
-    )
+    parser = arguments.command(subparsers, "run", run,
+                               help="run a controller on a scenario",
+                               description="Run one episode of a controller on a scenario file or built-in scenario "
+                                           "(`fuzzynav scenarios` lists the built-ins).",
+                               epilog="controllers (--controller NAME):\n"
+                               + "\n".join(f"  {name:{width}s}  {text}" for name, text in available().items()),
+                               formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("scenario", metavar="SCENARIO",
                         help="scenario YAML file, built-in name, or generated world (e.g. mixed-0-009)")
     source = parser.add_mutually_exclusive_group(required=True)
@@ -50,7 +48,6 @@ def register(subparsers) -> None:
     parser.add_argument("--size", type=int, default=400, metavar="PX",
                         help="width and height of the --animate GIF in pixels (default 400)")
     parser.add_argument("--fps", type=float, default=10.0, help="frames per second of the --animate GIF (default 10)")
-    parser.set_defaults(func=run)
 
 
 def run(args) -> int:

@@ -8,18 +8,16 @@ from __future__ import annotations
 
 import difflib
 
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 from fuzzynav.world.scenario import BUILTIN_DIR, list_scenarios
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "scenarios",
-        help="list the built-in scenarios",
-        description="List the built-in scenarios, which `fuzzynav run NAME` runs by name.",
-    )
+    parser = arguments.command(subparsers, "scenarios", run,
+                               help="list the built-in scenarios",
+                               description="List the built-in scenarios, which `fuzzynav run NAME` runs by name.")
     parser.add_argument("--show", metavar="NAME", help="print the YAML of one built-in scenario")
-    parser.set_defaults(func=run)
 
 
 def run(args) -> int:

@@ -14,12 +14,10 @@ from fuzzynav.storage import document_format
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser(
-        "train",
-        help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
-        description="Train a learning controller and write its model file (atomically). Tasks: "
-        + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()),
-    )
+    parser = arguments.command(subparsers, "train", run,
+                               help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
+                               description="Train a learning controller and write its model file (atomically). Tasks: "
+                               + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()))
     parser.add_argument("task", metavar="TASK", help="training task name")
     parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
@@ -29,7 +27,6 @@ def register(subparsers) -> None:
     parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
-    parser.set_defaults(func=run)
 
 
 def run(args) -> int:

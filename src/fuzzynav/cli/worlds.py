@@ -16,14 +16,13 @@ def register(subparsers) -> None:
     parser = subparsers.add_parser("worlds", help="write generated worlds as scenario files",
                                    description="Generated worlds (the ones `fuzzynav evaluate` runs) as files.")
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
-    generate = actions.add_parser(
-        "generate", help="write N generated worlds of a family as scenario files",
-        description=__doc__.split("\n\n")[1])
+    generate = arguments.command(actions, "generate", run,
+                                 help="write N generated worlds of a family as scenario files",
+                                 description=__doc__.split("\n\n")[1])
     generate.add_argument("family", metavar="FAMILY", help="world family, e.g. circles or mixed (an unknown name lists them all)")
     generate.add_argument("--n", type=int, default=10, help="number of worlds (default 10)")
     generate.add_argument("--seed", type=arguments.seed, default=0, help="world seed (default 0)")
     generate.add_argument("--out", type=Path, default=Path("worlds"), help="output folder (default worlds/)")
-    generate.set_defaults(func=run)
 
 
 def run(args) -> int:

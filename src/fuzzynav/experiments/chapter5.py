@@ -50,6 +50,17 @@ def _save(figure: Figure, out_dir, name: str) -> str:
     return save_figure(figure, Path(out_dir) / name)
 
 
+def _figure(doc: str, draw, *arguments):
+    """The registry function of a figure that ``draw(*arguments, out_dir, seed)`` makes (its
+    episodes are short, so ``quick`` changes nothing), with docstring ``doc``."""
+
+    def figure(out_dir, quick: bool = False, seed: int = 0) -> dict:
+        return draw(*arguments, out_dir, seed)
+
+    figure.__doc__ = doc
+    return figure
+
+
 def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig V.7: control surface of Table V.1."""
     from fuzzynav.fuzzy.plot import plot_surface, surface
@@ -123,21 +134,6 @@ def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
             "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values())}
 
 
-def fig_v_10(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.10: straight lines T1…T6 by the fuzzy tracker CF."""
-    return _star_lines("fuzzy-tracker", "fig-V-10", out_dir, seed)
-
-
-def fig_v_18(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.18: straight lines T1…T6 by the neural tracker CN."""
-    return _star_lines("neural-tracker", "fig-V-18", out_dir, seed)
-
-
-def fig_v_26(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.26: straight lines T1…T6 by the ANFIS tracker CNF."""
-    return _star_lines("anfis-tracker", "fig-V-26", out_dir, seed)
-
-
 def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
     """Figs V.11 / V.19 / V.27: N (a) and trapezoid (b) paths by tracker ``kind``, as in the
     thesis (solid) and with corner anticipation (dashed)."""
@@ -158,21 +154,6 @@ def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
                                  "anticipation": _numbers(m_anticipating, PATH_KEYS)}
     figure.suptitle(f"{TRACKERS[kind]} ({kind}): N and trapezoid paths")
     return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
-
-
-def fig_v_11(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.11: N and trapezoid paths by the fuzzy tracker CF."""
-    return _polygon_paths("fuzzy-tracker", "fig-V-11", out_dir, seed)
-
-
-def fig_v_19(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.19: N and trapezoid paths by the neural tracker CN."""
-    return _polygon_paths("neural-tracker", "fig-V-19", out_dir, seed)
-
-
-def fig_v_27(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.27: N and trapezoid paths by the ANFIS tracker CNF."""
-    return _polygon_paths("anfis-tracker", "fig-V-27", out_dir, seed)
 
 
 def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -207,21 +188,6 @@ def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
         ax.legend(loc="upper right", fontsize=7)
     return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
             **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
-
-
-def fig_v_29(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.29: pursuit of a target moving on a straight line."""
-    return _pursuit("fig-V-29", out_dir, seed)
-
-
-def fig_v_30(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.30: pursuit of a target moving on a circle."""
-    return _pursuit("fig-V-30", out_dir, seed)
-
-
-def fig_v_31(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.31: pursuit of a target moving on a sinusoid."""
-    return _pursuit("fig-V-31", out_dir, seed)
 
 
 def _overlay(ax, scenario, runs: dict, title: str) -> None:
@@ -275,3 +241,15 @@ def fig_v_34(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Fig V.34: a circular and a sinusoidal target, CF, CN, CNF overlaid."""
     return _two_pursuits("fig-V-34", ("fig-V-34a", "fig-V-34b"),
                          ("target on a circle", "target on a sinusoid"), out_dir, seed)
+
+
+# the figures one function above draws, per tracker or per scenario
+fig_v_10 = _figure("Fig V.10: lines T1…T6, fuzzy tracker CF.", _star_lines, "fuzzy-tracker", "fig-V-10")
+fig_v_18 = _figure("Fig V.18: lines T1…T6, neural tracker CN.", _star_lines, "neural-tracker", "fig-V-18")
+fig_v_26 = _figure("Fig V.26: lines T1…T6, ANFIS tracker CNF.", _star_lines, "anfis-tracker", "fig-V-26")
+fig_v_11 = _figure("Fig V.11: N and trapezoid paths, fuzzy tracker CF.", _polygon_paths, "fuzzy-tracker", "fig-V-11")
+fig_v_19 = _figure("Fig V.19: N and trapezoid paths, neural tracker CN.", _polygon_paths, "neural-tracker", "fig-V-19")
+fig_v_27 = _figure("Fig V.27: N and trapezoid paths, ANFIS tracker CNF.", _polygon_paths, "anfis-tracker", "fig-V-27")
+fig_v_29 = _figure("Fig V.29: pursuit of a target moving on a straight line.", _pursuit, "fig-V-29")
+fig_v_30 = _figure("Fig V.30: pursuit of a target moving on a circle.", _pursuit, "fig-V-30")
+fig_v_31 = _figure("Fig V.31: pursuit of a target moving on a sinusoid.", _pursuit, "fig-V-31")

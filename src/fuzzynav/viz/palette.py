@@ -10,18 +10,22 @@ from __future__ import annotations
 
 import zlib
 
-# label -> (colour, legend text: the code and what it means, with its table in the thesis)
+# a behaviour's code -> (colour, what it means, with its table in the thesis): legend "CODE: meaning"
+_CODES: dict[str, tuple[str, str]] = {
+    "GSB": ("#1f77b4", "goal seeking (Table IV.1)"),
+    "GSB+VRB": ("#17becf", "goal seeking, speed reduced near obstacles (VRB, Table IV.6)"),
+    "FOA+VRB": ("#d62728", "front obstacle avoidance (Table IV.3) + VRB"),
+    "ROA+VRB": ("#ff7f0e", "obstacle on the right, turn left (Table IV.4) + VRB"),
+    "LOA+VRB": ("#9467bd", "obstacle on the left, turn right (Table IV.5) + VRB"),
+    "OA": ("#d62728", "obstacle avoidance by distance and angle (Table IV.2)"),
+    "WF": ("#8c564b", "wall following (Table VI.2)"),
+    "REC-BACK": ("#e7298a", "recovery, backing out on a safe arc after the safety stop held"),
+    "REC-TURN": ("#a6761d", "recovery, turning the other way before handing back"),
+    "BF": ("#000080", "loop escape, following the boundary until the goal is free (Bug algorithms)"),
+}
+# label -> (colour, legend text): the codes, then the labels that are words already
 BEHAVIOURS: dict[str, tuple[str, str]] = {
-    "GSB": ("#1f77b4", "GSB: goal seeking (Table IV.1)"),
-    "GSB+VRB": ("#17becf", "GSB+VRB: goal seeking, speed reduced near obstacles (VRB, Table IV.6)"),
-    "FOA+VRB": ("#d62728", "FOA+VRB: front obstacle avoidance (Table IV.3) + VRB"),
-    "ROA+VRB": ("#ff7f0e", "ROA+VRB: obstacle on the right, turn left (Table IV.4) + VRB"),
-    "LOA+VRB": ("#9467bd", "LOA+VRB: obstacle on the left, turn right (Table IV.5) + VRB"),
-    "OA": ("#d62728", "OA: obstacle avoidance by distance and angle (Table IV.2)"),
-    "WF": ("#8c564b", "WF: wall following (Table VI.2)"),
-    "REC-BACK": ("#e7298a", "REC-BACK: recovery, backing out on a safe arc after the safety stop held"),
-    "REC-TURN": ("#a6761d", "REC-TURN: recovery, turning the other way before handing back"),
-    "BF": ("#000080", "BF: loop escape, following the boundary until the goal is free (Bug algorithms)"),
+    **{code: (colour, f"{code}: {meaning}") for code, (colour, meaning) in _CODES.items()},
     "track": ("#1f77b4", "tracking the path / target"),
     "goal seeking": ("#1f77b4", "goal seeking (learned rules)"),
     "obstacle avoidance": ("#d62728", "obstacle avoidance (learned rules)"),
