@@ -137,7 +137,7 @@ class FQLAgent:
 
         ``env`` is a :class:`~fuzzynav.gym.vector.FuzzynavVectorEnv` of the agent's task with
         continuous actions (``num_envs=1`` for one robot); ``callback(agent, steps)`` is called
-        after every vector step (e.g. to evaluate).
+        after every vector step (e.g. to evaluate); ``episodes_`` counts the episodes finished so far.
         """
         from fuzzynav.gym.vector import FuzzynavVectorEnv
 
@@ -150,7 +150,7 @@ class FQLAgent:
         obs, _ = env.reset(seed=seed)
         values = self.learner_.begin(self.design.features(obs), rng)
         fresh = np.zeros(batch, dtype=bool)  # the step that resets a row: no transition to learn
-        steps = finished = 0
+        steps = finished = self.episodes_ = 0
         while steps < total_steps:
             obs, _, terminated, truncated, info = env.step(self._env_action(values))
             heads = info["reward_heads"]
@@ -159,6 +159,7 @@ class FQLAgent:
             steps += int((~fresh).sum())
             fresh = terminated | truncated
             finished += int(fresh.sum())
+            self.episodes_ = finished
             self.learner_.episode = finished // batch  # the exploration clock: one tick per N episodes
             if callback is not None:
                 callback(self, steps)
