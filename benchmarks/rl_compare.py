@@ -11,10 +11,13 @@ denser early on) its greedy policy runs the same held-out episodes (:func:`fuzzy
   evaluation on the first 100 worlds of ``world_seed`` 1 — worlds never seen in training.
 
 PPO and SAC act in the continuous Box, DQN in the Discrete set of the thesis' candidate actions,
-FQL through :class:`fuzzynav.gym.fql_agent.FQLAgent`. PPO and FQL gather with 8 robots in
+FQL through :class:`fuzzynav.gym.fql_agent.FQLAgent` — on obstacle avoidance the thesis' method
+(:mod:`fuzzynav.gym.fql_avoid`: the avoider inside its goal navigator, from a-priori
+conclusions), so its success before any learning is that of the priors and the navigator. PPO and FQL gather with 8 robots in
 parallel, SAC and DQN with one (their usual set-up); hyper-parameters are the library's defaults
 except where the small budget needs otherwise (listed in :data:`SB3_SETTINGS`). Wall time is
-the training time alone (evaluations excluded), one thread for torch.
+the training time alone (evaluations excluded), one thread for torch. Every evaluation also
+records the training episodes finished so far, for the episodes to 90 %.
 
 Needs the ``sb3`` extra (stable-baselines3 and a CPU torch). Writes ``OUT.json`` (every curve
 of every seed), ``OUT.png`` (success against steps, mean ± std over seeds) and prints the
