@@ -99,7 +99,10 @@ def run_fql(task, seed, steps, checkpoints, held):
             clock.record(done, lambda: evaluate(agent.predict, task, False, held))
 
     env = FuzzynavVectorEnv(N_PARALLEL, task, **TRAIN_OPTIONS[task])
-    FQLAgent(task).learn(env, steps, seed=100 * seed, callback=checkpoint)
+    agent = FQLAgent(task)
+    if clock.due(0):  # the untrained controller: learn() of 0 steps sets up the a-priori rules
+        clock.record(0, lambda: evaluate(agent.learn(env, 0, seed=100 * seed).predict, task, False, held))
+    agent.learn(env, steps, seed=100 * seed, callback=checkpoint)  # from scratch
     return clock.curve, clock.train
 
 
@@ -126,6 +129,8 @@ def run_sb3(algo, task, seed, steps, checkpoints, held):
                     lambda o: model.predict(o, deterministic=True)[0], task, discrete, held))
             return True
 
+    if clock.due(0):
+        clock.record(0, lambda: evaluate(lambda o: model.predict(o, deterministic=True)[0], task, discrete, held))
     model.learn(steps, callback=Checkpoints())
     return clock.curve, clock.train
 
@@ -195,7 +200,8 @@ def main(argv=None) -> None:
     parser.add_argument("--first-seed", type=int, default=0, help="run seeds FIRST … FIRST + SEEDS − 1")
     parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")
     parser.add_argument("--checkpoints", type=int, nargs="+", default=list(CHECKPOINTS),
-                        help="step counts to evaluate at (those beyond --steps are dropped; --steps is added)")
+                        help="step counts to evaluate at (those beyond --steps are dropped; --steps is added; "
+                             "0: the untrained policy, e.g. FQL's a-priori rules)")
     parser.add_argument("--out", type=Path, default=Path("rl_compare"), help="writes OUT.json and OUT.png")
     parser.add_argument("--merge", type=Path, nargs="+", metavar="JSON",
                         help="only combine the results of earlier runs (e.g. one per task or agent) into OUT")
