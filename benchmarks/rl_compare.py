@@ -11,10 +11,13 @@ denser early on) its greedy policy runs the same held-out episodes (:func:`fuzzy
   evaluation on the first 100 worlds of ``world_seed`` 1 — worlds never seen in training.
 
 PPO and SAC act in the continuous Box, DQN in the Discrete set of the thesis' candidate actions,
-FQL through :class:`fuzzynav.gym.fql_agent.FQLAgent`. PPO and FQL gather with 8 robots in
+FQL through :class:`fuzzynav.gym.fql_agent.FQLAgent` — on obstacle avoidance the thesis' method
+(:mod:`fuzzynav.gym.fql_avoid`: the avoider inside its goal navigator, from a-priori
+conclusions), so its success before any learning is that of the priors and the navigator. PPO and FQL gather with 8 robots in
 parallel, SAC and DQN with one (their usual set-up); hyper-parameters are the library's defaults
 except where the small budget needs otherwise (listed in :data:`SB3_SETTINGS`). Wall time is
-the training time alone (evaluations excluded), one thread for torch.
+the training time alone (evaluations excluded), one thread for torch. Every evaluation also
+records the training episodes finished so far, for the episodes to 90 %.
 
 Needs the ``sb3`` extra (stable-baselines3 and a CPU torch). Writes ``OUT.json`` (every curve
 of every seed), ``OUT.png`` (success against steps, mean ± std over seeds) and prints the
@@ -65,13 +68,15 @@ def evaluate(policy, task: str, discrete: bool, held: dict) -> float:
 
 
 class Clock:
-    """Training time between evaluations, and the step counts still to evaluate at."""
+    """Training time between evaluations, the step counts still to evaluate at, and the number of
+    training episodes finished so far (``episodes``, counted by the caller)."""
 
     def __init__(self, checkpoints):
         self.pending = list(checkpoints)
         self.train = 0.0
         self.since = time.perf_counter()
-        self.curve = []
+        self.curve = []  # (environment steps, finished training episodes, held-out success)
+        self.episodes = 0
 
     def due(self, steps: int) -> bool:
         return bool(self.pending) and steps >= self.pending[0]
@@ -79,7 +84,7 @@ class Clock:
     def record(self, steps: int, success) -> None:
         """Stop the training clock, evaluate (``success()``), restart the clock."""
         self.train += time.perf_counter() - self.since
-        self.curve.append((int(steps), success()))
+        self.curve.append((int(steps), int(self.episodes), success()))
         while self.pending and steps >= self.pending[0]:
             self.pending.pop(0)
         self.since = time.perf_counter()
@@ -89,11 +94,15 @@ def run_fql(task, seed, steps, checkpoints, held):
     clock = Clock(checkpoints)
 
     def checkpoint(agent, done):
+        clock.episodes = agent.episodes_
         if clock.due(done):
             clock.record(done, lambda: evaluate(agent.predict, task, False, held))
 
     env = FuzzynavVectorEnv(N_PARALLEL, task, **TRAIN_OPTIONS[task])
-    FQLAgent(task).learn(env, steps, seed=100 * seed, callback=checkpoint)
+    agent = FQLAgent(task)
+    if clock.due(0):  # the untrained controller: learn() of 0 steps sets up the a-priori rules
+        clock.record(0, lambda: evaluate(agent.learn(env, 0, seed=100 * seed).predict, task, False, held))
+    agent.learn(env, steps, seed=100 * seed, callback=checkpoint)  # from scratch
     return clock.curve, clock.train
 
 
@@ -114,39 +123,46 @@ def run_sb3(algo, task, seed, steps, checkpoints, held):
 
     class Checkpoints(BaseCallback):
         def _on_step(self):
+            clock.episodes += int(np.sum(self.locals["dones"]))
             if clock.due(self.num_timesteps):
                 clock.record(self.num_timesteps, lambda: evaluate(
                     lambda o: model.predict(o, deterministic=True)[0], task, discrete, held))
             return True
 
+    if clock.due(0):
+        clock.record(0, lambda: evaluate(lambda o: model.predict(o, deterministic=True)[0], task, discrete, held))
     model.learn(steps, callback=Checkpoints())
     return clock.curve, clock.train
 
 
-def steps_to_target(curve, target=TARGET):
-    """First evaluated step count with success ≥ ``target`` (None if never)."""
-    return next((s for s, success in curve if success >= target), None)
+def reach_target(curve, target=TARGET):
+    """(steps, training episodes) at the first evaluation with success ≥ ``target`` (None if never)."""
+    return next(((steps, episodes) for steps, episodes, success in curve if success >= target), None)
 
 
 def summarise(runs: list[dict]) -> dict:
-    finals = np.array([r["curve"][-1][1] for r in runs])
-    reached = [steps_to_target(r["curve"]) for r in runs]
-    hit = [s for s in reached if s is not None]
+    """Final success (mean, std over seeds) and the median steps / episodes to 90 % over the seeds
+    that reach it (reported only when most seeds do)."""
+    finals = np.array([r["curve"][-1][2] for r in runs])
+    hit = [point for point in (reach_target(r["curve"]) for r in runs) if point is not None]
+    most = len(hit) * 2 > len(runs)
     return {"final_mean": float(finals.mean()), "final_std": float(finals.std()),
-            "steps_to_90_median": float(np.median(hit)) if len(hit) * 2 > len(runs) else None,
+            "steps_to_90_median": float(np.median([s for s, _ in hit])) if most else None,
+            "episodes_to_90_median": float(np.median([e for _, e in hit])) if most else None,
             "seeds_reaching_90": len(hit), "seeds": len(runs),
             "wall_time_mean_s": float(np.mean([r["train_seconds"] for r in runs]))}
 
 
 def table(results: dict) -> str:
-    lines = ["| task | agent | steps to 90 % (median) | seeds reaching 90 % | final success (mean ± std) "
-             "| train time (s) |",
-             "| --- | --- | --- | --- | --- | --- |"]
+    lines = ["| task | agent | episodes to 90 % (median) | steps to 90 % (median) | seeds reaching 90 % "
+             "| final success (mean ± std) | train time (s) |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
     for task, algos in results.items():
         for algo, runs in algos.items():
             s = summarise(runs)
-            median = "—" if s["steps_to_90_median"] is None else f"{s['steps_to_90_median']:,.0f}"
-            lines.append(f"| {task} | {algo.upper()} | {median} | {s['seeds_reaching_90']}/{s['seeds']} | "
+            steps, episodes = ("—" if s[key] is None else f"{s[key]:,.0f}"
+                               for key in ("steps_to_90_median", "episodes_to_90_median"))
+            lines.append(f"| {task} | {algo.upper()} | {episodes} | {steps} | {s['seeds_reaching_90']}/{s['seeds']} | "
                          f"{s['final_mean']:.2f} ± {s['final_std']:.2f} | {s['wall_time_mean_s']:.0f} |")
     return "\n".join(lines)
 
@@ -160,8 +176,8 @@ def plot(results: dict, path: Path) -> None:
     figure, axes = plt.subplots(1, len(results), figsize=(6.0 * len(results), 4.0), squeeze=False)
     for ax, (task, algos) in zip(axes[0], results.items()):
         for algo, runs in algos.items():
-            steps = np.array([s for s, _ in runs[0]["curve"]])
-            success = np.array([[v for _, v in r["curve"]][: len(steps)] for r in runs])
+            steps = np.array([point[0] for point in runs[0]["curve"]])
+            success = np.array([[point[2] for point in r["curve"]][: len(steps)] for r in runs])
             mean, std = success.mean(axis=0), success.std(axis=0)
             ax.plot(steps, mean, label=algo.upper())
             ax.fill_between(steps, mean - std, mean + std, alpha=0.2)
@@ -184,7 +200,8 @@ def main(argv=None) -> None:
     parser.add_argument("--first-seed", type=int, default=0, help="run seeds FIRST … FIRST + SEEDS − 1")
     parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")
     parser.add_argument("--checkpoints", type=int, nargs="+", default=list(CHECKPOINTS),
-                        help="step counts to evaluate at (those beyond --steps are dropped; --steps is added)")
+                        help="step counts to evaluate at (those beyond --steps are dropped; --steps is added; "
+                             "0: the untrained policy, e.g. FQL's a-priori rules)")
     parser.add_argument("--out", type=Path, default=Path("rl_compare"), help="writes OUT.json and OUT.png")
     parser.add_argument("--merge", type=Path, nargs="+", metavar="JSON",
                         help="only combine the results of earlier runs (e.g. one per task or agent) into OUT")
@@ -214,8 +231,8 @@ def main(argv=None) -> None:
                 else:
                     curve, seconds = run_sb3(algo, task, seed, args.steps, checkpoints, held)
                 results[task][algo].append({"seed": seed, "curve": curve, "train_seconds": seconds})
-                print(f"{task} {algo} seed {seed}: final success {curve[-1][1]:.2f}, "
-                      f"{steps_to_target(curve)} steps to 90 %, {seconds:.0f} s", flush=True)
+                print(f"{task} {algo} seed {seed}: final success {curve[-1][2]:.2f}, "
+                      f"(steps, episodes) to 90 %: {reach_target(curve)}, {seconds:.0f} s", flush=True)
                 partial = args.out.with_suffix(".json.tmp")
                 partial.write_text(json.dumps({"args": {k: str(v) for k, v in vars(args).items()},
                                                "results": results}, indent=1))

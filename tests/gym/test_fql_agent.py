@@ -48,7 +48,29 @@ def test_the_agent_refuses_a_discrete_or_foreign_environment():
         FQLAgent("goal").learn(FuzzynavVectorEnv(2, "goal", actions="discrete"), 10)
     with pytest.raises(InputError, match="continuous-action vector environment"):
         FQLAgent("goal").learn(FuzzynavVectorEnv(2, "avoid"), 10)
+    with pytest.raises(InputError, match="continuous-action vector environment"):
+        FQLAgent("avoid").learn(FuzzynavVectorEnv(2, "avoid", actions="discrete"), 10)
     with pytest.raises(InputError, match="task"):
         FQLAgent("swim")
     with pytest.raises(RuntimeError, match="learn"):
         FQLAgent("goal").predict(np.zeros((1, 2)))
+
+
+@pytest.mark.slow
+def test_fql_avoidance_is_the_thesis_avoider_inside_its_navigator_through_the_env():
+    """Steering (VI.20) then speed (VI.21) of the avoider's 14 rules, learned through the
+    environment's steps (7,500: past the early dip of the learning curve, README); the exported
+    model drives the simulator around obstacles to the goal."""
+    options = {"worlds": "circles", "n_worlds": 1000, "world_seed": 0}
+    agent = FQLAgent("avoid").learn(FuzzynavVectorEnv(8, "avoid", **options), 7500, seed=0)
+    assert agent.learning_.speed is not None and agent.episodes_ > 0  # both phases ran
+    system = agent.rule_base()
+    assert system.input_names == ["front", "right", "left", "open"] and system.output_names == ["alpha", "v"]
+    assert len(system.rules) == 14
+    assert set(np.round(system.compiled.values[:, 0], 9)) <= set(np.round(STEERING3, 9))
+    held_out = success_rate(agent.predict, "avoid", episodes=30, seed=10_000, worlds="circles", n_worlds=30,
+                            world_seed=1)
+    assert held_out["success"] >= 0.9, held_out
+    from fuzzynav.world.scenario import load_scenario
+
+    assert run_episode(load_scenario("fig-IV-22a"), agent.controller()).outcome == "reached"

@@ -59,3 +59,53 @@ def test_reset_on_given_scenarios():
         FuzzynavVectorEnv(3, "avoid").reset(seed=0, options={"scenarios": ["fig-IV-22a", "fig-IV-22b"]})
     with pytest.raises(InputError, match="num_envs"):
         FuzzynavVectorEnv(0, "goal")
+
+
+def test_each_robot_is_sensed_in_its_own_world_as_the_world_itself_answers():
+    """One compiled call for robots in different worlds (circles, polygons, walls, ellipses)
+    gives each robot the readings and clearance its own world's queries give."""
+    from fuzzynav.gym.core import RobotBatch
+    from fuzzynav.gym.sources import FamilySource, LayoutSource
+    from fuzzynav.gym.tasks import TASKS
+    from fuzzynav.robot.sensors import SensorRing
+
+    rng = np.random.default_rng(3)
+    scenarios = ([FamilySource(family, 20, world_seed=2).world(i) for family in ("mixed", "dense") for i in range(3)]
+                 + [LayoutSource("wall-course").draw(rng) for _ in range(2)])
+    batch = RobotBatch(len(scenarios), TASKS["avoid"])
+    batch.start(range(len(scenarios)), scenarios)
+    assert len({id(s.world) for s in scenarios}) == len(scenarios)
+    assert any(type(o).__name__ == "Ellipse" for s in scenarios for o in s.world.obstacles)
+    poses = np.column_stack([rng.uniform(0.5, 19.5, (len(scenarios), 2)), rng.uniform(-np.pi, np.pi, len(scenarios))])
+    batch.pose = poses
+    expected_ranges = np.array([SensorRing().read(s.world, p[None])[0] for s, p in zip(scenarios, poses)])
+    np.testing.assert_array_equal(batch._state(poses, batch.speed, batch.steering, batch.target).ranges, expected_ranges)
+    np.testing.assert_array_equal(batch.clearance(poses),
+                                  [s.world.clearance(p[None, :2])[0] for s, p in zip(scenarios, poses)])
+
+
+def test_waypoints_switch_as_the_path_task_says():
+    """The compiled waypoint switching of the batch follows TaskState (zone and passed rules)."""
+    from fuzzynav.gym.core import RobotBatch
+    from fuzzynav.gym.sources import RandomPaths
+    from fuzzynav.gym.tasks import TASKS
+    from fuzzynav.sim.tasks import TaskState
+
+    rng = np.random.default_rng(5)
+    scenarios = [RandomPaths().draw(rng) for _ in range(4)]
+    batch = RobotBatch(4, TASKS["path"])
+    batch.start(range(4), scenarios)
+    states = [TaskState(s, 1) for s in scenarios]
+    switches = 0
+    for _ in range(200):  # robots hop along their paths with noise
+        points = np.array([s.path.waypoints[min(t.waypoint_index[0], len(s.path.waypoints) - 1)]
+                           for s, t in zip(scenarios, states)]) + rng.normal(0.0, 0.4, (4, 2))
+        pose = np.column_stack([points, np.zeros(4)])
+        done, switched = batch._task_update(pose, np.ones(4, dtype=bool))
+        for i, t in enumerate(states):
+            before = t.waypoint_index[0]
+            assert done[i] == t.update(points[i:i + 1], 0.0, np.ones(1, dtype=bool))[0]
+            assert switched[i] == (t.waypoint_index[0] != before)
+            switches += switched[i]
+        np.testing.assert_array_equal(batch.target, [t.target()[0] for t in states])
+    assert switches >= 4

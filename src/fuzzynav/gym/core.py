@@ -7,10 +7,12 @@ command is clipped to the robot's limits, the tricycle steps (eq IV.2,
 :func:`fuzzynav.robot.tricycle.step`, one call for all robots), and the stop tests of
 :class:`~fuzzynav.sim.simulator.BatchSimulator` follow in its order — collision (footprint disc
 against obstacles and boundary, :meth:`~fuzzynav.world.world.World.clearance`), then the task
-(goal within its tolerance; a path's waypoints switched by :class:`~fuzzynav.sim.tasks.TaskState`).
-Sensing and collision tests are vectorised over the robots that share a world (one call per
-distinct world): robots in one world — an empty workspace, one scenario, a small pool — cost one
-call; robots in N different worlds cost N.
+(goal within its tolerance; a path's waypoints switched as :mod:`fuzzynav.sim.tasks` describes).
+Sensing, collision and waypoint tests run for all robots in one compiled call each, every robot in
+its own world: the packed scene arrays (:func:`fuzzynav.kernels.layout.pack`) of the distinct
+worlds are concatenated and each robot reads its own slice (:func:`fuzzynav.kernels.scene.nearest_worlds`,
+:func:`fuzzynav.kernels.beams.read_worlds`), as a path's set-up array for its waypoints
+(:func:`fuzzynav.kernels.step.task_update_rows`).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from dataclasses import replace
 import numpy as np
 
 from fuzzynav.control.learned import goal_inputs, side_distances
+from fuzzynav.kernels.layout import NEAREST_COLUMNS
 from fuzzynav.learn.envs.env import RobotState
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
@@ -38,7 +41,8 @@ class RobotBatch:
         self.sensors = sensors if sensors is not None else SensorRing()
         self.decision_steps = int(decision_steps)
         self.scenarios = [None] * self.n
-        self.paths: list[TaskState | None] = [None] * self.n
+        self.waypoint = np.zeros(self.n, dtype=np.int64)  # index of a path's current waypoint
+        self._setups = [None] * self.n  # a path row's set-up array for the waypoint kernel
         self.pose = np.zeros((self.n, 3))
         self.speed = np.zeros(self.n)
         self.steering = np.zeros(self.n)
@@ -46,24 +50,28 @@ class RobotBatch:
         self.tolerance = np.full(self.n, -np.inf)  # goal tolerance of the rows with a fixed goal
         self.forced_speed = np.full(self.n, np.nan)  # a path's constant speed (NaN: the agent's)
         self.state: RobotState | None = None
-        self._all_groups = None  # _groups() of every row, until an episode starts
+        self.scenes = self.scene_bounds = None  # the rows' worlds packed together (_pack_worlds)
+        self.path_setups = self.setup_bounds = None  # the path rows' set-up arrays packed together
 
     # -- episodes ----------------------------------------------------------------------------
     def start(self, rows, scenarios) -> None:
         """Begin new episodes in ``rows`` on ``scenarios`` (one each): start pose, zero command."""
-        self._all_groups = None
         for row, scenario in zip(rows, scenarios):
             self.scenarios[row] = scenario
             self.pose[row] = scenario.start
             self.speed[row] = self.steering[row] = 0.0
-            self.paths[row] = TaskState(scenario, 1) if scenario.task == "path" else None
-            self.forced_speed[row] = np.nan if self.paths[row] is None else self.paths[row].forced_speed
+            path = TaskState(scenario, 1) if scenario.task == "path" else None
+            self.forced_speed[row] = np.nan if path is None else path.forced_speed
+            self._setups[row] = None if path is None else path.setup(self.params.array(), 0.0, 0, [], 0.0)
+            self.waypoint[row] = 0
             self.tolerance[row] = -np.inf
             if scenario.goal is not None and self.task.name != "path" and self.task.goal:
                 self.target[row] = scenario.goal.position
                 self.tolerance[row] = scenario.goal.tolerance
-            elif self.paths[row] is not None:
-                self.target[row] = self.paths[row].target()[0]
+            elif path is not None:
+                self.target[row] = path.target()[0]
+        self.scenes, self.scene_bounds = _concatenate([None if s is None else s.world.scene for s in self.scenarios])
+        self.path_setups, self.setup_bounds = _concatenate(self._setups)
         rows = np.asarray(list(rows), dtype=int)
         if self.state is None or len(rows) == self.n:
             self.state = self._state(self.pose, self.speed, self.steering, self.target)
@@ -75,22 +83,6 @@ class RobotBatch:
         self.state = replace(self.state, pose=self.pose.copy(), speed=self.speed.copy(),
                              steering=self.steering.copy(), target=self.target.copy())
 
-    def _groups(self, rows=None):
-        """``rows`` (default all) by distinct world: ``[(world, rows of that world), …]``."""
-        if rows is None and self._all_groups is not None:
-            return self._all_groups
-        groups: dict[int, tuple] = {}
-        for row in range(self.n) if rows is None else rows:
-            scenario = self.scenarios[row]
-            key = id(scenario.world)
-            if key not in groups:
-                groups[key] = (scenario.world, [])
-            groups[key][1].append(row)
-        found = [(world, np.array(members)) for world, members in groups.values()]
-        if rows is None:
-            self._all_groups = found
-        return found
-
     def _state(self, pose, speed, steering, target, goal_target=None, rows=None) -> RobotState:
         """What the observations and rewards read (of ``rows`` only, if given); ``goal_target``
         (default ``target``) is the point d_rg and θ_rg are measured to (the reward holds a
@@ -99,11 +91,12 @@ class RobotBatch:
         if rows is not None:
             pose, speed, steering, target = pose[rows], speed[rows], steering[rows], target[rows]
         if self.task.ranges or not self.task.goal:
+            from fuzzynav.kernels import beams
+
             ranges = np.empty((len(pose), self.sensors.count))
-            index = np.full(self.n, -1)  # row of the batch -> row of these arrays
-            index[np.arange(self.n) if rows is None else rows] = np.arange(len(pose))
-            for world, members in self._groups(rows):
-                ranges[index[members]] = self.sensors.read(world, pose[index[members]])
+            bounds = self.scene_bounds if rows is None else self.scene_bounds[rows]
+            beams.read_worlds(self.scenes, bounds, np.ascontiguousarray(pose, dtype=float), self.sensors.angles,
+                              0.5 * float(self.sensors.beam_width), float(self.sensors.max_range), ranges)
             sides = side_distances(ranges)
         if self.task.goal:
             goal = goal_inputs(pose, target if goal_target is None else goal_target)
@@ -111,10 +104,11 @@ class RobotBatch:
 
     def clearance(self, pose) -> np.ndarray:
         """Signed distance (N,) of each robot centre to its world's obstacles or boundary."""
-        out = np.empty(self.n)
-        for world, rows in self._groups():
-            out[rows] = world.clearance(pose[rows, :2])
-        return out
+        from fuzzynav.kernels import scene
+
+        out = np.empty((self.n, NEAREST_COLUMNS))
+        scene.nearest_worlds(self.scenes, self.scene_bounds, np.ascontiguousarray(pose[:, :2], dtype=float), out)
+        return np.minimum(out[:, 0], out[:, 4])
 
     # -- stepping ----------------------------------------------------------------------------
     def step(self, steering, speed, live):
@@ -152,11 +146,28 @@ class RobotBatch:
         """(done (N,), waypoint switched (N,)) after a move; updates the targets."""
         gap = self.target - pose[:, :2]
         done = moving & (np.hypot(gap[:, 0], gap[:, 1]) <= self.tolerance)
-        switched = np.zeros(self.n, dtype=bool)
-        for row in np.flatnonzero(moving & ~np.isnan(self.forced_speed)):
-            path = self.paths[row]
-            index = path.waypoint_index[0]
-            done[row] = path.update(pose[row:row + 1, :2], 0.0, np.ones(1, dtype=bool))[0]
-            switched[row] = path.waypoint_index[0] != index
-            self.target[row] = path.target()[0]
-        return done, switched
+        on_path = moving & ~np.isnan(self.forced_speed)
+        if not on_path.any():
+            return done, np.zeros(self.n, dtype=bool)
+        from fuzzynav.kernels import step
+
+        before = self.waypoint.copy()
+        step.task_update_rows(self.path_setups, self.setup_bounds, self.waypoint,
+                              np.ascontiguousarray(pose[:, :2], dtype=float), on_path, done, self.target)
+        return done, self.waypoint != before
+
+
+def _concatenate(arrays):
+    """``(one array, bounds (N, 2))``: the distinct ``arrays`` (by identity; None: empty) end to
+    end, and where row n's lies in it — how the kernels give each robot its own world or path."""
+    bounds = np.zeros((len(arrays), 2), dtype=np.int64)
+    placed, parts, size = {}, [], 0
+    for row, array in enumerate(arrays):
+        if array is None:
+            continue
+        if id(array) not in placed:
+            placed[id(array)] = size
+            parts.append(array)
+            size += len(array)
+        bounds[row] = placed[id(array)], placed[id(array)] + len(array)
+    return (np.concatenate(parts) if parts else np.zeros(0)), bounds

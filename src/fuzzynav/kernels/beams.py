@@ -88,3 +88,12 @@ def read(scene_array, poses, angles, half, max_range, out):
     """:func:`read_one` of robots at ``poses`` (N, 3) into ``out`` (N, S)."""
     for n in range(poses.shape[0]):
         read_one(scene_array, poses[n, 0], poses[n, 1], poses[n, 2], angles, half, max_range, out[n])
+
+
+@jit
+def read_worlds(scenes, bounds, poses, angles, half, max_range, out):
+    """:func:`read_one` of robot n (``poses`` (N, 3)) in its own world, the scene array
+    ``scenes[bounds[n, 0]:bounds[n, 1]]`` (:func:`fuzzynav.kernels.scene.nearest_worlds`), into ``out`` (N, S)."""
+    for n in range(poses.shape[0]):
+        read_one(scenes[bounds[n, 0]:bounds[n, 1]], poses[n, 0], poses[n, 1], poses[n, 2], angles, half, max_range,
+                 out[n])

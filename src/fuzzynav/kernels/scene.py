@@ -215,3 +215,11 @@ def nearest(scene, points, out):
     """:func:`nearest_one` of every row of ``points`` (N, 2) into ``out`` (N, 5)."""
     for n in range(points.shape[0]):
         nearest_one(scene, points[n, 0], points[n, 1], out[n])
+
+
+@jit
+def nearest_worlds(scenes, bounds, points, out):
+    """:func:`nearest_one` of point n (``points`` (N, 2)) in its own world: the scene array
+    ``scenes[bounds[n, 0]:bounds[n, 1]]`` (several worlds' arrays concatenated) into ``out`` (N, 5)."""
+    for n in range(points.shape[0]):
+        nearest_one(scenes[bounds[n, 0]:bounds[n, 1]], points[n, 0], points[n, 1], out[n])

@@ -162,3 +162,14 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
         settle(setup, scene_array, k, state, ranges, status, n)
         running += status[n, OUTCOME] == RUNNING
     return running
+
+
+@jit
+def task_update_rows(setups, bounds, index, positions, active, done, target):
+    """:func:`task_update` of every ``active`` robot n with its own set-up array
+    ``setups[bounds[n, 0]:bounds[n, 1]]`` (several robots' arrays concatenated), at ``positions``
+    (N, 2): ``done``, the waypoint ``index`` and ``target`` (N, 2) are updated in place."""
+    for n in range(positions.shape[0]):
+        if active[n]:
+            done[n], index[n], target[n, 0], target[n, 1] = task_update(
+                setups[bounds[n, 0]:bounds[n, 1]], index[n], positions[n, 0], positions[n, 1])
