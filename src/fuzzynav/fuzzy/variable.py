@@ -27,8 +27,9 @@ class Variable:
         if not name or not str(name).isidentifier():
             raise InputError(f"variable name must be an identifier, got {name!r}", field="name")
         lo, hi = (float(v) for v in universe)
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise InputError(f"universe must be finite with lo < hi, got {tuple(universe)!r}", field=f"{name}.universe")
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi and math.isfinite(hi - lo)):
+            raise InputError(f"universe must be finite with lo < hi (and a width a double can hold), got "
+                             f"{tuple(universe)!r}", field=f"{name}.universe")
         if not terms:
             raise InputError("variable has no terms", field=name)
         for label, mf in terms.items():
