@@ -29,6 +29,7 @@ none of the kernels' primitives (a capsule, say) needs a new primitive in the ke
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -228,13 +229,15 @@ class Wall(Shape):
         return {"wall": {"start": start.round(2).tolist(), "end": end.round(2).tolist(),
                          "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
 
-    @property
+    @functools.cached_property
     def vertices(self) -> np.ndarray:
-        """The four corners of the rectangle, counter-clockwise."""
+        """The four corners of the rectangle, counter-clockwise (computed once, read-only)."""
         direction = self.end - self.start
         length = np.hypot(*direction)
         normal = np.array([-direction[1], direction[0]]) / length * (0.5 * self.thickness)
-        return np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
+        corners = np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
+        corners.setflags(write=False)
+        return corners
 
     def packed(self):
         return self.vertices
