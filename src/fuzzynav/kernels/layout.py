@@ -41,20 +41,21 @@ def _polygon_rows(polygons: list) -> tuple[np.ndarray, np.ndarray, int]:
     for all polygons at once: each polygon's edges from vertex k to k + 1 (the last back to its
     first), its centre (the mean of its vertices, taken over the polygons of each vertex count
     together so the sums run in the same order as one polygon's) and its bounding radius."""
-    if not polygons:
-        return np.zeros((0, 5)), np.zeros((0, 7)), 0
-    a = np.concatenate(polygons)
-    counts = np.array([len(p) for p in polygons])
-    ends = np.cumsum(counts)
+    a = np.concatenate(polygons) if polygons else np.zeros((0, 2))
+    counts = [len(p) for p in polygons]
+    ends = np.cumsum(counts, dtype=int)
     starts = ends - counts
     following = np.arange(1, len(a) + 1)
     following[ends - 1] = starts
-    e = a[following] - a
-    centres, reach = np.empty((len(polygons), 2)), np.empty(len(polygons))
-    for count in np.unique(counts).tolist():
-        same = np.flatnonzero(counts == count)
+    edges = np.empty((len(a), 7))
+    edges[:, :2], edges[:, 2:4] = a, a[following]
+    np.subtract(edges[:, 2:4], a, out=edges[:, 4:6])
+    edges[:, 6] = edges[:, 4] ** 2 + edges[:, 5] ** 2
+    rows = np.empty((len(polygons), 5))
+    rows[:, 0], rows[:, 1] = starts, ends
+    for count in set(counts):
+        same = np.flatnonzero(np.equal(counts, count)) if len(set(counts)) > 1 else slice(None)
         group = a[starts[same, None] + np.arange(count)]  # (P, count, 2)
-        centres[same] = group.mean(axis=1)
-        reach[same] = np.hypot(*(group - centres[same, None]).transpose(2, 0, 1)).max(axis=1)
-    polygon_rows = np.column_stack([starts, ends, centres, reach])
-    return polygon_rows, np.column_stack([a, a[following], e, e[:, 0] ** 2 + e[:, 1] ** 2]), int(ends[-1])
+        rows[same, 2:4] = centres = np.add.reduce(group, axis=1) / count
+        rows[same, 4] = np.hypot(group[:, :, 0] - centres[:, None, 0], group[:, :, 1] - centres[:, None, 1]).max(axis=1)
+    return rows, edges, len(a)
