@@ -39,9 +39,12 @@ def test_each_polygon_packs_as_alone_whatever_its_neighbours():
 
 
 def test_a_wall_computes_its_corners_once_read_only():
-    wall = Wall([2.0, 12.0], [10.0, 12.0], 0.2)
+    start = np.array([2.0, 12.0])
+    wall = Wall(start, [10.0, 12.0], 0.2)
+    start[0] = 5.0  # the wall keeps its own copy of its ends, so its corners cannot go stale
     assert wall.vertices is wall.packed()
     np.testing.assert_allclose(wall.vertices, [[2, 11.9], [10, 11.9], [10, 12.1], [2, 12.1]])
-    with pytest.raises(ValueError):
-        wall.vertices[0, 0] = 0.0
+    for array in (wall.vertices, wall.start, wall.end):
+        with pytest.raises(ValueError):
+            array[0] = 0.0
     assert "vertices" not in Wall.schema() and "vertices" not in wall.to_dict()["wall"]

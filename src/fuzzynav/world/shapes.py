@@ -211,8 +211,10 @@ class Wall(Shape):
     primitive = "polygon"
 
     def __post_init__(self):
-        object.__setattr__(self, "start", _point(self.start, "start"))
-        object.__setattr__(self, "end", _point(self.end, "end"))
+        for name in ("start", "end"):  # private read-only copies: the corners are computed once from them
+            point = _point(getattr(self, name), name).copy()
+            point.setflags(write=False)
+            object.__setattr__(self, name, point)
         object.__setattr__(self, "thickness", limits.length(self.thickness, field="thickness"))
         if np.hypot(*(self.end - self.start)) < limits.MIN_LENGTH:
             raise InputError(f"must differ from start by at least {limits.MIN_LENGTH:g} m (zero-length wall)", field="end")
