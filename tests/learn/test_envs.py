@@ -7,6 +7,7 @@ import pytest
 
 from fuzzynav.fuzzy import systems
 from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RandomObstacles, RobotEnv, WallCourse
+from fuzzynav.learn.envs.layouts import wall_course
 from fuzzynav.learn.rewards import GoalSteeringReward
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
@@ -83,3 +84,29 @@ def test_sensing_layouts_give_side_distances(layout):
                    batch=4, max_steps=5, sensors=SensorRing())
     obs = env.reset(np.random.default_rng(2))
     assert obs.shape == (4, 3) and (obs <= 4.0).all() and (obs > 0).all()
+
+
+def course_corners_drawn_with_numpy(rng):
+    """The corners of a wall course drawn in the documented order with numpy arrays and
+    ``choice`` (how the training courses were first written): wall_course must keep this stream."""
+    for _ in range(100):
+        n = int(rng.integers(3, 6))
+        heading = rng.uniform(-np.pi, np.pi)
+        points = [rng.uniform(5.0, 15.0, 2)]
+        for k in range(n):
+            if k:
+                heading += rng.choice([-1.0, 1.0]) * rng.uniform(np.pi / 6, 5 * np.pi / 6)
+            points.append(points[-1] + rng.uniform(3.0, 7.0) * np.array([np.cos(heading), np.sin(heading)]))
+        points = np.array(points)
+        if (points >= 2.0).all() and (points <= 18.0).all():
+            return points
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_wall_courses_replay_the_training_stream_bit_for_bit(seed):
+    rng, reference_rng = np.random.default_rng(seed), np.random.default_rng(seed)
+    world = wall_course(rng)
+    corners = course_corners_drawn_with_numpy(reference_rng)
+    drawn = np.array([wall.start for wall in world.obstacles] + [world.obstacles[-1].end])
+    assert drawn.tobytes() == corners.tobytes()
+    assert rng.random() == reference_rng.random()  # the same draws consumed

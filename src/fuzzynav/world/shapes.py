@@ -29,6 +29,7 @@ none of the kernels' primitives (a capsule, say) needs a new primitive in the ke
 from __future__ import annotations
 
 import dataclasses
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -210,8 +211,10 @@ class Wall(Shape):
     primitive = "polygon"
 
     def __post_init__(self):
-        object.__setattr__(self, "start", _point(self.start, "start"))
-        object.__setattr__(self, "end", _point(self.end, "end"))
+        for name in ("start", "end"):  # private read-only copies: the corners are computed once from them
+            point = _point(getattr(self, name), name).copy()
+            point.setflags(write=False)
+            object.__setattr__(self, name, point)
         object.__setattr__(self, "thickness", limits.length(self.thickness, field="thickness"))
         if np.hypot(*(self.end - self.start)) < limits.MIN_LENGTH:
             raise InputError(f"must differ from start by at least {limits.MIN_LENGTH:g} m (zero-length wall)", field="end")
@@ -228,13 +231,15 @@ class Wall(Shape):
         return {"wall": {"start": start.round(2).tolist(), "end": end.round(2).tolist(),
                          "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
 
-    @property
+    @functools.cached_property
     def vertices(self) -> np.ndarray:
-        """The four corners of the rectangle, counter-clockwise."""
+        """The four corners of the rectangle, counter-clockwise (computed once, read-only)."""
         direction = self.end - self.start
         length = np.hypot(*direction)
         normal = np.array([-direction[1], direction[0]]) / length * (0.5 * self.thickness)
-        return np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
+        corners = np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
+        corners.setflags(write=False)
+        return corners
 
     def packed(self):
         return self.vertices

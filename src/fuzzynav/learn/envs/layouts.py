@@ -15,6 +15,7 @@ all its randomness from ``rng``, so training resumed from a checkpoint replays t
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,6 +24,7 @@ from fuzzynav.world.shapes import Circle, Polygon, Wall
 from fuzzynav.world.world import World
 
 EMPTY = World()
+_TURN_SIDES = (-1.0, 1.0)  # a turn to the right, to the left
 
 
 @dataclass(frozen=True)
@@ -105,17 +107,24 @@ class RandomObstacles:
 
 def wall_course(rng, thickness: float = 0.3) -> World:
     """A course for wall following, like Figs VI.27–VI.28: an open polyline of 3–5 walls, 3–7 m
-    each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace."""
+    each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace.
+
+    Each try draws, from ``rng`` and in this order: the wall count, the first heading, the first
+    point, then per wall its turn's side (``integers(0, 2)``, the draw of ``choice([-1, 1])``) and
+    angle (from the second wall on) and its length; a course leaving [2, 18]² is drawn again (at
+    most 100 tries). The arithmetic is on Python floats (the same IEEE operations as numpy's)."""
     for _ in range(100):
         n = int(rng.integers(3, 6))
-        heading = rng.uniform(-np.pi, np.pi)
-        points = [rng.uniform(5.0, 15.0, 2)]
+        heading = rng.uniform(-math.pi, math.pi)
+        x, y = rng.uniform(5.0, 15.0, 2).tolist()
+        points = [(x, y)]
         for k in range(n):
             if k:
-                heading += rng.choice([-1.0, 1.0]) * rng.uniform(np.pi / 6, 5 * np.pi / 6)
-            points.append(points[-1] + rng.uniform(3.0, 7.0) * np.array([np.cos(heading), np.sin(heading)]))
-        points = np.array(points)
-        if (points >= 2.0).all() and (points <= 18.0).all():
+                heading += _TURN_SIDES[rng.integers(0, 2)] * rng.uniform(math.pi / 6, 5 * math.pi / 6)
+            length = rng.uniform(3.0, 7.0)
+            x, y = x + length * math.cos(heading), y + length * math.sin(heading)
+            points.append((x, y))
+        if all(2.0 <= v <= 18.0 for point in points for v in point):
             break
     walls = tuple(Wall(points[i], points[i + 1], thickness) for i in range(len(points) - 1))
     return World(20.0, 20.0, walls)
@@ -142,5 +151,7 @@ class WallCourse:
             left = np.column_stack([-heading[:, 1], heading[:, 0]])
             position = point - self.side * self.offset * left
             blocked = (world.clearance(position) < 0.6) | (world.boundary_distance(position) < 0.6)
+            if not blocked.any():
+                break
             heading = np.where(blocked[:, None], -heading, heading)
         return world, np.column_stack([position, np.arctan2(heading[:, 1], heading[:, 0])]), None

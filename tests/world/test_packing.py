@@ -1,0 +1,50 @@
+"""Packing a world's shapes for the kernels (fuzzynav.kernels.layout.pack) and the walls' cached corners."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.kernels import layout
+from fuzzynav.world import Wall
+
+
+def polygon_block(scene):
+    """The polygon rows (P, 5) and edge rows (E, 7) of a packed scene."""
+    n_polygons, n_edges = int(scene[layout.N_POLYGONS]), int(scene[layout.N_EDGES])
+    at_polygons, at_edges = int(scene[layout.AT_POLYGONS]), int(scene[layout.AT_EDGES])
+    return (scene[at_polygons:at_polygons + 5 * n_polygons].reshape(-1, 5),
+            scene[at_edges:at_edges + 7 * n_edges].reshape(-1, 7))
+
+
+def test_a_square_packs_its_edges_centre_and_bounding_radius():
+    rows, edges = polygon_block(layout.pack(20.0, 20.0, [], [[[0, 0], [2, 0], [2, 2], [0, 2]]], []))
+    np.testing.assert_array_equal(rows, [[0, 4, 1, 1, np.sqrt(2)]])
+    np.testing.assert_array_equal(edges[:, :4], [[0, 0, 2, 0], [2, 0, 2, 2], [2, 2, 0, 2], [0, 2, 0, 0]])
+    np.testing.assert_array_equal(edges[:, 4:], [[2, 0, 4], [0, 2, 4], [-2, 0, 4], [0, -2, 4]])
+
+
+def test_each_polygon_packs_as_alone_whatever_its_neighbours():
+    """Polygons of mixed vertex counts are packed together; each one's rows are bit for bit those
+    it has packed alone (its centre summed in the same order), its edges shifted by those before."""
+    rng = np.random.default_rng(3)
+    polygons = [rng.normal(0.0, 10.0 ** rng.uniform(-2, 3), (int(n), 2)) + rng.uniform(-1e3, 1e3, 2)
+                for n in rng.integers(3, 40, 30)]
+    rows, edges = polygon_block(layout.pack(20.0, 20.0, [(1.0, 2.0, 0.5)], polygons, [(5.0, 5.0, 2.0, 1.0, 0.3)]))
+    start = 0
+    for polygon, row in zip(polygons, rows):
+        alone_rows, alone_edges = polygon_block(layout.pack(20.0, 20.0, [], [polygon], []))
+        assert row.tobytes() == (alone_rows[0] + [start, start, 0, 0, 0]).tobytes()
+        assert edges[start:start + len(polygon)].tobytes() == alone_edges.tobytes()
+        start += len(polygon)
+    assert start == len(edges)
+
+
+def test_a_wall_computes_its_corners_once_read_only():
+    start = np.array([2.0, 12.0])
+    wall = Wall(start, [10.0, 12.0], 0.2)
+    start[0] = 5.0  # the wall keeps its own copy of its ends, so its corners cannot go stale
+    assert wall.vertices is wall.packed()
+    np.testing.assert_allclose(wall.vertices, [[2, 11.9], [10, 11.9], [10, 12.1], [2, 12.1]])
+    for array in (wall.vertices, wall.start, wall.end):
+        with pytest.raises(ValueError):
+            array[0] = 0.0
+    assert "vertices" not in Wall.schema() and "vertices" not in wall.to_dict()["wall"]
