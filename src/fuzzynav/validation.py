@@ -40,6 +40,7 @@ MAX_MAGNITUDE = 1e15  # |number| accepted where no tighter range is documented
 MAX_RUNS = 100_000  # episodes of one evaluation (``evaluate --n``)
 MAX_EPISODES = 10_000_000  # training episodes (``train --episodes``, ``--checkpoint-every``)
 MAX_RESOLUTION = 10_000  # centroid samples of a Mamdani output (fuzzylite's default is 1,000)
+MAX_UNIVERSE_WIDTH = 1e300  # a fuzzy variable's hi - lo: MAX_RESOLUTION samples across it stay finite
 
 
 def fail(problem: str, source=None, field=None):

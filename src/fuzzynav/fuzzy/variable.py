@@ -15,6 +15,7 @@ import numpy as np
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import MembershipFunction
+from fuzzynav.validation import MAX_UNIVERSE_WIDTH
 
 
 class Variable:
@@ -27,8 +28,8 @@ class Variable:
         if not name or not str(name).isidentifier():
             raise InputError(f"variable name must be an identifier, got {name!r}", field="name")
         lo, hi = (float(v) for v in universe)
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi and math.isfinite(hi - lo)):
-            raise InputError(f"universe must be finite with lo < hi (and a width a double can hold), got "
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi and hi - lo <= MAX_UNIVERSE_WIDTH):
+            raise InputError(f"universe must be finite with lo < hi (and hi - lo <= {MAX_UNIVERSE_WIDTH:g}), got "
                              f"{tuple(universe)!r}", field=f"{name}.universe")
         if not terms:
             raise InputError("variable has no terms", field=name)
