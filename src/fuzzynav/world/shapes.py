@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
@@ -71,7 +72,7 @@ def _point(values, field: str = "center") -> np.ndarray:
     return _array(values, field, (2,))
 
 
-class Shape:
+class Shape(ABC):
     """An obstacle type (see the module docstring); subclasses are frozen dataclasses that set
     ``kind`` and ``primitive`` and implement :meth:`parse` and :meth:`packed` (and :meth:`random`
     when generated worlds draw them)."""
@@ -85,20 +86,21 @@ class Shape:
         return {f.name: None if f.default is dataclasses.MISSING else f.default for f in dataclasses.fields(cls)}
 
     @classmethod
+    @abstractmethod
     def parse(cls, fields) -> "Shape":
         """The obstacle of a scenario entry, its values read through ``fields``
         (:class:`fuzzynav.world.checks.ShapeFields`)."""
-        raise NotImplementedError
 
     @classmethod
     def random(cls, rng: np.random.Generator) -> dict:
-        """One random instance in the generated families' 20 m × 20 m workspace, scenario-file form."""
-        raise NotImplementedError(f"no random {cls.kind} (fuzzynav.world.generate)")
+        """One random instance in the generated families' 20 m × 20 m workspace, scenario-file form
+        (optional: only the types a generated family draws need it)."""
+        raise TypeError(f"obstacle type {cls.kind!r} has no random instances: a generated family cannot draw it")
 
+    @abstractmethod
     def packed(self):
         """Its row for the kernels: (cx, cy, r) for a disc, the vertices ``(V, 2)`` of a simple
         polygon, (cx, cy, a, b, angle) for an ellipse."""
-        raise NotImplementedError
 
     def to_dict(self) -> dict:
         """The scenario-file form: ``{kind: {parameter: value}}``."""
