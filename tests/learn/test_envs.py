@@ -11,6 +11,7 @@ from fuzzynav.learn.envs.layouts import wall_course
 from fuzzynav.learn.rewards import GoalSteeringReward
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
+from fuzzynav.world import Wall, World
 
 
 def goal_env(layout, batch=3, max_steps=200, speed=1.0):
@@ -109,6 +110,8 @@ def test_wall_courses_replay_the_training_stream_bit_for_bit(seed):
     corners = course_corners_drawn_with_numpy(reference_rng)
     drawn = np.array([wall.start for wall in world.obstacles] + [world.obstacles[-1].end])
     assert drawn.tobytes() == corners.tobytes()
+    built = World(20.0, 20.0, [Wall(w.start, w.end, 0.3) for w in world.obstacles])  # the checked, packed world
+    assert built.scene.tobytes() == world.scene.tobytes() and built.order.tobytes() == world.order.tobytes()
     assert rng.random() == reference_rng.random()  # the same draws consumed
 
 

@@ -92,3 +92,29 @@ def test_a_chain_of_walls_checks_its_points_and_thickness(points, thickness, fie
     with pytest.raises(InputError) as caught:
         Wall.chain(points, thickness)
     assert caught.value.field == field
+
+
+def test_walls_packed_in_compiled_code_are_the_packed_world_bit_for_bit():
+    from fuzzynav.kernels.courses import pack_walls
+
+    rng = np.random.default_rng(9)
+    for _ in range(300):
+        points = rng.uniform(-10 ** rng.uniform(-1, 4), 10 ** rng.uniform(-1, 4), (int(rng.integers(2, 8)), 2))
+        walls = Wall.chain(points, float(rng.uniform(0.01, 3.0)))
+        vertices = np.array([wall.vertices for wall in walls])
+        assert pack_walls(20.0, 15.0, vertices).tobytes() == layout.pack(20.0, 15.0, [], vertices, []).tobytes()
+
+
+def test_a_prepacked_world_is_the_world_its_constructor_builds():
+    from fuzzynav.kernels.courses import pack_walls
+    from fuzzynav.world import Circle, World
+
+    walls = Wall.chain([[2.0, 2.0], [8.0, 3.0], [6.0, 9.0]], 0.3)
+    scene = pack_walls(20.0, 20.0, np.array([wall.vertices for wall in walls]))
+    world, built = World.prepacked(20, 20.0, walls, scene), World(20.0, 20.0, walls)
+    assert world == built and world.scene.tobytes() == built.scene.tobytes()
+    assert world.order.tobytes() == built.order.tobytes() and isinstance(world.width, float)
+    points = np.random.default_rng(1).uniform(0.0, 20.0, (50, 2))
+    np.testing.assert_array_equal(world.clearance(points), built.clearance(points))
+    with pytest.raises(ValueError, match="does not hold"):
+        World.prepacked(20.0, 20.0, walls + (Circle([5.0, 5.0], 1.0),), scene)

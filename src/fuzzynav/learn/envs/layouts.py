@@ -108,10 +108,18 @@ def wall_course(rng, thickness: float = 0.3) -> World:
     each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace
     (drawn from ``rng`` by :func:`fuzzynav.kernels.courses.draw_course`, whose docstring gives
     the order of the draws)."""
+    return _course(rng, thickness)[1]
+
+
+def _course(rng, thickness: float) -> tuple[np.ndarray, World]:
+    """(corners (W + 1, 2), world) of :func:`wall_course`."""
     from fuzzynav.kernels import courses
 
     corners = np.empty((courses.MAX_CORNERS, 2))
-    return World(20.0, 20.0, Wall.chain(corners[:courses.draw_course(rng, corners)], thickness))
+    corners = corners[:courses.draw_course(rng, corners)]
+    walls = Wall.chain(corners, thickness)
+    scene = courses.pack_walls(20.0, 20.0, np.array([wall.vertices for wall in walls]))
+    return corners, World.prepacked(20.0, 20.0, walls, scene)
 
 
 @dataclass(frozen=True)
@@ -126,11 +134,7 @@ class WallCourse:
     def sample(self, rng, batch):
         from fuzzynav.kernels import courses
 
-        world = wall_course(rng)
-        walls = world.obstacles
-        corners = np.concatenate([walls[0].start[None], [wall.end for wall in walls]])
-        along = corners[1:] - corners[:-1]
-        directions = along / np.hypot(along[:, 0], along[:, 1])[:, None]
+        corners, world = _course(rng, 0.3)
         starts = np.empty((batch, 4))
-        courses.place_starts(rng, world.scene, corners, directions, float(self.offset), float(self.side), starts)
+        courses.place_starts(rng, world.scene, corners, float(self.offset), float(self.side), starts)
         return world, np.column_stack([starts[:, :2], np.arctan2(starts[:, 3], starts[:, 2])]), None
