@@ -64,9 +64,9 @@ def place_starts(rng, scene, corners, offset, side, out):
     (cos, sin), parallel to a wall, ``offset`` from it with the wall on ``side`` (+1 left).
 
     ``corners`` (W + 1, 2) are the course's corners, ``scene`` its packed world
-    (:mod:`fuzzynav.kernels.layout`). Draws, each for all B
-    robots before the next: the wall (``integers(0, W, B)``), where along it (``uniform(0.3, 0.7,
-    B)`` of its length) and the direction (``random(B)`` < 0.5: against the wall's). A start
+    (:mod:`fuzzynav.kernels.layout`). Draws, each for all B robots before the next: the wall
+    (``integers(0, W, B)``), where along it (``uniform(0.3, 0.7, B)`` of its length) and the
+    direction (``random(B)`` < 0.5: against the wall's). A start
     closer than :data:`CLEAR` to an obstacle or the boundary turns to the other direction, once;
     if that one is blocked too, the heading turns back while the position stays (the rule the
     training courses were drawn with)."""
@@ -98,8 +98,9 @@ def place_starts(rng, scene, corners, offset, side, out):
 def pack_walls(width, height, vertices):
     """The scene array of a ``width`` × ``height`` world whose obstacles are the rectangles
     ``vertices`` (W, 4, 2) (walls' corners): bit for bit ``layout.pack(width, height, [],
-    vertices, [])`` — each centre summed vertex after vertex and divided by 4, each squared edge
-    length ``ex·ex + ey·ey``, the bounding radius the largest ``hypot`` to a corner."""
+    vertices, [])`` — each centre summed vertex after vertex and divided by the vertex count,
+    each squared edge length ``ex·ex + ey·ey``, the bounding radius the largest ``hypot`` to a
+    corner."""
     walls, count = vertices.shape[0], vertices.shape[1]
     at_edges = layout.HEADER + 5 * walls
     end = at_edges + 7 * walls * count

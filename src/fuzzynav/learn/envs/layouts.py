@@ -23,6 +23,7 @@ from fuzzynav.world.shapes import Circle, Polygon, Wall
 from fuzzynav.world.world import World
 
 EMPTY = World()
+WALL_THICKNESS = 0.3  # m: the walls of the random wall courses
 
 
 @dataclass(frozen=True)
@@ -103,7 +104,7 @@ class RandomObstacles:
         return world, np.column_stack([start, theta]), goal
 
 
-def wall_course(rng, thickness: float = 0.3) -> World:
+def wall_course(rng, thickness: float = WALL_THICKNESS) -> World:
     """A course for wall following, like Figs VI.27–VI.28: an open polyline of 3–5 walls, 3–7 m
     each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace
     (drawn from ``rng`` by :func:`fuzzynav.kernels.courses.draw_course`, whose docstring gives
@@ -134,7 +135,7 @@ class WallCourse:
     def sample(self, rng, batch):
         from fuzzynav.kernels import courses
 
-        corners, world = _course(rng, 0.3)
+        corners, world = _course(rng, WALL_THICKNESS)
         starts = np.empty((batch, 4))
         courses.place_starts(rng, world.scene, corners, float(self.offset), float(self.side), starts)
         return world, np.column_stack([starts[:, :2], np.arctan2(starts[:, 3], starts[:, 2])]), None
