@@ -270,9 +270,16 @@ def _rectangles(starts, ends, thickness: float) -> np.ndarray:
     """Corners (W, 4, 2), counter-clockwise and read-only, of the walls from ``starts`` (W, 2) to
     ``ends`` (W, 2), ``thickness`` wide."""
     direction = ends - starts
-    length = np.hypot(direction[:, 0], direction[:, 1])[:, None]
-    normal = np.column_stack([-direction[:, 1], direction[:, 0]]) / length * (0.5 * thickness)
-    corners = np.stack([starts - normal, ends - normal, ends + normal, starts + normal], axis=1)
+    normal = np.empty_like(direction)  # the left normal, scaled to half the thickness
+    np.negative(direction[:, 1], out=normal[:, 0])
+    normal[:, 1] = direction[:, 0]
+    normal /= np.hypot(direction[:, 0], direction[:, 1])[:, None]
+    normal *= 0.5 * thickness
+    corners = np.empty((len(direction), 4, 2))
+    np.subtract(starts, normal, out=corners[:, 0])
+    np.subtract(ends, normal, out=corners[:, 1])
+    np.add(ends, normal, out=corners[:, 2])
+    np.add(starts, normal, out=corners[:, 3])
     corners.setflags(write=False)
     return corners
 

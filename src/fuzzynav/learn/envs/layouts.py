@@ -138,4 +138,7 @@ class WallCourse:
         corners, world = _course(rng, WALL_THICKNESS)
         starts = np.empty((batch, 4))
         courses.place_starts(rng, world.scene, corners, float(self.offset), float(self.side), starts)
-        return world, np.column_stack([starts[:, :2], np.arctan2(starts[:, 3], starts[:, 2])]), None
+        poses = np.empty((batch, 3))
+        poses[:, :2] = starts[:, :2]
+        poses[:, 2] = np.arctan2(starts[:, 3], starts[:, 2])
+        return world, poses, None
