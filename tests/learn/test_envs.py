@@ -11,6 +11,7 @@ from fuzzynav.learn.envs.layouts import wall_course
 from fuzzynav.learn.rewards import GoalSteeringReward
 from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing
+from fuzzynav.world import Wall, World
 
 
 def goal_env(layout, batch=3, max_steps=200, speed=1.0):
@@ -109,4 +110,44 @@ def test_wall_courses_replay_the_training_stream_bit_for_bit(seed):
     corners = course_corners_drawn_with_numpy(reference_rng)
     drawn = np.array([wall.start for wall in world.obstacles] + [world.obstacles[-1].end])
     assert drawn.tobytes() == corners.tobytes()
+    built = World(20.0, 20.0, [Wall(w.start, w.end, 0.3) for w in world.obstacles])  # the checked, packed world
+    assert built.scene.tobytes() == world.scene.tobytes() and built.order.tobytes() == world.order.tobytes()
     assert rng.random() == reference_rng.random()  # the same draws consumed
+
+
+def starts_placed_with_numpy(rng, world, batch, offset=1.0, side=1.0):
+    """Start poses beside a course's walls drawn and placed with numpy arrays (how the training
+    starts were first written): WallCourse.sample must keep this stream and these poses. Also
+    returns how many starts were blocked in their first direction, and in both."""
+    walls = world.obstacles
+    which = rng.integers(len(walls), size=batch)
+    a = np.array([walls[i].start for i in which])
+    b = np.array([walls[i].end for i in which])
+    point = a + rng.uniform(0.3, 0.7, batch)[:, None] * (b - a)
+    direction = (b - a) / np.hypot(*(b - a).T)[:, None]
+    heading = np.where((rng.random(batch) < 0.5)[:, None], -direction, direction)
+    counts = []
+    for _ in range(2):
+        left = np.column_stack([-heading[:, 1], heading[:, 0]])
+        position = point - side * offset * left
+        blocked = (world.clearance(position) < 0.6) | (world.boundary_distance(position) < 0.6)
+        counts.append(int(blocked.sum()))
+        if not blocked.any():
+            break
+        heading = np.where(blocked[:, None], -heading, heading)
+    return np.column_stack([position, np.arctan2(heading[:, 1], heading[:, 0])]), counts
+
+
+@pytest.mark.parametrize("batch, offset, side", [(1, 1.0, 1.0), (7, 1.0, 1.0), (64, 1.0, 1.0), (16, 2.5, -1.0)])
+def test_wall_course_starts_replay_the_training_stream_bit_for_bit(batch, offset, side):
+    blocked = np.zeros(2, dtype=int)  # starts blocked in their first direction, in both
+    for seed in range(60):
+        rng, reference_rng = np.random.default_rng(seed), np.random.default_rng(seed)
+        world, poses, targets = WallCourse(offset, side).sample(rng, batch)
+        reference_world = wall_course(reference_rng)
+        assert targets is None and reference_world.scene.tobytes() == world.scene.tobytes()
+        reference, counts = starts_placed_with_numpy(reference_rng, reference_world, batch, offset, side)
+        assert poses.tobytes() == reference.tobytes()
+        assert rng.random() == reference_rng.random()  # the same draws consumed
+        blocked[:len(counts)] += counts
+    assert (blocked > 0).all()  # both turns of the rule were exercised

@@ -233,18 +233,55 @@ class Wall(Shape):
         return {"wall": {"start": start.round(2).tolist(), "end": end.round(2).tolist(),
                          "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
 
+    @classmethod
+    def chain(cls, points, thickness: float = 0.2) -> tuple["Wall", ...]:
+        """The walls of the open polyline through ``points`` (n ≥ 2, 2), all of ``thickness``: the
+        same walls as ``Wall(points[i], points[i + 1], thickness)`` one by one, checked and given
+        their corners for all walls at once (the random wall courses of training build one per
+        episode)."""
+        points = _array(points, "points", (-1, 2)).copy()
+        if len(points) < 2:
+            raise InputError(f"needs at least 2 points, got {len(points)}", field="points")
+        thickness = limits.length(thickness, field="thickness")
+        along = points[1:] - points[:-1]
+        short = np.flatnonzero(np.hypot(along[:, 0], along[:, 1]) < limits.MIN_LENGTH)
+        if len(short):
+            raise InputError(f"must differ from the point before by at least {limits.MIN_LENGTH:g} m "
+                             "(zero-length wall)", field=f"points[{short[0] + 1}]")
+        points.setflags(write=False)
+        corners = _rectangles(points[:-1], points[1:], thickness)
+        walls = []
+        for i in range(len(corners)):
+            wall = object.__new__(cls)
+            wall.__dict__.update(start=points[i], end=points[i + 1], thickness=thickness, vertices=corners[i])
+            walls.append(wall)
+        return tuple(walls)
+
     @functools.cached_property
     def vertices(self) -> np.ndarray:
         """The four corners of the rectangle, counter-clockwise (computed once, read-only)."""
-        direction = self.end - self.start
-        length = np.hypot(*direction)
-        normal = np.array([-direction[1], direction[0]]) / length * (0.5 * self.thickness)
-        corners = np.array([self.start - normal, self.end - normal, self.end + normal, self.start + normal])
-        corners.setflags(write=False)
-        return corners
+        return _rectangles(self.start[None], self.end[None], self.thickness)[0]
 
     def packed(self):
         return self.vertices
+
+
+def _rectangles(starts, ends, thickness: float) -> np.ndarray:
+    """Corners (W, 4, 2), counter-clockwise and read-only, of the walls from ``starts`` (W, 2) to
+    ``ends`` (W, 2), ``thickness`` wide."""
+    direction = ends - starts
+    normal = np.empty_like(direction)  # the left normal, scaled to half the thickness
+    np.negative(direction[:, 1], out=normal[:, 0])
+    normal[:, 1] = direction[:, 0]
+    normal /= np.hypot(direction[:, 0], direction[:, 1])[:, None]
+    normal *= 0.5 * thickness
+    corners = np.empty((len(direction), 4, 2))
+    np.subtract(starts, normal, out=corners[:, 0])
+    np.subtract(ends, normal, out=corners[:, 1])
+    np.add(ends, normal, out=corners[:, 2])
+    np.add(starts, normal, out=corners[:, 3])
+    corners.setflags(write=False)
+    return corners
 
 
 @register

@@ -36,13 +36,30 @@ class World:
         object.__setattr__(self, "width", width)
         object.__setattr__(self, "height", height)
         limits.world_contents(self.obstacles, width, height)
-        columns = {primitive: [i for i, s in enumerate(self.obstacles) if s.primitive == primitive]
-                   for primitive in layout.PRIMITIVES}  # obstacle indices of each kernel shape kind
+        columns, order = _kernel_columns(self.obstacles)
         packed = layout.pack(self.width, self.height, *([self.obstacles[i].packed() for i in columns[primitive]]
                                                          for primitive in layout.PRIMITIVES))
         object.__setattr__(self, "scene", packed)
-        object.__setattr__(self, "order", np.array([i for primitive in layout.PRIMITIVES for i in columns[primitive]]
-                                                   + [-1], dtype=int))
+        object.__setattr__(self, "order", order)
+
+    @classmethod
+    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> "World":
+        """``World(width, height, obstacles)`` for ``obstacles`` the library has built and checked
+        itself and already packed into ``scene`` (the array :func:`fuzzynav.kernels.layout.pack`
+        gives for them; :func:`fuzzynav.kernels.courses.pack_walls` for the random wall courses
+        of every training episode), without the constructor's checks of the obstacles and its
+        packing. Worlds from user input go through the constructor."""
+        world = object.__new__(cls)
+        width, height = limits.world_size(width, height)
+        obstacles = tuple(obstacles)
+        columns, order = _kernel_columns(obstacles)
+        counts = scene[[layout.N_CIRCLES, layout.N_POLYGONS, layout.N_ELLIPSES]].tolist()
+        if counts != [len(columns[primitive]) for primitive in layout.PRIMITIVES]:
+            raise ValueError("the packed scene does not hold these obstacles")
+        for name, value in (("width", width), ("height", height), ("obstacles", obstacles), ("scene", scene),
+                            ("order", order)):
+            object.__setattr__(world, name, value)
+        return world
 
     # -- distances ---------------------------------------------------------------------------
     def proximity(self, points):
@@ -98,6 +115,14 @@ class World:
         readings = np.empty((len(poses), len(angles)))
         beams.read(self.scene, poses, angles, 0.5 * float(beam_width), float(max_range), readings)
         return add_noise(readings, max_range, noise_std, rng)
+
+
+def _kernel_columns(obstacles) -> tuple[dict, np.ndarray]:
+    """(obstacle indices of each kernel shape kind (:data:`fuzzynav.kernels.layout.PRIMITIVES`),
+    the world's ``order``: kernel column -> obstacle index, and −1 -> −1)."""
+    columns = {primitive: [i for i, s in enumerate(obstacles) if s.primitive == primitive]
+               for primitive in layout.PRIMITIVES}
+    return columns, np.array([i for primitive in layout.PRIMITIVES for i in columns[primitive]] + [-1], dtype=int)
 
 
 def add_noise(readings, max_range, noise_std, rng, rows=None):

@@ -15,7 +15,6 @@ all its randomness from ``rng``, so training resumed from a checkpoint replays t
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,7 +23,7 @@ from fuzzynav.world.shapes import Circle, Polygon, Wall
 from fuzzynav.world.world import World
 
 EMPTY = World()
-_TURN_SIDES = (-1.0, 1.0)  # a turn to the right, to the left
+WALL_THICKNESS = 0.3  # m: the walls of the random wall courses
 
 
 @dataclass(frozen=True)
@@ -105,53 +104,41 @@ class RandomObstacles:
         return world, np.column_stack([start, theta]), goal
 
 
-def wall_course(rng, thickness: float = 0.3) -> World:
+def wall_course(rng, thickness: float = WALL_THICKNESS) -> World:
     """A course for wall following, like Figs VI.27–VI.28: an open polyline of 3–5 walls, 3–7 m
-    each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace.
+    each, turning by 30°–150° either way at every joint (sharp corners), inside the workspace
+    (drawn from ``rng`` by :func:`fuzzynav.kernels.courses.draw_course`, whose docstring gives
+    the order of the draws)."""
+    return _course(rng, thickness)[1]
 
-    Each try draws, from ``rng`` and in this order: the wall count, the first heading, the first
-    point, then per wall its turn's side (``integers(0, 2)``, the draw of ``choice([-1, 1])``) and
-    angle (from the second wall on) and its length; a course leaving [2, 18]² is drawn again (at
-    most 100 tries). The arithmetic is on Python floats (the same IEEE operations as numpy's)."""
-    for _ in range(100):
-        n = int(rng.integers(3, 6))
-        heading = rng.uniform(-math.pi, math.pi)
-        x, y = rng.uniform(5.0, 15.0, 2).tolist()
-        points = [(x, y)]
-        for k in range(n):
-            if k:
-                heading += _TURN_SIDES[rng.integers(0, 2)] * rng.uniform(math.pi / 6, 5 * math.pi / 6)
-            length = rng.uniform(3.0, 7.0)
-            x, y = x + length * math.cos(heading), y + length * math.sin(heading)
-            points.append((x, y))
-        if all(2.0 <= v <= 18.0 for point in points for v in point):
-            break
-    walls = tuple(Wall(points[i], points[i + 1], thickness) for i in range(len(points) - 1))
-    return World(20.0, 20.0, walls)
+
+def _course(rng, thickness: float) -> tuple[np.ndarray, World]:
+    """(corners (W + 1, 2), world) of :func:`wall_course`."""
+    from fuzzynav.kernels import courses
+
+    corners = np.empty((courses.MAX_CORNERS, 2))
+    corners = corners[:courses.draw_course(rng, corners)]
+    walls = Wall.chain(corners, thickness)
+    scene = courses.pack_walls(20.0, 20.0, np.array([wall.vertices for wall in walls]))
+    return corners, World.prepacked(20.0, 20.0, walls, scene)
 
 
 @dataclass(frozen=True)
 class WallCourse:
     """A random wall course per batch; each robot starts ``offset`` from a wall, parallel to it,
-    with the wall on its ``side`` (+1 left, the side the follower of Table VI.2 keeps; −1 right)."""
+    with the wall on its ``side`` (+1 left, the side the follower of Table VI.2 keeps; −1 right),
+    placed by :func:`fuzzynav.kernels.courses.place_starts`."""
 
     offset: float = 1.0
     side: float = 1.0
 
     def sample(self, rng, batch):
-        world = wall_course(rng)
-        walls = world.obstacles
-        which = rng.integers(len(walls), size=batch)
-        a = np.array([walls[i].start for i in which])
-        b = np.array([walls[i].end for i in which])
-        point = a + rng.uniform(0.3, 0.7, batch)[:, None] * (b - a)
-        direction = (b - a) / np.hypot(*(b - a).T)[:, None]
-        heading = np.where((rng.random(batch) < 0.5)[:, None], -direction, direction)
-        for _ in range(2):  # the other direction along the wall if this start is not free
-            left = np.column_stack([-heading[:, 1], heading[:, 0]])
-            position = point - self.side * self.offset * left
-            blocked = (world.clearance(position) < 0.6) | (world.boundary_distance(position) < 0.6)
-            if not blocked.any():
-                break
-            heading = np.where(blocked[:, None], -heading, heading)
-        return world, np.column_stack([position, np.arctan2(heading[:, 1], heading[:, 0])]), None
+        from fuzzynav.kernels import courses
+
+        corners, world = _course(rng, WALL_THICKNESS)
+        starts = np.empty((batch, 4))
+        courses.place_starts(rng, world.scene, corners, float(self.offset), float(self.side), starts)
+        poses = np.empty((batch, 3))
+        poses[:, :2] = starts[:, :2]
+        poses[:, 2] = np.arctan2(starts[:, 3], starts[:, 2])
+        return world, poses, None
