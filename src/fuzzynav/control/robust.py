@@ -99,6 +99,7 @@ class RobustNavigator(BatchController):
         if navigator:
             self.navigator.for_robot(robot)
         self.params[layers.RADIUS], self.params[layers.MAX_REVERSE_SPEED] = robot.radius, robot.max_reverse_speed
+        self.params[layers.WHEELBASE] = robot.wheelbase
         return self
 
     def compiled(self, n: int, sensor_angles):

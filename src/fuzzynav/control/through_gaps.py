@@ -25,10 +25,21 @@ All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernel
 
 from __future__ import annotations
 
+import math
+
 from fuzzynav.control.robust import RobustNavigator
 
 GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_direct": 3.0,
-            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0}  # m, m, s, m, m, m, m
+            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0,  # m, m, s, m, m, m, m
+            # the car route (kernels.car_route): on; room kept (m); arc length (m), node cell (m),
+            # heading bins; clearance cost weight and comfort (m), full-lock cost, steering change
+            # cost (m); reach (m), node budget; backward arcs' cost factor, gear change cost (m);
+            # grid cell (m), steering values over ±limit (rad, Fig IV.7's largest singleton), look-ahead (m)
+            "guide_car": 1.0, "guide_car_room": 0.05, "guide_car_step": 0.2, "guide_car_node": 0.1,
+            "guide_car_headings": 72, "guide_car_weight": 3.0, "guide_car_comfort": 0.3, "guide_car_turn": 0.1,
+            "guide_car_switch": 0.05, "guide_car_reach": 0.5, "guide_car_budget": 60000, "guide_car_reverse": 2.0,
+            "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": math.pi / 5,
+            "guide_car_ahead": 1.0}
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,

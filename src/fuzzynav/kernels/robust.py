@@ -51,7 +51,7 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
     if p[GUIDE] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, aim_x, aim_y, t, p[RADIUS])
+        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, theta, aim_x, aim_y, t, p[RADIUS])
     steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
                                                ranges, angles, max_range, dt, d_o, b_o)
     labels = int(p[N_LABELS])
@@ -59,6 +59,10 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
         code = labels + 2
     if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
         return steering, speed, code
+    if p[GUIDE] != 0.0 and state[PHASE] == NO_PHASE:
+        moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt)
+        if moving:
+            return a, u, labels + (0 if u < 0 else 1)
     if state[PHASE] != NO_PHASE:
         moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
         if moving:
