@@ -52,7 +52,8 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
     assert np.hypot(*(poses[-1, :2] - goal)) <= _numbers()[8]
     leg = car_route.first_leg(walls, len(walls), *pose, *goal, BODY + _numbers()[0], BODY, _curvatures(), _numbers(),
-                              PARAMS[layers.GUIDE_CAR_CELL], PARAMS[layers.GUIDE_CAR_AHEAD])
+                              PARAMS[layers.GUIDE_CAR_CELL], PARAMS[layers.GUIDE_CAR_AHEAD],
+                              PARAMS[layers.GUIDE_CAR_TIGHT])
     assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
 
 

@@ -39,7 +39,7 @@ GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_
             "guide_car_headings": 72, "guide_car_weight": 3.0, "guide_car_comfort": 0.3, "guide_car_turn": 0.1,
             "guide_car_switch": 0.05, "guide_car_reach": 0.5, "guide_car_budget": 60000, "guide_car_reverse": 2.0,
             "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": math.pi / 5,
-            "guide_car_ahead": 1.0}
+            "guide_car_ahead": 1.0, "guide_car_tight": 0.5}
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,

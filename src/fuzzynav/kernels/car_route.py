@@ -118,7 +118,7 @@ def plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, 
 
 
 @jit
-def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell, ahead):
+def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell, ahead, tight):
     """(found, manoeuvre, backwards, px, py, kappa, run) of the :func:`plan` (the same
     arguments): ``found`` False when the search gives up; else ``backwards`` tells the first
     leg's gear and ``manoeuvre`` whether it is part of a K-turn (backward, or forward to a cusp
@@ -131,7 +131,7 @@ def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numb
     kinds, step = len(curvatures), numbers[1]
     backwards = primitives[1] >= kinds
     kappa = curvatures[primitives[1] % kinds]
-    run, same, travelled, cusp = 0.0, True, 0.0, False
+    run, same, travelled, cusp, narrow = 0.0, True, 0.0, False, False
     px, py = poses[1, 0], poses[1, 1]
     for k in range(1, len(poses)):
         if (primitives[k] >= kinds) != backwards:
@@ -142,4 +142,5 @@ def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numb
             run += step
         if travelled < ahead:
             px, py, travelled = poses[k, 0], poses[k, 1], travelled + step
-    return True, backwards or (cusp and travelled < ahead), backwards, px, py, kappa, run
+            narrow = narrow or sightings.clearance(points, count, px, py) < body + tight
+    return True, backwards or (cusp and travelled < ahead) or narrow, backwards, px, py, kappa, run

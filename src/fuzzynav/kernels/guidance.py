@@ -34,7 +34,8 @@ from fuzzynav.jit import jit
 from fuzzynav.kernels import car_route, recovery, route, sightings
 from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CAR, GUIDE_CAR_AHEAD, GUIDE_CAR_CELL,
                                      GUIDE_CAR_GEAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS,
-                                     GUIDE_CELL, GUIDE_DIRECT, GUIDE_FROM_X, GUIDE_FROM_Y, GUIDE_KAPPA, GUIDE_NARROW,
+                                     GUIDE_CAR_TIGHT,
+                                     GUIDE_CELL, GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_KAPPA, GUIDE_NARROW,
                                      GUIDE_PLANNED, GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y,
                                      GUIDE_GEAR, MAX_REVERSE_SPEED, V_BACK, V_TURN, WHEELBASE)
 
@@ -64,10 +65,10 @@ def car(state, params, points, count, x, y, theta, tx, ty, radius):
     numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
         points, count, x, y, theta, tx, ty, radius + numbers[0], radius, curvatures, numbers, params[GUIDE_CAR_CELL],
-        params[GUIDE_CAR_AHEAD])
+        params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
     if found and manoeuvre:
         state[GUIDE_GEAR], state[GUIDE_KAPPA], state[GUIDE_RUN] = -1.0 if backwards else 1.0, kappa, run
-        state[GUIDE_FROM_X], state[GUIDE_FROM_Y] = x, y
+        state[GUIDE_DRIVEN] = 0.0
     elif found and math.hypot(px - tx, py - ty) > 1e-9:
         state[GUIDE_X], state[GUIDE_Y] = px, py
     return found
@@ -102,8 +103,8 @@ def manoeuvre(state, params, points, count, x, y, theta, dt):
     if state[GUIDE_GEAR] == 0.0:
         return False, 0.0, 0.0
     speed = -min(params[V_BACK], params[MAX_REVERSE_SPEED]) if state[GUIDE_GEAR] < 0 else params[V_TURN]
-    if (math.hypot(x - state[GUIDE_FROM_X], y - state[GUIDE_FROM_Y]) < state[GUIDE_RUN]
-            and recovery.safe(params, points, count, x, y, theta, speed, dt)):
+    if state[GUIDE_DRIVEN] < state[GUIDE_RUN] - 1e-9 and recovery.safe(params, points, count, x, y, theta, speed, dt):
+        state[GUIDE_DRIVEN] += abs(speed) * dt
         return True, math.atan(state[GUIDE_KAPPA] * params[WHEELBASE]), speed
     state[GUIDE_GEAR], state[GUIDE_PLANNED] = 0.0, -math.inf
     return False, 0.0, 0.0

@@ -43,7 +43,7 @@ PARAM_NAMES = (
     "guide_car", "guide_car_room", "guide_car_step", "guide_car_node", "guide_car_headings", "guide_car_weight",
     "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reach", "guide_car_budget",
     "guide_car_reverse", "guide_car_gear", "guide_car_cell", "guide_car_steerings", "guide_car_steering",
-    "guide_car_ahead", "wheelbase",
+    "guide_car_ahead", "guide_car_tight", "wheelbase",
     # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     "places_slots", "points_slots", "cell_slots", "grow",
 )
@@ -55,7 +55,7 @@ PARAM_NAMES = (
  GUIDE_CAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEP, GUIDE_CAR_NODE, GUIDE_CAR_HEADINGS, GUIDE_CAR_WEIGHT,
  GUIDE_CAR_COMFORT, GUIDE_CAR_TURN, GUIDE_CAR_SWITCH, GUIDE_CAR_REACH, GUIDE_CAR_BUDGET,
  GUIDE_CAR_REVERSE, GUIDE_CAR_GEAR, GUIDE_CAR_CELL, GUIDE_CAR_STEERINGS, GUIDE_CAR_STEERING,
- GUIDE_CAR_AHEAD, WHEELBASE,
+ GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, WHEELBASE,
  PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
 TABLES_AT = len(PARAM_NAMES)
 STATE_NAMES = (
@@ -68,13 +68,14 @@ STATE_NAMES = (
     # boundary following: on, side, side that failed, hit distance, start, route point, when planned
     "active", "side", "failed", "hit", "t_follow", "route_x", "route_y", "planned",
     # route guidance: the route point given (NaN: the goal itself), when planned; the car route's
-    # manoeuvre (gear −1 / +1 while the layer drives it, else 0): its arc's curvature and length, where it began
-    "guide_x", "guide_y", "guide_planned", "guide_gear", "guide_kappa", "guide_run", "guide_from_x", "guide_from_y",
+    # manoeuvre (gear −1 / +1 while the layer drives it, else 0): its arc's curvature and length, the
+    # distance driven on it
+    "guide_x", "guide_y", "guide_planned", "guide_gear", "guide_kappa", "guide_run", "guide_driven",
 )
 (STOPPED, COUNT, PHASE, T_RECOVERY, START_X, START_Y, BACK_STEERING, BACK_SPEED, HEADING, FLIP, LAST_X, LAST_Y,
  BEST, T_BEST, FIRST, PLACES_KEPT, ACTIVE, SIDE, FAILED, HIT, T_FOLLOW, ROUTE_X, ROUTE_Y,
- PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_RUN, GUIDE_FROM_X,
- GUIDE_FROM_Y) = range(len(STATE_NAMES))
+ PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_RUN,
+ GUIDE_DRIVEN) = range(len(STATE_NAMES))
 PLACES_AT = len(STATE_NAMES)
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
 

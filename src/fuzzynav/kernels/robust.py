@@ -5,7 +5,7 @@
 goal, replaced by a point towards the route round what was seen). The navigator runs every step
 (its hit memory and behaviour switch stay current); a layer in charge replaces its command.
 Behaviour codes are the navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``,
-``BF``.
+``BF``, + 3, 4 for ``CAR-BACK``, ``CAR-FWD`` (the guidance's car route driven by the layer).
 """
 
 from __future__ import annotations
@@ -62,7 +62,7 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
     if p[GUIDE] != 0.0 and state[PHASE] == NO_PHASE:
         moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt)
         if moving:
-            return a, u, labels + (0 if u < 0 else 1)
+            return a, u, labels + (3 if u < 0 else 4)
     if state[PHASE] != NO_PHASE:
         moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
         if moving:
