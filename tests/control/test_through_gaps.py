@@ -35,7 +35,7 @@ def test_the_combined_navigator_backs_out_of_a_pocket_and_reaches_the_goal():
     assert trace.reached and not trace.collision
     reversing = trace.speed < 0
     assert reversing.any()
-    assert set(trace.behaviour[reversing].tolist()) == {"REC-BACK"}
+    assert set(trace.behaviour[reversing].tolist()) == {"CAR-BACK"}  # the car route's backward arcs
     assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
 
 

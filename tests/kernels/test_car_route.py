@@ -33,8 +33,8 @@ def chamber():
     a full-lock turn of the car: 2 × 0.69 m + its 0.6 m body)."""
     side = np.arange(0.0, 2.41, 0.05)
     end = np.arange(-0.8, 0.81, 0.05)
-    return np.vstack([np.column_stack([np.full_like(side, -0.8), side]), np.column_stack([np.full_like(side, 0.8), side]),
-                      np.column_stack([end, np.full_like(end, 2.4)])])
+    return np.vstack([np.column_stack([np.full_like(side, -0.8), side]),
+                      np.column_stack([np.full_like(side, 0.8), side]), np.column_stack([end, np.full_like(end, 2.4)])])
 
 
 def _plan(points, pose, goal, reverse=True):
@@ -77,4 +77,17 @@ def test_a_route_point_that_newly_seen_points_block_is_planned_again():
     seen = np.vstack([posts, point + np.array([[0.0, 0.0], [0.1, 0.0], [-0.1, 0.0]])])
     assert guidance.aim(state, PARAMS, seen, len(seen), 0.0, 0.0, math.pi / 2, 0.0, 10.0, 0.1, BODY) != first
     assert state[layers.GUIDE_PLANNED] == pytest.approx(0.1)
-    assert np.hypot(*(state[[layers.GUIDE_X, layers.GUIDE_Y]] - point)) > BODY
+    # a new route point clear of the blocked one, or (the plan now passing close to the new
+    # points) an arc the layer drives itself
+    moved = np.hypot(*(state[[layers.GUIDE_X, layers.GUIDE_Y]] - point)) > BODY
+    assert moved or state[layers.GUIDE_GEAR] != 0.0
+
+
+def test_a_robot_that_cannot_reverse_gets_no_backward_arc():
+    walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
+    for reverse_speed, gear in ((0.5, -1.0), (0.0, 0.0)):
+        params = PARAMS.copy()
+        params[layers.MAX_REVERSE_SPEED] = reverse_speed
+        state = layers.fresh_state(1, params)[0]
+        guidance.aim(state, params, walls, len(walls), *pose, *goal, 0.0, BODY)
+        assert state[layers.GUIDE_GEAR] == gear  # backs up if it can; else no arc is driven

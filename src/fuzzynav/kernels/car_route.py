@@ -113,7 +113,8 @@ def plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, 
     poses, kinds = np.empty((len(chain), 3)), np.empty(len(chain), np.int64)
     for k in range(len(chain)):
         node = chain[len(chain) - 1 - k]
-        poses[k, 0], poses[k, 1], poses[k, 2], kinds[k] = xs[node] + low_x, ys[node] + low_y, ths[node], primitives[node]
+        poses[k, 0], poses[k, 1], poses[k, 2] = xs[node] + low_x, ys[node] + low_y, ths[node]
+        kinds[k] = primitives[node]
     return end >= 0, poses, kinds
 
 

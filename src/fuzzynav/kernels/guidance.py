@@ -15,12 +15,14 @@ body off what the memory has not seen yet.
 
 With ``guide_car`` on, a route the car can drive is tried before the grid route, from the
 robot's pose (:func:`fuzzynav.kernels.car_route.first_leg`: hybrid A* with forward and backward
-arcs, Dolgov et al. 2008, Reeds & Shepp 1990, keeping the radius plus ``guide_car_room``): when
-its first leg goes forward beyond ``guide_car_ahead`` m, the route point is that far along it;
-when the leg is part of a K-turn (backward, or forward to a nearer cusp), the layer drives that
-leg's first arc itself (:func:`manoeuvre`: at the recovery's backing or turning speed, while the
-recovery's safety test passes) and plans again at its end. The grid route is the fallback when the search gives up within ``guide_car_budget``
-nodes. A route point that a newly seen point blocks (nearer than the body's radius) is planned
+arcs, Dolgov et al. 2008, Reeds & Shepp 1990, keeping the radius plus ``guide_car_room``; the
+grid route is the fallback when the search gives up within ``guide_car_budget`` nodes). Where
+the plan's next ``guide_car_ahead`` m keep ``guide_car_tight`` m more than the radius from every
+remembered point and hold no cusp, the route point is that far along it and the navigator
+drives. Elsewhere — in a passage barely wider than the body, or in a K-turn — the layer drives
+the plan's first arc itself (:func:`manoeuvre`: backward at the recovery's backing speed,
+forward at ``guide_car_speed``, while the recovery's safety test passes) and plans again at its
+end. A route point that a newly seen point blocks (nearer than the body's radius) is planned
 again at once. Names of ``params`` and ``state`` columns: :mod:`fuzzynav.kernels.layers`.
 """
 
@@ -33,11 +35,11 @@ import numpy as np
 from fuzzynav.jit import jit
 from fuzzynav.kernels import car_route, recovery, route, sightings
 from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CAR, GUIDE_CAR_AHEAD, GUIDE_CAR_CELL,
-                                     GUIDE_CAR_GEAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS,
-                                     GUIDE_CAR_TIGHT,
-                                     GUIDE_CELL, GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_KAPPA, GUIDE_NARROW,
-                                     GUIDE_PLANNED, GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y,
-                                     GUIDE_GEAR, MAX_REVERSE_SPEED, V_BACK, V_TURN, WHEELBASE)
+                                     GUIDE_CAR_GEAR, GUIDE_CAR_REVERSE, GUIDE_CAR_ROOM, GUIDE_CAR_SPEED,
+                                     GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS, GUIDE_CAR_TIGHT, GUIDE_CELL,
+                                     GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_NARROW, GUIDE_PLANNED,
+                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y, MAX_REVERSE_SPEED, V_BACK,
+                                     WHEELBASE)
 
 
 @jit
@@ -58,11 +60,13 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 
 @jit
 def car(state, params, points, count, x, y, theta, tx, ty, radius):
-    """Plan the car route (module docstring) from (x, y, θ) to (tx, ty); False when the search
-    gives up."""
+    """Plan the car route (module docstring) from (x, y, θ) to (tx, ty): the route point, or the
+    arc the layer drives; False when the search gives up."""
     steering = params[GUIDE_CAR_STEERING]
     curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
     numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
+    if params[MAX_REVERSE_SPEED] <= 0:  # a robot that cannot reverse: forward arcs only
+        numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
         points, count, x, y, theta, tx, ty, radius + numbers[0], radius, curvatures, numbers, params[GUIDE_CAR_CELL],
         params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
@@ -97,12 +101,12 @@ def plan(state, params, points, count, x, y, theta, tx, ty, t, radius):
 
 @jit
 def manoeuvre(state, params, points, count, x, y, theta, dt):
-    """(moving, α, V): the step of the car route's manoeuvre, if one is being driven (its
-    first arc, at the recovery's backing or turning speed); when the arc is done or the step is
-    not safe, the route is planned again at the next step."""
+    """(moving, α, V): this step of the car route's arc, if the layer is driving one (module
+    docstring); when the arc is done or the step is not safe, the route is planned again at the
+    next step."""
     if state[GUIDE_GEAR] == 0.0:
         return False, 0.0, 0.0
-    speed = -min(params[V_BACK], params[MAX_REVERSE_SPEED]) if state[GUIDE_GEAR] < 0 else params[V_TURN]
+    speed = -min(params[V_BACK], params[MAX_REVERSE_SPEED]) if state[GUIDE_GEAR] < 0 else params[GUIDE_CAR_SPEED]
     if state[GUIDE_DRIVEN] < state[GUIDE_RUN] - 1e-9 and recovery.safe(params, points, count, x, y, theta, speed, dt):
         state[GUIDE_DRIVEN] += abs(speed) * dt
         return True, math.atan(state[GUIDE_KAPPA] * params[WHEELBASE]), speed

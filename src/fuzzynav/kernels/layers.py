@@ -43,7 +43,7 @@ PARAM_NAMES = (
     "guide_car", "guide_car_room", "guide_car_step", "guide_car_node", "guide_car_headings", "guide_car_weight",
     "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reach", "guide_car_budget",
     "guide_car_reverse", "guide_car_gear", "guide_car_cell", "guide_car_steerings", "guide_car_steering",
-    "guide_car_ahead", "guide_car_tight", "wheelbase",
+    "guide_car_ahead", "guide_car_tight", "guide_car_speed", "wheelbase",
     # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     "places_slots", "points_slots", "cell_slots", "grow",
 )
@@ -55,7 +55,7 @@ PARAM_NAMES = (
  GUIDE_CAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEP, GUIDE_CAR_NODE, GUIDE_CAR_HEADINGS, GUIDE_CAR_WEIGHT,
  GUIDE_CAR_COMFORT, GUIDE_CAR_TURN, GUIDE_CAR_SWITCH, GUIDE_CAR_REACH, GUIDE_CAR_BUDGET,
  GUIDE_CAR_REVERSE, GUIDE_CAR_GEAR, GUIDE_CAR_CELL, GUIDE_CAR_STEERINGS, GUIDE_CAR_STEERING,
- GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, WHEELBASE,
+ GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, GUIDE_CAR_SPEED, WHEELBASE,
  PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
 TABLES_AT = len(PARAM_NAMES)
 STATE_NAMES = (

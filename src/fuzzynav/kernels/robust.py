@@ -57,12 +57,12 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
     labels = int(p[N_LABELS])
     if following:
         code = labels + 2
-    if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
-        return steering, speed, code
     if p[GUIDE] != 0.0 and state[PHASE] == NO_PHASE:
         moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt)
         if moving:
             return a, u, labels + (3 if u < 0 else 4)
+    if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
+        return steering, speed, code
     if state[PHASE] != NO_PHASE:
         moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
         if moving:
