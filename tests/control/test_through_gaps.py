@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.through_gaps import GUIDANCE
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import guidance, layers
 from fuzzynav.sim import run_episode
@@ -34,22 +35,23 @@ def test_the_combined_navigator_backs_out_of_a_pocket_and_reaches_the_goal():
     assert trace.reached and not trace.collision
     reversing = trace.speed < 0
     assert reversing.any()
-    assert set(trace.behaviour[reversing].tolist()) == {"REC-BACK"}
+    assert set(trace.behaviour[reversing].tolist()) == {"CAR-BACK"}  # the car route's backward arcs
     assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
 
 
-def _aim(points, pose=(0.0, 0.0)) -> np.ndarray:
-    """The target fuzzy-5b-gap-robust's route guidance gives a robot at ``pose`` that has seen
-    ``points``, the goal at (0, 10), at its first plan."""
-    params = make_controller("fuzzy-5b-gap-robust").params
+def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:
+    """The target fuzzy-5b-gap-robust's route guidance (its car route, or the grid route only)
+    gives a robot at ``pose`` that has seen ``points``, the goal at (0, 10), at its first plan."""
+    params = make_controller("fuzzy-5b-gap-robust", guidance={**GUIDANCE, "guide_car": float(car)}).params
     state = layers.fresh_state(1, params)[0]
     points = np.asarray(points, dtype=float)
     return np.array(guidance.aim(state, params, points, len(points), *pose, 0.0, 10.0, 0.0, params[layers.RADIUS]))
 
 
+@pytest.mark.parametrize("car", [True, False])
 @pytest.mark.parametrize("side", [1.0, -1.0])
-def test_route_guidance_leads_round_a_wall_of_posts_on_the_side_of_its_opening(side):
-    given = _aim([(side * x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])  # open beyond x = ±1
+def test_route_guidance_leads_round_a_wall_of_posts_on_the_side_of_its_opening(side, car):
+    given = _aim([(side * x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)], car=car)  # open beyond x = ±1
     assert np.hypot(*given) == pytest.approx(10.0)  # the goal's distance kept
     assert side * given[0] > 1.0  # towards the opening, not straight at the goal
 
@@ -64,9 +66,10 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
     state = layers.fresh_state(1, params)[0]
     wall = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
     radius = params[layers.RADIUS]
-    first = guidance.aim(state, params, wall, len(wall), 0.0, 0.0, 0.0, 10.0, 0.0, radius)
-    assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 0.5, radius) == first  # not re-planned yet
-    assert guidance.aim(state, params, wall, 0, 0.0, 0.0, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
+    pose = (0.0, 0.0, np.pi / 2)
+    first = guidance.aim(state, params, wall, len(wall), *pose, 0.0, 10.0, 0.0, radius)
+    assert guidance.aim(state, params, wall, 0, *pose, 0.0, 10.0, 0.5, radius) == first  # not re-planned yet
+    assert guidance.aim(state, params, wall, 0, *pose, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
 
 
 def test_route_guidance_options_are_checked_and_off_in_the_default_navigator():

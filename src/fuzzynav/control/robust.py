@@ -19,7 +19,8 @@ shortest route round the obstacles seen so far; the default navigators do not us
 
 The thesis navigator runs every step (its hit memory and behaviour switch stay current); a
 layer in charge replaces its command. The labels in the trace are the navigator's, or
-``REC-BACK``, ``REC-TURN``, ``BF``. The layers are compiled around any compiled navigator
+``REC-BACK``, ``REC-TURN``, ``BF`` (and, with the route guidance's car route, ``CAR-BACK``,
+``CAR-FWD`` while the layer drives the planned arcs). The layers are compiled around any compiled navigator
 (:mod:`fuzzynav.kernels.robust`), so the simulator runs the whole decision inside its own
 compiled step, for one robot or a batch.
 
@@ -63,7 +64,7 @@ class RobustNavigator(BatchController):
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, guidance: dict | None = None):
         self.navigator, self.name = navigator, name
-        self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF")
+        self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
                   "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
         if guidance is not None:
@@ -99,6 +100,7 @@ class RobustNavigator(BatchController):
         if navigator:
             self.navigator.for_robot(robot)
         self.params[layers.RADIUS], self.params[layers.MAX_REVERSE_SPEED] = robot.radius, robot.max_reverse_speed
+        self.params[layers.WHEELBASE] = robot.wheelbase
         return self
 
     def compiled(self, n: int, sensor_angles):

@@ -15,6 +15,16 @@ a route round the obstacles seen so far: ``fuzzy-5b-gap-robust``.
   ``guide_room``, else ``guide_narrow``, else ``guide_bare`` (none: the real goal); where the
   straight line to the goal keeps the radius plus ``guide_room`` from every remembered point for
   ``guide_direct`` m, the goal itself is given.
+- Before that grid route, the guidance plans a route the car can drive (``guide_car_*``,
+  :mod:`fuzzynav.kernels.car_route`): hybrid A* (Dolgov et al. 2008) with forward and backward
+  arcs at the navigator's full lock (Reeds & Shepp 1990), on the remembered points, from the
+  robot's pose, so the route respects the 0.69 m turning radius and holds the K-turns a tight
+  chamber needs. Where it stays ``guide_car_tight`` m clear of what was seen, the navigator
+  follows its point ``guide_car_ahead`` m ahead; where it passes closer (a passage barely wider
+  than the body) or turns back at a cusp, the layer drives its arcs (``CAR-FWD`` at
+  ``guide_car_speed``, ``CAR-BACK`` at the recovery's backing speed, each step checked against
+  the remembered points) and plans again after each. The grid route is the fallback when the
+  search gives up within ``guide_car_budget`` nodes.
 - :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
   (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
   escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
@@ -25,10 +35,22 @@ All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernel
 
 from __future__ import annotations
 
+import math
+
 from fuzzynav.control.robust import RobustNavigator
 
 GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_direct": 3.0,
-            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0}  # m, m, s, m, m, m, m
+            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0,  # m, m, s, m, m, m, m
+            # the car route (kernels.car_route): on; room kept (m); arc length (m), node cell (m),
+            # heading bins; clearance cost weight and comfort (m), full-lock cost, steering change
+            # cost (m); reach (m), node budget; backward arcs' cost factor, gear change cost (m);
+            # grid cell (m), steering values over ±limit (rad, Fig IV.7's largest singleton), look-ahead (m),
+            # clearance beyond the radius below which the layer drives the arcs (m), its forward speed (m/s)
+            "guide_car": 1.0, "guide_car_room": 0.0, "guide_car_step": 0.2, "guide_car_node": 0.1,
+            "guide_car_headings": 72, "guide_car_weight": 3.0, "guide_car_comfort": 0.3, "guide_car_turn": 0.1,
+            "guide_car_switch": 0.05, "guide_car_reach": 0.5, "guide_car_budget": 60000, "guide_car_reverse": 2.0,
+            "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": math.pi / 5,
+            "guide_car_ahead": 1.0, "guide_car_tight": 0.5, "guide_car_speed": 0.8}
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,

@@ -11,18 +11,35 @@ the radius plus ``guide_room``, else ``guide_narrow``, else ``guide_bare`` (none
 keeps even that). Between plans the point is kept. The navigator is given a target in the
 direction of the route point, at the target's distance (at least the point's), so its goal
 seeking and gap finding steer towards the passage the route takes while its behaviours keep the
-body off what the memory has not seen yet. Names of ``params`` and ``state`` columns:
-:mod:`fuzzynav.kernels.layers`.
+body off what the memory has not seen yet.
+
+With ``guide_car`` on, a route the car can drive is tried before the grid route, from the
+robot's pose (:func:`fuzzynav.kernels.car_route.first_leg`: hybrid A* with forward and backward
+arcs, Dolgov et al. 2008, Reeds & Shepp 1990, keeping the radius plus ``guide_car_room``; the
+grid route is the fallback when the search gives up within ``guide_car_budget`` nodes). Where
+the plan's next ``guide_car_ahead`` m keep ``guide_car_tight`` m more than the radius from every
+remembered point and hold no cusp, the route point is that far along it and the navigator
+drives. Elsewhere — in a passage barely wider than the body, or in a K-turn — the layer drives
+the plan's first arc itself (:func:`manoeuvre`: backward at the recovery's backing speed,
+forward at ``guide_car_speed``, while the recovery's safety test passes) and plans again at its
+end. A route point that a newly seen point blocks (nearer than the body's radius) is planned
+again at once. Names of ``params`` and ``state`` columns: :mod:`fuzzynav.kernels.layers`.
 """
 
 from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from fuzzynav.jit import jit
-from fuzzynav.kernels import route
-from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CELL, GUIDE_DIRECT, GUIDE_NARROW, GUIDE_PLANNED,
-                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_X, GUIDE_Y)
+from fuzzynav.kernels import car_route, recovery, route, sightings
+from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CAR, GUIDE_CAR_AHEAD, GUIDE_CAR_CELL,
+                                     GUIDE_CAR_GEAR, GUIDE_CAR_REVERSE, GUIDE_CAR_ROOM, GUIDE_CAR_SPEED,
+                                     GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS, GUIDE_CAR_TIGHT, GUIDE_CELL,
+                                     GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_NARROW, GUIDE_PLANNED,
+                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y, MAX_REVERSE_SPEED, V_BACK,
+                                     WHEELBASE)
 
 
 @jit
@@ -42,12 +59,37 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 
 
 @jit
-def plan(state, params, points, count, x, y, tx, ty, t, radius):
-    """Plan the route point again when ``guide_replan`` s have passed (module docstring)."""
-    if t - state[GUIDE_PLANNED] < params[GUIDE_REPLAN] - 1e-9:
+def car(state, params, points, count, x, y, theta, tx, ty, radius):
+    """Plan the car route (module docstring) from (x, y, θ) to (tx, ty): the route point, or the
+    arc the layer drives; False when the search gives up."""
+    steering = params[GUIDE_CAR_STEERING]
+    curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
+    numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
+    if params[MAX_REVERSE_SPEED] <= 0:  # a robot that cannot reverse: forward arcs only
+        numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
+    found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
+        points, count, x, y, theta, tx, ty, radius + numbers[0], radius, curvatures, numbers, params[GUIDE_CAR_CELL],
+        params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
+    if found and manoeuvre:
+        state[GUIDE_GEAR], state[GUIDE_KAPPA], state[GUIDE_RUN] = -1.0 if backwards else 1.0, kappa, run
+        state[GUIDE_DRIVEN] = 0.0
+    elif found and math.hypot(px - tx, py - ty) > 1e-9:
+        state[GUIDE_X], state[GUIDE_Y] = px, py
+    return found
+
+
+@jit
+def plan(state, params, points, count, x, y, theta, tx, ty, t, radius):
+    """Plan the route point again when ``guide_replan`` s have passed, or when a remembered
+    point blocks it (module docstring)."""
+    blocked = state[GUIDE_X] == state[GUIDE_X] and sightings.clearance(points, count, state[GUIDE_X],
+                                                                        state[GUIDE_Y]) < radius
+    if (t - state[GUIDE_PLANNED] < params[GUIDE_REPLAN] - 1e-9 and not blocked) or state[GUIDE_GEAR] != 0.0:
         return
     state[GUIDE_X], state[GUIDE_Y], state[GUIDE_PLANNED] = math.nan, math.nan, t
     if line_free(points, count, x, y, tx, ty, radius + params[GUIDE_ROOM], params[GUIDE_DIRECT]):
+        return
+    if params[GUIDE_CAR] != 0.0 and car(state, params, points, count, x, y, theta, tx, ty, radius):
         return
     for room in (GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE):
         found, rx, ry = route.target(points, count, x, y, tx, ty, radius + params[room], params[GUIDE_AHEAD],
@@ -58,11 +100,26 @@ def plan(state, params, points, count, x, y, tx, ty, t, radius):
 
 
 @jit
-def aim(state, params, points, count, x, y, tx, ty, t, radius):
-    """The target the navigator is given at (x, y) on its way to (tx, ty) at time ``t``
+def manoeuvre(state, params, points, count, x, y, theta, dt):
+    """(moving, α, V): this step of the car route's arc, if the layer is driving one (module
+    docstring); when the arc is done or the step is not safe, the route is planned again at the
+    next step."""
+    if state[GUIDE_GEAR] == 0.0:
+        return False, 0.0, 0.0
+    speed = -min(params[V_BACK], params[MAX_REVERSE_SPEED]) if state[GUIDE_GEAR] < 0 else params[GUIDE_CAR_SPEED]
+    if state[GUIDE_DRIVEN] < state[GUIDE_RUN] - 1e-9 and recovery.safe(params, points, count, x, y, theta, speed, dt):
+        state[GUIDE_DRIVEN] += abs(speed) * dt
+        return True, math.atan(state[GUIDE_KAPPA] * params[WHEELBASE]), speed
+    state[GUIDE_GEAR], state[GUIDE_PLANNED] = 0.0, -math.inf
+    return False, 0.0, 0.0
+
+
+@jit
+def aim(state, params, points, count, x, y, theta, tx, ty, t, radius):
+    """The target the navigator is given at (x, y, θ) on its way to (tx, ty) at time ``t``
     (``radius``: the body's): towards the route point, at the target's distance; the target
     itself without a route point."""
-    plan(state, params, points, count, x, y, tx, ty, t, radius)
+    plan(state, params, points, count, x, y, theta, tx, ty, t, radius)
     if state[GUIDE_X] != state[GUIDE_X]:
         return tx, ty
     ox, oy = state[GUIDE_X] - x, state[GUIDE_Y] - y

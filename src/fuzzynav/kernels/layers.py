@@ -37,6 +37,13 @@ PARAM_NAMES = (
     # the route guidance (kernels.guidance; off unless ``guide``): grid cell, look-ahead, re-plan
     # period, straight-line reach, and the room kept, widest first (contiguous)
     "guide", "guide_cell", "guide_ahead", "guide_replan", "guide_direct", "guide_room", "guide_narrow", "guide_bare",
+    # the car route of the guidance (kernels.car_route; off unless ``guide_car``): the room kept, then
+    # the search's numbers in the order of kernels.car_search.search (contiguous), its grid cell,
+    # steering values and limit, look-ahead; the robot's wheelbase
+    "guide_car", "guide_car_room", "guide_car_step", "guide_car_node", "guide_car_headings", "guide_car_weight",
+    "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reach", "guide_car_budget",
+    "guide_car_reverse", "guide_car_gear", "guide_car_cell", "guide_car_steerings", "guide_car_steering",
+    "guide_car_ahead", "guide_car_tight", "guide_car_speed", "wheelbase",
     # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     "places_slots", "points_slots", "cell_slots", "grow",
 )
@@ -45,6 +52,10 @@ PARAM_NAMES = (
  REVISIT, MIN_LAP, PATIENCE, LOOP_GAIN, SAMPLE_EVERY, HORIZON,
  OFFSET, SEARCH, NEAR, REACH, LEAVE_GAIN, FREE, FOLLOW_TIME, ROOM, TIGHT, AHEAD, REPLAN,
  GUIDE, GUIDE_CELL, GUIDE_AHEAD, GUIDE_REPLAN, GUIDE_DIRECT, GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE,
+ GUIDE_CAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEP, GUIDE_CAR_NODE, GUIDE_CAR_HEADINGS, GUIDE_CAR_WEIGHT,
+ GUIDE_CAR_COMFORT, GUIDE_CAR_TURN, GUIDE_CAR_SWITCH, GUIDE_CAR_REACH, GUIDE_CAR_BUDGET,
+ GUIDE_CAR_REVERSE, GUIDE_CAR_GEAR, GUIDE_CAR_CELL, GUIDE_CAR_STEERINGS, GUIDE_CAR_STEERING,
+ GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, GUIDE_CAR_SPEED, WHEELBASE,
  PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
 TABLES_AT = len(PARAM_NAMES)
 STATE_NAMES = (
@@ -56,12 +67,15 @@ STATE_NAMES = (
     "best", "t_best", "first", "places",
     # boundary following: on, side, side that failed, hit distance, start, route point, when planned
     "active", "side", "failed", "hit", "t_follow", "route_x", "route_y", "planned",
-    # route guidance: the route point given (NaN: the goal itself), when planned
-    "guide_x", "guide_y", "guide_planned",
+    # route guidance: the route point given (NaN: the goal itself), when planned; the car route's
+    # manoeuvre (gear −1 / +1 while the layer drives it, else 0): its arc's curvature and length, the
+    # distance driven on it
+    "guide_x", "guide_y", "guide_planned", "guide_gear", "guide_kappa", "guide_run", "guide_driven",
 )
 (STOPPED, COUNT, PHASE, T_RECOVERY, START_X, START_Y, BACK_STEERING, BACK_SPEED, HEADING, FLIP, LAST_X, LAST_Y,
  BEST, T_BEST, FIRST, PLACES_KEPT, ACTIVE, SIDE, FAILED, HIT, T_FOLLOW, ROUTE_X, ROUTE_Y,
- PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED) = range(len(STATE_NAMES))
+ PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_RUN,
+ GUIDE_DRIVEN) = range(len(STATE_NAMES))
 PLACES_AT = len(STATE_NAMES)
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
 

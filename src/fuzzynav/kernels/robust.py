@@ -5,7 +5,7 @@
 goal, replaced by a point towards the route round what was seen). The navigator runs every step
 (its hit memory and behaviour switch stay current); a layer in charge replaces its command.
 Behaviour codes are the navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``,
-``BF``.
+``BF``, + 3, 4 for ``CAR-BACK``, ``CAR-FWD`` (the guidance's car route driven by the layer).
 """
 
 from __future__ import annotations
@@ -51,12 +51,16 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
     if p[GUIDE] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, aim_x, aim_y, t, p[RADIUS])
+        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, theta, aim_x, aim_y, t, p[RADIUS])
     steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
                                                ranges, angles, max_range, dt, d_o, b_o)
     labels = int(p[N_LABELS])
     if following:
         code = labels + 2
+    if p[GUIDE] != 0.0 and state[PHASE] == NO_PHASE:
+        moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt)
+        if moving:
+            return a, u, labels + (3 if u < 0 else 4)
     if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
         return steering, speed, code
     if state[PHASE] != NO_PHASE:

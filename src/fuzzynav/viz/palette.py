@@ -22,6 +22,8 @@ _CODES: dict[str, tuple[str, str]] = {
     "REC-BACK": ("#e7298a", "recovery, backing out on a safe arc after the safety stop held"),
     "REC-TURN": ("#a6761d", "recovery, turning the other way before handing back"),
     "BF": ("#000080", "loop escape, following the boundary until the goal is free (Bug algorithms)"),
+    "CAR-BACK": ("#66a61e", "car route (hybrid A* on what was seen), backing along its arc"),
+    "CAR-FWD": ("#1b9e77", "car route (hybrid A* on what was seen), driving its arc where it is tight"),
 }
 # label -> (colour, legend text): the codes, then the labels that are words already
 BEHAVIOURS: dict[str, tuple[str, str]] = {

@@ -1,0 +1,147 @@
+"""A route the car can drive round the obstacles seen so far, compiled: the car route of the
+route guidance of ``fuzzy-5b-gap-robust`` (:mod:`fuzzynav.kernels.guidance`).
+
+Hybrid A* (D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, AAAI workshop 2008;
+:func:`fuzzynav.kernels.car_search.search`) with forward and backward arcs at the navigator's
+full lock (J. A. Reeds, L. A. Shepp, Pacific J. Math. 1990), planned from the robot's pose on
+the remembered obstacle points (:mod:`fuzzynav.kernels.sightings`), every unseen place assumed
+free (the freespace assumption of D*, A. Stentz, ICRA 1994):
+
+1. Grid: cells of ``cell`` m over the box holding the robot, the target and the points, plus
+   ``MARGIN``; each cell's clearance is the distance from its centre to the nearest point
+   (capped at the radius plus ``comfort``).
+2. Heuristic: the cost-to-go of each cell to the target's, by Dijkstra over 8 neighbours on
+   the cells that keep the radius, each move's length times ``1 + weight · max(0, comfort −
+   (clearance − radius))`` — the search's own clearance cost, without the heading.
+3. The search keeps the radius given (the body's plus a margin), or the robot's present
+   clearance less ``SLACK`` when that is smaller (a robot already close to a post may still
+   drive away from it), never less than the body's.
+
+:func:`plan` returns the plan's poses, :func:`first_leg` what the guidance needs of it: its first leg's gear, whether
+it is part of a manoeuvre (a K-turn), the point ``ahead`` m along it (or its end, the first
+cusp), the curvature of its first arc and how far the plan keeps that arc.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.jit import jit
+from fuzzynav.kernels import car_search, sightings
+
+MARGIN = 1.5  # m of grid round the robot, the target and the points
+SLACK = 0.02  # m: the plan keeps the robot's present clearance less this, when below the radius asked
+NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))
+
+
+@jit
+def clearance_grid(points, count, low_x, low_y, nx, ny, cell, cap):
+    """(ny, nx): the distance from each cell's centre to the nearest of the first ``count``
+    ``points``, capped at ``cap``."""
+    grid = np.full((ny, nx), cap)
+    reach = int(cap / cell) + 1
+    for p in range(count):
+        px, py = points[p, 0] - low_x, points[p, 1] - low_y
+        ci, cj = int(px / cell), int(py / cell)
+        for j in range(max(cj - reach, 0), min(cj + reach, ny - 1) + 1):
+            dy = (j + 0.5) * cell - py
+            for i in range(max(ci - reach, 0), min(ci + reach, nx - 1) + 1):
+                d = math.hypot((i + 0.5) * cell - px, dy)
+                if d < grid[j, i]:
+                    grid[j, i] = d
+    return grid
+
+
+@jit
+def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
+    """(ny, nx): the heuristic of the module docstring (inf where the target cannot be reached)."""
+    ny, nx = clearance.shape
+    cost = np.full(ny * nx, np.inf)
+    done = np.zeros(ny * nx, dtype=np.bool_)
+    heap_f, heap_n = np.empty(8 * ny * nx + 1), np.empty(8 * ny * nx + 1, np.int64)
+    goal = goal_row * nx + goal_col
+    cost[goal] = 0.0
+    size = car_search.push(heap_f, heap_n, 0, 0.0, goal)
+    while size > 0:
+        here, size = car_search.pop(heap_f, heap_n, size)
+        if done[here]:
+            continue
+        done[here] = True
+        row, col = here // nx, here % nx
+        for dr, dc in NEIGHBOURS:
+            r, c = row + dr, col + dc
+            if r < 0 or c < 0 or r >= ny or c >= nx or clearance[r, c] < radius:
+                continue
+            there = r * nx + c
+            step = cell * (1.4142135623730951 if dr != 0 and dc != 0 else 1.0)
+            total = cost[here] + step * (1.0 + weight * max(0.0, comfort - (clearance[r, c] - radius)))
+            if total < cost[there]:
+                cost[there] = total
+                size = car_search.push(heap_f, heap_n, size, total, there)
+    return cost.reshape(ny, nx)
+
+
+@jit
+def plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell):
+    """(found, poses (m, 3), primitives (m,)): the plan from the pose (x, y, θ) to within
+    ``reach`` of (tx, ty), world frame, its first pose the start (primitive −1), each next one
+    reached by the arc of ``primitives`` (:func:`fuzzynav.kernels.car_search.search`, whose
+    ``numbers`` these are, but the radius: ``radius``, or less as the module docstring says,
+    never below ``body``); ``found`` False when the search gives up."""
+    radius = max(body, min(radius, sightings.clearance(points, count, x, y) - SLACK))
+    comfort = numbers[5]
+    low_x, low_y, high_x, high_y = min(x, tx), min(y, ty), max(x, tx), max(y, ty)
+    for p in range(count):
+        low_x, low_y = min(low_x, points[p, 0]), min(low_y, points[p, 1])
+        high_x, high_y = max(high_x, points[p, 0]), max(high_y, points[p, 1])
+    low_x, low_y = low_x - MARGIN, low_y - MARGIN
+    nx, ny = int(math.ceil((high_x + MARGIN - low_x) / cell)), int(math.ceil((high_y + MARGIN - low_y) / cell))
+    clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
+    heuristic = cost_to_go(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius, numbers[4],
+                           comfort)
+    setting = numbers.copy()
+    setting[0] = radius
+    start = np.array([x - low_x, y - low_y, theta % (2.0 * math.pi)])
+    goal = np.array([tx - low_x, ty - low_y])
+    xs, ys, ths, parents, primitives, end = car_search.search(clearance, cell, heuristic, start, goal, curvatures,
+                                                              setting)
+    chain = [max(end, 0)]
+    while parents[chain[-1]] >= 0:
+        chain.append(parents[chain[-1]])
+    poses, kinds = np.empty((len(chain), 3)), np.empty(len(chain), np.int64)
+    for k in range(len(chain)):
+        node = chain[len(chain) - 1 - k]
+        poses[k, 0], poses[k, 1], poses[k, 2] = xs[node] + low_x, ys[node] + low_y, ths[node]
+        kinds[k] = primitives[node]
+    return end >= 0, poses, kinds
+
+
+@jit
+def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell, ahead, tight):
+    """(found, manoeuvre, backwards, px, py, kappa, run) of the :func:`plan` (the same
+    arguments): ``found`` False when the search gives up; else ``backwards`` tells the first
+    leg's gear and ``manoeuvre`` whether it is part of a K-turn (backward, or forward to a cusp
+    less than ``ahead`` m away); (px, py) is the point ``ahead`` m along the first leg or its
+    end (the target when the robot is within reach), and ``kappa`` the curvature of the first
+    arc, which the plan keeps for ``run`` m."""
+    found, poses, primitives = plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell)
+    if not found or len(poses) == 1:
+        return found, False, False, tx, ty, 0.0, 0.0
+    kinds, step = len(curvatures), numbers[1]
+    backwards = primitives[1] >= kinds
+    kappa = curvatures[primitives[1] % kinds]
+    run, same, travelled, cusp, narrow = 0.0, True, 0.0, False, False
+    px, py = poses[1, 0], poses[1, 1]
+    for k in range(1, len(poses)):
+        if (primitives[k] >= kinds) != backwards:
+            cusp = True
+            break
+        same = same and primitives[k] == primitives[1]
+        if same:
+            run += step
+        if travelled < ahead:
+            px, py, travelled = poses[k, 0], poses[k, 1], travelled + step
+            narrow = narrow or sightings.clearance(points, count, px, py) < body + tight
+    return True, backwards or (cusp and travelled < ahead) or narrow, backwards, px, py, kappa, run

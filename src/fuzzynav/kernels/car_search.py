@@ -1,0 +1,139 @@
+"""Hybrid A* search for a car, compiled: the search of :mod:`fuzzynav.world.hybrid_astar` (the
+map-aware planner of ``astar-pp``) and of the car route of ``fuzzy-5b-gap-robust``
+(:mod:`fuzzynav.kernels.car_route`, on the obstacles the robot has seen).
+
+D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, *Practical search techniques in path planning
+for autonomous driving*, AAAI workshop on search in AI and robotics, 2008: continuous poses,
+search nodes of a cell and a heading bin, motion primitives that are arcs of fixed curvature.
+With ``reverse`` > 0 every arc is also driven backwards, at ``reverse`` times its cost, plus
+``gear`` per change of direction — the forward and backward arcs of the shortest car paths of
+J. A. Reeds and L. A. Shepp, *Optimal paths for a car that goes both forwards and backwards*,
+Pacific J. Math. 145(2), 1990 — so a plan may hold the cusps of a K-turn.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.jit import jit
+
+
+@jit
+def arc_point(x, y, theta, kappa, s):
+    """The pose after driving ``s`` metres (backwards when ``s`` < 0) on the arc of curvature
+    ``kappa`` from (x, y, θ)."""
+    if abs(kappa) < 1e-9:
+        return x + s * math.cos(theta), y + s * math.sin(theta), theta
+    end = theta + kappa * s
+    return x + (math.sin(end) - math.sin(theta)) / kappa, y - (math.cos(end) - math.cos(theta)) / kappa, end
+
+
+@jit
+def push(heap_f, heap_n, size, f, node):
+    """Add ``node`` with key ``f`` to the binary heap of ``size`` entries; returns the new size."""
+    i = size
+    heap_f[i], heap_n[i] = f, node
+    while i > 0:
+        parent = (i - 1) // 2
+        if heap_f[parent] <= heap_f[i]:
+            break
+        heap_f[parent], heap_f[i] = heap_f[i], heap_f[parent]
+        heap_n[parent], heap_n[i] = heap_n[i], heap_n[parent]
+        i = parent
+    return size + 1
+
+
+@jit
+def pop(heap_f, heap_n, size):
+    """(node, new size): the entry of the smallest key, taken off the heap."""
+    node = heap_n[0]
+    size -= 1
+    heap_f[0], heap_n[0] = heap_f[size], heap_n[size]
+    i = 0
+    while True:
+        left, smallest = 2 * i + 1, i
+        if left < size and heap_f[left] < heap_f[smallest]:
+            smallest = left
+        if left + 1 < size and heap_f[left + 1] < heap_f[smallest]:
+            smallest = left + 1
+        if smallest == i:
+            break
+        heap_f[smallest], heap_f[i] = heap_f[i], heap_f[smallest]
+        heap_n[smallest], heap_n[i] = heap_n[i], heap_n[smallest]
+        i = smallest
+    return node, size
+
+
+@jit
+def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
+    """Hybrid A* from the pose ``start`` to within ``reach`` of ``goal`` on the grid
+    ``clearance`` (ny, nx) of ``cell`` m whose lower-left corner is the origin; ``heuristic``
+    (ny, nx): the cost-to-go of each cell (inf: unreachable). ``numbers``: radius, step,
+    node_cell, headings, weight, comfort, turn_cost, switch_cost, reach, budget, reverse, gear
+    (:mod:`fuzzynav.world.hybrid_astar` tells their meaning; ``reverse`` 0: forward arcs only).
+    Primitive ``a`` is the arc of ``curvatures[a % K]``, driven backwards when ``a`` ≥ K.
+    Returns the node arrays (x, y, θ, parent, primitive) and the goal node (−1: none within the
+    budget of nodes)."""
+    radius, step, node_cell, headings, weight, comfort, turn_cost, switch_cost, reach, budget, reverse, gear = numbers
+    bins, budget, kinds = int(headings), int(budget), len(curvatures)
+    primitives_per_node = 2 * kinds if reverse > 0 else kinds
+    ny, nx = clearance.shape
+    node_rows, node_cols = int(ny * cell / node_cell) + 1, int(nx * cell / node_cell) + 1
+    best = np.full(node_rows * node_cols * bins, np.inf)
+    closed = np.zeros(node_rows * node_cols * bins, dtype=np.bool_)
+    xs, ys, ths, gs = np.empty(budget), np.empty(budget), np.empty(budget), np.empty(budget)
+    parents, primitives, keys = np.empty(budget, np.int64), np.empty(budget, np.int64), np.empty(budget, np.int64)
+    heap_f, heap_n = np.empty(budget), np.empty(budget, np.int64)
+    samples = max(2, int(math.ceil(step / (0.5 * cell))))
+    kmax = np.abs(curvatures).max()
+    xs[0], ys[0], ths[0], gs[0], parents[0], primitives[0] = start[0], start[1], start[2], 0.0, -1, -1
+    keys[0] = -1
+    count, size = 1, push(heap_f, heap_n, 0, 0.0, 0)
+    while size > 0:
+        node, size = pop(heap_f, heap_n, size)
+        if keys[node] >= 0:
+            if closed[keys[node]] or gs[node] > best[keys[node]]:
+                continue
+            closed[keys[node]] = True
+        x, y, theta, g = xs[node], ys[node], ths[node], gs[node]
+        if math.hypot(x - goal[0], y - goal[1]) <= reach:
+            return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
+        for a in range(primitives_per_node):
+            kappa, backwards = curvatures[a % kinds], a >= kinds
+            length = -step if backwards else step
+            penalty, blocked = 0.0, False
+            for j in range(1, samples + 1):
+                px, py, _ = arc_point(x, y, theta, kappa, length * j / samples)
+                row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
+                if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < radius:
+                    blocked = True
+                    break
+                penalty += 1.0 + weight * max(0.0, comfort - (clearance[row, col] - radius))
+            if blocked:
+                continue
+            px, py, pth = arc_point(x, y, theta, kappa, length)
+            pth = pth % (2.0 * math.pi)
+            h = heuristic[int(math.floor(py / cell)), int(math.floor(px / cell))]
+            if not math.isfinite(h):
+                continue
+            cost = step * (penalty / samples + turn_cost * abs(kappa) / kmax)
+            if backwards:
+                cost *= reverse
+            if primitives[node] >= 0 and primitives[node] != a:
+                cost += switch_cost
+                if (primitives[node] >= kinds) != backwards:
+                    cost += gear
+            key = ((int(py / node_cell) * node_cols + int(px / node_cell)) * bins
+                   + int(pth / (2.0 * math.pi) * bins) % bins)
+            if closed[key] or g + cost >= best[key]:
+                continue
+            if count >= budget:
+                return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], -1
+            best[key] = g + cost
+            xs[count], ys[count], ths[count], gs[count] = px, py, pth, g + cost
+            parents[count], primitives[count], keys[count] = node, a, key
+            size = push(heap_f, heap_n, size, g + cost + h, count)
+            count += 1
+    return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], -1

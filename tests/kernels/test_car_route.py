@@ -1,0 +1,93 @@
+"""The car route of the route guidance (kernels.car_route, kernels.car_search): hybrid A* with
+forward and backward arcs on the obstacle points seen so far — a plan out of a chamber too narrow
+to turn in holds a K-turn, every pose keeps the clearance, and a blocked route point is planned
+again."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.kernels import car_route, guidance, layers
+
+PARAMS = make_controller("fuzzy-5b-gap-robust").params
+BODY = float(PARAMS[layers.RADIUS])
+
+
+def _curvatures():
+    steering = PARAMS[layers.GUIDE_CAR_STEERING]
+    count = int(PARAMS[layers.GUIDE_CAR_STEERINGS])
+    return np.tan(np.linspace(-steering, steering, count)) / PARAMS[layers.WHEELBASE]
+
+
+def _numbers(reverse=True):
+    numbers = PARAMS[layers.GUIDE_CAR_ROOM:layers.GUIDE_CAR_GEAR + 1].copy()
+    if not reverse:
+        numbers[layers.GUIDE_CAR_REVERSE - layers.GUIDE_CAR_ROOM] = 0.0
+    return numbers
+
+
+def chamber():
+    """Points every 5 cm on three walls of a chamber 1.6 m wide, open at y = 0 (too narrow for
+    a full-lock turn of the car: 2 × 0.69 m + its 0.6 m body)."""
+    side = np.arange(0.0, 2.41, 0.05)
+    end = np.arange(-0.8, 0.81, 0.05)
+    return np.vstack([np.column_stack([np.full_like(side, -0.8), side]),
+                      np.column_stack([np.full_like(side, 0.8), side]), np.column_stack([end, np.full_like(end, 2.4)])])
+
+
+def _plan(points, pose, goal, reverse=True):
+    return car_route.plan(points, len(points), *pose, *goal, BODY + _numbers()[0], BODY, _curvatures(),
+                          _numbers(reverse), PARAMS[layers.GUIDE_CAR_CELL])
+
+
+def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
+    walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, -4.0)  # facing the closed end, goal behind
+    found, poses, primitives = _plan(walls, pose, goal, reverse=False)
+    assert not found  # forwards only, the car cannot leave
+    found, poses, primitives = _plan(walls, pose, goal)
+    assert found
+    backwards = primitives[1:] >= len(_curvatures())
+    assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
+    assert np.hypot(*(poses[-1, :2] - goal)) <= _numbers()[8]
+    leg = car_route.first_leg(walls, len(walls), *pose, *goal, BODY + _numbers()[0], BODY, _curvatures(), _numbers(),
+                              PARAMS[layers.GUIDE_CAR_CELL], PARAMS[layers.GUIDE_CAR_AHEAD],
+                              PARAMS[layers.GUIDE_CAR_TIGHT])
+    assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
+
+
+def test_every_pose_of_the_plan_keeps_the_clearance_asked():
+    rng = np.random.default_rng(3)
+    posts = rng.uniform([-3.0, 1.0], [3.0, 7.0], size=(25, 2))
+    found, poses, _ = _plan(posts, (0.0, 0.0, math.pi / 2), (0.0, 9.0))
+    assert found
+    gaps = np.hypot(poses[:, None, 0] - posts[None, :, 0], poses[:, None, 1] - posts[None, :, 1]).min(axis=1)
+    # the search tests cell centres on a 0.1 m grid: each pose is within half a cell diagonal of one
+    assert gaps.min() >= BODY + _numbers()[0] - PARAMS[layers.GUIDE_CAR_CELL] / math.sqrt(2)
+    assert np.all(np.hypot(*np.diff(poses[:, :2], axis=0).T) < _numbers()[1] + 1e-9)
+
+
+def test_a_route_point_that_newly_seen_points_block_is_planned_again():
+    state = layers.fresh_state(1, PARAMS)[0]
+    posts = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
+    first = guidance.aim(state, PARAMS, posts, len(posts), 0.0, 0.0, math.pi / 2, 0.0, 10.0, 0.0, BODY)
+    point = state[[layers.GUIDE_X, layers.GUIDE_Y]].copy()
+    assert np.isfinite(point).all()
+    seen = np.vstack([posts, point + np.array([[0.0, 0.0], [0.1, 0.0], [-0.1, 0.0]])])
+    assert guidance.aim(state, PARAMS, seen, len(seen), 0.0, 0.0, math.pi / 2, 0.0, 10.0, 0.1, BODY) != first
+    assert state[layers.GUIDE_PLANNED] == pytest.approx(0.1)
+    # a new route point clear of the blocked one, or (the plan now passing close to the new
+    # points) an arc the layer drives itself
+    moved = np.hypot(*(state[[layers.GUIDE_X, layers.GUIDE_Y]] - point)) > BODY
+    assert moved or state[layers.GUIDE_GEAR] != 0.0
+
+
+def test_a_robot_that_cannot_reverse_gets_no_backward_arc():
+    walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
+    for reverse_speed, gear in ((0.5, -1.0), (0.0, 0.0)):
+        params = PARAMS.copy()
+        params[layers.MAX_REVERSE_SPEED] = reverse_speed
+        state = layers.fresh_state(1, params)[0]
+        guidance.aim(state, params, walls, len(walls), *pose, *goal, 0.0, BODY)
+        assert state[layers.GUIDE_GEAR] == gear  # backs up if it can; else no arc is driven
