@@ -86,75 +86,103 @@ def snorm(kind, a, b):
 
 
 @jit
-def tnorm_into(kind, a, b):
-    """a ← T(a, b) elementwise, one loop per T-norm: with the norm a constant, the loops vectorise."""
+def tnorm_into(kind, a, b, out, w):
+    """out ← w × T(a, b) elementwise (``out`` may be ``a``; w = 1 changes no bit), one loop per
+    T-norm: with the norm a constant, the loops vectorise."""
     if kind == 0:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(0, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(0, a[j], b[j])
     elif kind == 1:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(1, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(1, a[j], b[j])
     elif kind == 2:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(2, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(2, a[j], b[j])
     elif kind == 3:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(3, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(3, a[j], b[j])
     elif kind == 4:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(4, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(4, a[j], b[j])
     elif kind == 5:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(5, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(5, a[j], b[j])
     elif kind == 6:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(6, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * tnorm(6, a[j], b[j])
 
 
 @jit
-def snorm_into(kind, a, b):
-    """a ← S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
+def snorm_into(kind, a, b, out, w):
+    """out ← w × S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
     if kind == 0:
-        for k in range(a.shape[0]):
-            a[k] = snorm(0, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(0, a[j], b[j])
     elif kind == 1:
-        for k in range(a.shape[0]):
-            a[k] = snorm(1, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(1, a[j], b[j])
     elif kind == 2:
-        for k in range(a.shape[0]):
-            a[k] = snorm(2, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(2, a[j], b[j])
     elif kind == 3:
-        for k in range(a.shape[0]):
-            a[k] = snorm(3, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(3, a[j], b[j])
     elif kind == 4:
-        for k in range(a.shape[0]):
-            a[k] = snorm(4, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(4, a[j], b[j])
     elif kind == 5:
-        for k in range(a.shape[0]):
-            a[k] = snorm(5, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(5, a[j], b[j])
     elif kind == 6:
-        for k in range(a.shape[0]):
-            a[k] = snorm(6, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(6, a[j], b[j])
     elif kind == 7:
-        for k in range(a.shape[0]):
-            a[k] = snorm(7, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(7, a[j], b[j])
     elif kind == 8:
-        for k in range(a.shape[0]):
-            a[k] = snorm(8, a[k], b[k])
+        for j in range(a.shape[0]):
+            out[j] = w * snorm(8, a[j], b[j])
+
+
+@jit
+def _left_deep(program, first, end):
+    """Whether ``program[first:end]`` is p (q OP)*: each operator joins the value so far and a proposition."""
+    if (end - first) % 2 == 0 or program[first] < 0:
+        return False
+    for i in range(first + 1, end, 2):
+        if program[i] < 0 or program[i + 1] >= 0:
+            return False
+    return True
 
 
 @jit
 def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
     """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
     ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N). Rows go
-    by chunks that stay in cache."""
+    by chunks that stay in cache. A left-deep program (p q OP r OP …, every conjunction of
+    propositions) is folded straight into ``out[r]``, the weight applied by its last operator;
+    others run on a stack. Either way the same operations in the same order."""
     n = table.shape[1]
     stack = np.empty((max(1, program.shape[0]), CHUNK))
     for lo in range(0, n, CHUNK):
         size = min(n, lo + CHUNK) - lo
         for r in range(starts.shape[0] - 1):
+            s, e, weight, degree = starts[r], starts[r + 1], weights[r], out[r, lo:lo + size]
+            if _left_deep(program, s, e):
+                so_far = table[program[s], lo:lo + size]
+                if e - s == 1:
+                    for k in range(size):
+                        degree[k] = weight * so_far[k]
+                for i in range(s + 1, e, 2):
+                    w = weight if i + 2 == e else 1.0
+                    if program[i + 1] == AND:
+                        tnorm_into(conjunction, so_far, table[program[i], lo:lo + size], degree, w)
+                    else:
+                        snorm_into(disjunction, so_far, table[program[i], lo:lo + size], degree, w)
+                    so_far = degree
+                continue
             top = 0
-            for i in range(starts[r], starts[r + 1]):
+            for i in range(s, e):
                 code = program[i]
                 if code >= 0:
                     stack[top, :size] = table[code, lo:lo + size]
@@ -162,10 +190,10 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
                     continue
                 top -= 1
                 if code == AND:
-                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size])
+                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size], 1.0)
                 else:
-                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size])
-            degree, weight, first = out[r, lo:lo + size], weights[r], stack[0, :size]
+                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size], 1.0)
+            first = stack[0, :size]
             for k in range(size):
                 degree[k] = weight * first[k]
 
@@ -220,8 +248,8 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
-                tnorm_into(imp, implied, shapes[t, first:end])
-                snorm_into(aggregation, mu[first:end], implied)
+                tnorm_into(imp, implied, shapes[t, first:end], implied, 1.0)
+                snorm_into(aggregation, mu[first:end], implied, mu[first:end], 1.0)
         out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi), size)
 
 
@@ -244,7 +272,7 @@ def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, 
             else:
                 present[g] = True
             continue
-        snorm_into(aggregation, degree[g], v)
+        snorm_into(aggregation, degree[g], v, degree[g], 1.0)
         if masked:
             for n in range(v.shape[0]):
                 present[g, n] = present[g, n] or triggered[a, n]
@@ -282,10 +310,56 @@ def affine(coefficients, constants, inputs, z):
 
 
 @jit
+def _add_weighted(d, z, num, den):
+    """num += d z, den += d (its own function: with the arrays as arguments the loop vectorises;
+    measured 3x faster than the same loop on an array chosen in the caller)."""
+    for k in range(d.shape[0]):
+        num[k] += d[k] * z[k]
+        den[k] += d[k]
+
+
+@jit
+def _every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
+    """:func:`weighted_affine` where every activation triggers (General activation), in one pass
+    per group and chunk of rows: its degree (a group of one activation read in place), its value
+    z, and Σ g z, Σ g accumulated — the operations of the three kernels, in their order."""
+    n_groups, n = coefficients.shape[0], out.shape[0]
+    folded, z, num, den = np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK)
+    for lo in range(0, n, CHUNK):
+        hi = min(n, lo + CHUNK)
+        size = hi - lo
+        num[:size] = 0.0
+        den[:size] = 0.0
+        for g in range(n_groups):
+            first, count = 0, 0
+            for a in range(rows.shape[0]):
+                if groups[a] == g:
+                    if count == 0:
+                        first = rows[a]
+                    else:
+                        snorm_into(aggregation, degrees[first, lo:hi] if count == 1 else folded[:size],
+                                   degrees[rows[a], lo:hi], folded[:size], 1.0)
+                    count += 1
+            zg = z[:size]
+            zg[:] = constants[g]
+            for i in range(coefficients.shape[1]):
+                c, x = coefficients[g, i], inputs[i, lo:hi]
+                for k in range(size):
+                    zg[k] += c * x[k]
+            _add_weighted(degrees[first, lo:hi] if count == 1 else folded[:size], zg, num[:size], den[:size])
+        for k in range(size):
+            y = num[k] / den[k]
+            out[lo + k] = (y * den[k] if weighted_sum else y) if n_groups > 0 else np.nan
+
+
+@jit
 def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation, coefficients, constants, inputs,
                     weighted_sum, out):
     """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
     cache: a weighted output whose terms are all constant or linear."""
+    if not masked:
+        _every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out)
+        return
     n_groups, n = coefficients.shape[0], out.shape[0]
     degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)
     z = np.empty((n_groups, CHUNK))
