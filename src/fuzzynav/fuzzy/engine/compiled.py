@@ -32,7 +32,8 @@ from fuzzynav.jit import jit
 
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
 CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
-MINIMUM, MAXIMUM = TNORMS.index("Minimum"), SNORMS.index("Maximum")
+MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
+MAXIMUM = SNORMS.index("Maximum")
 
 
 @jit
@@ -202,10 +203,18 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 def _max_min(mu, shapes, t, first, end, w):
     """mu ← max(mu, min(w, term t)) on the samples [first, end), where no NaN can occur. Its own
     function, given whole arrays (measured: 1.5-2x faster than the same loop on views made in the
-    caller's row loop)."""
+    caller's row loop, or in a function of several loops)."""
     m, shape = mu[first:end], shapes[t, first:end]
     for k in range(m.shape[0]):
         m[k] = max(m[k], min(w, shape[k]))
+
+
+@jit
+def _max_product(mu, shapes, t, first, end, w):
+    """mu ← max(mu, w × term t) on the samples [first, end), where no NaN can occur (as :func:`_max_min`)."""
+    m, shape = mu[first:end], shapes[t, first:end]
+    for k in range(m.shape[0]):
+        m[k] = max(m[k], w * shape[k])
 
 
 @jit
@@ -218,7 +227,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
     (-1, R) when a sample lies outside [0, 1]."""
     n_units, size = unit_term.shape[0], x.shape[0]
     w = np.empty(n_units)
-    mu, scratch, area = np.empty(padded(size)), np.empty(size), np.empty(padded(size))
+    mu, scratch, area = np.zeros(padded(size)), np.empty(size), np.empty(padded(size))
     at = np.zeros(padded(size))  # the points, padded for reduce_sampled
     at[:size] = x
     for n in range(degrees.shape[1]):
@@ -232,25 +241,25 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
         bounded = True
         for u in range(n_units):
             bounded = bounded and 0.0 <= w[u] <= 1.0
-        mu[:] = 0.0
-        lo, hi = size, 0  # the samples any unit touched
+        lo, hi = size, 0  # the samples any unit touched (mu is 0 elsewhere)
         for u in range(n_units):
-            t, wu = unit_term[u], w[u]
-            first, end = 0, size
-            if bounded and support[t, 0] >= 0:
-                if wu == 0.0:
-                    continue
-                first, end = support[t, 0], support[t, 1]
+            t, wu, imp = unit_term[u], w[u], unit_implication[u]
+            plain = bounded and support[t, 0] >= 0  # no NaN: the support alone, skipped where w = 0
+            if plain and wu == 0.0:
+                continue
+            first, end = (support[t, 0], support[t, 1]) if plain else (0, size)
             lo, hi = min(lo, first), max(hi, end)
-            imp = unit_implication[u]
-            if bounded and support[t, 0] >= 0 and aggregation == MAXIMUM and imp == MINIMUM:
+            if plain and aggregation == MAXIMUM and imp == MINIMUM:
                 _max_min(mu, shapes, t, first, end, wu)
+            elif plain and aggregation == MAXIMUM and imp == PRODUCT:
+                _max_product(mu, shapes, t, first, end, wu)
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
                 tnorm_into(imp, implied, shapes[t, first:end], implied, 1.0)
                 snorm_into(aggregation, mu[first:end], implied, mu[first:end], 1.0)
         out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi), size)
+        mu[lo:hi] = 0.0
 
 
 @jit
