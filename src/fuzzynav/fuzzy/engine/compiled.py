@@ -87,62 +87,61 @@ def snorm(kind, a, b):
 
 
 @jit
-def tnorm_into(kind, a, b, out, w):
-    """out ← w × T(a, b) elementwise (``out`` may be ``a``; w = 1 changes no bit), one loop per
-    T-norm: with the norm a constant, the loops vectorise."""
+def tnorm_into(kind, a, b):
+    """a ← T(a, b) elementwise, one loop per T-norm: with the norm a constant, the loops vectorise."""
     if kind == 0:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(0, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(0, a[k], b[k])
     elif kind == 1:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(1, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(1, a[k], b[k])
     elif kind == 2:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(2, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(2, a[k], b[k])
     elif kind == 3:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(3, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(3, a[k], b[k])
     elif kind == 4:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(4, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(4, a[k], b[k])
     elif kind == 5:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(5, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(5, a[k], b[k])
     elif kind == 6:
-        for j in range(a.shape[0]):
-            out[j] = w * tnorm(6, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = tnorm(6, a[k], b[k])
 
 
 @jit
-def snorm_into(kind, a, b, out, w):
-    """out ← w × S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
+def snorm_into(kind, a, b):
+    """a ← S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
     if kind == 0:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(0, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(0, a[k], b[k])
     elif kind == 1:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(1, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(1, a[k], b[k])
     elif kind == 2:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(2, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(2, a[k], b[k])
     elif kind == 3:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(3, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(3, a[k], b[k])
     elif kind == 4:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(4, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(4, a[k], b[k])
     elif kind == 5:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(5, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(5, a[k], b[k])
     elif kind == 6:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(6, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(6, a[k], b[k])
     elif kind == 7:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(7, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(7, a[k], b[k])
     elif kind == 8:
-        for j in range(a.shape[0]):
-            out[j] = w * snorm(8, a[j], b[j])
+        for k in range(a.shape[0]):
+            a[k] = snorm(8, a[k], b[k])
 
 
 @jit
@@ -161,8 +160,8 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
     """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
     ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N). Rows go
     by chunks that stay in cache. A left-deep program (p q OP r OP …, every conjunction of
-    propositions) is folded straight into ``out[r]``, the weight applied by its last operator;
-    others run on a stack. Either way the same operations in the same order."""
+    propositions) is folded in ``out[r]`` (its first proposition, each operator in place, the
+    weight); others run on a stack. Either way the same operations in the same order."""
     n = table.shape[1]
     stack = np.empty((max(1, program.shape[0]), CHUNK))
     for lo in range(0, n, CHUNK):
@@ -170,17 +169,15 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
         for r in range(starts.shape[0] - 1):
             s, e, weight, degree = starts[r], starts[r + 1], weights[r], out[r, lo:lo + size]
             if _left_deep(program, s, e):
-                so_far = table[program[s], lo:lo + size]
-                if e - s == 1:
-                    for k in range(size):
-                        degree[k] = weight * so_far[k]
+                degree[:] = table[program[s], lo:lo + size]
                 for i in range(s + 1, e, 2):
-                    w = weight if i + 2 == e else 1.0
                     if program[i + 1] == AND:
-                        tnorm_into(conjunction, so_far, table[program[i], lo:lo + size], degree, w)
+                        tnorm_into(conjunction, degree, table[program[i], lo:lo + size])
                     else:
-                        snorm_into(disjunction, so_far, table[program[i], lo:lo + size], degree, w)
-                    so_far = degree
+                        snorm_into(disjunction, degree, table[program[i], lo:lo + size])
+                if weight != 1.0:  # x × 1 = x: skipping it changes no bit
+                    for k in range(size):
+                        degree[k] = weight * degree[k]
                 continue
             top = 0
             for i in range(s, e):
@@ -191,9 +188,9 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
                     continue
                 top -= 1
                 if code == AND:
-                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size], 1.0)
+                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size])
                 else:
-                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size], 1.0)
+                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size])
             first = stack[0, :size]
             for k in range(size):
                 degree[k] = weight * first[k]
@@ -256,8 +253,8 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
-                tnorm_into(imp, implied, shapes[t, first:end], implied, 1.0)
-                snorm_into(aggregation, mu[first:end], implied, mu[first:end], 1.0)
+                tnorm_into(imp, implied, shapes[t, first:end])
+                snorm_into(aggregation, mu[first:end], implied)
         out[n] = reduce_sampled(reduction, mu, at, area, lo, max(lo, hi), size)
         mu[lo:hi] = 0.0
 
@@ -281,7 +278,7 @@ def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, 
             else:
                 present[g] = True
             continue
-        snorm_into(aggregation, degree[g], v, degree[g], 1.0)
+        snorm_into(aggregation, degree[g], v)
         if masked:
             for n in range(v.shape[0]):
                 present[g, n] = present[g, n] or triggered[a, n]
@@ -343,11 +340,12 @@ def _every_row_affine(degrees, rows, groups, aggregation, coefficients, constant
             first, count = 0, 0
             for a in range(rows.shape[0]):
                 if groups[a] == g:
+                    if count == 1:
+                        folded[:size] = degrees[first, lo:hi]
                     if count == 0:
                         first = rows[a]
                     else:
-                        snorm_into(aggregation, degrees[first, lo:hi] if count == 1 else folded[:size],
-                                   degrees[rows[a], lo:hi], folded[:size], 1.0)
+                        snorm_into(aggregation, folded[:size], degrees[rows[a], lo:hi])
                     count += 1
             zg = z[:size]
             zg[:] = constants[g]

@@ -49,7 +49,7 @@ def _accumulate(value, conclusions, conclusion_row, before, aggregation, d):
         if c >= before:
             break
         if opened:
-            compiled.snorm_into(aggregation, d, value[conclusion_row[c]], d, 1.0)
+            compiled.snorm_into(aggregation, d, value[conclusion_row[c]])
         else:
             d[:] = value[conclusion_row[c]]
             opened = True
