@@ -44,7 +44,7 @@ _SQRT2_BITS = 0x3FF6A09E667F3BCD  # the bits of √2
 _MANTISSA, _ONE_BITS = 0x000FFFFFFFFFFFFF, 0x3FF0000000000000
 
 
-@jit(fused_multiply_add=True)
+@jit(fastmath=("contract",))
 def _exp_r(r):
     """exp(r) for |r| ≤ ln 2 / 2: a minimax polynomial of degree 11 (Remez, relative error
     1.4e-17 with these double coefficients), Horner's scheme."""
@@ -55,7 +55,7 @@ def _exp_r(r):
     return p
 
 
-@jit(fused_multiply_add=True)
+@jit(fastmath=("contract",))
 def _reduce(x, p, t):
     """exp's range reduction: ``t`` = x log₂e rounded to an integer k plus _SHIFT, ``p`` = exp(r)."""
     for k in range(x.shape[0]):
@@ -113,7 +113,7 @@ def _split(x, m, e):
         bits[k] = (b & _MANTISSA) | (_ONE_BITS - (1 << 52) if high else _ONE_BITS)
 
 
-@jit(fused_multiply_add=True)
+@jit(fastmath=("contract",))
 def _log_of_split(x, m, e, out):
     lg = _LG
     for k in range(x.shape[0]):
