@@ -240,7 +240,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 implied[:] = wu
                 tnorm_into(imp, implied, shapes[t, first:end])
                 snorm_into(aggregation, mu[first:end], implied)
-        if reduction == 0:  # Centroid: its sums called here (measured: -30 ns a row against reduce_sampled's call)
+        if reduction == 0:  # Centroid: its sums called here, as reduce_sampled's call costs more than they do
             total, moment = centroid_sums(mu, at, lo, max(lo, hi))
             out[n] = moment / total
         else:
@@ -306,7 +306,7 @@ def affine(coefficients, constants, inputs, z):
 
 @jit
 def _add_weighted(d, z, num, den):
-    """num += d z, den += d (its own function, so that it vectorises: measured 3x faster inline)."""
+    """num += d z, den += d (its own function, so that the loop vectorises: inline it did not)."""
     for k in range(d.shape[0]):
         num[k] += d[k] * z[k]
         den[k] += d[k]

@@ -100,8 +100,8 @@ def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, par
         unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
         coefficients, constants, every_row, out):
     """Outputs ``out`` (N, K) of the packed engine for the inputs X (module docstring): :func:`_rows`
-    by blocks of rows whose arrays stay in cache (measured: ~5 % on fuzzylite's examples, whole
-    batches for small engines: each block costs its allocations), then each output's
+    by blocks of rows whose arrays stay in cache (whole batches for small engines, as each block
+    costs its allocations), then each output's
     ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch (``lock-previous``
     carries a value from one row to the next)."""
     n = X.shape[0]

@@ -9,8 +9,8 @@ each ``np.where`` is the same test here, so a NaN or an infinite input takes the
 
 Gaussian, Bell and Sigmoid terms take ``exp`` and ``pow`` = exp(b log a) from
 :mod:`.vmath`, which the compiler vectorises inside the loop (the C library's ``exp``, called
-value by value, costs ~10 ns; NumPy's SIMD ``exp`` ~1 ns but only outside the kernel): within a
-few ulp of NumPy's (see :mod:`.vmath`), not its very bits. The rarer terms built on ``exp``
+value by value, is several times slower; NumPy's SIMD ``exp`` works only outside the kernel):
+within a few ulp of NumPy's (see :mod:`.vmath`), not its very bits. The rarer terms built on ``exp``
 (Spike, the sigmoid and Gaussian products and difference) have no code here: the engine
 fuzzifies them in NumPy before the kernel, as ``Function`` and ``Linear`` premises.
 """

@@ -1,7 +1,8 @@
 """``exp`` and ``log`` over a column of values, in loops the compiler vectorises.
 
-A compiled loop that calls ``math.exp`` calls the C library once per value (~10 ns); NumPy's own
-``exp`` uses SIMD instructions (~1 ns), but only on a whole array, outside the kernel. These are
+A compiled loop that calls ``math.exp`` calls the C library once per value, several times slower
+than NumPy's own ``exp`` (SIMD instructions), which works only on a whole array, outside the
+kernel (README, "Speed on fuzzylite's examples"). These are
 written as plain arithmetic on arrays, so LLVM vectorises them inside the kernel
 (:mod:`.term_columns`), with the bits of a double handled through an ``int64`` view of a scratch
 array (no scalar bit casts, no branches in the loops):
@@ -87,8 +88,8 @@ def _scale(p, a, b, out):
 @jit
 def exp_column(x, out):
     """``out[k]`` = exp(``x[k]``) (``out`` may be ``x``). Each pass its own function over whole
-    arrays, reading and writing different ones: so each loop vectorises (measured 2-3x faster
-    than the same loops written inline)."""
+    arrays, reading and writing different ones: so each loop vectorises (the same loops written
+    inline did not)."""
     scratch = np.empty(3 * BLOCK)
     p, t, second = scratch[:BLOCK], scratch[BLOCK:2 * BLOCK], scratch[2 * BLOCK:]
     for lo in range(0, x.shape[0], BLOCK):
