@@ -19,6 +19,7 @@ from fuzzynav.fuzzy import FuzzySystem, Gaussian, Ramp, Triangular, Variable, st
 from fuzzynav.fuzzy.io import from_fll, to_fll
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
 from tests.fuzzy.fll_fixtures import ENGINES, ROWWISE
+from tests.fuzzy.numpy_path import assert_fused_matches_numpy_path
 
 pytestmark = pytest.mark.fll
 fl = pytest.importorskip("fuzzylite")
@@ -155,7 +156,8 @@ def test_feature_engines(name):
 
 @pytest.mark.parametrize("example", SUPPORTED_EXAMPLES)
 def test_fused_kernel_gives_the_bits_of_the_numpy_path_on_the_examples(example):
-    """The fused kernel (every example it takes) against the engine's NumPy path, bit for bit."""
+    """The fused kernel (every example it takes) against the engine's NumPy path: bit for bit, or
+    within 1e-12 × the output range where Gaussian, Bell or Sigmoid terms are fuzzified in it."""
     from fuzzynav.fuzzy.engine import Engine
 
     ours = from_fll((EXAMPLES / example).read_text(), source=example)
@@ -163,9 +165,6 @@ def test_fused_kernel_gives_the_bits_of_the_numpy_path_on_the_examples(example):
     if example in ("takagi_sugeno/approximation.fll", "tsukamoto/tsukamoto.fll"):  # function / inverse conclusions
         assert "a weighted conclusion that is not constant or linear" in ours.fallback
         return
-    assert ours.fallback is None
     X = _inputs(ours, 2000, 0.0, 8, outside=0.2)
     X[0] = np.nan
-    fused = ours.evaluate(X)
-    ours._packed = "forced by the test"  # keeps the NumPy path
-    np.testing.assert_array_equal(fused, ours.evaluate(X))
+    assert_fused_matches_numpy_path(ours, X)

@@ -1,5 +1,6 @@
 """The fused kernel (one compiled call from the inputs to the outputs) gives the very bits of the
-engine's NumPy path, on every fixture engine it takes, and says why it does not take the others."""
+engine's NumPy path (within a few ulp where it fuzzifies Gaussian, Bell and Sigmoid terms: see
+``numpy_path.py``), on every fixture engine it takes, and says why it does not take the others."""
 
 import numpy as np
 import pytest
@@ -7,8 +8,8 @@ import pytest
 from fuzzynav.fuzzy.engine.pack import NUMPY, TERM
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 from tests.fuzzy.fll_fixtures import ENGINES, INPUT_TERMS
+from tests.fuzzy.numpy_path import assert_fused_matches_numpy_path
 
-NUMPY_PATH = "forced by the test"  # an Engine whose packed form is a reason keeps its NumPy path
 FALLBACKS = {"activation-First", "activation-Last", "activation-Highest", "activation-Lowest",
              "activation-Proportional", "activation-Threshold", "takagi-sugeno", "tsukamoto"}
 
@@ -24,12 +25,8 @@ def _inputs(engine, n=3000):
 @pytest.mark.parametrize("name", sorted(set(ENGINES) - FALLBACKS))
 def test_fused_kernel_gives_the_bits_of_the_numpy_path(name):
     engine = from_fll_engine(ENGINES[name])
-    assert engine.fallback is None
     X = _inputs(engine)
-    fused = engine.evaluate(X)
-    packed, engine._packed = engine._packed, NUMPY_PATH
-    np.testing.assert_array_equal(fused, engine.evaluate(X))
-    engine._packed = packed
+    fused = assert_fused_matches_numpy_path(engine, X)
     np.testing.assert_array_equal(fused[::101], np.vstack([engine.evaluate(X[k:k + 1]) for k in range(0, len(X), 101)]))
 
 
@@ -51,20 +48,17 @@ def _every_term_engine() -> str:
 
 
 def test_every_term_type_and_hedge_in_the_kernel_or_numpy():
-    """Terms without exp or pow are fuzzified in the kernel, the others (and Function) by NumPy;
-    either way the bits of the NumPy path."""
+    """Terms are fuzzified in the kernel, but for Function and the rarer ones built on exp (by
+    NumPy); either way the NumPy path's outputs."""
     engine = from_fll_engine(_every_term_engine())
     assert engine.fallback is None
     literals, packed = engine._packed
     how = {p.term: int(packed.literal[k, 0]) for k, p in enumerate(literals)}
-    assert {t for t, h in how.items() if h == NUMPY} == {"bell", "gauss", "gprod", "sig", "sdiff", "sprod", "spike",
-                                                          "fun"}
-    assert {t for t, h in how.items() if h == TERM} == {"tri", "trap", "s", "z", "pi", "cos", "conc", "conc2", "arc",
-                                                         "bin", "ell", "rect", "ramp", "disc", "half"}
-    X = _inputs(engine, 5000)
-    fused = engine.evaluate(X)
-    engine._packed = NUMPY_PATH
-    np.testing.assert_array_equal(fused, engine.evaluate(X))
+    assert {t for t, h in how.items() if h == NUMPY} == {"gprod", "sdiff", "sprod", "spike", "fun"}
+    assert {t for t, h in how.items() if h == TERM} == {"tri", "trap", "bell", "gauss", "sig", "s", "z", "pi", "cos",
+                                                         "conc", "conc2", "arc", "bin", "ell", "rect", "ramp", "disc",
+                                                         "half"}
+    fused = assert_fused_matches_numpy_path(engine, _inputs(engine, 5000))
     assert np.isfinite(fused).mean() > 0.9
 
 
@@ -75,3 +69,18 @@ def test_what_the_kernel_does_not_take_keeps_the_numpy_path_and_says_why(name, r
     engine = from_fll_engine(ENGINES[name])
     assert reason in engine.fallback
     assert np.isfinite(engine.evaluate(_inputs(engine)[4:])).any()
+
+
+def test_blocks_of_rows_carry_lock_previous_across_their_boundaries():
+    """The kernel runs big batches by blocks of rows (fused.ROWS at least); lock-previous still
+    carries the last value of one block into the next, as the NumPy path over the whole batch."""
+    from fuzzynav.fuzzy.engine import fused
+
+    engine = from_fll_engine(_every_term_engine())
+    X = _inputs(engine, 3 * fused.ROWS + 10)
+    gaps = [fused.ROWS - 1, fused.ROWS, 2 * fused.ROWS, 2 * fused.ROWS + 1]
+    X[gaps] = np.nan  # no rule fires: w keeps the value of the row before (lock-previous)
+    out = assert_fused_matches_numpy_path(engine, X)
+    w = engine.output_names.index("w")
+    assert np.all(out[gaps, w] == out[[fused.ROWS - 2, fused.ROWS - 2, 2 * fused.ROWS - 1, 2 * fused.ROWS - 1], w])
+    assert np.isfinite(out[gaps, w]).all()

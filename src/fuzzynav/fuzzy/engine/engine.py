@@ -118,12 +118,16 @@ class Engine(VariableNames):
                              field=f"{where}: {rule.text()}")
 
     # ------------------------------------------------------------------ evaluation
-    def _values(self, X) -> tuple[np.ndarray, dict]:
-        """Input values as rows (n_inputs, N), clipped where locked, and every variable's value by name."""
+    def _checked(self, X) -> np.ndarray:
         X = np.asarray(X, dtype=float)
         if X.ndim != 2 or X.shape[1] != len(self.inputs):
             raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
                              f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
+        return X
+
+    def _values(self, X) -> tuple[np.ndarray, dict]:
+        """Input values as rows (n_inputs, N), clipped where locked, and every variable's value by name."""
+        X = self._checked(X)
         columns = np.array(X.T, order="C")  # (n_inputs, N): one contiguous row per input
         values = {}
         for i, var in enumerate(self.inputs):
@@ -149,16 +153,19 @@ class Engine(VariableNames):
         from fuzzynav.fuzzy.engine import compiled, fused
         from fuzzynav.fuzzy.engine.pack import NUMPY
 
-        X = np.asarray(X, dtype=float)
-        columns, values = self._values(X)
+        X = self._checked(X)
         n = X.shape[0]
-        state = _State(self, values, n)
         if self.fallback is None:
             literals, packed = self._packed
             table = np.empty((len(literals), n))
-            for row in np.flatnonzero(packed.literal[:, 0] == NUMPY):
-                table[row] = state.degree(literals[row])
+            in_numpy = np.flatnonzero(packed.literal[:, 0] == NUMPY)
+            if in_numpy.size:
+                state = _State(self, self._values(X)[1], n)
+                for row in in_numpy:
+                    table[row] = state.degree(literals[row])
             return fused.evaluate(packed, table, X)
+        columns, values = self._values(X)
+        state = _State(self, values, n)
         for block, program in zip(self.blocks, self._programs):
             if block.enabled and block.rules:
                 state.run(block, program)

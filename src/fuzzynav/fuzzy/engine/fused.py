@@ -19,10 +19,11 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy.engine import compiled
-from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, TERM, WEIGHTED, ZERO, Packed
+from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Packed
 from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
 from fuzzynav.jit import jit
 
+ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
 _EVERY_ROW = np.ones((0, 0), dtype=np.bool_)  # the "triggered" mask weighted_affine does not read (General)
 
 
@@ -98,7 +99,43 @@ def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, par
         conclusion_hedges, conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start,
         unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
         coefficients, constants, every_row, out):
-    """Outputs ``out`` (N, K) of the packed engine for the inputs X (module docstring)."""
+    """Outputs ``out`` (N, K) of the packed engine for the inputs X (module docstring): :func:`_rows`
+    by blocks of rows whose arrays stay in cache (whole batches for small engines, as each block
+    costs its allocations), then each output's
+    ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch (``lock-previous``
+    carries a value from one row to the next)."""
+    n = X.shape[0]
+    raw = np.empty((output.shape[0], n))
+    per_row = table.shape[0] + rule_weight.shape[0] + lo.shape[0] + output.shape[0]  # arrays of one value a row
+    rows = max(ROWS, CACHE_BYTES // (8 * per_row))
+    for r0 in range(0, n, rows):
+        r1 = min(n, r0 + rows)
+        part = np.empty((table.shape[0], r1 - r0))  # the propositions' degrees on these rows
+        for lit in range(table.shape[0]):
+            if literal[lit, 0] == NUMPY:
+                part[lit] = table[lit, r0:r1]
+        y = np.empty((output.shape[0], r1 - r0))
+        _rows(X[r0:r1], part, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+              chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+              conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
+              unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
+              coefficients, constants, every_row, y)
+        raw[:, r0:r1] = y
+    for k in range(output.shape[0]):
+        if output[k, 0] != NAN_OUTPUT:
+            compiled.finish(raw[k], output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0, output_limits[k, 1],
+                            output_limits[k, 2])
+        out[:, k] = raw[k]
+
+
+@jit
+def _rows(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+          chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+          conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
+          unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
+          coefficients, constants, every_row, raw):
+    """``raw[k]``: output k before its ``lock-previous`` / ``default`` / ``lock-range``, on the
+    rows X, with ``table`` the propositions' degrees there (NumPy's rows filled)."""
     n = X.shape[0]
     inputs = np.empty((lo.shape[0], n))
     _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table)
@@ -134,7 +171,4 @@ def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, par
                                      output[k, 3] != 0, y)
         else:
             y[:] = np.nan
-        if kind != NAN_OUTPUT:
-            compiled.finish(y, output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0, output_limits[k, 1],
-                            output_limits[k, 2])
-        out[:, k] = y
+        raw[k] = y

@@ -16,7 +16,7 @@ REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "Lar
 
 
 @jit
-def _centroid_sums(mu, x, lo, hi):
+def centroid_sums(mu, x, lo, hi):
     """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere (and padded with zeros,
     as ``x``, to a multiple of 8 samples): eight running sums,
     sample k in sum k mod 8 (not one: eight independent additions per step instead of a chain of
@@ -71,7 +71,7 @@ def reduce_sampled(kind, mu, x, area, lo, hi, size):
     outside samples [lo, hi); ``area`` (as long as ``mu``) is scratch; ``mu`` and ``x`` are padded
     with zeros beyond them to a multiple of 8 (see :func:`padded`), ``size`` samples before."""
     if kind == 0:
-        total, moment = _centroid_sums(mu, x, lo, hi)
+        total, moment = centroid_sums(mu, x, lo, hi)
         return moment / total
     if kind == 1:  # the samples where the running area is closest to half of it, averaged
         total = 0.0
@@ -103,7 +103,7 @@ def reduce_sampled(kind, mu, x, area, lo, hi, size):
         first, end = lo - lo % 8, hi + (-hi) % 8
         for k in range(first, end):
             area[k] = 1.0 if mu[k] == top else 0.0
-        count, where = _centroid_sums(area, x, lo, hi)
+        count, where = centroid_sums(area, x, lo, hi)
         return where / count
     step = 1 if kind == 3 else -1
     k = lo if kind == 3 else hi - 1

@@ -7,11 +7,12 @@ vectorises), with the formulas, branches and NaN behaviour of the NumPy ``__call
 each ``np.where`` is the same test here, so a NaN or an infinite input takes the same branch.
 :func:`hedge_column` is :data:`fuzzynav.fuzzy.operators.HEDGES`.
 
-Terms built on ``exp`` or ``pow`` (Gaussian, Bell, Sigmoid, Spike, the sigmoid and Gaussian
-products) have no code here: NumPy evaluates those over an array with SIMD instructions, several
-times faster than the C library's functions a compiled loop calls value by value (a Gaussian
-term: ~1 ns a value against ~10 ns), so the engine fuzzifies them in NumPy before the kernel, as
-``Function`` and ``Linear`` premises.
+Gaussian, Bell and Sigmoid terms take ``exp`` and ``pow`` = exp(b log a) from
+:mod:`.vmath`, which the compiler vectorises inside the loop (the C library's ``exp``, called
+value by value, is several times slower; NumPy's SIMD ``exp`` works only outside the kernel):
+within a few ulp of NumPy's (see :mod:`.vmath`), not its very bits. The rarer terms built on ``exp``
+(Spike, the sigmoid and Gaussian products and difference) have no code here: the engine
+fuzzifies them in NumPy before the kernel, as ``Function`` and ``Linear`` premises.
 """
 
 from __future__ import annotations
@@ -21,16 +22,17 @@ import math
 import numpy as np
 
 from fuzzynav.fuzzy import terms as extra
-from fuzzynav.fuzzy.membership import Singleton, Trapezoidal
+from fuzzynav.fuzzy.engine.vmath import exp_column, log_column
+from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid, Singleton, Trapezoidal
 from fuzzynav.jit import jit
 
 HEDGE_CODES = {"not": 0, "very": 1, "somewhat": 2, "extremely": 3, "seldom": 4, "any": 5}
 (TRAPEZOID, SINGLETON, CONSTANT, SSHAPE, ZSHAPE, PISHAPE, COSINE, CONCAVE, ARC, BINARY, SEMIELLIPSE, RECTANGLE,
- DISCRETE) = range(13)
+ DISCRETE, GAUSSIAN, BELL, SIGMOID) = range(16)
 _CODES = {Trapezoidal: TRAPEZOID, Singleton: SINGLETON, extra.Constant: CONSTANT, extra.SShape: SSHAPE,
           extra.ZShape: ZSHAPE, extra.PiShape: PISHAPE, extra.Cosine: COSINE, extra.Concave: CONCAVE,
           extra.Arc: ARC, extra.Binary: BINARY, extra.SemiEllipse: SEMIELLIPSE, extra.Rectangle: RECTANGLE,
-          extra.Discrete: DISCRETE}
+          extra.Discrete: DISCRETE, Gaussian: GAUSSIAN, Bell: BELL, Sigmoid: SIGMOID}
 
 
 def pack_term(mf) -> tuple[int, tuple, float] | None:
@@ -116,6 +118,35 @@ def _semiellipse(x, s, e):
 
 
 @jit
+def _exp_term(code, p, x, out):
+    """Gaussian (σ, m): exp(−½ z z), z = (x − m) / σ; Bell (a, b, c): 1 / (1 + |(x − c) / a|^(2b));
+    Sigmoid (a, c): 1 / (1 + exp(clip(−a (x − c), ±700))) — the NumPy formulas of
+    :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log."""
+    n = x.shape[0]
+    if code == GAUSSIAN:
+        for k in range(n):
+            z = (x[k] - p[1]) / p[0]
+            out[k] = -0.5 * z * z
+        exp_column(out, out)
+        return
+    if code == BELL:
+        for k in range(n):
+            out[k] = abs((x[k] - p[2]) / p[0])
+        log_column(out, out)
+        power = 2.0 * p[1]
+        for k in range(n):
+            out[k] = power * out[k]
+    else:
+        slope = -p[0]
+        for k in range(n):
+            z = slope * (x[k] - p[1])
+            out[k] = 700.0 if z > 700.0 else (-700.0 if z < -700.0 else z)
+    exp_column(out, out)
+    for k in range(n):
+        out[k] = 1.0 / (1.0 + out[k])
+
+
+@jit
 def term_column(code, params, first, end, height, x, out):
     """``out[k]`` = height × the term ``code`` with parameters ``params[first:end]`` at ``x[k]``."""
     p = params[first:end]
@@ -160,9 +191,11 @@ def term_column(code, params, first, end, height, x, out):
         s, e = min(p[0], p[1]), max(p[0], p[1])
         for k in range(n):
             out[k] = 1.0 if s <= x[k] and x[k] <= e else 0.0
-    else:  # DISCRETE
+    elif code == DISCRETE:
         half = p.shape[0] // 2
         out[:] = np.interp(x, p[:half], p[half:])
+    else:
+        _exp_term(code, p, x, out)
     if height != 1.0:
         for k in range(n):
             out[k] = height * out[k]
