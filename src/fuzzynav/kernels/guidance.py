@@ -1,4 +1,4 @@
-"""Route guidance, compiled: the layer of ``fuzzy-5b-gap-robust`` (:mod:`fuzzynav.control.through_gaps`)
+"""Route guidance, compiled: the layer of ``fuzzy-5b`` (the default) (:mod:`fuzzynav.control.through_gaps`)
 that aims the navigator along the shortest route to its target round the obstacle points seen so
 far (:mod:`fuzzynav.kernels.sightings`), unseen space assumed free (:func:`fuzzynav.kernels.route.target`,
 the freespace assumption of D*, Stentz 1994).
