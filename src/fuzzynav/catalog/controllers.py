@@ -54,5 +54,8 @@ def available() -> dict[str, str]:
 
 
 def make_controller(name: str, **options) -> Controller:
-    """Build the controller registered as ``name`` (an :class:`InputError` names close matches)."""
-    return resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
+    """Build the controller registered as ``name`` (an :class:`InputError` names close matches),
+    named so in its traces and metrics (``fuzzy-5b`` and ``fuzzy-5b-gap-robust`` share a factory)."""
+    controller = resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
+    controller.name = name
+    return controller
