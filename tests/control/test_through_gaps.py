@@ -50,6 +50,7 @@ def test_fuzzy_5b_is_the_navigator_also_named_fuzzy_5b_gap_robust():
     np.testing.assert_array_equal(a.pose, b.pose)
     np.testing.assert_array_equal(np.column_stack([a.steering, a.speed]), np.column_stack([b.steering, b.speed]))
     assert a.behaviour.tolist() == b.behaviour.tolist()
+    assert (a.controller, b.controller) == ("fuzzy-5b", "fuzzy-5b-gap-robust")  # each run named as asked
 
 
 def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:

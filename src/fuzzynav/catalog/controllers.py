@@ -54,8 +54,10 @@ def available() -> dict[str, str]:
 
 
 def make_controller(name: str, **options) -> Controller:
-    """Build the controller registered as ``name`` (an :class:`InputError` names close matches),
-    named so in its traces and metrics (``fuzzy-5b`` and ``fuzzy-5b-gap-robust`` share a factory)."""
+    """Build the controller registered as ``name`` (an :class:`InputError` names close matches);
+    a factory registered under two names (``fuzzy-5b``, ``fuzzy-5b-gap-robust``) gives its
+    controller the name asked for, which its traces and metrics show."""
     controller = resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
-    controller.name = name
+    if sum(factory == CONTROLLERS[name][0] for factory, _ in CONTROLLERS.values()) > 1:
+        controller.name = name
     return controller
