@@ -12,7 +12,7 @@ reported, per run, with the runner/peer ratio (median over repetitions).
 ``--campaign N`` also times a real campaign of N worlds × the controllers with ``--workers``
 processes (wall time, the one that matters for a 10,000-run campaign), into a temporary folder.
 
-    python benchmarks/bench_overhead.py [--family mixed] [--worlds 20] [--controllers fuzzy-5b,dwa]
+    python benchmarks/bench_overhead.py [--family mixed] [--worlds 20] [--controllers fuzzy-5b-rays,dwa]
                                         [--repeats 3] [--campaign 0] [--workers 2] [--json]
 """
 
@@ -59,7 +59,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--family", default="mixed")
     parser.add_argument("--worlds", type=int, default=20)
-    parser.add_argument("--controllers", default="fuzzy-5b,dwa")
+    parser.add_argument("--controllers", default="fuzzy-5b-rays,dwa")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--campaign", type=int, default=0, metavar="N")
     parser.add_argument("--workers", type=int, default=2)

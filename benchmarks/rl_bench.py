@@ -18,7 +18,7 @@ starts, 4,000 episodes), ``q-goal-fixed`` (Fig VI.1, 1,500 episodes) and ``fql-g
 (Fig VI.8, 1,000 episodes), ``fql-wall-modules`` (``fql-wall`` reading the nearest of each
 module's three sensors instead of the hand-made follower's single rays), ``fql-avoid-8``
 (``fql-avoid`` with the thesis' 8 rules, without the openness input). The avoidance navigators
-are evaluated as trained and with the turning-room guard of ``fuzzy-5b`` added (reported apart:
+are evaluated as trained and with the turning-room guard of ``fuzzy-5b-thesis`` added (reported apart:
 ``with_turn_guard``). ``--double`` trains
 every run a second time with twice the budget and reports both counts of episodes to converge
 (they must agree: the criterion does not depend on the budget).
@@ -124,7 +124,7 @@ def _fixed(controller) -> dict:
 
 def _avoid(controller) -> dict:
     """Avoidance navigator in 100 random worlds, as trained (the learned avoider alone avoids) and
-    with the turning-room guard of fuzzy-5b added (``turn_guard``: a safety layer, reported apart)."""
+    with the turning-room guard of fuzzy-5b-thesis added (``turn_guard``: a safety layer, reported apart)."""
     from fuzzynav.control.learned import LearnedAvoidanceNavigator
 
     guarded = LearnedAvoidanceNavigator(controller.avoidance, constant_speed=controller.constant_speed,

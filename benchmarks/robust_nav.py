@@ -17,7 +17,7 @@ For every episode the script records the outcome and, for episodes that end away
 how long the robot stood still at the end (``|V| < 1e-6``). Per family and seed it prints the
 rates and ``stood_still_10s``: episodes ending more than 10 s at a stand-still away from the goal.
 
-    python benchmarks/robust_nav.py --controller fuzzy-5b --family mixed dense utrap --seeds 0 1 2 3 4 [--n 100] [--json]
+    python benchmarks/robust_nav.py --controller fuzzy-5b-rays --family mixed dense utrap --seeds 0 1 2 3 4 [--n 100] [--json]
 """
 
 from __future__ import annotations
@@ -137,7 +137,7 @@ def run(controller: str, family: str, n: int, seed: int) -> dict:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--controller", default="fuzzy-5b")
+    parser.add_argument("--controller", default="fuzzy-5b-rays")
     parser.add_argument("--family", nargs="+", default=["mixed", "dense", "utrap"])
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1, 2, 3, 4])
     parser.add_argument("--n", type=int, default=100)

@@ -11,7 +11,7 @@ The public API, importable from ``fuzzynav`` (each name is imported on first use
     import fuzzynav
 
     scenario = fuzzynav.load_scenario("fig-IV-23")          # a built-in name or a YAML file
-    controller = fuzzynav.make_controller("fuzzy-5b")       # fuzzynav.list_controllers()
+    controller = fuzzynav.make_controller("fuzzy-5b")       # the default navigator (lidar); list_controllers()
     trace = fuzzynav.run_episode(scenario, controller)
     print(fuzzynav.metrics(trace, scenario)["outcome"])
     fuzzynav.plot_episode(trace, scenario, "fig-IV-23.png")

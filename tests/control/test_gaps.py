@@ -1,5 +1,5 @@
 """Gap-aware avoidance (kernels.gaps): the opt-in navigators fuzzy-5b-gap / fuzzy-2b-gap (and
-fuzzy-5b-gap inside the layers, fuzzy-5b-gap-robust), with the
+fuzzy-5b-gap inside the layers, the default fuzzy-5b, also named fuzzy-5b-gap-robust), with the
 lidar scan, find and take the one passage wide enough for the body in a row of thin posts; the
 published versions keep their seven rays and no gap finding."""
 

@@ -1,6 +1,7 @@
-"""The default navigators' layers compiled (recovery, loop escape, obstacle memory, route).
+"""The layers of the navigators compiled (recovery, loop escape, obstacle memory, route).
 
-``data/robust_traces.json`` was written by running ``fuzzy-5b`` / ``fuzzy-2b`` with the layers
+``data/robust_traces.json`` was written by running ``fuzzy-5b-rays`` (then named ``fuzzy-5b``) /
+``fuzzy-2b`` with the layers
 of the code before they were compiled (Python, per robot) on five generated worlds of seed 0
 where they back out, turn and follow boundaries (the worlds are stored there): outcome, steps,
 final pose, sums of the poses and commands, and how often each behaviour label occurs.

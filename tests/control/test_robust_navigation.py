@@ -1,8 +1,8 @@
-"""The default chapter IV navigators (recovery, loop escape, the robot's size) and the thesis
-variants kept as published.
+"""The chapter IV navigators on the seven range sensors with layers, ``fuzzy-5b-rays`` and
+``fuzzy-2b`` (recovery, loop escape, the robot's size), and the thesis variants kept as published.
 
-``data/thesis_traces.json`` was written by running ``fuzzy-5b`` / ``fuzzy-2b`` of the code before
-the default navigators got their layers (every goal scenario of the package, and the mixed worlds
+``data/thesis_traces.json`` was written by running ``fuzzy-5b`` / ``fuzzy-2b`` (today's ``-thesis``
+variants) of the code before the navigators got their layers (every goal scenario of the package, and the mixed worlds
 0-008 and 0-009 of seed 0, ``data/mixed_worlds.json``): outcome, steps, final pose and sums of the
 poses and commands of each trace.
 """
@@ -47,17 +47,17 @@ def test_boxed_in_front_of_a_thin_wall_end_it_backs_out_and_reaches_the_goal():
     world = _scenario("mixed-0-009")  # a thin wall end hides between the rays: the thesis navigator stops for good
     stuck = run_episode(world, make_controller("fuzzy-5b-thesis"), seed=0)
     assert stuck.outcome == "timeout" and stuck.speed[-1] == 0.0
-    trace = run_episode(world, make_controller("fuzzy-5b"), seed=0)
+    trace = run_episode(world, make_controller("fuzzy-5b-rays"), seed=0)
     assert trace.reached and not trace.collision
     backing = trace.behaviour == "REC-BACK"
     assert backing.any() and (trace.speed[backing] < 0).all()  # it reversed, as the trace says
     assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
 
 
-@pytest.mark.parametrize("controller", ["fuzzy-5b", "fuzzy-2b"])
-def test_a_robot_in_a_u_trap_escapes_by_following_the_boundary(controller):
+@pytest.mark.parametrize("controller, thesis", [("fuzzy-5b-rays", "fuzzy-5b-thesis"), ("fuzzy-2b", "fuzzy-2b-thesis")])
+def test_a_robot_in_a_u_trap_escapes_by_following_the_boundary(controller, thesis):
     scenario = scenario_from_dict(U_TRAP)
-    trapped = run_episode(scenario, make_controller(controller + "-thesis"))
+    trapped = run_episode(scenario, make_controller(thesis))
     assert trapped.outcome == "timeout"  # the thesis navigator circles inside the U
     trace = run_episode(scenario, make_controller(controller))
     assert trace.reached and "BF" in set(trace.behaviour.tolist())
@@ -66,14 +66,14 @@ def test_a_robot_in_a_u_trap_escapes_by_following_the_boundary(controller):
 def test_without_reverse_gear_there_is_no_recovery():
     world = dict(WORLDS["mixed-0-009"], max_time=30)
     world["robot"] = dict(world["robot"], max_reverse_speed=0.0)
-    trace = run_episode(scenario_from_dict(world), make_controller("fuzzy-5b"), seed=0)
+    trace = run_episode(scenario_from_dict(world), make_controller("fuzzy-5b-rays"), seed=0)
     assert (trace.speed >= 0).all() and not trace.collision
 
 
 def test_loop_detector_fires_on_a_circle_not_on_a_straight_run():
     from fuzzynav.kernels import escape, layers
 
-    params = make_controller("fuzzy-5b").params
+    params = make_controller("fuzzy-5b-rays").params
     state = layers.fresh_state(1, params)[0]
     places = layers.places_of(params, state)
     fired = [escape.circling(state, places, params, 0.1 * k, 5 + math.cos(0.05 * k), 5 + math.sin(0.05 * k), 10.0)
@@ -103,7 +103,7 @@ def _sized(radius, task):
 
 TASKS = {"fuzzy-tracker": "path", "neural-tracker": "path", "anfis-tracker": "path", "pure-pursuit": "path",
          "stanley": "path"}
-RANGE_NAVIGATORS = ("fuzzy-5b", "fuzzy-2b", "fuzzy-5b-thesis", "fuzzy-2b-thesis")
+RANGE_NAVIGATORS = ("fuzzy-5b", "fuzzy-5b-rays", "fuzzy-2b", "fuzzy-5b-thesis", "fuzzy-2b-thesis")
 
 
 @pytest.mark.parametrize("name", sorted(CONTROLLERS))

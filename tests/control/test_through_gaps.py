@@ -39,6 +39,20 @@ def test_the_combined_navigator_backs_out_of_a_pocket_and_reaches_the_goal():
     assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
 
 
+def test_fuzzy_5b_is_the_navigator_also_named_fuzzy_5b_gap_robust():
+    default, alias = make_controller("fuzzy-5b"), make_controller("fuzzy-5b-gap-robust")
+    assert type(default) is type(alias) and type(default.navigator) is type(alias.navigator)
+    np.testing.assert_array_equal(default.params, alias.params)
+    assert default.sensors.count == alias.sensors.count == 271  # the lidar ring
+    world = scenario_from_dict(pocket())
+    a, b = run_episode(world, default, seed=0), run_episode(world, alias, seed=0)
+    assert a.reached and a.steps == b.steps
+    np.testing.assert_array_equal(a.pose, b.pose)
+    np.testing.assert_array_equal(np.column_stack([a.steering, a.speed]), np.column_stack([b.steering, b.speed]))
+    assert a.behaviour.tolist() == b.behaviour.tolist()
+    assert (a.controller, b.controller) == ("fuzzy-5b", "fuzzy-5b-gap-robust")  # each run named as asked
+
+
 def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:
     """The target fuzzy-5b-gap-robust's route guidance (its car route, or the grid route only)
     gives a robot at ``pose`` that has seen ``points``, the goal at (0, 10), at its first plan."""
@@ -72,8 +86,10 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
     assert guidance.aim(state, params, wall, 0, *pose, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
 
 
-def test_route_guidance_options_are_checked_and_off_in_the_default_navigator():
-    assert make_controller("fuzzy-5b").params[layers.GUIDE] == 0.0
+def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only():
+    assert make_controller("fuzzy-5b-rays").params[layers.GUIDE] == 0.0
+    assert make_controller("fuzzy-2b").params[layers.GUIDE] == 0.0
+    assert make_controller("fuzzy-5b").params[layers.GUIDE] == 1.0
     assert make_controller("fuzzy-5b-gap-robust").params[layers.GUIDE] == 1.0
     with pytest.raises(InputError, match="guide_lookahead"):
         make_controller("fuzzy-5b-gap-robust", guidance={"guide_lookahead": 2.0})

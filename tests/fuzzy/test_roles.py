@@ -92,7 +92,8 @@ def test_every_role_exports_and_reads_back(controller, tmp_path):
 
 
 
-@pytest.mark.parametrize("controller, scenario", [("fuzzy-2b", "fig-IV-15a"), ("fuzzy-5b", "fig-IV-22a"),
+@pytest.mark.parametrize("controller, scenario", [("fuzzy-2b", "fig-IV-15a"), ("fuzzy-5b-rays", "fig-IV-22a"),
+                                                  ("fuzzy-5b", "fig-IV-22a"),
                                                   ("wall-follow", "fig-VI-28")])
 def test_every_role_drives_the_compiled_navigators(controller, scenario, tmp_path):
     """Each role's exported system, read back through --fis, drives the compiled navigator along

@@ -91,3 +91,47 @@ def test_a_robot_that_cannot_reverse_gets_no_backward_arc():
         state = layers.fresh_state(1, params)[0]
         guidance.aim(state, params, walls, len(walls), *pose, *goal, 0.0, BODY)
         assert state[layers.GUIDE_GEAR] == gear  # backs up if it can; else no arc is driven
+
+
+def test_no_arc_is_kept_or_planned_while_the_recovery_drives_and_its_end_plans_again():
+    walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
+    state = layers.fresh_state(1, PARAMS)[0]
+    guidance.aim(state, PARAMS, walls, len(walls), *pose, *goal, 0.0, BODY)
+    assert state[layers.GUIDE_GEAR] == -1.0  # a backward arc pending
+    state[layers.PHASE] = layers.BACK  # the recovery manoeuvre takes over and moves the robot
+    moved = (0.1, 1.0, math.pi / 2 + 0.3)
+    for t in (0.1, 2.0):  # before and after guide_replan
+        guidance.aim(state, PARAMS, walls, len(walls), *moved, *goal, t, BODY)
+        assert state[layers.GUIDE_GEAR] == 0.0 and state[layers.GUIDE_PLANNED] == -math.inf
+    state[layers.PHASE] = layers.NO_PHASE  # the recovery ends: planned again at once, from where the robot is
+    guidance.aim(state, PARAMS, walls, len(walls), *moved, *goal, 2.1, BODY)
+    fresh = layers.fresh_state(1, PARAMS)[0]
+    guidance.aim(fresh, PARAMS, walls, len(walls), *moved, *goal, 2.1, BODY)
+    columns = [layers.GUIDE_PLANNED, layers.GUIDE_GEAR, layers.GUIDE_KAPPA, layers.GUIDE_RUN, layers.GUIDE_DRIVEN]
+    np.testing.assert_array_equal(state[columns], fresh[columns])
+    assert state[layers.GUIDE_PLANNED] == pytest.approx(2.1)
+
+
+@pytest.mark.parametrize("starts", [True, False])
+def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
+    """An arc planned towards the goal is not driven once the escape's virtual goal replaces it
+    (or once the escape ends); the route is planned again from the pose the robot has."""
+    from fuzzynav.kernels import robust
+
+    controller = make_controller("fuzzy-5b-gap-robust")
+    angles = np.ascontiguousarray(controller.sensors.angles, dtype=float)
+    kind, params, tables, nav_state, memory, layer_params, rows = controller.compiled(1, angles)
+    row = rows[0]
+    row[[layers.GUIDE_GEAR, layers.GUIDE_KAPPA, layers.GUIDE_RUN, layers.GUIDE_PLANNED]] = 1.0, 0.0, 5.0, 29.9
+    if starts:  # the robot is back where it was 15 s ago, not nearer the goal for 30 s
+        row[layers.PLACES_AT:layers.PLACES_AT + 3] = 15.0, 0.0, 0.0
+        row[[layers.PLACES_KEPT, layers.BEST, layers.T_BEST]] = 1.0, 10.0, 0.0
+    else:  # following a boundary for longer than its limit
+        row[[layers.ACTIVE, layers.SIDE, layers.T_FOLLOW]] = 1.0, 1.0, -100.0
+    ranges = np.full(len(angles), controller.sensors.max_range)
+    steering, speed, code = robust.act_one(kind, params, tables, nav_state[0], memory[0], layer_params, row, 0.0, 0.0,
+                                           0.0, 0.5, 10.0, 0.0, ranges, angles, controller.sensors.max_range, 0.05,
+                                           math.inf, 0.0, 30.0)
+    assert row[layers.ACTIVE] == (1.0 if starts else 0.0)
+    assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
+    assert row[layers.GUIDE_GEAR] == 0.0 and row[layers.GUIDE_PLANNED] == 30.0  # planned again at once

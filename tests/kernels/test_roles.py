@@ -14,8 +14,9 @@ from fuzzynav.kernels import ts0
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario
 
-ROLES = {"goal-seeking": ("gsb",), "fuzzy-2b": ("gsb", "oab"), "fuzzy-5b": ("gsb", "foa", "roa", "loa", "vrb"),
-         "wall-follow": ("wall",)}
+FIVE = ("gsb", "foa", "roa", "loa", "vrb")
+ROLES = {"goal-seeking": ("gsb",), "fuzzy-2b": ("gsb", "oab"), "fuzzy-5b": FIVE, "fuzzy-5b-gap-robust": FIVE,
+         "fuzzy-5b-rays": FIVE, "wall-follow": ("wall",)}
 
 
 @pytest.mark.parametrize("name, roles", ROLES.items())
@@ -26,8 +27,8 @@ def test_role_names(name, roles):
 def test_the_default_tables_given_by_role_drive_as_the_defaults():
     scenario = load_scenario("fig-IV-22a")
     given = {"gsb": goal_seeking(), "foa": nav.front_avoider(), "vrb": nav.velocity_reducer()}
-    a = run_episode(scenario, make_controller("fuzzy-5b"))
-    b = run_episode(scenario, make_controller("fuzzy-5b", systems=given))
+    a = run_episode(scenario, make_controller("fuzzy-5b-rays"))
+    b = run_episode(scenario, make_controller("fuzzy-5b-rays", systems=given))
     np.testing.assert_array_equal(a.pose, b.pose)
 
 
@@ -51,6 +52,8 @@ def test_unknown_role_and_unsupported_system_are_input_errors():
     with pytest.raises(InputError, match="unknown role"):
         make_controller("fuzzy-2b", systems={"foa": nav.front_avoider()})
     with pytest.raises(InputError, match="fuzzy-5b gsb"):  # the min T-norm has no multilinear form
+        make_controller("fuzzy-5b-rays", systems={"gsb": _goal_seeking(tnorm="min")})
+    with pytest.raises(InputError, match="fuzzy-5b-gap gsb"):  # the navigator inside the default
         make_controller("fuzzy-5b", systems={"gsb": _goal_seeking(tnorm="min")})
     foa = nav.front_avoider()
     four = nav.distance_variable("d4")

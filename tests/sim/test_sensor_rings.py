@@ -1,5 +1,6 @@
 """Which sensor ring a run uses: --sensors, else the scenario's ``sensors`` key, else the
-controller's (lidar for the gap-aware fuzzy-2b-gap / fuzzy-5b-gap, the thesis' rays for the rest)."""
+controller's (lidar for the gap-aware fuzzy-2b-gap / fuzzy-5b-gap and the default fuzzy-5b, also named
+fuzzy-5b-gap-robust; the thesis' rays for the rest, fuzzy-5b-rays among them)."""
 
 import json
 
@@ -16,8 +17,9 @@ OPEN = {"robot": {"x": 2, "y": 2}, "goal": {"x": 15, "y": 12}}
 
 @pytest.mark.parametrize("controller, scenario_ring, count, beam", [
     ("fuzzy-5b-gap", None, 271, 0.0), ("fuzzy-2b-gap", None, 271, 0.0), ("fuzzy-5b-thesis", None, 7, 0.0),
-    ("fuzzy-5b", None, 7, 0.0), ("goal-seeking", None, 7, 0.0), ("fuzzy-5b-thesis", "beam", 7, 30.0),
-    ("fuzzy-5b", "lidar", 271, 0.0), ("fuzzy-5b-gap", "thesis", 7, 0.0)])
+    ("fuzzy-5b-rays", None, 7, 0.0), ("goal-seeking", None, 7, 0.0), ("fuzzy-5b-thesis", "beam", 7, 30.0),
+    ("fuzzy-5b-rays", "lidar", 271, 0.0), ("fuzzy-5b-gap", "thesis", 7, 0.0), ("fuzzy-5b", None, 271, 0.0),
+    ("fuzzy-5b-gap-robust", None, 271, 0.0)])
 def test_ring_of_scenario_else_controller(controller, scenario_ring, count, beam):
     doc = {**OPEN, **({"sensors": scenario_ring} if scenario_ring else {})}
     sim = BatchSimulator(scenario_from_dict(doc), make_controller(controller), record=False)

@@ -15,8 +15,12 @@ CONTROLLERS: dict[str, tuple[str, str]] = {}
 CONTROLLERS["goal-seeking"] = ("fuzzynav.control.goal_seeking:make", "goal seeking alone, Table IV.1 (§IV.5.1)")
 CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.robust:fuzzy_2b",
                            "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following)")
-CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.robust:fuzzy_5b",
-                           "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following)")
+CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
+                           "fuzzy-5b-gap (lidar) aimed along a car route round what it has seen, with recovery "
+                           "and loop escape (the default)")
+CONTROLLERS["fuzzy-5b-rays"] = ("fuzzynav.control.robust:fuzzy_5b",
+                                "fuzzy-5b-thesis (7 range sensors) with recovery (backing out) and loop escape "
+                                "(boundary following); the default before fuzzy-5b moved to the lidar")
 CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.robust:fuzzy_2b_thesis",
                                   "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
 CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
@@ -24,9 +28,9 @@ CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
 CONTROLLERS["fuzzy-2b-gap"] = ("fuzzynav.control.avoidance:make_gap",
                                "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
 CONTROLLERS["fuzzy-5b-gap"] = ("fuzzynav.control.five_behaviours:make_gap",
-                               "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
+                               "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits (inside fuzzy-5b)")
 CONTROLLERS["fuzzy-5b-gap-robust"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
-                                      "fuzzy-5b-gap aimed along a route round what it has seen, with recovery and loop escape")
+                                      "another name of fuzzy-5b (the same navigator)")
 CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
 CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
 CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",
@@ -50,5 +54,10 @@ def available() -> dict[str, str]:
 
 
 def make_controller(name: str, **options) -> Controller:
-    """Build the controller registered as ``name`` (an :class:`InputError` names close matches)."""
-    return resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
+    """Build the controller registered as ``name`` (an :class:`InputError` names close matches);
+    a factory registered under two names (``fuzzy-5b``, ``fuzzy-5b-gap-robust``) gives its
+    controller the name asked for, which its traces and metrics show."""
+    controller = resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
+    if sum(factory == CONTROLLERS[name][0] for factory, _ in CONTROLLERS.values()) > 1:
+        controller.name = name
+    return controller

@@ -2,7 +2,8 @@
 
 Every fuzzy controller names its systems by role — ``goal-seeking``: ``gsb`` (Table IV.1);
 ``fuzzy-2b``: ``gsb`` and ``oab`` (Table IV.2); ``fuzzy-5b``: ``gsb``, ``foa``, ``roa``, ``loa``,
-``vrb`` (§IV.7), the same for their ``-thesis`` and ``-gap`` variants; ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
+``vrb`` (§IV.7), the same for their ``-thesis``, ``-gap`` and ``-rays`` variants and
+``fuzzy-5b-gap-robust`` (another name of ``fuzzy-5b``); ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
 ``systems={role: system}``. A replacement comes from any file :func:`fuzzynav.fuzzy.io.load`
 reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the role: the same input variables in
 the same order (the controller feeds them by position) and the same outputs; otherwise an
@@ -26,6 +27,7 @@ ROLES: dict[str, dict[str, str]] = {
 }
 ROLES["fuzzy-2b-thesis"], ROLES["fuzzy-5b-thesis"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]  # the same rule bases
 ROLES["fuzzy-2b-gap"], ROLES["fuzzy-5b-gap"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]
+ROLES["fuzzy-5b-rays"], ROLES["fuzzy-5b-gap-robust"] = ROLES["fuzzy-5b"], ROLES["fuzzy-5b"]
 
 
 def roles_of(controller: str) -> dict[str, str]:

@@ -28,7 +28,7 @@ back in — and the steering jumps between the two tables every step. The switch
 held by the switch of :mod:`fuzzynav.control.supervisor`: OA is taken at once, GSB only after OA
 has driven ``dwell`` steps (default 10, 1 s), and OA, once active, stays wanted while D_ro is
 below ``detection`` + ``release`` (default 0.5 m) and the obstacle within ``sector`` + 15° of
-the heading. Like ``fuzzy-5b``, the navigator turns at full lock (α = ±π/5, the extreme
+the heading. Like the five-behaviour navigators, it turns at full lock (α = ±π/5, the extreme
 singletons of Table IV.2) and low speed ``v_turn`` when its turning room runs out
 (:class:`fuzzynav.control.turning_room.TurnGuard`; this turn is labelled ``OA``), and it has the
 same safety stop (V = 0 when the next step would bring the body within ``stop_margin`` of a

@@ -68,7 +68,7 @@ class CompiledNavigator(BatchController):
     def for_robot(self, robot) -> "CompiledNavigator":
         """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
         scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
-        body radius and, for ``fuzzy-5b``, a top speed no higher than the robot's. The default
+        body radius and, for the five-behaviour navigators, a top speed no higher than the robot's. The default
         robot leaves the parameters as built."""
         from fuzzynav.kernels import navigators
 

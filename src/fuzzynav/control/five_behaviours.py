@@ -1,5 +1,6 @@
-"""``fuzzy-5b``: the five-behaviour navigator of thesis §IV.7 (Figs IV.16–IV.23, Tables IV.1,
-IV.3–IV.6) on the seven range sensors C1…C7.
+"""``fuzzy-5b-thesis``: the five-behaviour navigator of thesis §IV.7 (Figs IV.16–IV.23, Tables
+IV.1, IV.3–IV.6) on the seven range sensors C1…C7; with ``gap=True`` (``fuzzy-5b-gap``) on a lidar,
+the navigator inside the default ``fuzzy-5b`` (:mod:`fuzzynav.control.through_gaps`).
 
 Behaviours: GSB (Table IV.1, guarded against orbiting as in
 :mod:`fuzzynav.control.goal_seeking`), FOA / ROA / LOA (Tables IV.3–IV.5, steering only) and VRB
@@ -50,8 +51,9 @@ run the same code; :meth:`reset` clears the state.
 Behaviour labels: ``GSB``, ``FOA+VRB``, ``ROA+VRB``, ``LOA+VRB``, ``GSB+VRB`` (goal seeking with
 obstacles sensed, speed capped by VRB).
 
-**Through the gaps** (this package's, opt-in as ``fuzzy-5b-gap``, ``gap=True``; without it the
-navigator is the one published, on the seven single rays). The navigator reads the ``lidar`` ring
+**Through the gaps** (this package's: ``fuzzy-5b-gap``, ``gap=True``, and inside the layers and
+route guidance of the default ``fuzzy-5b``; without it the navigator is the one published, on the
+seven single rays). The navigator reads the ``lidar`` ring
 (:func:`fuzzynav.robot.sensors.named_ring`): d1…d7 are the nearest readings of each sensor's 30°
 sector, so the supervisor and the avoiders see 15 cm posts that the seven rays miss, and the whole
 scan is searched for the passage that fits the body plus ``gap_margin`` (0.05 m; where none does,
@@ -121,10 +123,11 @@ class FiveBehaviourNavigator(CompiledNavigator):
 
 
 def make(**options) -> FiveBehaviourNavigator:
-    """Factory of the ``fuzzy-5b`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
+    """The navigator of Fig IV.16 as published (``fuzzy-5b-thesis`` builds it by :func:`fuzzynav.control.robust.fuzzy_5b_thesis`)."""
     return FiveBehaviourNavigator(**options)
 
 
 def make_gap(**options) -> FiveBehaviourNavigator:
-    """Factory of ``fuzzy-5b-gap``: the lidar ring, gap finding on (opt-in: it regresses on mixed worlds)."""
+    """Factory of ``fuzzy-5b-gap``: the lidar ring, gap finding on (alone it regresses on mixed worlds;
+    the default ``fuzzy-5b`` adds the layers and route guidance)."""
     return FiveBehaviourNavigator(gap=True, **options)

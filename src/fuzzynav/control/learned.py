@@ -212,7 +212,7 @@ class TabularGoalSeeker(BatchController):
 def avoidance_supervisor(avoidance):
     """The chapter IV supervisor (:mod:`fuzzynav.control.supervisor`, Fig IV.16) with the learned
     avoider's own thresholds: d_m and d_s are the breakpoints of its ``front`` P set (Fig VI.17),
-    as ``fuzzy-5b`` uses d_m and d_s of Fig IV.18 (detection d_s, front and keep d_m, clear d_s)."""
+    as ``fuzzy-5b-thesis`` uses d_m and d_s of Fig IV.18 (detection d_s, front and keep d_m, clear d_s)."""
     from fuzzynav.control.supervisor import SupervisorParams
 
     d_m, d_s = avoidance.inputs[0].terms["P"].breakpoints()[-2:]
@@ -231,8 +231,8 @@ def with_goal_seeking(alpha, speed, free, goal_command):
     return alpha + free * goal_command[:, 0], speed + free * goal_command[:, 1]
 
 
-GUARD_MARGIN = 0.5  # m: room the guard keeps for the full-lock half turn (as fuzzy-5b's room_margin)
-GUARD_SPEED = 0.3  # m/s: speed of the guard's turn (fuzzy-5b's v_floor)
+GUARD_MARGIN = 0.5  # m: room the guard keeps for the full-lock half turn (as fuzzy-5b-thesis' room_margin)
+GUARD_SPEED = 0.3  # m/s: speed of the guard's turn (fuzzy-5b-thesis' v_floor)
 
 
 class LearnedAvoidanceNavigator(BatchController):
@@ -250,11 +250,11 @@ class LearnedAvoidanceNavigator(BatchController):
     When nothing is near (w_free = 1) this is the goal-seeking behaviour alone and when an
     obstacle is close (w_free = 0) the avoider alone — the switch of Fig IV.9, made continuous by
     the fuzzy partition of Fig VI.17. The chapter IV supervisor (:meth:`drive`) hands the
-    robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b``: without
+    robot to goal seeking alone whenever the goal direction is clear, as in ``fuzzy-5b-thesis``: without
     it the blend keeps pulling away from obstacles beside a clear path and the robot circles
     goals placed near obstacles.
 
-    ``turn_guard`` adds the turning-room guard of ``fuzzy-5b``
+    ``turn_guard`` adds the turning-room guard of ``fuzzy-5b-thesis``
     (:class:`~fuzzynav.control.turning_room.TurnGuard`, thesis §IV.4: no reverse gear, tightest
     turn R = 0.69 m): when the lane ahead is blocked within d_m and the better full-lock half turn
     is about to close, the robot turns at full lock (±π/5) to the roomier side at
@@ -316,7 +316,7 @@ class LearnedAvoidanceNavigator(BatchController):
         with the goal seeker's command for ``goal`` (d_rg, θ_r − θ_d) (B, 2) (:func:`goal_inputs`;
         :func:`with_goal_seeking`), in one call of :func:`fuzzynav.kernels.learned.drive`.
 
-        As in ``fuzzy-5b``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
+        As in ``fuzzy-5b-thesis``: goal seeking alone when the supervisor (Fig IV.16) finds nothing sensed
         or the goal direction clear — at a speed no higher than the avoider's while something is
         sensed (the VRB principle, Table IV.6); the blend otherwise. The avoider's training drives
         the robot through this method with the learner's shares in place of the rules'."""

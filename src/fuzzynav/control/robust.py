@@ -1,5 +1,8 @@
-"""The default chapter IV navigators, ``fuzzy-5b`` and ``fuzzy-2b``: the thesis' navigators with
-a supervisor layer that never lets them freeze, sized to the scenario's robot.
+"""The chapter IV navigators with layers, ``fuzzy-2b`` (a default) and ``fuzzy-5b-rays`` (the
+default five-behaviour navigator before ``fuzzy-5b`` moved to the lidar): the thesis' navigators
+on the seven range sensors with a supervisor layer that never lets them freeze, sized to the
+scenario's robot. The default ``fuzzy-5b`` (:mod:`fuzzynav.control.through_gaps`) is the same
+class round the gap-finding navigator on a lidar, with the route guidance below.
 
 :class:`RobustNavigator` wraps a compiled navigator — a thesis one
 (:mod:`fuzzynav.control.five_behaviours`, :mod:`fuzzynav.control.avoidance`) or any other
@@ -13,9 +16,10 @@ a supervisor layer that never lets them freeze, sized to the scenario's robot.
   beside it (``BF``) until the goal is nearer than where following began and its direction is
   free (the Bug algorithms' rule).
 
-An opt-in third layer, the **route guidance** (:mod:`fuzzynav.kernels.guidance`, used by
-``fuzzy-5b-gap-robust``, :mod:`fuzzynav.control.through_gaps`), aims the navigator along the
-shortest route round the obstacles seen so far; the default navigators do not use it.
+A third layer, the **route guidance** (:mod:`fuzzynav.kernels.guidance`, used by the default
+``fuzzy-5b``, also named ``fuzzy-5b-gap-robust``, :mod:`fuzzynav.control.through_gaps`), aims the
+navigator along the shortest route round the obstacles seen so far; ``fuzzy-2b`` and
+``fuzzy-5b-rays`` do not use it.
 
 The thesis navigator runs every step (its hit memory and behaviour switch stay current); a
 layer in charge replaces its command. The labels in the trace are the navigator's, or
@@ -208,9 +212,9 @@ def _two(name: str, **options):
 
 
 def fuzzy_5b(*, recovery: bool = True, escape: bool = True, **options) -> RobustNavigator:
-    """``fuzzy-5b``: the five-behaviour navigator of §IV.7 with recovery and loop escape
-    (``options``, e.g. ``systems=``, go to the navigator)."""
-    return RobustNavigator(_five("fuzzy-5b", **options), "fuzzy-5b", recovery=recovery, escape=escape)
+    """``fuzzy-5b-rays``: the five-behaviour navigator of §IV.7 on the seven range sensors with
+    recovery and loop escape (``options``, e.g. ``systems=``, go to the navigator)."""
+    return RobustNavigator(_five("fuzzy-5b-rays", **options), "fuzzy-5b-rays", recovery=recovery, escape=escape)
 
 
 def fuzzy_2b(*, recovery: bool = True, escape: bool = True, **options) -> RobustNavigator:

@@ -23,7 +23,7 @@ handful of switch points A…H). The switch (:func:`fuzzynav.kernels.guard.switc
 memory the thesis leaves unsaid, with one rule: **a change that adds caution is taken at once, one that removes caution waits.**
 Caution ranks GSB < GSB+VRB < FOA, ROA, LOA < the full-lock turn of
 :mod:`fuzzynav.control.five_behaviours`. A change to a higher rank happens the step it is asked
-for where the caller calls it urgent (``fuzzy-5b``: a reading below ``keep``, or the full-lock
+for where the caller calls it urgent (the five-behaviour navigators: a reading below ``keep``, or the full-lock
 turn), after the dwell elsewhere; a change to the same or a lower rank only after the current behaviour has been held
 ``dwell`` steps (default 10, 1 s). Goal seeking, once in charge, keeps it with :func:`relaxed` thresholds (``detection``, ``keep``
 and ``clear`` times ``slack``, default 0.8), so the readings that gave it the robot do not take it back the

@@ -1,5 +1,7 @@
 """The gap-aware five-behaviour navigator inside the recovery and loop-escape layers, guided by
-a route round the obstacles seen so far: ``fuzzy-5b-gap-robust``.
+a route round the obstacles seen so far: ``fuzzy-5b``, the default five-behaviour navigator
+(``fuzzy-5b-gap-robust`` is another name of it; the one on the seven range sensors it replaced
+as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
 
 - The inner navigator is the compiled ``fuzzy-5b-gap`` (:mod:`fuzzynav.control.five_behaviours`:
   the lidar ring, readings by sector, VFH+-style gap finding with follow-the-gap's choice nearest
@@ -55,7 +57,7 @@ GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         **options) -> RobustNavigator:
-    """``fuzzy-5b-gap-robust``: ``fuzzy-5b-gap`` (``options`` go to it), route-guided
+    """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), with recovery and loop escape
     (either can be switched off)."""
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator

@@ -1,4 +1,4 @@
-"""Turning room of a tricycle from its range readings (used by the supervisor of ``fuzzy-5b``).
+"""Turning room of a tricycle from its range readings (used by the supervisor of the five-behaviour navigators).
 
 The thesis' robot (§IV.4) has no reverse gear and a bounded steering angle: its tightest turn,
 at the largest steering singleton α_max = π/5 of Fig IV.7, has radius R = l / tan(π/5)

@@ -12,8 +12,10 @@
 - ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100
   each, 10 with ``quick``), the numbers of ``fuzzynav evaluate``.
 
-The navigators are the ``-thesis`` variants, as published (the default ``fuzzy-2b`` and
-``fuzzy-5b`` add recovery and loop escape, :mod:`fuzzynav.control.robust`).
+The navigators are the ``-thesis`` variants, as published (``fuzzy-2b`` and ``fuzzy-5b-rays``
+add recovery and loop escape, :mod:`fuzzynav.control.robust`; the default ``fuzzy-5b`` is the
+five-behaviour navigator on a lidar with those layers and a route guidance,
+:mod:`fuzzynav.control.through_gaps`).
 
 Every function has the registry signature ``(out_dir, quick, seed) -> dict``, writes PNGs and
 returns the measured outcomes.

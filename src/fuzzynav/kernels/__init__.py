@@ -14,7 +14,7 @@ and a batch alike (one robot is a batch of one; the loops over robots are inside
 - :mod:`~fuzzynav.kernels.navigators` — the navigators' ``act``;
 - :mod:`~fuzzynav.kernels.robust` — the default navigators' ``act``: any navigator inside the
   recovery (:mod:`~fuzzynav.kernels.recovery`) and loop-escape (:mod:`~fuzzynav.kernels.escape`,
-  :mod:`~fuzzynav.kernels.route`) layers and the opt-in route guidance
+  :mod:`~fuzzynav.kernels.route`) layers and the route guidance of the default ``fuzzy-5b``
   (:mod:`~fuzzynav.kernels.guidance`), on the obstacle points seen
   (:mod:`~fuzzynav.kernels.sightings`), arrays laid out in :mod:`~fuzzynav.kernels.layers`;
 - :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense.

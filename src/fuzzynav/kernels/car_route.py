@@ -1,5 +1,5 @@
 """A route the car can drive round the obstacles seen so far, compiled: the car route of the
-route guidance of ``fuzzy-5b-gap-robust`` (:mod:`fuzzynav.kernels.guidance`).
+route guidance of ``fuzzy-5b`` (the default) (:mod:`fuzzynav.kernels.guidance`).
 
 Hybrid A* (D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, AAAI workshop 2008;
 :func:`fuzzynav.kernels.car_search.search`) with forward and backward arcs at the navigator's

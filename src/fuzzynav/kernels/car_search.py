@@ -1,5 +1,5 @@
 """Hybrid A* search for a car, compiled: the search of :mod:`fuzzynav.world.hybrid_astar` (the
-map-aware planner of ``astar-pp``) and of the car route of ``fuzzy-5b-gap-robust``
+map-aware planner of ``astar-pp``) and of the car route of ``fuzzy-5b`` (the default)
 (:mod:`fuzzynav.kernels.car_route`, on the obstacles the robot has seen).
 
 D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, *Practical search techniques in path planning

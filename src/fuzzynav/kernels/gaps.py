@@ -1,5 +1,5 @@
-"""Readings by sector and gap finding on a range scan, compiled (the default ``fuzzy-5b`` and
-``fuzzy-2b``; the thesis variants use neither).
+"""Readings by sector and gap finding on a range scan, compiled (the ``-gap`` navigators,
+inside the default ``fuzzy-5b``; the thesis variants, ``fuzzy-2b`` and ``fuzzy-5b-rays`` use neither).
 
 - :func:`sector_readings`: the thesis' seven readings d1…d7 from a scan, each the nearest reading
   within ``half`` of its sensor's direction (a lidar reduced to the ring of §IV.7).

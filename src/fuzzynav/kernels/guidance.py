@@ -1,4 +1,4 @@
-"""Route guidance, compiled: the layer of ``fuzzy-5b-gap-robust`` (:mod:`fuzzynav.control.through_gaps`)
+"""Route guidance, compiled: the layer of ``fuzzy-5b`` (the default) (:mod:`fuzzynav.control.through_gaps`)
 that aims the navigator along the shortest route to its target round the obstacle points seen so
 far (:mod:`fuzzynav.kernels.sightings`), unseen space assumed free (:func:`fuzzynav.kernels.route.target`,
 the freespace assumption of D*, Stentz 1994).
@@ -23,7 +23,9 @@ drives. Elsewhere â€” in a passage barely wider than the body, or in a K-turn â€
 the plan's first arc itself (:func:`manoeuvre`: backward at the recovery's backing speed,
 forward at ``guide_car_speed``, while the recovery's safety test passes) and plans again at its
 end. A route point that a newly seen point blocks (nearer than the body's radius) is planned
-again at once. Names of ``params`` and ``state`` columns: :mod:`fuzzynav.kernels.layers`.
+again at once. While the recovery manoeuvre drives, or when the loop escape begins or ends
+(:func:`drop`), no arc is kept and no plan is made: the route is planned again from the pose the
+robot has when the layer may drive again. Names of ``params`` and ``state`` columns: :mod:`fuzzynav.kernels.layers`.
 """
 
 from __future__ import annotations
@@ -38,8 +40,8 @@ from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CAR, GUIDE_C
                                      GUIDE_CAR_GEAR, GUIDE_CAR_REVERSE, GUIDE_CAR_ROOM, GUIDE_CAR_SPEED,
                                      GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS, GUIDE_CAR_TIGHT, GUIDE_CELL,
                                      GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_NARROW, GUIDE_PLANNED,
-                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y, MAX_REVERSE_SPEED, V_BACK,
-                                     WHEELBASE)
+                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y, MAX_REVERSE_SPEED, NO_PHASE,
+                                     PHASE, V_BACK, WHEELBASE)
 
 
 @jit
@@ -79,9 +81,19 @@ def car(state, params, points, count, x, y, theta, tx, ty, radius):
 
 
 @jit
+def drop(state):
+    """Another layer takes over (the recovery manoeuvre, or the loop escape's start or end): forget
+    the arc pending, and plan again at the next chance, from the pose the robot then has."""
+    state[GUIDE_GEAR], state[GUIDE_PLANNED] = 0.0, -math.inf
+
+
+@jit
 def plan(state, params, points, count, x, y, theta, tx, ty, t, radius):
     """Plan the route point again when ``guide_replan`` s have passed, or when a remembered
-    point blocks it (module docstring)."""
+    point blocks it; never while the recovery drives (module docstring)."""
+    if state[PHASE] != NO_PHASE:
+        drop(state)
+        return
     blocked = state[GUIDE_X] == state[GUIDE_X] and sightings.clearance(points, count, state[GUIDE_X],
                                                                         state[GUIDE_Y]) < radius
     if (t - state[GUIDE_PLANNED] < params[GUIDE_REPLAN] - 1e-9 and not blocked) or state[GUIDE_GEAR] != 0.0:

@@ -1,5 +1,5 @@
 """Array layout of the recovery and loop-escape layers of the default navigators, and of the
-route guidance that ``fuzzy-5b-gap-robust`` adds (the kernels: :mod:`~fuzzynav.kernels.recovery`,
+route guidance that ``fuzzy-5b`` (the default) adds (the kernels: :mod:`~fuzzynav.kernels.recovery`,
 :mod:`~fuzzynav.kernels.escape`, :mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.robust`;
 the controller: :mod:`fuzzynav.control.robust`).
 

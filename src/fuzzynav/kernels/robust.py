@@ -2,7 +2,8 @@
 (:func:`fuzzynav.kernels.navigators.act_one`) inside the recovery and loop-escape layers of
 :mod:`fuzzynav.control.robust`, optionally aimed by the route guidance
 (:mod:`fuzzynav.kernels.guidance`: the navigator's target, the goal or the loop escape's virtual
-goal, replaced by a point towards the route round what was seen). The navigator runs every step
+goal, replaced by a point towards the route round what was seen; its pending arc dropped when
+the loop escape begins or ends). The navigator runs every step
 (its hit memory and behaviour switch stay current); a layer in charge replaces its command.
 Behaviour codes are the navigator's, then ``n_labels`` + 0, 1, 2 for ``REC-BACK``, ``REC-TURN``,
 ``BF``, + 3, 4 for ``CAR-BACK``, ``CAR-FWD`` (the guidance's car route driven by the layer).
@@ -43,10 +44,12 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
                                      or escape.timed_out(state, p, t)):
             escape.stop(state, not escape.timed_out(state, p, t))
             escape.forget_places(state)
+            guidance.drop(state)
         if escape.circling(state, places_of(p, state), p, t, x, y, distance) and (
                 p[RECOVERY] == 0.0 or state[PHASE] == NO_PHASE):
             escape.start(state, t, distance, b_o)
             escape.forget_places(state)
+            guidance.drop(state)
         if state[ACTIVE] != 0.0:
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])

@@ -1,5 +1,5 @@
 """A route to the goal around the obstacles seen so far, compiled, for the loop escape of the
-default navigators and the route guidance of ``fuzzy-5b-gap-robust`` (:mod:`fuzzynav.kernels.layers`).
+default navigators and the route guidance of ``fuzzy-5b`` (the default) (:mod:`fuzzynav.kernels.layers`).
 
 The robot knows no map, but it remembers where its rays hit (:mod:`fuzzynav.kernels.sightings`).
 Planning on those points with every unseen place assumed free — the *freespace assumption* of D*

@@ -31,7 +31,7 @@ from fuzzynav.learn.tasks.common import (
     fql_learner, grid_system, load_fuzzy_model, output_variable, run_phases, steering_episodes, summarise)
 from fuzzynav.robot.sensors import SensorRing
 
-AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b (Fig IV.18)
+AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b-thesis (Fig IV.18)
 AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is learned
 AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
 AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
