@@ -3,17 +3,37 @@
 The centroid's sums (:func:`fuzzynav.fuzzy.engine.reduce.centroid_sums`) keep eight running sums,
 sample k in sum k mod 8, added pairwise at the end: eight independent additions a step instead of
 one chain. numba leaves LLVM's SLP vectoriser off, and the loop vectoriser may not reorder a sum,
-so written as plain Python those eight sums stay scalar. :func:`lane_sums` emits the very same
-operations as two 4-wide vectors per sum (<4 x double> loads, ``fadd``, ``fmul``; no fused
-multiply-add, no reordering), so the same bits, several times faster.
+so written as plain Python those eight sums stay scalar. :func:`lane_sums` compiles to the very
+same operations as two 4-wide vectors per sum (<4 x double> loads, ``fadd``, ``fmul``; no fused
+multiply-add, no reordering), so the same bits, several times faster; under
+``NUMBA_DISABLE_JIT=1`` it runs them as NumPy.
 """
 
 from __future__ import annotations
 
+import numpy as np
 from llvmlite import ir
 from numba import types
 from numba.core import cgutils
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
+
+
+def lane_sums(mu, x, first, end):
+    """(Σ μ, Σ μ x) over the samples [first, end) of two C-contiguous float64 arrays, ``first``
+    and ``end`` multiples of 8 (both arrays at least ``end`` long): sample k in lane k mod 8, the
+    lanes added pairwise. Compiled: :func:`_lane_sums`; this plain Python (``NUMBA_DISABLE_JIT=1``)
+    does the same additions in the same order with NumPy."""
+    t, m = np.zeros(8), np.zeros(8)
+    for k in range(first, end, 8):
+        t += mu[k:k + 8]
+        m += mu[k:k + 8] * x[k:k + 8]
+    return (((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + (t[6] + t[7])),
+            ((m[0] + m[1]) + (m[2] + m[3])) + ((m[4] + m[5]) + (m[6] + m[7])))
+
+
+@overload(lane_sums)
+def _lane_sums_compiled(mu, x, first, end):
+    return lambda mu, x, first, end: _lane_sums(mu, x, first, end)
 
 
 def _lane_total(builder, low, high, lane):
@@ -24,10 +44,8 @@ def _lane_total(builder, low, high, lane):
 
 
 @intrinsic
-def lane_sums(typingctx, mu, x, first, end):
-    """(Σ μ, Σ μ x) over the samples [first, end) of two C-contiguous float64 arrays, ``first``
-    and ``end`` multiples of 8 (both arrays at least ``end`` long): sample k in lane k mod 8,
-    the lanes added pairwise."""
+def _lane_sums(typingctx, mu, x, first, end):
+    """:func:`lane_sums` as LLVM vector instructions."""
     if not all(isinstance(a, types.Array) and a.layout == "C" and a.dtype == types.float64 for a in (mu, x)):
         return None
 

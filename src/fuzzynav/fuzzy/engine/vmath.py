@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import types
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
 
 from fuzzynav.jit import jit
 
@@ -46,20 +46,35 @@ _SQRT2_BITS = 0x3FF6A09E667F3BCD  # the bits of √2
 _MANTISSA, _ONE_BITS = 0x000FFFFFFFFFFFFF, 0x3FF0000000000000
 
 
-@intrinsic
-def as_bits(typingctx, x):
-    """The bits of the double x as an int64 (LLVM ``bitcast``: no memory, vectorisable)."""
-    def codegen(context, builder, signature, args):
-        return builder.bitcast(args[0], context.get_value_type(types.int64))
-    return types.int64(types.float64), codegen
+def as_bits(x):
+    """The bits of the double x as an int64 (compiled: one LLVM ``bitcast``, no memory, vectorisable;
+    as plain Python under ``NUMBA_DISABLE_JIT=1``: a NumPy view)."""
+    return int(np.float64(x).view(np.int64))
+
+
+def from_bits(i):
+    """The double whose bits are the int64 i (as :func:`as_bits`; i wraps around as an int64 does)."""
+    return float(np.int64((i + 2 ** 63) % 2 ** 64 - 2 ** 63).view(np.float64))
 
 
 @intrinsic
-def from_bits(typingctx, i):
-    """The double whose bits are the int64 i."""
+def _bitcast(typingctx, value, to):
+    """``value`` reinterpreted as the type ``to`` (of the same size)."""
+    target = to.instance_type
+
     def codegen(context, builder, signature, args):
-        return builder.bitcast(args[0], context.get_value_type(types.float64))
-    return types.float64(types.int64), codegen
+        return builder.bitcast(args[0], context.get_value_type(target))
+    return target(value, to), codegen
+
+
+@overload(as_bits)
+def _as_bits_compiled(x):
+    return lambda x: _bitcast(x, types.int64)
+
+
+@overload(from_bits)
+def _from_bits_compiled(i):
+    return lambda i: _bitcast(i, types.float64)
 
 
 @jit(fastmath=("contract",))
