@@ -52,7 +52,7 @@ def test_every_term_type_and_hedge_in_the_kernel_or_numpy():
     NumPy); either way the NumPy path's outputs."""
     engine = from_fll_engine(_every_term_engine())
     assert engine.fallback is None
-    literals, packed = engine._packed
+    literals, packed = engine._packed[:2]
     how = {p.term: int(packed.literal[k, 0]) for k, p in enumerate(literals)}
     assert {t for t, h in how.items() if h == NUMPY} == {"gprod", "sdiff", "sprod", "spike", "fun"}
     assert {t for t, h in how.items() if h == TERM} == {"tri", "trap", "bell", "gauss", "sig", "s", "z", "pi", "cos",

@@ -1,5 +1,10 @@
 """The vectorised exp and log of the fused kernel against NumPy's, and the terms built on them."""
 
+import json
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -74,3 +79,35 @@ def test_exp_terms_in_the_kernel_against_numpy(mf):
     ulps = _ulps(ours, expected)
     assert np.all(np.where(np.isfinite(bound), ulps <= bound, ulps == 0.0))
     np.testing.assert_array_equal(np.isnan(ours), np.isnan(expected))
+
+
+PLAIN_PYTHON = """
+import json, numpy as np
+from fuzzynav.fuzzy.engine.reduce import centroid_sums
+from fuzzynav.fuzzy.engine.vmath import exp_column, log_column
+x = np.array(json.loads(input()))
+e, g = np.empty_like(x), np.empty_like(x)
+exp_column(x, e)
+log_column(np.abs(x), g)
+mu = np.abs(np.sin(np.arange(208.0)))
+mu[200:] = 0.0
+print(json.dumps({"jit": hasattr(exp_column, "py_func"), "exp": e.tolist(), "log": g.tolist(),
+                  "centroid": centroid_sums(mu, np.linspace(0.0, 2.0, 208), 5, 200)}))
+"""
+
+
+def test_exp_log_and_centroid_sums_run_as_plain_python():
+    """Under ``NUMBA_DISABLE_JIT=1`` the bit casts and the vector sums run as NumPy: the same numbers
+    (the sums the same bits; exp and log within 1 ulp, the compiled polynomials may use FMA)."""
+    x = np.concatenate([np.random.default_rng(4).uniform(-750.0, 720.0, 300), SPECIALS, -SPECIALS])
+    runs = {}
+    for disable in ("1", "0"):
+        done = subprocess.run([sys.executable, "-c", PLAIN_PYTHON], input=json.dumps(x.tolist()), capture_output=True,
+                              text=True, env={**os.environ, "NUMBA_DISABLE_JIT": disable}, timeout=600)
+        assert done.returncode == 0, done.stderr
+        runs[disable] = json.loads(done.stdout)
+    plain, compiled = runs["1"], runs["0"]
+    assert not plain["jit"] and compiled["jit"]
+    assert plain["centroid"] == compiled["centroid"]
+    for name in ("exp", "log"):
+        assert np.all(_ulps(np.array(plain[name]), np.array(compiled[name])) <= 1.0), name

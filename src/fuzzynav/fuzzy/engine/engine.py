@@ -142,28 +142,29 @@ class Engine(VariableNames):
     def fallback(self) -> str | None:
         """Why :meth:`evaluate` keeps the NumPy path; None when one compiled kernel evaluates the
         engine (:mod:`fuzzynav.fuzzy.engine.fused`)."""
-        from fuzzynav.fuzzy.engine.pack import pack
+        if self._packed is None:  # packed once: a call then costs no imports nor searches
+            from fuzzynav.fuzzy.engine import fused
+            from fuzzynav.fuzzy.engine.pack import NUMPY, pack
 
-        if self._packed is None:
-            self._packed = pack(self)
+            packed = pack(self)
+            self._packed = packed if isinstance(packed, str) else \
+                (*packed, np.flatnonzero(packed[1].literal[:, 0] == NUMPY).tolist(), fused.evaluate)
         return self._packed if isinstance(self._packed, str) else None
 
     def evaluate(self, X) -> np.ndarray:
         """Outputs for a batch of inputs: X (N, n_in) -> (N, n_out), columns in ``output_names``."""
-        from fuzzynav.fuzzy.engine import compiled, fused
-        from fuzzynav.fuzzy.engine.pack import NUMPY
-
         X = self._checked(X)
         n = X.shape[0]
         if self.fallback is None:
-            literals, packed = self._packed
+            literals, packed, in_numpy, evaluate_fused = self._packed  # in_numpy: propositions NumPy fuzzifies
             table = np.empty((len(literals), n))
-            in_numpy = np.flatnonzero(packed.literal[:, 0] == NUMPY)
-            if in_numpy.size:
+            if in_numpy:
                 state = _State(self, self._values(X)[1], n)
                 for row in in_numpy:
                     table[row] = state.degree(literals[row])
-            return fused.evaluate(packed, table, X)
+            return evaluate_fused(packed, table, X)
+        from fuzzynav.fuzzy.engine import compiled
+
         columns, values = self._values(X)
         state = _State(self, values, n)
         for block, program in zip(self.blocks, self._programs):

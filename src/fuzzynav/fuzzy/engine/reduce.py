@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.lanes import lane_sums
 from fuzzynav.jit import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
@@ -18,34 +19,11 @@ REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "Lar
 @jit
 def centroid_sums(mu, x, lo, hi):
     """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere (and padded with zeros,
-    as ``x``, to a multiple of 8 samples): eight running sums,
-    sample k in sum k mod 8 (not one: eight independent additions per step instead of a chain of
-    dependent ones), added pairwise. Anchored on the sample index, so any [lo, hi) holding the
-    non-zero samples gives the same bits."""
-    first, end = lo - lo % 8, hi + (-hi) % 8  # mu and x are padded with zeros to a multiple of 8
-    t0 = t1 = t2 = t3 = t4 = t5 = t6 = t7 = 0.0
-    m0 = m1 = m2 = m3 = m4 = m5 = m6 = m7 = 0.0
-    k = first
-    while k + 8 <= end:
-        t0 += mu[k]
-        t1 += mu[k + 1]
-        t2 += mu[k + 2]
-        t3 += mu[k + 3]
-        t4 += mu[k + 4]
-        t5 += mu[k + 5]
-        t6 += mu[k + 6]
-        t7 += mu[k + 7]
-        m0 += mu[k] * x[k]
-        m1 += mu[k + 1] * x[k + 1]
-        m2 += mu[k + 2] * x[k + 2]
-        m3 += mu[k + 3] * x[k + 3]
-        m4 += mu[k + 4] * x[k + 4]
-        m5 += mu[k + 5] * x[k + 5]
-        m6 += mu[k + 6] * x[k + 6]
-        m7 += mu[k + 7] * x[k + 7]
-        k += 8
-    total = ((t0 + t1) + (t2 + t3)) + ((t4 + t5) + (t6 + t7))
-    return total, ((m0 + m1) + (m2 + m3)) + ((m4 + m5) + (m6 + m7))
+    as ``x``, to a multiple of 8 samples): eight running sums, sample k in sum k mod 8 (eight
+    independent additions per step instead of a chain of dependent ones), added pairwise, as
+    vector instructions (:func:`~.lanes.lane_sums`). Anchored on the sample index, so any
+    [lo, hi) holding the non-zero samples gives the same bits."""
+    return lane_sums(mu, x, lo - lo % 8, hi + (-hi) % 8)
 
 
 @jit

@@ -8,7 +8,7 @@ each ``np.where`` is the same test here, so a NaN or an infinite input takes the
 :func:`hedge_column` is :data:`fuzzynav.fuzzy.operators.HEDGES`.
 
 Gaussian, Bell and Sigmoid terms take ``exp`` and ``pow`` = exp(b log a) from
-:mod:`.vmath`, which the compiler vectorises inside the loop (the C library's ``exp``, called
+:mod:`.vmath`, which the compiler inlines and vectorises in the term's loop (the C library's ``exp``, called
 value by value, is several times slower; NumPy's SIMD ``exp`` works only outside the kernel):
 within a few ulp of NumPy's (see :mod:`.vmath`), not its very bits. The rarer terms built on ``exp``
 (Spike, the sigmoid and Gaussian products and difference) have no code here: the engine
@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from fuzzynav.fuzzy import terms as extra
-from fuzzynav.fuzzy.engine.vmath import exp_column, log_column
+from fuzzynav.fuzzy.engine.vmath import exp_of, log_of
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid, Singleton, Trapezoidal
 from fuzzynav.jit import jit
 
@@ -121,29 +121,23 @@ def _semiellipse(x, s, e):
 def _exp_term(code, p, x, out):
     """Gaussian (σ, m): exp(−½ z z), z = (x − m) / σ; Bell (a, b, c): 1 / (1 + |(x − c) / a|^(2b));
     Sigmoid (a, c): 1 / (1 + exp(clip(−a (x − c), ±700))) — the NumPy formulas of
-    :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log."""
+    :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log, each in one
+    loop that the compiler vectorises (:mod:`.vmath`)."""
     n = x.shape[0]
     if code == GAUSSIAN:
+        sigma, mean = p[0], p[1]
         for k in range(n):
-            z = (x[k] - p[1]) / p[0]
-            out[k] = -0.5 * z * z
-        exp_column(out, out)
-        return
-    if code == BELL:
+            z = (x[k] - mean) / sigma
+            out[k] = exp_of(-0.5 * z * z)
+    elif code == BELL:
+        width, power, centre = p[0], 2.0 * p[1], p[2]
         for k in range(n):
-            out[k] = abs((x[k] - p[2]) / p[0])
-        log_column(out, out)
-        power = 2.0 * p[1]
-        for k in range(n):
-            out[k] = power * out[k]
+            out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs((x[k] - centre) / width))))
     else:
-        slope = -p[0]
+        slope, inflection = -p[0], p[1]
         for k in range(n):
-            z = slope * (x[k] - p[1])
-            out[k] = 700.0 if z > 700.0 else (-700.0 if z < -700.0 else z)
-    exp_column(out, out)
-    for k in range(n):
-        out[k] = 1.0 / (1.0 + out[k])
+            z = slope * (x[k] - inflection)
+            out[k] = 1.0 / (1.0 + exp_of(700.0 if z > 700.0 else (-700.0 if z < -700.0 else z)))
 
 
 @jit
