@@ -1,8 +1,61 @@
-"""The one way kernels are compiled (numba), with the on-disk cache."""
+"""The one way kernels are compiled (numba), with the on-disk cache.
+
+numba checks a cached kernel against its own source file only: a kernel whose callee in another
+file changed would be loaded as compiled against the old callee (a wrong answer, or a crash). So
+at import, :func:`clear_stale_caches` fingerprints the package's kernel sources (the files naming this
+module or numba) and, when any changed since the last check, deletes every cached kernel of the package (they are compiled again
+on first use). Installs and upgrades rewrite every file, so numba's own check suffices there; the
+guard is for working copies (an editable install being edited). Caches put elsewhere by
+``NUMBA_CACHE_DIR`` are not checked: clear that directory after editing kernels.
+"""
 
 from __future__ import annotations
 
+import hashlib
+import os
+from pathlib import Path
+
 import numba
+
+PACKAGE = Path(__file__).resolve().parent
+STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
+CACHE_SUFFIXES = (".nbi", ".nbc")
+
+
+def _kernel_sources(package: Path) -> list[Path]:
+    """The package's source files that define kernels or what they inline (those naming this
+    module or numba)."""
+    return sorted(source for source in package.rglob("*.py")
+                  if any(name in source.read_text(encoding="utf-8", errors="replace") for name in ("fuzzynav.jit", "numba")))
+
+
+def _fingerprint(sources: list[Path]) -> str:
+    """A digest of the name, size and modification time of each of ``sources``."""
+    digest = hashlib.sha256()
+    for source in sources:
+        stat = source.stat()
+        digest.update(f"{source}|{stat.st_size}|{stat.st_mtime_ns}\n".encode())
+    return digest.hexdigest()
+
+
+def clear_stale_caches(package: Path = PACKAGE) -> bool:
+    """Delete the numba caches under ``package`` when the sources beside them changed since the
+    last check (module docstring); returns whether it deleted them. Quiet where nothing is writable."""
+    try:
+        stamp = package / "__pycache__" / STAMP
+        now = _fingerprint(_kernel_sources(package))
+        if stamp.is_file() and stamp.read_text() == now:
+            return False
+        cached = [f for folder in package.rglob("__pycache__") for f in folder.iterdir() if f.suffix in CACHE_SUFFIXES]
+        for old in cached:
+            old.unlink(missing_ok=True)
+        stamp.parent.mkdir(exist_ok=True)
+        temporary = stamp.with_name(f".{STAMP}.{os.getpid()}.tmp")
+        temporary.write_text(now)
+        os.replace(temporary, stamp)
+        return bool(cached)
+    except OSError:  # a read-only install: numba's own check (every file rewritten by an upgrade)
+        return False
 
 
 def jit(function=None, *, fastmath: tuple = ()):
@@ -23,3 +76,6 @@ def jit(function=None, *, fastmath: tuple = ()):
         return numba.njit(cache=True, **options)(function)
     except RuntimeError:  # "cannot cache function ...: no locator available"
         return numba.njit(**options)(function)
+
+
+clear_stale_caches()
