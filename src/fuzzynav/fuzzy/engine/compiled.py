@@ -88,61 +88,62 @@ def snorm(kind, a, b):
 
 
 @jit
-def tnorm_into(kind, a, b):
-    """a ← T(a, b) elementwise, one loop per T-norm: with the norm a constant, the loops vectorise."""
+def tnorm_into(kind, a, b, out):
+    """out ← T(a, b) elementwise (``out`` may be ``a``), one loop per T-norm: with the norm a
+    constant, the loops vectorise."""
     if kind == 0:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(0, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(0, a[i], b[i])
     elif kind == 1:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(1, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(1, a[i], b[i])
     elif kind == 2:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(2, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(2, a[i], b[i])
     elif kind == 3:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(3, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(3, a[i], b[i])
     elif kind == 4:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(4, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(4, a[i], b[i])
     elif kind == 5:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(5, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(5, a[i], b[i])
     elif kind == 6:
-        for k in range(a.shape[0]):
-            a[k] = tnorm(6, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = tnorm(6, a[i], b[i])
 
 
 @jit
-def snorm_into(kind, a, b):
-    """a ← S(a, b) elementwise, one loop per S-norm (see :func:`tnorm_into`)."""
+def snorm_into(kind, a, b, out):
+    """out ← S(a, b) elementwise (``out`` may be ``a``), one loop per S-norm (see :func:`tnorm_into`)."""
     if kind == 0:
-        for k in range(a.shape[0]):
-            a[k] = snorm(0, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(0, a[i], b[i])
     elif kind == 1:
-        for k in range(a.shape[0]):
-            a[k] = snorm(1, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(1, a[i], b[i])
     elif kind == 2:
-        for k in range(a.shape[0]):
-            a[k] = snorm(2, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(2, a[i], b[i])
     elif kind == 3:
-        for k in range(a.shape[0]):
-            a[k] = snorm(3, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(3, a[i], b[i])
     elif kind == 4:
-        for k in range(a.shape[0]):
-            a[k] = snorm(4, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(4, a[i], b[i])
     elif kind == 5:
-        for k in range(a.shape[0]):
-            a[k] = snorm(5, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(5, a[i], b[i])
     elif kind == 6:
-        for k in range(a.shape[0]):
-            a[k] = snorm(6, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(6, a[i], b[i])
     elif kind == 7:
-        for k in range(a.shape[0]):
-            a[k] = snorm(7, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(7, a[i], b[i])
     elif kind == 8:
-        for k in range(a.shape[0]):
-            a[k] = snorm(8, a[k], b[k])
+        for i in range(out.shape[0]):
+            out[i] = snorm(8, a[i], b[i])
 
 
 @jit
@@ -170,12 +171,15 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
         for r in range(starts.shape[0] - 1):
             s, e, weight, degree = starts[r], starts[r + 1], weights[r], out[r, lo:lo + size]
             if _left_deep(program, s, e):
-                degree[:] = table[program[s], lo:lo + size]
+                value = table[program[s], lo:lo + size]  # the first operator writes degree: no copy
                 for i in range(s + 1, e, 2):
                     if program[i + 1] == AND:
-                        tnorm_into(conjunction, degree, table[program[i], lo:lo + size])
+                        tnorm_into(conjunction, value, table[program[i], lo:lo + size], degree)
                     else:
-                        snorm_into(disjunction, degree, table[program[i], lo:lo + size])
+                        snorm_into(disjunction, value, table[program[i], lo:lo + size], degree)
+                    value = degree
+                if e == s + 1:
+                    degree[:] = value
                 if weight != 1.0:  # x × 1 = x: skipping it changes no bit
                     for k in range(size):
                         degree[k] = weight * degree[k]
@@ -189,9 +193,9 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
                     continue
                 top -= 1
                 if code == AND:
-                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size])
+                    tnorm_into(conjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size])
                 else:
-                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size])
+                    snorm_into(disjunction, stack[top - 1, :size], stack[top, :size], stack[top - 1, :size])
             first = stack[0, :size]
             for k in range(size):
                 degree[k] = weight * first[k]
@@ -238,8 +242,8 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
             else:
                 implied = scratch[first:end]
                 implied[:] = wu
-                tnorm_into(imp, implied, shapes[t, first:end])
-                snorm_into(aggregation, mu[first:end], implied)
+                tnorm_into(imp, implied, shapes[t, first:end], implied)
+                snorm_into(aggregation, mu[first:end], implied, mu[first:end])
         if reduction == 0:  # Centroid: its sums called here, as reduce_sampled's call costs more than they do
             total, moment = centroid_sums(mu, at, lo, max(lo, hi))
             out[n] = moment / total
@@ -267,7 +271,7 @@ def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, 
             else:
                 present[g] = True
             continue
-        snorm_into(aggregation, degree[g], v)
+        snorm_into(aggregation, degree[g], v, degree[g])
         if masked:
             for n in range(v.shape[0]):
                 present[g, n] = present[g, n] or triggered[a, n]
@@ -313,6 +317,21 @@ def _add_weighted(d, z, num, den):
 
 
 @jit
+def _add_weighted_linear(d, z, c, x, num, den):
+    """num += d (z + c x), den += d: :func:`_add_weighted` with the value's last term added in the same loop."""
+    for k in range(d.shape[0]):
+        num[k] += d[k] * (z[k] + c * x[k])
+        den[k] += d[k]
+
+
+@jit
+def _linear_start(z, constant, c, x):
+    """z = constant + c x: a linear value's first two terms in one loop."""
+    for k in range(z.shape[0]):
+        z[k] = constant + c * x[k]
+
+
+@jit
 def _every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
     """:func:`weighted_affine` where every activation triggers (General): per chunk of rows and
     group, its degree, value z, and Σ g z, Σ g — the three kernels' operations, in their order."""
@@ -327,20 +346,26 @@ def _every_row_affine(degrees, rows, groups, aggregation, coefficients, constant
             first, count = 0, 0
             for a in range(rows.shape[0]):
                 if groups[a] == g:
-                    if count == 1:
-                        folded[:size] = degrees[first, lo:hi]
                     if count == 0:
                         first = rows[a]
-                    else:
-                        snorm_into(aggregation, folded[:size], degrees[rows[a], lo:hi])
+                    else:  # the second activation folds the first into ``folded``: no copy
+                        snorm_into(aggregation, degrees[first, lo:hi] if count == 1 else folded[:size],
+                                   degrees[rows[a], lo:hi], folded[:size])
                     count += 1
-            zg = z[:size]
-            zg[:] = constants[g]
-            for i in range(coefficients.shape[1]):
+            zg, m = z[:size], coefficients.shape[1]
+            if m <= 1:
+                zg[:] = constants[g]
+            else:
+                _linear_start(zg, constants[g], coefficients[g, 0], inputs[0, lo:hi])
+            for i in range(1, m - 1):
                 c, x = coefficients[g, i], inputs[i, lo:hi]
                 for k in range(size):
                     zg[k] += c * x[k]
-            _add_weighted(degrees[first, lo:hi] if count == 1 else folded[:size], zg, num[:size], den[:size])
+            d = degrees[first, lo:hi] if count == 1 else folded[:size]
+            if m == 0:
+                _add_weighted(d, zg, num[:size], den[:size])
+            else:
+                _add_weighted_linear(d, zg, coefficients[g, m - 1], inputs[m - 1, lo:hi], num[:size], den[:size])
         for k in range(size):
             y = num[k] / den[k]
             out[lo + k] = (y * den[k] if weighted_sum else y) if n_groups > 0 else np.nan

@@ -50,7 +50,7 @@ def _accumulate(value, conclusions, conclusion_row, before, aggregation, d):
         if c >= before:
             break
         if opened:
-            compiled.snorm_into(aggregation, d, value[conclusion_row[c]])
+            compiled.snorm_into(aggregation, d, value[conclusion_row[c]], d)
         else:
             d[:] = value[conclusion_row[c]]
             opened = True
