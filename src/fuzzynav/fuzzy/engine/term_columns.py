@@ -65,29 +65,43 @@ def _trapezoid(x, a, b, c, d):
 
 
 @jit
+def _sloped(a, b, c, d):
+    """Whether the trapezoid (a, b, c, d) has two finite sloped sides: a < b ≤ c < d, b − a and d − c finite."""
+    return a < b <= c < d and math.isfinite(b - a) and math.isfinite(d - c)
+
+
+@jit
+def _sloped_trapezoid(x, a, b, c, d, out):
+    """:func:`_trapezoid` of a :func:`_sloped` trapezoid with one division a value instead of two:
+    below b the rising side (x − a) / (b − a) is at most 1 and the falling one (d − x) / (d − c)
+    at least 1 (rounding is monotone), so the minimum is the rising side; from b on the rising
+    side is at least 1 and the clipped minimum is the falling side's, clipped. The same bits,
+    NaN (which takes the falling side) and infinities included."""
+    for k in range(x.shape[0]):
+        v = x[k]
+        rising = v < b
+        mu = (v - a if rising else d - v) / (b - a if rising else d - c)
+        out[k] = 0.0 if mu < 0.0 else (1.0 if mu > 1.0 else mu)
+
+
+@jit
 def _sshape(x, s, e):
-    if x <= s:
-        return 0.0
-    if x <= 0.5 * (s + e):
-        t = (x - s) / (e - s)
-        return 2.0 * (t * t)
-    if x < e:
-        t = (x - e) / (e - s)
-        return 1.0 - 2.0 * (t * t)
-    return 1.0
+    """fuzzylite's S-shape: 0 to s, 2 ((x − s) / (e − s))² to the midpoint, 1 − 2 ((x − e) / (e − s))²
+    to e, then 1 (NaN: 1); the two halves' numerators selected before one division."""
+    low = x <= 0.5 * (s + e)
+    t = (x - (s if low else e)) / (e - s)
+    q = 2.0 * (t * t)
+    return 0.0 if x <= s else ((q if low else 1.0 - q) if x < e else 1.0)
 
 
 @jit
 def _zshape(x, s, e):
-    if x <= s:
-        return 1.0
-    if x < 0.5 * (s + e):
-        t = (x - s) / (e - s)
-        return 1.0 - 2.0 * (t * t)
-    if x < e:
-        t = (x - e) / (e - s)
-        return 2.0 * (t * t)
-    return 0.0
+    """fuzzylite's Z-shape: 1 to s, 1 − 2 ((x − s) / (e − s))² below the midpoint, 2 ((x − e) / (e − s))²
+    below e, then 0 (NaN: 0); one division, as :func:`_sshape`."""
+    low = x < 0.5 * (s + e)
+    t = (x - (s if low else e)) / (e - s)
+    q = 2.0 * (t * t)
+    return 1.0 if x <= s else ((1.0 - q if low else q) if x < e else 0.0)
 
 
 @jit
@@ -146,8 +160,11 @@ def term_column(code, params, first, end, height, x, out):
     p = params[first:end]
     n = x.shape[0]
     if code == TRAPEZOID:
-        for k in range(n):
-            out[k] = _trapezoid(x[k], p[0], p[1], p[2], p[3])
+        if _sloped(p[0], p[1], p[2], p[3]):
+            _sloped_trapezoid(x, p[0], p[1], p[2], p[3], out)
+        else:
+            for k in range(n):
+                out[k] = _trapezoid(x[k], p[0], p[1], p[2], p[3])
     elif code == SINGLETON:
         for k in range(n):
             out[k] = 1.0 if x[k] == p[0] else 0.0
