@@ -10,7 +10,9 @@ each ``np.where`` is the same test here, so a NaN or an infinite input takes the
 Gaussian, Bell and Sigmoid terms take ``exp`` and ``pow`` = exp(b log a) from
 :mod:`.vmath`, which the compiler inlines and vectorises in the term's loop (the C library's ``exp``, called
 value by value, is several times slower; NumPy's SIMD ``exp`` works only outside the kernel):
-within a few ulp of NumPy's (see :mod:`.vmath`), not its very bits. The rarer terms built on ``exp``
+within a few ulp of NumPy's (see :mod:`.vmath`), not its very bits. A Bell whose power 2b is 2, 4
+or 8 (MATLAB's default b = 2 among them) takes no ``exp`` or ``log``: its power is one to three
+squarings, within b ulp of NumPy's ``pow``. The rarer terms built on ``exp``
 (Spike, the sigmoid and Gaussian products and difference) have no code here: the engine
 fuzzifies them in NumPy before the kernel, as ``Function`` and ``Linear`` premises.
 """
@@ -135,8 +137,8 @@ def _semiellipse(x, s, e):
 def _exp_term(code, p, x, out):
     """Gaussian (σ, m): exp(−½ z z), z = (x − m) / σ; Bell (a, b, c): 1 / (1 + |(x − c) / a|^(2b));
     Sigmoid (a, c): 1 / (1 + exp(clip(−a (x − c), ±700))) — the NumPy formulas of
-    :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log, each in one
-    loop that the compiler vectorises (:mod:`.vmath`)."""
+    :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log (and a Bell's
+    power 2b = 2, 4 or 8, by squarings), each in one loop that the compiler vectorises (:mod:`.vmath`)."""
     n = x.shape[0]
     if code == GAUSSIAN:
         sigma, mean = p[0], p[1]
@@ -145,8 +147,16 @@ def _exp_term(code, p, x, out):
             out[k] = exp_of(-0.5 * z * z)
     elif code == BELL:
         width, power, centre = p[0], 2.0 * p[1], p[2]
-        for k in range(n):
-            out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs((x[k] - centre) / width))))
+        if power == 2.0 or power == 4.0 or power == 8.0:  # z^p by squarings: no log, no exp
+            for k in range(n):
+                z = (x[k] - centre) / width
+                q = z * z
+                q = q * q if power >= 4.0 else q
+                q = q * q if power == 8.0 else q
+                out[k] = 1.0 / (1.0 + q)
+        else:
+            for k in range(n):
+                out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs((x[k] - centre) / width))))
     else:
         slope, inflection = -p[0], p[1]
         for k in range(n):
