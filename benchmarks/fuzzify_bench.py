@@ -52,10 +52,11 @@ def main(argv=None) -> int:
     positive, out = np.abs(x), np.empty(n)
     rows = [("exp", lambda: vmath.exp_column(x, out), lambda: np.exp(x, out=out)),
             ("log", lambda: vmath.log_column(positive, out), lambda: np.log(positive, out=out))]
-    for mf in (Gaussian(3.0, 0.5), Bell(2.3, 1.7, 0.3), Sigmoid(1.3, 0.5)):
+    for name, mf in (("Gaussian", Gaussian(3.0, 0.5)), ("Bell", Bell(2.3, 1.7, 0.3)), ("Bell b=2", Bell(2.3, 2.0, 0.3)),
+                     ("Sigmoid", Sigmoid(1.3, 0.5))):
         code, params, height = term_columns.pack_term(mf)
         p = np.array(params)
-        rows.append((type(mf).__name__, lambda c=code, p=p, h=height: term_columns.term_column(c, p, 0, len(p), h, x, out),
+        rows.append((name, lambda c=code, p=p, h=height: term_columns.term_column(c, p, 0, len(p), h, x, out),
                      lambda mf=mf: mf(x)))
     print(f"ns a value over {n:,} values (CPU time, best of 7)")
     print(f"{'':<10} {'fuzzynav':>9} {'NumPy':>9}")
