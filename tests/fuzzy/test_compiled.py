@@ -4,7 +4,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.fuzzy.engine import compiled
+from fuzzynav.fuzzy.engine import compiled, norms
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -16,20 +16,20 @@ GRID = np.linspace(0.0, 1.0, 101)
 @pytest.mark.parametrize("kind", range(len(TNORMS)), ids=TNORMS)
 def test_tnorm_has_one_as_identity_and_zero_as_absorbing(kind):
     for a in GRID:
-        assert compiled.tnorm(kind, a, 1.0) == pytest.approx(a, abs=1e-15) == compiled.tnorm(kind, 1.0, a)
-        assert compiled.tnorm(kind, a, 0.0) == 0.0 and compiled.tnorm(kind, 0.0, a) == 0.0  # exactly: see integral
+        assert norms.tnorm(kind, a, 1.0) == pytest.approx(a, abs=1e-15) == norms.tnorm(kind, 1.0, a)
+        assert norms.tnorm(kind, a, 0.0) == 0.0 and norms.tnorm(kind, 0.0, a) == 0.0  # exactly: see integral
 
 
 @pytest.mark.parametrize("kind", range(len(SNORMS)), ids=SNORMS)
 def test_snorm_has_zero_as_identity(kind):
     for a in GRID:  # exactly: see integral
-        assert compiled.snorm(kind, a, 0.0) == a and compiled.snorm(kind, 0.0, a) == a
+        assert norms.snorm(kind, a, 0.0) == a and norms.snorm(kind, 0.0, a) == a
 
 
 def test_minimum_and_maximum_propagate_nan_as_numpy_does():
     for a, b in ((np.nan, 0.3), (0.3, np.nan)):
-        assert np.isnan(compiled.tnorm(TNORMS.index("Minimum"), a, b))
-        assert np.isnan(compiled.snorm(SNORMS.index("Maximum"), a, b))
+        assert np.isnan(norms.tnorm(TNORMS.index("Minimum"), a, b))
+        assert np.isnan(norms.snorm(SNORMS.index("Maximum"), a, b))
 
 
 def _shapes(rng, n_terms, size):

@@ -19,9 +19,9 @@ def _seldom(x):
 
 
 TNORMS = ("AlgebraicProduct", "BoundedDifference", "DrasticProduct", "EinsteinProduct", "HamacherProduct", "Minimum",
-          "NilpotentMinimum")  # computed by fuzzynav.fuzzy.engine.compiled.tnorm
+          "NilpotentMinimum")  # computed by fuzzynav.fuzzy.engine.norms.tnorm
 SNORMS = ("AlgebraicSum", "BoundedSum", "DrasticSum", "EinsteinSum", "HamacherSum", "Maximum", "NilpotentMaximum",
-          "NormalizedSum", "UnboundedSum")  # computed by fuzzynav.fuzzy.engine.compiled.snorm
+          "NormalizedSum", "UnboundedSum")  # computed by fuzzynav.fuzzy.engine.norms.snorm
 HEDGES = {
     "not": lambda x: 1.0 - x,
     "very": lambda x: x * x,

@@ -16,8 +16,7 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   chunks of rows);
 - :func:`finish` — ``lock-previous``, ``default`` and ``lock-range`` of an output.
 
-The norms are fuzzylite 8's (thesis §II.3), NaN-propagating as NumPy's ``maximum`` /
-``minimum``. A Mamdani row whose activation degrees all lie in [0, 1] skips what cannot change
+The norms are :mod:`.norms` (fuzzylite 8's, thesis §II.3). A Mamdani row whose activation degrees all lie in [0, 1] skips what cannot change
 the result: activations of degree 0 and samples outside a term's support (T(w, 0) = 0 and
 S(a, 0) = a for every norm here on [0, 1]); other rows sample every term everywhere.
 """
@@ -27,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy.engine.implied import max_min, max_product, sum_min
+from fuzzynav.fuzzy.engine.norms import snorm_into, tnorm_into
 from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
@@ -35,115 +35,6 @@ AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
 CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
 MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
 MAXIMUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")
-
-
-@jit
-def _max(a, b):
-    return a if (a >= b or a != a) else b
-
-
-@jit
-def _min(a, b):
-    return a if (a <= b or a != a) else b
-
-
-@jit
-def tnorm(kind, a, b):
-    """T-norm ``TNORMS[kind]`` of a and b."""
-    if kind == 0:
-        return a * b
-    if kind == 1:
-        return _max(0.0, a + b - 1.0)
-    if kind == 2:
-        return _min(a, b) if _max(a, b) == 1.0 else 0.0
-    if kind == 3:
-        return (a * b) / (2.0 - (a + b - a * b))
-    if kind == 4:
-        return (a * b) / (a + b - a * b) if a + b != 0.0 else 0.0
-    if kind == 5:
-        return _min(a, b)
-    return _min(a, b) if a + b > 1.0 else 0.0
-
-
-@jit
-def snorm(kind, a, b):
-    """S-norm ``SNORMS[kind]`` of a and b."""
-    if kind == 0:
-        return a + b - a * b
-    if kind == 1:
-        return _min(1.0, a + b)
-    if kind == 2:
-        return _max(a, b) if _min(a, b) == 0.0 else 1.0
-    if kind == 3:
-        return (a + b) / (1.0 + a * b)
-    if kind == 4:
-        return (a + b - 2.0 * a * b) / (1.0 - a * b) if a * b != 1.0 else 1.0
-    if kind == 5:
-        return _max(a, b)
-    if kind == 6:
-        return _max(a, b) if a + b < 1.0 else 1.0
-    if kind == 7:
-        return (a + b) / _max(1.0, a + b)
-    return a + b
-
-
-@jit
-def tnorm_into(kind, a, b, out):
-    """out ← T(a, b) elementwise (``out`` may be ``a``), one loop per T-norm: with the norm a
-    constant, the loops vectorise."""
-    if kind == 0:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(0, a[i], b[i])
-    elif kind == 1:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(1, a[i], b[i])
-    elif kind == 2:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(2, a[i], b[i])
-    elif kind == 3:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(3, a[i], b[i])
-    elif kind == 4:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(4, a[i], b[i])
-    elif kind == 5:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(5, a[i], b[i])
-    elif kind == 6:
-        for i in range(out.shape[0]):
-            out[i] = tnorm(6, a[i], b[i])
-
-
-@jit
-def snorm_into(kind, a, b, out):
-    """out ← S(a, b) elementwise (``out`` may be ``a``), one loop per S-norm (see :func:`tnorm_into`)."""
-    if kind == 0:
-        for i in range(out.shape[0]):
-            out[i] = snorm(0, a[i], b[i])
-    elif kind == 1:
-        for i in range(out.shape[0]):
-            out[i] = snorm(1, a[i], b[i])
-    elif kind == 2:
-        for i in range(out.shape[0]):
-            out[i] = snorm(2, a[i], b[i])
-    elif kind == 3:
-        for i in range(out.shape[0]):
-            out[i] = snorm(3, a[i], b[i])
-    elif kind == 4:
-        for i in range(out.shape[0]):
-            out[i] = snorm(4, a[i], b[i])
-    elif kind == 5:
-        for i in range(out.shape[0]):
-            out[i] = snorm(5, a[i], b[i])
-    elif kind == 6:
-        for i in range(out.shape[0]):
-            out[i] = snorm(6, a[i], b[i])
-    elif kind == 7:
-        for i in range(out.shape[0]):
-            out[i] = snorm(7, a[i], b[i])
-    elif kind == 8:
-        for i in range(out.shape[0]):
-            out[i] = snorm(8, a[i], b[i])
 
 
 @jit

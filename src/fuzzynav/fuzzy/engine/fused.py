@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy.engine import compiled
+from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Packed
 from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
 from fuzzynav.jit import jit
@@ -50,7 +51,7 @@ def _accumulate(value, conclusions, conclusion_row, before, aggregation, d):
         if c >= before:
             break
         if opened:
-            compiled.snorm_into(aggregation, d, value[conclusion_row[c]], d)
+            snorm_into(aggregation, d, value[conclusion_row[c]], d)
         else:
             d[:] = value[conclusion_row[c]]
             opened = True

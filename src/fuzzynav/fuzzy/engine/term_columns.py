@@ -24,6 +24,7 @@ import math
 import numpy as np
 
 from fuzzynav.fuzzy import terms as extra
+from fuzzynav.fuzzy.engine.norms import nan_min
 from fuzzynav.fuzzy.engine.vmath import exp_of, log_of
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid, Singleton, Trapezoidal
 from fuzzynav.jit import jit
@@ -52,17 +53,12 @@ def pack_term(mf) -> tuple[int, tuple, float] | None:
 
 
 @jit
-def _min(a, b):  # np.minimum: NaN wins
-    return a if (a <= b or a != a) else b
-
-
-@jit
 def _trapezoid(x, a, b, c, d):
     mu = 1.0
     if b > -math.inf:
-        mu = _min(mu, (x - a) / (b - a) if b > a else (0.0 if x < a else 1.0))
+        mu = nan_min(mu, (x - a) / (b - a) if b > a else (0.0 if x < a else 1.0))
     if c < math.inf:
-        mu = _min(mu, (d - x) / (d - c) if d > c else (0.0 if x > d else 1.0))
+        mu = nan_min(mu, (d - x) / (d - c) if d > c else (0.0 if x > d else 1.0))
     return 0.0 if mu < 0.0 else (1.0 if mu > 1.0 else mu)  # np.clip: NaN stays
 
 
