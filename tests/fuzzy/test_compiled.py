@@ -80,3 +80,49 @@ def test_a_batch_equals_its_rows_evaluated_apart(name):
     whole = engine.evaluate(X)
     apart = np.vstack([engine.evaluate(X[k:k + 1]) for k in range(0, 1300, 97)])
     np.testing.assert_array_equal(whole[::97], apart)
+
+
+def _weighted_reference(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum):
+    """Σ g z / Σ g group by group in NumPy, each operation as the kernel orders it: a group's
+    activations folded with the S-norm, z = ((c₀ + c₁ x₁) + c₂ x₂) + …, num += g z, den += g."""
+    n = inputs.shape[1]
+    num, den = np.zeros(n), np.zeros(n)
+    for g in range(coefficients.shape[0]):
+        members = [degrees[r] for r, h in zip(rows, groups) if h == g]
+        d = members[0].copy()
+        for other in members[1:]:
+            norms.snorm_into(aggregation, d, other, d)
+        z = np.full(n, constants[g])
+        for i in range(coefficients.shape[1]):
+            z = z + coefficients[g, i] * inputs[i]
+        num, den = num + d * z, den + d
+    y = num / den
+    return y * den if weighted_sum else y
+
+
+@pytest.mark.parametrize("n_inputs", [0, 1, 2, 3])
+def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_time(n_inputs):
+    """Takagi–Sugeno outputs of one or two inputs take their groups four by four (affine.py): the
+    same bits as the groups one by one, over several chunks of rows, with folded groups, NaN and
+    infinite inputs, and every count of groups around the tile."""
+    rng = np.random.default_rng(3)
+    n = 2 * 1024 + 300
+    inputs = rng.uniform(-3.0, 3.0, (n_inputs, n))
+    if n_inputs:
+        inputs[0, :3] = [np.nan, np.inf, -np.inf]
+    for n_groups in (1, 3, 4, 5, 9):
+        groups = np.concatenate([np.arange(n_groups), rng.integers(0, n_groups, 3)]).astype(np.int64)
+        rows = rng.permutation(groups.size).astype(np.int64)
+        degrees = rng.random((groups.size, n))
+        degrees[:, 5] = 0.0  # a row where no group has a degree: 0 / 0
+        coefficients, constants = rng.normal(0.0, 2.0, (n_groups, n_inputs)), rng.normal(0.0, 2.0, n_groups)
+        for aggregation in (SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")):
+            for weighted_sum in (False, True):
+                out = np.empty(n)
+                compiled.weighted_affine(degrees, rows, groups, np.zeros(groups.size, dtype=np.bool_),
+                                         np.ones((0, 0), dtype=np.bool_), False, aggregation, coefficients, constants,
+                                         inputs, weighted_sum, out)
+                with np.errstate(invalid="ignore"):  # inf − inf and 0 / 0, as in the kernel
+                    expected = _weighted_reference(degrees, rows, groups, aggregation, coefficients, constants,
+                                                   inputs, weighted_sum)
+                np.testing.assert_array_equal(out, expected, err_msg=f"{n_groups} groups, {SNORMS[aggregation]}")

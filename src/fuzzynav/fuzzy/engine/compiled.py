@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
 from fuzzynav.fuzzy.engine.implied import max_min, max_product, sum_min
 from fuzzynav.fuzzy.engine.norms import snorm_into, tnorm_into
 from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
@@ -32,7 +33,6 @@ from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
 
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
-CHUNK = 512  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
 MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
 MAXIMUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")
 
@@ -55,8 +55,10 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
     by chunks that stay in cache. A left-deep program (p q OP r OP …, every conjunction of
     propositions) is folded in ``out[r]`` (its first proposition, each operator in place, the
     weight); others run on a stack. Either way the same operations in the same order."""
-    n = table.shape[1]
-    stack = np.empty((max(1, program.shape[0]), CHUNK))
+    n, depth = table.shape[1], 1
+    for r in range(starts.shape[0] - 1):
+        depth = max(depth, starts[r + 1] - starts[r])  # a rule's stack holds at most its program's length
+    stack = np.empty((depth, CHUNK))
     for lo in range(0, n, CHUNK):
         size = min(n, lo + CHUNK) - lo
         for r in range(starts.shape[0] - 1):
@@ -200,75 +202,12 @@ def affine(coefficients, constants, inputs, z):
 
 
 @jit
-def _add_weighted(d, z, num, den):
-    """num += d z, den += d (its own function, so that the loop vectorises: inline it did not)."""
-    for k in range(d.shape[0]):
-        num[k] += d[k] * z[k]
-        den[k] += d[k]
-
-
-@jit
-def _add_weighted_linear(d, z, c, x, num, den):
-    """num += d (z + c x), den += d: :func:`_add_weighted` with the value's last term added in the same loop."""
-    for k in range(d.shape[0]):
-        num[k] += d[k] * (z[k] + c * x[k])
-        den[k] += d[k]
-
-
-@jit
-def _linear_start(z, constant, c, x):
-    """z = constant + c x: a linear value's first two terms in one loop."""
-    for k in range(z.shape[0]):
-        z[k] = constant + c * x[k]
-
-
-@jit
-def _every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
-    """:func:`weighted_affine` where every activation triggers (General): per chunk of rows and
-    group, its degree, value z, and Σ g z, Σ g — the three kernels' operations, in their order."""
-    n_groups, n = coefficients.shape[0], out.shape[0]
-    folded, z, num, den = np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK)
-    for lo in range(0, n, CHUNK):
-        hi = min(n, lo + CHUNK)
-        size = hi - lo
-        num[:size] = 0.0
-        den[:size] = 0.0
-        for g in range(n_groups):
-            first, count = 0, 0
-            for a in range(rows.shape[0]):
-                if groups[a] == g:
-                    if count == 0:
-                        first = rows[a]
-                    else:  # the second activation folds the first into ``folded``: no copy
-                        snorm_into(aggregation, degrees[first, lo:hi] if count == 1 else folded[:size],
-                                   degrees[rows[a], lo:hi], folded[:size])
-                    count += 1
-            zg, m = z[:size], coefficients.shape[1]
-            if m <= 1:
-                zg[:] = constants[g]
-            else:
-                _linear_start(zg, constants[g], coefficients[g, 0], inputs[0, lo:hi])
-            for i in range(1, m - 1):
-                c, x = coefficients[g, i], inputs[i, lo:hi]
-                for k in range(size):
-                    zg[k] += c * x[k]
-            d = degrees[first, lo:hi] if count == 1 else folded[:size]
-            if m == 0:
-                _add_weighted(d, zg, num[:size], den[:size])
-            else:
-                _add_weighted_linear(d, zg, coefficients[g, m - 1], inputs[m - 1, lo:hi], num[:size], den[:size])
-        for k in range(size):
-            y = num[k] / den[k]
-            out[lo + k] = (y * den[k] if weighted_sum else y) if n_groups > 0 else np.nan
-
-
-@jit
 def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation, coefficients, constants, inputs,
                     weighted_sum, out):
     """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
     cache: a weighted output whose terms are all constant or linear."""
     if not masked:
-        _every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out)
+        every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out)
         return
     n_groups, n = coefficients.shape[0], out.shape[0]
     degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)
