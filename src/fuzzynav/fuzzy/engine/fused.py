@@ -96,7 +96,7 @@ def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_
 
 @jit
 def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-        chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+        chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
         conclusion_hedges, conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start,
         unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
         coefficients, constants, every_row, out):
@@ -105,19 +105,20 @@ def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, par
     costs its allocations), then each output's
     ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch (``lock-previous``
     carries a value from one row to the next)."""
-    n = X.shape[0]
+    n, n_literals = X.shape[0], table.shape[0]
+    n_values = max(rule_weight.shape[0], conclusion_row.max() + 1 if conclusion_row.shape[0] else 0)
     raw = np.empty((output.shape[0], n))
-    per_row = table.shape[0] + rule_weight.shape[0] + lo.shape[0] + output.shape[0]  # arrays of one value a row
+    per_row = n_literals + n_values + lo.shape[0] + output.shape[0]  # arrays of one value a row
     rows = max(ROWS, CACHE_BYTES // (8 * per_row))
     for r0 in range(0, n, rows):
         r1 = min(n, r0 + rows)
-        part = np.empty((table.shape[0], r1 - r0))  # the propositions' degrees on these rows
-        for lit in range(table.shape[0]):
+        work = np.empty((n_literals + n_values, r1 - r0))  # the propositions' degrees, then the rules' values
+        for lit in range(n_literals):
             if literal[lit, 0] == NUMPY:
-                part[lit] = table[lit, r0:r1]
+                work[lit] = table[lit, r0:r1]
         y = np.empty((output.shape[0], r1 - r0))
-        _rows(X[r0:r1], part, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-              chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+        _rows(X[r0:r1], work, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+              chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
               conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
               unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
               coefficients, constants, every_row, y)
@@ -130,18 +131,18 @@ def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, par
 
 
 @jit
-def _rows(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-          chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_conclusions,
+def _rows(X, work, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+          chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
           conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
           unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
           coefficients, constants, every_row, raw):
     """``raw[k]``: output k before its ``lock-previous`` / ``default`` / ``lock-range``, on the
-    rows X, with ``table`` the propositions' degrees there (NumPy's rows filled)."""
+    rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
+    the rules' values (the activations' rows index both: an aliased rule's is its proposition's)."""
     n = X.shape[0]
+    table, value = work[:literal.shape[0]], work[literal.shape[0]:]
     inputs = np.empty((lo.shape[0], n))
     _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table)
-    n_rules = rule_weight.shape[0]
-    value = np.empty((max(n_rules, conclusion_row.max() + 1 if conclusion_row.shape[0] else 0), n))
     for b in range(block.shape[0]):
         first, end, conjunction, disjunction = block[b, 0], block[b, 1], block[b, 2], block[b, 3]
         step = 1 if block_chained[b] else end - first  # rule by rule when a premise reads an output
@@ -152,8 +153,17 @@ def _rows(X, table, lock, lo, hi, literal, term_code, term_start, term_height, p
                 _accumulate(value, chained_conclusions[chained_start[j]:chained_start[j + 1]], conclusion_row,
                             rule_conclusions[r0], chained[j, 1], table[lit])
                 _hedges(table[lit], hedges, literal[lit, 3], literal[lit, 4])
-            compiled.rule_degrees(table, program, rule_start[r0:r1 + 1], rule_weight[r0:r1], conjunction,
-                                  disjunction, value[r0:r1])
+            a = r0
+            while a < r1:  # the runs of rules not aliased
+                if rule_aliased[a]:
+                    a += 1
+                    continue
+                e = a + 1
+                while e < r1 and not rule_aliased[e]:
+                    e += 1
+                compiled.rule_degrees(table, program, rule_start[a:e + 1], rule_weight[a:e], conjunction, disjunction,
+                                      value[a:e])
+                a = e
             for r in range(r0, r1):
                 _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_row)
     y = np.empty(n)
@@ -163,11 +173,11 @@ def _rows(X, table, lock, lo, hi, literal, term_code, term_start, term_height, p
         if kind == INTEGRAL:
             n_terms, size = support_start[k + 1] - support_start[k], points_start[k + 1] - points_start[k]
             sampled = shapes[shape_start[k]:shape_start[k + 1]].reshape((n_terms, size))
-            compiled.integral(value, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
+            compiled.integral(work, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
                               support[support_start[k]:support_start[k + 1]], points[points_start[k]:points_start[k + 1]],
                               output[k, 1], output[k, 2], y)
         elif kind == WEIGHTED:
-            compiled.weighted_affine(value, acts, units, act_opens[act_start[k]:act_start[k + 1]], every_row, False,
+            compiled.weighted_affine(work, acts, units, act_opens[act_start[k]:act_start[k + 1]], every_row, False,
                                      output[k, 1], coefficients[first:end], constants[first:end], inputs,
                                      output[k, 3] != 0, y)
         else:

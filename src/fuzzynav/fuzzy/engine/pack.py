@@ -45,12 +45,14 @@ class Packed(NamedTuple):
     program: np.ndarray  # per rule: postfix antecedent (compiled.AND / OR, or a proposition)
     rule_start: np.ndarray
     rule_weight: np.ndarray
+    rule_aliased: np.ndarray  # a rule whose degree is its one proposition's row (not computed)
     rule_conclusions: np.ndarray  # start of the rule's conclusions
     conclusion_hedges: np.ndarray  # (C + 1): start of each conclusion's hedges
-    conclusion_row: np.ndarray  # (C,): its degrees' row: its rule's (r < R), or its own once hedged
+    conclusion_row: np.ndarray  # (C,): its degrees' row of the rules' values: its rule's (r < R), or its own once hedged
     output: np.ndarray  # (K, 6): kind, aggregation, reduction, weighted sum, lock-previous, lock-range
     output_limits: np.ndarray  # (K, 3): default, minimum, maximum
-    act_start: np.ndarray  # per output: its activations (degrees' row, unit or group, opens a group)
+    act_start: np.ndarray  # per output: its activations (degrees' row in the propositions' then the rules'
+    # values, unit or group, opens a group)
     act_conclusion: np.ndarray
     act_unit: np.ndarray
     act_opens: np.ndarray
@@ -116,7 +118,11 @@ def pack(engine) -> tuple[list, Packed] | str:
             if c.hedges:
                 row, hedged = hedged, hedged + 1
             conclusion_row.append(row)
-    packed_outputs = _pack_outputs(engine, conclusions, conclusion_row)
+    aliased = [_aliased(program, rule_start, weights, rule_conclusions, conclusions, rows, chained, r)
+               for r in range(len(weights))]
+    degree_row = [program[rule_start[r]] if aliased[r] else len(literals) + conclusion_row[c]
+                  for r in range(len(weights)) for c in range(rule_conclusions[r], rule_conclusions[r + 1])]
+    packed_outputs = _pack_outputs(engine, conclusions, degree_row)
     if isinstance(packed_outputs, str):
         return packed_outputs
     term_list = [packed for _, packed in terms.values()]
@@ -130,8 +136,18 @@ def pack(engine) -> tuple[list, Packed] | str:
         np.array([p for t in term_list for p in t[1]], dtype=float),
         _ints(chained).reshape(-1, 2), _ints(chained_start), _ints(chained_conclusions), _ints(hedges),
         _ints(blocks).reshape(-1, 4), np.array(block_chained, dtype=np.bool_), _ints(program), _ints(rule_start),
-        np.array(weights, dtype=float), _ints(rule_conclusions), _ints(conclusion_hedges), _ints(conclusion_row),
+        np.array(weights, dtype=float), np.array(aliased, dtype=np.bool_), _ints(rule_conclusions),
+        _ints(conclusion_hedges), _ints(conclusion_row),
         *packed_outputs)
+
+
+def _aliased(program, rule_start, weights, rule_conclusions, conclusions, rows, chained, r) -> bool:
+    """Whether rule r's degree is its one proposition's degree, read in place: a single
+    proposition of weight 1 (× 1 changes no bit), no hedged conclusion, and no chained
+    proposition in the engine (whose degrees are accumulated from the rules' rows)."""
+    first, end = rule_start[r], rule_start[r + 1]
+    hedged = any(c.hedges for _, c in conclusions[rule_conclusions[r]:rule_conclusions[r + 1]])
+    return end - first == 1 and weights[r] == 1.0 and not hedged and not chained and rows[program[first]][0] != CHAINED
 
 
 def _emit(node, literals: dict, program: list) -> None:
@@ -143,8 +159,9 @@ def _emit(node, literals: dict, program: list) -> None:
         program.append(compiled.AND if node.name == "and" else compiled.OR)
 
 
-def _pack_outputs(engine, conclusions: list, conclusion_row: list) -> tuple | str:
-    """The output part of :class:`Packed` (from ``output`` on), or why not."""
+def _pack_outputs(engine, conclusions: list, degree_row: list) -> tuple | str:
+    """The output part of :class:`Packed` (from ``output`` on), or why not; conclusion c's degrees
+    are row ``degree_row[c]`` of the propositions' then the rules' values."""
     rows, limits, act_start, act_conclusion, act_unit, act_opens = [], [], [0], [], [], []
     unit_start, unit_term, unit_implication = [0], [], []
     shape_start, shapes, points_start, points, support_start, support = [0], [], [0], [], [0], []
@@ -179,7 +196,7 @@ def _pack_outputs(engine, conclusions: list, conclusion_row: list) -> tuple | st
         else:
             acts = []
         act_opens += [a == units.index(u) for a, u in enumerate(units)]
-        act_conclusion += [conclusion_row[c] for c, *_ in acts]
+        act_conclusion += [degree_row[c] for c, *_ in acts]
         act_unit += units
         act_start.append(len(act_conclusion))
         unit_start.append(unit_start[-1] + n_units)
