@@ -21,7 +21,9 @@ defuzzified by an integral method) and first-order Takagi–Sugeno examples (lin
 a batch of 10,000 random inputs each, median of 5 runs, the two engines interleaved, in the
 Python given by ``--fll-python`` (which must have both packages). ``--clock cpu`` times them by
 the CPU time of the process instead of the wall clock: steadier on a machine shared with other
-work, where a wall-clock run mostly measures who was descheduled. Each engine's line says when it
+work, where a wall-clock run mostly measures who was descheduled. ``--calls K`` makes each sample
+the mean of K calls in a row (the throughput of repeated batches; with one call a sample, each
+engine starts right after the other's, its data and code out of cache). Each engine's line says when it
 is not evaluated by the fused kernel (``Engine.fallback``: why), and the count is printed.
 """
 
@@ -212,9 +214,9 @@ def _example_kind(engine) -> str | None:
 CLOCKS = {"wall": time.perf_counter, "cpu": time.process_time}
 
 
-def bench_examples(folders: list[str], clock: str = "wall") -> dict:
+def bench_examples(folders: list[str], clock: str = "wall", calls: int = 1) -> dict:
     """fuzzynav / pyfuzzylite batch time on every Mamdani and TS1 example engine under ``folders``,
-    by the ``clock`` of :data:`CLOCKS`."""
+    by the ``clock`` of :data:`CLOCKS`: each sample the mean of ``calls`` calls in a row."""
     now = CLOCKS[clock]
     import fuzzylite as fl
 
@@ -239,16 +241,19 @@ def bench_examples(folders: list[str], clock: str = "wall") -> dict:
         for _ in range(5):  # interleaved: both see the same machine load
             for name, run in (("fuzzynav", lambda: ours.evaluate(X)), ("pyfuzzylite", lambda: process(X))):
                 t0 = now()
-                run()
-                times[name].append(now() - t0)
+                for _ in range(calls):
+                    run()
+                times[name].append((now() - t0) / calls)
         ours_s, theirs_s = statistics.median(times["fuzzynav"]), statistics.median(times["pyfuzzylite"])
         rows[str(path)] = {"kind": kind, "fuzzynav_ms": 1e3 * ours_s, "pyfuzzylite_ms": 1e3 * theirs_s,
                            "ratio": theirs_s / ours_s, "path": ours.fallback or "fused"}
     return rows
 
 
-def _print_examples(rows: dict, clock: str) -> None:
-    print(f"fuzzylite examples, batch of {N_EXAMPLE_BATCH:,} random inputs, median of 5 (interleaved), {clock} clock")
+def _print_examples(rows: dict, clock: str, calls: int) -> None:
+    per_sample = "one call a sample" if calls == 1 else f"each sample the mean of {calls} calls in a row"
+    print(f"fuzzylite examples, batch of {N_EXAMPLE_BATCH:,} random inputs, median of 5 (interleaved; {per_sample}), "
+          f"{clock} clock")
     print(f"{'kind':<8} {'fuzzynav ms':>12} {'pyfuzzylite ms':>15} {'ratio':>7}  engine")
     for path, r in sorted(rows.items(), key=lambda item: (item[1]["kind"], item[0])):
         print(f"{r['kind']:<8} {r['fuzzynav_ms']:>12.2f} {r['pyfuzzylite_ms']:>15.2f} {r['ratio']:>7.1f}  {path}"
@@ -273,6 +278,9 @@ def main(argv=None) -> int:
                              "(default $FUZZYNAV_FLL_EXAMPLES, ':'-separated)")
     parser.add_argument("--clock", choices=list(CLOCKS), default="wall",
                         help="time the examples by the wall clock (default) or the process's CPU time")
+    parser.add_argument("--calls", type=int, default=1, metavar="K",
+                        help="examples: time K calls in a row per sample (default 1: each sample one call, right "
+                             "after the other engine's; K > 1 measures the throughput of repeated batches)")
     args = parser.parse_args(argv)
     folders = args.examples or [d for d in os.environ.get("FUZZYNAV_FLL_EXAMPLES", "").split(os.pathsep) if d]
     if folders:
@@ -282,10 +290,13 @@ def main(argv=None) -> int:
             if not args.fll_python:
                 parser.error("pyfuzzylite is not importable here: give --fll-python (a venv with fuzzynav and "
                              "pyfuzzylite)")
-            command = [args.fll_python, __file__, "--clock", args.clock, *sum((["--examples", d] for d in folders), [])]
+            command = [args.fll_python, __file__, "--clock", args.clock, "--calls", str(args.calls),
+                       *sum((["--examples", d] for d in folders), [])]
             return subprocess.run(command + (["--json"] if args.json else [])).returncode
-        rows = bench_examples(folders, args.clock)
-        print(json.dumps(rows, indent=2)) if args.json else _print_examples(rows, args.clock)
+        if args.calls < 1:
+            parser.error("--calls must be at least 1")
+        rows = bench_examples(folders, args.clock, args.calls)
+        print(json.dumps(rows, indent=2)) if args.json else _print_examples(rows, args.clock, args.calls)
         return 0
     with contextlib.redirect_stdout(sys.stderr):  # peers chatter on stdout (simpful, on every call)
         results = {name: run_peer(name, args.fll_python) for name in (args.only or PEERS)}
