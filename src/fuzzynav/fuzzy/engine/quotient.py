@@ -1,9 +1,10 @@
 """The bits of n / d by multiplications, for loops that divide many values by one denominator.
 
 A division is the slowest arithmetic instruction (a 4-wide ``vdivpd`` takes several times the
-cycles of a fused multiply-add), and Gaussian and Bell terms divide every value by their width
-(README, "Speed on fuzzylite's examples", for what this saves; a trapezoid's loop does not gain:
-its other operations cost as much as its division).
+cycles of a fused multiply-add). A Bell of power 2, 4 or 8 (:mod:`.term_columns`) divides every
+value by its width and otherwise only squares and adds, so its loop is bound by the divider; in
+loops whose other work hides the division (Gaussians and other Bells, with their exp and log;
+trapezoids, with their selects), the extra operations cost more than they save, and those divide.
 :func:`quotient` computes n / d from the reciprocal y = 1 / d (divided once, outside the loop)
 by Markstein's correction (P. Markstein, "Computation of elementary functions on the IBM RISC
 System/6000 processor", IBM J. Res. Dev. 34(1), 1990; J.-M. Muller et al., *Handbook of

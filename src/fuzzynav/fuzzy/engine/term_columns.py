@@ -131,33 +131,19 @@ def _semiellipse(x, s, e):
 
 
 @jit
-def _exp_loop(code, p, x, out, divide):
-    """:func:`_exp_term`'s loops, z by quotients from 1 / σ or 1 / a unless ``divide``; returns
-    whether every value is exact."""
-    n, inexact = x.shape[0], 0
-    if code == GAUSSIAN:
-        sigma, mean = p[0], p[1]
-        y = 1.0 / sigma
-        for k in range(n):
-            z, exact = divided(x[k] - mean, sigma, y, divide)
-            out[k] = exp_of(-0.5 * z * z)
-            inexact += 0 if exact else 1
-        return inexact == 0
+def _squared_bell(p, x, out, divide):
+    """A Bell of power 2b = 2, 4 or 8: 1 / (1 + z^2b), z = (x − c) / a by a quotient from 1 / a
+    (:mod:`.quotient`) unless ``divide``, its power by one to three squarings; returns whether
+    every value is exact. (Gaussians and other Bells keep the division: their exp and log hide it.)"""
     width, power, centre = p[0], 2.0 * p[1], p[2]
-    y = 1.0 / width
-    if power == 2.0 or power == 4.0 or power == 8.0:  # z^p by squarings: no log, no exp
-        for k in range(n):
-            z, exact = divided(x[k] - centre, width, y, divide)
-            q = z * z
-            q = q * q if power >= 4.0 else q
-            q = q * q if power == 8.0 else q
-            out[k] = 1.0 / (1.0 + q)
-            inexact += 0 if exact else 1
-    else:
-        for k in range(n):
-            z, exact = divided(x[k] - centre, width, y, divide)
-            out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs(z))))
-            inexact += 0 if exact else 1
+    y, inexact = 1.0 / width, 0
+    for k in range(x.shape[0]):
+        z, exact = divided(x[k] - centre, width, y, divide)
+        q = z * z
+        q = q * q if power >= 4.0 else q
+        q = q * q if power == 8.0 else q
+        out[k] = 1.0 / (1.0 + q)
+        inexact += 0 if exact else 1
     return inexact == 0
 
 
@@ -166,15 +152,27 @@ def _exp_term(code, p, x, out):
     """Gaussian (σ, m): exp(−½ z z), z = (x − m) / σ; Bell (a, b, c): 1 / (1 + |(x − c) / a|^(2b));
     Sigmoid (a, c): 1 / (1 + exp(clip(−a (x − c), ±700))) — the NumPy formulas of
     :mod:`fuzzynav.fuzzy.membership`, operation for operation but for exp and log (and a Bell's
-    power 2b = 2, 4 or 8, by squarings), each in one loop that the compiler vectorises (:mod:`.vmath`);
-    z has the division's bits, by a quotient (:mod:`.quotient`) where σ or a has a usable reciprocal."""
-    if code == SIGMOID:
+    power 2b = 2, 4 or 8, by squarings: :func:`_squared_bell`), each in one loop that the compiler
+    vectorises (:mod:`.vmath`)."""
+    n = x.shape[0]
+    if code == GAUSSIAN:
+        sigma, mean = p[0], p[1]
+        for k in range(n):
+            z = (x[k] - mean) / sigma
+            out[k] = exp_of(-0.5 * z * z)
+    elif code == BELL:
+        width, power, centre = p[0], 2.0 * p[1], p[2]
+        if power == 2.0 or power == 4.0 or power == 8.0:
+            if not (usable_reciprocal(width) and _squared_bell(p, x, out, False)):
+                _squared_bell(p, x, out, True)
+        else:
+            for k in range(n):
+                out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs((x[k] - centre) / width))))
+    else:
         slope, inflection = -p[0], p[1]
-        for k in range(x.shape[0]):
+        for k in range(n):
             z = slope * (x[k] - inflection)
             out[k] = 1.0 / (1.0 + exp_of(700.0 if z > 700.0 else (-700.0 if z < -700.0 else z)))
-    elif not (usable_reciprocal(p[0]) and _exp_loop(code, p, x, out, False)):
-        _exp_loop(code, p, x, out, True)
 
 
 @jit
