@@ -24,6 +24,7 @@ same bits (tested on every fuzzylite example).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 
 import numpy as np
@@ -144,11 +145,12 @@ class Engine(VariableNames):
         engine (:mod:`fuzzynav.fuzzy.engine.fused`)."""
         if self._packed is None:  # packed once: a call then costs no imports nor searches
             from fuzzynav.fuzzy.engine import fused
-            from fuzzynav.fuzzy.engine.pack import NUMPY, pack
+            from fuzzynav.fuzzy.engine.pack import NUMPY, flatten, pack
 
             packed = pack(self)
             self._packed = packed if isinstance(packed, str) else \
-                (*packed, np.flatnonzero(packed[1].literal[:, 0] == NUMPY).tolist(), fused.evaluate)
+                (*packed, np.flatnonzero(packed[1].literal[:, 0] == NUMPY).tolist(),
+                 functools.partial(fused.evaluate, flatten(packed[1])))
         return self._packed if isinstance(self._packed, str) else None
 
     def evaluate(self, X) -> np.ndarray:
@@ -156,13 +158,13 @@ class Engine(VariableNames):
         X = self._checked(X)
         n = X.shape[0]
         if self.fallback is None:
-            literals, packed, in_numpy, evaluate_fused = self._packed  # in_numpy: propositions NumPy fuzzifies
+            literals, _, in_numpy, evaluate_fused = self._packed  # in_numpy: propositions NumPy fuzzifies
             table = np.empty((len(literals), n))
             if in_numpy:
                 state = _State(self, self._values(X)[1], n)
                 for row in in_numpy:
                     table[row] = state.degree(literals[row])
-            return evaluate_fused(packed, table, X)
+            return evaluate_fused(table, X)
         from fuzzynav.fuzzy.engine import compiled
 
         columns, values = self._values(X)

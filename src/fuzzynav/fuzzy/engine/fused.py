@@ -20,20 +20,49 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine import compiled
 from fuzzynav.fuzzy.engine.norms import snorm_into
-from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Packed
+from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Flat, Packed
 from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
 from fuzzynav.jit import jit
 
 ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
 _EVERY_ROW = np.ones((0, 0), dtype=np.bool_)  # the "triggered" mask weighted_affine does not read (General)
+OUTPUT_FIELD = list(Packed._fields).index("output")
 
 
-def evaluate(packed: Packed, table: np.ndarray, X: np.ndarray) -> np.ndarray:
-    """Outputs (N, K) for the inputs X (N, n_inputs); ``table`` (L, N) holds the degrees of the
-    propositions :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
-    out = np.empty((X.shape[0], packed.output.shape[0]))
-    run(np.ascontiguousarray(X, dtype=float), table, *packed, _EVERY_ROW, out)
+def evaluate(flat: Flat, table: np.ndarray, X: np.ndarray) -> np.ndarray:
+    """Outputs (N, K) for the inputs X (N, n_inputs) of the engine packed as ``flat``
+    (:func:`~.pack.flatten`); ``table`` (L, N) holds the degrees of the propositions
+    :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
+    out = np.empty((X.shape[0], flat.layout[OUTPUT_FIELD, 2]))
+    run(np.ascontiguousarray(X, dtype=float), table, *flat, _EVERY_ROW, out)
     return out
+
+
+@jit
+def _field(buffer, layout, k):
+    """Field k of a :class:`~.pack.Flat` as a 1-D array of its buffer."""
+    return buffer[layout[k, 1]:layout[k, 1] + layout[k, 2]]
+
+
+@jit
+def _field2(buffer, layout, k):
+    """Field k of a :class:`~.pack.Flat` as a 2-D array of its buffer."""
+    rows, columns = layout[k, 2], layout[k, 3]
+    return buffer[layout[k, 1]:layout[k, 1] + rows * columns].reshape((rows, columns))
+
+
+@jit
+def run(X, table, ints, floats, bools, layout, every_row, out):
+    """:func:`_run` of the :class:`~.pack.Flat` engine (ints, floats, bools, layout): its fields
+    in :class:`~.pack.Packed`'s order, as views of the three buffers."""
+    i, f, b, a = ints, floats, bools, layout
+    _run(X, table, _field(b, a, 0), _field(f, a, 1), _field(f, a, 2), _field2(i, a, 3), _field(i, a, 4), _field(i, a, 5),
+         _field(f, a, 6), _field(f, a, 7), _field2(i, a, 8), _field(i, a, 9), _field(i, a, 10), _field(i, a, 11),
+         _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16), _field(b, a, 17),
+         _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21), _field2(f, a, 22), _field(i, a, 23),
+         _field(i, a, 24), _field(i, a, 25), _field(b, a, 26), _field(i, a, 27), _field(i, a, 28), _field(i, a, 29),
+         _field(i, a, 30), _field(f, a, 31), _field(i, a, 32), _field(f, a, 33), _field(i, a, 34), _field2(i, a, 35),
+         _field2(f, a, 36), _field(f, a, 37), every_row, out)
 
 
 @jit
@@ -95,7 +124,7 @@ def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_
 
 
 @jit
-def run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
+def _run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
         chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
         conclusion_hedges, conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start,
         unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
