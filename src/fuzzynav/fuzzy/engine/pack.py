@@ -2,8 +2,9 @@
 
 :func:`pack` returns the propositions to fuzzify in NumPy before the kernel (terms built on
 ``exp`` or ``pow``, ``Function`` and ``Linear`` premises: see :mod:`.term_columns`) and a
-:class:`Packed` record of arrays that :func:`fuzzynav.fuzzy.engine.fused.run` reads, or — for what the kernel does not cover
-— the reason the engine keeps its NumPy path: an activation method other than General, or a
+:class:`Packed` record of arrays that :func:`fuzzynav.fuzzy.engine.fused.run` reads (handed
+over as a :class:`Flat`), or — for what the kernel does not cover — the reason the engine keeps
+its NumPy path: an activation method other than General, or a
 weighted output whose conclusions are not all constant or linear (Tsukamoto's inverses, functions
 of the degree). Index ranges are ``X_start[k]:X_start[k + 1]``.
 """
@@ -26,7 +27,7 @@ NAN_OUTPUT, INTEGRAL, WEIGHTED, EMPTY = 0, 1, 2, 3  # how an output is computed 
 
 
 class Packed(NamedTuple):
-    """The arrays of :func:`fuzzynav.fuzzy.engine.fused.run`, in its argument order."""
+    """The arrays of :func:`fuzzynav.fuzzy.engine.fused._run`, in its argument order."""
 
     lock: np.ndarray  # inputs: clipped to [lo, hi] where locked
     lo: np.ndarray
