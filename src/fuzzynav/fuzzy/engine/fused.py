@@ -26,14 +26,15 @@ from fuzzynav.jit import jit
 
 ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
 _EVERY_ROW = np.ones((0, 0), dtype=np.bool_)  # the "triggered" mask weighted_affine does not read (General)
-OUTPUT_FIELD = list(Packed._fields).index("output")
+LO, LITERAL, WEIGHT, CONCLUSION_ROW, OUTPUT, OUTPUT_LIMITS = (
+    Packed._fields.index(name) for name in ("lo", "literal", "rule_weight", "conclusion_row", "output", "output_limits"))
 
 
 def evaluate(flat: Flat, table: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Outputs (N, K) for the inputs X (N, n_inputs) of the engine packed as ``flat``
     (:func:`~.pack.flatten`); ``table`` (L, N) holds the degrees of the propositions
     :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
-    out = np.empty((X.shape[0], flat.layout[OUTPUT_FIELD, 2]))
+    out = np.empty((X.shape[0], flat.layout[OUTPUT, 2]))
     run(np.ascontiguousarray(X, dtype=float), table, *flat, _EVERY_ROW, out)
     return out
 
@@ -52,17 +53,17 @@ def _field2(buffer, layout, k):
 
 
 @jit
-def run(X, table, ints, floats, bools, layout, every_row, out):
-    """:func:`_run` of the :class:`~.pack.Flat` engine (ints, floats, bools, layout): its fields
-    in :class:`~.pack.Packed`'s order, as views of the three buffers."""
+def _unpack(ints, floats, bools, layout):
+    """The fields of a :class:`~.pack.Flat` engine in :class:`~.pack.Packed`'s order, as views of
+    its buffers (ints, floats, bools)."""
     i, f, b, a = ints, floats, bools, layout
-    _run(X, table, _field(b, a, 0), _field(f, a, 1), _field(f, a, 2), _field2(i, a, 3), _field(i, a, 4), _field(i, a, 5),
-         _field(f, a, 6), _field(f, a, 7), _field2(i, a, 8), _field(i, a, 9), _field(i, a, 10), _field(i, a, 11),
-         _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16), _field(b, a, 17),
-         _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21), _field2(f, a, 22), _field(i, a, 23),
-         _field(i, a, 24), _field(i, a, 25), _field(b, a, 26), _field(i, a, 27), _field(i, a, 28), _field(i, a, 29),
-         _field(i, a, 30), _field(f, a, 31), _field(i, a, 32), _field(f, a, 33), _field(i, a, 34), _field2(i, a, 35),
-         _field2(f, a, 36), _field(f, a, 37), every_row, out)
+    return (_field(b, a, 0), _field(f, a, 1), _field(f, a, 2), _field2(i, a, 3), _field(i, a, 4), _field(i, a, 5),
+            _field(f, a, 6), _field(f, a, 7), _field2(i, a, 8), _field(i, a, 9), _field(i, a, 10), _field(i, a, 11),
+            _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16), _field(b, a, 17),
+            _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21), _field2(f, a, 22), _field(i, a, 23),
+            _field(i, a, 24), _field(i, a, 25), _field(b, a, 26), _field(i, a, 27), _field(i, a, 28), _field(i, a, 29),
+            _field(i, a, 30), _field(f, a, 31), _field(i, a, 32), _field(f, a, 33), _field(i, a, 34), _field2(i, a, 35),
+            _field2(f, a, 36), _field(f, a, 37))
 
 
 @jit
@@ -124,16 +125,15 @@ def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_
 
 
 @jit
-def _run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-        chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
-        conclusion_hedges, conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start,
-        unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
-        coefficients, constants, every_row, out):
-    """Outputs ``out`` (N, K) of the packed engine for the inputs X (module docstring): :func:`_rows`
-    by blocks of rows whose arrays stay in cache (whole batches for small engines, as each block
-    costs its allocations), then each output's
-    ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch (``lock-previous``
-    carries a value from one row to the next)."""
+def run(X, table, ints, floats, bools, layout, every_row, out):
+    """Outputs ``out`` (N, K) for the inputs X of the engine packed as (ints, floats, bools,
+    layout) (:func:`~.pack.flatten`; module docstring): :func:`_rows` by blocks of rows whose
+    arrays stay in cache (whole batches for small engines, as each block costs its allocations),
+    then each output's ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch
+    (``lock-previous`` carries a value from one row to the next)."""
+    lo, literal, rule_weight = _field(floats, layout, LO), _field2(ints, layout, LITERAL), _field(floats, layout, WEIGHT)
+    conclusion_row, output = _field(ints, layout, CONCLUSION_ROW), _field2(ints, layout, OUTPUT)
+    output_limits = _field2(floats, layout, OUTPUT_LIMITS)
     n, n_literals = X.shape[0], table.shape[0]
     n_values = max(rule_weight.shape[0], conclusion_row.max() + 1 if conclusion_row.shape[0] else 0)
     raw = np.empty((output.shape[0], n))
@@ -146,11 +146,7 @@ def _run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, pa
             if literal[lit, 0] == NUMPY:
                 work[lit] = table[lit, r0:r1]
         y = np.empty((output.shape[0], r1 - r0))
-        _rows(X[r0:r1], work, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-              chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
-              conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
-              unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
-              coefficients, constants, every_row, y)
+        _rows(X[r0:r1], work, ints, floats, bools, layout, every_row, y)
         raw[:, r0:r1] = y
     for k in range(output.shape[0]):
         if output[k, 0] != NAN_OUTPUT:
@@ -160,14 +156,15 @@ def _run(X, table, lock, lo, hi, literal, term_code, term_start, term_height, pa
 
 
 @jit
-def _rows(X, work, lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start,
-          chained_conclusions, hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions,
-          conclusion_hedges, conclusion_row, output, act_start, act_conclusion, act_unit, act_opens, unit_start,
-          unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support,
-          coefficients, constants, every_row, raw):
+def _rows(X, work, ints, floats, bools, layout, every_row, raw):
     """``raw[k]``: output k before its ``lock-previous`` / ``default`` / ``lock-range``, on the
     rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
     the rules' values (the activations' rows index both: an aliased rule's is its proposition's)."""
+    (lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start, chained_conclusions,
+     hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions, conclusion_hedges,
+     conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start, unit_term,
+     unit_implication, shape_start, shapes, points_start, points, support_start, support, coefficients,
+     constants) = _unpack(ints, floats, bools, layout)
     n = X.shape[0]
     table, value = work[:literal.shape[0]], work[literal.shape[0]:]
     inputs = np.empty((lo.shape[0], n))
