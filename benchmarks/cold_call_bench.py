@@ -21,6 +21,7 @@ import time
 import numba
 import numpy as np
 
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 
 
@@ -32,12 +33,20 @@ def _inputs(engine, n: int, rng) -> np.ndarray:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("fll", help="an FLL engine (e.g. one of fuzzylite's examples)")
-    parser.add_argument("--repeats", type=int, default=21)
+    parser.add_argument("--repeats", type=int, default=21, help="samples of each timing (default 21)")
     args = parser.parse_args(argv)
-    import fuzzylite as fl
-
-    text = open(args.fll, encoding="utf-8").read()
-    ours, theirs = from_fll_engine(text, source=args.fll), fl.FllImporter().from_string(text)
+    if args.repeats < 1:
+        parser.error("--repeats must be at least 1")
+    try:
+        import fuzzylite as fl
+    except ImportError:
+        parser.error("pyfuzzylite is not importable here: run this in a Python that has it (e.g. .venv-fll)")
+    try:
+        text = open(args.fll, encoding="utf-8").read()
+        ours = from_fll_engine(text, source=args.fll)
+    except (OSError, UnicodeDecodeError, InputError) as error:
+        parser.error(f"{args.fll}: {error}")
+    theirs = fl.FllImporter().from_string(text)
     rng = np.random.default_rng(0)
     peer_batch = _inputs(ours, 10_000, rng)
 

@@ -84,3 +84,18 @@ def test_blocks_of_rows_carry_lock_previous_across_their_boundaries():
     w = engine.output_names.index("w")
     assert np.all(out[gaps, w] == out[[fused.ROWS - 2, fused.ROWS - 2, 2 * fused.ROWS - 1, 2 * fused.ROWS - 1], w])
     assert np.isfinite(out[gaps, w]).all()
+
+
+@pytest.mark.parametrize("name", ["mamdani", "chained", "snorm-EinsteinSum"])
+def test_the_flat_buffers_give_back_every_packed_array(name):
+    """pack.flatten's three buffers, unpacked as the kernel does (fused._unpack), are the Packed
+    arrays themselves: same order, dtypes, shapes and values."""
+    from fuzzynav.fuzzy.engine.fused import _unpack
+    from fuzzynav.fuzzy.engine.pack import flatten
+
+    engine = from_fll_engine(ENGINES[name])
+    assert engine.fallback is None
+    packed = engine._packed[1]
+    for field, original, unpacked in zip(packed._fields, packed, _unpack(*flatten(packed)), strict=True):
+        assert unpacked.dtype == original.dtype and unpacked.shape == original.shape, field
+        np.testing.assert_array_equal(unpacked, original, err_msg=field)

@@ -133,10 +133,7 @@ def every_row_affine(degrees, rows, groups, aggregation, coefficients, constants
             _four_groups(d0, d1, d2, d3, coefficients, constants, g, inputs[0, lo:hi], inputs[m - 1, lo:hi],
                          num[:size], den[:size])
         for g in range(tiled, n_groups):
-            if count[g] == 1:  # here without a call: these loops are short
-                d = degrees[first[g], lo:hi]
-            else:
-                d = _group_degree(degrees, rows, groups, aggregation, g, first[g], count[g], lo, hi, folded[0, :size])
+            d = _group_degree(degrees, rows, groups, aggregation, g, first[g], count[g], lo, hi, folded[0, :size])
             zg = z[:size]  # z = ((c₀ + c₁ x₁) + c₂ x₂) + …, its last term added with the sums
             if m <= 1:
                 zg[:] = constants[g]

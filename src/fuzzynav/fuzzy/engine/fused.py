@@ -1,8 +1,9 @@
 """One compiled kernel from an engine's input batch to its outputs.
 
 :func:`run` takes the arrays of :mod:`.pack` (built once per engine, handed over as three
-buffers: :func:`~.pack.flatten`) and the degrees of the few propositions fuzzified in NumPy, and does in one call what :class:`~fuzzynav.fuzzy.engine.Engine`
-otherwise does in Python around several kernels: the input values (clipped where
+buffers: :func:`~.pack.flatten`) and the degrees of the few propositions fuzzified in NumPy,
+and does in one call what :class:`~fuzzynav.fuzzy.engine.Engine` otherwise does in Python
+around several kernels: the input values (clipped where
 ``lock-range``); every proposition's degree (:func:`~.term_columns.term_column`, then its hedges);
 each block's rules (:func:`~.compiled.rule_degrees`: postfix antecedents with the block's norms,
 times the weights; a block reading an output term runs rule by rule, that degree accumulated

@@ -27,7 +27,8 @@ NAN_OUTPUT, INTEGRAL, WEIGHTED, EMPTY = 0, 1, 2, 3  # how an output is computed 
 
 
 class Packed(NamedTuple):
-    """The arrays of :func:`fuzzynav.fuzzy.engine.fused._run`, in its argument order."""
+    """The arrays the fused kernel reads, in the order :func:`fuzzynav.fuzzy.engine.fused._unpack`
+    returns them from a :class:`Flat`."""
 
     lock: np.ndarray  # inputs: clipped to [lo, hi] where locked
     lo: np.ndarray
@@ -49,11 +50,11 @@ class Packed(NamedTuple):
     rule_aliased: np.ndarray  # a rule whose degree is its one proposition's row (not computed)
     rule_conclusions: np.ndarray  # start of the rule's conclusions
     conclusion_hedges: np.ndarray  # (C + 1): start of each conclusion's hedges
-    conclusion_row: np.ndarray  # (C,): its degrees' row of the rules' values: its rule's (r < R), or its own once hedged
+    conclusion_row: np.ndarray  # (C,): its row of the rules' values: its rule's (r < R), or its own once hedged
     output: np.ndarray  # (K, 6): kind, aggregation, reduction, weighted sum, lock-previous, lock-range
     output_limits: np.ndarray  # (K, 3): default, minimum, maximum
-    act_start: np.ndarray  # per output: its activations (degrees' row in the propositions' then the rules'
-    # values, unit or group, opens a group)
+    act_start: np.ndarray  # per output: its activations (row of degrees, unit or group, opens a group;
+    # rows index the propositions' degrees, then the rules' values)
     act_conclusion: np.ndarray
     act_unit: np.ndarray
     act_opens: np.ndarray
