@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.fuzzy.engine import compiled, norms
+from fuzzynav.fuzzy.engine.compiled import AND, OR
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -100,9 +101,9 @@ def _weighted_reference(degrees, rows, groups, aggregation, coefficients, consta
     return y * den if weighted_sum else y
 
 
-@pytest.mark.parametrize("n_inputs", [0, 1, 2, 3])
+@pytest.mark.parametrize("n_inputs", [0, 1, 2, 3, 4, 5])
 def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_time(n_inputs):
-    """Takagi–Sugeno outputs of one or two inputs take their groups four by four (affine.py): the
+    """Takagi–Sugeno outputs of one to four inputs take their groups four by four (affine.py): the
     same bits as the groups one by one, over several chunks of rows, with folded groups, NaN and
     infinite inputs, and every count of groups around the tile."""
     rng = np.random.default_rng(3)
@@ -126,3 +127,33 @@ def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_
                     expected = _weighted_reference(degrees, rows, groups, aggregation, coefficients, constants,
                                                    inputs, weighted_sum)
                 np.testing.assert_array_equal(out, expected, err_msg=f"{n_groups} groups, {SNORMS[aggregation]}")
+
+
+@pytest.mark.parametrize("conjunction", range(len(TNORMS)), ids=TNORMS)
+def test_rule_degrees_give_the_bits_of_the_norms_applied_pair_by_pair(conjunction):
+    """Left-deep antecedents of one to six propositions, ANDs in runs of up to five among ORs (up to
+    three conjunctions a loop for the product and the minimum: norms.conjoin_into), weights, NaN and
+    bounds among the degrees, over several chunks of rows: the bits of each operator applied in
+    turn with tnorm_into / snorm_into."""
+    rng = np.random.default_rng(6)
+    n = 2 * compiled.CHUNK + 77
+    table = rng.random((6, n))
+    table[:, :40] = rng.choice([np.nan, 0.0, 1.0, 0.5], (6, 40))
+    operators = [[], [AND], [AND, AND], [AND, AND, AND], [AND, AND, AND, AND, AND], [AND, OR, AND, AND],
+                 [OR, AND, AND, AND, OR], [AND, AND, OR, AND, AND]]
+    program, starts, expected = [], [0], []
+    for ops in operators:
+        props = rng.permutation(6)[:len(ops) + 1]
+        program += [int(props[0])] + [x for p, op in zip(props[1:], ops) for x in (int(p), op)]
+        starts.append(len(program))
+        value = table[props[0]].copy()
+        for p, op in zip(props[1:], ops):
+            (norms.tnorm_into if op == AND else norms.snorm_into)(conjunction if op == AND else SNORMS.index("Maximum"),
+                                                                  value, table[p], value)
+        expected.append(value)
+    weights = np.array([1.0, 0.5, 1.0, 0.25, 1.0, 1.0, 0.75, 1.0])
+    out = np.empty((len(operators), n))
+    compiled.rule_degrees(table, np.array(program), np.array(starts), weights, conjunction, SNORMS.index("Maximum"), out)
+    for r, value in enumerate(expected):
+        reference = value if weights[r] == 1.0 else weights[r] * value
+        np.testing.assert_array_equal(out[r], reference, err_msg=f"rule {r}: {operators[r]}")

@@ -4,7 +4,7 @@
 General activation: by chunks of rows that stay in cache, each term group's degree (its
 activation's, or several folded with the output's S-norm), its value z = c₀ + c₁ x₁ + … + cₘ xₘ
 and the sums num += g z, den += g, group after group; then num / den (times den for a weighted
-sum). With one or two inputs (most of MATLAB's ANFIS systems), four groups go through one loop,
+sum). With one to four inputs (most of MATLAB's ANFIS systems), four groups go through one loop,
 their values computed in it: each row's sums are read and written once for the four instead of
 once for each, and z is never stored — the same operations in the same order (so the same bits),
 a fraction of the memory traffic. Other groups go one loop each.
@@ -18,7 +18,7 @@ from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.jit import jit
 
 CHUNK = 1024  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
-TILE = 4  # groups a loop of :func:`_four_groups` takes
+TILE = 4  # groups a loop of :func:`_four_groups` takes, of at most TILE inputs
 
 
 @jit
@@ -72,38 +72,43 @@ def _group_degree(degrees, rows, groups, aggregation, g, first, count, lo, hi, f
 
 
 @jit
-def _four_groups(d0, d1, d2, d3, coefficients, constants, g, x0, x1, num, den):
-    """num += g z, den += g for the groups g … g + 3 (degrees d0 … d3) in order, each z = c₀ + c₁ x₀
-    (+ c₂ x₁ with two inputs) computed in the loop."""
-    m = coefficients.shape[1]
-    a0, a1, a2 = constants[g], coefficients[g, 0], coefficients[g, m - 1]
-    b0, b1, b2 = constants[g + 1], coefficients[g + 1, 0], coefficients[g + 1, m - 1]
-    c0, c1, c2 = constants[g + 2], coefficients[g + 2, 0], coefficients[g + 2, m - 1]
-    e0, e1, e2 = constants[g + 3], coefficients[g + 3, 0], coefficients[g + 3, m - 1]
-    if m == 1:
-        for k in range(num.shape[0]):
-            u = x0[k]
-            s, w = num[k], den[k]
-            s = s + d0[k] * (a0 + a1 * u)
-            w = w + d0[k]
-            s = s + d1[k] * (b0 + b1 * u)
-            w = w + d1[k]
-            s = s + d2[k] * (c0 + c1 * u)
-            w = w + d2[k]
-            s = s + d3[k] * (e0 + e1 * u)
-            num[k], den[k] = s, w + d3[k]
-    else:
-        for k in range(num.shape[0]):
-            u, v = x0[k], x1[k]
-            s, w = num[k], den[k]
-            s = s + d0[k] * ((a0 + a1 * u) + a2 * v)
-            w = w + d0[k]
-            s = s + d1[k] * ((b0 + b1 * u) + b2 * v)
-            w = w + d1[k]
-            s = s + d2[k] * ((c0 + c1 * u) + c2 * v)
-            w = w + d2[k]
-            s = s + d3[k] * ((e0 + e1 * u) + e2 * v)
-            num[k], den[k] = s, w + d3[k]
+def _terms(coefficients, constants, g):
+    """Group g's constant and first four coefficients (its last repeated where it has fewer)."""
+    row, last = coefficients[g], coefficients.shape[1] - 1
+    return constants[g], row[0], row[min(1, last)], row[min(2, last)], row[min(3, last)]
+
+
+@jit
+def _value(c, m, u, v, t, r):
+    """z = ((c₀ + c₁ u) + c₂ v) + … over the first m of the inputs u, v, t, r."""
+    z = c[0] + c[1] * u
+    if m > 1:
+        z = z + c[2] * v
+    if m > 2:
+        z = z + c[3] * t
+    if m > 3:
+        z = z + c[4] * r
+    return z
+
+
+@jit
+def _four_groups(d0, d1, d2, d3, coefficients, constants, g, x0, x1, x2, x3, num, den):
+    """num += g z, den += g for the groups g … g + 3 (degrees d0 … d3) in order, each z
+    (:func:`_value`) of the m = 1 to 4 inputs computed in the loop."""
+    m = coefficients.shape[1]  # the coefficients as scalars before the loop (the arrays might alias num, den)
+    a, b, c, e = (_terms(coefficients, constants, g), _terms(coefficients, constants, g + 1),
+                  _terms(coefficients, constants, g + 2), _terms(coefficients, constants, g + 3))
+    for k in range(num.shape[0]):
+        u, v, t, r = x0[k], x1[k], x2[k], x3[k]
+        s, w = num[k], den[k]
+        s = s + d0[k] * _value(a, m, u, v, t, r)
+        w = w + d0[k]
+        s = s + d1[k] * _value(b, m, u, v, t, r)
+        w = w + d1[k]
+        s = s + d2[k] * _value(c, m, u, v, t, r)
+        w = w + d2[k]
+        s = s + d3[k] * _value(e, m, u, v, t, r)
+        num[k], den[k] = s, w + d3[k]
 
 
 @jit
@@ -112,7 +117,7 @@ def every_row_affine(degrees, rows, groups, aggregation, coefficients, constants
     a of degree ``degrees[rows[a]]`` in group ``groups[a]``, group g's value z the constant
     ``constants[g]`` plus ``coefficients[g]`` · the ``inputs`` (n_inputs, N) (module docstring)."""
     n_groups, n, m = coefficients.shape[0], out.shape[0], coefficients.shape[1]
-    tiled = n_groups - n_groups % TILE if 1 <= m <= 2 else 0  # groups that go four by four
+    tiled = n_groups - n_groups % TILE if 1 <= m <= TILE else 0  # groups that go four by four
     first, count = _group_rows(rows, groups, n_groups)
     folded = np.empty((TILE, CHUNK))
     z, num, den = np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK)
@@ -130,8 +135,8 @@ def every_row_affine(degrees, rows, groups, aggregation, coefficients, constants
                                folded[2, :size])
             d3 = _group_degree(degrees, rows, groups, aggregation, g + 3, first[g + 3], count[g + 3], lo, hi,
                                folded[3, :size])
-            _four_groups(d0, d1, d2, d3, coefficients, constants, g, inputs[0, lo:hi], inputs[m - 1, lo:hi],
-                         num[:size], den[:size])
+            _four_groups(d0, d1, d2, d3, coefficients, constants, g, inputs[0, lo:hi], inputs[min(1, m - 1), lo:hi],
+                         inputs[min(2, m - 1), lo:hi], inputs[min(3, m - 1), lo:hi], num[:size], den[:size])
         for g in range(tiled, n_groups):
             d = _group_degree(degrees, rows, groups, aggregation, g, first[g], count[g], lo, hi, folded[0, :size])
             zg = z[:size]  # z = ((c₀ + c₁ x₁) + c₂ x₂) + …, its last term added with the sums

@@ -27,7 +27,7 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
 from fuzzynav.fuzzy.engine.implied import max_min, max_product, sum_min
-from fuzzynav.fuzzy.engine.norms import snorm_into, tnorm_into
+from fuzzynav.fuzzy.engine.norms import conjoin_into, snorm_into, tnorm_into
 from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
@@ -49,11 +49,21 @@ def _left_deep(program, first, end):
 
 
 @jit
+def _conjunctions(program, i, end):
+    """How many of the next three propositions of a left-deep ``program[i:end]`` join by AND in a row."""
+    more = 0
+    while more < 3 and i + 2 * more < end and program[i + 2 * more + 1] == AND:
+        more += 1
+    return more
+
+
+@jit
 def rule_degrees(table, program, starts, weights, conjunction, disjunction, out):
     """``out[r]`` = ``weights[r]`` × the antecedent of rule r on every row; rule r's program is
     ``program[starts[r]:starts[r + 1]]`` over the propositions' degrees ``table`` (L, N). Rows go
     by chunks that stay in cache. A left-deep program (p q OP r OP …, every conjunction of
-    propositions) is folded in ``out[r]`` (its first proposition, each operator in place, the
+    propositions) is folded in ``out[r]`` (its first proposition, each operator in place —
+    up to three conjunctions in a row in one loop: :func:`~.norms.conjoin_into` — then the
     weight); others run on a stack. Either way the same operations in the same order."""
     n, depth = table.shape[1], 1
     for r in range(starts.shape[0] - 1):
@@ -65,11 +75,19 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
             s, e, weight, degree = starts[r], starts[r + 1], weights[r], out[r, lo:lo + size]
             if _left_deep(program, s, e):
                 value = table[program[s], lo:lo + size]  # the first operator writes degree: no copy
-                for i in range(s + 1, e, 2):
-                    if program[i + 1] == AND:
+                i = s + 1
+                while i < e:
+                    more = _conjunctions(program, i, e)
+                    if more >= 2 and conjoin_into(conjunction, value, table[program[i], lo:lo + size],
+                                                  table[program[i + 2], lo:lo + size],
+                                                  table[program[i + 2 * more - 2], lo:lo + size], more, degree):
+                        i += 2 * more
+                    elif program[i + 1] == AND:
                         tnorm_into(conjunction, value, table[program[i], lo:lo + size], degree)
+                        i += 2
                     else:
                         snorm_into(disjunction, value, table[program[i], lo:lo + size], degree)
+                        i += 2
                     value = degree
                 if e == s + 1:
                     degree[:] = value

@@ -92,6 +92,24 @@ def tnorm_into(kind, a, b, out):
 
 
 @jit
+def conjoin_into(kind, a, b, c, d, more, out):
+    """out ← T(T(T(a, b), c), d) (``more`` = 3) or T(T(a, b), c) (``more`` = 2) in one loop, for the
+    product and the minimum: the bits of two or three :func:`tnorm_into`, with half or a third of
+    their memory traffic. Returns whether it did (False, nothing written, for another T-norm)."""
+    if kind == 0:
+        for i in range(out.shape[0]):
+            v = tnorm(0, tnorm(0, a[i], b[i]), c[i])
+            out[i] = tnorm(0, v, d[i]) if more == 3 else v
+    elif kind == 5:
+        for i in range(out.shape[0]):
+            v = tnorm(5, tnorm(5, a[i], b[i]), c[i])
+            out[i] = tnorm(5, v, d[i]) if more == 3 else v
+    else:
+        return False
+    return True
+
+
+@jit
 def snorm_into(kind, a, b, out):
     """out ← S(a, b) elementwise (``out`` may be ``a``), one loop per S-norm (see :func:`tnorm_into`)."""
     if kind == 0:
