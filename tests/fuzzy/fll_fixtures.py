@@ -175,8 +175,28 @@ ACTIVATIONS = ("First 2 0.1", "Last 2 0.0", "Highest 2", "Lowest 2", "Proportion
 TSUKAMOTO += _block("r", "none", ["if x is small then y is r", "if x is medium then y is s",
                                   "if x is large then y is zz", "if x is medium then y is c with 0.5"])
 
+_GRID_TERMS = ("  term: lo Triangle -0.5 0.0 0.5\n  term: mid Trapezoid 0.0 0.4 0.6 1.0\n"
+               "  term: hi Ramp 0.5 1.0\n")
+_GRID_RULES = ["if x is lo and y is lo then f is t0", "if x is lo and y is mid then f is t1",
+               "if x is lo and y is hi then f is t2", "if x is mid and y is lo then f is t3",
+               "if x is mid and y is mid then f is t4 with 0.5", "if x is mid and y is hi then f is t5",
+               "if x is hi and y is lo then f is t6", "if x is hi and y is mid then f is t6",
+               "if x is hi and y is hi then f is t7", "if x is very hi and y is not lo then f is t8",
+               "if x is lo then f is t9", "if x is lo and y is lo and x is not hi then f is t10"]
+GRID = ("Engine: grid\n" + "".join(f"InputVariable: {v}\n  enabled: true\n  range: 0.0 1.0\n  lock-range: false\n"
+                                  + (_GRID_TERMS if v != "u" else "") for v in "xyu")
+        + "OutputVariable: f\n  enabled: true\n  range: -10.0 10.0\n  lock-range: false\n  aggregation: none\n"
+        "  defuzzifier: WeightedAverage TakagiSugeno\n  default: nan\n  lock-previous: false\n"
+        + "".join(f"  term: t{k} Linear {0.5 * k - 2.0} {1.0 - 0.3 * k} {0.25 * k} {k % 3 - 1.0}\n" for k in range(11))
+        + "RuleBlock: rules\n  enabled: true\n  conjunction: AlgebraicProduct\n  disjunction: AlgebraicSum\n"
+        "  implication: none\n  activation: General\n" + "".join(f"  rule: {r}\n" for r in _GRID_RULES))
+"""An ANFIS-like grid (MATLAB's genfis): rules "x is A and y is B" with the product, each alone in
+its output term group (the fused kernel leaves their degree to the output, ``pack.rule_skipped``),
+and among them a weighted rule, two rules on one term, hedges, a rule of one proposition and one
+of three (computed by the rule pass)."""
+
 ENGINES = {"mamdani": _mamdani(), "mamdani-locked": _mamdani(lock="true"), "takagi-sugeno": TAKAGI_SUGENO,
-           "tsukamoto": TSUKAMOTO, "chained": CHAINED}
+           "tsukamoto": TSUKAMOTO, "chained": CHAINED, "grid": GRID}
 ENGINES.update({f"tnorm-{t}": _mamdani(conjunction=t, implication=t) for t in TNORMS})
 ENGINES.update({f"snorm-{s}": _mamdani(disjunction=s, aggregation=s) for s in SNORMS})
 ENGINES.update({f"defuzzifier-{d.split()[0]}": _mamdani(defuzzifier=d) for d in DEFUZZIFIERS})

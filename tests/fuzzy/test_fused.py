@@ -99,3 +99,18 @@ def test_the_flat_buffers_give_back_every_packed_array(name):
     for field, original, unpacked in zip(packed._fields, packed, _unpack(*flatten(packed)), strict=True):
         assert unpacked.dtype == original.dtype and unpacked.shape == original.shape, field
         np.testing.assert_array_equal(unpacked, original, err_msg=field)
+
+
+def test_rules_of_two_propositions_alone_in_their_term_group_are_left_to_the_output():
+    """On the grid fixture, the rules p and q of weight 1 whose output term has no other activation
+    are not computed by the rule pass (their output multiplies p q where it reads it); the weighted
+    rule, the two rules on one term and the rule of three propositions are, and the rule of one
+    proposition reads it in place. The outputs are the NumPy path's bits
+    (test_fused_kernel_gives_the_bits_of_the_numpy_path["grid"]); here, that the kernel did defer."""
+    engine = from_fll_engine(ENGINES["grid"])
+    assert engine.fallback is None
+    packed = engine._packed[1]
+    deferred = {r for r in range(len(packed.rule_weight)) if packed.rule_skipped[r]}
+    assert deferred == {0, 1, 2, 3, 5, 8, 9, 10}  # 10: one proposition, aliased
+    assert int((packed.act_partner >= 0).sum()) == 7
+    assert_fused_matches_numpy_path(engine, _inputs(engine))

@@ -7,12 +7,15 @@ and the sums num += g z, den += g, group after group; then num / den (times den 
 sum). With one to four inputs (most of MATLAB's ANFIS systems), four groups go through one loop,
 their values computed in it: each row's sums are read and written once for the four instead of
 once for each, and z is never stored — the same operations in the same order (so the same bits),
-a fraction of the memory traffic. Other groups go one loop each.
+a fraction of the memory traffic. Other groups go one loop each. A group whose one activation is
+a rule p and q left to its output (:mod:`.pack`, MATLAB's ANFIS grids) multiplies p q in that
+loop: the rule's degree is never stored either.
 """
 
 from __future__ import annotations
 
 import numpy as np
+from numba import literally
 
 from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.jit import jit
@@ -45,30 +48,40 @@ def _linear_start(z, constant, c, x):
 
 
 @jit
-def _group_rows(rows, groups, n_groups):
-    """Per group: its first activation's row of degrees and its number of activations."""
-    first, count = np.zeros(n_groups, dtype=np.int64), np.zeros(n_groups, dtype=np.int64)
+def _group_rows(rows, partners, groups, n_groups):
+    """Per group: its first activation's row of degrees and partner, and its number of activations."""
+    first, partner, count = (np.zeros(n_groups, dtype=np.int64), np.zeros(n_groups, dtype=np.int64),
+                             np.zeros(n_groups, dtype=np.int64))
     for a in range(rows.shape[0]):
         g = groups[a]
         if count[g] == 0:
-            first[g] = rows[a]
+            first[g], partner[g] = rows[a], partners[a]
         count[g] += 1
-    return first, count
+    return first, partner, count
 
 
 @jit
-def _group_degree(degrees, rows, groups, aggregation, g, first, count, lo, hi, folded):
-    """Group g's degree on rows [lo, hi): its one activation's row of ``degrees`` (no copy), or its
-    activations folded in order with the S-norm ``aggregation`` into ``folded``."""
+def _product(a, b, out):
+    """out = a b: a deferred rule's degree (:mod:`.pack`), as its T-norm would have written it."""
+    for k in range(out.shape[0]):
+        out[k] = a[k] * b[k]
+
+
+@jit
+def _group_degree(degrees, rows, groups, aggregation, g, first, partner, count, lo, hi, folded, ones):
+    """Group g's degree on rows [lo, hi) as two factors (no copy): its one activation's row of
+    ``degrees`` and the row ``partner`` where it has one (a deferred rule), else ``ones`` (× 1
+    changes no bit); or its activations folded in order with the S-norm ``aggregation`` into
+    ``folded``, and ``ones``."""
     if count == 1:
-        return degrees[first, lo:hi]
+        return degrees[first, lo:hi], degrees[partner, lo:hi] if partner >= 0 else ones
     seen = 0
     for a in range(rows.shape[0]):
         if groups[a] == g:
             if seen > 0:  # the second activation folds the first into ``folded``
                 snorm_into(aggregation, degrees[first, lo:hi] if seen == 1 else folded, degrees[rows[a], lo:hi], folded)
             seen += 1
-    return folded
+    return folded, ones
 
 
 @jit
@@ -92,34 +105,47 @@ def _value(c, m, u, v, t, r):
 
 
 @jit
-def _four_groups(d0, d1, d2, d3, coefficients, constants, g, x0, x1, x2, x3, num, den):
-    """num += g z, den += g for the groups g … g + 3 (degrees d0 … d3) in order, each z
-    (:func:`_value`) of the m = 1 to 4 inputs computed in the loop."""
+def _degree(d, f, paired, k):
+    """d[k] f[k], or d[k] where not ``paired`` (the loop is compiled once for each: no reading f)."""
+    return d[k] * f[k] if paired else d[k]
+
+
+@jit
+def _four_groups(paired, tile, coefficients, constants, g, x, num, den):
+    """num += d z, den += d for the groups g … g + 3 in order, of degrees d = d0 f0 … d3 f3
+    (``tile`` = (d0, f0, …, d3, f3), :func:`_group_degree`'s factors; d0 … d3 alone unless
+    ``paired``) and values z (:func:`_value`) of the m = 1 to 4 inputs ``x``, both computed in the loop."""
+    literally(paired)  # compiled once for each value: the loop not paired reads no f
+    d0, f0, d1, f1, d2, f2, d3, f3 = tile
+    x0, x1, x2, x3 = x
     m = coefficients.shape[1]  # the coefficients as scalars before the loop (the arrays might alias num, den)
     a, b, c, e = (_terms(coefficients, constants, g), _terms(coefficients, constants, g + 1),
                   _terms(coefficients, constants, g + 2), _terms(coefficients, constants, g + 3))
     for k in range(num.shape[0]):
         u, v, t, r = x0[k], x1[k], x2[k], x3[k]
         s, w = num[k], den[k]
-        s = s + d0[k] * _value(a, m, u, v, t, r)
-        w = w + d0[k]
-        s = s + d1[k] * _value(b, m, u, v, t, r)
-        w = w + d1[k]
-        s = s + d2[k] * _value(c, m, u, v, t, r)
-        w = w + d2[k]
-        s = s + d3[k] * _value(e, m, u, v, t, r)
-        num[k], den[k] = s, w + d3[k]
+        g0, g1, g2, g3 = _degree(d0, f0, paired, k), _degree(d1, f1, paired, k), _degree(d2, f2, paired, k), \
+            _degree(d3, f3, paired, k)
+        s = s + g0 * _value(a, m, u, v, t, r)
+        w = w + g0
+        s = s + g1 * _value(b, m, u, v, t, r)
+        w = w + g1
+        s = s + g2 * _value(c, m, u, v, t, r)
+        w = w + g2
+        s = s + g3 * _value(e, m, u, v, t, r)
+        num[k], den[k] = s, w + g3
 
 
 @jit
-def every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
+def every_row_affine(degrees, rows, partners, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
     """``out``: Σ g z / Σ g (× Σ g for a weighted sum; NaN without groups) on every row, activation
-    a of degree ``degrees[rows[a]]`` in group ``groups[a]``, group g's value z the constant
+    a of degree ``degrees[rows[a]]`` (times ``degrees[partners[a]]`` where that is not −1: a
+    deferred rule, alone in its group) in group ``groups[a]``, group g's value z the constant
     ``constants[g]`` plus ``coefficients[g]`` · the ``inputs`` (n_inputs, N) (module docstring)."""
     n_groups, n, m = coefficients.shape[0], out.shape[0], coefficients.shape[1]
     tiled = n_groups - n_groups % TILE if 1 <= m <= TILE else 0  # groups that go four by four
-    first, count = _group_rows(rows, groups, n_groups)
-    folded = np.empty((TILE, CHUNK))
+    first, partner, count = _group_rows(rows, partners, groups, n_groups)
+    folded, ones = np.empty((TILE, CHUNK)), np.ones(CHUNK)
     z, num, den = np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK)
     for lo in range(0, n, CHUNK):
         hi = min(n, lo + CHUNK)
@@ -127,18 +153,27 @@ def every_row_affine(degrees, rows, groups, aggregation, coefficients, constants
         num[:size] = 0.0
         den[:size] = 0.0
         for g in range(0, tiled, TILE):
-            d0 = _group_degree(degrees, rows, groups, aggregation, g, first[g], count[g], lo, hi,
-                               folded[0, :size])
-            d1 = _group_degree(degrees, rows, groups, aggregation, g + 1, first[g + 1], count[g + 1], lo, hi,
-                               folded[1, :size])
-            d2 = _group_degree(degrees, rows, groups, aggregation, g + 2, first[g + 2], count[g + 2], lo, hi,
-                               folded[2, :size])
-            d3 = _group_degree(degrees, rows, groups, aggregation, g + 3, first[g + 3], count[g + 3], lo, hi,
-                               folded[3, :size])
-            _four_groups(d0, d1, d2, d3, coefficients, constants, g, inputs[0, lo:hi], inputs[min(1, m - 1), lo:hi],
-                         inputs[min(2, m - 1), lo:hi], inputs[min(3, m - 1), lo:hi], num[:size], den[:size])
+            d0, f0 = _group_degree(degrees, rows, groups, aggregation, g, first[g], partner[g], count[g], lo, hi,
+                                   folded[0, :size], ones[:size])
+            d1, f1 = _group_degree(degrees, rows, groups, aggregation, g + 1, first[g + 1], partner[g + 1],
+                                   count[g + 1], lo, hi, folded[1, :size], ones[:size])
+            d2, f2 = _group_degree(degrees, rows, groups, aggregation, g + 2, first[g + 2], partner[g + 2],
+                                   count[g + 2], lo, hi, folded[2, :size], ones[:size])
+            d3, f3 = _group_degree(degrees, rows, groups, aggregation, g + 3, first[g + 3], partner[g + 3],
+                                   count[g + 3], lo, hi, folded[3, :size], ones[:size])
+            tile = (d0, f0, d1, f1, d2, f2, d3, f3)
+            x = (inputs[0, lo:hi], inputs[min(1, m - 1), lo:hi], inputs[min(2, m - 1), lo:hi],
+                 inputs[min(3, m - 1), lo:hi])
+            if max(partner[g], partner[g + 1], partner[g + 2], partner[g + 3]) >= 0:
+                _four_groups(True, tile, coefficients, constants, g, x, num[:size], den[:size])
+            else:
+                _four_groups(False, tile, coefficients, constants, g, x, num[:size], den[:size])
         for g in range(tiled, n_groups):
-            d = _group_degree(degrees, rows, groups, aggregation, g, first[g], count[g], lo, hi, folded[0, :size])
+            d, f = _group_degree(degrees, rows, groups, aggregation, g, first[g], partner[g], count[g], lo, hi,
+                                 folded[0, :size], ones[:size])
+            if partner[g] >= 0 and count[g] == 1:
+                _product(d, f, folded[1, :size])
+                d = folded[1, :size]
             zg = z[:size]  # z = ((c₀ + c₁ x₁) + c₂ x₂) + …, its last term added with the sums
             if m <= 1:
                 zg[:] = constants[g]

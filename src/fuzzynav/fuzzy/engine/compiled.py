@@ -225,7 +225,8 @@ def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation
     """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
     cache: a weighted output whose terms are all constant or linear."""
     if not masked:
-        every_row_affine(degrees, rows, groups, aggregation, coefficients, constants, inputs, weighted_sum, out)
+        every_row_affine(degrees, rows, np.full(rows.shape[0], -1), groups, aggregation, coefficients, constants,
+                         inputs, weighted_sum, out)
         return
     n_groups, n = coefficients.shape[0], out.shape[0]
     degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)

@@ -7,9 +7,11 @@ around several kernels: the input values (clipped where
 ``lock-range``); every proposition's degree (:func:`~.term_columns.term_column`, then its hedges);
 each block's rules (:func:`~.compiled.rule_degrees`: postfix antecedents with the block's norms,
 times the weights; a block reading an output term runs rule by rule, that degree accumulated
-from the conclusions before, as fuzzylite does); each conclusion's degree (hedges carried from
-one conclusion to the next); then each output — Mamdani by :func:`~.compiled.integral`, weighted
-by :func:`~.compiled.weighted_affine` — and its ``lock-previous`` / ``default`` / ``lock-range``
+from the conclusions before, as fuzzylite does; a rule p and q alone in its output's term group
+is left to that output, which multiplies p q where it reads it: ``pack.rule_skipped``); each
+conclusion's degree (hedges carried from one conclusion to the next); then each output — Mamdani
+by :func:`~.compiled.integral`, weighted by :func:`~.affine.every_row_affine` — and its
+``lock-previous`` / ``default`` / ``lock-range``
 (:func:`~.compiled.finish`). The same operations in the same order as that path, so the same
 bits (the NumPy path stays for what :func:`~.pack.pack` refuses; the tests compare the two on the
 test engines and on pyfuzzylite's examples).
@@ -20,13 +22,13 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy.engine import compiled
+from fuzzynav.fuzzy.engine.affine import every_row_affine
 from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Flat, Packed
 from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
 from fuzzynav.jit import jit
 
 ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
-_EVERY_ROW = np.ones((0, 0), dtype=np.bool_)  # the "triggered" mask weighted_affine does not read (General)
 LO, LITERAL, WEIGHT, CONCLUSION_ROW, OUTPUT, OUTPUT_LIMITS = (
     Packed._fields.index(name) for name in ("lo", "literal", "rule_weight", "conclusion_row", "output", "output_limits"))
 
@@ -36,7 +38,7 @@ def evaluate(flat: Flat, table: np.ndarray, X: np.ndarray) -> np.ndarray:
     (:func:`~.pack.flatten`); ``table`` (L, N) holds the degrees of the propositions
     :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
     out = np.empty((X.shape[0], flat.layout[OUTPUT, 2]))
-    run(np.ascontiguousarray(X, dtype=float), table, *flat, _EVERY_ROW, out)
+    run(np.ascontiguousarray(X, dtype=float), table, *flat, out)
     return out
 
 
@@ -60,11 +62,12 @@ def _unpack(ints, floats, bools, layout):
     i, f, b, a = ints, floats, bools, layout
     return (_field(b, a, 0), _field(f, a, 1), _field(f, a, 2), _field2(i, a, 3), _field(i, a, 4), _field(i, a, 5),
             _field(f, a, 6), _field(f, a, 7), _field2(i, a, 8), _field(i, a, 9), _field(i, a, 10), _field(i, a, 11),
-            _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16), _field(b, a, 17),
-            _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21), _field2(f, a, 22), _field(i, a, 23),
-            _field(i, a, 24), _field(i, a, 25), _field(b, a, 26), _field(i, a, 27), _field(i, a, 28), _field(i, a, 29),
-            _field(i, a, 30), _field(f, a, 31), _field(i, a, 32), _field(f, a, 33), _field(i, a, 34), _field2(i, a, 35),
-            _field2(f, a, 36), _field(f, a, 37))
+            _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16),
+            _field(b, a, 17), _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21),
+            _field2(f, a, 22), _field(i, a, 23), _field(i, a, 24), _field(i, a, 25), _field(b, a, 26),
+            _field(i, a, 27), _field(i, a, 28), _field(i, a, 29), _field(i, a, 30), _field(i, a, 31),
+            _field(f, a, 32), _field(i, a, 33), _field(f, a, 34), _field(i, a, 35), _field2(i, a, 36),
+            _field2(f, a, 37), _field(f, a, 38))
 
 
 @jit
@@ -126,7 +129,7 @@ def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_
 
 
 @jit
-def run(X, table, ints, floats, bools, layout, every_row, out):
+def run(X, table, ints, floats, bools, layout, out):
     """Outputs ``out`` (N, K) for the inputs X of the engine packed as (ints, floats, bools,
     layout) (:func:`~.pack.flatten`; module docstring): :func:`_rows` by blocks of rows whose
     arrays stay in cache (whole batches for small engines, as each block costs its allocations),
@@ -147,7 +150,7 @@ def run(X, table, ints, floats, bools, layout, every_row, out):
             if literal[lit, 0] == NUMPY:
                 work[lit] = table[lit, r0:r1]
         y = np.empty((output.shape[0], r1 - r0))
-        _rows(X[r0:r1], work, ints, floats, bools, layout, every_row, y)
+        _rows(X[r0:r1], work, ints, floats, bools, layout, y)
         raw[:, r0:r1] = y
     for k in range(output.shape[0]):
         if output[k, 0] != NAN_OUTPUT:
@@ -157,14 +160,15 @@ def run(X, table, ints, floats, bools, layout, every_row, out):
 
 
 @jit
-def _rows(X, work, ints, floats, bools, layout, every_row, raw):
+def _rows(X, work, ints, floats, bools, layout, raw):
     """``raw[k]``: output k before its ``lock-previous`` / ``default`` / ``lock-range``, on the
     rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
-    the rules' values (the activations' rows index both: an aliased rule's is its proposition's)."""
+    the rules' values (the activations' rows index both: an aliased or deferred rule's is its
+    proposition's, a deferred one's partner its second)."""
     (lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start, chained_conclusions,
-     hedges, block, block_chained, program, rule_start, rule_weight, rule_aliased, rule_conclusions, conclusion_hedges,
-     conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, unit_start, unit_term,
-     unit_implication, shape_start, shapes, points_start, points, support_start, support, coefficients,
+     hedges, block, block_chained, program, rule_start, rule_weight, rule_skipped, rule_conclusions, conclusion_hedges,
+     conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, act_partner, unit_start,
+     unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support, coefficients,
      constants) = _unpack(ints, floats, bools, layout)
     n = X.shape[0]
     table, value = work[:literal.shape[0]], work[literal.shape[0]:]
@@ -181,12 +185,12 @@ def _rows(X, work, ints, floats, bools, layout, every_row, raw):
                             rule_conclusions[r0], chained[j, 1], table[lit])
                 _hedges(table[lit], hedges, literal[lit, 3], literal[lit, 4])
             a = r0
-            while a < r1:  # the runs of rules not aliased
-                if rule_aliased[a]:
+            while a < r1:  # the runs of rules computed here (not aliased nor deferred to their output)
+                if rule_skipped[a]:
                     a += 1
                     continue
                 e = a + 1
-                while e < r1 and not rule_aliased[e]:
+                while e < r1 and not rule_skipped[e]:
                     e += 1
                 compiled.rule_degrees(table, program, rule_start[a:e + 1], rule_weight[a:e], conjunction, disjunction,
                                       value[a:e])
@@ -204,9 +208,8 @@ def _rows(X, work, ints, floats, bools, layout, every_row, raw):
                               support[support_start[k]:support_start[k + 1]], points[points_start[k]:points_start[k + 1]],
                               output[k, 1], output[k, 2], y)
         elif kind == WEIGHTED:
-            compiled.weighted_affine(work, acts, units, act_opens[act_start[k]:act_start[k + 1]], every_row, False,
-                                     output[k, 1], coefficients[first:end], constants[first:end], inputs,
-                                     output[k, 3] != 0, y)
+            every_row_affine(work, acts, act_partner[act_start[k]:act_start[k + 1]], units, output[k, 1],
+                             coefficients[first:end], constants[first:end], inputs, output[k, 3] != 0, y)
         else:
             y[:] = np.nan
         raw[k] = y

@@ -47,7 +47,8 @@ class Packed(NamedTuple):
     program: np.ndarray  # per rule: postfix antecedent (compiled.AND / OR, or a proposition)
     rule_start: np.ndarray
     rule_weight: np.ndarray
-    rule_aliased: np.ndarray  # a rule whose degree is its one proposition's row (not computed)
+    rule_skipped: np.ndarray  # a rule the rule pass does not compute: its degree its one proposition's row
+    # (aliased) or the product of two, computed where its output reads it (deferred)
     rule_conclusions: np.ndarray  # start of the rule's conclusions
     conclusion_hedges: np.ndarray  # (C + 1): start of each conclusion's hedges
     conclusion_row: np.ndarray  # (C,): its row of the rules' values: its rule's (r < R), or its own once hedged
@@ -58,6 +59,7 @@ class Packed(NamedTuple):
     act_conclusion: np.ndarray
     act_unit: np.ndarray
     act_opens: np.ndarray
+    act_partner: np.ndarray  # a deferred rule's second proposition (its first is the activation's row), else −1
     unit_start: np.ndarray  # per output: integral units (term, implication) or weighted groups
     unit_term: np.ndarray
     unit_implication: np.ndarray
@@ -149,9 +151,14 @@ def pack(engine) -> tuple[list, Packed] | str:
                for r in range(len(weights))]
     degree_row = [program[rule_start[r]] if aliased[r] else len(literals) + conclusion_row[c]
                   for r in range(len(weights)) for c in range(rule_conclusions[r], rule_conclusions[r + 1])]
-    packed_outputs = _pack_outputs(engine, conclusions, degree_row)
+    products = {rule_conclusions[r]: (program[rule_start[r]], program[rule_start[r] + 1]) for first, end, conjunction, _
+                in blocks for r in range(first, end) if conjunction == compiled.PRODUCT
+                and _product_of_two(program, rule_start, weights, rule_conclusions, conclusions, chained, r)}
+    packed_outputs = _pack_outputs(engine, conclusions, degree_row, products)
     if isinstance(packed_outputs, str):
         return packed_outputs
+    *packed_outputs, deferred = packed_outputs
+    skipped = [aliased[r] or rule_conclusions[r] in deferred for r in range(len(weights))]
     term_list = [packed for _, packed in terms.values()]
     block_chained = [any(rows[program[i]][0] == CHAINED for i in range(rule_start[first], rule_start[end])
                          if program[i] >= 0) for first, end, *_ in blocks]
@@ -163,7 +170,7 @@ def pack(engine) -> tuple[list, Packed] | str:
         np.array([p for t in term_list for p in t[1]], dtype=float),
         _ints(chained).reshape(-1, 2), _ints(chained_start), _ints(chained_conclusions), _ints(hedges),
         _ints(blocks).reshape(-1, 4), np.array(block_chained, dtype=np.bool_), _ints(program), _ints(rule_start),
-        np.array(weights, dtype=float), np.array(aliased, dtype=np.bool_), _ints(rule_conclusions),
+        np.array(weights, dtype=float), np.array(skipped, dtype=np.bool_), _ints(rule_conclusions),
         _ints(conclusion_hedges), _ints(conclusion_row),
         *packed_outputs)
 
@@ -177,6 +184,17 @@ def _aliased(program, rule_start, weights, rule_conclusions, conclusions, rows, 
     return end - first == 1 and weights[r] == 1.0 and not hedged and not chained and rows[program[first]][0] != CHAINED
 
 
+def _product_of_two(program, rule_start, weights, rule_conclusions, conclusions, chained, r) -> bool:
+    """Whether rule r (of a block whose conjunction is the product) is p and q of weight 1 with one
+    conclusion, not hedged, and no chained proposition in the engine: its degree p q can then be
+    computed where its output reads it (:func:`_pack_outputs` defers it when its term group has no
+    other activation), the same bits (× 1 changes none)."""
+    first, end = rule_start[r], rule_start[r + 1]
+    mine = conclusions[rule_conclusions[r]:rule_conclusions[r + 1]]
+    return (end - first == 3 and program[end - 1] == compiled.AND and weights[r] == 1.0 and len(mine) == 1
+            and not mine[0][1].hedges and not chained)
+
+
 def _emit(node, literals: dict, program: list) -> None:
     if isinstance(node, Proposition):
         program.append(literals.setdefault(node, len(literals)))
@@ -186,10 +204,13 @@ def _emit(node, literals: dict, program: list) -> None:
         program.append(compiled.AND if node.name == "and" else compiled.OR)
 
 
-def _pack_outputs(engine, conclusions: list, degree_row: list) -> tuple | str:
-    """The output part of :class:`Packed` (from ``output`` on), or why not; conclusion c's degrees
-    are row ``degree_row[c]`` of the propositions' then the rules' values."""
+def _pack_outputs(engine, conclusions: list, degree_row: list, products: dict) -> tuple | str:
+    """The output part of :class:`Packed` (from ``output`` on) then the conclusions deferred, or why
+    not; conclusion c's degrees are row ``degree_row[c]`` of the propositions' then the rules'
+    values, or — ``products[c]`` = (p, q), :func:`_product_of_two` — the product of propositions p
+    and q, computed by a weighted output where c is its term group's only activation."""
     rows, limits, act_start, act_conclusion, act_unit, act_opens = [], [], [0], [], [], []
+    act_partner, deferred = [], []
     unit_start, unit_term, unit_implication = [0], [], []
     shape_start, shapes, points_start, points, support_start, support = [0], [], [0], [], [0], []
     coefficients, constants = [], []
@@ -223,7 +244,10 @@ def _pack_outputs(engine, conclusions: list, degree_row: list) -> tuple | str:
         else:
             acts = []
         act_opens += [a == units.index(u) for a, u in enumerate(units)]
-        act_conclusion += [degree_row[c] for c, *_ in acts]
+        alone = [kind == WEIGHTED and c in products and units.count(u) == 1 for (c, *_), u in zip(acts, units)]
+        act_conclusion += [products[c][0] if a else degree_row[c] for (c, *_), a in zip(acts, alone)]
+        act_partner += [products[c][1] if a else -1 for (c, *_), a in zip(acts, alone)]
+        deferred += [c for (c, *_), a in zip(acts, alone) if a]
         act_unit += units
         act_start.append(len(act_conclusion))
         unit_start.append(unit_start[-1] + n_units)
@@ -239,8 +263,8 @@ def _pack_outputs(engine, conclusions: list, degree_row: list) -> tuple | str:
                      d is not None and d.kind == "WeightedSum", var.lock_previous, var.lock_range))
         limits.append((var.default, var.minimum, var.maximum))
     return (_ints(rows).reshape(-1, 6), np.array(limits, dtype=float), _ints(act_start), _ints(act_conclusion),
-            _ints(act_unit), np.array(act_opens, dtype=np.bool_), _ints(unit_start), _ints(unit_term),
-            _ints(unit_implication), _ints(shape_start), np.concatenate([np.empty(0), *shapes]),
+            _ints(act_unit), np.array(act_opens, dtype=np.bool_), _ints(act_partner), _ints(unit_start),
+            _ints(unit_term), _ints(unit_implication), _ints(shape_start), np.concatenate([np.empty(0), *shapes]),
             _ints(points_start), np.concatenate([np.empty(0), *points]), _ints(support_start),
             np.concatenate([np.empty((0, 2), dtype=np.int64), *support]).astype(np.int64),
-            np.concatenate([np.empty((0, n_in)), *coefficients]), np.concatenate([np.empty(0), *constants]))
+            np.concatenate([np.empty((0, n_in)), *coefficients]), np.concatenate([np.empty(0), *constants]), deferred)
