@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 from numba import literally
 
-from fuzzynav.fuzzy.engine.norms import snorm_into
+from fuzzynav.fuzzy.engine.norms import PRODUCT, snorm_into, tnorm_into
 from fuzzynav.jit import jit
 
 CHUNK = 1024  # rows a chunked kernel (rule degrees, constant / linear outputs) takes at a time
@@ -58,13 +58,6 @@ def _group_rows(rows, partners, groups, n_groups):
             first[g], partner[g] = rows[a], partners[a]
         count[g] += 1
     return first, partner, count
-
-
-@jit
-def _product(a, b, out):
-    """out = a b: a deferred rule's degree (:mod:`.pack`), as its T-norm would have written it."""
-    for k in range(out.shape[0]):
-        out[k] = a[k] * b[k]
 
 
 @jit
@@ -172,7 +165,7 @@ def every_row_affine(degrees, rows, partners, groups, aggregation, coefficients,
             d, f = _group_degree(degrees, rows, groups, aggregation, g, first[g], partner[g], count[g], lo, hi,
                                  folded[0, :size], ones[:size])
             if partner[g] >= 0 and count[g] == 1:
-                _product(d, f, folded[1, :size])
+                tnorm_into(PRODUCT, d, f, folded[1, :size])  # the deferred rule's degree, as the rule pass writes it
                 d = folded[1, :size]
             zg = z[:size]  # z = ((c₀ + c₁ x₁) + c₂ x₂) + …, its last term added with the sums
             if m <= 1:

@@ -27,14 +27,12 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
 from fuzzynav.fuzzy.engine.implied import max_min, max_product, sum_min
-from fuzzynav.fuzzy.engine.norms import conjoin_into, snorm_into, tnorm_into
+from fuzzynav.fuzzy.engine.norms import (ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into,
+                                         tnorm_into)
 from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
-from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
 
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
-MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
-MAXIMUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")
 
 
 @jit

@@ -9,7 +9,11 @@ each loop vectorises. Used by the rule, aggregation and defuzzification kernels 
 
 from __future__ import annotations
 
+from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.jit import jit
+
+MINIMUM, PRODUCT = TNORMS.index("Minimum"), TNORMS.index("AlgebraicProduct")
+MAXIMUM, ALGEBRAIC_SUM = SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")
 
 
 @jit
@@ -96,14 +100,14 @@ def conjoin_into(kind, a, b, c, d, more, out):
     """out ← T(T(T(a, b), c), d) (``more`` = 3) or T(T(a, b), c) (``more`` = 2) in one loop, for the
     product and the minimum: the bits of two or three :func:`tnorm_into`, with half or a third of
     their memory traffic. Returns whether it did (False, nothing written, for another T-norm)."""
-    if kind == 0:
+    if kind == PRODUCT:
         for i in range(out.shape[0]):
-            v = tnorm(0, tnorm(0, a[i], b[i]), c[i])
-            out[i] = tnorm(0, v, d[i]) if more == 3 else v
-    elif kind == 5:
+            v = tnorm(PRODUCT, tnorm(PRODUCT, a[i], b[i]), c[i])
+            out[i] = tnorm(PRODUCT, v, d[i]) if more == 3 else v
+    elif kind == MINIMUM:
         for i in range(out.shape[0]):
-            v = tnorm(5, tnorm(5, a[i], b[i]), c[i])
-            out[i] = tnorm(5, v, d[i]) if more == 3 else v
+            v = tnorm(MINIMUM, tnorm(MINIMUM, a[i], b[i]), c[i])
+            out[i] = tnorm(MINIMUM, v, d[i]) if more == 3 else v
     else:
         return False
     return True

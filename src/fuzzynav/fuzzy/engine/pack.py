@@ -17,6 +17,7 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine import compiled, defuzzify
 from fuzzynav.fuzzy.engine.model import Proposition
+from fuzzynav.fuzzy.engine.norms import PRODUCT
 from fuzzynav.fuzzy.engine.term_columns import HEDGE_CODES, pack_term
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -152,7 +153,7 @@ def pack(engine) -> tuple[list, Packed] | str:
     degree_row = [program[rule_start[r]] if aliased[r] else len(literals) + conclusion_row[c]
                   for r in range(len(weights)) for c in range(rule_conclusions[r], rule_conclusions[r + 1])]
     products = {rule_conclusions[r]: (program[rule_start[r]], program[rule_start[r] + 1]) for first, end, conjunction, _
-                in blocks for r in range(first, end) if conjunction == compiled.PRODUCT
+                in blocks for r in range(first, end) if conjunction == PRODUCT
                 and _product_of_two(program, rule_start, weights, rule_conclusions, conclusions, chained, r)}
     packed_outputs = _pack_outputs(engine, conclusions, degree_row, products)
     if isinstance(packed_outputs, str):
