@@ -165,9 +165,11 @@ def _exp_term(code, p, x, out):
         if power == 2.0 or power == 4.0 or power == 8.0:
             if not (usable_reciprocal(width) and _squared_bell(p, x, out, False)):
                 _squared_bell(p, x, out, True)
-        else:
+        else:  # two loops, the power's exponent stored between: faster than one (README)
             for k in range(n):
-                out[k] = 1.0 / (1.0 + exp_of(power * log_of(abs((x[k] - centre) / width))))
+                out[k] = power * log_of(abs((x[k] - centre) / width))
+            for k in range(n):
+                out[k] = 1.0 / (1.0 + exp_of(out[k]))
     else:
         slope, inflection = -p[0], p[1]
         for k in range(n):
