@@ -90,7 +90,9 @@ def _sshape(x, s, e):
     low = x <= 0.5 * (s + e)
     t = (x - (s if low else e)) / (e - s)
     q = 2.0 * (t * t)
-    return 0.0 if x <= s else ((q if low else 1.0 - q) if x < e else 1.0)
+    mu = q if low else 1.0 - q
+    mu = mu if x < e else 1.0
+    return 0.0 if x <= s else mu  # three selects in a row: LLVM vectorises them, not the nested ones
 
 
 @jit
@@ -100,7 +102,9 @@ def _zshape(x, s, e):
     low = x < 0.5 * (s + e)
     t = (x - (s if low else e)) / (e - s)
     q = 2.0 * (t * t)
-    return 1.0 if x <= s else ((1.0 - q if low else q) if x < e else 0.0)
+    mu = 1.0 - q if low else q
+    mu = mu if x < e else 0.0
+    return 1.0 if x <= s else mu  # as in _sshape
 
 
 @jit
