@@ -37,9 +37,8 @@ def evaluate(flat: Flat, table: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Outputs (N, K) for the inputs X (N, n_inputs) of the engine packed as ``flat``
     (:func:`~.pack.flatten`); ``table`` (L, N) holds the degrees of the propositions
     :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
-    out = np.empty((X.shape[0], flat.layout[OUTPUT, 2]))
-    run(np.ascontiguousarray(X, dtype=float), table, *flat, out)
-    return out
+    raw = run(np.ascontiguousarray(X, dtype=float), table, *flat)
+    return np.ascontiguousarray(raw.T)  # one output: (1, N) seen as (N, 1), no copy
 
 
 @jit
@@ -129,12 +128,12 @@ def _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_
 
 
 @jit
-def run(X, table, ints, floats, bools, layout, out):
-    """Outputs ``out`` (N, K) for the inputs X of the engine packed as (ints, floats, bools,
-    layout) (:func:`~.pack.flatten`; module docstring): :func:`_rows` by blocks of rows whose
-    arrays stay in cache (whole batches for small engines, as each block costs its allocations),
-    then each output's ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch
-    (``lock-previous`` carries a value from one row to the next)."""
+def run(X, table, ints, floats, bools, layout):
+    """The outputs (K, N) for the inputs X of the engine packed as (ints, floats, bools, layout)
+    (:func:`~.pack.flatten`; module docstring): :func:`_rows` by blocks of rows whose arrays
+    stay in cache (whole batches for small engines, as each block costs its allocations), then
+    each output's ``lock-previous`` / ``default`` / ``lock-range`` over the whole batch
+    (``lock-previous`` carries a value from one row to the next; none of them, nothing to do)."""
     lo, literal, rule_weight = _field(floats, layout, LO), _field2(ints, layout, LITERAL), _field(floats, layout, WEIGHT)
     conclusion_row, output = _field(ints, layout, CONCLUSION_ROW), _field2(ints, layout, OUTPUT)
     output_limits = _field2(floats, layout, OUTPUT_LIMITS)
@@ -149,20 +148,18 @@ def run(X, table, ints, floats, bools, layout, out):
         for lit in range(n_literals):
             if literal[lit, 0] == NUMPY:
                 work[lit] = table[lit, r0:r1]
-        y = np.empty((output.shape[0], r1 - r0))
-        _rows(X[r0:r1], work, ints, floats, bools, layout, y)
-        raw[:, r0:r1] = y
+        _rows(X[r0:r1], work, ints, floats, bools, layout, raw, r0)
     for k in range(output.shape[0]):
-        if output[k, 0] != NAN_OUTPUT:
-            compiled.finish(raw[k], output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0, output_limits[k, 1],
-                            output_limits[k, 2])
-        out[:, k] = raw[k]
+        lock_previous, default, lock_range = output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0
+        if output[k, 0] != NAN_OUTPUT and (lock_previous or default == default or lock_range):
+            compiled.finish(raw[k], lock_previous, default, lock_range, output_limits[k, 1], output_limits[k, 2])
+    return raw
 
 
 @jit
-def _rows(X, work, ints, floats, bools, layout, raw):
-    """``raw[k]``: output k before its ``lock-previous`` / ``default`` / ``lock-range``, on the
-    rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
+def _rows(X, work, ints, floats, bools, layout, raw, at):
+    """``raw[k, at:at + len(X)]``: output k before its ``lock-previous`` / ``default`` /
+    ``lock-range``, on the rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
     the rules' values (the activations' rows index both: an aliased or deferred rule's is its
     proposition's, a deferred one's partner its second)."""
     (lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start, chained_conclusions,
@@ -197,8 +194,8 @@ def _rows(X, work, ints, floats, bools, layout, raw):
                 a = e
             for r in range(r0, r1):
                 _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_row)
-    y = np.empty(n)
     for k in range(output.shape[0]):
+        y = raw[k, at:at + n]
         kind, acts, units = output[k, 0], act_conclusion[act_start[k]:act_start[k + 1]], act_unit[act_start[k]:act_start[k + 1]]
         first, end = unit_start[k], unit_start[k + 1]
         if kind == INTEGRAL:
@@ -212,4 +209,3 @@ def _rows(X, work, ints, floats, bools, layout, raw):
                              coefficients[first:end], constants[first:end], inputs, output[k, 3] != 0, y)
         else:
             y[:] = np.nan
-        raw[k] = y
