@@ -159,7 +159,7 @@ class Engine(VariableNames):
         n = X.shape[0]
         if self.fallback is None:
             literals, _, in_numpy, evaluate_fused = self._packed  # in_numpy: propositions NumPy fuzzifies
-            table = np.empty((len(literals), n))
+            table = np.empty((len(literals), n) if in_numpy else (0, 0))  # read by the kernel only if in_numpy
             if in_numpy:
                 state = _State(self, self._values(X)[1], n)
                 for row in in_numpy:

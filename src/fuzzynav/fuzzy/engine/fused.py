@@ -36,7 +36,7 @@ LO, LITERAL, WEIGHT, CONCLUSION_ROW, OUTPUT, OUTPUT_LIMITS = (
 def evaluate(flat: Flat, table: np.ndarray, X: np.ndarray) -> np.ndarray:
     """Outputs (N, K) for the inputs X (N, n_inputs) of the engine packed as ``flat``
     (:func:`~.pack.flatten`); ``table`` (L, N) holds the degrees of the propositions
-    :func:`~.pack.pack` leaves to NumPy (its other rows are filled here)."""
+    :func:`~.pack.pack` leaves to NumPy (its other rows are not read; (0, 0) when there are none)."""
     raw = run(np.ascontiguousarray(X, dtype=float), table, *flat)
     return np.ascontiguousarray(raw.T)  # one output: (1, N) seen as (N, 1), no copy
 
@@ -137,7 +137,7 @@ def run(X, table, ints, floats, bools, layout):
     lo, literal, rule_weight = _field(floats, layout, LO), _field2(ints, layout, LITERAL), _field(floats, layout, WEIGHT)
     conclusion_row, output = _field(ints, layout, CONCLUSION_ROW), _field2(ints, layout, OUTPUT)
     output_limits = _field2(floats, layout, OUTPUT_LIMITS)
-    n, n_literals = X.shape[0], table.shape[0]
+    n, n_literals = X.shape[0], literal.shape[0]
     n_values = max(rule_weight.shape[0], conclusion_row.max() + 1 if conclusion_row.shape[0] else 0)
     raw = np.empty((output.shape[0], n))
     per_row = n_literals + n_values + lo.shape[0] + output.shape[0]  # arrays of one value a row
