@@ -195,8 +195,23 @@ its output term group (the fused kernel leaves their degree to the output, ``pac
 and among them a weighted rule, two rules on one term, hedges, a rule of one proposition and one
 of three (computed by the rule pass)."""
 
+# MATLAB-like Mamdani output: six terms, five of them Bells (non-zero everywhere), concluded by two
+# blocks of Maximum aggregation, one implying by the minimum and one by the product: the kernel
+# max-combines its units four at a time (compiled._max_units)
+_BELL_OUTPUT = "".join(f"  term: b{k} Bell {0.2 * k:.1f} 0.15 {1.5 + k}\n" for k in range(5)) + \
+    "  term: tri Triangle 0.7 0.8 0.9\n"
+OVERLAPPING = ("Engine: overlapping\nInputVariable: x\n  enabled: true\n  range: 0.0 10.0\n  lock-range: false\n"
+               + INPUT_TERMS + "OutputVariable: out\n  enabled: true\n  range: 0.0 1.0\n  lock-range: false\n"
+               "  aggregation: Maximum\n  defuzzifier: Centroid 200\n  default: nan\n  lock-previous: false\n"
+               + _BELL_OUTPUT
+               + _block("min", "Minimum", ["if x is tri then out is b0", "if x is gauss then out is b1",
+                                           "if x is s then out is b2 with 0.6", "if x is bell then out is tri",
+                                           "if x is trap then out is b0"])
+               + _block("product", "AlgebraicProduct", ["if x is z then out is b3", "if x is pi then out is b4",
+                                                        "if x is cos then out is b1"]))
+
 ENGINES = {"mamdani": _mamdani(), "mamdani-locked": _mamdani(lock="true"), "takagi-sugeno": TAKAGI_SUGENO,
-           "tsukamoto": TSUKAMOTO, "chained": CHAINED, "grid": GRID}
+           "tsukamoto": TSUKAMOTO, "chained": CHAINED, "grid": GRID, "overlapping": OVERLAPPING}
 ENGINES.update({f"tnorm-{t}": _mamdani(conjunction=t, implication=t) for t in TNORMS})
 ENGINES.update({f"snorm-{s}": _mamdani(disjunction=s, aggregation=s) for s in SNORMS})
 ENGINES.update({f"defuzzifier-{d.split()[0]}": _mamdani(defuzzifier=d) for d in DEFUZZIFIERS})

@@ -72,6 +72,34 @@ def test_integral_skips_only_what_cannot_change_the_result(reduction):
                 assert (np.isfinite(fast) == (degrees > 0).any(axis=0)).all()
 
 
+@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
+    """Units of Maximum aggregation whose supports overlap are max-combined four in one pass
+    (compiled._max_units): the very bits of one pass each, the minimum and the product mixed, with
+    zero degrees, a unit of narrow support among them and rows outside [0, 1] or NaN."""
+    rng = np.random.default_rng(10 + reduction)
+    x = np.linspace(0.0, 1.0, 201)
+    centres = np.array([0.0, 0.25, 0.5, 0.75, 1.0, 0.3])
+    shapes = 1.0 / (1.0 + np.abs((x[None, :] - centres[:, None]) / 0.2) ** 3.0)
+    shapes[5] = np.clip(1.0 - np.abs(x - 0.3) / 0.05, 0.0, 1.0)  # a narrow triangle
+    support = np.array([[np.flatnonzero(s)[0], np.flatnonzero(s)[-1] + 1] for s in shapes], dtype=np.int64)
+    unit_term = np.array([0, 1, 5, 2, 3, 4, 1, 2, 0], dtype=np.int64)
+    implication = np.array([norms.MINIMUM, norms.PRODUCT] * 4 + [norms.MINIMUM], dtype=np.int64)
+    degrees = rng.uniform(0, 1, (unit_term.size, 400))
+    degrees[rng.uniform(size=degrees.shape) < 0.3] = 0.0
+    degrees[:, :2] = 0.0  # nothing fires
+    degrees[3, 2], degrees[1, 3] = 1.5, np.nan  # rows that take the full path
+    rows = units = np.arange(unit_term.size, dtype=np.int64)
+    maximum = SNORMS.index("Maximum")
+    assert compiled._spans_overlap(support, unit_term, units, 0)[2]
+    four, one_by_one = np.empty(400), np.empty(400)
+    for use_four, out in ((True, four), (False, one_by_one)):
+        compiled._integral(use_four, degrees, rows, units, unit_term, implication, np.ascontiguousarray(shapes),
+                           support, x, maximum, reduction, out)
+    np.testing.assert_array_equal(four, one_by_one)
+    assert np.isfinite(four[4:]).mean() > 0.9
+
+
 @pytest.mark.parametrize("name", ["takagi-sugeno", "mamdani", "chained", "activation-Highest", "snorm-EinsteinSum"])
 def test_a_batch_equals_its_rows_evaluated_apart(name):
     """Chunks of rows (rule degrees, weighted outputs) change nothing."""

@@ -24,9 +24,10 @@ S(a, 0) = a for every norm here on [0, 1]); other rows sample every term everywh
 from __future__ import annotations
 
 import numpy as np
+from numba import literally
 
 from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
-from fuzzynav.fuzzy.engine.implied import max_min, max_product, sum_min
+from fuzzynav.fuzzy.engine.implied import max_four, max_min, max_product, sum_min
 from fuzzynav.fuzzy.engine.norms import (ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into,
                                          tnorm_into)
 from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
@@ -111,15 +112,65 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 
 @jit
+def _max_units(mu, shapes, support, units, count, unit_term, unit_implication, w):
+    """mu ← the maximum of mu and the implied term (min or product, :mod:`.implied`) of each of
+    the first ``count`` of ``units``, in order, over its support: four in one pass
+    (:func:`~.implied.max_four`, over the span of their supports, where a term is 0 outside its
+    own) where their supports overlap (:func:`_spans_overlap`), else one by one."""
+    j = 0
+    while j < count:
+        if j + 4 <= count:
+            first, end, overlap = _spans_overlap(support, unit_term, units, j)
+            if overlap:
+                max_four(mu, shapes, units, j, unit_term, unit_implication, w, first, end)
+                j += 4
+                continue
+        u = units[j]
+        t = unit_term[u]
+        if unit_implication[u] == MINIMUM:
+            max_min(mu, shapes, t, support[t, 0], support[t, 1], w[u])
+        else:
+            max_product(mu, shapes, t, support[t, 0], support[t, 1], w[u])
+        j += 1
+
+
+@jit
+def _spans_overlap(support, unit_term, units, j):
+    """(first, end, whether) of the span of the supports of the four units ``units[j:j + 4]``:
+    whether it is at most half their total length (MATLAB's Bells: everywhere), where
+    :func:`~.implied.max_four` pays."""
+    first, end, total = support[unit_term[units[j]], 0], 0, 0
+    for i in range(j, j + 4):
+        t = unit_term[units[i]]
+        first, end, total = min(first, support[t, 0]), max(end, support[t, 1]), total + support[t, 1] - support[t, 0]
+    return first, end, 2 * (end - first) <= total
+
+
+@jit
 def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
+    """:func:`_integral`, its units of Maximum aggregation four at a time (:func:`_max_units`) when
+    the first four's supports overlap (:func:`_spans_overlap`), else one by one."""
+    if aggregation == MAXIMUM and unit_term.shape[0] >= 4 and _spans_overlap(support, unit_term, np.arange(4), 0)[2]:
+        _integral(True, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
+                  reduction, out)
+    else:
+        _integral(False, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
+                  reduction, out)
+
+
+@jit
+def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction,
+              out):
     """A Mamdani output for every row n: activation a has degree ``degrees[rows[a], n]`` and
     belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
     activation of the same term and implication, whose degrees max-combine first: T is
     monotone); unit u implies term ``unit_term[u]`` sampled as ``shapes`` (T, R) at ``x`` with the
     T-norm ``unit_implication[u]``. ``support[t]`` = (first, end) of term t's non-zero samples,
-    (-1, R) when a sample lies outside [0, 1]."""
+    (-1, R) when a sample lies outside [0, 1]. ``four`` (compiled once for each value): the units
+    of Maximum aggregation and Minimum or product implication are left to :func:`_max_units`."""
+    literally(four)
     n_units, size = unit_term.shape[0], x.shape[0]
-    w = np.empty(n_units)
+    w, maxed = np.empty(n_units), np.empty(n_units, dtype=np.int64)  # maxed: the units left to max_four
     mu, scratch, area = np.zeros(padded(size)), np.empty(size), np.empty(padded(size))
     at = np.zeros(padded(size))  # the points, padded for reduce_sampled
     at[:size] = x
@@ -134,7 +185,7 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
         bounded = True
         for u in range(n_units):
             bounded = bounded and 0.0 <= w[u] <= 1.0
-        lo, hi = size, 0  # the samples any unit touched (mu is 0 elsewhere)
+        lo, hi, n_maxed = size, 0, 0  # the samples any unit touched (mu is 0 elsewhere)
         for u in range(n_units):
             t, wu, imp = unit_term[u], w[u], unit_implication[u]
             plain = bounded and support[t, 0] >= 0  # no NaN: the support alone, skipped where w = 0
@@ -142,7 +193,10 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 continue
             first, end = (support[t, 0], support[t, 1]) if plain else (0, size)
             lo, hi = min(lo, first), max(hi, end)
-            if plain and aggregation == MAXIMUM and imp == MINIMUM:  # one pass (:mod:`.implied`)
+            if four and plain and aggregation == MAXIMUM and (imp == MINIMUM or imp == PRODUCT):
+                maxed[n_maxed] = u  # after the others: the maximum is exact, so any order gives the same bits
+                n_maxed += 1
+            elif plain and aggregation == MAXIMUM and imp == MINIMUM:  # one pass (:mod:`.implied`)
                 max_min(mu, shapes, t, first, end, wu)
             elif plain and aggregation == MAXIMUM and imp == PRODUCT:
                 max_product(mu, shapes, t, first, end, wu)
@@ -153,6 +207,8 @@ def integral(degrees, rows, units, unit_term, unit_implication, shapes, support,
                 implied[:] = wu
                 tnorm_into(imp, implied, shapes[t, first:end], implied)
                 snorm_into(aggregation, mu[first:end], implied, mu[first:end])
+        if four:
+            _max_units(mu, shapes, support, maxed, n_maxed, unit_term, unit_implication, w)
         if reduction == 0:  # Centroid: its sums called here, as reduce_sampled's call costs more than they do
             total, moment = centroid_sums(mu, at, lo, max(lo, hi))
             out[n] = moment / total

@@ -11,6 +11,7 @@ several loops).
 
 from __future__ import annotations
 
+from fuzzynav.fuzzy.engine.norms import PRODUCT
 from fuzzynav.jit import jit
 
 
@@ -40,3 +41,30 @@ def sum_min(mu, shapes, t, first, end, w):
     for k in range(m.shape[0]):
         i = min(w, shape[k])
         m[k] = m[k] + i - m[k] * i
+
+
+
+@jit
+def _implied(w, sample, product):
+    """min(w, sample), or w × sample for the AlgebraicProduct implication."""
+    return w * sample if product else min(w, sample)
+
+
+@jit
+def max_four(mu, shapes, units, j, unit_term, unit_implication, w, first, end):
+    """mu ← max(…max(max(mu, i₀), i₁)…, i₃) on the samples [first, end), i_q the implied term of
+    unit u = ``units[j + q]`` (its term ``unit_term[u]``, degree ``w[u]``, the product or the
+    minimum by ``unit_implication[u]``): four :func:`max_min` / :func:`max_product` passes in one,
+    the same maxima in the same order (so the same bits), a quarter of the reads and writes of ``mu``."""
+    m = mu[first:end]
+    u0, u1, u2, u3 = units[j], units[j + 1], units[j + 2], units[j + 3]
+    s0, s1 = shapes[unit_term[u0], first:end], shapes[unit_term[u1], first:end]
+    s2, s3 = shapes[unit_term[u2], first:end], shapes[unit_term[u3], first:end]
+    p0, p1 = unit_implication[u0] == PRODUCT, unit_implication[u1] == PRODUCT
+    p2, p3 = unit_implication[u2] == PRODUCT, unit_implication[u3] == PRODUCT
+    w0, w1, w2, w3 = w[u0], w[u1], w[u2], w[u3]
+    for k in range(m.shape[0]):
+        v = max(m[k], _implied(w0, s0[k], p0))
+        v = max(v, _implied(w1, s1[k], p1))
+        v = max(v, _implied(w2, s2[k], p2))
+        m[k] = max(v, _implied(w3, s3[k], p3))
