@@ -4,7 +4,7 @@
 import numpy as np
 import pytest
 
-from fuzzynav.fuzzy.engine import compiled, norms
+from fuzzynav.fuzzy.engine import centroid_rows, compiled, norms
 from fuzzynav.fuzzy.engine.compiled import AND, OR
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
 from fuzzynav.fuzzy.io.fll import from_fll_engine
@@ -95,9 +95,37 @@ def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
     four, one_by_one = np.empty(400), np.empty(400)
     for use_four, out in ((True, four), (False, one_by_one)):
         compiled._integral(use_four, degrees, rows, units, unit_term, implication, np.ascontiguousarray(shapes),
-                           support, x, maximum, reduction, out)
+                           support, x, maximum, reduction, out, 0, 400)
     np.testing.assert_array_equal(four, one_by_one)
     assert np.isfinite(four[4:]).mean() > 0.9
+
+
+def test_a_sparse_centroid_computed_across_rows_gives_the_bits_of_row_by_row():
+    """A centroid of Maximum aggregation over short supports (a partition of triangles, one term
+    twice with either implication) is computed across rows (centroid_rows.max_centroid): the very
+    bits of the row-by-row pass, rows of degrees outside [0, 1] or NaN (left to it) included."""
+    rng = np.random.default_rng(3)
+    x = np.linspace(0.0, 30.0, 200)
+    shapes = np.ascontiguousarray(np.clip(1.0 - np.abs(x[None, :] - np.array([5.0, 15.0, 25.0, 12.0])[:, None]) / 3.0,
+                                          0.0, 1.0))
+    support = np.array([[np.flatnonzero(s)[0], np.flatnonzero(s)[-1] + 1] for s in shapes], dtype=np.int64)
+    unit_term = np.array([0, 1, 2, 3, 1], dtype=np.int64)
+    implication = np.array([norms.MINIMUM, norms.MINIMUM, norms.PRODUCT, norms.MINIMUM, norms.PRODUCT], dtype=np.int64)
+    rows = np.arange(6, dtype=np.int64)
+    units = np.array([0, 1, 2, 3, 4, 0], dtype=np.int64)  # unit 0: two activations, max-combined
+    degrees = rng.uniform(0, 1, (6, 1000))
+    degrees[rng.uniform(size=degrees.shape) < 0.4] = 0.0
+    degrees[:, :2] = 0.0
+    degrees[0, 2], degrees[5, 3], degrees[2, 4] = np.nan, 1.5, -0.25
+    maximum = SNORMS.index("Maximum")
+    assert centroid_rows.applies(unit_term, implication, support, x.size)
+    across_rows, row_by_row = np.empty(1000), np.empty(1000)
+    compiled.integral(degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, across_rows)
+    compiled._integral(False, degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, row_by_row,
+                       0, 1000)
+    np.testing.assert_array_equal(across_rows, row_by_row)
+    assert np.isnan(across_rows[:3]).all() and np.isfinite(across_rows[3:5]).all()
+    assert np.isfinite(across_rows[5:]).mean() > 0.9
 
 
 @pytest.mark.parametrize("name", ["takagi-sugeno", "mamdani", "chained", "activation-Highest", "snorm-EinsteinSum"])

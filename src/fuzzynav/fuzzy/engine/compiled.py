@@ -27,6 +27,7 @@ import numpy as np
 from numba import literally
 
 from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
+from fuzzynav.fuzzy.engine.centroid_rows import applies, max_centroid
 from fuzzynav.fuzzy.engine.implied import max_four, max_min, max_product, sum_min
 from fuzzynav.fuzzy.engine.norms import (ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into,
                                          tnorm_into)
@@ -148,20 +149,29 @@ def _spans_overlap(support, unit_term, units, j):
 
 @jit
 def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
-    """:func:`_integral`, its units of Maximum aggregation four at a time (:func:`_max_units`) when
-    the first four's supports overlap (:func:`_spans_overlap`), else one by one."""
-    if aggregation == MAXIMUM and unit_term.shape[0] >= 4 and _spans_overlap(support, unit_term, np.arange(4), 0)[2]:
+    """:func:`_integral`. The centroid of Maximum aggregation, where it applies, is computed across
+    rows (:func:`~.centroid_rows.max_centroid`: the same bits), :func:`_integral` taking only its
+    rows of degrees outside [0, 1]; otherwise units of Maximum aggregation go four at a time
+    (:func:`_max_units`) when the first four's supports overlap (:func:`_spans_overlap`)."""
+    n = degrees.shape[1]
+    if reduction == 0 and aggregation == MAXIMUM and applies(unit_term, unit_implication, support, x.shape[0]):
+        unbounded = np.empty(n, dtype=np.int64)
+        for i in range(max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, support, x, out,
+                                    unbounded)):
+            _integral(False, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
+                      reduction, out, unbounded[i], unbounded[i] + 1)
+    elif aggregation == MAXIMUM and unit_term.shape[0] >= 4 and _spans_overlap(support, unit_term, np.arange(4), 0)[2]:
         _integral(True, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
-                  reduction, out)
+                  reduction, out, 0, n)
     else:
         _integral(False, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
-                  reduction, out)
+                  reduction, out, 0, n)
 
 
 @jit
 def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction,
-              out):
-    """A Mamdani output for every row n: activation a has degree ``degrees[rows[a], n]`` and
+              out, start, stop):
+    """A Mamdani output for every row n in [start, stop): activation a has degree ``degrees[rows[a], n]`` and
     belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
     activation of the same term and implication, whose degrees max-combine first: T is
     monotone); unit u implies term ``unit_term[u]`` sampled as ``shapes`` (T, R) at ``x`` with the
@@ -174,7 +184,7 @@ def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, s
     mu, scratch, area = np.zeros(padded(size)), np.empty(size), np.empty(padded(size))
     at = np.zeros(padded(size))  # the points, padded for reduce_sampled
     at[:size] = x
-    for n in range(degrees.shape[1]):
+    for n in range(start, stop):
         for u in range(n_units):
             w[u] = -np.inf
         for a in range(rows.shape[0]):
