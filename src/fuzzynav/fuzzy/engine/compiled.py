@@ -9,7 +9,9 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   T-norm / S-norm), times the rule's weight;
 - :func:`integral` — a Mamdani output: every activation implies its term (sampled once at the
   defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
-  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.reduce`);
+  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.reduce`)
+  — row by row, units of Maximum aggregation four in one pass where their supports overlap, or,
+  for a centroid over short supports, across rows (:mod:`.centroid_rows`), the same bits;
 - :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
   combined with the output's S-norm, then Σ g z / Σ g (times Σ g for ``WeightedSum``), with
   :func:`affine` values z of constant and linear terms (:func:`weighted_affine`: all three by
