@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.engine.implied import stored
 from fuzzynav.fuzzy.engine.norms import MINIMUM, PRODUCT
 from fuzzynav.jit import jit
 
@@ -70,10 +71,10 @@ def _max_implied(mu, w, u, s, product, opened, m):
     Indexed in place: a view a sample would cost more than its loop."""
     if product:
         for r in range(m):
-            mu[r] = max(mu[r] if opened else 0.0, w[u, r] * s)
+            mu[r] = stored(max(mu[r] if opened else 0.0, w[u, r] * s))
     else:
         for r in range(m):
-            mu[r] = max(mu[r] if opened else 0.0, min(w[u, r], s))
+            mu[r] = stored(max(mu[r] if opened else 0.0, min(w[u, r], s)))
 
 
 @jit
