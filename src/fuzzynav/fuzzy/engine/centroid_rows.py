@@ -51,8 +51,7 @@ def _unit_degrees(degrees, rows, units, r0, m, w):
         d, wu = degrees[rows[a], r0:r0 + m], w[units[a], :m]
         for r in range(m):
             v = d[r]
-            if v > wu[r] or v != v:
-                wu[r] = v
+            wu[r] = stored(v if v > wu[r] or v != v else wu[r])  # every row stored: no masked store
 
 
 @jit
