@@ -85,6 +85,16 @@ def _add_to_lane(mu, at, lane, totals, moments, m):
 
 
 @jit
+def _one_unit_to_lane(w, u, s, product, at, lane, totals, moments, m):
+    """A sample only unit u's term's support holds: its μ, max(0, min(w[u, r], s)) (or the
+    product), straight into its lane's sums — :func:`_max_implied` then :func:`_add_to_lane` in one loop."""
+    for r in range(m):
+        mu = stored(max(0.0, w[u, r] * s if product else min(w[u, r], s)))
+        totals[lane, r] += mu
+        moments[lane, r] += mu * at
+
+
+@jit
 def _lanes_total(lanes, r):
     """((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)) of row r's eight lane sums."""
     return ((lanes[0, r] + lanes[1, r]) + (lanes[2, r] + lanes[3, r])) + \
@@ -110,10 +120,18 @@ def max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, supp
         totals[:, :m] = 0.0
         moments[:, :m] = 0.0
         for k in range(first, end):
-            opened = False  # a sample no term's support holds is 0: nothing to add
+            held, only = 0, 0  # how many terms' supports hold sample k (none: it is 0, nothing to add)
+            for u in range(n_units):
+                if support[unit_term[u], 0] <= k < support[unit_term[u], 1]:
+                    held, only = held + 1, u
+            if held == 1:
+                _one_unit_to_lane(w, only, shapes[unit_term[only], k], unit_implication[only] == PRODUCT, x[k], k % 8,
+                                  totals, moments, m)
+                continue
+            opened = False
             for u in range(n_units):
                 t = unit_term[u]
-                if support[t, 0] <= k < support[t, 1]:
+                if held > 1 and support[t, 0] <= k < support[t, 1]:
                     _max_implied(mu, w, u, shapes[t, k], unit_implication[u] == PRODUCT, opened, m)
                     opened = True
             if opened:
