@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.implied import stored
+from fuzzynav.fuzzy.engine.implied import implication, stored
 from fuzzynav.fuzzy.engine.norms import MINIMUM, PRODUCT
 from fuzzynav.jit import jit
 
@@ -68,12 +68,8 @@ def _max_implied(mu, w, u, s, product, opened, m):
     """mu[r] ← max(mu[r], min(w[u, r], s)) (or w[u, r] × s) for the first m rows, s one sample of
     unit u's term; mu is 0 where not ``opened`` (max(0, ·), as the row-by-row pass from its zeros).
     Indexed in place: a view a sample would cost more than its loop."""
-    if product:
-        for r in range(m):
-            mu[r] = stored(max(mu[r] if opened else 0.0, w[u, r] * s))
-    else:
-        for r in range(m):
-            mu[r] = stored(max(mu[r] if opened else 0.0, min(w[u, r], s)))
+    for r in range(m):
+        mu[r] = stored(max(mu[r] if opened else 0.0, implication(w[u, r], s, product)))
 
 
 @jit
@@ -89,7 +85,7 @@ def _one_unit_to_lane(w, u, s, product, at, lane, totals, moments, m):
     """A sample only unit u's term's support holds: its μ, max(0, min(w[u, r], s)) (or the
     product), straight into its lane's sums — :func:`_max_implied` then :func:`_add_to_lane` in one loop."""
     for r in range(m):
-        mu = stored(max(0.0, w[u, r] * s if product else min(w[u, r], s)))
+        mu = stored(max(0.0, implication(w[u, r], s, product)))
         totals[lane, r] += mu
         moments[lane, r] += mu * at
 
@@ -131,7 +127,7 @@ def max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, supp
             opened = False
             for u in range(n_units):
                 t = unit_term[u]
-                if held > 1 and support[t, 0] <= k < support[t, 1]:
+                if support[t, 0] <= k < support[t, 1]:
                     _max_implied(mu, w, u, shapes[t, k], unit_implication[u] == PRODUCT, opened, m)
                     opened = True
             if opened:

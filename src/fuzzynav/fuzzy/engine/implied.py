@@ -52,9 +52,8 @@ def sum_min(mu, shapes, t, first, end, w):
         m[k] = m[k] + i - m[k] * i
 
 
-
 @jit
-def _implied(w, sample, product):
+def implication(w, sample, product):
     """min(w, sample), or w × sample for the AlgebraicProduct implication."""
     return w * sample if product else min(w, sample)
 
@@ -73,7 +72,7 @@ def max_four(mu, shapes, units, j, unit_term, unit_implication, w, first, end):
     p2, p3 = unit_implication[u2] == PRODUCT, unit_implication[u3] == PRODUCT
     w0, w1, w2, w3 = w[u0], w[u1], w[u2], w[u3]
     for k in range(m.shape[0]):
-        v = max(m[k], _implied(w0, s0[k], p0))
-        v = max(v, _implied(w1, s1[k], p1))
-        v = max(v, _implied(w2, s2[k], p2))
-        m[k] = stored(max(v, _implied(w3, s3[k], p3)))
+        v = max(m[k], implication(w0, s0[k], p0))
+        v = max(v, implication(w1, s1[k], p1))
+        v = max(v, implication(w2, s2[k], p2))
+        m[k] = stored(max(v, implication(w3, s3[k], p3)))
