@@ -22,7 +22,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.tune.fitness import OBJECTIVES, Fitness, summary
+from fuzzynav.tune.fitness import OBJECTIVES, Fitness, episode_cost, summary
 from fuzzynav.tune.optimisers import METHODS
 from fuzzynav.tune.space import WHAT
 
@@ -201,7 +201,7 @@ def _result(request, space, fitness, controller, holdout, generations, best_x, c
                                              f"--what {request.what} --method {request.method} --budget "
                                              f"{request.budget} --worlds {request.worlds} --seed {request.seed}")
     both = fitness.simulate(np.stack([space.start, best_x]))
-    dt = fitness.worlds.dt
+    dt, limit = fitness.worlds.dt, fitness.worlds.max_time
     result = {
         "target": request.target, "what": request.what, "method": request.method, "budget": request.budget,
         "worlds": request.worlds, "seed": request.seed, "population": request.population,
@@ -209,7 +209,8 @@ def _result(request, space, fitness, controller, holdout, generations, best_x, c
         "episodes": int(sum(len(x) for x, _ in generations)) * len(fitness.worlds),
         "evaluations_per_s": fitness.rate, "episodes_per_s": fitness.rate * len(fitness.worlds),
         "simulation_s": fitness.seconds,
-        "start": {"training": summary(both[0], dt)}, "tuned": {"training": summary(both[1], dt)},
+        "start": {"training": {**summary(both[0], dt), "cost": float(episode_cost(both[0], dt, limit).mean())}},
+        "tuned": {"training": {**summary(both[1], dt), "cost": float(episode_cost(both[1], dt, limit).mean())}},
         "changed": bool(space.decode(best_x) != space.decode(space.start)),
         "curve": [[int(n), float(c)] for n, c in curve],
         "system": tuned,
