@@ -82,6 +82,16 @@ def test_a_killed_run_resumed_ends_as_an_uninterrupted_one(tmp_path, monkeypatch
     assert resumed["curve"] == whole["curve"]
 
 
+def test_a_run_resumed_with_a_larger_budget_ends_as_one_run_with_that_budget(tmp_path):
+    longer = {**SMALL, "budget": 80}
+    whole = tune(TuneRequest(target="fuzzy-2b:oab", out=str(tmp_path / "whole.yaml"), **longer))
+    cut = {**SMALL, "budget": 40}  # two generations and half of the third
+    tune(TuneRequest(target="fuzzy-2b:oab", out=str(tmp_path / "more.yaml"), **cut))
+    resumed = tune(TuneRequest(target="fuzzy-2b:oab", out=str(tmp_path / "more.yaml"), resume=True, **longer))
+    assert resumed["curve"] == whole["curve"] and resumed["system"] == whole["system"]
+    assert resumed["episodes"] == whole["episodes"] == 80
+
+
 def test_resume_refuses_a_checkpoint_of_other_options(tmp_path):
     tune(TuneRequest(target="fuzzy-2b:oab", method="ga", out=str(tmp_path / "a.yaml"), **SMALL))
     with pytest.raises(session.InputError, match="seed"):

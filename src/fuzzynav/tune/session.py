@@ -172,14 +172,17 @@ def tune(request: TuneRequest) -> dict:
         while spent + n_worlds <= request.budget:
             population = optimiser.ask()
             asked = len(population)
-            if len(generations) < len(stored):
+            population = population[:(request.budget - spent) // n_worlds]
+            values = np.zeros((0, 1 + len(OBJECTIVES)))
+            if len(generations) < len(stored):  # replayed: the stored values, none simulated
                 x, values = stored[len(generations)]
-                if x.shape != population.shape or not np.array_equal(x, population):
+                known = min(len(x), len(population))
+                if x.shape[1:] != population.shape[1:] or not np.array_equal(x[:known], population[:known]):
                     raise InputError(f"generation {len(generations)} replays differently from the checkpoint "
                                      "(another version of the optimiser?)", source=str(path))
-            else:
-                population = population[:(request.budget - spent) // n_worlds]
-                values = fitness.objectives(population)
+                values = values[:known]
+            if len(population) > len(values):  # new candidates (or the rest of a generation cut short)
+                values = np.concatenate([values, fitness.objectives(population[len(values):])])
             spent += len(population) * n_worlds
             i = int(np.argmin(values[:, 0]))
             if values[i, 0] < best:
@@ -188,7 +191,7 @@ def tune(request: TuneRequest) -> dict:
             generations.append((population, values))
             if len(population) == asked:  # a population cut short by the budget ends the run untold
                 optimiser.tell(population, values[:, columns])
-            if path is not None and len(generations) > len(stored):
+            if path is not None:
                 _save_checkpoint(path, request, generations)
             bar.update(len(population) * n_worlds)
             bar.set_postfix(best=f"{best:.4f}")
