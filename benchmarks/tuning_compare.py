@@ -20,12 +20,13 @@ from fuzzynav.experiments.tuning import TASKS, cmp_vi_tuning
 
 def table(results: dict) -> str:
     lines = ["| task | method | held-out success (mean; per seed) | collisions (per seed) | mean time to goal, s | "
-             "episodes to beat the start | wall s |", "|---|---|---|---|---|---|---|"]
+             "episodes to beat the start (FQL: to converge, steering/speed) | wall s |", "|---|---|---|---|---|---|---|"]
     for name, task in results.items():
         for method, seeds in task["rows"].items():
             success = [s["success"] for s in seeds]
             times = [s["mean_time_s"] for s in seeds if s["mean_time_s"] is not None]
-            beaten = [s.get("episodes_to_beat_start") for s in seeds]
+            beaten = [s.get("episodes_to_beat_start") or "/".join(str(v) for v in s.get("converged_at", {}).values())
+                      or None for s in seeds]
             lines.append(f"| {name} | {method} | {np.mean(success):.3f}; {', '.join(f'{v:.3f}' for v in success)} | "
                          f"{', '.join(str(s['collisions']) for s in seeds)} | "
                          f"{np.mean(times):.2f}; {', '.join(f'{t:.2f}' for t in times)} | "
