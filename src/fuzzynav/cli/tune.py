@@ -103,7 +103,8 @@ def _write(request, result) -> list[str]:
     if request.curve:
         from fuzzynav.tune.curve import plot_curve
 
-        plot_curve(result["curve"], request.curve, title=f"{request.target}, {request.method}")
+        plot_curve(result["curve"], request.curve, title=f"{request.target}, {request.method}",
+                   start=result["start"]["training"]["cost"])
         written.append(request.curve)
     if not written:
         print("nothing written (no --out)", file=sys.stderr)
