@@ -144,3 +144,12 @@ def test_bad_options_are_one_line_errors_before_any_simulation(argv, message, ca
     assert main(["tune", *argv, *worlds]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and message in err, err
+
+
+def test_a_damaged_checkpoint_is_a_one_line_error(tmp_path, capsys):
+    out = tmp_path / "oab.yaml"
+    (tmp_path / "oab.yaml.tune.npz").write_bytes(b"not a checkpoint")
+    assert main(["tune", "fuzzy-2b:oab", "--worlds", WORLDS, "--population", "4", "--budget", "32", "--out", str(out),
+                 "--resume", "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "oab.yaml.tune.npz" in err, err

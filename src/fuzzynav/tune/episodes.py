@@ -23,6 +23,7 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.jit import jit
 from fuzzynav.kernels import layers, step as step_kernel
+from fuzzynav.kernels.motion import RADIUS
 
 OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE = range(6)  # columns of run_jobs' ``out``
 N_OUT = 6
@@ -45,7 +46,7 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
     lp = layer_params.copy()
     lstate = np.empty((1, layer_row.shape[0]))
     lstate[0] = layer_row
-    radius = setup[2]
+    radius = setup[RADIUS]
     gx, gy = setup[step_kernel.GOAL_X], setup[step_kernel.GOAL_Y]
     out[START_DISTANCE] = math.hypot(gx - start[0], gy - start[1])
     running = step_kernel.reset(setup, scene, state, ranges, status)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
@@ -45,10 +45,8 @@ class TuneRequest:
     holdout: str | None = None  # default: the family's worlds with seed + HOLDOUT_OFFSET
     out: str | None = None
     resume: bool = False
-    checkpoint: str | None = None  # default: <out>.tune.npz
     curve: str | None = None
     progress: bool = True
-    extra: dict = field(default_factory=dict, compare=False)
 
     @property
     def controller(self) -> str:
@@ -103,7 +101,7 @@ def check(request: TuneRequest):
             format_of(request.out)
         except InputError as error:
             raise InputError(error.problem, source=request.out, field="--out") from None
-    if request.resume and request.out is None and request.checkpoint is None:
+    if request.resume and request.out is None:
         raise InputError("--resume needs --out (the checkpoint lives beside it)", field="--resume")
     SearchSpace(system, request.what)  # a system with nothing to tune fails here
     suite = parse_suite(request.worlds)
@@ -116,8 +114,7 @@ def check(request: TuneRequest):
 
 
 def checkpoint_path(request: TuneRequest) -> Path | None:
-    if request.checkpoint:
-        return Path(request.checkpoint)
+    """``OUT.tune.npz`` beside ``--out`` (no checkpoint without it)."""
     return None if request.out is None else Path(f"{request.out}.tune.npz")
 
 
