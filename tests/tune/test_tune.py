@@ -33,6 +33,7 @@ def test_a_short_tune_changes_the_rule_base_and_is_no_worse_on_its_worlds(method
     result = tune(TuneRequest(target="fuzzy-2b:oab", method=method, what=what,
                               **{**SMALL, "budget": budget, "seed": seed}))
     _no_worse_and_changed(result, budget)
+    assert result["curve"][0][1] <= result["start"]["training"]["cost"]  # the start is in the first generation
     assert result["curve"][-1][1] <= result["curve"][0][1]
     assert set(result["tuned"]["holdout"]) >= {"success_rate", "collisions", "mean_time_s"}
 

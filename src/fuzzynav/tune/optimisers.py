@@ -10,7 +10,7 @@
 - ``aco``: the ant colony system over the discrete rule conclusions (:mod:`fuzzynav.tune.aco`).
 
 Every optimiser starts from the system being tuned: it and neighbours of it make the first
-population (it is the mean of CMA-ES's first distribution). All randomness comes from ``seed``, so the
+population (for CMA-ES: it is the mean of the first distribution and its first candidate). All randomness comes from ``seed``, so the
 same calls with the same fitness values replay the same run (what ``--resume`` relies on).
 pymoo (Apache-2.0) and cma (BSD-3-Clause) are the ``tune`` extra.
 """
@@ -64,12 +64,14 @@ class PymooOptimiser:
 
 
 class CmaOptimiser:
-    """CMA-ES of the ``cma`` package, started at ``start`` with step :data:`CMA_SIGMA`."""
+    """CMA-ES of the ``cma`` package, started at ``start`` with step :data:`CMA_SIGMA`; the start
+    is the first candidate of the first generation (``inject``)."""
 
     def __init__(self, start: np.ndarray, pop_size: int, seed: int):
         cma = _needs("cma")
         self.es = cma.CMAEvolutionStrategy(np.asarray(start, dtype=float), CMA_SIGMA, {
             "bounds": [0.0, 1.0], "popsize": pop_size, "seed": seed + 1, "verbose": -9})
+        self.es.inject([np.asarray(start, dtype=float)], force=True)  # the start itself is the first candidate
 
     def ask(self) -> np.ndarray:
         return np.asarray(self.es.ask(), dtype=float)
