@@ -41,7 +41,7 @@ def register(subparsers) -> None:
     parser.add_argument("--out", metavar="FILE", help="tuned system to write: .yaml, .json, .fll or .fis")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint beside --out")
     parser.add_argument("--curve", metavar="PNG", type=arguments.figure_path,
-                        help="write the learning curve (best cost against evaluations)")
+                        help="write the learning curve (best training cost against episodes)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
 
