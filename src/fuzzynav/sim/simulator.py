@@ -52,7 +52,7 @@ from fuzzynav.world.world import add_noise
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
-_OFFSET_BLOCK = 256  # steps of moving-obstacle offsets computed at once
+_OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
 _STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
@@ -155,10 +155,10 @@ class BatchSimulator:
 
     def _offsets(self, k: int) -> np.ndarray:
         """Offsets ``(M, 2)`` of the moving obstacles at step ``k`` (``(0, 2)`` in a static world)."""
-        if not len(self._movers):
-            return _STILL
         start, block = self._block
-        if not start <= k < start + len(block):
+        if not 0 <= k - start < len(block):
+            if not len(self._movers):
+                return _STILL
             start = k - k % _OFFSET_BLOCK
             block = moving.offsets(self.scenario.world, np.arange(start, start + _OFFSET_BLOCK) * self.params.dt)
             self._block = (start, block)
@@ -251,9 +251,9 @@ class BatchSimulator:
         """One step of every running robot (the new observation is :attr:`observation`)."""
         running = self.active if self._noisy else None
         labels = None if self._compiled is not None else self._act(self.observation)
-        if len(self._movers):
-            was_running, before = self.active, self._state[:, step_kernel.X:step_kernel.Y + 1].copy()
-            offsets_before = self._offsets(self.k)
+        moving = self._movers.shape[0]
+        if moving:
+            before, offsets_before, running_before = self._state[:, :2].copy(), self._offsets(self.k), self._running
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
@@ -265,8 +265,8 @@ class BatchSimulator:
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
-        if len(self._movers):
-            hit = was_running & (self.status == COLLISION)
+        if moving and self._running < running_before:  # someone stopped: a collision this step?
+            hit = (self._status[:, step_kernel.OUTCOME] == COLLISION) & (self._status[:, step_kernel.STEPS] == self.k)
             if hit.any():
                 self._fault[hit] = collision_by(self._state[hit], before[hit], offsets - offsets_before,
                                                 self._mover_of_column, self.params.radius)
