@@ -31,8 +31,8 @@ TTC_PEAKS = (1.0, 2.5, 4.5)  # s: short, medium, long
 SIDE_PEAKS = tuple(np.deg2rad((0.0, 45.0, 90.0, 150.0)))  # front, diagonal, abeam, behind
 # (ttc, side) -> (authority, speed m/s, dodge rad); dodge turns away from the threat's side
 RULES = {
-    ("S", "F"): (0.6, 0.4, 0.6), ("S", "D"): (1.0, 1.2, 0.5), ("S", "A"): (1.0, 1.6, 0.6), ("S", "B"): (1.0, 1.6, 0.0),
-    ("M", "F"): (0.3, 0.4, 0.4), ("M", "D"): (0.6, 0.8, 0.3), ("M", "A"): (0.6, 1.2, 0.4), ("M", "B"): (0.6, 1.2, 0.0),
+    ("S", "F"): (0.6, 0.4, 0.6), ("S", "D"): (1.0, 1.2, 0.5), ("S", "A"): (1.0, 2.5, 0.6), ("S", "B"): (1.0, 2.5, 0.0),
+    ("M", "F"): (0.3, 0.4, 0.4), ("M", "D"): (0.6, 0.8, 0.3), ("M", "A"): (0.6, 1.8, 0.4), ("M", "B"): (0.6, 1.8, 0.0),
     **{("L", side): (0.0, 0.0, 0.0) for side in "FDAB"},
 }
 
@@ -56,7 +56,8 @@ class YieldingNavigator(BatchController):
 
     name = "fuzzy-5b-yield"
 
-    def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 1.6, horizon: float = 3.0, close: float = 0.35):
+    def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
+                 close: float = 0.35):
         self.inner = inner if inner is not None else fuzzy_5b_gap_robust()
         self.sensors = getattr(self.inner, "sensors", None)
         self.labels = getattr(self.inner, "labels", ())
