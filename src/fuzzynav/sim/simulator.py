@@ -3,8 +3,8 @@
 :class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
 (:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:
 
-1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``) decides
-   inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
+1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``, the
+   optional hooks of :mod:`fuzzynav.control.hooks`) decides inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
    returning ``(steering (N,), speed (N,))`` or ``(steering, speed, behaviours)``, or
    ``controller.act(obs)`` per robot (one deep copy of the controller per robot when N > 1);
 2. clip the command to the robot's limits (path tasks: speed = the path's constant speed);
@@ -30,6 +30,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
+from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import layers, step as step_kernel
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -55,7 +56,7 @@ def default_ring(scenario: Scenario, controller) -> SensorRing:
     if scenario.sensors is not None:
         return named_ring(scenario.sensors)
     first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
-    return getattr(first, "sensors", None) or SensorRing()
+    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
 
 
 class BatchSimulator:
@@ -90,19 +91,19 @@ class BatchSimulator:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
         for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
-            if callable(getattr(copied, "prepare", None)):
+            if isinstance(copied, MapAware):
                 copied.prepare(scenario)
         self.controllers = copies
         for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
-            if callable(getattr(each, "for_robot", None)):
+            if isinstance(each, SizedForRobot):
                 each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
-        compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
-        self._compiled = compiled if callable(compiled) else None
+        compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
+        self._compiled = copies[0].compiled if compiled else None
         self.reset()
 
     # -- episode -----------------------------------------------------------------------------
