@@ -54,17 +54,17 @@ def main() -> None:
     rows = []
     for batch in (1, 16, 256):
         X = np.column_stack([rng.uniform(0, 20, batch), rng.uniform(-np.pi, np.pi, batch)])
-        premise_s = median_time(lambda: system.firing_strengths(X))
+        premise_s = median_time(lambda X=X: system.firing_strengths(X))
         w = system.firing_strengths(X)
         learner = FuzzyQLearner(GivenStrengths(w), candidates, gamma=0.9, alpha=0.1, lam=0.7,
                                 policy=EpsilonGreedy(0.1), n_learners=batch)
         learner.begin(X, rng)
         reward, done = np.zeros(batch), np.zeros(batch, dtype=bool)
-        learner_s = median_time(lambda: learner.step(reward, X, done, rng))
+        learner_s = median_time(lambda learner=learner, X=X, reward=reward, done=done: learner.step(reward, X, done, rng))
         table = TabularLearner(19, 5, method="q_lambda", lam=0.7, n_tables=batch)
         s = rng.integers(0, 19, batch)
         table.begin(s, rng)
-        tabular_s = median_time(lambda: table.step(reward, s, done, rng))
+        tabular_s = median_time(lambda table=table, s=s, reward=reward, done=done: table.step(reward, s, done, rng))
         rows.append({"batch": batch, "premise_us": premise_s * 1e6, "fql_learner_us": learner_s * 1e6,
                      "tabular_qlambda_us": tabular_s * 1e6,
                      "fql_3000x250_learner_s": 3000 * 250 * (premise_s + learner_s) / batch})

@@ -13,7 +13,7 @@ from __future__ import annotations
 import difflib
 from collections.abc import Callable, Iterator, Mapping
 from importlib import import_module, metadata
-from typing import Generic, Protocol, TypeVar
+from typing import Generic, Protocol, TypeVar, cast
 
 from fuzzynav.errors import InputError
 
@@ -124,7 +124,7 @@ class Registry(Mapping[str, S], Generic[S]):
         return dict(self._aliases)
 
     def _read_plugins(self) -> None:
-        if self._plugins_read:
+        if self._plugins_read or self.group is None:
             return
         self._plugins_read = True
         for point in metadata.entry_points(group=self.group):
@@ -137,7 +137,7 @@ class Registry(Mapping[str, S], Generic[S]):
                 if not isinstance(spec, self.kind):
                     raise InputError(f"is not a {self.kind.__name__} (got {type(spec).__name__})", source=source)
                 try:
-                    self.register(spec)
+                    self.register(cast(S, spec))
                 except ValueError as error:
                     raise InputError(str(error), source=source) from None
 

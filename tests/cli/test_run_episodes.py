@@ -5,11 +5,10 @@ import json
 import pytest
 import yaml
 
-from fuzzynav.cli import main
-from fuzzynav.catalog import controllers as registry
 from fuzzynav import storage
-from fuzzynav.catalog import tasks
+from fuzzynav.catalog import controllers as registry, tasks
 from fuzzynav.catalog.specs import ControllerSpec
+from fuzzynav.cli import main
 
 ALL = ("goal", "path", "target")
 TEST_CONTROLLERS = (

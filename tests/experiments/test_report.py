@@ -4,8 +4,8 @@ import json
 from html.parser import HTMLParser
 from pathlib import Path
 
-from fuzzynav.cli import main
 from fuzzynav.catalog import experiments as registry
+from fuzzynav.cli import main
 from fuzzynav.experiments.claims import CLAIMS
 
 

@@ -7,6 +7,7 @@ import pytest
 from fuzzynav.fuzzy.engine import centroid_rows, compiled, norms
 from fuzzynav.fuzzy.engine.compiled import AND, OR
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
+from fuzzynav.fuzzy.engine.reduce import REDUCTIONS
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from tests.fuzzy.fll_fixtures import ENGINES
@@ -42,7 +43,7 @@ def _shapes(rng, n_terms, size):
     return np.ascontiguousarray(shapes), x
 
 
-@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+@pytest.mark.parametrize("reduction", range(len(REDUCTIONS)), ids=REDUCTIONS)
 def test_integral_skips_only_what_cannot_change_the_result(reduction):
     """Skipping zero activations and samples outside a term's support gives the very bits of
     sampling every term everywhere, for every implication and aggregation."""
@@ -72,7 +73,7 @@ def test_integral_skips_only_what_cannot_change_the_result(reduction):
                 assert (np.isfinite(fast) == (degrees > 0).any(axis=0)).all()
 
 
-@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+@pytest.mark.parametrize("reduction", range(len(REDUCTIONS)), ids=REDUCTIONS)
 def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
     """Units of Maximum aggregation whose supports overlap are max-combined four in one pass
     (compiled._max_units): the very bits of one pass each, the minimum and the product mixed, with

@@ -5,10 +5,10 @@ import json
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.catalog.roles import ROLES, default_system, load_replacement, systems_from_options
 from fuzzynav.cli import main
 from fuzzynav.control.base import thesis_angle_error
-from fuzzynav.catalog.roles import ROLES, default_system, load_replacement, systems_from_options
-from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import FuzzySystem
 from fuzzynav.fuzzy.io import load, save

@@ -21,7 +21,6 @@ from fuzzynav.lookup import Registry, load
 from fuzzynav.storage import read_document
 
 
-
 def _one_loader_per_kind(spec: TaskSpec, registered: list[TaskSpec]) -> None:
     """A model kind is read by one loader: a new task of a known kind must name the same one."""
     for other in registered:

@@ -17,10 +17,10 @@ import sys
 from pathlib import Path
 
 from fuzzynav import progress as progress_bars, validation
+from fuzzynav.catalog.controllers import CONTROLLERS, check_task
+from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.cli import arguments
 from fuzzynav.cli.run import SENSORS_HELP
-from fuzzynav.catalog.roles import make_with_systems, systems_from_options
-from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 

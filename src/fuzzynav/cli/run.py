@@ -12,8 +12,8 @@ import argparse
 import json
 import math
 
-from fuzzynav.cli import arguments
 from fuzzynav.catalog.controllers import available, check_task
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import html
 import json
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from fuzzynav.catalog import experiments as registry
@@ -45,7 +45,7 @@ def record_run(out_dir: Path, key: str, numbers: dict, seconds: float, *, quick:
     write_text_atomic(folder / f"{key}.json", json.dumps(numbers, indent=2, default=float))
     holds, verdict = CLAIMS[key].check(numbers)
     record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "holds": holds,
-              "verdict": verdict, "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
+              "verdict": verdict, "finished": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC")}
     write_text_atomic(folder / RUN_FILE, json.dumps(record, indent=2))
     return record
 

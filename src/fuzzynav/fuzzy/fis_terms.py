@@ -16,8 +16,17 @@ import re
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.membership import (Bell, Gaussian, Linear, MembershipFunction, Ramp, Sigmoid, Singleton,
-                                       Trapezoidal, Triangular)
+from fuzzynav.fuzzy.membership import (
+    Bell,
+    Gaussian,
+    Linear,
+    MembershipFunction,
+    Ramp,
+    Sigmoid,
+    Singleton,
+    Trapezoidal,
+    Triangular,
+)
 
 # .fis name: (class, number of parameters, from .fis parameters, to .fis parameters)
 _MFS = {

@@ -13,8 +13,17 @@ import math
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.membership import (Bell, Gaussian, Linear, MembershipFunction, Ramp, Sigmoid, Singleton,
-                                       Trapezoidal, Triangular)
+from fuzzynav.fuzzy.membership import (
+    Bell,
+    Gaussian,
+    Linear,
+    MembershipFunction,
+    Ramp,
+    Sigmoid,
+    Singleton,
+    Trapezoidal,
+    Triangular,
+)
 
 # FLL name: (arity, builder from the FLL parameters, FLL parameters of a term)
 _TERMS = {

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.jit import jit
+from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.kernels.motion import wrap
 
 GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)

@@ -11,9 +11,30 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import sightings, ts0
-from fuzzynav.kernels.layers import (BACK, BACK_DISTANCE, BACK_SPEED, BACK_STEERING, FLIP, HEADING, LANE, LAST_X,
-                                     LAST_Y, MARGIN, MAX_REVERSE_SPEED, NO_PHASE, PHASE, RADIUS, RECOVERY_TIME,
-                                     START_X, START_Y, T_RECOVERY, TURN, TURN_ANGLE, V_BACK, V_TURN)
+from fuzzynav.kernels.layers import (
+    BACK,
+    BACK_DISTANCE,
+    BACK_SPEED,
+    BACK_STEERING,
+    FLIP,
+    HEADING,
+    LANE,
+    LAST_X,
+    LAST_Y,
+    MARGIN,
+    MAX_REVERSE_SPEED,
+    NO_PHASE,
+    PHASE,
+    RADIUS,
+    RECOVERY_TIME,
+    START_X,
+    START_Y,
+    T_RECOVERY,
+    TURN,
+    TURN_ANGLE,
+    V_BACK,
+    V_TURN,
+)
 
 ALPHA_TURN = math.pi / 5  # the largest steering singleton of Fig IV.7
 LANE_HALF = math.radians(31)  # the rays that must read the lane free to end the turn early

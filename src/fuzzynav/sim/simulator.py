@@ -34,7 +34,6 @@ from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedFo
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import layers, step as step_kernel
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
-from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
@@ -247,7 +246,7 @@ class BatchSimulator:
             self._history["ranges"].append(self._ranges.copy())
             self._history["waypoint"].append(self._status[:, step_kernel.WAYPOINT].copy())
 
-    def run(self) -> "BatchSimulator":
+    def run(self) -> BatchSimulator:
         """Step until every robot has finished; returns ``self`` (see :meth:`outcomes`, :meth:`trace`)."""
         while not self.done:
             self.step()

@@ -43,7 +43,7 @@ class World:
         object.__setattr__(self, "order", order)
 
     @classmethod
-    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> "World":
+    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> World:
         """``World(width, height, obstacles)`` for ``obstacles`` the library has built and checked
         itself and already packed into ``scene`` (the array :func:`fuzzynav.kernels.layout.pack`
         gives for them; :func:`fuzzynav.kernels.courses.pack_walls` for the random wall courses

@@ -31,9 +31,8 @@ from numba import literally
 from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
 from fuzzynav.fuzzy.engine.centroid_rows import applies, max_centroid
 from fuzzynav.fuzzy.engine.implied import max_four, max_min, max_product, sum_min
-from fuzzynav.fuzzy.engine.norms import (ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into,
-                                         tnorm_into)
-from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
+from fuzzynav.fuzzy.engine.norms import ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into, tnorm_into
+from fuzzynav.fuzzy.engine.reduce import centroid_sums, padded, reduce_sampled
 from fuzzynav.jit import jit
 
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree

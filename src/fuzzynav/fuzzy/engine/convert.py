@@ -21,8 +21,15 @@ import math
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine.engine import Engine
-from fuzzynav.fuzzy.engine.model import (Defuzzifier, EngineRule, InputVariable, Operator, OutputVariable,
-                                         Proposition, RuleBlock)
+from fuzzynav.fuzzy.engine.model import (
+    Defuzzifier,
+    EngineRule,
+    InputVariable,
+    Operator,
+    OutputVariable,
+    Proposition,
+    RuleBlock,
+)
 from fuzzynav.fuzzy.membership import KINDS, Linear, Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem

@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from fuzzynav.fuzzy.engine.model import OutputVariable
+from fuzzynav.fuzzy.engine.reduce import REDUCTIONS
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -61,7 +62,6 @@ _EVERY_ROW = np.ones((0, 0), dtype=bool)  # a "triggered" array the kernels neve
 
 def _groups(var: OutputVariable, acts: Activations) -> tuple:
     """Term labels in order of first activation, and the arguments of the compiled grouping."""
-    from fuzzynav.fuzzy.engine import compiled
 
     index: dict = {}
     opens = np.zeros(len(acts.labels), dtype=bool)
@@ -179,6 +179,6 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
     unit_implication = np.array([TNORMS.index(implication) for _, implication in unique], dtype=np.int64)
     out = np.empty(n)
     compiled.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,
-                      SNORMS.index(var.aggregation or "UnboundedSum"), compiled.REDUCTIONS.index(var.defuzzifier.kind),
+                      SNORMS.index(var.aggregation or "UnboundedSum"), REDUCTIONS.index(var.defuzzifier.kind),
                       out)
     return out

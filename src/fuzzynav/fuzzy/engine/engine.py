@@ -32,11 +32,11 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import defuzzify
-from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
+from fuzzynav.fuzzy.engine.model import InputVariable, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear
-from fuzzynav.fuzzy.terms import Scaled
 from fuzzynav.fuzzy.operators import ACTIVATIONS, HEDGES, SNORMS, TNORMS, activate
+from fuzzynav.fuzzy.terms import Scaled
 from fuzzynav.fuzzy.variable import VariableNames
 
 

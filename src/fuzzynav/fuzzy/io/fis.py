@@ -30,11 +30,19 @@ import math
 import re
 
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy.engine import (Defuzzifier, Engine, EngineRule, InputVariable, Operator, OutputVariable,
-                                   Proposition, RuleBlock)
+from fuzzynav.fuzzy.engine import (
+    Defuzzifier,
+    Engine,
+    EngineRule,
+    InputVariable,
+    Operator,
+    OutputVariable,
+    Proposition,
+    RuleBlock,
+)
 from fuzzynav.fuzzy.engine.convert import engine_to_system
-from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
+from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.system import FuzzySystem
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
@@ -63,21 +71,21 @@ class _Lines:
     def __init__(self, text: str, source):
         self.source = source
         self.sections: list[dict] = []
-        for number, raw in enumerate(text.splitlines(), start=1):
+        for line_number, raw in enumerate(text.splitlines(), start=1):
             line = raw.split("%", 1)[0].split("#", 1)[0].strip()
             if not line:
                 continue
             if line.startswith("["):
-                self.sections.append({"name": line, "line": number, "items": []})
+                self.sections.append({"name": line, "line": line_number, "items": []})
             elif not self.sections:
-                raise self.error("text before the first [Section]", number)
+                raise self.error("text before the first [Section]", line_number)
             elif self.sections[-1]["name"] == "[Rules]":
-                self.sections[-1]["items"].append(("rule", line, number))
+                self.sections[-1]["items"].append(("rule", line, line_number))
             else:
                 key, sep, value = line.partition("=")
                 if not sep:
-                    raise self.error(f"expected 'Key=value', got {line!r}", number)
-                self.sections[-1]["items"].append((key.strip(), value.strip(), number))
+                    raise self.error(f"expected 'Key=value', got {line!r}", line_number)
+                self.sections[-1]["items"].append((key.strip(), value.strip(), line_number))
 
     def error(self, message: str, line, field: str | None = None) -> InputError:
         where = f"line {line}" if line else None
