@@ -36,7 +36,7 @@ register_controller(ControllerSpec(
     "thesis Table IV.1, §IV.5.1", GOAL, roles=GSB))
 register_controller(ControllerSpec(
     "fuzzy-5b", "fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
-    "**the default navigator**: the five behaviours on a lidar, steering through the gap that fits the body, "
+    "the default navigator: the five behaviours on a lidar, steering through the gap that fits the body, "
     "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
     "and loop escape; version 1 of this name is fuzzy-5b-rays",
     "thesis §IV.7; Dolgov et al. 2008", GOAL, "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=2))
