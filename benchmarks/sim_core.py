@@ -37,8 +37,8 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.batched import ConstantCommand
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.batched import ConstantCommand
 from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator

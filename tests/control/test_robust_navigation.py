@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fuzzynav.control.recovery import recovery_system
 from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
+from fuzzynav.control.recovery import recovery_system
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 

@@ -11,7 +11,6 @@ from fuzzynav.viz.trajectories import merged_changes
 from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
-
 RANK = (0, 1)
 
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from fuzzynav.cli import main
 from fuzzynav.catalog import experiments as registry
+from fuzzynav.cli import main
 from fuzzynav.experiments.claims import NOT_REPRODUCED, PARTLY, REPRODUCED, Check, Claim, verdict_of
 
 

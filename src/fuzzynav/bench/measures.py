@@ -22,7 +22,7 @@ import json
 import math
 from pathlib import Path
 
-from fuzzynav.bench.files import write_atomic
+from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.planning import path_length, shortest_path
 from fuzzynav.world.scenario import Scenario
 
@@ -52,7 +52,7 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
         path = shortest_path(scenario.world.standing(), scenario.start, scenario.goal.position, radius)
         length = None if path is None else round(max(path_length(path) - scenario.goal.tolerance, 1e-6), 6)
         if file is not None:
-            write_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
+            write_text_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
     _MEMORY[key] = length
     return length
 

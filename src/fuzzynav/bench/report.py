@@ -20,8 +20,8 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from fuzzynav.bench.campaign import Plan
-from fuzzynav.bench.files import write_atomic
 from fuzzynav.bench.stats import summarise
+from fuzzynav.storage import write_text_atomic
 
 
 def _pct(block: dict) -> str:
@@ -142,9 +142,9 @@ def write_reports(plan: Plan, rows: list[dict], out: Path, *, gallery: int = 6, 
     """Write every report file of the module docstring into ``out``; returns the summary dict."""
     records = summarise(rows)
     summary = {"arguments": arguments or {}, "results": records}
-    write_atomic(out / "summary.json", json.dumps(summary, indent=1) + "\n")
+    write_text_atomic(out / "summary.json", json.dumps(summary, indent=1) + "\n")
     text = markdown(records)
-    write_atomic(out / "summary.md", text)
+    write_text_atomic(out / "summary.md", text)
     images = []
     if rows:
         plot_rates(records, out / "rates.png")
@@ -154,5 +154,5 @@ def write_reports(plan: Plan, rows: list[dict], out: Path, *, gallery: int = 6, 
             name = f"failures-{label}.png"
             if gallery > 0 and plot_failures(plan, rows, label, out / name, gallery):
                 images.append(name)
-    write_atomic(out / "index.html", index_html(text, images))
+    write_text_atomic(out / "index.html", index_html(text, images))
     return summary

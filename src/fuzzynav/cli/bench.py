@@ -58,6 +58,7 @@ def register(subparsers) -> None:
 
 def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     from fuzzynav.bench.cells import build_controller, is_model_file
+    from fuzzynav.catalog.controllers import check_task
 
     specs = [spec.strip() for spec in text.split(",") if spec.strip()]
     if not specs:
@@ -68,7 +69,9 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
             if not Path(spec).is_file():
                 raise InputError("no such model file", source=spec, field="--controllers")
             spec = str(Path(spec).resolve())
-        try:  # unknown names and bad model files fail before any run
+        try:  # unknown names, controllers of other tasks and bad model files fail before any run
+            if not is_model_file(spec):
+                check_task(spec, "goal", field="--controllers")  # a campaign's worlds are goal tasks
             build_controller(spec)
         except InputError as error:
             if is_model_file(spec):

@@ -19,7 +19,6 @@ from pathlib import Path
 
 from fuzzynav.cli import arguments
 
-
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
                 "target": ("capture_time_s",)}

@@ -17,10 +17,10 @@ import sys
 from pathlib import Path
 
 from fuzzynav import progress as progress_bars, validation
+from fuzzynav.catalog.controllers import CONTROLLERS, check_task
+from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.cli import arguments
 from fuzzynav.cli.run import SENSORS_HELP
-from fuzzynav.catalog.roles import make_with_systems, systems_from_options
-from fuzzynav.catalog.controllers import CONTROLLERS
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 
@@ -57,6 +57,7 @@ def run(args) -> int:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     systems = systems_from_options(args.controller, args.fis) if args.fis else None
     if args.controller is not None:
+        check_task(args.controller, "goal")  # every generated world is a goal task
         make_with_systems(args.controller, systems)  # unknown names fail before any world is drawn
 
     def progress(i, run):

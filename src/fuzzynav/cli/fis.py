@@ -26,9 +26,9 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav import validation
+from fuzzynav.catalog.roles import ROLES, default_system
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
-from fuzzynav.catalog.roles import ROLES, default_system
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.export_c import FIXED_FORMATS

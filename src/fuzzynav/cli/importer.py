@@ -34,8 +34,8 @@ def register(subparsers) -> None:
 def run(args) -> int:
     import yaml
 
-    from fuzzynav.bench.files import write_atomic
     from fuzzynav.bench.suites import REFERENCE_FILE
+    from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
     from fuzzynav.world.scenario import scenario_from_dict
 
@@ -54,7 +54,7 @@ def run(args) -> int:
         path = Path(name)
         document = barn_scenario(read_posts(path), path.stem, args.scale)
         scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
-        write_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
+        write_text_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
         if path_file is None:
@@ -62,6 +62,6 @@ def run(args) -> int:
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         references[path.stem] = entry
-    write_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
+    write_text_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
     print(f"{len(args.worlds)} BARN worlds -> {out}", file=sys.stderr)
     return 0

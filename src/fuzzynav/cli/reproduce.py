@@ -13,8 +13,8 @@ import time
 from pathlib import Path
 
 from fuzzynav import progress
-from fuzzynav.cli import arguments
 from fuzzynav.catalog import experiments as registry
+from fuzzynav.cli import arguments
 
 
 def register(subparsers) -> None:

@@ -12,8 +12,8 @@ import argparse
 import json
 import math
 
+from fuzzynav.catalog.controllers import available, check_task
 from fuzzynav.cli import arguments
-from fuzzynav.catalog.controllers import available
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
@@ -70,6 +70,7 @@ def run(args) -> int:
 
         controller = load_controller(args.model)
     else:
+        check_task(args.controller, scenario.task)
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
                         sensors=None if args.sensors is None else named_ring(args.sensors))

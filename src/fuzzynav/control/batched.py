@@ -65,7 +65,7 @@ class CompiledNavigator(BatchController):
         """Forget the modes, turns and hits (a new episode)."""
         self._state = None
 
-    def for_robot(self, robot) -> "CompiledNavigator":
+    def for_robot(self, robot) -> CompiledNavigator:
         """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
         scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
         body radius and, for the five-behaviour navigators, a top speed no higher than the robot's. The default

@@ -21,7 +21,6 @@ default is Table IV.1.
 from __future__ import annotations
 
 import functools
-import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -30,8 +29,6 @@ from fuzzynav.control.batched import CompiledNavigator, navigator_params
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import GOAL_SEEKING
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-
-ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
 
 
 @functools.lru_cache(maxsize=1)

@@ -98,7 +98,7 @@ class RobustNavigator(BatchController):
         """The ring the navigator reads by default (``None``: the thesis' seven rays)."""
         return getattr(self.navigator, "sensors", None)
 
-    def for_robot(self, robot, navigator: bool = True) -> "RobustNavigator":
+    def for_robot(self, robot, navigator: bool = True) -> RobustNavigator:
         """Size the navigator (unless ``navigator`` is False) and the layers for ``robot``
         (:class:`TricycleParams`)."""
         if navigator:

@@ -69,7 +69,7 @@ class YieldingNavigator(BatchController):
         self.inner.reset(rng)
         self._previous = None
 
-    def for_robot(self, robot) -> "YieldingNavigator":
+    def for_robot(self, robot) -> YieldingNavigator:
         if callable(getattr(self.inner, "for_robot", None)):
             self.inner.for_robot(robot)
         self.max_speed = min(self.max_speed, robot.max_speed)

@@ -14,12 +14,12 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels import gaps, guard, ts0
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
+from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.kernels.motion import wrap
 
 GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
-ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7 (the full-lock turn)
 MODE, HELD, SIDE, COUNT = range(4)
 # params: shared, then per navigator
 WHEELBASE, DWELL, LANE, ROOM_MARGIN, STOP_MARGIN, V_TURN, TURN_RADIUS, BODY, HALF_CONE = range(9)

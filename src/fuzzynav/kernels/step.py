@@ -22,10 +22,9 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import beams, layers, robust, scene, traffic
 from fuzzynav.jit import jit
-from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
-from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
+from fuzzynav.kernels import beams, layers, robust, scene, traffic
+from fuzzynav.kernels.motion import RADIUS, ROBOT_FIELDS, advance, clip, wrap
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
                                "goal_y", "n_angles", "half_beam")

@@ -3,8 +3,8 @@
 :class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
 (:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:
 
-1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``) decides
-   inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
+1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``, the
+   optional hooks of :mod:`fuzzynav.control.hooks`) decides inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
    returning ``(steering (N,), speed (N,))`` or ``(steering, speed, behaviours)``, or
    ``controller.act(obs)`` per robot (one deep copy of the controller per robot when N > 1);
 2. clip the command to the robot's limits (path tasks: speed = the path's constant speed);
@@ -34,10 +34,10 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
+from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
-from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
@@ -63,7 +63,7 @@ def default_ring(scenario: Scenario, controller) -> SensorRing:
     if scenario.sensors is not None:
         return named_ring(scenario.sensors)
     first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
-    return getattr(first, "sensors", None) or SensorRing()
+    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
 
 
 class BatchSimulator:
@@ -98,11 +98,11 @@ class BatchSimulator:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
         for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
-            if callable(getattr(copied, "prepare", None)):
+            if isinstance(copied, MapAware):
                 copied.prepare(scenario)
         self.controllers = copies
         for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
-            if callable(getattr(each, "for_robot", None)):
+            if isinstance(each, SizedForRobot):
                 each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
@@ -110,8 +110,8 @@ class BatchSimulator:
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._noisy = self.sensors.noise_std > 0
         self._set_traffic(scenario.world)
-        compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
-        self._compiled = compiled if callable(compiled) else None
+        compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
+        self._compiled = copies[0].compiled if compiled else None
         self.reset()
 
     # -- episode -----------------------------------------------------------------------------
@@ -290,7 +290,7 @@ class BatchSimulator:
             self._history["waypoint"].append(self._status[:, step_kernel.WAYPOINT].copy())
             self._history["obstacles"].append(self._offsets(self.k))
 
-    def run(self) -> "BatchSimulator":
+    def run(self) -> BatchSimulator:
         """Step until every robot has finished; returns ``self`` (see :meth:`outcomes`, :meth:`trace`)."""
         while not self.done:
             self.step()

@@ -11,7 +11,6 @@ of the episode); every frame shows the time and the active behaviour.
 
 from __future__ import annotations
 
-
 import numpy as np
 from matplotlib import patches
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -19,8 +18,8 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 from PIL import Image
 
-from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
+from fuzzynav.storage import atomic_write
 from fuzzynav.viz.moving import MovingArtists
 from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style
 from fuzzynav.viz.trajectories import draw_world, sensor_segments

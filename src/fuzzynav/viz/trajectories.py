@@ -22,8 +22,8 @@ from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
-from fuzzynav.storage import savefig_atomic
 from fuzzynav.sim.trace import Trace
+from fuzzynav.storage import savefig_atomic
 from fuzzynav.viz.moving import draw_moving
 from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.world.scenario import Scenario

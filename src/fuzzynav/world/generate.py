@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world import traffic
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
@@ -43,7 +44,7 @@ POINT_CLEARANCE = 1.5  # m of free space around start and goal
 BORDER = 2.5  # m, start and goal keep this far from the boundary walls (room to turn from any heading)
 GRID = 0.2  # m, occupancy-grid cell
 MAX_DRAWS = 200
-TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(np.pi / 5)  # m, l / tan(α_max) = 0.69 m
+TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(ALPHA_MAX)  # m, l / tan(α_max) = 0.69 m
 
 
 def _u_trap(rng, start, goal) -> list[dict]:

@@ -55,7 +55,7 @@ class World:
         """Indices of the obstacles that move (in obstacle order)."""
         return tuple(i for i, motion in enumerate(self.motions) if motion is not None)
 
-    def standing(self) -> "World":
+    def standing(self) -> World:
         """This world without its moving obstacles (itself when none moves)."""
         if not self.motions:
             return self
@@ -69,7 +69,7 @@ class World:
         return layout.mover_rows(self.scene, [column[i] for i in self.moving])
 
     @classmethod
-    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> "World":
+    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> World:
         """``World(width, height, obstacles)`` for ``obstacles`` the library has built and checked
         itself and already packed into ``scene`` (the array :func:`fuzzynav.kernels.layout.pack`
         gives for them; :func:`fuzzynav.kernels.courses.pack_walls` for the random wall courses

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -34,6 +35,9 @@ from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.storage import save_document, savefig_atomic
+
+if TYPE_CHECKING:
+    from fuzzynav.learn.envs import RobotEnv
 
 PI = math.pi
 BATCH = 50  # parallel episodes per batch (random starts)
