@@ -253,6 +253,7 @@ def _plot(args) -> int:
 def _write(text: str, output: str | None) -> None:
     if output and output != "-":
         write_text_atomic(output, text)
+        print(f"wrote {output}", file=sys.stderr)
     else:
         sys.stdout.write(text)
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 
 from fuzzynav.cli import arguments
 from fuzzynav.catalog.controllers import available
@@ -101,10 +102,12 @@ def run(args) -> int:
         from fuzzynav.viz.trajectories import plot_episode
 
         plot_episode(trace, scenario, args.plot, rays=args.rays)
+        print(f"wrote {args.plot} (trajectory and commands)", file=sys.stderr)
     if args.animate:
         from fuzzynav.viz.animation import animate_episode
 
-        animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
+        frames = animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
+        print(f"wrote {args.animate} ({frames} frames)", file=sys.stderr)
     if args.json:
         print(json.dumps(numbers))
     else:

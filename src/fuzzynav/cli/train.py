@@ -59,4 +59,6 @@ def run(args) -> int:
         from fuzzynav.cli.printing import result_lines
 
         print("\n".join(result_lines(result)))
+        if args.curve is not None:
+            print(f"learning curve: {args.curve}")
     return 0
