@@ -51,15 +51,14 @@ def scenario_for(controller: str) -> str:
 
 
 def warm_up(controllers: list[str] | None = None) -> float:
-    """Run each of ``controllers`` (default: :func:`default_controllers`) for :data:`STEPS_S` on :func:`scenario_for` its task, with a
-    progress bar on a terminal (else one line per controller on stderr); returns the seconds taken."""
+    """Run each of ``controllers`` (default: :func:`default_controllers`) for :data:`STEPS_S` on
+    :func:`scenario_for` its task, with a progress bar on a terminal (else one line per controller
+    on stderr); returns the seconds taken. Callers say first what is happening (:func:`announce`)."""
     from fuzzynav import progress
     from fuzzynav.catalog.controllers import make_controller
-    from fuzzynav.jit import NOTICE
     from fuzzynav.sim import run_episode
     from fuzzynav.world.scenario_file import open_scenario
 
-    NOTICE.silence()  # this command reports the compilation itself
     start = time.perf_counter()
     controllers = controllers or default_controllers()
     for name in controllers:
@@ -77,9 +76,13 @@ def warm_up(controllers: list[str] | None = None) -> float:
 
 
 def announce() -> None:
-    """The first line of a command that may compile: what is about to happen (before any import of the kernels)."""
+    """The first line of a command that compiles up front: what is about to happen, said before
+    numba is imported; the notice of :mod:`fuzzynav.jit` is then not needed."""
     print("compiling the simulator's kernels if this is the first run (numba; later runs load them from the cache)",
           file=sys.stderr, flush=True)
+    from fuzzynav.jit import NOTICE
+
+    NOTICE.silence()
 
 
 def run(args) -> int:
