@@ -221,8 +221,8 @@ class BatchSimulator:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
         try:
-            self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
-                                             self._ranges, self._status)
+            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._scene,
+                                             self.k, self._state, self._ranges, self._status)
         except ValueError as error:  # a compiled navigator refusing a non-finite input
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
