@@ -36,7 +36,7 @@ fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out"), help="output folder")
     parser.add_argument("--scenario", action="append", metavar="NAME|FILE",
                         help="only this built-in scenario or scenario file (repeatable)")
-    parser.add_argument("--controllers", metavar="A,B", type=lambda text: [n for n in text.split(",") if n],
+    parser.add_argument("--controllers", metavar="A,B", type=arguments.names,
                         help="run these controllers (comma-separated) instead of each scenario's own list")
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
 
