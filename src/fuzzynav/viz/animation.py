@@ -23,6 +23,7 @@ from PIL import Image
 
 from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
+from fuzzynav.viz.moving import MovingArtists
 from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
@@ -54,7 +55,8 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
-    draw_world(ax, scenario, trace)
+    draw_world(ax, scenario, trace, moving_obstacles=False)
+    obstacles = MovingArtists(ax, scenario, trace)  # moving obstacles and their tracks, frame by frame
     behaviour_legend(ax, trace)
     every = max(1, -(-len(trace.sensor_angles) // MAX_BEAMS))
     frames = np.unique(np.linspace(0, len(trace.pose) - 1, min(max_frames, len(trace.pose))).round().astype(int))
@@ -70,7 +72,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     ax.add_collection(beams)
     target, = ax.plot([], [], "*", color=GOAL_COLOUR, markersize=12)
     title = ax.set_title(f"{trace.scenario} — {trace.controller}  t = {trace.t[-1]:.1f} s", fontsize=9)
-    moving = (trail, beams, body, heading, target, title)
+    moving = (*obstacles.artists, trail, beams, body, heading, target, title)
     for artist in moving:
         artist.set_animated(True)
     canvas.draw()  # the one full draw: layout, world, axes
@@ -80,6 +82,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     images = []
     for k in frames:
         pose = trace.pose[k]
+        obstacles.show(k)
         trail.set_segments(segments[:k])
         trail.set_color(colours[:k])
         body.center = pose[:2]
