@@ -32,8 +32,11 @@ def register(subparsers) -> None:
     parser = arguments.command(subparsers, "bench", run,
                                help="run navigators against each other on suites of worlds",
                                description="Run every controller on every world of the suites (x seeds), write "
-                                           "runs.csv as runs finish, then rates with 95 %% Wilson intervals, medians, "
-                                           "plots and index.html.")
+                                           "runs.csv as runs finish, then rates with 95 % Wilson intervals, medians, "
+                                           "plots and index.html.",
+                               example="""
+fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
+fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench""")
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",

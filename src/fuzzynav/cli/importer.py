@@ -20,11 +20,15 @@ def register(subparsers) -> None:
         "import",
         help="convert standard benchmark worlds into scenario files",
         description="Convert worlds of a standard benchmark into scenario files (`fuzzynav bench DIR` runs them).",
+        **arguments.with_example("fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5"),
     )
     formats = parser.add_subparsers(dest="format", metavar="FORMAT", required=True)
     barn = arguments.command(formats, "barn", run, help="BARN worlds (Gazebo .world files of the BARN Challenge)",
                              description="BARN worlds: posts become circles; the challenge's start, goal "
-                                         "(1 m tolerance), 100 s limit and optimal path (for its score).")
+                                         "(1 m tolerance), 100 s limit and optimal path (for its score).",
+                             example="""
+fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5
+fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out barn-bench""")
     barn.add_argument("worlds", nargs="+", metavar="WORLD.world", help="BARN world files (world_N.world)")
     barn.add_argument("--out", required=True, metavar="DIR", help="folder for the scenario files")
     barn.add_argument("--scale", type=float, default=1.0, metavar="S",

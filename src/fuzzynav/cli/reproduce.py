@@ -22,7 +22,11 @@ def register(subparsers) -> None:
                                help="reproduce a figure or table of the thesis",
                                description="Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and "
                                            "<ID>.json numbers, DIR/index.html the thesis' claim beside our figure for "
-                                           "each.")
+                                           "each.",
+                               example="""
+fuzzynav reproduce --list
+fuzzynav reproduce fig-V-28 fig-IV-23 --out figures/
+fuzzynav reproduce all --quick --out figures/""")
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")

@@ -259,8 +259,9 @@ class BatchSimulator:
         self.k += 1
         try:
             offsets = self._offsets(self.k)
-            self._running = step_kernel.step(*self._navigator, self._setup, self._base, self._movers, offsets,
-                                             self._scene, self.k, self._state, self._ranges, self._status)
+            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
+                                             self._movers, offsets, self._scene, self.k, self._state, self._ranges,
+                                             self._status)
         except ValueError as error:  # a compiled navigator refusing a non-finite input
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
