@@ -25,6 +25,12 @@ CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.robust:fuzzy_2b_thesis",
                                   "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
 CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
                                   "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
+CONTROLLERS["fuzzy-2b-layered"] = ("fuzzynav.control.robust:fuzzy_2b_layered",
+                                   "fuzzy-2b-thesis with the anti-orbit guard, turning room, safety stop and hysteresis")
+CONTROLLERS["fuzzy-5b-layered"] = ("fuzzynav.control.robust:fuzzy_5b_layered",
+                                   "fuzzy-5b-thesis with the anti-orbit guard, turning room, safety stop and hysteresis")
+CONTROLLERS["goal-seeking-guarded"] = ("fuzzynav.control.goal_seeking:make_guarded",
+                                       "goal-seeking with the anti-orbit guard (this package's)")
 CONTROLLERS["fuzzy-2b-gap"] = ("fuzzynav.control.avoidance:make_gap",
                                "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
 CONTROLLERS["fuzzy-5b-gap"] = ("fuzzynav.control.five_behaviours:make_gap",

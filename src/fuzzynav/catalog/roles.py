@@ -3,7 +3,7 @@
 Every fuzzy controller names its systems by role — ``goal-seeking``: ``gsb`` (Table IV.1);
 ``fuzzy-2b``: ``gsb`` and ``oab`` (Table IV.2); ``fuzzy-5b``: ``gsb``, ``foa``, ``roa``, ``loa``,
 ``vrb`` (§IV.7), the same for their ``-thesis``, ``-gap`` and ``-rays`` variants and
-``fuzzy-5b-gap-robust`` (another name of ``fuzzy-5b``); ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
+``fuzzy-5b-gap-robust`` (another name of ``fuzzy-5b``); ``wall-follow``: ``wall`` (Table VI.2); ``fuzzy-tracker``: ``tracker`` (Table V.1) — and its factory accepts
 ``systems={role: system}``. A replacement comes from any file :func:`fuzzynav.fuzzy.io.load`
 reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the role: the same input variables in
 the same order (the controller feeds them by position) and the same outputs; otherwise an
@@ -24,10 +24,13 @@ ROLES: dict[str, dict[str, str]] = {
     "fuzzy-2b": {"gsb": "goal-seeking", "oab": "obstacle-avoidance"},
     "fuzzy-5b": {"gsb": "goal-seeking", "foa": "foa", "roa": "roa", "loa": "loa", "vrb": "vrb"},
     "wall-follow": {"wall": "wall-follow"},
+    "fuzzy-tracker": {"tracker": "tracking"},
 }
 ROLES["fuzzy-2b-thesis"], ROLES["fuzzy-5b-thesis"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]  # the same rule bases
 ROLES["fuzzy-2b-gap"], ROLES["fuzzy-5b-gap"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]
 ROLES["fuzzy-5b-rays"], ROLES["fuzzy-5b-gap-robust"] = ROLES["fuzzy-5b"], ROLES["fuzzy-5b"]
+ROLES["fuzzy-2b-layered"], ROLES["fuzzy-5b-layered"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]
+ROLES["goal-seeking-guarded"] = ROLES["goal-seeking"]
 
 
 def roles_of(controller: str) -> dict[str, str]:

@@ -52,7 +52,7 @@ import functools
 import math
 from collections.abc import Mapping
 
-from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, LAYERS, CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
@@ -75,9 +75,9 @@ class TwoBehaviourNavigator(CompiledNavigator):
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
                  stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
-                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK, layers=tuple(LAYERS)):
         gaps = self._variant(gap, gap_margin, gap_look)
-        self._build(systems, default_systems, navigator_params(
+        self._build(systems, default_systems, navigator_params(**layer_flags(layers),
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_turn, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             detection=detection, sector=sector, front=front, risk=risk, release=release,

@@ -78,7 +78,7 @@ import math
 from collections.abc import Mapping
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, LAYERS, CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.systems import goal_seeking
@@ -108,14 +108,14 @@ class FiveBehaviourNavigator(CompiledNavigator):
                  params: supervisor.SupervisorParams | None = None, wheelbase: float = DEFAULT_PARAMS.wheelbase,
                  dwell: int = 10, lane: float = nav.D_M, room_margin: float = 0.5, memory: int = 10,
                  stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
-                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK, layers=tuple(LAYERS)):
         gaps = self._variant(gap, gap_margin, gap_look)
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
         p = self.supervisor
         self._build(systems, lambda: default_systems(d_m, d_s, d_max), navigator_params(
-            wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
+            **layer_flags(layers), wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,
             kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear,

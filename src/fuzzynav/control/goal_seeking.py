@@ -26,7 +26,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import GOAL_SEEKING
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -70,10 +70,19 @@ class GoalSeekingController(CompiledNavigator):
     name = "goal-seeking"
     kind, labels, roles = GOAL_SEEKING, ("GSB",), ("gsb",)
 
-    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None):
-        self._build(systems, default_systems, navigator_params(wheelbase=wheelbase))
+    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None,
+                 layers=("orbit_guard",)):
+        self._build(systems, default_systems, navigator_params(wheelbase=wheelbase, **layer_flags(layers)))
 
 
 def make(**options) -> GoalSeekingController:
-    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
-    return GoalSeekingController(**options)
+    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`:
+    Table IV.1 as published, without the anti-orbit guard (``layers=("orbit_guard",)`` adds it)."""
+    return GoalSeekingController(**{"layers": (), **options})
+
+
+def make_guarded(**options) -> GoalSeekingController:
+    """Factory of ``goal-seeking-guarded``: Table IV.1 with the anti-orbit guard."""
+    controller = GoalSeekingController(**options)
+    controller.name = "goal-seeking-guarded"
+    return controller

@@ -224,10 +224,23 @@ def fuzzy_2b(*, recovery: bool = True, escape: bool = True, **options) -> Robust
 
 
 def fuzzy_5b_thesis(**options):
-    """``fuzzy-5b-thesis``: the five-behaviour navigator of §IV.7 as published (no layers)."""
-    return _five("fuzzy-5b-thesis", **options)
+    """``fuzzy-5b-thesis``: the five-behaviour navigator of §IV.7 as published — none of the
+    layers of :data:`fuzzynav.control.batched.LAYERS` unless ``layers=`` names some."""
+    return _five("fuzzy-5b-thesis", **{"layers": (), **options})
 
 
 def fuzzy_2b_thesis(**options):
-    """``fuzzy-2b-thesis``: the two-behaviour navigator of Fig IV.9 as published (no layers)."""
-    return _two("fuzzy-2b-thesis", **options)
+    """``fuzzy-2b-thesis``: the two-behaviour navigator of Fig IV.9 as published — none of the
+    layers of :data:`fuzzynav.control.batched.LAYERS` unless ``layers=`` names some."""
+    return _two("fuzzy-2b-thesis", **{"layers": (), **options})
+
+
+def fuzzy_5b_layered(**options):
+    """``fuzzy-5b-layered``: ``fuzzy-5b-thesis`` with every layer of
+    :data:`~fuzzynav.control.batched.LAYERS` (what ``fuzzy-5b-thesis`` ran before it was stripped)."""
+    return _five("fuzzy-5b-layered", **options)
+
+
+def fuzzy_2b_layered(**options):
+    """``fuzzy-2b-layered``: ``fuzzy-2b-thesis`` with every layer of :data:`~fuzzynav.control.batched.LAYERS`."""
+    return _two("fuzzy-2b-layered", **options)

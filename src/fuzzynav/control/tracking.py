@@ -155,6 +155,12 @@ class ModelTracker(AngleErrorTracker):
         return np.clip(alpha, -self.max_steering, self.max_steering)
 
 
-def fuzzy_tracker(**options) -> FuzzyTracker:
-    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``)."""
+def fuzzy_tracker(systems=None, **options) -> FuzzyTracker:
+    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``;
+    ``systems={"tracker": system}``, its rule base by role, replaces Table V.1)."""
+    unknown = set(systems or {}) - {"tracker"}
+    if unknown:
+        raise InputError(f"unknown role(s) {', '.join(sorted(unknown))}; fuzzy-tracker has tracker", field="systems")
+    if systems:
+        options["system"] = systems["tracker"]
     return FuzzyTracker(**options)

@@ -20,6 +20,9 @@
   (§V.5.1; the thesis prints no motion parameters, the scenarios ``fig-V-32``, ``fig-V-33a/b``,
   ``fig-V-34a/b`` choose them).
 
+The fuzzy tracker's Table V.1 is the role ``tracker`` of :mod:`fuzzynav.experiments.rule_bases`
+(``reproduce --fis tracker=FILE`` replaces it, in the surface of Fig V.7 too). Every run reports
+its route (:func:`fuzzynav.experiments.routes.route`) beside its errors or capture time.
 Path figures run the trackers as in the thesis (``corner_radius=0``) unless said otherwise.
 Every function has the registry signature ``(out_dir, quick, seed) -> dict`` and writes PNGs;
 the episodes are short (a few seconds in all), so ``quick`` changes nothing but the ANFIS epochs.
@@ -32,7 +35,8 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.experiments import routes
+from fuzzynav.experiments.rule_bases import controller, system
 from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.viz import palette
@@ -42,8 +46,8 @@ from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
 COLOURS = {name: colour for name, (colour, _) in palette.TRACKERS.items()}
-PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
-PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
+PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s", "route")
+PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m", "route")
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
@@ -61,19 +65,24 @@ def _figure(doc: str, draw, *arguments):
     return figure
 
 
-def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.7: control surface of Table V.1."""
-    from fuzzynav.fuzzy.plot import plot_surface, surface
-    from fuzzynav.fuzzy.systems import tracking
+PEAKS = (-np.pi / 2, -np.pi / 6, 0.0, np.pi / 6, np.pi / 2)  # NG, NM, Z, PM, PG of θ_er and dθ_er (Fig V.5)
 
-    system = tracking()
-    _, _, alpha = surface(system)
-    figure = plot_surface(system)
+
+def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.7: control surface of Table V.1, and its value at the 25 peaks of the partition
+    (rows θ_er, columns dθ_er: there the surface is the table's singleton)."""
+    from fuzzynav.fuzzy.plot import plot_surface, surface
+
+    tracker = system("tracker")
+    _, _, alpha = surface(tracker)
+    figure = plot_surface(tracker)
     ax = figure.axes[0]
     ax.set(xlabel="θ_er (rad)", ylabel="dθ_er (rad per step of 0.1 s)", zlabel="steering α (rad)",
            title="Fuzzy tracker, Table V.1: control surface")
+    grid = np.array([[e, de] for e in PEAKS for de in PEAKS])
+    at_peaks = tracker.evaluate(grid)[:, 0].reshape(5, 5)
     return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
-            "alpha_max_rad": float(alpha.max())}
+            "alpha_max_rad": float(alpha.max()), "alpha_at_peaks_rad": np.round(at_peaks, 6).tolist()}
 
 
 def _training_figure(kind: str, out_dir, quick: bool, seed: int) -> dict:
@@ -100,8 +109,8 @@ def fig_v_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
 def _run(scenario, name: str, seed: int, **options):
     """One episode of tracker ``name`` (the learned ones trained with ``seed``): trace and metrics."""
     training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}
-    trace = run_episode(scenario, make_controller(name, **training_seed, **options), seed=seed)
-    return trace, metrics(trace, scenario)
+    trace = run_episode(scenario, controller(name, **training_seed, **options), seed=seed)
+    return trace, {**metrics(trace, scenario), "route": routes.route(trace)}
 
 
 def _runs(scenario_name: str, seed: int, **options):
