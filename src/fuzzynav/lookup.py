@@ -18,13 +18,18 @@ def descriptions(table: dict[str, tuple[str, str]]) -> dict[str, str]:
     return {name: description for name, (_, description) in sorted(table.items())}
 
 
-def resolve(table: dict[str, tuple[str, str]], name: str, *, what: str, field: str, listing: str | None = None):
-    """The object registered as ``name``; an unknown name is an :class:`InputError` on ``field``
-    that suggests close names and ends with ``listing`` (default: every known name)."""
-    if name not in table:
-        close = difflib.get_close_matches(name, table, n=3)
+def require(name: str, names, *, what: str, field: str, listing: str | None = None) -> None:
+    """Nothing if ``name`` is one of ``names``; else an :class:`InputError` on ``field`` that
+    suggests close names and ends with ``listing`` (default: every known name)."""
+    if name not in names:
+        close = difflib.get_close_matches(name, list(names), n=3)
         hint = f" (did you mean {', '.join(close)}?)" if close else ""
-        raise InputError(f"unknown {what} {name!r}{hint}; {listing or 'known: ' + ', '.join(sorted(table))}",
+        raise InputError(f"unknown {what} {name!r}{hint}; {listing or 'known: ' + ', '.join(sorted(names))}",
                          field=field)
+
+
+def resolve(table: dict[str, tuple[str, str]], name: str, *, what: str, field: str, listing: str | None = None):
+    """The object registered as ``name``; an unknown name is an :class:`InputError` (:func:`require`)."""
+    require(name, table, what=what, field=field, listing=listing)
     module_name, attribute = table[name][0].split(":")
     return getattr(import_module(module_name), attribute)

@@ -1,12 +1,15 @@
-"""``reproduce --out DIR`` writes DIR/<id>/ and an offline DIR/index.html: claim beside figure."""
+"""``reproduce --out DIR`` writes DIR/<id>/ (numbers, claim.json with checks and verdict) and an
+offline DIR/index.html: claim beside figure; experiments are specs that carry their claim."""
 
 import json
 from html.parser import HTMLParser
 from pathlib import Path
 
+import pytest
+
 from fuzzynav.cli import main
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.experiments.claims import CLAIMS
+from fuzzynav.experiments.claims import NOT_REPRODUCED, PARTLY, REPRODUCED, Check, Claim, verdict_of
 
 
 class Page(HTMLParser):
@@ -34,8 +37,23 @@ def read_page(folder: Path) -> tuple[Page, str]:
     return page, text
 
 
-def test_every_experiment_has_a_claim():
-    assert set(CLAIMS) == set(registry.available())
+def claim_of(key):
+    return registry.spec(key).claim
+
+
+def test_every_experiment_carries_a_claim_and_a_thesis_reference():
+    for key, spec in registry.specs().items():
+        assert isinstance(spec.claim, Claim) and spec.claim.thesis and spec.claim.asserted, key
+        assert spec.reference, key
+        assert callable(spec.function()), key
+
+
+def test_ids_list_in_the_thesis_order():
+    ids = list(registry.available())
+    assert ids.index("fig-V-7") < ids.index("fig-V-10") < ids.index("fig-V-34")
+    assert ids.index("fig-IV-23") < ids.index("fig-V-7") < ids.index("fig-VI-1")
+    assert ids.index("fig-VI-4") < ids.index("table-VI-1") < ids.index("fig-VI-8")
+    assert ids.index("fig-VI-24") < ids.index("fig-VI-28") < ids.index("fig-VI-29")
 
 
 def test_index_puts_each_claim_beside_its_figure_and_works_offline(tmp_path, capsys):
@@ -46,26 +64,64 @@ def test_index_puts_each_claim_beside_its_figure_and_works_offline(tmp_path, cap
     for src in page.images:
         assert (tmp_path / src).is_file(), src
     assert {src.split("/")[0] for src in page.images} == {"fig-V-7", "fig-VI-28"}
-    assert CLAIMS["fig-VI-28"].thesis in text and "claim holds" in text and "run time" in text
+    assert claim_of("fig-VI-28").thesis in text and "reproduced" in text and "run time" in text
     record = json.loads((tmp_path / "fig-VI-28" / "run.json").read_text())
-    assert record["holds"] and record["quick"] and record["seconds"] > 0
-    assert "sharp corner (Fig VI.28): collision" in record["verdict"]
-    # a later run adds its section to the same page
+    assert record["verdict"] == REPRODUCED and record["quick"] and record["seconds"] > 0
+    claim = json.loads((tmp_path / "fig-VI-28" / "claim.json").read_text())
+    assert set(claim) >= {"thesis", "checks", "verdict"} and claim["verdict"] == REPRODUCED
+    corner = next(c for c in claim["checks"] if c["name"] == "sharp corner (Fig VI.28)")
+    assert corner == {"name": "sharp corner (Fig VI.28)", "value": "collision", "target": "collision", "pass": True,
+                      "source": "thesis"}
+    # a later run adds its section to the same page, in the thesis' order
     assert main(["reproduce", "fig-IV-13", "--quick", "--out", str(tmp_path)]) == 0
     assert read_page(tmp_path)[0].sections == ["fig-IV-13", "fig-V-7", "fig-VI-28"]
     assert "report:" in capsys.readouterr().out
 
 
 def test_a_claim_that_does_not_hold_is_reported_as_such():
-    holds, verdict = CLAIMS["fig-VI-28"].check({"fig-VI-27": {"outcome": "reached"},
-                                                "fig-VI-28": {"outcome": "reached"}})
-    assert not holds and "sharp corner (Fig VI.28): reached" in verdict
-    holds, verdict = CLAIMS["table-VI-1"].check({"rows": [{"states": 9, "actions": 3, "thesis_episodes": 3260,
-                                                           "episodes": 500, "episodes_to_converge": None,
-                                                           "success": 1.0}]})
-    assert not holds and "not converged within 500 episodes" in verdict and "501" not in verdict
-    holds, verdict = CLAIMS["fig-V-7"].check({})
-    assert not holds and "did not report" in verdict
+    verdict, checks = claim_of("fig-VI-28").evaluate({"fig-VI-27": {"outcome": "reached"},
+                                                      "fig-VI-28": {"outcome": "reached"}})
+    assert verdict == PARTLY and [c.passed for c in checks] == [True, False] and checks[1].value == "reached"
+    verdict, checks = claim_of("fig-VI-28").evaluate({"fig-VI-27": {"outcome": "collision"},
+                                                      "fig-VI-28": {"outcome": "reached"}})
+    assert verdict == NOT_REPRODUCED
+    verdict, checks = claim_of("fig-V-7").evaluate({})
+    assert verdict == NOT_REPRODUCED and len(checks) == 1 and "missing" in checks[0].value
+
+
+def test_the_verdict_counts_every_check():
+    yes, no = Check("a", 1, "= 1", True), Check("b", 2, "= 1", False, "package")
+    assert verdict_of([yes, yes]) == REPRODUCED
+    assert verdict_of([yes, no]) == PARTLY  # a package target that fails is not hidden
+    assert verdict_of([no]) == NOT_REPRODUCED and verdict_of([]) == NOT_REPRODUCED
+    with pytest.raises(ValueError, match="source"):
+        Check("c", 0, "= 0", True, "elsewhere")
+
+
+def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp_path, monkeypatch):
+    """CONTRIBUTING's recipe: a function and its spec (with its claim) registered from outside."""
+    def fig_ix_1(out_dir, quick=False, seed=0):
+        return {"answer": 42 + seed}
+
+    spec = registry.Experiment("fig-IX-1", fig_ix_1, "a figure of a chapter the thesis does not have", "§IX.1",
+                               Claim("The answer is 42.", "The answer is 42.",
+                                     lambda n: [Check("answer", n["answer"], "= 42", n["answer"] == 42)]))
+    monkeypatch.setattr(registry, "_REGISTRY", {})  # as in a fresh process: the plug-in registers first
+    monkeypatch.setattr(registry, "_THESIS_MODULES", tuple(f"fuzzynav.experiments.claims_{c}" for c in ("iv", "v", "vi")))
+    registry.register_experiment(spec)
+    with pytest.raises(ValueError, match="already registered"):
+        registry.register_experiment(spec)
+    assert list(registry.available())[-1] == "fig-IX-1" and "fig-IV-12" in registry.available()
+    assert main(["reproduce", "fig-IX-1", "--out", str(tmp_path)]) == 0
+    assert json.loads((tmp_path / "fig-IX-1" / "claim.json").read_text())["verdict"] == REPRODUCED
+    assert main(["reproduce", "fig-IX-1", "--seed", "1", "--out", str(tmp_path)]) == 0
+    assert json.loads((tmp_path / "fig-IX-1" / "claim.json").read_text())["verdict"] == NOT_REPRODUCED
+    assert "fig-IX-1" in read_page(tmp_path)[0].sections
+
+
+def test_an_experiment_id_must_name_its_chapter():
+    with pytest.raises(ValueError, match="kind-CHAPTER"):
+        registry.Experiment("figure 3", "m:f", "", "", claim_of("fig-V-7"))
 
 
 def test_reproduce_list_counts_the_experiments(capsys):

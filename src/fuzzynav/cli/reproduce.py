@@ -1,8 +1,9 @@
 """``fuzzynav reproduce ID…|all --out DIR [--quick]`` — reproduce the thesis' figures and tables.
 
 Each experiment writes into ``DIR/<id>/`` (PNG figures and ``<id>.json``, the numbers it
-measured); ``DIR/index.html`` puts the thesis' claim beside our figure and numbers for every
-experiment in DIR, with the verdict of the claim this package asserts and the run time
+measured, and ``claim.json``, the claim's checks and verdict); ``DIR/index.html`` puts the thesis'
+claim beside our figure and numbers for every experiment in DIR, with its checks, its verdict
+(reproduced, partly, not reproduced) and the run time
 (:mod:`fuzzynav.experiments.report`).
 """
 
@@ -51,7 +52,7 @@ def run(args) -> int:
             record = report.record_run(args.out, key, numbers, time.perf_counter() - start, quick=args.quick,
                                        seed=args.seed)
             report.write_index(args.out)
-            verdict = "claim holds" if record["holds"] else "claim NOT met" + (" (quick run)" if args.quick else "")
+            verdict = record["verdict"] + (" (quick run)" if args.quick else "")
             progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {report.experiment_dir(args.out, key)}")
             bar.update()
         bar.close()

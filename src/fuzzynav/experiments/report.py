@@ -1,12 +1,14 @@
 """The reproduction report: ``DIR/index.html``, the thesis' claim beside our figure, per experiment.
 
 ``fuzzynav reproduce ID… --out DIR`` runs each experiment in its own folder ``DIR/<id>/`` (its
-figures, ``<id>.json`` with the numbers it measured) and records the run in ``DIR/<id>/run.json``
-(:func:`record_run`: seconds, quick or full, seed, the verdict of its
-:class:`~fuzzynav.experiments.claims.Claim`). :func:`write_index` then writes one self-contained
-page over every experiment recorded in DIR (runs of earlier commands included), in the order of
-``fuzzynav reproduce --list``: no script, no style sheet or font from the network — it opens
-offline from the folder.
+figures, ``<id>.json`` with the numbers it measured) and records the run (:func:`record_run`):
+``DIR/<id>/claim.json`` — the thesis' claim, its checks (``name``, ``value``, ``target``,
+``pass``, ``source``) and the verdict of its :class:`~fuzzynav.experiments.claims.Claim`
+(``reproduced``, ``partly`` or ``not reproduced``) — and ``DIR/<id>/run.json`` (seconds, quick or
+full, seed, verdict). :func:`write_index` then writes one self-contained page over every
+experiment recorded in DIR (runs of earlier commands included), in the thesis' order, with the
+thesis' checks and this package's own targets apart: no script, no style sheet or font from the
+network — it opens offline from the folder.
 """
 
 from __future__ import annotations
@@ -17,16 +19,18 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.experiments.claims import CLAIMS
+from fuzzynav.experiments.claims import REPRODUCED
 from fuzzynav.storage import write_text_atomic
 
-RUN_FILE = "run.json"
+RUN_FILE, CLAIM_FILE = "run.json", "claim.json"
+VERDICT_CLASS = {"reproduced": "pass", "partly": "partly", "not reproduced": "fail"}
 STYLE = """
 body { font-family: sans-serif; max-width: 1500px; margin: 1em auto; padding: 0 1em; color: #222; }
 section { border-top: 1px solid #bbb; padding: 0.6em 0 1em; }
 .claims { display: grid; grid-template-columns: 1fr 1fr; gap: 0.5em 2em; }
 .claims h3 { font-size: 0.95em; margin: 0.3em 0; color: #555; }
 .pass { color: #16702a; font-weight: bold; } .fail { color: #b3261e; font-weight: bold; }
+.partly { color: #9a6700; font-weight: bold; }
 img { max-width: 100%; border: 1px solid #ddd; margin-top: 0.6em; }
 table { border-collapse: collapse; } td, th { padding: 0.2em 0.7em; text-align: left; }
 pre { background: #f5f5f5; padding: 0.5em; overflow-x: auto; font-size: 0.85em; }
@@ -39,21 +43,44 @@ def experiment_dir(out_dir: Path, key: str) -> Path:
 
 
 def record_run(out_dir: Path, key: str, numbers: dict, seconds: float, *, quick: bool, seed: int) -> dict:
-    """Write ``<id>.json`` (the numbers) and ``run.json`` (time, setting, verdict); returns the record."""
+    """Write ``<id>.json`` (the numbers), ``claim.json`` (claim, checks, verdict) and ``run.json``
+    (time, setting, verdict); returns the run record."""
     folder = experiment_dir(out_dir, key)
     folder.mkdir(parents=True, exist_ok=True)
     write_text_atomic(folder / f"{key}.json", json.dumps(numbers, indent=2, default=float))
-    holds, verdict = CLAIMS[key].check(numbers)
-    record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "holds": holds,
-              "verdict": verdict, "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
+    spec = registry.spec(key)
+    verdict, checks = spec.claim.evaluate(numbers)
+    claim = {"id": key, "reference": spec.reference, "thesis": spec.claim.thesis, "asserted": spec.claim.asserted,
+             "checks": [check.as_json() for check in checks], "verdict": verdict}
+    write_text_atomic(folder / CLAIM_FILE, json.dumps(claim, indent=2, default=float, ensure_ascii=False))
+    record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "verdict": verdict,
+              "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
     write_text_atomic(folder / RUN_FILE, json.dumps(record, indent=2))
     return record
 
 
+def _value(value) -> str:
+    return f"{value:.4g}" if isinstance(value, float) else json.dumps(value, default=float, ensure_ascii=False)
+
+
+def _checks_table(checks: list[dict], source: str) -> str:
+    rows = [c for c in checks if c["source"] == source]
+    if not rows:
+        return ""
+    e = html.escape
+    title = "The thesis' claim, checked" if source == "thesis" else "This package's own targets (not in the thesis)"
+    body = "".join(f'<tr><td>{e(c["name"])}</td><td>{e(_value(c["value"]))}</td><td>{e(c["target"])}</td>'
+                   f'<td class="{"pass" if c["pass"] else "fail"}">{"pass" if c["pass"] else "fail"}</td></tr>'
+                   for c in rows)
+    return (f"<h3>{title}</h3><table><tr><th>check</th><th>measured</th><th>target</th><th></th></tr>"
+            f"{body}</table>")
+
+
 def _section(out_dir: Path, key: str, record: dict, description: str) -> str:
-    claim = CLAIMS[key]
     folder = experiment_dir(out_dir, key)
-    status = '<span class="pass">claim holds</span>' if record["holds"] else '<span class="fail">claim not met</span>'
+    claim = json.loads((folder / CLAIM_FILE).read_text(encoding="utf-8"))
+    verdict = claim["verdict"]
+    status = f'<span class="{VERDICT_CLASS[verdict]}">{html.escape(verdict)}</span>'
     setting = "quick run (short budgets)" if record["quick"] else "full run"
     images = "".join(f'<img src="{html.escape(f"{key}/{image.name}")}" alt="{html.escape(key)}: our figure">'
                      for image in sorted(folder.glob("*.png")))
@@ -62,9 +89,11 @@ def _section(out_dir: Path, key: str, record: dict, description: str) -> str:
     return f"""<section id="{e(key)}">
 <h2>{e(key)} — {e(description)}</h2>
 <div class="claims">
-<div><h3>The thesis</h3><p>{e(claim.thesis)}</p></div>
-<div><h3>Asserted here: {status}</h3><p>{e(claim.asserted)}</p><p>Measured: {e(record["verdict"])}</p></div>
+<div><h3>The thesis ({e(claim["reference"])})</h3><p>{e(claim["thesis"])}</p></div>
+<div><h3>Verdict: {status}</h3><p>{e(claim["asserted"])}</p></div>
 </div>
+{_checks_table(claim["checks"], "thesis")}
+{_checks_table(claim["checks"], "package")}
 <p>{e(setting)}, seed {record["seed"]}, run time {record["seconds"]:.1f} s (finished {e(record["finished"])})</p>
 {images}
 <details><summary>all numbers ({e(key)}/{e(key)}.json)</summary><pre>{e(numbers)}</pre></details>
@@ -77,12 +106,12 @@ def write_index(out_dir: Path) -> Path:
     listing = registry.available()
     records = {}
     for key in listing:
-        run_file = experiment_dir(out_dir, key) / RUN_FILE
-        if run_file.is_file():
-            records[key] = json.loads(run_file.read_text())
-    held = sum(r["holds"] for r in records.values())
+        folder = experiment_dir(out_dir, key)
+        if (folder / RUN_FILE).is_file() and (folder / CLAIM_FILE).is_file():
+            records[key] = json.loads((folder / RUN_FILE).read_text())
+    held = sum(r["verdict"] == REPRODUCED for r in records.values())
     rows = "".join(f'<tr><td><a href="#{html.escape(k)}">{html.escape(k)}</a></td>'
-                   f'<td class="{"pass" if r["holds"] else "fail"}">{"holds" if r["holds"] else "not met"}</td>'
+                   f'<td class="{VERDICT_CLASS[r["verdict"]]}">{html.escape(r["verdict"])}</td>'
                    f'<td>{r["seconds"]:.1f} s</td><td>{"quick" if r["quick"] else "full"}</td></tr>'
                    for k, r in records.items())
     sections = "\n".join(_section(out_dir, key, record, listing[key]) for key, record in records.items())
@@ -92,10 +121,11 @@ def write_index(out_dir: Path) -> Path:
 <h1>Reproduction of the thesis' figures and tables</h1>
 <p>L. Cherroun, <i>Navigation autonome d'un robot mobile par des techniques neuro-floues</i> (doctoral thesis,
 Université de Biskra, 2014). Each section puts the thesis' claim (translated) beside the figure and the numbers
-of this run, and says whether the claim this package asserts holds. {len(records)} of {len(listing)}
-experiments in this folder; claims held: {held} of {len(records)}; total run time
+of this run, checks the claim on those numbers and gives the verdict: reproduced (every check passes), partly or
+not reproduced. Checks of this package's own targets (numbers the thesis does not give) are listed apart.
+{len(records)} of {len(listing)} experiments in this folder; reproduced: {held} of {len(records)}; total run time
 {sum(r["seconds"] for r in records.values()):.0f} s.</p>
-<table><tr><th>experiment</th><th>claim</th><th>run time</th><th>setting</th></tr>{rows}</table>
+<table><tr><th>experiment</th><th>verdict</th><th>run time</th><th>setting</th></tr>{rows}</table>
 {sections}
 </body></html>
 """
