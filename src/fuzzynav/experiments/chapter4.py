@@ -7,8 +7,8 @@
   the behaviour changes marked A, B, … (panels a, b);
 - ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b-thesis``) in two unknown worlds (a, b);
 - ``fig-IV-23``: ``fuzzy-5b-thesis`` reaching a goal inside a U-shaped wall;
-- ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend (Fig VI.27) and
-  into the sharp corner where it collides (Fig VI.28);
+- ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend and a wall turning
+  45° away (Fig VI.27 a, b) and into the sharp corner where it collides (Fig VI.28);
 - ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100
   each, 10 with ``quick``), the numbers of ``fuzzynav evaluate``.
 
@@ -127,8 +127,8 @@ def fig_iv_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Figs VI.27–VI.28: the hand-made wall follower succeeds on a bend, collides at a sharp corner."""
-    return _panels(["fig-VI-27", "fig-VI-28"], "wall-follow", out_dir, "fig-VI-28.png", markers=False)
+    """Figs VI.27–VI.28: the hand-made wall follower succeeds round two corners, collides at a sharp one."""
+    return _panels(["fig-VI-27", "fig-VI-27b", "fig-VI-28"], "wall-follow", out_dir, "fig-VI-28.png", markers=False)
 
 
 def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
