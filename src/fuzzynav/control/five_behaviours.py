@@ -2,8 +2,7 @@
 IV.1, IV.3–IV.6) on the seven range sensors C1…C7; with ``gap=True`` (``fuzzy-5b-gap``) on a lidar,
 the navigator inside the default ``fuzzy-5b`` (:mod:`fuzzynav.control.through_gaps`).
 
-Behaviours: GSB (Table IV.1, guarded against orbiting as in
-:mod:`fuzzynav.control.goal_seeking`), FOA / ROA / LOA (Tables IV.3–IV.5, steering only) and VRB
+Behaviours: GSB (Table IV.1), FOA / ROA / LOA (Tables IV.3–IV.5, steering only) and VRB
 (Table IV.6), coordinated by :mod:`fuzzynav.control.supervisor`:
 
 - GSB alone when nothing is sensed: α and V_r from Table IV.1;
@@ -17,14 +16,20 @@ result is kept in [``v_floor``, 4 m/s]. ``v_floor`` (default 0.3 m/s) is this pa
 V_r = 0 near an obstacle Table IV.6 answers "no change" (AC) and a tricycle that does not move
 cannot turn, so the navigator would freeze.
 
+**Layers** (this package's, each optional: ``layers=`` names those on, keys of
+:data:`fuzzynav.control.batched.LAYERS`; all by default, none in ``fuzzy-5b-thesis``): the
+anti-orbit guard of goal seeking (:mod:`fuzzynav.control.goal_seeking`), the hysteresis of the
+switch, the turning room and the safety stop below. Without them the supervisor's choice of
+each step drives, goal seeking is Table IV.1 alone, and nothing stops the robot.
+
 **Switching** (the part Fig IV.16 states only in words) is :func:`supervisor.select` on the
-readings, held by the switch of :mod:`~fuzzynav.control.supervisor`: more caution at once when a reading is below
+readings, with the ``hysteresis`` layer held by the switch of :mod:`~fuzzynav.control.supervisor`: more caution at once when a reading is below
 d_m or the full-lock turn is needed, anything else after a dwell of ``dwell`` steps (1 s); goal seeking, once in charge, is kept under the relaxed thresholds of
 :func:`supervisor.relaxed`. (Handing the robot back to goal seeking only with the goal within
 45° of the heading, a literal reading of Fig IV.23's "vision interval", was tried: on 100 mixed
 worlds it turned 4 successes into endless wall following.)
 
-**Turning room** (the robot has no reverse, §IV.4). Slowing down does not shrink the tightest
+**Turning room** (layer ``turning_room``; the robot has no reverse, §IV.4). Slowing down does not shrink the tightest
 turn (R = l / tan(π/5) = 0.69 m), so the navigator watches the room left for it
 (:class:`fuzzynav.control.turning_room.TurnGuard`, on the range hits of the last second and the
 sonar-cone echo of the nearest obstacle point). When the straight lane ahead is blocked within ``lane`` (default d_m = 1.5 m) and the
@@ -35,7 +40,7 @@ The side is chosen when the turn starts (the roomier one; within 0.1 m, the goal
 kept until the turn ends; the turn ends, after the dwell, when lane and room exceed those
 thresholds by 0.5 m and 0.2 m. It is labelled ``FOA+VRB`` like the front avoider.
 
-**Safety stop** (this package's; the thesis has none). A thin wall end or a corner can hide
+**Safety stop** (layer ``safety_stop``, this package's; the thesis has none). A thin wall end or a corner can hide
 between the rays until the robot is too close for any turn, and in a pocket of obstacles neither
 full-lock turn may be free. Then the one step left is to stop: when the body after the next step
 (eq IV.2 moves it V Δt straight ahead, whatever the steering) would come within ``stop_margin``

@@ -12,7 +12,9 @@ A goal at distance d and bearing β is hit by the forward arc of steering
 :class:`GuardedGoalSeeking` keeps the table's command unless it steers less than that arc: then it
 steers α_arc; and when even the tightest turn α_max = π/5 is too wide (the goal inside the
 turning circle, r < l / tan(π/5) = 0.69 m for l = 0.5 m) it drives straight (α = 0, the table's
-speed) until the goal leaves the circle. Every navigator of this package uses this guarded GSB.
+speed) until the goal leaves the circle. The guard is an optional layer (``orbit_guard`` of
+:data:`fuzzynav.control.batched.LAYERS`): the published ``goal-seeking``, ``fuzzy-2b-thesis`` and
+``fuzzy-5b-thesis`` run Table IV.1 alone; ``goal-seeking-guarded`` and the other navigators use it.
 
 Rule base by role (``systems=``): ``"gsb"``, a TS0 system (d_rg, θ_r − θ_d) → (α, V_r); the
 default is Table IV.1.

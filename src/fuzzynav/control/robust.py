@@ -34,9 +34,11 @@ their compiled parameter vector: the simulator calls :meth:`CompiledNavigator.fo
 (the anti-orbit guard of goal seeking, the full-lock turn radius), the body radius (turning room
 and safety stop) and the top speed; :meth:`RobustNavigator.for_robot` gives the layers the
 robot's radius and reverse speed (a one-robot :meth:`~RobustNavigator.act` reads them from
-``extras["robot"]`` when there). With the default robot nothing changes, so the ``-thesis``
-variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`, the compiled navigators without
-layers) drive exactly as published.
+``extras["robot"]`` when there). With the default robot nothing changes. The ``-thesis``
+variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`) are the compiled navigators with none
+of their own optional layers either (:data:`fuzzynav.control.batched.LAYERS`): the tables, switch,
+supervisor and VRB as published; the ``-layered`` ones (:func:`fuzzy_5b_layered`,
+:func:`fuzzy_2b_layered`) keep those layers, without recovery and loop escape.
 """
 
 from __future__ import annotations
