@@ -13,6 +13,7 @@ changes an error by more than 20 % fails a claim, and every claim is caught by s
 
     PYTHONPATH=src python benchmarks/mutations.py                      # the table (a few minutes)
     PYTHONPATH=src python benchmarks/mutations.py --roles tracker      # one role
+    PYTHONPATH=src python benchmarks/mutations.py --every-cell         # every cell's sign, one by one
     PYTHONPATH=src python benchmarks/mutations.py --write-references   # store the published runs
 
 ``--write-references`` runs the experiments with the published tables and stores what their
@@ -64,14 +65,16 @@ def _with_term(rule: str, term: str) -> str:
     return f"{head}{term}{tail}"
 
 
-def mutations(role: str) -> list[tuple[str, dict]]:
+def mutations(role: str, every_cell: bool = False) -> list[tuple[str, dict]]:
     """(name, edited document) of every mutation of ``role``'s published system: two sign flips
-    (the audited cells for ``gsb``; else the first rule and the middle one that steer), a biased
-    zero cell and the all-zero table."""
+    (the audited cells for ``gsb``; else the first rule and the middle one that steer; with
+    ``every_cell``, one flip per steering cell), a biased zero cell and the all-zero table."""
     document = yaml.safe_load(dumps(rule_bases.system(role), "yaml"))
     rules = document["rules"]
     steering = [k for k, rule in enumerate(rules) if _conclusion(rule)[2] in MIRROR]
-    if role in NAMED_FLIPS:
+    if every_cell:
+        flips = steering
+    elif role in NAMED_FLIPS:
         flips = [next(k for k, rule in enumerate(rules) if cell in rule) for cell in NAMED_FLIPS[role]]
     else:
         flips = [steering[0], steering[len(steering) // 2]]
@@ -136,6 +139,7 @@ def write_references(out: Path) -> Path:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--roles", nargs="*", default=list(REACHES), choices=list(REACHES))
+    parser.add_argument("--every-cell", action="store_true", help="flip the sign of every steering cell, one at a time")
     parser.add_argument("--write-references", action="store_true")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
@@ -150,7 +154,7 @@ def main() -> None:
         print("|---|---|---|---|---|")
         misses = 0
         for role in args.roles:
-            for name, document in mutations(role):
+            for name, document in mutations(role, args.every_cell):
                 path = out / f"{role}.yaml"
                 path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
                 numbers = run(REACHES[role], out, rule_bases.from_options([f"{role}={path}"]))
