@@ -80,7 +80,7 @@ def mutations(role: str, every_cell: bool = False) -> list[tuple[str, dict]]:
         flips = [steering[0], steering[len(steering) // 2]]
     edited = []
     for k in flips:
-        head, _, term = _conclusion(rules[k])
+        term = _conclusion(rules[k])[2]
         edited.append((f"{role}: flip rule {k + 1} ({term} -> {MIRROR[term]})",
                        {k: _with_term(rules[k], MIRROR[term])}))
     variable = _conclusion(rules[0])[1]

@@ -14,9 +14,9 @@ import time
 from pathlib import Path
 
 from fuzzynav import progress
-from fuzzynav.cli import arguments
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.catalog.roles import parse_option
+from fuzzynav.cli import arguments
 
 
 def register(subparsers) -> None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
+from types import MappingProxyType
 
 from fuzzynav.catalog.roles import ROLES, check_fits, parse_option
 from fuzzynav.errors import InputError
@@ -22,7 +23,7 @@ from fuzzynav.fuzzy.systems import get_system
 # role -> the built-in system it defaults to (every role of every fuzzy controller)
 ROLE_SYSTEMS: dict[str, str] = {role: system for roles in ROLES.values() for role, system in roles.items()}
 
-_REPLACED: ContextVar[Mapping] = ContextVar("replaced_rule_bases", default={})
+_REPLACED: ContextVar[Mapping] = ContextVar("replaced_rule_bases", default=MappingProxyType({}))
 
 
 @contextmanager
