@@ -28,6 +28,7 @@ LAYERS = {
     "fuzzynav.viz": 7,
     "fuzzynav.learn.tasks": 8,
     "fuzzynav.experiments": 9, "fuzzynav.bench": 9, "fuzzynav.catalog": 9, "fuzzynav.gym": 9,
+    "fuzzynav.tune": 9,
     "fuzzynav.cli": 10, "fuzzynav.__main__": 10, "fuzzynav": 10,
 }
 # What kernels may use besides their own layer: the fuzzy library (and numpy / numba).

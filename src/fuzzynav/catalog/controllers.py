@@ -18,6 +18,9 @@ CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.robust:fuzzy_2b",
 CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
                            "fuzzy-5b-gap (lidar) aimed along a car route round what it has seen, with recovery "
                            "and loop escape (the default)")
+CONTROLLERS["fuzzy-5b-yield"] = ("fuzzynav.control.yielding:make",
+                                 "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving "
+                                 "obstacles, read from two lidar scans (for dynamic worlds)")
 CONTROLLERS["fuzzy-5b-rays"] = ("fuzzynav.control.robust:fuzzy_5b",
                                 "fuzzy-5b-thesis (7 range sensors) with recovery (backing out) and loop escape "
                                 "(boundary following); the default before fuzzy-5b moved to the lidar")

@@ -34,7 +34,7 @@ class ClaimLike(Protocol):
     def evaluate(self, numbers: dict) -> tuple[str, list]: ...
 
 
-_ID = re.compile(r"^[a-z]+-(?P<chapter>[IVX]+)(?:-(?P<number>\d+))?[a-z]?$")
+_ID = re.compile(r"^[a-z]+-(?P<chapter>[IVX]+)(?:-(?P<number>\d+)[a-z]?|-[a-z]+)?$")  # fig-VI-22, cmp-VI-tuning
 _ROMAN = {"I": 1, "V": 5, "X": 10}
 
 
@@ -75,7 +75,8 @@ def _roman(numeral: str) -> int:
 
 
 _REGISTRY: dict[str, Experiment] = {}
-_THESIS_MODULES = ("fuzzynav.experiments.claims_iv", "fuzzynav.experiments.claims_v", "fuzzynav.experiments.claims_vi")
+_THESIS_MODULES = ("fuzzynav.experiments.claims_iv", "fuzzynav.experiments.claims_v", "fuzzynav.experiments.claims_vi",
+                   "fuzzynav.experiments.claims_tuning")
 
 
 def register_experiment(spec: Experiment) -> None:

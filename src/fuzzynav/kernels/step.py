@@ -8,7 +8,10 @@ Arrays:
   the sensor range (and, last, the sensors' half beam width), the task (:data:`SETUP_FIELDS`), then the sensor angles and the path's
   waypoints (x0, y0, x1, y1, …);
 - ``state`` (N, :data:`STATE_FIELDS`) floats per robot; ``ranges`` (N, S);
-- ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index.
+- ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index;
+- ``base``, ``movers``, ``offsets``: the moving obstacles (:mod:`fuzzynav.kernels.traffic`),
+  placed in ``scene_array`` at their offsets of step ``k`` before the robots move (none: a static
+  world, whose scene is never written).
 
 Finished robots are neither moved, judged nor sensed.
 """
@@ -19,7 +22,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import beams, layers, robust, scene
+from fuzzynav.kernels import beams, layers, robust, scene, traffic
 from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
 from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
@@ -132,12 +135,15 @@ def reset(setup, scene_array, state, ranges, status):
 
 
 @jit
-def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, scene_array, k, state, ranges, status):
+def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, base, movers, offsets, scene_array, k,
+         state, ranges, status):
     """One step of every running robot, ``k`` being the step count after it; returns how many
-    still run. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
+    still run. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
+    so the robots' stop tests and sensing see them there. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
     ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
     loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
     (commands given in ``state``)."""
+    traffic.place(base, movers, offsets, scene_array)
     running = 0
     n_angles = int(setup[N_ANGLES])
     angles = setup[ANGLES:ANGLES + n_angles]

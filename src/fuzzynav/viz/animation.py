@@ -21,6 +21,7 @@ from PIL import Image
 
 from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
+from fuzzynav.viz.moving import MovingArtists
 from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
@@ -34,7 +35,8 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
-    draw_world(ax, scenario, trace)
+    draw_world(ax, scenario, trace, moving_obstacles=False)
+    obstacles = MovingArtists(ax, scenario, trace)  # moving obstacles and their tracks, frame by frame
     frames = np.unique(np.linspace(0, len(trace.pose) - 1, min(max_frames, len(trace.pose))).round().astype(int))
     trail = LineCollection([], linewidths=1.8, antialiaseds=False)  # coloured by behaviour, as in the static plots
     ax.add_collection(trail)
@@ -48,7 +50,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     ax.add_collection(beams)
     target, = ax.plot([], [], "*", color=GOAL_COLOUR, markersize=12)
     title = ax.set_title(f"{trace.scenario} — {trace.controller}  t = {trace.t[-1]:.1f} s", fontsize=9)
-    moving = (trail, body, heading, beams, target, title)
+    moving = (*obstacles.artists, trail, body, heading, beams, target, title)
     for artist in moving:
         artist.set_animated(True)
     canvas.draw()  # the one full draw: layout, world, axes
@@ -58,6 +60,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     images = []
     for k in frames:
         pose = trace.pose[k]
+        obstacles.show(k)
         trail.set_segments(segments[:k])
         trail.set_color(colours[:k])
         body.center = pose[:2]

@@ -1,0 +1,60 @@
+"""Episodes per second of the tuner's fitness: a population × its worlds in one compiled call
+(:mod:`fuzzynav.tune.episodes`) against the same episodes through ``BatchSimulator`` one world at
+a time (the Python step loop ``run``, ``evaluate`` and ``bench`` use). Both run the candidates
+around the hand-made system that a tuning's first generation holds; the outcomes are checked equal.
+
+    python benchmarks/tune_speed.py --target fuzzy-2b:oab --worlds mixed:40 --population 10
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+from fuzzynav.bench.suites import parse_suite
+from fuzzynav.catalog.roles import make_with_systems
+from fuzzynav.sim import BatchSimulator
+from fuzzynav.tune.episodes import OUTCOME, STEPS
+from fuzzynav.tune.fitness import Fitness
+from fuzzynav.tune.session import TuneRequest, check
+from fuzzynav.tune.space import SearchSpace
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--target", default="fuzzy-2b:oab")
+    parser.add_argument("--worlds", default="mixed:40")
+    parser.add_argument("--population", type=int, default=10)
+    args = parser.parse_args()
+    request = TuneRequest(target=args.target, worlds=args.worlds, population=args.population, budget=10**6)
+    controller, system, suite, _ = check(request)
+    scenarios = [suite.scenario(i, 0) for i in range(suite.size)]
+    space = SearchSpace(system, "both")
+    population = space.around_start(args.population, np.random.default_rng(0))
+    fitness = Fitness(controller, request.role, space, scenarios)
+    fitness.simulate(population[:1])  # compile
+    started = time.perf_counter()
+    out = fitness.simulate(population)
+    batched = time.perf_counter() - started
+    started = time.perf_counter()
+    outcomes = []
+    for genes in population:
+        systems = {request.role: space.decode(genes)}
+        for scenario in scenarios:
+            sim = BatchSimulator(scenario, make_with_systems(request.controller, systems), record=False, seed=0).run()
+            outcomes.append((int(sim.status[0]), int(sim.steps[0])))
+    looped = time.perf_counter() - started
+    same = outcomes == [(int(o), int(k)) for o, k in out.reshape(-1, out.shape[-1])[:, [OUTCOME, STEPS]]]
+    episodes, steps = out.shape[0] * out.shape[1], int(out[:, :, STEPS].sum())
+    print(f"{args.target} on {args.worlds}, {args.population} candidates: {episodes} episodes, {steps} steps")
+    print(f"  one compiled call : {batched:6.2f} s  {episodes / batched:7.1f} episodes/s  "
+          f"{1e6 * batched / steps:5.1f} µs/step")
+    print(f"  BatchSimulator    : {looped:6.2f} s  {episodes / looped:7.1f} episodes/s  "
+          f"{1e6 * looped / steps:5.1f} µs/step  (x{looped / batched:.1f})")
+    print(f"  same outcomes and steps: {same}")
+
+
+if __name__ == "__main__":
+    main()

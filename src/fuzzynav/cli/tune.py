@@ -1,0 +1,111 @@
+"""``fuzzynav tune CONTROLLER:ROLE --worlds SUITE [--what mf|rules|both] [--method ga|pso|aco|de|cmaes|nsga2]
+[--objectives success,time,clearance] [--budget EVALS] [--seed S] [--out tuned.yaml] [--resume] [--curve PNG]``.
+
+Optimises the fuzzy system of one role of a controller (:mod:`fuzzynav.tune`) on training
+worlds, then tests the start and the result on held-out worlds; writes the tuned system (``.yaml``,
+``.json``, ``.fll`` or ``.fis``), which ``run``, ``bench``, ``evaluate`` and ``reproduce`` take as
+``--fis ROLE=FILE``. Every option is checked before any simulation.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from fuzzynav import progress
+from fuzzynav.cli import arguments
+from fuzzynav.errors import InputError
+
+
+def register(subparsers) -> None:
+    parser = arguments.command(subparsers, "tune", run,
+                               help="tune a controller's fuzzy system by GA, PSO, DE, CMA-ES, NSGA-II or ant colony",
+                               description="Optimise a role's membership breakpoints and/or rule conclusions on "
+                                           "training worlds (every candidate of a generation on every world in one "
+                                           "compiled call), then test it on held-out worlds.")
+    parser.add_argument("target", metavar="CONTROLLER:ROLE",
+                        help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:foa")
+    parser.add_argument("--worlds", required=True, metavar="SUITE",
+                        help="training worlds: folder of scenario files or FAMILY[:COUNT[:SEED]] (as bench reads them)")
+    parser.add_argument("--holdout", metavar="SUITE",
+                        help="held-out worlds (default for a family: the same family and count, world seed + 1000)")
+    parser.add_argument("--what", default="both", help="mf (breakpoints), rules (conclusions) or both (default)")
+    parser.add_argument("--method", default="ga", help="ga (default), pso, de, cmaes, nsga2 or aco (--what rules)")
+    parser.add_argument("--objectives", metavar="A,B", help="nsga2's objectives among success, time, clearance")
+    parser.add_argument("--budget", type=int, default=3000, metavar="EVALS",
+                        help="simulated episodes (one candidate on one training world each; default 3000)")
+    parser.add_argument("--population", type=int, default=10, metavar="N",
+                        help="candidates per generation (ants per iteration; default 10)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
+    parser.add_argument("--out", metavar="FILE", help="tuned system to write: .yaml, .json, .fll or .fis")
+    parser.add_argument("--resume", action="store_true", help="continue from the checkpoint beside --out")
+    parser.add_argument("--curve", metavar="PNG", type=arguments.figure_path,
+                        help="write the learning curve (best training cost against episodes)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
+
+
+def run(args) -> int:
+    from fuzzynav.tune.session import TuneRequest, check, tune
+
+    objectives = tuple(name.strip() for name in args.objectives.split(",")) if args.objectives else ()
+    if args.out and Path(args.out).is_dir():
+        raise InputError("is a directory; give the file to write", source=args.out, field="--out")
+    request = TuneRequest(target=args.target, worlds=args.worlds, what=args.what, method=args.method,
+                          budget=args.budget, seed=args.seed, population=args.population, objectives=objectives,
+                          holdout=args.holdout, out=args.out, resume=args.resume, curve=args.curve,
+                          progress=not (args.quiet or args.json))
+    check(request)
+    with progress.quiet(not request.progress):
+        result = tune(request)
+    written = _write(request, result)
+    if args.json:
+        shown = {key: value for key, value in result.items() if key != "system"}
+        if "front" in shown:
+            shown["front"] = [{k: v for k, v in member.items() if k not in ("genes", "system")}
+                              for member in shown["front"]]
+        print(json.dumps({**shown, "files": written}))
+        return 0
+    print(f"{request.target} by {request.method} ({request.what}): {result['evaluations']} evaluations, "
+          f"{result['episodes']} episodes, {result['evaluations_per_s']:.1f} evaluations/s "
+          f"({result['episodes_per_s']:.0f} episodes/s)")
+    for part in ("training", "holdout"):
+        if part in result["start"]:
+            print(f"  {part:8s} start: {_line(result['start'][part])}")
+            print(f"  {part:8s} tuned: {_line(result['tuned'][part])}")
+    for path in written:
+        print(f"  wrote {path}")
+    return 0
+
+
+def _line(numbers: dict) -> str:
+    time = numbers["mean_time_s"]
+    return (f"success {100 * numbers['success_rate']:5.1f} %, collisions {numbers['collisions']}, "
+            f"timeouts {100 * numbers['timeout_rate']:4.1f} %, mean time {'n/a' if time is None else f'{time:.2f} s'}"
+            f" over {numbers['worlds']} worlds")
+
+
+def _write(request, result) -> list[str]:
+    """Write the tuned system (and the Pareto front's members beside it), and the curve."""
+    from fuzzynav.fuzzy.io import save
+
+    written = []
+    if request.out:
+        save(result["system"], request.out)
+        written.append(request.out)
+        out = Path(request.out)
+        for k, member in enumerate(result.get("front", [])):
+            path = out.with_name(f"{out.stem}.front{k}{out.suffix}")
+            save(member["system"], path)
+            member["file"] = str(path)
+            written.append(str(path))
+    if request.curve:
+        from fuzzynav.tune.curve import plot_curve
+
+        plot_curve(result["curve"], request.curve, title=f"{request.target}, {request.method}",
+                   start=result["start"]["training"]["cost"])
+        written.append(request.curve)
+    if not written:
+        print("nothing written (no --out)", file=sys.stderr)
+    return written

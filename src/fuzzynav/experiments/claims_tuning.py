@@ -1,0 +1,43 @@
+"""``cmp-VI-tuning``, the comparison the thesis leaves as a perspective (its conclusion), with its claim.
+
+The thesis gives no number to reproduce here: it proposes comparing its methods with genetic
+algorithms and optimising fuzzy controllers by ant colonies. The checks are this package's
+targets (``source="package"``): on held-out worlds, every tuner and fuzzy Q-learning, averaged
+over the seeds, succeed at least as often as the hand-made system they start from (or, for FQL,
+replace) and collide no more often.
+"""
+
+from __future__ import annotations
+
+from fuzzynav.catalog.experiments import Experiment
+from fuzzynav.experiments.claims import Check, Claim
+
+
+def _no_worse_than_hand_made(numbers) -> list[Check]:
+    checks = []
+    for name, task in numbers["tasks"].items():
+        rows = task["rows"]
+        base = rows["hand-made"][0]
+        for method, seeds in rows.items():
+            if method == "hand-made":
+                continue
+            success = sum(s["success"] for s in seeds) / len(seeds)
+            collisions = sum(s["collisions"] for s in seeds) / len(seeds)
+            checks.append(Check(f"{name}, {method}: held-out success (mean of {len(seeds)} seeds)", success,
+                                f"≥ hand-made {base['success']:.3f}", success >= base["success"], "package"))
+            checks.append(Check(f"{name}, {method}: held-out collisions (mean per seed)", collisions,
+                                f"≤ hand-made {base['collisions']}", collisions <= base["collisions"], "package"))
+    return checks
+
+
+EXPERIMENTS = [
+    Experiment("cmp-VI-tuning", "fuzzynav.experiments.tuning:cmp_vi_tuning",
+               "GA, PSO and ant colony tuning against fuzzy Q-learning, same episodes, every seed",
+               "Conclusion, perspectives; Tables IV.1, IV.2; §VI.5.1–VI.5.2",
+               Claim("Perspectives: compare the methods developed with other stochastic algorithms such as "
+                     "genetic algorithms, and optimise fuzzy controllers by ant colony algorithms (no numbers given).",
+                     "With the same episodes, tuning Table IV.1 (goal seeking) and Table IV.2 (obstacle avoidance) "
+                     "by GA, PSO and ACO, and training FQL, each does at least as well as the hand-made table on "
+                     "held-out worlds (success, collisions; mean over the seeds).",
+                     _no_worse_than_hand_made)),
+]

@@ -1,0 +1,160 @@
+"""Many candidate rule bases × many worlds in one compiled call: the episodes of a generation.
+
+:class:`~fuzzynav.sim.simulator.BatchSimulator` steps N robots of one scenario under one
+controller, one compiled call per step. A population of rule bases is N controllers on W
+worlds, so :func:`run_jobs` loops the simulator's own compiled step
+(:func:`fuzzynav.kernels.step.reset`, :func:`fuzzynav.kernels.step.step`) over every job
+(candidate, world) inside one compiled call — the same arithmetic, step for step, as
+``BatchSimulator(world, controller).run()`` (``tests/tune/test_episodes.py`` checks outcomes, step
+counts and final poses against it). Each job is one robot with its own navigator state, hit
+memory and layer state; the layers' obstacle-point slots are sized up front (:data:`SLOTS`), and
+a job that would outgrow them stops with :data:`OVERFLOW` and is run again with twice the room.
+
+Noisy sensors and moving targets are simulated by the Python loop only; :class:`Worlds` refuses
+them.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from fuzzynav.errors import InputError
+from fuzzynav.jit import jit
+from fuzzynav.kernels import layers, step as step_kernel
+from fuzzynav.kernels.motion import RADIUS
+
+OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE = range(6)  # columns of run_jobs' ``out``
+N_OUT = 6
+OVERFLOW = -1  # outcome of a job whose layer state ran out of obstacle-point slots
+INVALID = -2  # outcome of a job whose state became non-finite
+SLOTS = 64  # obstacle-point slots per sensor ray (+ 1) given to each job at first (the layers start at 16)
+
+
+@jit
+def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, scene, start, out):
+    """Run one robot from ``start`` to the end of its episode; write its row of ``out``."""
+    n_rays = int(setup[step_kernel.N_ANGLES])
+    state = np.zeros((1, len(step_kernel.STATE_FIELDS)))
+    state[0, :3] = start
+    ranges = np.zeros((1, n_rays))
+    status = np.zeros((1, 3), dtype=np.int64)
+    cstate = np.zeros((1, 4), dtype=np.int64)
+    cstate[0, 0] = -1
+    memory = np.zeros((1, memory_steps, n_rays + 1, 3))
+    lp = layer_params.copy()
+    lstate = np.empty((1, layer_row.shape[0]))
+    lstate[0] = layer_row
+    radius = setup[RADIUS]
+    gx, gy = setup[step_kernel.GOAL_X], setup[step_kernel.GOAL_Y]
+    out[START_DISTANCE] = math.hypot(gx - start[0], gy - start[1])
+    running = step_kernel.reset(setup, scene, state, ranges, status)
+    clearance = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
+    path, k = 0.0, 0
+    while running:
+        x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
+        k += 1
+        running = step_kernel.step(kind, params, tables, cstate, memory, lp, lstate, setup, scene, k, state, ranges,
+                                   status)
+        path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
+        clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
+        if lp[layers.GROW] != 0.0:
+            out[OUTCOME] = OVERFLOW
+            return
+        if not (math.isfinite(state[0, step_kernel.X]) and math.isfinite(state[0, step_kernel.Y])):
+            out[OUTCOME] = INVALID
+            return
+    out[OUTCOME] = status[0, step_kernel.OUTCOME]
+    out[STEPS] = status[0, step_kernel.STEPS]
+    out[CLEARANCE] = clearance
+    out[PATH] = path
+    out[REMAINING] = math.hypot(gx - state[0, step_kernel.X], gy - state[0, step_kernel.Y])
+
+
+@jit
+def run_jobs(kind, params, tables, memory_steps, layer_params, layer_row, setups, setup_at, scenes, scene_at, starts,
+             job_candidate, job_world, out):
+    """Every job j: candidate ``job_candidate[j]`` (its ``tables`` row) on world ``job_world[j]``
+    (its ``params`` row, ``setups[setup_at[w]:setup_at[w + 1]]``, ``scenes[scene_at[w]:scene_at[w + 1]]``,
+    ``starts[w]``); ``out`` (J, :data:`N_OUT`) = outcome code, steps, least clearance of the body
+    (m), path length (m), distance left to the goal (m), start distance to the goal (m)."""
+    for j in range(job_candidate.shape[0]):
+        c, w = job_candidate[j], job_world[j]
+        _one(kind, params[w], tables[c], memory_steps, layer_params, layer_row,
+             setups[setup_at[w]:setup_at[w + 1]], scenes[scene_at[w]:scene_at[w + 1]], starts[w], out[j])
+
+
+class Worlds:
+    """The compiled form of a list of scenarios for one controller: per world its navigator
+    parameters (sized for its robot and ring), set-up array, scene and start, concatenated."""
+
+    def __init__(self, scenarios, controller):
+        from fuzzynav.sim.simulator import default_ring
+        from fuzzynav.sim.tasks import TaskState
+
+        self.scenarios = list(scenarios)
+        if not self.scenarios:
+            raise InputError("no worlds to tune on", field="--worlds")
+        params, setups, scenes, self.dt, self.max_time = [], [], [], [], []
+        for scenario in self.scenarios:
+            ring = default_ring(scenario, controller)
+            if ring.noise_std > 0:
+                raise InputError("tuning simulates noise-free sensors only", source=scenario.name, field="sensors")
+            if scenario.task == "target":
+                raise InputError("tuning runs goal and path tasks, not moving targets", source=scenario.name,
+                                 field="task")
+            robot = scenario.robot
+            controller.for_robot(robot)
+            arguments = controller.compiled(1, ring.angles)
+            params.append(np.array(arguments[1], dtype=float))
+            max_steps = max(1, math.ceil(scenario.max_time / robot.dt - 1e-9))
+            setups.append(TaskState(scenario, 1).setup(robot.array(), ring.max_range, max_steps, ring.angles, 0.0,
+                                                       0.5 * ring.beam_width))
+            scenes.append(np.asarray(scenario.world.scene, dtype=float))
+            self.dt.append(robot.dt)
+            self.max_time.append(scenario.max_time)
+        self.kind = int(arguments[0])
+        self.memory_steps = int(arguments[4].shape[1])
+        self.layer_params = np.array(arguments[5], dtype=float)
+        if len({len(p) for p in params}) != 1:
+            raise InputError("the worlds' navigator parameters differ in size", field="--worlds")
+        self.params = np.ascontiguousarray(params)
+        self.setups, self.setup_at = _concatenate(setups)
+        self.scenes, self.scene_at = _concatenate(scenes)
+        self.starts = np.ascontiguousarray([scenario.start for scenario in self.scenarios], dtype=float)
+        self.n_rays = len(ring.angles)
+        self.dt, self.max_time = np.asarray(self.dt), np.asarray(self.max_time)
+
+    def __len__(self) -> int:
+        return len(self.scenarios)
+
+    def layer_row(self, slots: int) -> tuple[np.ndarray, np.ndarray]:
+        """(layer params, a fresh layer state row) with ``slots`` obstacle-point slots per ray + 1."""
+        params = self.layer_params.copy()
+        if params[layers.ON] != 0.0:
+            points = slots * (self.n_rays + 1)
+            params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = points, 1 << (2 * points - 1).bit_length(), 0
+        return params, layers.fresh_state(1, params)[0]
+
+    def run(self, tables: np.ndarray, jobs: np.ndarray) -> np.ndarray:
+        """``out`` of :func:`run_jobs` for ``jobs`` (J, 2) = (row of ``tables``, world index);
+        jobs that ran out of point slots are run again with twice as many, until none does."""
+        tables = np.ascontiguousarray(tables, dtype=float)
+        out = np.zeros((len(jobs), N_OUT))
+        todo, slots = np.arange(len(jobs)), SLOTS
+        while len(todo):
+            layer_params, row = self.layer_row(slots)
+            part = np.zeros((len(todo), N_OUT))
+            run_jobs(self.kind, self.params, tables, self.memory_steps, layer_params, row, self.setups, self.setup_at,
+                     self.scenes, self.scene_at, self.starts, np.ascontiguousarray(jobs[todo, 0], dtype=np.int64),
+                     np.ascontiguousarray(jobs[todo, 1], dtype=np.int64), part)
+            out[todo] = part
+            todo, slots = todo[part[:, OUTCOME] == OVERFLOW], 2 * slots
+        return out
+
+
+def _concatenate(arrays) -> tuple[np.ndarray, np.ndarray]:
+    """(the arrays end to end, their offsets (len + 1,))."""
+    at = np.concatenate([[0], np.cumsum([len(a) for a in arrays])]).astype(np.int64)
+    return np.ascontiguousarray(np.concatenate(arrays), dtype=float), at

@@ -1,0 +1,101 @@
+"""Fitness of candidate rule bases: a whole population × its worlds in one compiled call.
+
+A candidate is a gene vector of a :class:`~fuzzynav.tune.space.SearchSpace`; it becomes the
+controller's rule base for the tuned role (the other roles keep theirs), packed as the simulator's
+compiled navigators read them (:func:`fuzzynav.kernels.ts0.pack`), and every candidate runs every
+world in one call of :func:`fuzzynav.tune.episodes.run_jobs`.
+
+The cost of one episode (:func:`episode_cost`, minimised) ranks success first, then time: a
+reached goal costs its time over the world's time limit (below 1), a timeout 10 plus the share of
+the start distance still to go, a collision 20 plus that share: a timeout outweighs ten arrivals
+even at the time limit (about fifty at the times of the thesis' navigators, ~20 s of 120 s), and
+any timeout is better than a collision. The scalar fitness is the mean over
+the worlds; the objectives of NSGA-II (:data:`OBJECTIVES`) are the failure rate, the mean time
+(the time limit for a failed episode) and minus the mean least clearance.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from fuzzynav.kernels import ts0
+from fuzzynav.kernels.step import COLLISION, REACHED, TIMEOUT
+from fuzzynav.tune.episodes import CLEARANCE, INVALID, OUTCOME, REMAINING, START_DISTANCE, STEPS, Worlds
+
+OBJECTIVES = ("success", "time", "clearance")
+TIMEOUT_COST, COLLISION_COST, INVALID_COST = 10.0, 20.0, 30.0
+
+
+def episode_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.ndarray:
+    """Cost of each episode row of ``out`` (module docstring); ``dt``, ``max_time`` per row."""
+    outcome = out[:, OUTCOME]
+    left = np.clip(out[:, REMAINING] / np.maximum(out[:, START_DISTANCE], 1e-9), 0.0, 1.0)
+    cost = np.where(outcome == REACHED, out[:, STEPS] * dt / max_time, 0.0)
+    cost = np.where(outcome == TIMEOUT, TIMEOUT_COST + left, cost)
+    cost = np.where(outcome == COLLISION, COLLISION_COST + left, cost)
+    return np.where(outcome == INVALID, INVALID_COST, cost)
+
+
+class Fitness:
+    """Scores gene vectors of ``space`` for ``controller``'s ``role`` on ``scenarios``; counts the
+    candidates and episodes it simulated and the time it took (:attr:`evaluations`,
+    :attr:`episodes`, :attr:`seconds`)."""
+
+    def __init__(self, controller, role: str, space, scenarios):
+        self.controller, self.role, self.space = controller, role, space
+        self.worlds = Worlds(scenarios, controller)
+        self.evaluations = self.episodes = 0
+        self.seconds = 0.0
+
+    def tables(self, system) -> np.ndarray:
+        """The packed rule bases of the controller with ``system`` for the tuned role."""
+        systems = self.controller.systems
+        return ts0.pack([system if role == self.role else systems[role] for role in self.controller.roles],
+                        list(self.controller.roles))
+
+    def simulate(self, population: np.ndarray) -> np.ndarray:
+        """``(P, W, N_OUT)`` episode rows of every candidate on every world."""
+        started = time.perf_counter()
+        population = np.atleast_2d(population)
+        tables = np.stack([self.tables(self.space.decode(genes)) for genes in population])
+        n, w = len(population), len(self.worlds)
+        jobs = np.stack(np.meshgrid(np.arange(n), np.arange(w), indexing="ij"), axis=-1).reshape(-1, 2)
+        out = self.worlds.run(tables, jobs).reshape(n, w, -1)
+        self.evaluations += n
+        self.episodes += n * w
+        self.seconds += time.perf_counter() - started
+        return out
+
+    def objectives(self, population: np.ndarray) -> np.ndarray:
+        """``(P, 1 + len(OBJECTIVES))``: the scalar cost, then failure rate, mean time (s, the time
+        limit when not reached) and minus the mean least clearance (m), each to be minimised."""
+        out = self.simulate(population)
+        dt, max_time = self.worlds.dt, self.worlds.max_time
+        cost = np.stack([episode_cost(rows, dt, max_time) for rows in out]).mean(axis=1)
+        reached = out[:, :, OUTCOME] == REACHED
+        times = np.where(reached, out[:, :, STEPS] * dt, max_time)
+        clearance = np.clip(out[:, :, CLEARANCE], -1.0, None)
+        return np.column_stack([cost, 1.0 - reached.mean(axis=1), times.mean(axis=1), -clearance.mean(axis=1)])
+
+    @property
+    def rate(self) -> float:
+        """Candidate evaluations per second of simulation so far."""
+        return self.evaluations / self.seconds if self.seconds else 0.0
+
+
+def summary(out: np.ndarray, dt: np.ndarray) -> dict:
+    """Success / collision / timeout rates, mean time to the goal and least clearance of one
+    candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports)."""
+    outcome = out[:, OUTCOME]
+    reached = outcome == REACHED
+    return {
+        "worlds": int(len(out)),
+        "success_rate": float(reached.mean()),
+        "collision_rate": float((outcome == COLLISION).mean()),
+        "timeout_rate": float((outcome == TIMEOUT).mean()),
+        "collisions": int((outcome == COLLISION).sum()),
+        "mean_time_s": float((out[reached, STEPS] * dt[reached]).mean()) if reached.any() else None,
+        "min_clearance_m": float(out[:, CLEARANCE].min()),
+    }

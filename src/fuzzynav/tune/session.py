@@ -1,0 +1,244 @@
+"""One tuning run: checked options, the generations, the checkpoint, the result and its held-out test.
+
+:func:`check` validates every option before any work (an :class:`InputError` naming the option);
+:func:`tune` runs generations of ask → simulate (:class:`~fuzzynav.tune.fitness.Fitness`) →
+tell until the budget is spent, keeping the best candidate ever
+evaluated (the start is evaluated first, so the result is never worse than the start on the
+training worlds). After each generation the checkpoint (``.npz``: the options and every
+population with its objective values) is rewritten atomically; ``resume`` replays the stored
+generations through a new optimiser — same seed, same populations, same values, no
+simulation — checks that each replayed population is the one stored, and goes on, so a killed
+and resumed run ends exactly where an uninterrupted one does.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav import validation
+from fuzzynav.errors import InputError
+from fuzzynav.tune.fitness import OBJECTIVES, Fitness, episode_cost, summary
+from fuzzynav.tune.optimisers import METHODS
+from fuzzynav.tune.space import WHAT
+
+MAX_BUDGET = 10_000_000
+HOLDOUT_OFFSET = 1000  # a generated family's held-out worlds: world seed + this (worlds never tuned on)
+
+
+@dataclass(frozen=True)
+class TuneRequest:
+    """The options of ``fuzzynav tune`` (:mod:`fuzzynav.cli.tune`)."""
+
+    target: str  # CONTROLLER:ROLE
+    worlds: str  # a SUITE of ``fuzzynav bench``
+    what: str = "both"
+    method: str = "ga"
+    budget: int = 3000  # simulated episodes (one candidate on one training world each)
+    seed: int = 0
+    population: int = 10
+    objectives: tuple[str, ...] = ()
+    holdout: str | None = None  # default: the family's worlds with seed + HOLDOUT_OFFSET
+    out: str | None = None
+    resume: bool = False
+    curve: str | None = None
+    progress: bool = True
+
+    @property
+    def controller(self) -> str:
+        return self.target.partition(":")[0]
+
+    @property
+    def role(self) -> str:
+        return self.target.partition(":")[2]
+
+    def replayed(self) -> dict:
+        """The options a checkpoint must share with the run resuming it."""
+        keys = ("target", "worlds", "what", "method", "seed", "population", "objectives")
+        return {key: list(value) if isinstance(value, tuple) else value
+                for key, value in asdict(self).items() if key in keys}
+
+
+def check(request: TuneRequest):
+    """Every option checked before any work; returns (controller, start system, suite, held-out suite)."""
+    from fuzzynav.bench.suites import parse_suite
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.catalog.roles import default_system
+    from fuzzynav.tune.space import SearchSpace
+
+    controller, sep, role = request.target.partition(":")
+    if not sep or not controller or not role:
+        raise InputError(f"expected CONTROLLER:ROLE (e.g. fuzzy-2b:oab), got {request.target!r}",
+                         field="CONTROLLER:ROLE")
+    try:
+        system = default_system(controller, role)
+    except InputError as error:
+        raise InputError(error.problem, field="CONTROLLER:ROLE") from None
+    validation.choice(request.what, WHAT, field="--what")
+    validation.choice(request.method, METHODS, field="--method")
+    validation.integer(request.population, field="--population", lo=2, hi=10_000)
+    validation.integer(request.budget, field="--budget", lo=1, hi=MAX_BUDGET)
+    validation.integer(request.seed, field="--seed", lo=0, hi=2**32 - 1)
+    if request.objectives and request.method != "nsga2":
+        raise InputError("--objectives needs --method nsga2 (the other methods minimise one cost)", field="--objectives")
+    if request.method == "nsga2":
+        if len(request.objectives) < 2:
+            raise InputError(f"nsga2 needs two or more of {', '.join(OBJECTIVES)}", field="--objectives")
+        for name in request.objectives:
+            validation.choice(name, OBJECTIVES, field="--objectives")
+        if len(set(request.objectives)) != len(request.objectives):
+            raise InputError("an objective is named twice", field="--objectives")
+    if request.method == "aco" and request.what != "rules":
+        raise InputError("the ant colony walks rule conclusions only: use --what rules", field="--method")
+    if request.out is not None:
+        from fuzzynav.fuzzy.io import format_of
+
+        try:
+            format_of(request.out)
+        except InputError as error:
+            raise InputError(error.problem, source=request.out, field="--out") from None
+    if request.resume and request.out is None:
+        raise InputError("--resume needs --out (the checkpoint lives beside it)", field="--resume")
+    SearchSpace(system, request.what)  # a system with nothing to tune fails here
+    suite = parse_suite(request.worlds)
+    if request.budget < request.population * suite.size:
+        raise InputError(f"{request.budget} episodes do not cover one generation: {request.population} candidates × "
+                         f"{suite.size} worlds = {request.population * suite.size} episodes at least", field="--budget")
+    holdout = parse_suite(request.holdout) if request.holdout else (
+        parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
+    return make_controller(controller), system, suite, holdout
+
+
+def checkpoint_path(request: TuneRequest) -> Path | None:
+    """``OUT.tune.npz`` beside ``--out`` (no checkpoint without it)."""
+    return None if request.out is None else Path(f"{request.out}.tune.npz")
+
+
+def _load_checkpoint(path: Path, request: TuneRequest) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The stored generations [(population, values)], after checking the options match."""
+    validation.check_npz(path)
+    with np.load(path, allow_pickle=False) as data:
+        try:
+            options = json.loads(str(data["options"]))
+            sizes, x, f = data["sizes"], data["x"], data["f"]
+        except (KeyError, ValueError) as error:
+            raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
+    for key, value in request.replayed().items():
+        if options.get(key) != value:
+            raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
+                             source=str(path), field=key)
+    ends = np.cumsum(sizes)
+    return [(x[end - size:end], f[end - size:end]) for size, end in zip(sizes, ends)]
+
+
+def _save_checkpoint(path: Path, request: TuneRequest, generations) -> None:
+    from fuzzynav.storage import save_npz_atomic
+
+    save_npz_atomic(path, options=np.array(json.dumps(request.replayed())),
+                    sizes=np.array([len(x) for x, _ in generations], dtype=np.int64),
+                    x=np.concatenate([x for x, _ in generations]), f=np.concatenate([f for _, f in generations]))
+
+
+def _columns(request: TuneRequest) -> list[int]:
+    """Columns of :meth:`Fitness.objectives` the optimiser minimises."""
+    return [1 + OBJECTIVES.index(name) for name in request.objectives] if request.objectives else [0]
+
+
+def tune(request: TuneRequest) -> dict:
+    """Run ``request``; returns the result (module docstring): the tuned system under ``system``,
+    the start's and the result's training and held-out summaries, the learning curve, the speed."""
+    from fuzzynav import progress
+    from fuzzynav.tune.optimisers import make_optimiser
+    from fuzzynav.tune.space import SearchSpace
+
+    controller, system, suite, holdout = check(request)
+    space = SearchSpace(system, request.what)
+    path = checkpoint_path(request)
+    stored = _load_checkpoint(path, request) if request.resume and path is not None and path.is_file() else []
+    fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)])
+    optimiser = make_optimiser(request.method, space, request.population, request.seed,
+                               n_obj=len(_columns(request)))
+    generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
+    best_x, best = space.start, math.inf
+    curve = []  # (episodes, best cost so far)
+    with progress.bar(total=request.budget, desc=f"tune {request.target} ({request.method})", unit="episode") as bar:
+        while spent + n_worlds <= request.budget:
+            population = optimiser.ask()
+            asked = len(population)
+            population = population[:(request.budget - spent) // n_worlds]
+            values = np.zeros((0, 1 + len(OBJECTIVES)))
+            if len(generations) < len(stored):  # replayed: the stored values, none simulated
+                x, values = stored[len(generations)]
+                known = min(len(x), len(population))
+                if x.shape[1:] != population.shape[1:] or not np.array_equal(x[:known], population[:known]):
+                    raise InputError(f"generation {len(generations)} replays differently from the checkpoint "
+                                     "(another version of the optimiser?)", source=str(path))
+                values = values[:known]
+            if len(population) > len(values):  # new candidates (or the rest of a generation cut short)
+                values = np.concatenate([values, fitness.objectives(population[len(values):])])
+            spent += len(population) * n_worlds
+            i = int(np.argmin(values[:, 0]))
+            if values[i, 0] < best:
+                best_x, best = population[i].copy(), float(values[i, 0])
+            curve.append((spent, best))
+            generations.append((population, values))
+            if len(population) == asked:  # a population cut short by the budget ends the run untold
+                optimiser.tell(population, values[:, columns])
+            if path is not None:
+                _save_checkpoint(path, request, generations)
+            bar.update(len(population) * n_worlds)
+            bar.set_postfix(best=f"{best:.4f}")
+    return _result(request, space, fitness, controller, holdout, generations, best_x, curve)
+
+
+def _result(request, space, fitness, controller, holdout, generations, best_x, curve) -> dict:
+    """The tuned system and the numbers of a finished run."""
+    tuned = space.decode(best_x, description=f"{space.system.description}; tuned by fuzzynav tune {request.target} "
+                                             f"--what {request.what} --method {request.method} --budget "
+                                             f"{request.budget} --worlds {request.worlds} --seed {request.seed}")
+    both = fitness.simulate(np.stack([space.start, best_x]))
+    dt, limit = fitness.worlds.dt, fitness.worlds.max_time
+    result = {
+        "target": request.target, "what": request.what, "method": request.method, "budget": request.budget,
+        "worlds": request.worlds, "seed": request.seed, "population": request.population,
+        "genes": space.size, "evaluations": int(sum(len(x) for x, _ in generations)),
+        "episodes": int(sum(len(x) for x, _ in generations)) * len(fitness.worlds),
+        "evaluations_per_s": fitness.rate, "episodes_per_s": fitness.rate * len(fitness.worlds),
+        "simulation_s": fitness.seconds,
+        "start": {"training": {**summary(both[0], dt), "cost": float(episode_cost(both[0], dt, limit).mean())}},
+        "tuned": {"training": {**summary(both[1], dt), "cost": float(episode_cost(both[1], dt, limit).mean())}},
+        "changed": bool(space.decode(best_x) != space.decode(space.start)),
+        "curve": [[int(n), float(c)] for n, c in curve],
+        "system": tuned,
+    }
+    if request.method == "nsga2":
+        result["front"] = _front(generations, _columns(request), request.objectives)
+        for k, member in enumerate(result["front"]):
+            member["system"] = space.decode(member["genes"], description=f"{tuned.description}; Pareto front "
+                                                                         f"member {k}: {member['objectives']}")
+    if holdout is not None:
+        held = Fitness(controller, request.role, space, [holdout.scenario(i, 0) for i in range(holdout.size)])
+        rows = held.simulate(np.stack([space.start, best_x]))
+        result["holdout_worlds"] = holdout.name
+        result["start"]["holdout"] = summary(rows[0], held.worlds.dt)
+        result["tuned"]["holdout"] = summary(rows[1], held.worlds.dt)
+    return result
+
+
+def _front(generations, columns, names) -> list[dict]:
+    """The non-dominated candidates of every evaluated one, on the chosen objectives (shown as the
+    success rate, the mean time in s and the mean least clearance in m)."""
+    x = np.concatenate([g for g, _ in generations])
+    f = np.concatenate([v for _, v in generations])
+    chosen = f[:, columns]
+    keep = [i for i in range(len(chosen))
+            if not np.any(np.all(chosen <= chosen[i], axis=1) & np.any(chosen < chosen[i], axis=1))]
+    _, unique = np.unique(chosen[keep], axis=0, return_index=True)
+    keep = [keep[k] for k in sorted(unique)]
+    shown = {"success": lambda v: 1.0 - v, "time": lambda v: v, "clearance": lambda v: -v}  # back to their units
+    return [{"genes": x[i], "objectives": {name: shown[name](float(v)) for name, v in zip(names, chosen[i])},
+             "cost": float(f[i, 0])} for i in keep]
