@@ -12,8 +12,9 @@ import sys
 import numpy as np
 
 # (built-in scenario, controller): compiled and Python navigators, path and target trackers
+# (fuzzy-2b-layered is the fuzzy-2b-thesis of the recorded code, whose layers are optional since)
 RUNS = (
-    ("fig-IV-15a", "fuzzy-5b"), ("fig-IV-22b", "fuzzy-5b"), ("fig-IV-23", "fuzzy-2b-thesis"),
+    ("fig-IV-15a", "fuzzy-5b"), ("fig-IV-22b", "fuzzy-5b"), ("fig-IV-23", "fuzzy-2b-layered"),
     ("example-goal", "dwa"), ("fig-IV-22a", "vfh"), ("example-path", "fuzzy-tracker"),
     ("example-target", "pure-pursuit"),
 )

@@ -61,6 +61,18 @@ register_controller(ControllerSpec(
     "the five behaviours GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16, as published",
     "thesis §IV.7", GOAL, "rays", roles=FIVE))
 register_controller(ControllerSpec(
+    "fuzzy-2b-layered", "fuzzynav.control.robust:fuzzy_2b_layered",
+    "fuzzy-2b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
+    "thesis Table IV.2, Fig IV.9; this package's layers", GOAL, "rays", roles=TWO))
+register_controller(ControllerSpec(
+    "fuzzy-5b-layered", "fuzzynav.control.robust:fuzzy_5b_layered",
+    "fuzzy-5b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
+    "thesis §IV.7; this package's layers", GOAL, "rays", roles=FIVE))
+register_controller(ControllerSpec(
+    "goal-seeking-guarded", "fuzzynav.control.goal_seeking:make_guarded",
+    "goal-seeking with this package's anti-orbit guard", "thesis Table IV.1; this package's layer", GOAL,
+    roles=GSB))
+register_controller(ControllerSpec(
     "fuzzy-2b-gap", "fuzzynav.control.avoidance:make_gap",
     "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits; no recovery, no route (opt-in)",
     "thesis Table IV.2", GOAL, "lidar", roles=TWO))
@@ -73,7 +85,7 @@ register_controller(ControllerSpec(
     "thesis Table VI.2", GOAL, "rays", goal_directed=False, roles={"wall": "wall-follow"}))
 register_controller(ControllerSpec(
     "fuzzy-tracker", "fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path / target tracker (25 rules)",
-    "thesis Table V.1, §V.3.1", TRACK))
+    "thesis Table V.1, §V.3.1", TRACK, roles={"tracker": "tracking"}))
 register_controller(ControllerSpec(
     "neural-tracker", "fuzzynav.learn.tasks.trackers:neural_tracker",
     "MLP inverse-model tracker, trained on the fly", "thesis §V.3.2", TRACK))

@@ -2,7 +2,8 @@
 
 Every fuzzy controller names its systems by role — ``goal-seeking``: ``gsb`` (Table IV.1);
 ``fuzzy-2b``: ``gsb`` and ``oab`` (Table IV.2); ``fuzzy-5b``: ``gsb``, ``foa``, ``roa``, ``loa``,
-``vrb`` (§IV.7); ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
+``vrb`` (§IV.7); ``wall-follow``: ``wall`` (Table VI.2); ``fuzzy-tracker``: ``tracker`` (Table V.1) — and
+its factory accepts
 ``systems={role: system}``. Which controller has which roles is its spec's ``roles``
 (:mod:`fuzzynav.catalog.controllers`); :data:`ROLES` reads them. A replacement comes from any file
 :func:`fuzzynav.fuzzy.io.load` reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the
