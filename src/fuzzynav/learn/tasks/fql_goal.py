@@ -30,8 +30,8 @@ from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
 from fuzzynav.learn.tasks.common import (
     GOAL_TOLERANCE, MAX_STEPS, PI, SPEED3, SPEED_SHARE, STEERING3, STEERING5, STEERING_SPEED, TOLERANCE, Phase,
-    batch_size, checkpoint_path, episode_budget, finish, fql_learner, grid_system, load_fuzzy_model, output_variable,
-    run_phases, steering_episodes, summarise)
+    checkpoint_path, episode_budget, extraction_tolerance, finish, fql_learner, grid_system, load_fuzzy_model,
+    output_variable, robots, protocol_record, rules_changed, run_phases, steering_episodes, summarise)
 
 
 def goal_partition_15() -> list[Variable]:
@@ -53,6 +53,19 @@ def goal_partition_15() -> list[Variable]:
 def goal_partition_35() -> list[Variable]:
     """Inputs of the 35-rule goal seeker: the chapter IV partition (Figs VI.11–VI.12 = IV.5–IV.6)."""
     return list(goal_seeking().inputs)
+
+
+SPEED_DECISION = 10  # steps Δt (1 s) per decision of the speed phase — a deviation, see below
+# Reward VI.14 pays only for arriving slowly (+1) and punishes speeding up; being fast pays through the
+# discount alone: the +1 of an arrival T decisions ahead is worth γ^T. With a decision every Δt = 0.1 s
+# (T ≈ 100 from 10 m away) γ^T ≈ 0 for every candidate, and a creeping speed that never arrives ties
+# with a fast one; one decision per second (T ≈ 10) keeps the arrival visible (docs/results/chapter-vi.md).
+# Its episodes start at the steering phase's constant speed ("lorsque le robot est capable de rejoindre son
+# but avec une vitesse fixe, on applique le deuxième algorithme", §VI.5.1): from rest, every candidate would
+# "speed up" at the first decision and share the −1 of eq VI.14. And an episode that runs out of time
+# without arriving ends with SPEED_TIMEOUT: otherwise creeping, never arriving nor speeding up, is never
+# punished, and eq VI.14's −1 for speeding up makes it the learner's choice (docs/results/chapter-vi.md).
+SPEED_TIMEOUT = -1.0
 
 
 @dataclass(frozen=True)
@@ -77,9 +90,10 @@ GOAL_TASKS = {
 
 
 
-def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None = None):
-    """Yields the phases of an FQL goal task; the speed phase is built from the trained steering."""
-    batch = batch_size(task.fixed) if batch is None else batch
+def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = 1):
+    """Yields the phases of an FQL goal task (``batch`` robots per batch: 1 is the thesis'
+    protocol); the speed phase is built from the trained steering."""
+    tolerance = extraction_tolerance(batch, TOLERANCE)
     inputs = task.inputs()
     alpha = output_variable("alpha", task.steering, (-PI / 5, PI / 5))
     template = grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
@@ -96,12 +110,13 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None =
         speed_values = np.array(list(SPEED3.values()))
         speed = fql_learner(premise, speed_values, 0.0, batch)
         env = RobotEnv(layout, lambda s: s.goal,
-                       lambda a, s: (steer.greedy_action(s.goal, TOLERANCE)[:, 0], a[:, 0]), GoalSpeedReward(),
-                       batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
+                       lambda a, s: (steer.greedy_action(s.goal, tolerance)[:, 0], a[:, 0]), GoalSpeedReward(),
+                       batch=batch, max_steps=MAX_STEPS // SPEED_DECISION, tolerance=GOAL_TOLERANCE,
+                       decision_steps=SPEED_DECISION, start_speed=STEERING_SPEED, timeout_reward=SPEED_TIMEOUT)
         yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
 
 
-def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
+def goal_system(task: GoalFQL, learners: dict, tolerance: float = TOLERANCE) -> FuzzySystem:
     """The extracted controller: every rule with its best conclusion(s), as a TS0 system
     (:func:`~fuzzynav.learn.fql.extract_system`)."""
     outputs = {"steering": output_variable("alpha", task.steering, (-PI / 5, PI / 5)),
@@ -109,7 +124,7 @@ def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
     learned = [name for name in outputs if name in learners]
     rules = math.prod(len(v.terms) for v in task.inputs())
     return extract_system([learners[name] for name in learned], [outputs[name] for name in learned],
-                          tolerance=TOLERANCE, name=task.name,
+                          tolerance=tolerance, name=task.name,
                           description=f"Goal seeking learned by fuzzy Q-learning (thesis §VI.5.1, Algorithm VI.1): "
                                       f"{rules} rules, {len(task.steering)} steering conclusions"
                                       + (", speed learned" if "speed" in learners else ""))
@@ -117,10 +132,16 @@ def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
 
 def train_goal_fql(task: GoalFQL, request) -> dict:
     """Train ``task`` and write its model (the steering, and the speed if the task learns it)."""
-    phases, learners = run_phases(goal_fql_phases(task, request.out, episode_budget(request, task.episodes)), request)
-    system = goal_system(task, learners)
+    batch = robots(request)
+    phases, learners = run_phases(goal_fql_phases(task, request.out, episode_budget(request, task.episodes), batch),
+                                  request)
+    tolerance = extraction_tolerance(batch, TOLERANCE)
+    system = goal_system(task, learners, tolerance)
+    learned = list(learners.values())
     document = {"kind": "fql-goal", **to_document(system), "constant_speed": STEERING_SPEED,
-                "training": {"task": task.name, "seed": request.seed, **summarise(phases)}}
+                "training": {"task": task.name, "seed": request.seed, **protocol_record(batch, "none"),
+                             "rules_changed": rules_changed(learned, tolerance),
+                             **summarise(phases)}}
     return finish(request, document, phases, task.name)
 
 
