@@ -56,10 +56,13 @@ WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered
 
 STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
 STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
-SPEED3 = {"S": 0.1, "F": 1.0, "M": 1.8}  # eq VI.13's three candidate speeds V_i1..3 (values not given):
-# a creeping S (0.1 m/s) and F, M of Fig IV.8. Table IV.1's robot stops with Z = 0 near the goal; with
-# the 15-rule partition, P is flat over the goal tolerance (0.3 m), so a zero conclusion would never
-# arrive and F (1 m/s) cannot stop: S lets a learned seeker arrive at ≤ 0.2 m/s (docs/results/chapter-vi.md).
+SPEED3 = {"S": 0.1, "L": 0.5, "F": 1.0, "M": 1.8, "G": 3.0}  # the candidate speeds' labels (m/s): F, M, G
+# of Fig IV.8 and, to stop (Table IV.1 concludes Z = 0 at the goal), a creeping S and a low L
+SPEED_CANDIDATES = (("S", "L", "F"), ("L", "F", "M"), ("F", "M", "G"))  # eq VI.13's V_i1..3 of a rule whose
+# d_rg is its partition's first term, its second, any farther one. The thesis indexes the candidates by
+# rule (V_ij) without their values; a rule near the goal may creep, one far away may not (with one set for
+# every rule, eq VI.14 — −1 for speeding up, +1 only on arriving slowly — lets a creeping speed that never
+# arrives win everywhere: docs/results/chapter-vi.md).
 
 
 @dataclass(frozen=True)

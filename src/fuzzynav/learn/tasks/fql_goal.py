@@ -29,7 +29,7 @@ from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
 from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
 from fuzzynav.learn.tasks.common import (
-    GOAL_TOLERANCE, MAX_STEPS, PI, SPEED3, SPEED_SHARE, STEERING3, STEERING5, STEERING_SPEED, TOLERANCE, Phase,
+    GOAL_TOLERANCE, MAX_STEPS, PI, SPEED3, SPEED_CANDIDATES, SPEED_SHARE, STEERING3, STEERING5, STEERING_SPEED, TOLERANCE, Phase,
     checkpoint_path, episode_budget, extraction_tolerance, finish, fql_learner, grid_system, load_fuzzy_model,
     output_variable, robots, protocol_record, rules_changed, run_phases, steering_episodes, summarise)
 
@@ -107,13 +107,20 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = 1):
                    batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
     if task.learn_speed:
-        speed_values = np.array(list(SPEED3.values()))
-        speed = fql_learner(premise, speed_values, 0.0, batch)
+        speed = fql_learner(premise, speed_candidates(inputs), 0.0, batch)
         env = RobotEnv(layout, lambda s: s.goal,
                        lambda a, s: (steer.greedy_action(s.goal, tolerance)[:, 0], a[:, 0]), GoalSpeedReward(),
                        batch=batch, max_steps=MAX_STEPS // SPEED_DECISION, tolerance=GOAL_TOLERANCE,
                        decision_steps=SPEED_DECISION, start_speed=STEERING_SPEED, timeout_reward=SPEED_TIMEOUT)
         yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
+
+
+def speed_candidates(inputs) -> np.ndarray:
+    """(R, 3) candidate speeds of every rule of the grid over ``inputs`` (d_rg first, slowest):
+    :data:`~fuzzynav.learn.tasks.common.SPEED_CANDIDATES` by the position of the rule's d_rg term."""
+    per_term = [SPEED_CANDIDATES[min(k, len(SPEED_CANDIDATES) - 1)] for k in range(len(inputs[0].terms))]
+    rows = math.prod(len(v.terms) for v in inputs[1:])
+    return np.array([[SPEED3[label] for label in per_term[r // rows]] for r in range(len(per_term) * rows)])
 
 
 def goal_system(task: GoalFQL, learners: dict, tolerance: float = TOLERANCE) -> FuzzySystem:
