@@ -22,7 +22,7 @@ def test_one_robot_zero_q_and_best_quality_unless_parallel_is_asked(tmp_path):
     assert common.robots(TrainRequest(out=tmp_path / "m.json", parallel=50)) == 50
     assert common.extraction_tolerance(1, 0.05) == 0.0 and common.extraction_tolerance(50, 0.05) == 0.05
     learner = common.fql_learner(GridPremise(fql_avoid.avoid_template()), np.zeros((16, 3)), batch=1)
-    assert np.all(learner.q == 0.0) and isinstance(learner.alpha, InverseVisits) and learner.alpha.floor == 0.05
+    assert np.all(learner.q == 0.0) and isinstance(learner.alpha, InverseVisits) and learner.alpha.floor == 0.01
     steering = next(fql_avoid.fql_avoid_phases(tmp_path / "a.json", 10, batch=1, prior="none"))
     assert steering.env.batch == 1 and tuple(steering.learner.prior[0]) == (1,) * 16  # Z: nothing chosen
 

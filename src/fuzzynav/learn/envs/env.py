@@ -102,14 +102,17 @@ class RobotEnv:
         The period is ``decision_steps`` steps Δt: the learner's action is held while ``command``
         is re-evaluated on the current state at every step (so a goal seeker blended into the
         command keeps steering); the episode may end at any of them; the reward compares the
-        states at both ends of the period.
+        states at both ends of the period, the speed at the end being the one the robot last
+        drove at (a row that reached the goal mid-period arrived at that speed, not at rest).
         """
+        from dataclasses import replace
         import fuzzynav.kernels.motion as motion  # numba, imported when first needed
 
         before = self.state
         now = before
         collided = np.zeros(self.batch, dtype=bool)
         reached = np.zeros(self.batch, dtype=bool)
+        driven = before.speed.copy()
         for _ in range(self.decision_steps):
             live = ~(self.done | collided | reached)
             steering, speed = self.command(action, now)
@@ -117,10 +120,11 @@ class RobotEnv:
             motion.move_live(now.pose, as_column(steering, self.batch), as_column(speed, self.batch), live,
                              self.params.array(), pose, commands)
             now = self._state(now.world, pose, commands[:, 1], commands[:, 0], now.target)
+            driven = np.where(live, commands[:, 1], driven)
             collided |= live & (now.world.clearance(pose[:, :2]) < self.params.radius)
             if now.goal is not None:
                 reached |= live & ~collided & (now.goal[:, 0] <= self.tolerance)
-        reward = self.reward(before, now, collided, reached)
+        reward = self.reward(before, replace(now, speed=driven) if self.decision_steps > 1 else now, collided, reached)
         self.k += 1
         terminated = collided | reached
         truncated = np.full(self.batch, self.k >= self.max_steps)

@@ -272,10 +272,11 @@ def batch_size(fixed: bool) -> int:
 
 
 # The thesis' protocol (module docstring). The thesis gives neither ε, β nor γ: ε-greedy is its
-# example policy (§VI.4, "ε-gloutonne par exemple"), β = 1 / (1 + visits) its eq III.24 (floored so
-# that late corrections still count), γ = 0.9. ε decays per episode 0.3 → 0.02 (the floor after
+# example policy (§VI.4, "ε-gloutonne par exemple"), β = 1 / (1 + visits) its eq III.24 (floored at
+# 0.01 so that late corrections still count: at 0.05 the avoider's qualities stayed too noisy to rank
+# its candidates, docs/results/chapter-vi.md), γ = 0.9. ε decays per episode 0.3 → 0.02 (the floor after
 # ~900 episodes: the same pace per episode as the parallel learner's × 0.85 per batch of 50).
-THESIS = {"robots": 1, "gamma": 0.9, "epsilon": (0.3, 0.85 ** (1 / BATCH), 0.02), "rate_floor": 0.05,
+THESIS = {"robots": 1, "gamma": 0.9, "epsilon": (0.3, 0.85 ** (1 / BATCH), 0.02), "rate_floor": 0.01,
           "tolerance": 0.0, "initial_q": 0.0}
 
 
@@ -299,7 +300,7 @@ def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior
     """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
 
     Thesis protocol (``batch`` 1, :data:`THESIS`): β = 1 / (1 + visits) (eq III.24) down to
-    0.05, ε = 0.3 · 0.9967^episode down to 0.02. Batch learner: β = 1 / (1 + visits) floored so
+    0.01, ε = 0.3 · 0.9967^episode down to 0.02. Batch learner: β = 1 / (1 + visits) floored so
     the B parallel corrections stay small (``alpha`` replaces it when given), ε decaying
     0.3 → 0.02 (× 0.85 per batch)."""
     if thesis_protocol(batch):

@@ -218,7 +218,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
 
 
 AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
-AVOID_EPISODES = 2000  # default budget: 1,000 per phase (the hold of WORLD_CONVERGENCE needs 250 episodes after k)
+AVOID_EPISODES = 3000  # default budget: 1,500 per phase (the thesis plots 450 steering and 2,000 speed episodes)
 
 
 def train_fql_avoid(request, open_side: bool = AVOID_OPEN, watch=None) -> dict:
