@@ -12,8 +12,10 @@ denser early on) its greedy policy runs the same held-out episodes (:func:`fuzzy
 
 PPO and SAC act in the continuous Box, DQN in the Discrete set of the thesis' candidate actions,
 FQL through :class:`fuzzynav.gym.fql_agent.FQLAgent` — on obstacle avoidance the thesis' method
-(:mod:`fuzzynav.gym.fql_avoid`: the avoider inside its goal navigator, from a-priori
-conclusions), so its success before any learning is that of the priors and the navigator. PPO and FQL gather with 8 robots in
+(:mod:`fuzzynav.gym.fql_avoid`: the avoider inside its goal navigator) twice: ``fql`` from the
+a-priori conclusions (its success before any learning is that of the priors and the navigator)
+and ``fql-none`` from q = 0 (every rule neutral until learned: deep RL compared with learning, not
+with a hand-written table). PPO and FQL gather with 8 robots in
 parallel, SAC and DQN with one (their usual set-up); hyper-parameters are the library's defaults
 except where the small budget needs otherwise (listed in :data:`SB3_SETTINGS`). Wall time is
 the training time alone (evaluations excluded), one thread for torch. Every evaluation also
@@ -90,7 +92,7 @@ class Clock:
         self.since = time.perf_counter()
 
 
-def run_fql(task, seed, steps, checkpoints, held):
+def run_fql(task, seed, steps, checkpoints, held, prior="thesis"):
     clock = Clock(checkpoints)
 
     def checkpoint(agent, done):
@@ -99,8 +101,8 @@ def run_fql(task, seed, steps, checkpoints, held):
             clock.record(done, lambda: evaluate(agent.predict, task, False, held))
 
     env = FuzzynavVectorEnv(N_PARALLEL, task, **TRAIN_OPTIONS[task])
-    agent = FQLAgent(task)
-    if clock.due(0):  # the untrained controller: learn() of 0 steps sets up the a-priori rules
+    agent = FQLAgent(task, prior=prior)
+    if clock.due(0):  # the untrained controller: learn() of 0 steps sets up the initial rules
         clock.record(0, lambda: evaluate(agent.learn(env, 0, seed=100 * seed).predict, task, False, held))
     agent.learn(env, steps, seed=100 * seed, callback=checkpoint)  # from scratch
     return clock.curve, clock.train
@@ -194,8 +196,10 @@ def plot(results: dict, path: Path) -> None:
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tasks", nargs="+", default=["goal", "avoid"], choices=sorted(TRAIN_OPTIONS))
-    parser.add_argument("--algos", nargs="+", default=["fql", "ppo", "sac", "dqn"],
-                        choices=["fql", "ppo", "sac", "dqn"])
+    parser.add_argument("--algos", nargs="+", default=["fql", "fql-none", "ppo", "sac", "dqn"],
+                        choices=["fql", "fql-none", "ppo", "sac", "dqn"],
+                        help="fql: FQL from the a-priori avoidance table (--prior thesis); fql-none: FQL from q = 0 "
+                             "(--prior none; on goal seeking the same as fql)")
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--first-seed", type=int, default=0, help="run seeds FIRST … FIRST + SEEDS − 1")
     parser.add_argument("--steps", type=int, default=20_000, help="environment steps per run")
@@ -226,8 +230,9 @@ def main(argv=None) -> None:
         for algo in args.algos:
             results[task][algo] = []
             for seed in range(args.first_seed, args.first_seed + args.seeds):
-                if algo == "fql":
-                    curve, seconds = run_fql(task, seed, args.steps, checkpoints, held)
+                if algo in ("fql", "fql-none"):
+                    prior = "none" if algo == "fql-none" else "thesis"
+                    curve, seconds = run_fql(task, seed, args.steps, checkpoints, held, prior)
                 else:
                     curve, seconds = run_sb3(algo, task, seed, args.steps, checkpoints, held)
                 results[task][algo].append({"seed": seed, "curve": curve, "train_seconds": seconds})

@@ -51,7 +51,7 @@ def test_fql_model_is_a_readable_rule_table(tmp_path, capsys):
 
 @pytest.mark.slow
 def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
-    args = ["fql-goal-traces", "--episodes", "1000", "--seed", "5", "--checkpoint-every", "100", "--quiet"]
+    args = ["fql-goal-traces", "--episodes", "1000", "--seed", "5", "--checkpoint-every", "100", "--quiet", "--parallel", "50"]
     whole, part = tmp_path / "whole.json", tmp_path / "part.json"
     assert main(["train", *args, "--out", str(whole)]) == 0
     checkpoint = tmp_path / "part.json.steering.checkpoint.json"
@@ -79,12 +79,15 @@ def _curve_sizes(checkpoint):
 
 def test_episodes_is_the_total_with_a_smaller_last_batch(tmp_path, capsys):
     out = tmp_path / "q.json"
-    assert train("q-goal", out, "--episodes", "70", "--json") == 0
+    assert train("q-goal", out, "--episodes", "70", "--parallel", "50", "--json") == 0
     result = json.loads(capsys.readouterr().out)
     assert result["steering"]["episodes"] == 70
     assert _curve_sizes(tmp_path / "q.json.steering.checkpoint.json") == [50, 20]  # one batch of 50, then 20
+    assert train("q-goal", out, "--episodes", "7", "--json") == 0  # the thesis' protocol: one episode at a time
+    assert _curve_sizes(tmp_path / "q.json.steering.checkpoint.json") == [1] * 7
+    capsys.readouterr()
     out = tmp_path / "f.json"
-    assert train("fql-goal", out, "--episodes", "5", "--json") == 0  # fewer than a batch: smaller batches
+    assert train("fql-goal", out, "--episodes", "5", "--parallel", "10", "--json") == 0  # fewer than a batch
     result = json.loads(capsys.readouterr().out)
     assert (result["steering"]["episodes"], result["speed"]["episodes"]) == (4, 1)  # SPEED_SHARE = 0.25
     assert _curve_sizes(tmp_path / "f.json.speed.checkpoint.json") == [1]
@@ -95,9 +98,10 @@ def test_episodes_is_the_total_with_a_smaller_last_batch(tmp_path, capsys):
 
 def test_resume_into_a_partial_batch_equals_an_uninterrupted_run(tmp_path):
     whole, part = tmp_path / "whole.json", tmp_path / "part.json"
-    assert train("q-goal", whole, "--episodes", "70", "--seed", "3") == 0
-    assert train("q-goal", part, "--episodes", "50", "--seed", "3") == 0  # stopped after the full batch
-    assert train("q-goal", part, "--episodes", "70", "--seed", "3", "--resume") == 0
+    batches = ("--parallel", "50")
+    assert train("q-goal", whole, "--episodes", "70", "--seed", "3", *batches) == 0
+    assert train("q-goal", part, "--episodes", "50", "--seed", "3", *batches) == 0  # stopped after the full batch
+    assert train("q-goal", part, "--episodes", "70", "--seed", "3", "--resume", *batches) == 0
     assert json.loads(part.read_text()) == json.loads(whole.read_text())
 
 

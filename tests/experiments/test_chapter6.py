@@ -18,6 +18,7 @@ def test_fig_vi_8_fixed_start_fql_learns_the_goal(tmp_path):
     assert numbers["trajectories"] == ["reached"]  # the trained start (a fixed-start policy, Fig VI.7)
     assert numbers["converged_at"] == {"steering": None}  # 200 episodes: shorter than a window + the hold
     assert len(numbers["rules"]) == 15
+    assert numbers["q_learning"]["episodes"] == 500  # tabular Q-learning from the same start, beside it
 
 
 @pytest.mark.slow
@@ -28,12 +29,11 @@ def test_fig_vi_4_tabular_random_starts(tmp_path):
 
 
 @pytest.mark.slow
-def test_fig_vi_29_hand_made_follower_hits_the_corner_and_the_learned_one_reads_the_same_rays(tmp_path):
-    # quick mode (300 episodes) is too short for the learned interpretations to pass the corner of
-    # Fig VI.28 on single rays reliably; with the default 1,500 episodes it does on every seed of 5
-    # (benchmarks/rl_bench.py --tasks fql-wall)
+def test_fig_vi_29_hand_made_follower_hits_both_corners_and_the_learned_one_reads_the_same_rays(tmp_path):
+    # a smoke run (300 episodes): what the learned follower does is measured by the full protocol
+    # (docs/results/chapter-vi.md)
     numbers = experiment("fig-VI-29")(tmp_path, quick=True, seed=0)
-    assert numbers["fig-VI-28: wall-follow (Table VI.2)"] == "collision"
-    assert numbers["evaluation"]["wall-follow"]["fig-VI-28"] == "collision"
+    assert numbers["corners"]["wall-follow"] == {"fig-VI-28": "collision", "fig-VI-28b": "collision"}
+    assert numbers["evaluation"]["wall-follow"]["collisions"] >= 1
     assert numbers["sensing"] == "rays"
     assert len(numbers["rules"]) == 8

@@ -11,16 +11,17 @@ from fuzzynav.learn.tasks.common import TrainRequest
 
 @pytest.mark.slow
 def test_fixed_start_fql_converges_at_the_same_episode_with_twice_the_budget(tmp_path):
+    """Under the thesis' protocol (the default of TrainRequest)."""
     task = replace(fql_goal.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
     counts = []
-    for episodes in (650, 1300):
+    for episodes in (1000, 2000):
         request = TrainRequest(out=tmp_path / f"fixed-{episodes}.json", episodes=episodes, seed=1, progress=False)
         steering = fql_goal.train_goal_fql(task, request)["steering"]
         assert steering["episodes"] == episodes
         counts.append(steering["converged_at"])
     assert counts[0] == counts[1]  # the criterion reads the first k + 500 episodes only
-    assert counts[0] <= 650 - common.GOAL_CONVERGENCE["hold"]  # settled within the shorter budget
-    assert counts[0] % common.FIXED_BATCH == 0  # counted at the end of a batch of 10 episodes
+    assert counts[0] <= 1000 - common.GOAL_CONVERGENCE["hold"]  # settled within the shorter budget
+    # the thesis' protocol: one robot, so the count is any single episode (no batch to round up to)
 
 
 def test_world_tasks_count_their_window_in_worlds():

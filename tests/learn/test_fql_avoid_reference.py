@@ -19,7 +19,9 @@ REFERENCE = Path(__file__).with_name("fql_avoid_reference.json")
 
 def test_a_short_avoider_training_learns_the_reference_curve_and_qualities(tmp_path):
     out = tmp_path / "avoid.json"
-    fql_avoid.train_fql_avoid(TrainRequest(out=out, episodes=60, seed=3, progress=False))
+    # the batch learner (10 robots per batch) from the a-priori table, as the reference was written
+    fql_avoid.train_fql_avoid(TrainRequest(out=out, episodes=60, seed=3, progress=False,
+                                           parallel=fql_avoid.AVOID_BATCH, prior="thesis"))
     reference = json.loads(REFERENCE.read_text())
     for phase in ("steering", "speed"):
         saved = json.loads(out.with_name(f"avoid.json.{phase}.checkpoint.json").read_text())

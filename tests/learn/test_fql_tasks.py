@@ -118,7 +118,8 @@ def test_a_short_training_gives_a_navigator_that_drives_around_a_post_and_a_wall
     from fuzzynav.world.shapes import Wall
 
     out = tmp_path / "avoid.json"
-    fql_avoid.train_fql_avoid(TrainRequest(out=out, episodes=200, seed=0, progress=False))
+    # from the thesis' a-priori table (--prior thesis), one robot at a time: a smoke run of the task
+    fql_avoid.train_fql_avoid(TrainRequest(out=out, episodes=200, seed=0, progress=False, prior="thesis"))
     navigator = load_controller(out)
     assert navigator.avoidance.input_names == ["front", "right", "left", "open"]
     assert len(navigator.avoidance.rules) == 14 and navigator.guard is None  # the learned avoider alone

@@ -38,10 +38,10 @@ def test_goal_steering_reward_every_case_of_eq_VI_2():
 
 
 def test_goal_speed_reward_rebuilt_eq_VI_14():
-    r = GoalSpeedReward(low=1.0)
-    assert r(goal_state(0.5, 0.1, 0.9), goal_state(0.2, 0.1, 0.9), NO, YES)[0] == 1  # arrives slowly
-    assert r(goal_state(0.5, 0.1, 3.0), goal_state(0.2, 0.1, 3.0), NO, YES)[0] == 0  # arrives fast
-    assert r(goal_state(5, 0.5, 1.0), goal_state(4.8, 0.4, 1.8), NO, NO)[0] == 1  # approaches, speeds up
+    r = GoalSpeedReward()  # low = 0.2 m/s
+    assert r(goal_state(0.5, 0.1, 0.1), goal_state(0.2, 0.1, 0.1), NO, YES)[0] == 1  # arrives slowly
+    assert r(goal_state(0.5, 0.1, 1.0), goal_state(0.2, 0.1, 1.0), NO, YES)[0] == 0  # arrives at 1 m/s: too fast
+    assert r(goal_state(5, 0.5, 1.0), goal_state(4.8, 0.4, 1.8), NO, NO)[0] == -1  # approaches, speeds up
     assert r(goal_state(5, 0.5, 1.0), goal_state(5.1, 0.4, 1.8), NO, NO)[0] == -1  # turns back speeding up
     assert r(goal_state(5, 0.5, 1.8), goal_state(4.8, 0.4, 1.0), NO, NO)[0] == 0  # slows down
     assert r(goal_state(5, 0.5, 1.0), goal_state(5, 0.5, 1.0), YES, NO)[0] == -1  # the walls

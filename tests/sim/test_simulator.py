@@ -23,6 +23,7 @@ def test_goal_reached_and_speed_falls_at_the_goal():
     assert m["reached_goal"] and not m["collision"] and m["outcome"] == "reached"
     assert np.hypot(*(trace.pose[-1, :2] - [15, 12])) <= 0.3
     assert trace.speed[-1] < 0.6 < trace.speed.max()
+    assert m["final_speed_mps"] == trace.speed[-1]  # the speed it arrived at, in every run's JSON
     straight = np.hypot(13, 10)
     assert straight - 0.3 <= m["path_length_m"] < straight + 1.0
     assert m["steps"] == trace.steps == len(trace.pose) - 1

@@ -185,8 +185,26 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
     return np.array(rows)
 
 
+def training_report(name: str) -> str | None:
+    """For a model file trained by fuzzy Q-learning: how it was trained and how many rules differ
+    from the initial table (the model's ``training`` record); else ``None``."""
+    document = read_model_or_none(name) if Path(name).suffix in (".json", ".npz") and Path(name).is_file() else None
+    training = document.get("training") if isinstance(document, dict) else None
+    if not isinstance(training, dict) or "rules_changed" not in training:
+        return None
+    rules = training.get("rules_learned", len(document.get("rules", [])))
+    protocol = training.get("protocol", "?")
+    if protocol == "parallel":
+        protocol += f", {training.get('robots_per_batch')} robots per batch"
+    return (f"learned ({protocol} protocol, prior {training.get('prior', '?')}): {training['rules_changed']} of "
+            f"{rules} rules differ from the initial table")
+
+
 def _show(args) -> int:
     print(describe(resolve(args.system)))
+    report = training_report(args.system)
+    if report:
+        print(report)
     return 0
 
 

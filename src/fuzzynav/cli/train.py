@@ -1,4 +1,11 @@
-"""``fuzzynav train TASK [--episodes N] [--seed S] [--out FILE] [--resume]`` — train a controller."""
+"""``fuzzynav train TASK [--episodes N] [--seed S] [--out FILE] [--resume] [--parallel N] [--prior P]`` — train a controller.
+
+Reinforcement-learning tasks follow the thesis' protocol by default (one robot, one episode after
+another); ``--parallel N`` trains N robots per batch on one rule base (faster; its curves count
+episodes in batches of N). ``--prior`` (fql-avoid): the initial table, ``none`` (every q = 0, the
+conclusion of best quality extracted: the thesis') or ``thesis`` (the a-priori avoidance table of
+§IV.7's principle, kept unless a learned conclusion beats it clearly).
+"""
 
 from __future__ import annotations
 
@@ -10,6 +17,9 @@ from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 from fuzzynav.learn.tasks.common import TrainRequest
+
+PRIORS = ("none", "thesis")
+PARALLEL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall")
 from fuzzynav.storage import document_format
 
 
@@ -29,6 +39,11 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
     parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
+    parser.add_argument("--parallel", type=int, metavar="N",
+                        help="reinforcement learning: N robots per batch sharing one rule base (default: the thesis' "
+                             "one robot, episodes one by one)")
+    parser.add_argument("--prior", choices=PRIORS,
+                        help="fql-avoid: initial table, none (q = 0, best-quality extraction; default) or thesis")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
 
@@ -38,6 +53,12 @@ def run(args) -> int:
     for flag, value in (("--episodes", args.episodes), ("--checkpoint-every", args.checkpoint_every)):
         if value is not None:
             validation.integer(value, field=flag, lo=1, hi=validation.MAX_EPISODES)
+    if args.parallel is not None:
+        validation.integer(args.parallel, field="--parallel", lo=1, hi=1000)
+        if args.task not in PARALLEL_TASKS:
+            raise InputError(f"only for {', '.join(PARALLEL_TASKS)}, not {args.task}", field="--parallel")
+    if args.prior is not None and args.task != "fql-avoid":
+        raise InputError(f"only for fql-avoid, not {args.task}", field="--prior")
     out = args.out or Path(f"{args.task}.json")
     if out.is_dir():
         raise InputError(f"{out} is a directory; give the model file to write", field="--out")
@@ -50,6 +71,8 @@ def run(args) -> int:
         resume=args.resume,
         checkpoint_every=args.checkpoint_every,
         curve=args.curve,
+        parallel=args.parallel,
+        prior=args.prior,
         progress=progress.enabled() and not (args.quiet or args.json),
     )
     result = train(request)

@@ -57,8 +57,10 @@ class TurnGuard:
         from fuzzynav.control.batched import navigator_params
 
         self.lane, self.margin, self.steps = float(lane), float(margin), int(memory)
+        # this object is the turning-room layer (and its stop): both switched on in the kernel's params
         self.params = navigator_params(lane=lane, room_margin=margin, turn_radius=TURN_RADIUS,
-                                       body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0))
+                                       body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0), turning_room=1.0,
+                                       safety_stop=1.0)
         self.reset()
 
     def reset(self) -> None:

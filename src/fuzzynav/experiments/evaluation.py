@@ -106,6 +106,9 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
     }
 
 
+STOP_SPEED = 0.2  # m/s: a run "stops at its goal" when it reaches it at most this fast
+
+
 def scenario_of(world, start, goal, name: str, max_time: float):
     """A goal scenario of one start in ``world`` (as drawn by the training layouts)."""
     return Scenario(name=name, world=world, start=np.asarray(start, dtype=float),
@@ -114,19 +117,27 @@ def scenario_of(world, start, goal, name: str, max_time: float):
 
 def evaluate_goal(controller, n: int = 100, seed: int = 12345, goals: int = 10, max_time: float = 60.0) -> dict:
     """Success of a goal seeker in the simulator from ``n`` random starts (≥ 3 m from their goal)
-    towards ``goals`` random goals in the empty 20 m × 20 m workspace (Figs VI.3, VI.10, VI.14)."""
+    towards ``goals`` random goals in the empty 20 m × 20 m workspace (Figs VI.3, VI.10, VI.14).
+
+    ``stopped``: the share of runs that reach their goal at a speed ≤ :data:`STOP_SPEED` (the
+    speed at the last step, ``final_speed_mps`` of a run; Table IV.1's robot stops at its goal);
+    ``final_speeds``: that speed of every reaching run (m/s)."""
     rng = np.random.default_rng(seed)
     layout = RandomGoal()
-    outcomes = []
+    outcomes, speeds = [], []
     for g in range(goals):
         world, candidates, targets = layout.sample(rng, 8 * math.ceil(n / goals))
         far = np.hypot(*(candidates[:, :2] - targets[0]).T) >= layout.min_distance
         starts = candidates[far][: n // goals + (g < n % goals)]
         scenario = scenario_of(world, starts[0], targets[0], f"random-goal-{g}", max_time)
-        outcomes += BatchSimulator(scenario, controller, starts=starts, record=False).run().outcomes()
-    outcomes = outcomes[:n]
+        batch = BatchSimulator(scenario, controller, starts=starts, record=True).run()
+        outcomes += batch.outcomes()
+        speeds += [float(batch.trace(i).speed[-1]) for i in range(len(starts))]
+    outcomes, speeds = outcomes[:n], speeds[:n]
+    arrivals = [round(v, 4) for v, o in zip(speeds, outcomes) if o == "reached"]
     return {"runs": len(outcomes), "success": outcomes.count("reached") / len(outcomes),
-            "collisions": outcomes.count("collision"), "timeouts": outcomes.count("timeout")}
+            "collisions": outcomes.count("collision"), "timeouts": outcomes.count("timeout"),
+            "stopped": sum(v <= STOP_SPEED for v in arrivals) / len(outcomes), "final_speeds": arrivals}
 
 
 def evaluate_avoid(controller, n: int = 100, seed: int = 54321, max_time: float = 60.0) -> dict:

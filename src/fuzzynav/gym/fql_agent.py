@@ -135,10 +135,11 @@ class FQLAgent:
     docstring. Learned state: ``learning_`` (the run's learners), ``episodes_`` (episodes trained)."""
 
     def __init__(self, task: str, *, gamma: float = 0.9, epsilon=None, lam: float = 0.0,
-                 tolerance: float = TOLERANCE):
+                 tolerance: float = TOLERANCE, prior: str = "thesis"):
         if task not in DESIGNS and task != "avoid":
             raise InputError(f"unknown task {task!r} (known: {', '.join(TASKS)})", field="task")
         self.task, self.gamma, self.lam, self.tolerance = task, gamma, lam, tolerance
+        self.prior = prior  # avoid: the initial table, "thesis" (a-priori conclusions) or "none" (q = 0 only)
         self.epsilon = epsilon if epsilon is not None else ExponentialDecay(0.3, 0.85, 0.02)
         self.learning_ = None
 
@@ -149,7 +150,7 @@ class FQLAgent:
             raise InputError(f"the environment has no reward head {missing[0]!r} (it has {list(head_names)})",
                              field="env")
         if self.task == "avoid":
-            return NavigatorAvoidance(batch, total_steps, head_names)
+            return NavigatorAvoidance(batch, total_steps, head_names, self.prior)
         return GridLearning(DESIGNS[self.task], batch, head_names, gamma=self.gamma, epsilon=self.epsilon,
                             lam=self.lam, tolerance=self.tolerance)
 

@@ -8,8 +8,9 @@ input of that task), inside the goal navigator of Figs VI.20 and VI.24
 three distances are far, its supervisor handing the robot to goal seeking where the way is
 clear). Two phases share the step budget, as the task shares its episodes
 (:data:`~fuzzynav.learn.tasks.fql_avoid.AVOID_SPEED_SHARE`): the steering conclusions from
-reward VI.20 at the constant speed of the task, starting from the a-priori conclusions of
-§IV.7 (turn away from the nearer side); then, the extracted steering frozen, the speeds from
+reward VI.20 at the constant speed of the task, starting from the initial table ``prior``
+(``thesis``: the a-priori conclusions of §IV.7, turn away from the nearer side; ``none``: q = 0
+only, :func:`~fuzzynav.learn.tasks.fql_avoid.initial_tables`); then, the extracted steering frozen, the speeds from
 VI.21 — each reward taken from ``info["reward_heads"]``. The environment's decision (3 steps Δt)
 is the task's learning decision. Observations carry d_rg and θ_rg, the goal inputs the navigator
 reads, and the seven readings.
@@ -29,13 +30,13 @@ from fuzzynav.learn.tasks.fql_avoid import (
     AVOID_SPEED_SHARE,
     AVOID_SPEEDS,
     AVOID_STEERING,
-    AVOID_TOLERANCE,
     _avoid_candidates,
     avoid_inputs,
-    avoid_prior,
     avoid_rate,
     avoid_system,
     free_rules,
+    initial_tables,
+    prior_tolerance,
 )
 
 HEADS = ("VI.20", "VI.21")  # the reward of the steering phase, of the speed phase
@@ -45,8 +46,10 @@ class NavigatorAvoidance:
     """One training run of the avoider for ``batch`` robots and ``total_steps`` environment steps
     (module docstring); :meth:`begin` / :meth:`step` return the environment's actions."""
 
-    def __init__(self, batch: int, total_steps: int, head_names):
+    def __init__(self, batch: int, total_steps: int, head_names, prior: str = "thesis"):
         self.open_side = True
+        self.initial = initial_tables(prior, self.open_side)
+        self.tolerance = prior_tolerance(prior, batch)
         self.free = free_rules(self.open_side)
         template = grid_system(avoid_inputs(self.open_side),
                                [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
@@ -57,7 +60,7 @@ class NavigatorAvoidance:
         self.switch_at = steering_episodes(max(int(total_steps), 2), AVOID_SPEED_SHARE)  # steps of phase 1
         self.columns = [list(head_names).index(h) for h in HEADS]
         self.steer = fql_learner(self.premise, _avoid_candidates(AVOID_STEERING, self.open_side), 0.0, batch,
-                                 prior=avoid_prior(self.open_side), alpha=avoid_rate())
+                                 prior=self.initial[0], alpha=avoid_rate())
         self.speed = None  # the speed learner, from the switch on
         self.steering_rules = None  # the extracted steering, frozen at the switch
         self.episodes_at_switch = 0
@@ -103,9 +106,9 @@ class NavigatorAvoidance:
         learner.episode = (episodes - self.episodes_at_switch) // self.batch  # ε and β: one tick per batch
         values = learner.step(heads[:, column], seen[0], terminated, rng, active=active)
         if self.speed is None and steps >= self.switch_at:
-            self.steering_rules = self.steer.greedy_indices(AVOID_TOLERANCE)
+            self.steering_rules = self.steer.greedy_indices(self.tolerance)
             self.speed = fql_learner(self.premise, _avoid_candidates(AVOID_SPEEDS, self.open_side), 0.0, self.batch,
-                                     prior=0, alpha=avoid_rate())
+                                     prior=self.initial[1], alpha=avoid_rate())
             self.episodes_at_switch = episodes
             values = self.speed.begin(seen[0], rng)
         return self._act(seen, values)
@@ -114,8 +117,8 @@ class NavigatorAvoidance:
     def _indices(self):
         """The extracted conclusions (candidate indices) of the learned rules: steering, speed (or None)."""
         learned = self.free[0]
-        steering = self.steer.greedy_indices(AVOID_TOLERANCE)[0, 0, :learned]
-        return steering, None if self.speed is None else self.speed.greedy_indices(AVOID_TOLERANCE)[0, 0, :learned]
+        steering = self.steer.greedy_indices(self.tolerance)[0, 0, :learned]
+        return steering, None if self.speed is None else self.speed.greedy_indices(self.tolerance)[0, 0, :learned]
 
     def system(self):
         """The learned avoider as a TS0 system (steering; and speeds once the speed phase ran)."""

@@ -7,7 +7,7 @@ listed (the first that holds gives the value).
 
 - :class:`GoalSteeringReward` — eq VI.2 (tabular goal seeking §VI.2 and the steering of FQL goal
   seeking §VI.5.1);
-- :class:`GoalSpeedReward` — eq VI.14, rebuilt (the extraction scrambled it; see the class);
+- :class:`GoalSpeedReward` — eq VI.14, its values read in the text's order (see the class);
 - :class:`AvoidSteeringReward` — eq VI.20, :class:`AvoidSpeedReward` — eq VI.21 (§VI.5.2);
 - :class:`WallSteeringReward` — eq VI.21 of §VI.5.3.2 (the thesis numbers two equations VI.21),
   :class:`WallSpeedReward` — eq VI.22.
@@ -54,24 +54,25 @@ class GoalSteeringReward:
 
 @dataclass(frozen=True)
 class GoalSpeedReward:
-    """Eq VI.14 (speed of FQL goal seeking, §VI.5.1), rebuilt from the scrambled extraction.
+    """Eq VI.14 (speed of FQL goal seeking, §VI.5.1), read in the order the text gives it.
 
-    The text keeps three conditions, the values −1, −1, 1, 0 and "ailleurs" (otherwise):
-    "if d_rg and θ_rg decrease and the speed increases", "if θ_rg decreases, the speed and d_rg
-    increase", "if the robot reaches the target with a low speed". Thesis §VI.5.1 and the principle of
-    the section (speed up when heading well for the goal, not while going away, arrive slowly)
-    give the rebuild used here:
+    The extracted text lists the conditions "si d_rg, θ_rg diminuent et la vitesse augmente",
+    "si θ_rg diminue, la vitesse et d_rg augmentent", "si le robot atteint la cible avec une faible
+    vitesse", "ailleurs" and the values −1, −1, 1, 0 — in the same order, as the values of eq
+    VI.2 are (its extraction prints them in order with "r =" in the middle). So:
 
-    - +1 if the goal is reached with V_r ≤ ``low`` (a low speed);
-    - +1 if d_rg and |θ_rg| decrease and V_r increases;
+    - −1 if d_rg and |θ_rg| decrease and V_r increases (speeding up on the way in);
     - −1 if |θ_rg| decreases while V_r and d_rg increase (speeding up while turning back);
+    - +1 if the goal is reached with V_r ≤ ``low`` (a low speed);
     - 0 otherwise.
 
+    This reading fits Fig VI.9 (b), a curve of small negative values rising towards 0. ``low``
+    is 0.2 m/s, the arrival speed of a robot that stops (Table IV.1 concludes Z = 0 at the goal).
     Added (not in the thesis, which only says episodes end at the walls): −1 when the robot
     hits the walls, so that a speed that ends an episode early is never neutral.
     """
 
-    low: float = 1.0
+    low: float = 0.2
     eps: float = EPS
 
     def __call__(self, before, after, collided, reached):
@@ -80,9 +81,9 @@ class GoalSpeedReward:
         faster = after.speed > before.speed + self.eps
         closer, farther = d1 < d0 - self.eps, d1 > d0 + self.eps
         turning_in = a1 < a0 - self.eps
-        return _first([collided, reached & (after.speed <= self.low + self.eps), reached,
-                       closer & turning_in & faster, turning_in & faster & farther],
-                      [-1.0, 1.0, 0.0, 1.0, -1.0])
+        return _first([collided, reached & (after.speed <= self.low + self.eps), closer & turning_in & faster,
+                       turning_in & faster & farther],
+                      [-1.0, 1.0, -1.0, -1.0])
 
 
 def _side_decrease(before, after, limit: float, eps: float) -> np.ndarray:

@@ -4,10 +4,12 @@ Always: ``scenario``, ``controller``, ``task``, ``outcome``, ``reached_goal`` (g
 completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``,
 ``path_length_m`` (length of the driven polyline), ``min_clearance_m`` (smallest gap between
 the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
-``mean_speed_mps``, ``final_distance_m`` (to the goal / current waypoint / target),
-``steering_effort_rad`` (mean |α|), ``steering_variation_rad`` (Σ |Δα|) and ``collision_by``
-(``"robot"`` or ``"obstacle"``: who moved into whom, :mod:`fuzzynav.sim.fault`; None without a
-collision). With moving obstacles the clearances are measured to where they are at each step.
+``mean_speed_mps``, ``final_speed_mps`` (speed commanded at the last step: 0 before any step;
+≤ 0.2 m/s for a robot that stops at its goal as Table IV.1's does), ``final_distance_m`` (to the
+goal / current waypoint / target), ``steering_effort_rad`` (mean |α|), ``steering_variation_rad``
+(Σ |Δα|) and ``collision_by`` (``"robot"`` or ``"obstacle"``: who moved into whom,
+:mod:`fuzzynav.sim.fault`; None without a collision). With moving obstacles the clearances are
+measured to where they are at each step.
 Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
 ``max_cross_track_m`` (distance from each visited position to the path polyline, thesis §V.4).
 Target tasks add ``captured``, ``capture_time_s`` (None when not captured) and
@@ -62,6 +64,7 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
         "path_length_m": float(np.hypot(steps[:, 0], steps[:, 1]).sum()),
         "min_clearance_m": float(clearance.min()),
         "mean_speed_mps": float(trace.speed.mean()) if trace.steps else 0.0,
+        "final_speed_mps": float(trace.speed[-1]) if trace.steps else 0.0,
         "final_distance_m": float(final_distance),
         "steering_effort_rad": float(np.abs(trace.steering).mean()) if trace.steps else 0.0,
         "steering_variation_rad": float(np.abs(np.diff(trace.steering)).sum()) if trace.steps > 1 else 0.0,

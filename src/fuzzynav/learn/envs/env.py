@@ -25,7 +25,9 @@ workspace boundary ("the walls of the workspace", eq VI.2) — or when the goal 
 ``decision_steps`` steps Δt (default 1): a longer decision period makes the effect of one choice
 on the next state — hence the gap between the candidates' qualities — larger. Success (``info["success"]``) is reaching
 the goal in goal tasks, and lasting ``max_steps`` without collision in tasks without a goal.
-Rows whose episode has ended stand still until the whole batch is done.
+Rows whose episode has ended stand still until the whole batch is done. An episode starts at rest
+unless ``start_speed`` says otherwise (a speed phase starting at the steering phase's constant speed);
+``timeout_reward`` is added to the reward of a row whose episode runs out of decisions.
 """
 
 from __future__ import annotations
@@ -62,7 +64,8 @@ class RobotEnv:
 
     def __init__(self, layout, observe, command, reward, *, batch: int, max_steps: int,
                  tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None,
-                 decision_steps: int = 1, sides=side_distances):
+                 decision_steps: int = 1, sides=side_distances, start_speed: float = 0.0,
+                 timeout_reward: float = 0.0):
         self.layout, self.observe, self.command, self.reward = layout, observe, command, reward
         self.batch = int(batch)
         self.max_steps = int(max_steps)
@@ -71,6 +74,8 @@ class RobotEnv:
         self.sensors = sensors
         self.decision_steps = int(decision_steps)
         self.sides = sides
+        self.start_speed = float(start_speed)
+        self.timeout_reward = float(timeout_reward)
         self.state: RobotState | None = None
 
     def _state(self, world, pose, speed, steering, target) -> RobotState:
@@ -83,10 +88,10 @@ class RobotEnv:
         return RobotState(world, pose, speed, steering, target, ranges, goal, sides)
 
     def reset(self, rng: np.random.Generator):
-        """New episodes: the layout's world, starts and goals; zero speed and steering."""
+        """New episodes: the layout's world, starts and goals; zero steering, speed ``start_speed``."""
         world, pose, target = self.layout.sample(rng, self.batch)
         zeros = np.zeros(self.batch)
-        self.state = self._state(world, pose, zeros, zeros.copy(), target)
+        self.state = self._state(world, pose, np.full(self.batch, self.start_speed), zeros, target)
         self.k = 0
         self.done = np.zeros(self.batch, dtype=bool)
         return self.observe(self.state)
@@ -97,14 +102,18 @@ class RobotEnv:
         The period is ``decision_steps`` steps Δt: the learner's action is held while ``command``
         is re-evaluated on the current state at every step (so a goal seeker blended into the
         command keeps steering); the episode may end at any of them; the reward compares the
-        states at both ends of the period.
+        states at both ends of the period, the speed at the end being the one the robot last
+        drove at (a row that reached the goal mid-period arrived at that speed, not at rest).
         """
+        from dataclasses import replace
+
         import fuzzynav.kernels.motion as motion  # numba, imported when first needed
 
         before = self.state
         now = before
         collided = np.zeros(self.batch, dtype=bool)
         reached = np.zeros(self.batch, dtype=bool)
+        driven = before.speed.copy()
         for _ in range(self.decision_steps):
             live = ~(self.done | collided | reached)
             steering, speed = self.command(action, now)
@@ -112,13 +121,16 @@ class RobotEnv:
             motion.move_live(now.pose, as_column(steering, self.batch), as_column(speed, self.batch), live,
                              self.params.array(), pose, commands)
             now = self._state(now.world, pose, commands[:, 1], commands[:, 0], now.target)
+            driven = np.where(live, commands[:, 1], driven)
             collided |= live & (now.world.clearance(pose[:, :2]) < self.params.radius)
             if now.goal is not None:
                 reached |= live & ~collided & (now.goal[:, 0] <= self.tolerance)
-        reward = self.reward(before, now, collided, reached)
+        reward = self.reward(before, replace(now, speed=driven) if self.decision_steps > 1 else now, collided, reached)
         self.k += 1
         terminated = collided | reached
         truncated = np.full(self.batch, self.k >= self.max_steps)
+        if self.timeout_reward:
+            reward = np.where(truncated & ~terminated & ~self.done, reward + self.timeout_reward, reward)
         success = reached if now.goal is not None else truncated & ~collided
         self.done = self.done | terminated | truncated
         self.state = now

@@ -5,9 +5,16 @@ its *phases* (steering, then speed), a :class:`~fuzzynav.learn.envs.RobotEnv` (l
 actions, a reward of :mod:`fuzzynav.learn.rewards`) and a learner of :mod:`fuzzynav.learn`; it trains
 them resumably with :func:`run_phases` (:func:`~fuzzynav.learn.checkpoint.train_loop` underneath,
 one checkpoint per phase next to ``--out``), extracts the controller and writes its model file with
-:func:`save_model`. B episodes run in parallel per batch (:data:`BATCH`, :data:`FIXED_BATCH`);
-every count of episodes (``--episodes``, checkpoints, curves, episodes to converge) counts single
-episodes. ``converged_at`` of a phase is :func:`fuzzynav.learn.curves.episodes_to_converge` under
+:func:`save_model`.
+
+Two protocols (:func:`robots`). By default the *thesis'* (§VI.2, §VI.5, Algorithm VI.1): one robot,
+one episode after another, every q[i, j] = 0 at start (eq VI.9), ε-greedy exploration, β = 1 / (1 +
+visits) (eq III.24) and, after learning, each rule's conclusion of best quality ("le robot choisit
+pour chaque règle la conclusion avec la meilleure fonction qualité", §VI.5.1) — settings in
+:data:`THESIS`. ``fuzzynav train … --parallel N`` runs N robots per *batch* sharing one rule base
+(:data:`BATCH`, :data:`FIXED_BATCH` are the tasks' usual N), a faster learner whose curves count
+episodes in batches of N. Every count of episodes (``--episodes``, checkpoints, curves, episodes
+to converge) counts single episodes. ``converged_at`` of a phase is :func:`fuzzynav.learn.curves.episodes_to_converge` under
 the task's criterion (:data:`GOAL_CONVERGENCE`, or :data:`WORLD_CONVERGENCE` where one batch is one
 random world). The reasons for these settings, with what was measured, are in docs/training.md.
 """
@@ -48,11 +55,18 @@ GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
 STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
 MAX_STEPS = 300  # 30 s per episode
 GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
+WORLD_EPISODES = 5  # episodes a "world" of WORLD_CONVERGENCE counts at least (the thesis' one robot: 50-episode window)
 WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered": True}  # one random world per batch
 
 STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
 STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
-SPEED3 = {"F": 1.0, "M": 1.8, "G": 3.0}  # eq VI.13, the F, M, G singletons of Fig IV.8
+SPEED3 = {"S": 0.1, "L": 0.5, "F": 1.0, "M": 1.8, "G": 3.0}  # the candidate speeds' labels (m/s): F, M, G
+# of Fig IV.8 and, to stop (Table IV.1 concludes Z = 0 at the goal), a creeping S and a low L
+SPEED_CANDIDATES = (("S", "L", "F"), ("L", "F", "M"), ("F", "M", "G"))  # eq VI.13's V_i1..3 of a rule whose
+# d_rg is its partition's first term, its second, any farther one. The thesis indexes the candidates by
+# rule (V_ij) without their values; a rule near the goal may creep, one far away may not (with one set for
+# every rule, eq VI.14 — −1 for speeding up, +1 only on arriving slowly — lets a creeping speed that never
+# arrives win everywhere: docs/results/chapter-vi.md).
 
 
 @dataclass(frozen=True)
@@ -67,6 +81,8 @@ class TrainRequest:
     checkpoint_every: int | None = None
     curve: Path | None = None  # learning-curve plot to write, if any
     progress: bool = True
+    parallel: int | None = None  # robots per batch (--parallel); None: the thesis' one robot at a time
+    prior: str | None = None  # fql-avoid's initial table (--prior none | thesis); None: the task's default
 
 
 def save_model(request: TrainRequest, document: dict) -> None:
@@ -182,8 +198,9 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
 def convergence_window(settings: dict, batch: int) -> tuple[int, int]:
     """(window, hold) in episodes of a convergence setting: given in episodes (``window``,
     ``hold``) or, where one batch is one random world, in worlds (``worlds``, ``hold_worlds``)."""
-    if "worlds" in settings:
-        return settings["worlds"] * batch, settings["hold_worlds"] * batch
+    if "worlds" in settings:  # a single robot meets one world per episode: count WORLD_EPISODES per world
+        per_world = max(batch, WORLD_EPISODES)
+        return settings["worlds"] * per_world, settings["hold_worlds"] * per_world
     return settings["window"], settings["hold"]
 
 
@@ -270,11 +287,63 @@ def batch_size(fixed: bool) -> int:
     return FIXED_BATCH if fixed else BATCH
 
 
+# The thesis' protocol (module docstring). The thesis gives neither ε, β nor γ: ε-greedy is its
+# example policy (§VI.4, "ε-gloutonne par exemple"), β = 1 / (1 + visits) its eq III.24 (floored at
+# 0.01 so that late corrections still count: at 0.05 the avoider's qualities stayed too noisy to rank
+# its candidates, docs/results/chapter-vi.md), γ = 0.9. ε decays per episode 0.3 → 0.02 (the floor after
+# ~900 episodes: the same pace per episode as the parallel learner's × 0.85 per batch of 50).
+THESIS = {"robots": 1, "gamma": 0.9, "epsilon": (0.3, 0.85 ** (1 / BATCH), 0.02), "rate_floor": 0.01,
+          "tolerance": 0.0, "initial_q": 0.0}
+
+
+def robots(request) -> int:
+    """Robots per batch of a run: ``--parallel N``, else the thesis' single robot."""
+    return int(request.parallel) if request.parallel else THESIS["robots"]
+
+
+def thesis_protocol(batch: int) -> bool:
+    """One robot, one episode after another: the thesis' protocol (module docstring)."""
+    return batch == THESIS["robots"]
+
+
+def extraction_tolerance(batch: int, parallel_tolerance: float) -> float:
+    """Quality gain over the prior a conclusion needs to be extracted: none in the thesis'
+    protocol (the conclusion of best quality), ``parallel_tolerance`` for the batch learner."""
+    return THESIS["tolerance"] if thesis_protocol(batch) else parallel_tolerance
+
+
 def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
-    """The FQL settings of every task: γ = 0.9, β = 1 / (1 + visits) (eq III.24) floored so the
-    B parallel corrections stay small, ε-greedy per rule with ε decaying 0.3 → 0.02 (× 0.85 per batch)."""
-    alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
-    return FuzzyQLearner(premise, candidates, gamma=0.9, alpha=alpha,
-                         policy=EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02)), lam=lam,
-                         normalise=False, prior=prior)
+    """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
+
+    Thesis protocol (``batch`` 1, :data:`THESIS`): β = 1 / (1 + visits) (eq III.24) down to
+    0.01, ε = 0.3 · 0.9967^episode down to 0.02. Batch learner: β = 1 / (1 + visits) floored so
+    the B parallel corrections stay small (``alpha`` replaces it when given), ε decaying
+    0.3 → 0.02 (× 0.85 per batch)."""
+    if thesis_protocol(batch):
+        alpha = InverseVisits(1.0, 1.0, THESIS["rate_floor"])
+        policy = EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
+    else:
+        alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
+        policy = EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02))
+    return FuzzyQLearner(premise, candidates, gamma=THESIS["gamma"], alpha=alpha, policy=policy, lam=lam,
+                         normalise=False, prior=prior, initial_q=THESIS["initial_q"])
+
+
+def protocol_record(batch: int, prior: str) -> dict:
+    """How a model was trained, for its file: the protocol (``thesis``: one robot; else
+    ``parallel`` with its robots per batch, whose episodes were counted in batches) and the
+    initial table (``prior``)."""
+    if thesis_protocol(batch):
+        return {"protocol": "thesis", "prior": prior}
+    return {"protocol": "parallel", "robots_per_batch": int(batch), "prior": prior}
+
+
+def rules_changed(learners, tolerance: float, rules: int | None = None) -> int:
+    """How many rules the extraction changed from the initial table: rules (the first ``rules``,
+    default all) whose extracted conclusion of any learner differs from that learner's prior —
+    its initial table, which the extraction keeps when learning found nothing better."""
+    changed = np.zeros(learners[0].prior.shape[1], dtype=bool)
+    for learner in learners:
+        changed |= (learner.greedy_indices(tolerance)[0] != learner.prior).any(axis=0)
+    return int(changed[:rules].sum())
 

@@ -35,11 +35,15 @@ from fuzzynav.learn.tasks.common import (
     Phase,
     checkpoint_path,
     episode_budget,
+    extraction_tolerance,
     finish,
     fql_learner,
     grid_system,
     load_fuzzy_model,
     output_variable,
+    protocol_record,
+    robots,
+    rules_changed,
     run_phases,
     steering_episodes,
     summarise,
@@ -153,8 +157,37 @@ def _avoid_candidates(values: dict, open_side: bool) -> np.ndarray:
     return candidates
 
 
-def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_side: bool = AVOID_OPEN):
-    """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator."""
+PRIORS = ("none", "thesis")
+
+
+def initial_tables(prior: str, open_side: bool = AVOID_OPEN) -> tuple[tuple, int]:
+    """(steering indices of every rule, speed index) the avoider starts from (``--prior``):
+
+    - ``none``: nothing chosen — every q[i, j] = 0 (eq VI.9); the neutral candidates (Z, and the
+      middle speed) only break exact ties of rules never fired; the extraction takes each rule's
+      conclusion of best quality (§VI.5.2: "les conclusions des règles avec les meilleures
+      qualités sont choisies"). This is the thesis' protocol: its a-priori knowledge is in the
+      rules' premises and candidates, not in pre-chosen conclusions.
+    - ``thesis``: the a-priori table of §IV.7's principle (:data:`AVOID_PRIOR`, :data:`OPEN_PRIOR`,
+      speed F), kept unless a learned conclusion beats it by more than :data:`AVOID_TOLERANCE`.
+    """
+    if prior == "none":
+        return (1,) * (free_rules(open_side)[-1] + 1), 1
+    if prior == "thesis":
+        return avoid_prior(open_side), 0
+    raise InputError(f"must be one of {', '.join(PRIORS)}, got {prior!r}", field="--prior")
+
+
+def prior_tolerance(prior: str, batch: int) -> float:
+    """Extraction tolerance for a prior: the best quality (none), else :data:`AVOID_TOLERANCE`."""
+    return extraction_tolerance(batch, AVOID_TOLERANCE) if prior == "none" else AVOID_TOLERANCE
+
+
+def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_side: bool = AVOID_OPEN,
+                     prior: str = "thesis"):
+    """Steering (eq VI.20) then speed (eq VI.21) of the avoider, trained inside the navigator,
+    from the initial table ``prior`` (:func:`initial_tables`); ``batch`` robots per batch (1:
+    the thesis' protocol)."""
     from fuzzynav.kernels import learned as learned_kernels
 
     free_rule = free_rules(open_side)
@@ -179,20 +212,22 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
     def steer_command(a, s):
         return navigate(s, a[:, 0], lambda free: (1.0 - free) * AVOID_SPEED)
 
+    steering_prior, speed_prior = initial_tables(prior, open_side)
+    tolerance = prior_tolerance(prior, batch)
     steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
-                        prior=avoid_prior(open_side), alpha=avoid_rate())
+                        prior=steering_prior, alpha=avoid_rate())
     n_steer = steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, observe, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
 
-    steering_rules = steer.greedy_indices(AVOID_TOLERANCE)  # the extracted steering, frozen from here on
+    steering_rules = steer.greedy_indices(tolerance)  # the extracted steering, frozen from here on
 
     def speed_command(a, s):
         return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
-    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=0,
+    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=speed_prior,
                         alpha=avoid_rate())
     env = RobotEnv(layout, observe, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
@@ -201,19 +236,27 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
 
 
 AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
-AVOID_EPISODES = 2000  # default budget: 1,000 per phase (the hold of WORLD_CONVERGENCE needs 250 episodes after k)
+AVOID_EPISODES = 3000  # default budget: 1,500 per phase (the thesis plots 450 steering and 2,000 speed episodes)
 
 
-def train_fql_avoid(request, open_side: bool = AVOID_OPEN) -> dict:
-    """``fuzzynav train fql-avoid``: the avoider over front/right/left distances (Figs VI.17–VI.22)
-    and, by default, which side is more open (:data:`AVOID_OPEN`: 16 rules instead of the thesis' 8)."""
-    phases, learners = run_phases(
-        fql_avoid_phases(request.out, episode_budget(request, AVOID_EPISODES), open_side=open_side), request)
-    learned = free_rules(open_side)[0]
-    system = avoid_system(learners["steering"].greedy_indices(AVOID_TOLERANCE)[0, 0, :learned],
-                          learners["speed"].greedy_indices(AVOID_TOLERANCE)[0, 0, :learned], open_side)
+def train_fql_avoid(request, open_side: bool = AVOID_OPEN, watch=None) -> dict:
+    """``fuzzynav train fql-avoid [--prior none|thesis]``: the avoider over front/right/left
+    distances (Figs VI.17–VI.22) and, by default, which side is more open (:data:`AVOID_OPEN`: 16
+    rules instead of the thesis' 8). The model's ``training`` records the protocol, the prior and
+    ``rules_changed``: how many learned rules conclude otherwise than the initial table.
+    ``watch(phase)``, if given, sees each phase before it runs (e.g. to record its episodes)."""
+    prior, batch = request.prior or "none", robots(request)
+    phases = fql_avoid_phases(request.out, episode_budget(request, AVOID_EPISODES), batch, open_side, prior)
+    if watch is not None:
+        phases = (watch(phase) or phase for phase in phases)
+    phases, learners = run_phases(phases, request)
+    learned, tolerance = free_rules(open_side)[0], prior_tolerance(prior, batch)
+    system = avoid_system(learners["steering"].greedy_indices(tolerance)[0, 0, :learned],
+                          learners["speed"].greedy_indices(tolerance)[0, 0, :learned], open_side)
+    changed = rules_changed([learners["steering"], learners["speed"]], tolerance, rules=learned)
     document = {"kind": "fql-avoid", **to_document(system), "constant_speed": AVOID_SPEED,
-                "training": {"task": "fql-avoid", "seed": request.seed, **summarise(phases)}}
+                "training": {"task": "fql-avoid", "seed": request.seed, **protocol_record(batch, prior),
+                             "rules_changed": changed, "rules_learned": int(learned), **summarise(phases)}}
     return finish(request, document, phases, "fql-avoid")
 
 

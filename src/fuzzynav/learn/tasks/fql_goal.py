@@ -33,20 +33,24 @@ from fuzzynav.learn.tasks.common import (
     MAX_STEPS,
     PI,
     SPEED3,
+    SPEED_CANDIDATES,
     SPEED_SHARE,
     STEERING3,
     STEERING5,
     STEERING_SPEED,
     TOLERANCE,
     Phase,
-    batch_size,
     checkpoint_path,
     episode_budget,
+    extraction_tolerance,
     finish,
     fql_learner,
     grid_system,
     load_fuzzy_model,
     output_variable,
+    protocol_record,
+    robots,
+    rules_changed,
     run_phases,
     steering_episodes,
     summarise,
@@ -74,6 +78,19 @@ def goal_partition_35() -> list[Variable]:
     return list(goal_seeking().inputs)
 
 
+SPEED_DECISION = 10  # steps Δt (1 s) per decision of the speed phase — a deviation, see below
+# Reward VI.14 pays only for arriving slowly (+1) and punishes speeding up; being fast pays through the
+# discount alone: the +1 of an arrival T decisions ahead is worth γ^T. With a decision every Δt = 0.1 s
+# (T ≈ 100 from 10 m away) γ^T ≈ 0 for every candidate, and a creeping speed that never arrives ties
+# with a fast one; one decision per second (T ≈ 10) keeps the arrival visible (docs/results/chapter-vi.md).
+# Its episodes start at the steering phase's constant speed ("lorsque le robot est capable de rejoindre son
+# but avec une vitesse fixe, on applique le deuxième algorithme", §VI.5.1): from rest, every candidate would
+# "speed up" at the first decision and share the −1 of eq VI.14. And an episode that runs out of time
+# without arriving ends with SPEED_TIMEOUT: otherwise creeping, never arriving nor speeding up, is never
+# punished, and eq VI.14's −1 for speeding up makes it the learner's choice (docs/results/chapter-vi.md).
+SPEED_TIMEOUT = -1.0
+
+
 @dataclass(frozen=True)
 class GoalFQL:
     """Settings of one FQL goal-seeking task."""
@@ -96,9 +113,10 @@ GOAL_TASKS = {
 
 
 
-def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None = None):
-    """Yields the phases of an FQL goal task; the speed phase is built from the trained steering."""
-    batch = batch_size(task.fixed) if batch is None else batch
+def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = 1):
+    """Yields the phases of an FQL goal task (``batch`` robots per batch: 1 is the thesis'
+    protocol); the speed phase is built from the trained steering."""
+    tolerance = extraction_tolerance(batch, TOLERANCE)
     inputs = task.inputs()
     alpha = output_variable("alpha", task.steering, (-PI / 5, PI / 5))
     template = grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
@@ -112,15 +130,23 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int | None =
                    batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
     if task.learn_speed:
-        speed_values = np.array(list(SPEED3.values()))
-        speed = fql_learner(premise, speed_values, 0.0, batch)
+        speed = fql_learner(premise, speed_candidates(inputs), 0.0, batch)
         env = RobotEnv(layout, lambda s: s.goal,
-                       lambda a, s: (steer.greedy_action(s.goal, TOLERANCE)[:, 0], a[:, 0]), GoalSpeedReward(),
-                       batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
+                       lambda a, s: (steer.greedy_action(s.goal, tolerance)[:, 0], a[:, 0]), GoalSpeedReward(),
+                       batch=batch, max_steps=MAX_STEPS // SPEED_DECISION, tolerance=GOAL_TOLERANCE,
+                       decision_steps=SPEED_DECISION, start_speed=STEERING_SPEED, timeout_reward=SPEED_TIMEOUT)
         yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
 
 
-def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
+def speed_candidates(inputs) -> np.ndarray:
+    """(R, 3) candidate speeds of every rule of the grid over ``inputs`` (d_rg first, slowest):
+    :data:`~fuzzynav.learn.tasks.common.SPEED_CANDIDATES` by the position of the rule's d_rg term."""
+    per_term = [SPEED_CANDIDATES[min(k, len(SPEED_CANDIDATES) - 1)] for k in range(len(inputs[0].terms))]
+    rows = math.prod(len(v.terms) for v in inputs[1:])
+    return np.array([[SPEED3[label] for label in per_term[r // rows]] for r in range(len(per_term) * rows)])
+
+
+def goal_system(task: GoalFQL, learners: dict, tolerance: float = TOLERANCE) -> FuzzySystem:
     """The extracted controller: every rule with its best conclusion(s), as a TS0 system
     (:func:`~fuzzynav.learn.fql.extract_system`)."""
     outputs = {"steering": output_variable("alpha", task.steering, (-PI / 5, PI / 5)),
@@ -128,7 +154,7 @@ def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
     learned = [name for name in outputs if name in learners]
     rules = math.prod(len(v.terms) for v in task.inputs())
     return extract_system([learners[name] for name in learned], [outputs[name] for name in learned],
-                          tolerance=TOLERANCE, name=task.name,
+                          tolerance=tolerance, name=task.name,
                           description=f"Goal seeking learned by fuzzy Q-learning (thesis §VI.5.1, Algorithm VI.1): "
                                       f"{rules} rules, {len(task.steering)} steering conclusions"
                                       + (", speed learned" if "speed" in learners else ""))
@@ -136,10 +162,16 @@ def goal_system(task: GoalFQL, learners: dict) -> FuzzySystem:
 
 def train_goal_fql(task: GoalFQL, request) -> dict:
     """Train ``task`` and write its model (the steering, and the speed if the task learns it)."""
-    phases, learners = run_phases(goal_fql_phases(task, request.out, episode_budget(request, task.episodes)), request)
-    system = goal_system(task, learners)
+    batch = robots(request)
+    phases, learners = run_phases(goal_fql_phases(task, request.out, episode_budget(request, task.episodes), batch),
+                                  request)
+    tolerance = extraction_tolerance(batch, TOLERANCE)
+    system = goal_system(task, learners, tolerance)
+    learned = list(learners.values())
     document = {"kind": "fql-goal", **to_document(system), "constant_speed": STEERING_SPEED,
-                "training": {"task": task.name, "seed": request.seed, **summarise(phases)}}
+                "training": {"task": task.name, "seed": request.seed, **protocol_record(batch, "none"),
+                             "rules_changed": rules_changed(learned, tolerance),
+                             **summarise(phases)}}
     return finish(request, document, phases, task.name)
 
 

@@ -31,9 +31,13 @@ from fuzzynav.learn.tasks.common import (
     Phase,
     checkpoint_path,
     episode_budget,
+    extraction_tolerance,
     finish,
     fql_learner,
     load_fuzzy_model,
+    protocol_record,
+    robots,
+    rules_changed,
     run_phases,
     steering_episodes,
     summarise,
@@ -66,7 +70,10 @@ WALL_REWARD_SENSING = "modules"  # the d_i of the rewards VI.21-VI.22: nearest o
 
 
 def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str = WALL_SENSING):
-    """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower.
+    """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower:
+    the a-priori knowledge the thesis injects here ("le contrôleur précédent est optimisé",
+    §VI.5.3.2) is that rule base, each rule's prior being its label's own value (every q still
+    starts at 0). ``batch`` robots per batch (1: the thesis' protocol).
 
     ``sensing`` is how the learner reads d_d, d_f, d_g (:data:`fuzzynav.control.learned.SENSING`):
     by default the single rays at −90°, 0°, +90° of the hand-made follower, so that what learning
@@ -81,6 +88,7 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
     def observe(s):
         return inputs(s.ranges)[:, WALL_COLUMNS]
 
+    tolerance = extraction_tolerance(batch, WALL_TOLERANCE)
     steer = fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     n_steer = steering_episodes(episodes, SPEED_SHARE)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
@@ -88,13 +96,13 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
     fast = fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
-    env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), WALL_TOLERANCE)[:, 0], a[:, 0]),
+    env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), tolerance)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
 
 
-def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING) -> FuzzySystem:
+def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING, tolerance: float = WALL_TOLERANCE) -> FuzzySystem:
     """The optimised follower: Table VI.2's rules with the chosen interpretation of each label
     (``PG_lo`` / ``PG`` / ``PG_hi`` = value − 10°, value, value + 10°; speeds × 0.7, 1, 1.3),
     extracted by :func:`~fuzzynav.learn.fql.extract_system`."""
@@ -104,7 +112,7 @@ def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING) -> FuzzyS
 
     return extract_system([learners["steering"], learners["speed"]],
                           [interpretations("alpha", (-PI / 4, PI / 4)), interpretations("v", (0.0, 4.0))],
-                          tolerance=WALL_TOLERANCE, name="fql-wall",
+                          tolerance=tolerance, name="fql-wall",
                           description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
                                       f"(thesis §VI.5.3.2, eqs VI.21-VI.22); sensing: {sensing} "
                                       f"({WALL_SENSINGS[sensing]})")
@@ -117,10 +125,15 @@ WALL_SENSINGS = {"rays": "single rays at -90, 0, +90 degrees, as the hand-made f
 def train_fql_wall(request, sensing: str = WALL_SENSING) -> dict:
     """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30) on the
     hand-made follower's single rays (``sensing``: :data:`WALL_SENSINGS`)."""
-    phases, learners = run_phases(fql_wall_phases(request.out, episode_budget(request, 1500), sensing=sensing), request)
-    system = wall_system(wall_follower(), learners, sensing)
+    batch = robots(request)
+    phases, learners = run_phases(fql_wall_phases(request.out, episode_budget(request, 1500), batch, sensing),
+                                  request)
+    tolerance = extraction_tolerance(batch, WALL_TOLERANCE)
+    system = wall_system(wall_follower(), learners, sensing, tolerance)
     document = {"kind": "fql-wall", "sensing": sensing, **to_document(system),
-                "training": {"task": "fql-wall", "seed": request.seed, **summarise(phases)}}
+                "training": {"task": "fql-wall", "seed": request.seed, **protocol_record(batch, "hand-made follower"),
+                             "rules_changed": rules_changed(list(learners.values()), tolerance),
+                             **summarise(phases)}}
     return finish(request, document, phases, "fql-wall")
 
 

@@ -25,6 +25,8 @@ from fuzzynav.learn.tasks.common import (
     checkpoint_path,
     episode_budget,
     finish,
+    protocol_record,
+    robots,
     run_phases,
     summarise,
 )
@@ -48,7 +50,10 @@ def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
 def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int | None = None):
     """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1).
 
-    ε decays × 0.9 per batch from 0.3 to 0.02 with random starts; from the fixed start of Fig VI.1
+    ``batch`` robots per batch (1: the thesis' one robot; default the parallel learner's
+    :func:`~fuzzynav.learn.tasks.common.batch_size`). ε decays from 0.3 to 0.02 at × 0.9 per
+    :func:`~fuzzynav.learn.tasks.common.batch_size` episodes (so at the same pace per episode
+    whatever ``batch``) with random starts; from the fixed start of Fig VI.1
     to 0 (:data:`FIXED_EPSILON_FLOOR`, "greedy in the limit"): there the episodes differ only by
     exploration, and a floor of 0.02 keeps the greedy route flipping between near-equal routes
     (docs/training.md, "Tabular goal seeking")."""
@@ -60,7 +65,8 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
                    lambda a, s: (actions[a], Q_SPEED), GoalSteeringReward(), batch=batch, max_steps=500,
                    tolerance=GOAL_TOLERANCE)
     learner = TabularLearner(disc.n_states, len(steering), gamma=0.9, alpha=InverseVisits(1.0, 0.8, 0.01),
-                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9, FIXED_EPSILON_FLOOR if fixed else 0.02)))
+                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9 ** (batch / batch_size(fixed)),
+                                                                   FIXED_EPSILON_FLOOR if fixed else 0.02)))
     return env, learner, disc, steering
 
 
@@ -70,12 +76,14 @@ def q_goal_controller(learner, disc, steering) -> TabularGoalSeeker:
 
 def train_q_goal(request) -> dict:
     """``fuzzynav train q-goal``: 13 states × 3 actions, random starts (Figs VI.3–VI.4)."""
-    env, learner, disc, steering = q_goal_parts()
+    batch = robots(request)
+    env, learner, disc, steering = q_goal_parts(batch=batch)
     phases, _ = run_phases([Phase("steering", env, learner, episode_budget(request, 3000),
                                   checkpoint_path(request.out, "steering"))], request)
     document = {"kind": "q-goal", "zone_edges": disc.zone_edges.tolist(), "n_sectors": disc.n_sectors,
                 "merge_inner": disc.merge_inner, "steering": list(steering), "speed": Q_SPEED,
-                "q": learner.q[0].tolist(), "training": {"task": "q-goal", "seed": request.seed, **summarise(phases)}}
+                "q": learner.q[0].tolist(), "training": {"task": "q-goal", "seed": request.seed, **protocol_record(batch, "none"),
+                             **summarise(phases)}}
     return finish(request, document, phases, "q-goal")
 
 
