@@ -7,6 +7,7 @@ returns a :class:`~fuzzynav.control.base.Controller`.
 
 from __future__ import annotations
 
+from fuzzynav import validation
 from fuzzynav.control.base import Controller
 from fuzzynav.lookup import descriptions, resolve
 
@@ -57,6 +58,7 @@ def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (an :class:`InputError` names close matches);
     a factory registered under two names (``fuzzy-5b``, ``fuzzy-5b-gap-robust``) gives its
     controller the name asked for, which its traces and metrics show."""
+    validation.text(name, field="name", max_length=200)
     controller = resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
     if sum(factory == CONTROLLERS[name][0] for factory, _ in CONTROLLERS.values()) > 1:
         controller.name = name

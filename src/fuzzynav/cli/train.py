@@ -19,11 +19,13 @@ def register(subparsers) -> None:
                                description="Train a learning controller and write its model file (atomically). Tasks: "
                                + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()))
     parser.add_argument("task", metavar="TASK", help="training task name")
-    parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
+    parser.add_argument("--episodes", type=int,
+                        help=f"number of episodes / epochs, 1 to {validation.MAX_EPISODES:,} (task default)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
-    parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
+    parser.add_argument("--checkpoint-every", type=int, metavar="K",
+                        help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
     parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")

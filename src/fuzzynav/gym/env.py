@@ -26,7 +26,9 @@ class FuzzynavEnv(gymnasium.Env):
     list of them), ``worlds`` (a generated family ``"circles"`` / ``"mixed"`` — pool of
     ``n_worlds`` numbered by ``world_seed`` — or a layout ``"random-goal"``,
     ``"random-obstacles"``, ``"wall-course"``, ``"random-paths"``), ``max_steps``,
-    ``decision_steps`` (steps Δt = 0.1 s per action), ``render_mode``.
+    ``decision_steps`` (steps Δt = 0.1 s per action), ``render_mode``. Counts are bounded and
+    actions checked (:class:`~fuzzynav.gym.episodes.Episodes`, :mod:`fuzzynav.gym.actions`):
+    a NaN, infinite, mis-shaped or out-of-range discrete action is an ``InputError``.
     """
 
     metadata = {"render_modes": list(RENDER_MODES), "render_fps": 10}
@@ -60,7 +62,7 @@ class FuzzynavEnv(gymnasium.Env):
     def step(self, action):
         if not self._live[0]:
             raise RuntimeError("the episode has ended: call reset()")
-        rewards, terminated, truncated, info = self.episodes.step(np.asarray(action)[None], self._live)
+        rewards, terminated, truncated, info = self.episodes.step(action, self._live, single=True)
         self._live[0] = not (terminated[0] or truncated[0])
         if self.render_mode == "human":
             self.render()
