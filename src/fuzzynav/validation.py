@@ -213,11 +213,21 @@ def read_text(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> str:
     return decode(read_bytes(path, max_bytes=max_bytes, source=source), source)
 
 
+def _unique_keys(pairs) -> dict:
+    """A JSON object whose keys are all different (``json`` would silently keep the last one)."""
+    result = {}
+    for key, value in pairs:
+        if key in result:
+            raise ValueError(f"the key {shown(key)} appears twice in one object")
+        result[key] = value
+    return result
+
+
 def parse_json(content: str, source=None):
-    """A JSON document, bounded (:func:`check_tree`); syntax errors name the line and column.
-    (The text's size is bounded where it is read: :func:`read_text`.)"""
+    """A JSON document, bounded (:func:`check_tree`), no key twice in one object; syntax errors
+    name the line and column. (The text's size is bounded where it is read: :func:`read_text`.)"""
     try:
-        document = json.loads(content)
+        document = json.loads(content, object_pairs_hook=_unique_keys)
     except json.JSONDecodeError as error:
         fail(f"invalid JSON: {error.msg}", source, f"line {error.lineno}, column {error.colno}")
     except RecursionError:
