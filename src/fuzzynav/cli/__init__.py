@@ -43,7 +43,16 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _survive_any_terminal() -> None:
+    """Characters the terminal's encoding lacks (``§``, ``θ``, ``≥`` on ``PYTHONIOENCODING=ascii``)
+    are written as ``\\u00a7`` escapes instead of failing with ``UnicodeEncodeError``."""
+    for stream in (sys.stdout, sys.stderr):
+        if callable(getattr(stream, "reconfigure", None)):
+            stream.reconfigure(errors="backslashreplace")
+
+
 def main(argv: list[str] | None = None) -> int:
+    _survive_any_terminal()
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):

@@ -26,7 +26,8 @@ def register(subparsers) -> None:
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=int, metavar="K",
                         help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
-    parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
+    parser.add_argument("--curve", type=arguments.figure_path, help="write the learning curve plot (PNG; any "
+                        "suffix matplotlib writes, checked before training)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
 
@@ -47,7 +48,7 @@ def run(args) -> int:
         seed=args.seed,
         resume=args.resume,
         checkpoint_every=args.checkpoint_every,
-        curve=args.curve,
+        curve=None if args.curve is None else Path(args.curve),
         progress=progress.enabled() and not (args.quiet or args.json),
     )
     result = train(request)

@@ -200,8 +200,10 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
                        robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
     """Validate a parsed scenario document and build the :class:`Scenario`.
 
-    ``robot_radius`` is the footprint that must fit at the start pose when the document's
-    ``robot`` gives no ``radius`` (default: the default robot's).
+    ``robot_radius`` is the footprint that must fit at the start pose, and that must be able
+    to bring its centre within tolerance of the goal or of a static target, when the document's
+    ``robot`` gives no ``radius`` (default: the default robot's); otherwise the document's own
+    ``robot.radius`` is used for both checks.
     """
     check = Checks(source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
@@ -225,7 +227,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
                       limits.angle(robot.get("theta", 0.0), source, "robot.theta")])
     robot_limits = _robot_params(check, robot)
-    _place(check, world, start[:2], "robot", "start", robot_limits.radius if "radius" in robot else robot_radius)
+    radius = robot_limits.radius if "radius" in robot else robot_radius
+    _place(check, world, start[:2], "robot", "start", radius)
 
     goal = path = target = None
     if "goal" in doc:
@@ -233,7 +236,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         position = np.array([check.number(g["x"], "goal.x"), check.number(g["y"], "goal.y")])
         _place(check, world, position, "goal", "goal")
         goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
-        _reachable(check, world, position, goal.tolerance, robot_radius, "goal", "goal")
+        _reachable(check, world, position, goal.tolerance, radius, "goal", "goal")
     elif "path" in doc:
         waypoints = check.points(doc["path"], "path", 2, limits.MAX_WAYPOINTS)
         for i, waypoint in enumerate(waypoints):
@@ -282,6 +285,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             check.fail("target.motion.center", "must differ from the target start (zero radius)")
         target = TargetTask(TargetMotion(type=kind, start=position, **values),
                             check.number(t.get("tolerance", DEFAULT_GOAL_TOLERANCE), "target.tolerance", True))
+        if kind == "static":
+            _reachable(check, world, position, target.tolerance, radius, "target", "target")
 
     return Scenario(
         name=check.text(doc.get("name", name or "scenario"), "name"),
