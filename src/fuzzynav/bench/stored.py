@@ -58,13 +58,13 @@ def read_runs(out: Path, columns, plan_keys=None) -> list[dict]:
         except ValueError:
             if number == len(lines):  # the last line, not ended by a newline: cut by an interruption
                 continue
-            raise InputError("not a JSON object (a campaign file edited by hand? choose another --out)", source,
-                             where) from None
+            raise InputError("not a JSON object (a campaign file edited by hand? choose another --out)",
+                             source=source, field=where) from None
         check_row(row, columns, source, where)
         run = (row["suite"], row["world"], row["seed"], row["controller"])
         if plan_keys is not None and run not in plan_keys:
             raise InputError(f"run {run} is not one of this campaign's (its suites, seeds and controllers): resume "
-                             "with the same arguments, or choose another --out", source, where)
+                             "with the same arguments, or choose another --out", source=source, field=where)
         rows.append(row)
     return rows
 
@@ -78,5 +78,5 @@ def read_replacements(path: Path) -> dict:
         validation.text(item["file"], source, f"{role}.file")
         digest = validation.text(item["sha256"], source, f"{role}.sha256")
         if len(digest) != 64 or any(c not in "0123456789abcdef" for c in digest):
-            raise InputError("must be 64 lowercase hexadecimal digits", source, f"{role}.sha256")
+            raise InputError("must be 64 lowercase hexadecimal digits", source=source, field=f"{role}.sha256")
     return record
