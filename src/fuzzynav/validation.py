@@ -109,6 +109,25 @@ def seed(value, source=None, field=None) -> int:
     return integer(value, source, field, lo=0, hi=MAX_SEED)
 
 
+def file_path(value, source=None, field=None) -> Path:
+    """``value`` as a :class:`~pathlib.Path`: a string or path-like object, not empty, at most
+    4,096 characters (``None``, a number or a list is refused, not passed to ``open``)."""
+    if not isinstance(value, (str, Path)) and not hasattr(value, "__fspath__"):
+        fail(f"must be a file name (a string or a path), got {type(value).__name__} {shown(value)}", source, field)
+    name = str(Path(value))
+    if not name.strip() or len(name) > 4096:
+        fail(f"must be a file name of 1 to 4096 characters, got {len(name)}", source, field)
+    return Path(value)
+
+
+def float_array(value, source=None, field=None) -> np.ndarray:
+    """``value`` as a float array (numbers, nested lists of numbers); anything else is refused."""
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        fail(f"must be numbers, got {type(value).__name__} {shown(value)}", source, field)
+
+
 def text(value, source=None, field=None, *, max_length: int = MAX_STRING, allow_empty: bool = True) -> str:
     """``value`` as a string of at most ``max_length`` characters (non-empty unless ``allow_empty``)."""
     if not isinstance(value, str):

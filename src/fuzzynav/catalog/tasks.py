@@ -14,6 +14,7 @@ from __future__ import annotations
 from importlib import import_module
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.lookup import descriptions, resolve
 from fuzzynav.storage import read_document
@@ -54,7 +55,7 @@ def trainer(task: str):
 
 def load_controller(path):
     """Build the controller stored in a model file (JSON or NPZ), whatever its kind."""
-    document = read_document(path)
+    document = read_document(validation.file_path(path, field="model"))
     kind = document["kind"]
     if kind not in MODEL_LOADERS:
         raise InputError(

@@ -11,8 +11,9 @@ from __future__ import annotations
 import gymnasium
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.gym.episodes import Episodes
+from fuzzynav.gym.episodes import OPTIONS, Episodes
 
 RENDER_MODES = ("human", "rgb_array")
 
@@ -37,6 +38,7 @@ class FuzzynavEnv(gymnasium.Env):
         if render_mode is not None and render_mode not in RENDER_MODES:
             raise InputError(f"must be one of {', '.join(RENDER_MODES)} or None, got {render_mode!r}",
                              field="render_mode")
+        validation.known_keys(options, OPTIONS, field="options")
         self.episodes = Episodes(1, task, **options)
         self.observation_space = self.episodes.observation_space
         self.action_space = self.episodes.action_space
@@ -51,7 +53,7 @@ class FuzzynavEnv(gymnasium.Env):
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         """A new episode (``options={"scenario": …}``: on that scenario, a name, file or object)."""
-        super().reset(seed=seed)
+        super().reset(seed=None if seed is None else validation.seed(seed, field="seed"))
         scenario = (options or {}).get("scenario")
         self.episodes.start([0], [self.np_random], None if scenario is None else [scenario])
         self._live[0] = True

@@ -26,6 +26,7 @@ from fuzzynav.gym.tasks import REWARDS, TASKS, dense_reward
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 
 ACTIONS = ("continuous", "discrete")
+OPTIONS = ("actions", "reward", "scenario", "worlds", "n_worlds", "world_seed", "max_steps", "decision_steps", "params")
 
 
 def scale_actions(actions, params=DEFAULT_PARAMS) -> np.ndarray:
@@ -55,12 +56,14 @@ class Episodes:
     def __init__(self, n: int, task: str, *, actions: str = "continuous", reward: str = "thesis", scenario=None,
                  worlds: str | None = None, n_worlds: int = 1000, world_seed: int = 0, max_steps: int | None = None,
                  decision_steps: int | None = None, params=DEFAULT_PARAMS):
-        if task not in TASKS:
+        if not isinstance(task, str) or task not in TASKS:
             raise InputError(f"unknown task {task!r} (known: {', '.join(TASKS)})", field="task")
         if actions not in ACTIONS:
             raise InputError(f"must be one of {', '.join(ACTIONS)}, got {actions!r}", field="actions")
         if reward not in REWARDS:
             raise InputError(f"must be one of {', '.join(REWARDS)}, got {reward!r}", field="reward")
+        if worlds is not None:
+            validation.text(worlds, field="worlds", max_length=100)
         if not isinstance(params, TricycleParams):
             raise InputError(f"must be a TricycleParams, got {type(params).__name__}", field="params")
         validation.count(n_worlds, field="n_worlds", hi=validation.MAX_WORLDS)
@@ -128,6 +131,7 @@ class Episodes:
         if scenarios is None:
             scenarios = [self.source.draw(rng) for rng in rngs]
         else:
+            scenarios = validation.sequence(scenarios, field="scenarios")
             if len(scenarios) != len(rows):
                 raise InputError(f"{len(scenarios)} scenarios for {len(rows)} environments", field="scenarios")
             scenarios = [ScenarioSource(s).scenarios[0] for s in scenarios]

@@ -22,7 +22,7 @@ from gymnasium.vector.utils import batch_space
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.gym.episodes import Episodes
+from fuzzynav.gym.episodes import OPTIONS, Episodes
 
 
 class FuzzynavVectorEnv(VectorEnv):
@@ -34,6 +34,7 @@ class FuzzynavVectorEnv(VectorEnv):
         validation.count(num_envs, field="num_envs", hi=validation.MAX_ROBOTS)
         if options.pop("render_mode", None) is not None:
             raise InputError("the vector environment does not render; render one FuzzynavEnv", field="render_mode")
+        validation.known_keys(options, OPTIONS, field="options")
         self.num_envs = int(num_envs)
         self.episodes = Episodes(self.num_envs, task, **options)
         self.single_observation_space = self.episodes.observation_space
@@ -52,7 +53,8 @@ class FuzzynavVectorEnv(VectorEnv):
         elif isinstance(seed, (int, np.integer)):
             seeds = [validation.seed(seed, field="seed") + i for i in range(self.num_envs)]
         else:
-            seeds = list(validation.sequence(seed, field="seed"))
+            seeds = [None if s is None else validation.seed(s, field=f"seed[{i}]")
+                     for i, s in enumerate(validation.sequence(seed, field="seed"))]
             if len(seeds) != self.num_envs:
                 raise InputError(f"{len(seeds)} seeds for {self.num_envs} environments", field="seed")
         for i, s in enumerate(seeds):

@@ -17,6 +17,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
+from fuzzynav.sim.trace import Trace
 from fuzzynav.world.scenario import Scenario
 
 
@@ -24,10 +25,17 @@ def _kind(value) -> str:
     return f"{type(value).__name__} {validation.shown(value)}"
 
 
+def check_trace(trace) -> Trace:
+    """``trace``, a :class:`Trace` (what ``run_episode`` returns)."""
+    if not isinstance(trace, Trace):
+        raise InputError(f"must be a Trace (what run_episode returns), got {_kind(trace)}", field="trace")
+    return trace
+
+
 def check_scenario(scenario) -> Scenario:
     """``scenario``, a :class:`Scenario`."""
     if not isinstance(scenario, Scenario):
-        raise InputError(f"must be a Scenario (fuzzynav.load_scenario(name or file) makes one), got {_kind(scenario)}",
+        raise InputError(f"must be a Scenario (load_scenario(name or file) makes one), got {_kind(scenario)}",
                          field="scenario")
     return scenario
 
@@ -41,7 +49,7 @@ def check_controllers(controller, n: int) -> list | None:
     """``None`` for one controller, else the list of ``n`` controllers ``controller`` holds."""
     if is_controller(controller):
         return None
-    hint = "fuzzynav.make_controller(name) makes one"
+    hint = "make_controller(name) makes one"
     if isinstance(controller, (str, bytes, dict)) or not isinstance(controller, (list, tuple)):
         raise InputError(f"must be a controller (an object with act or act_batch; {hint}) or a list of one per "
                          f"robot, got {_kind(controller)}", field="controller")

@@ -18,8 +18,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.errors import InputError
-from fuzzynav.sim.arguments import check_scenario
+from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.scenario import Scenario
 
@@ -42,9 +41,7 @@ def cross_track(positions, waypoints) -> np.ndarray:
 
 def metrics(trace: Trace, scenario: Scenario) -> dict:
     """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
-    if not isinstance(trace, Trace):
-        raise InputError(f"must be a Trace (what fuzzynav.run_episode returns), got {type(trace).__name__}",
-                         field="trace")
+    check_trace(trace)
     check_scenario(scenario)
     xy = trace.pose[:, :2]
     steps = np.diff(xy, axis=0)

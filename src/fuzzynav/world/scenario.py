@@ -342,7 +342,7 @@ def list_scenarios() -> dict[str, str]:
 
 def load_scenario(path_or_name) -> Scenario:
     """Load a scenario file, or a built-in scenario by name (see :func:`list_scenarios`)."""
-    path = Path(path_or_name)
+    path = validation.file_path(path_or_name, field="scenario")
     if not path.is_file():
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
         if not builtin.is_file():
