@@ -21,12 +21,14 @@ def test_check_env(env_id):
 def test_nan_action_is_refused_and_the_pose_stays_finite(env_id):
     env = gymnasium.make(env_id)
     env.reset(seed=0)
+    env.action_space.seed(0)
     with pytest.raises(InputError, match="action: must be finite"):
         env.step(np.full(env.action_space.shape, np.nan, dtype=np.float32))
     assert np.isfinite(env.unwrapped.episodes.batch.pose).all()
     env.step(env.action_space.sample())  # the episode goes on
     vec = gymnasium.make_vec(env_id, num_envs=2, vectorization_mode="vector_entry_point")
     vec.reset(seed=0)
+    vec.action_space.seed(0)
     actions = vec.action_space.sample()
     actions[1] = np.nan
     with pytest.raises(InputError, match=r"actions\[1\]: must be finite"):
