@@ -168,16 +168,12 @@ ROBOT = "robot: {x: 5, y: 5}\n"
 RUN = ("run", "{d}/s.yaml", "--controller", "goal-seeking", "--json")
 
 
-def _width(env: str) -> int:
-    return 1 if "Path" in env else 2
-
-
 GYM = [
     *[Case(f"gym-nan-action-{env.split('/')[1]}",
-           python=f"step_env({env!r}, np.full({_width(env)}, np.nan, dtype=np.float32))", expect="action: must be finite")
+           python=f"step_env({env!r}, np.full({1 if 'Path' in env else 2}, np.nan, dtype=np.float32))", expect="action: must be finite")
       for env in GYM_IDS],
     *[Case(f"gym-vector-nan-action-{env.split('/')[1]}",
-           python=f"step_vector({env!r}, np.full((3, {_width(env)}), np.nan, dtype=np.float32))",
+           python=f"step_vector({env!r}, np.full((3, {1 if 'Path' in env else 2}), np.nan, dtype=np.float32))",
            expect="actions[0]: must be finite") for env in GYM_IDS],
     Case("gym-inf-action", python="step_env('fuzzynav/GoalSeeking-v0', [np.inf, 0.0])", expect="action: must be finite"),
     Case("gym-discrete-minus-one", python="step_env('fuzzynav/GoalSeeking-v0', -1, actions='discrete')",
