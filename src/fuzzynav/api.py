@@ -31,9 +31,15 @@ def train(task: str, out: str | Path, *, episodes: int | None = None, seed: int 
     ``converged_at`` per phase). ``episodes`` defaults to the task's own budget; ``curve`` writes
     the learning-curve plot; :func:`fuzzynav.load_controller` reads the model back.
     """
+    from fuzzynav import validation
     from fuzzynav.catalog.tasks import trainer
     from fuzzynav.learn.tasks.common import TrainRequest
 
-    request = TrainRequest(out=Path(out), episodes=episodes, seed=seed, resume=resume,
-                           curve=None if curve is None else Path(curve), progress=progress)
+    validation.text(task, field="task", max_length=200)
+    if episodes is not None:
+        validation.count(episodes, field="episodes", hi=validation.MAX_EPISODES)
+    request = TrainRequest(out=validation.file_path(out, field="out"), episodes=episodes,
+                           seed=validation.seed(seed, field="seed"), resume=bool(resume),
+                           curve=None if curve is None else validation.file_path(curve, field="curve"),
+                           progress=bool(progress))
     return trainer(task)(request)

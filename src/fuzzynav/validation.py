@@ -18,6 +18,7 @@ import operator
 import warnings
 import zipfile
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
 import yaml
@@ -40,14 +41,22 @@ MAX_RUNS = 100_000  # episodes of one evaluation (``evaluate --n``)
 MAX_EPISODES = 10_000_000  # training episodes (``train --episodes``, ``--checkpoint-every``)
 MAX_RESOLUTION = 10_000  # centroid samples of a Mamdani output (fuzzylite's default is 1,000)
 MAX_UNIVERSE_WIDTH = 1e300  # a fuzzy variable's hi - lo: MAX_RESOLUTION samples across it stay finite
+MAX_WORLDS = 100_000  # generated worlds of one request (``worlds generate --n``, a bench suite's COUNT, Gym n_worlds)
+MAX_SEED = 2**63 - 1  # a seed (``--seed``, ``seed=``, Gym ``world_seed``): NumPy takes non-negative seeds
+MAX_SEEDS = 10_000  # seeds of one campaign (``bench --seeds``)
+MAX_CAMPAIGN_RUNS = 1_000_000  # runs of one campaign: suites' worlds x seeds x controllers
+MAX_WORKERS = 1024  # parallel workers (``bench --workers``; default: the cores)
+MAX_ROBOTS = 100_000  # robots stepped together (``BatchSimulator`` n / starts, Gym ``num_envs``)
+MAX_DECISION_STEPS = 1_000  # simulator steps per Gym action (``decision_steps``; 100 s of 0.1 s steps)
+MAX_EPISODE_STEPS = 10_000_000  # Gym ``max_steps`` (decisions before truncation)
 
 
-def fail(problem: str, source=None, field=None):
+def fail(problem: str, source=None, field=None) -> NoReturn:
     """Raise the :class:`InputError` of ``problem`` at ``source`` / ``field``."""
     raise InputError(problem, source=None if source is None else str(source), field=field)
 
 
-def _shown(value) -> str:
+def shown(value) -> str:
     """``repr(value)`` cut to a readable length (a 400-digit integer is not echoed whole)."""
     text = repr(value) if not isinstance(value, int) or abs(value) < 10**30 else f"an integer of {len(str(abs(value)))} digits"
     return text if len(text) <= 80 else text[:77] + "..."
@@ -58,17 +67,17 @@ def number(value, source=None, field=None, *, lo: float = -MAX_MAGNITUDE, hi: fl
     """``value`` as a float: a real number (not a bool, not a string), finite, in [lo, hi]
     (``lo_open`` / ``hi_open`` exclude an end)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_number(value):
-        fail(f"must be a number, got {_shown(value)}", source, field)
+        fail(f"must be a number, got {shown(value)}", source, field)
     try:
         result = float(value)
     except OverflowError:
-        fail(f"must be <= {hi:g} in magnitude, got {_shown(value)}", source, field)
+        fail(f"must be <= {hi:g} in magnitude, got {shown(value)}", source, field)
     if not math.isfinite(result):
-        fail(f"must be finite, got {_shown(result)}", source, field)
+        fail(f"must be finite, got {shown(result)}", source, field)
     if result <= lo if lo_open else result < lo:
-        fail(f"must be {'>' if lo_open else '>='} {lo:g}, got {_shown(value)}", source, field)
+        fail(f"must be {'>' if lo_open else '>='} {lo:g}, got {shown(value)}", source, field)
     if result >= hi if hi_open else result > hi:
-        fail(f"must be {'<' if hi_open else '<='} {hi:g}, got {_shown(value)}", source, field)
+        fail(f"must be {'<' if hi_open else '<='} {hi:g}, got {shown(value)}", source, field)
     return result
 
 
@@ -80,20 +89,49 @@ def _is_numpy_number(value) -> bool:
 def integer(value, source=None, field=None, *, lo: int = -MAX_INTEGER, hi: int = MAX_INTEGER) -> int:
     """``value`` as an int: an integer (not a bool, not a float, not a string) in [lo, hi]."""
     if isinstance(value, bool):
-        fail(f"must be an integer, got {_shown(value)}", source, field)
+        fail(f"must be an integer, got {shown(value)}", source, field)
     try:
         result = operator.index(value)
     except TypeError:
-        fail(f"must be an integer, got {type(value).__name__} {_shown(value)}", source, field)
+        fail(f"must be an integer, got {type(value).__name__} {shown(value)}", source, field)
     if not lo <= result <= hi:
-        fail(f"must be an integer in [{lo}, {hi}], got {_shown(value)}", source, field)
+        fail(f"must be an integer in [{lo}, {hi}], got {shown(value)}", source, field)
     return result
+
+
+def count(value, source=None, field=None, *, hi: int, lo: int = 1) -> int:
+    """A count (worlds, seeds, steps, workers...): an integer in [lo, hi], checked before any work."""
+    return integer(value, source, field, lo=lo, hi=hi)
+
+
+def seed(value, source=None, field=None) -> int:
+    """A random seed: an integer in [0, :data:`MAX_SEED`] (NumPy refuses negative seeds)."""
+    return integer(value, source, field, lo=0, hi=MAX_SEED)
+
+
+def file_path(value, source=None, field=None) -> Path:
+    """``value`` as a :class:`~pathlib.Path`: a string or path-like object, not empty, at most
+    4,096 characters (``None``, a number or a list is refused, not passed to ``open``)."""
+    if not isinstance(value, (str, Path)) and not hasattr(value, "__fspath__"):
+        fail(f"must be a file name (a string or a path), got {type(value).__name__} {shown(value)}", source, field)
+    name = str(Path(value))
+    if not name.strip() or len(name) > 4096:
+        fail(f"must be a file name of 1 to 4096 characters, got {len(name)}", source, field)
+    return Path(value)
+
+
+def float_array(value, source=None, field=None) -> np.ndarray:
+    """``value`` as a float array (numbers, nested lists of numbers); anything else is refused."""
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        fail(f"must be numbers, got {type(value).__name__} {shown(value)}", source, field)
 
 
 def text(value, source=None, field=None, *, max_length: int = MAX_STRING, allow_empty: bool = True) -> str:
     """``value`` as a string of at most ``max_length`` characters (non-empty unless ``allow_empty``)."""
     if not isinstance(value, str):
-        fail(f"must be a string, got {type(value).__name__} {_shown(value)}", source, field)
+        fail(f"must be a string, got {type(value).__name__} {shown(value)}", source, field)
     if len(value) > max_length:
         fail(f"must be at most {max_length} characters, got {len(value)}", source, field)
     if not allow_empty and not value.strip():
@@ -104,7 +142,7 @@ def text(value, source=None, field=None, *, max_length: int = MAX_STRING, allow_
 def choice(value, options, source=None, field=None) -> str:
     """``value``, one of the strings ``options``."""
     if not isinstance(value, str) or value not in options:
-        fail(f"must be one of {', '.join(map(str, options))}, got {_shown(value)}", source, field)
+        fail(f"must be one of {', '.join(map(str, options))}, got {shown(value)}", source, field)
     return value
 
 
@@ -114,7 +152,7 @@ def mapping(value, source=None, field=None) -> dict:
         fail(f"must be a mapping, got {type(value).__name__}", source, field)
     for key in value:
         if not isinstance(key, str):
-            fail(f"keys must be strings, got {type(key).__name__} {_shown(key)}", source, field or "(top level)")
+            fail(f"keys must be strings, got {type(key).__name__} {shown(key)}", source, field or "(top level)")
     return value
 
 
@@ -152,13 +190,13 @@ def check_tree(document, source=None, *, max_depth: int = MAX_DEPTH, max_nodes: 
         if isinstance(node, dict):
             for key, item in node.items():
                 if string_keys and not isinstance(key, str):
-                    fail(f"keys must be strings, got {type(key).__name__} {_shown(key)}", source,
+                    fail(f"keys must be strings, got {type(key).__name__} {shown(key)}", source,
                          where or "(top level)")
                 stack.append((item, depth + 1, f"{where}.{key}" if where else str(key)))
         elif isinstance(node, (list, tuple)):
             stack.extend((item, depth + 1, f"{where}[{i}]") for i, item in enumerate(node))
         elif isinstance(node, int) and not -MAX_DOCUMENT_INTEGER <= node <= MAX_DOCUMENT_INTEGER:
-            fail(f"integer too large ({_shown(node)})", source, where or None)
+            fail(f"integer too large ({shown(node)})", source, where or None)
     return document
 
 
@@ -194,11 +232,21 @@ def read_text(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> str:
     return decode(read_bytes(path, max_bytes=max_bytes, source=source), source)
 
 
+def _unique_keys(pairs) -> dict:
+    """A JSON object whose keys are all different (``json`` would silently keep the last one)."""
+    result = {}
+    for key, value in pairs:
+        if key in result:
+            raise ValueError(f"the key {shown(key)} appears twice in one object")
+        result[key] = value
+    return result
+
+
 def parse_json(content: str, source=None):
-    """A JSON document, bounded (:func:`check_tree`); syntax errors name the line and column.
-    (The text's size is bounded where it is read: :func:`read_text`.)"""
+    """A JSON document, bounded (:func:`check_tree`), no key twice in one object; syntax errors
+    name the line and column. (The text's size is bounded where it is read: :func:`read_text`.)"""
     try:
-        document = json.loads(content)
+        document = json.loads(content, object_pairs_hook=_unique_keys)
     except json.JSONDecodeError as error:
         fail(f"invalid JSON: {error.msg}", source, f"line {error.lineno}, column {error.colno}")
     except RecursionError:
@@ -240,7 +288,7 @@ def known_keys(value, known, source=None, field=None, *, required=()) -> dict:
         if key not in known:
             close = difflib.get_close_matches(key, list(known), n=1)
             hint = f" (did you mean {close[0]!r}?)" if close else ""
-            fail(f"unknown key {_shown(key)}{hint}; known: {', '.join(known)}", source,
+            fail(f"unknown key {shown(key)}{hint}; known: {', '.join(known)}", source,
                  f"{field}.{key}" if field else key)
     for key in required:
         if key not in value:

@@ -1,14 +1,16 @@
-"""Re-run the hostile inputs of the validation review through the installed ``fuzzynav`` and count
+"""Re-run the hostile inputs of the validation reviews through the installed ``fuzzynav`` and count
 what goes wrong: tracebacks, hangs past the timeout (10 s), silent wrong answers.
 
-Each case of :mod:`hostile_cases` (beside this script; ``test_hostile_inputs.py`` runs the same
-cases in process) runs in its own subprocess (a command line, or
+Each case of ``tests/validation/hostile_cases.py`` and of the corpus ``tests/hostile/cases.py``
+(Gym actions and options, Python API arguments, counts, fuzzy files, tampered campaign and
+checkpoint folders, reachability, ASCII terminals) runs in its own subprocess (a command line, or
 its Python code for the constructor and simulator cases) in a fresh temporary directory:
 
 - traceback: ``Traceback`` on stderr, or an exit status other than 0 / 2;
 - hang: still running after ``--timeout`` seconds (killed);
 - silent wrong answer: the expected status or message is not there (e.g. exit 0 where the input
-  must be refused, or a refusal that does not name the field).
+  must be refused, or a refusal that does not name the field);
+- wrong exit: refused (exit 2) where the input is fine.
 
 Also two end-to-end checks of ``train --resume``: a seed-0 checkpoint resumed with ``--seed 1``, and
 with fewer ``--episodes`` than done, must exit 2 naming the field. Run:
@@ -29,7 +31,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+import textwrap  # noqa: E402
+
+from tests.hostile import cases as corpus  # noqa: E402
 from tests.validation.hostile_cases import CASES, PYTHON_PRELUDE, Case, argv_of, write_files  # noqa: E402
+
+# (case, the Python prelude its code runs after)
+ALL_CASES = [(case, PYTHON_PRELUDE) for case in CASES] + [(case, corpus.PRELUDE) for case in corpus.CASES]
 
 FUZZYNAV = [sys.executable, "-m", "fuzzynav"]
 
@@ -44,12 +52,12 @@ def run(command: list[str], cwd: Path, timeout: float) -> tuple[int | None, str,
     return done.returncode, done.stdout, done.stderr, time.perf_counter() - start
 
 
-def command_of(case: Case, directory: Path) -> list[str]:
+def command_of(case: Case, directory: Path, prelude: str = PYTHON_PRELUDE) -> list[str]:
     if not case.python:
         return FUZZYNAV + argv_of(case, directory)
-    code = (PYTHON_PRELUDE + "\nimport sys\nfrom pathlib import Path\nfrom fuzzynav.errors import InputError\n"
-            "d = Path.cwd()\ntry:\n"
-            f"    {case.python}\nexcept InputError as error:\n    print(error, file=sys.stderr)\n    sys.exit(2)\n")
+    code = (prelude + "\nimport sys\nfrom pathlib import Path\nfrom fuzzynav.errors import InputError\n"
+            "d = Path.cwd()\ntry:\n" + textwrap.indent(case.python, "    ") +
+            "\nexcept InputError as error:\n    print(error, file=sys.stderr)\n    sys.exit(2)\n")
     return [sys.executable, "-c", code]
 
 
@@ -58,6 +66,8 @@ def verdict(case: Case, status, out: str, err: str) -> str:
         return "hang"
     if "Traceback" in err or status not in (0, 2):
         return "traceback"
+    if status == 2 and case.status == 0:
+        return "wrong-exit"
     if status != case.status or case.expect not in (err if status else out):
         return "silent-wrong"
     return "ok"
@@ -82,18 +92,22 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--timeout", type=float, default=10.0, help="seconds before a case counts as a hang")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--only", default="", help="run only the cases whose name contains this text")
     args = parser.parse_args()
     rows = []
-    for case in CASES:
+    for case, prelude in ALL_CASES:
+        if args.only not in case.name:
+            continue
         with tempfile.TemporaryDirectory() as tmp:
             directory = Path(tmp)
             write_files(case, directory)
-            status, out, err, seconds = run(command_of(case, directory), directory, args.timeout)
+            status, out, err, seconds = run(command_of(case, directory, prelude), directory, args.timeout)
             rows.append({"case": case.name, "status": status, "seconds": round(seconds, 2),
                          "verdict": verdict(case, status, out, err), "message": (err or out).strip()[-200:]})
     with tempfile.TemporaryDirectory() as tmp:
         rows += resume_cases(Path(tmp), args.timeout)
-    counts = {key: sum(row["verdict"] == key for row in rows) for key in ("ok", "traceback", "hang", "silent-wrong")}
+    counts = {key: sum(row["verdict"] == key for row in rows)
+              for key in ("ok", "traceback", "hang", "wrong-exit", "silent-wrong")}
     if args.json:
         print(json.dumps({"cases": len(rows), **counts, "rows": rows}))
     else:

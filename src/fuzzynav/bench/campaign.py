@@ -4,8 +4,10 @@ Files in the output folder:
 
 - ``runs.jsonl`` and ``runs.csv``: one row per run (:data:`COLUMNS`), appended as each cell
   finishes. An interrupted campaign restarted with ``--resume`` reads ``runs.jsonl`` (a line cut
-  by the interruption is dropped), skips the runs already there and runs the rest; a folder that
-  already holds runs is not overwritten without ``--resume``.
+  by the interruption is dropped; every other row validated and required to be one of the
+  plan's, :mod:`.stored`), skips the runs already there and runs the rest; a folder that
+  already holds runs is not overwritten without ``--resume``. One campaign writes a folder at a
+  time (:mod:`.lock`).
 - At the end both files are rewritten in the campaign's order (suites as given, then seed,
   world, controller as given), so they are byte-identical whatever the backend, the number of
   workers, or where an interruption fell; then the reports (:mod:`.report`).
@@ -24,8 +26,11 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from fuzzynav import validation
+from fuzzynav.bench import stored
 from fuzzynav.bench.backends import execute
 from fuzzynav.bench.cells import Cell
+from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
 from fuzzynav.storage import write_text_atomic
@@ -45,6 +50,14 @@ class Plan:
     seeds: int
     radius: float
     fis: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        validation.count(self.seeds, field="--seeds", hi=validation.MAX_SEEDS)
+        runs = sum(suite.size for suite in self.suites) * self.seeds * len(self.controllers)
+        if runs > validation.MAX_CAMPAIGN_RUNS:
+            raise InputError(f"{runs:,} runs (worlds x seeds x controllers), more than the "
+                             f"{validation.MAX_CAMPAIGN_RUNS:,} of one campaign: split it over several --out folders",
+                             field="SUITE")
 
     def order(self) -> dict[tuple, int]:
         """Position of every run key (suite, world, seed, controller) in the final files."""
@@ -96,20 +109,10 @@ def json_lines(rows) -> str:
     return "".join(json.dumps({column: row.get(column) for column in COLUMNS}) + "\n" for row in rows)
 
 
-def read_runs(out: Path) -> list[dict]:
-    """The complete rows of ``out/runs.jsonl`` (a cut last line is dropped)."""
-    file = out / "runs.jsonl"
-    if not file.is_file():
-        return []
-    rows = []
-    for line in file.read_text(encoding="utf-8").splitlines():
-        try:
-            row = json.loads(line)
-        except ValueError:
-            continue
-        if isinstance(row, dict) and all(column in row for column in COLUMNS):
-            rows.append(row)
-    return rows
+def read_runs(out: Path, plan: Plan | None = None) -> list[dict]:
+    """The rows of ``out/runs.jsonl``, validated (:func:`.stored.read_runs`; a cut last line is
+    dropped); with ``plan``, a row that is not one of its runs is refused."""
+    return stored.read_runs(out, COLUMNS, None if plan is None else plan.order())
 
 
 def _write_all(out: Path, rows: list[dict]) -> None:
@@ -129,7 +132,7 @@ def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
               for role, path in fis}
     path = out / "fis.json"
     if resuming:
-        before = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
+        before = stored.read_replacements(path) if path.exists() else {}
         if {r: v["sha256"] for r, v in before.items()} != {r: v["sha256"] for r, v in record.items()}:
             raise InputError(f"its runs were made with {_describe(before)}, this campaign gives {_describe(record)}: "
                              "runs of different rule bases cannot be mixed (resume with the same --fis, or choose "
@@ -140,8 +143,13 @@ def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
                  address: str | None = None, progress: bool = True) -> list[dict]:
     """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
-    out.mkdir(parents=True, exist_ok=True)
-    previous = read_runs(out)
+    with campaign_lock(out):
+        return _run(plan, out, resume, backend, workers, address, progress)
+
+
+def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, address: str | None,
+         progress: bool) -> list[dict]:
+    previous = read_runs(out, plan if resume else None)
     if previous and not resume:
         raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
                          "another --out", source=str(out), field="--out")

@@ -22,6 +22,7 @@ import json
 import math
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.planning import path_length, shortest_path
 from fuzzynav.world.scenario import Scenario
@@ -47,7 +48,7 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
         return _MEMORY[key]
     file = Path(cache_dir) / "shortest" / f"{key}.json" if cache_dir is not None else None
     if file is not None and file.is_file():
-        length = json.loads(file.read_text(encoding="utf-8"))["shortest_path_m"]
+        length = _cached_length(file)
     else:
         path = shortest_path(scenario.world.standing(), scenario.start, scenario.goal.position, radius)
         length = None if path is None else round(max(path_length(path) - scenario.goal.tolerance, 1e-6), 6)
@@ -55,6 +56,14 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
             write_text_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
     _MEMORY[key] = length
     return length
+
+
+def _cached_length(file: Path) -> float | None:
+    """The ``shortest_path_m`` of a cache file, read back as user input (a number > 0 or null)."""
+    source = str(file)
+    document = validation.mapping(validation.parse_json(validation.read_text(file), source), source)
+    length = document.get("shortest_path_m")
+    return None if length is None else validation.number(length, source, "shortest_path_m", lo=0.0, lo_open=True)
 
 
 def barn_score(reached: bool, time_s: float, optimal_path_m: float) -> float:

@@ -15,11 +15,11 @@ seed k (which only matters for noisy sensors or random controllers).
 
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS, generate_world
 from fuzzynav.world.scenario import Scenario, load_scenario
@@ -66,10 +66,25 @@ class Suite:
         return self.references.get(Path(self.files[index]).stem, {})
 
 
-def _count(text: str, field_name: str, spec: str) -> int:
-    if not re.fullmatch(r"\d+", text):
-        raise InputError(f"{field_name} must be a whole number in {spec!r}", field="SUITE")
+def _count(text: str, field_name: str, spec: str, hi: int) -> int:
+    if not re.fullmatch(r"\d{1,30}", text) or int(text) > hi:
+        raise InputError(f"{field_name} must be a whole number from 0 to {hi:,} in {validation.shown(spec)}",
+                         field="SUITE")
     return int(text)
+
+
+def _references(file: Path) -> dict:
+    """The ``scenarios`` of a folder's ``benchmark.json``: per world a mapping, its
+    ``barn_optimal_path_m`` (if any) a number > 0 (read as user input: InputError naming the entry)."""
+    source = str(file)
+    document = validation.mapping(validation.parse_json(validation.read_text(file), source), source)
+    references = validation.mapping(document.get("scenarios", {}), source, "scenarios")
+    for name, entry in references.items():
+        validation.mapping(entry, source, f"scenarios.{name}")
+        if "barn_optimal_path_m" in entry:
+            validation.number(entry["barn_optimal_path_m"], source, f"scenarios.{name}.barn_optimal_path_m",
+                              lo=0.0, lo_open=True)
+    return references
 
 
 def parse_suite(spec: str) -> Suite:
@@ -79,14 +94,7 @@ def parse_suite(spec: str) -> Suite:
         files = sorted(path.glob("*.yaml"), key=_natural)
         if not files:
             raise InputError("folder has no scenario files (*.yaml)", source=spec, field="SUITE")
-        references = {}
-        if (path / REFERENCE_FILE).is_file():
-            try:
-                references = json.loads((path / REFERENCE_FILE).read_text(encoding="utf-8")).get("scenarios", {})
-            except (ValueError, AttributeError) as error:
-                raise InputError(f"unreadable reference file ({error})", source=str(path / REFERENCE_FILE)) from None
-            if not isinstance(references, dict):
-                raise InputError("'scenarios' must be a mapping", source=str(path / REFERENCE_FILE), field="scenarios")
+        references = _references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")
     if family not in KINDS:
@@ -94,8 +102,8 @@ def parse_suite(spec: str) -> Suite:
                          "written FAMILY[:COUNT[:SEED]]", field="SUITE")
     if len(rest) > 2:
         raise InputError(f"too many ':' in {spec!r} (FAMILY[:COUNT[:SEED]])", field="SUITE")
-    count = _count(rest[0], "COUNT", spec) if rest else DEFAULT_COUNT
+    count = _count(rest[0], "COUNT", spec, validation.MAX_WORLDS) if rest else DEFAULT_COUNT
     if count < 1:
         raise InputError(f"COUNT must be >= 1 in {spec!r}", field="SUITE")
-    seed = _count(rest[1], "SEED", spec) if len(rest) > 1 else 0
+    seed = _count(rest[1], "SEED", spec, validation.MAX_SEED) if len(rest) > 1 else 0
     return Suite(name=f"{family}:{count}:{seed}", family=family, count=count, seed=seed)

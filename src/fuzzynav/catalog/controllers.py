@@ -12,6 +12,7 @@ cheap. An installed distribution adds its own controllers through the entry poin
 
 from __future__ import annotations
 
+from fuzzynav import validation
 from fuzzynav.catalog.specs import SENSES, ControllerSpec
 from fuzzynav.control.base import Controller
 from fuzzynav.errors import InputError
@@ -125,6 +126,7 @@ def spec_of(name: str) -> ControllerSpec:
 def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (or under the alias ``name``); a controller
     with aliases carries the name asked for, which its traces and metrics show."""
+    validation.text(name, field="name", max_length=200)
     spec = spec_of(name)
     controller = load(spec.factory)(**options)
     if spec.aliases:

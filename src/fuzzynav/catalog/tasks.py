@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.catalog.specs import TaskSpec
 from fuzzynav.errors import InputError
 from fuzzynav.lookup import Registry, load
@@ -74,7 +75,7 @@ def trainer(task: str):
 
 def load_controller(path):
     """Build the controller stored in a model file (JSON or NPZ), whatever its kind."""
-    document = read_document(path)
+    document = read_document(validation.file_path(path, field="model"))
     kind = document["kind"]
     loaders = model_loaders()
     if kind not in loaders:

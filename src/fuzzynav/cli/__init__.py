@@ -50,7 +50,17 @@ fuzzynav COMMAND --help              # a command's options, with examples"""),
     return parser
 
 
+def _survive_any_terminal() -> None:
+    """Characters the terminal's encoding lacks (``§``, ``θ``, ``≥`` on ``PYTHONIOENCODING=ascii``)
+    are written as ``\\u00a7`` escapes instead of failing with ``UnicodeEncodeError``."""
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if callable(reconfigure):
+            reconfigure(errors="backslashreplace")
+
+
 def main(argv: list[str] | None = None) -> int:
+    _survive_any_terminal()
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):

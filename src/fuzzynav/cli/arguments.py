@@ -10,6 +10,8 @@ import argparse
 import re
 from collections.abc import Callable
 
+from fuzzynav import validation
+
 
 def plain(text: str) -> str:
     """``text`` without the reStructuredText of docstrings: ``:func:`name``` → name, double or
@@ -55,15 +57,35 @@ def names(text: str) -> list[str]:
     return [name for name in text.split(",") if name]
 
 
-def seed(text: str) -> int:
-    """``--seed``: a non-negative integer (NumPy's ``SeedSequence`` rejects negative entropy)."""
+def _integer(text: str, lo: int, hi: int) -> int:
+    """``text`` as an integer in [lo, hi] (a 5,000-digit number is refused by its length, not parsed)."""
+    if len(text.strip()) > 30:
+        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {len(text.strip())} characters")
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text!r}") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {value}")
+        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {text!r}") from None
+    if not lo <= value <= hi:
+        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {value}")
     return value
+
+
+def seed(text: str) -> int:
+    """``--seed``: a non-negative integer, at most 2**63 - 1 (NumPy's ``SeedSequence`` rejects
+    negative entropy)."""
+    if text.strip().startswith("-") and text.strip()[1:].isdigit():
+        raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text.strip()}")
+    return _integer(text, 0, validation.MAX_SEED)
+
+
+def count(hi: int, lo: int = 1) -> Callable[[str], int]:
+    """The argument type of a count option: an integer in [lo, hi], refused by argparse (exit 2)
+    before any work starts; the option's help states the limit."""
+    def parse(text: str) -> int:
+        return _integer(text, lo, hi)
+
+    parse.__name__ = "count"
+    return parse
 
 
 def figure_path(text: str) -> str:

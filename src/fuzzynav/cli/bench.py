@@ -15,17 +15,9 @@ import os
 import sys
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
-
-
-def _positive_int(text: str) -> int:
-    value = arguments.seed(text)
-    if value < 1:
-        import argparse
-
-        raise argparse.ArgumentTypeError(f"must be >= 1, got {value}")
-    return value
 
 
 def register(subparsers) -> None:
@@ -38,24 +30,27 @@ def register(subparsers) -> None:
 fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
 fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench""")
     parser.add_argument("suites", nargs="+", metavar="SUITE",
-                        help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap")
+                        help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap, "
+                             f"COUNT 1 to {validation.MAX_WORLDS:,}, SEED 0 to 2**63-1")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",
                         help="comma-separated controller names or model files (.json/.npz)")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the fuzzy system for ROLE in every controller that has it (any "
                              ".yaml/.json/.fll/.fis; repeat per role; part of what --resume checks)")
-    parser.add_argument("--seeds", type=_positive_int, default=1, metavar="K",
-                        help="seeds 0..K-1 (generated families: K world sets; default 1)")
-    parser.add_argument("--workers", type=_positive_int, default=None, metavar="N",
-                        help="parallel workers (default: the number of cores)")
+    parser.add_argument("--seeds", type=arguments.count(validation.MAX_SEEDS), default=1, metavar="K",
+                        help=f"seeds 0..K-1, K from 1 to {validation.MAX_SEEDS:,} (generated families: K world "
+                             f"sets; default 1); a campaign holds at most {validation.MAX_CAMPAIGN_RUNS:,} runs "
+                             "(worlds x seeds x controllers), checked before any run")
+    parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
+                        help=f"parallel workers, 1 to {validation.MAX_WORKERS} (default: the number of cores)")
     parser.add_argument("--backend", choices=("local", "ray"), default="local",
                         help="local process pool (default) or Ray tasks (pip install 'fuzzynav[cluster]')")
     parser.add_argument("--ray-address", metavar="ADDR", default=None,
                         help="Ray cluster to join (default: $RAY_ADDRESS, else a local instance)")
     parser.add_argument("--out", default="bench-out", metavar="DIR", help="output folder (default bench-out)")
     parser.add_argument("--resume", action="store_true", help="continue the campaign already in --out")
-    parser.add_argument("--gallery", type=arguments.seed, default=6, metavar="N",
-                        help="failed runs drawn per controller (default 6, 0: none)")
+    parser.add_argument("--gallery", type=arguments.count(1000, lo=0), default=6, metavar="N",
+                        help="failed runs drawn per controller, 0 to 1000 (default 6, 0: none)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
 
 

@@ -41,7 +41,8 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")
-    parser.add_argument("--n", type=int, default=100, help="number of worlds (default 100)")
+    parser.add_argument("--n", type=int, default=100,
+                        help=f"number of worlds, 1 to {validation.MAX_RUNS:,} (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--json", action="store_true", help="print one JSON object")

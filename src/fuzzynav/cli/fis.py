@@ -208,6 +208,18 @@ def _show(args) -> int:
     return 0
 
 
+def _finite(system, X, Y, source: str) -> None:
+    """Refuse an answer that is not a finite number: NaN (no rule fired and the output has no
+    default, or a term evaluated to NaN) or ±inf (a Function term overflowing or dividing by zero)."""
+    bad = ~np.isfinite(Y)
+    if bad.any():
+        row, column = (int(i) for i in np.argwhere(bad)[0])
+        inputs = ", ".join(f"{name}={float(x)!r}" for name, x in zip(system.input_names, X[row]))
+        raise InputError(f"no finite answer for {inputs}: {system.output_names[column]} = {float(Y[row, column])!r} "
+                         "(no rule fired and the output has no finite default, or a term's formula gives a "
+                         "non-finite value)", source=source, field=system.output_names[column])
+
+
 def _eval(args) -> int:
     system = resolve(args.system)
     if args.csv:
@@ -215,6 +227,7 @@ def _eval(args) -> int:
             raise InputError("give either --input or --csv", field="--csv")
         X = _read_csv(system, args.csv)
         Y = system.evaluate(X)
+        _finite(system, X, Y, args.system)
         buffer = io.StringIO()
         writer = csv.writer(buffer, lineterminator="\n")
         writer.writerow(system.input_names + system.output_names)
@@ -222,8 +235,10 @@ def _eval(args) -> int:
             writer.writerow([repr(float(v)) for v in (*x, *y)])
         _write(buffer.getvalue(), args.output)
         return 0
-    y = system.evaluate(_parse_inputs(system, args.input or []))[0]
-    result = {name: (None if math.isnan(v) else float(v)) for name, v in zip(system.output_names, y)}
+    X = _parse_inputs(system, args.input or [])
+    y = system.evaluate(X)
+    _finite(system, X, y, args.system)
+    result = {name: float(v) for name, v in zip(system.output_names, y[0])}
     _write(json.dumps(result) + "\n", args.output)
     return 0
 

@@ -33,15 +33,18 @@ fuzzynav train anfis-tracker --out anfis.json
 fuzzynav train fql-goal --episodes 3000 --seed 0 --out fql.npz --curve fql.png
 fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to 6000 in all""")
     parser.add_argument("task", metavar="TASK", help="training task name")
-    parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
+    parser.add_argument("--episodes", type=int,
+                        help=f"number of episodes / epochs, 1 to {validation.MAX_EPISODES:,} (task default)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
-    parser.add_argument("--checkpoint-every", type=int, help="write a checkpoint every K episodes")
-    parser.add_argument("--curve", type=Path, help="write the learning curve plot (PNG)")
-    parser.add_argument("--parallel", type=int, metavar="N",
-                        help="reinforcement learning: N robots per batch sharing one rule base (default: the thesis' "
-                             "one robot, episodes one by one)")
+    parser.add_argument("--checkpoint-every", type=int, metavar="K",
+                        help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
+    parser.add_argument("--curve", type=arguments.figure_path, help="write the learning curve plot (PNG; any "
+                        "suffix matplotlib writes, checked before training)")
+    parser.add_argument("--parallel", type=arguments.count(validation.MAX_ROBOTS), metavar="N",
+                        help="reinforcement learning: N robots per batch sharing one rule base, 1 to "
+                             f"{validation.MAX_ROBOTS:,} (default: the thesis' one robot, episodes one by one)")
     parser.add_argument("--prior", choices=PRIORS,
                         help="fql-avoid: initial table, none (q = 0, best-quality extraction; default) or thesis")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -70,7 +73,7 @@ def run(args) -> int:
         seed=args.seed,
         resume=args.resume,
         checkpoint_every=args.checkpoint_every,
-        curve=args.curve,
+        curve=None if args.curve is None else Path(args.curve),
         parallel=args.parallel,
         prior=args.prior,
         progress=progress.enabled() and not (args.quiet or args.json),

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 
 
@@ -24,7 +25,8 @@ def register(subparsers) -> None:
 fuzzynav worlds generate mixed --n 3 --out worlds/
 fuzzynav run worlds/mixed-0-002.yaml""")
     generate.add_argument("family", metavar="FAMILY", help="world family, e.g. circles or mixed (an unknown name lists them all)")
-    generate.add_argument("--n", type=int, default=10, help="number of worlds (default 10)")
+    generate.add_argument("--n", type=arguments.count(validation.MAX_WORLDS), default=10,
+                          help=f"number of worlds, 1 to {validation.MAX_WORLDS:,} (default 10)")
     generate.add_argument("--seed", type=arguments.seed, default=0, help="world seed (default 0)")
     generate.add_argument("--out", type=Path, default=Path("worlds"), help="output folder (default worlds/)")
 

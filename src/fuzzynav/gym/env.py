@@ -11,8 +11,9 @@ from __future__ import annotations
 import gymnasium
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.gym.episodes import Episodes
+from fuzzynav.gym.episodes import OPTIONS, Episodes
 
 RENDER_MODES = ("human", "rgb_array")
 
@@ -26,7 +27,9 @@ class FuzzynavEnv(gymnasium.Env):
     list of them), ``worlds`` (a generated family ``"circles"`` / ``"mixed"`` — pool of
     ``n_worlds`` numbered by ``world_seed`` — or a layout ``"random-goal"``,
     ``"random-obstacles"``, ``"wall-course"``, ``"random-paths"``), ``max_steps``,
-    ``decision_steps`` (steps Δt = 0.1 s per action), ``render_mode``.
+    ``decision_steps`` (steps Δt = 0.1 s per action), ``render_mode``. Counts are bounded and
+    actions checked (:class:`~fuzzynav.gym.episodes.Episodes`, :mod:`fuzzynav.gym.actions`):
+    a NaN, infinite, mis-shaped or out-of-range discrete action is an ``InputError``.
     """
 
     metadata = {"render_modes": list(RENDER_MODES), "render_fps": 10}
@@ -35,6 +38,7 @@ class FuzzynavEnv(gymnasium.Env):
         if render_mode is not None and render_mode not in RENDER_MODES:
             raise InputError(f"must be one of {', '.join(RENDER_MODES)} or None, got {render_mode!r}",
                              field="render_mode")
+        validation.known_keys(options, OPTIONS, field="options")
         self.episodes = Episodes(1, task, **options)
         self.observation_space = self.episodes.observation_space
         self.action_space = self.episodes.action_space
@@ -49,7 +53,7 @@ class FuzzynavEnv(gymnasium.Env):
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         """A new episode (``options={"scenario": …}``: on that scenario, a name, file or object)."""
-        super().reset(seed=seed)
+        super().reset(seed=None if seed is None else validation.seed(seed, field="seed"))
         scenario = (options or {}).get("scenario")
         self.episodes.start([0], [self.np_random], None if scenario is None else [scenario])
         self._live[0] = True
@@ -60,7 +64,7 @@ class FuzzynavEnv(gymnasium.Env):
     def step(self, action):
         if not self._live[0]:
             raise RuntimeError("the episode has ended: call reset()")
-        rewards, terminated, truncated, info = self.episodes.step(np.asarray(action)[None], self._live)
+        rewards, terminated, truncated, info = self.episodes.step(action, self._live, single=True)
         self._live[0] = not (terminated[0] or truncated[0])
         if self.render_mode == "human":
             self.render()

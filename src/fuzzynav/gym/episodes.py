@@ -17,19 +17,16 @@ import math
 import numpy as np
 from gymnasium import spaces
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.gym.actions import check_actions
 from fuzzynav.gym.core import RobotBatch
 from fuzzynav.gym.sources import ScenarioSource, check_task, make_source
 from fuzzynav.gym.tasks import REWARDS, TASKS, dense_reward
-from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 
 ACTIONS = ("continuous", "discrete")
-
-
-def _positive_int(value, field: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-        raise InputError(f"must be a positive integer, got {value!r}", field=field)
-    return int(value)
+OPTIONS = ("actions", "reward", "scenario", "worlds", "n_worlds", "world_seed", "max_steps", "decision_steps", "params")
 
 
 def scale_actions(actions, params=DEFAULT_PARAMS) -> np.ndarray:
@@ -51,25 +48,35 @@ def unscale_actions(steering, speed=None, params=DEFAULT_PARAMS) -> np.ndarray:
 
 
 class Episodes:
-    """N episodes of one task. Options are the environments' keyword arguments (see
-    :func:`fuzzynav.gym.make_options`)."""
+    """N episodes of one task. Options are the environments' keyword arguments
+    (:class:`~fuzzynav.gym.env.FuzzynavEnv`), each checked before anything is built: ``n_worlds``
+    in [1, 100,000], ``world_seed`` in [0, 2**63 - 1], ``max_steps`` in [1, 10**7],
+    ``decision_steps`` in [1, 1,000] (``docs/limits.md``); actions as :mod:`.actions` says."""
 
     def __init__(self, n: int, task: str, *, actions: str = "continuous", reward: str = "thesis", scenario=None,
                  worlds: str | None = None, n_worlds: int = 1000, world_seed: int = 0, max_steps: int | None = None,
                  decision_steps: int | None = None, params=DEFAULT_PARAMS):
-        if task not in TASKS:
+        if not isinstance(task, str) or task not in TASKS:
             raise InputError(f"unknown task {task!r} (known: {', '.join(TASKS)})", field="task")
         if actions not in ACTIONS:
             raise InputError(f"must be one of {', '.join(ACTIONS)}, got {actions!r}", field="actions")
         if reward not in REWARDS:
             raise InputError(f"must be one of {', '.join(REWARDS)}, got {reward!r}", field="reward")
+        if worlds is not None:
+            validation.text(worlds, field="worlds", max_length=100)
+        if not isinstance(params, TricycleParams):
+            raise InputError(f"must be a TricycleParams, got {type(params).__name__}", field="params")
+        validation.count(n_worlds, field="n_worlds", hi=validation.MAX_WORLDS)
+        validation.seed(world_seed, field="world_seed")
         self.task = TASKS[task]
         self.discrete = actions == "discrete"
         self.reward_kind = reward
         self.source = make_source(task, scenario, worlds, n_worlds, world_seed)
-        self.max_steps = _positive_int(self.task.max_steps if max_steps is None else max_steps, "max_steps")
-        decision = self.task.decision_steps if decision_steps is None else decision_steps
-        self.batch = RobotBatch(n, self.task, params=params, decision_steps=_positive_int(decision, "decision_steps"))
+        self.max_steps = validation.count(self.task.max_steps if max_steps is None else max_steps, field="max_steps",
+                                          hi=validation.MAX_EPISODE_STEPS)
+        decision = validation.count(self.task.decision_steps if decision_steps is None else decision_steps,
+                                    field="decision_steps", hi=validation.MAX_DECISION_STEPS)
+        self.batch = RobotBatch(n, self.task, params=params, decision_steps=decision)
         self.candidates = self.task.candidates()
         self.params = params
         self.steps = np.zeros(n, dtype=int)
@@ -106,12 +113,14 @@ class Episodes:
             parts.append(state.ranges)
         return np.concatenate(parts, axis=1).astype(np.float32)
 
-    def decode(self, actions) -> tuple[np.ndarray, np.ndarray]:
-        """(steering (N,), speed (N,)) of a batch of actions (indices or (α, V_r) rows)."""
+    def decode(self, actions, live=None, *, single: bool = False) -> tuple[np.ndarray, np.ndarray]:
+        """(steering (N,), speed (N,)) of a batch of actions (indices or (α, V_r) rows; ``single``:
+        one environment's action), checked by :func:`.actions.check_actions` (rows ``live``)."""
+        checked = check_actions(actions, self.action_space, self.batch.n, live, single=single)
         if self.discrete:
-            values = self.candidates[np.asarray(actions, dtype=int).reshape(-1)]
+            values = self.candidates[np.where(live if live is not None else True, checked, 0)]
         else:
-            values = scale_actions(np.asarray(actions, dtype=float).reshape(self.batch.n, -1), self.params)
+            values = scale_actions(np.where(np.isfinite(checked), checked, 0.0), self.params)
         if self.task.steer_only:
             return values[:, 0], np.zeros(len(values))
         return values[:, 0], values[:, 1]
@@ -122,6 +131,7 @@ class Episodes:
         if scenarios is None:
             scenarios = [self.source.draw(rng) for rng in rngs]
         else:
+            scenarios = validation.sequence(scenarios, field="scenarios")
             if len(scenarios) != len(rows):
                 raise InputError(f"{len(scenarios)} scenarios for {len(rows)} environments", field="scenarios")
             scenarios = [ScenarioSource(s).scenarios[0] for s in scenarios]
@@ -130,9 +140,9 @@ class Episodes:
         self.batch.start(rows, scenarios)
         self.steps[rows] = 0
 
-    def step(self, actions, live):
+    def step(self, actions, live, *, single: bool = False):
         """One decision of the ``live`` rows: (rewards, terminated, truncated, info arrays)."""
-        steering, speed = self.decode(actions)
+        steering, speed = self.decode(actions, live, single=single)
         before, after, held, collided, done, passed = self.batch.step(steering, speed, live)
         self.steps += live
         reached = done | passed if self.task.name == "path" else done

@@ -18,7 +18,6 @@ same episode.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 
 import numpy as np
 
@@ -89,8 +88,7 @@ class ScenarioSource:
         items = self.scenarios if isinstance(self.scenarios, (list, tuple)) else (self.scenarios,)
         if not items:
             raise InputError("needs at least one scenario", field="scenario")
-        self.scenarios = tuple(s if isinstance(s, Scenario) else load_scenario(Path(s) if not isinstance(s, str) else s)
-                               for s in items)
+        self.scenarios = tuple(s if isinstance(s, Scenario) else load_scenario(s) for s in items)
 
     def draw(self, rng) -> Scenario:
         if len(self.scenarios) == 1:

@@ -20,8 +20,9 @@ from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.gym.episodes import Episodes
+from fuzzynav.gym.episodes import OPTIONS, Episodes
 
 
 class FuzzynavVectorEnv(VectorEnv):
@@ -30,10 +31,10 @@ class FuzzynavVectorEnv(VectorEnv):
     metadata = {"autoreset_mode": AutoresetMode.NEXT_STEP, "render_modes": []}
 
     def __init__(self, num_envs: int, task: str = "goal", **options):
-        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
-            raise InputError(f"must be a positive integer, got {num_envs!r}", field="num_envs")
+        validation.count(num_envs, field="num_envs", hi=validation.MAX_ROBOTS)
         if options.pop("render_mode", None) is not None:
             raise InputError("the vector environment does not render; render one FuzzynavEnv", field="render_mode")
+        validation.known_keys(options, OPTIONS, field="options")
         self.num_envs = int(num_envs)
         self.episodes = Episodes(self.num_envs, task, **options)
         self.single_observation_space = self.episodes.observation_space
@@ -50,9 +51,10 @@ class FuzzynavVectorEnv(VectorEnv):
         if seed is None:
             seeds = [None] * self.num_envs
         elif isinstance(seed, (int, np.integer)):
-            seeds = [int(seed) + i for i in range(self.num_envs)]
+            seeds = [validation.seed(seed, field="seed") + i for i in range(self.num_envs)]
         else:
-            seeds = list(seed)
+            seeds = [None if s is None else validation.seed(s, field=f"seed[{i}]")
+                     for i, s in enumerate(validation.sequence(seed, field="seed"))]
             if len(seeds) != self.num_envs:
                 raise InputError(f"{len(seeds)} seeds for {self.num_envs} environments", field="seed")
         for i, s in enumerate(seeds):

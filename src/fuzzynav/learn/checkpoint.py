@@ -9,6 +9,11 @@ interrupted run (Ctrl-C, crash) always leaves the previous checkpoint intact. It
 - ``episode``: batches of episodes completed, and ``curve``: the per-episode records so far,
 - ``extra``: the settings that shape the run (task, phase, seed, batch size, ...).
 
+A checkpoint is checked against itself when read: ``digest``, the SHA-256 of the rest of the
+document (canonical JSON), must match, and the curve must hold exactly ``episode`` batches, each
+with as many rows in every record — an edited episode counter or curve is refused instead of
+resuming into another model (a checkpoint without a digest, written by hand or by an older
+version, gets the second check only).
 Resuming is refused — an :class:`~fuzzynav.errors.InputError` naming the field — when the
 checkpoint belongs to another run: any setting of ``extra`` or of the learner differs, or the
 checkpoint has already done more episodes than the run asks for (:func:`check_same_run`).
@@ -31,6 +36,8 @@ the others until the whole batch is done; their results are ignored.
 
 from __future__ import annotations
 
+import hashlib
+import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -60,7 +67,14 @@ def save_checkpoint(path, learner, rng: np.random.Generator, episode: int, curve
         "extra": extra or {},
         "saved_at": time.time(),
     }
+    document["digest"] = _digest(document)
     save_document(Path(path), document)
+
+
+def _digest(document: dict) -> str:
+    """SHA-256 of the document without its ``digest``, as canonical JSON."""
+    rest = {key: value for key, value in document.items() if key != "digest"}
+    return hashlib.sha256(json.dumps(rest, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
 def load_checkpoint(path) -> dict:
@@ -86,7 +100,29 @@ def load_checkpoint(path) -> dict:
                 kind = "O"
             if kind not in "biuf":
                 raise InputError(f"must hold numbers, got {str(row)[:60]}", source=str(path), field=f"curve.{key}[{i}]")
+    _check_itself(document, str(path))
     return document
+
+
+def _check_itself(document: dict, source: str) -> None:
+    """The checkpoint's fields agree with each other and with its digest (module docstring)."""
+    curve, episode = document["curve"], document["episode"]
+    for key in _CURVE_FIELDS:
+        if len(curve[key]) != episode:
+            raise InputError(f"holds {len(curve[key])} batches, but the checkpoint says {episode} were done: the "
+                             "file was edited; train afresh without --resume", source=source, field=f"curve.{key}")
+    for i, rows in enumerate(zip(*(curve[key] for key in _CURVE_FIELDS))):
+        if len({len(row) if isinstance(row, list) else 1 for row in rows}) != 1:
+            raise InputError("its records disagree on the number of episodes of this batch", source=source,
+                             field=f"curve[{i}]")
+
+
+def _check_digest(document: dict, source: str) -> None:
+    """The ``digest`` (when there is one) is that of the document: no field was edited. Checked
+    last, so that a field edited into a bad value is named by its own check first."""
+    if "digest" in document and document["digest"] != _digest(document):
+        raise InputError("does not match the checkpoint's content: the file was edited or damaged; train afresh "
+                         "without --resume", source=source, field="digest")
 
 
 def check_same_run(document: dict, settings: dict, budget: int | None = None, source: str = "checkpoint") -> None:
@@ -127,6 +163,7 @@ def restore(learner, rng: np.random.Generator, document: dict, source: str = "ch
         rng.bit_generator.state = document["rng"]
     except (TypeError, ValueError, KeyError, OverflowError) as error:
         raise InputError(f"bad RNG state ({error})", source=source, field="rng") from None
+    _check_digest(document, source)
 
 
 @dataclass

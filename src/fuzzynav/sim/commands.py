@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import CommandError, InputError
 from fuzzynav.kernels import step as step_kernel
 
@@ -69,11 +70,18 @@ def check_state(state, controller: str, step: int, history=None) -> None:
 
 
 def check_starts(starts) -> np.ndarray:
-    """Start poses ``(N, 3)`` given to the simulator: numbers, finite."""
+    """Start poses given to the simulator: one pose (x, y, θ) or ``(N, 3)`` of them, N at most
+    ``validation.MAX_ROBOTS``, numbers, finite (``[[5, 5], [6, 6], [7, 7]]`` is refused, not
+    read as two poses)."""
     try:
-        poses = np.asarray(starts, dtype=float).reshape(-1, 3)
+        poses = np.asarray(starts, dtype=float)
     except (TypeError, ValueError):
-        raise InputError(f"must be poses (x, y, theta), got {starts!r}", field="starts") from None
+        raise InputError(f"must be poses (x, y, theta), got {validation.shown(starts)}", field="starts") from None
+    if poses.shape == (3,):
+        poses = poses[None]
+    if poses.ndim != 2 or poses.shape[1] != 3 or not 1 <= len(poses) <= validation.MAX_ROBOTS:
+        raise InputError(f"must be one pose (x, y, theta) or a list of 1 to {validation.MAX_ROBOTS} of them, "
+                         f"got an array of shape {poses.shape}", field="starts")
     if not np.isfinite(poses).all():
         raise InputError("must be finite", field="starts")
     return poses

@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 
+from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.scenario import Scenario
 
@@ -44,6 +45,8 @@ def cross_track(positions, waypoints) -> np.ndarray:
 
 def metrics(trace: Trace, scenario: Scenario) -> dict:
     """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
+    check_trace(trace)
+    check_scenario(scenario)
     xy = trace.pose[:, :2]
     steps = np.diff(xy, axis=0)
     world = scenario.world

@@ -40,6 +40,7 @@ from fuzzynav.kernels import layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
+from fuzzynav.sim import arguments
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
 from fuzzynav.sim.fault import collision_by
 from fuzzynav.sim.tasks import TaskState
@@ -62,7 +63,7 @@ def default_ring(scenario: Scenario, controller) -> SensorRing:
     attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
     if scenario.sensors is not None:
         return named_ring(scenario.sensors)
-    first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
+    first = controller if arguments.is_controller(controller) else next(iter(controller))
     return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
 
 
@@ -78,24 +79,26 @@ class BatchSimulator:
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
-        self.scenario = scenario
+        self.scenario = arguments.check_scenario(scenario)
+        listed = arguments.check_controllers(controller, len(starts) if starts is not None and hasattr(starts, "__len__")
+                                             else n)
+        robot_params, sensors = arguments.check_params(robot_params), arguments.check_sensors(sensors)
+        seed = arguments.check_seed(seed)
         self.params = robot_params if robot_params is not None else scenario.robot
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
         self.starts = (check_starts(starts) if starts is not None
-                       else np.tile(scenario.start, (n, 1)))
+                       else np.tile(scenario.start, (arguments.check_robots(n), 1)))
         self.n = len(self.starts)
         self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
                                           field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
-        if hasattr(controller, "act") or hasattr(controller, "act_batch"):
+        if listed is None:
             self.batch = callable(getattr(controller, "act_batch", None))
             copies = [controller] if self.batch or self.n == 1 else [copy.deepcopy(controller) for _ in range(self.n)]
         else:
-            copies = list(controller)
-            if len(copies) != self.n:
-                raise ValueError(f"{len(copies)} controllers for {self.n} robots")
+            copies = arguments.check_controllers(listed, self.n)
             self.batch = False
         for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
             if isinstance(copied, MapAware):

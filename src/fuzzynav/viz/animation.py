@@ -20,6 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from PIL import Image
 
+from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import atomic_write
 from fuzzynav.viz.moving import MovingArtists
@@ -50,6 +51,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
                     rays: bool = True, size: int = 400) -> int:
     """Write the episode as a GIF of ``size`` × ``size`` pixels at ``fps`` frames per second to
     ``path``; returns the number of frames."""
+    check_trace(trace), check_scenario(scenario)
     dpi = size / 5
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)

@@ -22,6 +22,7 @@ from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
+from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import savefig_atomic
 from fuzzynav.viz.moving import draw_moving
@@ -95,6 +96,7 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
                     markers: bool = True):
     """Trajectory of ``trace`` on the world; returns the axes. The legend, below the axes, names
     each behaviour's code and meaning and what the letters mark."""
+    check_trace(trace), check_scenario(scenario)
     if ax is None:
         ax = Figure(figsize=(6, 7), layout="constrained").add_subplot(111)
     draw_world(ax, scenario, trace)
@@ -130,6 +132,7 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
 
 def plot_commands(trace: Trace, axes=None):
     """Steering α (degrees) and speed V_r (m/s) against time, as in Fig IV.14; returns the axes."""
+    check_trace(trace)
     if axes is None:
         figure = Figure(figsize=(6, 5))
         axes = figure.subplots(2, 1, sharex=True)
@@ -147,6 +150,7 @@ def plot_commands(trace: Trace, axes=None):
 
 def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = False) -> Figure:
     """Trajectory (left) and commands (right) in one figure; saved to ``path`` (PNG) if given."""
+    check_trace(trace), check_scenario(scenario)
     figure = Figure(figsize=(12, 7.5), layout="constrained")
     left, right = figure.subfigures(1, 2, width_ratios=[1.1, 1.0])
     plot_trajectory(trace, scenario, left.add_subplot(111), rays=rays)

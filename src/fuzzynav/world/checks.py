@@ -33,7 +33,7 @@ class Checks:
 
     def point(self, value, field: str, positive: bool = False) -> np.ndarray:
         if not isinstance(value, (list, tuple)) or len(value) != 2:
-            self.fail(field, f"must be a list of two numbers [x, y], got {validation._shown(value)}")
+            self.fail(field, f"must be a list of two numbers [x, y], got {validation.shown(value)}")
         return np.array([self.number(v, f"{field}[{i}]", positive) for i, v in enumerate(value)])
 
     def points(self, value, field: str, minimum: int, maximum: int) -> np.ndarray:

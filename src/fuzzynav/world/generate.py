@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -151,9 +152,9 @@ def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenari
     """``n`` solvable worlds of family ``kind``; world ``i`` depends only on ``(kind, seed, i)``."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
-    if int(n) < 1:
-        raise InputError(f"must be >= 1, got {n!r}", field="--n")
-    return [generate_world(kind, seed, i, **options) for i in range(int(n))]
+    n = validation.count(n, field="--n", hi=validation.MAX_WORLDS)
+    seed = validation.seed(seed, field="--seed")
+    return [generate_world(kind, seed, i, **options) for i in range(n)]
 
 
 def generated_world(name: str) -> Scenario | None:

@@ -216,8 +216,10 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
                        robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
     """Validate a parsed scenario document and build the :class:`Scenario`.
 
-    ``robot_radius`` is the footprint that must fit at the start pose when the document's
-    ``robot`` gives no ``radius`` (default: the default robot's).
+    ``robot_radius`` is the footprint that must fit at the start pose, and that must be able
+    to bring its centre within tolerance of the goal or of a static target, when the document's
+    ``robot`` gives no ``radius`` (default: the default robot's); otherwise the document's own
+    ``robot.radius`` is used for both checks.
     """
     check = Checks(source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
@@ -243,7 +245,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
                       limits.angle(robot.get("theta", 0.0), source, "robot.theta")])
     robot_limits = _robot_params(check, robot)
-    _place(check, world, start[:2], "robot", "start", robot_limits.radius if "radius" in robot else robot_radius)
+    radius = robot_limits.radius if "radius" in robot else robot_radius
+    _place(check, world, start[:2], "robot", "start", radius)
 
     goal = path = target = None
     if "goal" in doc:
@@ -251,7 +254,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         position = np.array([check.number(g["x"], "goal.x"), check.number(g["y"], "goal.y")])
         _place(check, world, position, "goal", "goal")
         goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
-        _reachable(check, world, position, goal.tolerance, robot_radius, "goal", "goal")
+        _reachable(check, world, position, goal.tolerance, radius, "goal", "goal")
     elif "path" in doc:
         waypoints = check.points(doc["path"], "path", 2, limits.MAX_WAYPOINTS)
         for i, waypoint in enumerate(waypoints):
@@ -275,6 +278,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             check.fail("target.motion.center", "must differ from the target start (zero radius)")
         target = TargetTask(TargetMotion(type=kind, start=position, **values),
                             check.number(t.get("tolerance", DEFAULT_GOAL_TOLERANCE), "target.tolerance", True))
+        if kind == "static":
+            _reachable(check, world, position, target.tolerance, radius, "target", "target")
 
     return Scenario(
         name=check.text(doc.get("name", name or "scenario"), "name"),
@@ -330,7 +335,7 @@ def list_scenarios() -> dict[str, str]:
 
 def load_scenario(path_or_name) -> Scenario:
     """Load a scenario file, or a built-in scenario by name (see :func:`list_scenarios`)."""
-    path = Path(path_or_name)
+    path = validation.file_path(path_or_name, field="scenario")
     if not path.is_file():
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
         if not builtin.is_file():

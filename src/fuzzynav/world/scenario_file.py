@@ -12,6 +12,7 @@ from pathlib import Path
 
 import yaml
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.scenario import Scenario, load_scenario
@@ -30,7 +31,9 @@ def scenario_yaml(scenario: Scenario, controllers: tuple[str, ...] = ()) -> str:
 
 def save_scenario(scenario: Scenario, path, controllers: tuple[str, ...] = ()) -> Path:
     """Write ``scenario`` as a YAML scenario file at ``path`` (atomically); returns the path."""
-    path = Path(path)
+    if not isinstance(scenario, Scenario):
+        raise InputError(f"must be a Scenario, got {type(scenario).__name__}", field="scenario")
+    path = validation.file_path(path, field="path")
     write_text_atomic(path, scenario_yaml(scenario, controllers))
     return path
 

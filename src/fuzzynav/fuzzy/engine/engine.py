@@ -32,6 +32,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import defuzzify
+from fuzzynav.fuzzy.engine.checks import check_values
 from fuzzynav.fuzzy.engine.model import InputVariable, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear
@@ -103,6 +104,7 @@ class Engine(VariableNames):
                                  field=f"{where}.activation")
             for rule in block.rules:
                 self._check_rule(rule, block, where)
+        check_values(self.inputs, self.outputs, self.blocks)
 
     def _check_rule(self, rule, block: RuleBlock, where: str) -> None:
         def operators(node):
@@ -120,7 +122,7 @@ class Engine(VariableNames):
 
     # ------------------------------------------------------------------ evaluation
     def _checked(self, X) -> np.ndarray:
-        X = np.asarray(X, dtype=float)
+        X = validation.float_array(X, field="inputs")
         if X.ndim != 2 or X.shape[1] != len(self.inputs):
             raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
                              f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")

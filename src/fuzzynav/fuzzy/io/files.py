@@ -79,6 +79,6 @@ def save(system: FuzzySystem | Engine, path, fmt: str | None = None) -> Path:
 
 def load(path, fmt: str | None = None) -> FuzzySystem | Engine:
     """Read a fuzzy system file (``.json``, ``.yaml``/``.yml``, ``.fll`` or ``.fis``)."""
-    path = Path(path)
+    path = validation.file_path(path, field="path")
     fmt = fmt or format_of(path)
     return loads(validation.read_text(path), fmt, source=str(path))

@@ -1,0 +1,397 @@
+"""A corpus of hostile inputs for every door the first review left open: the Gymnasium
+environments, the Python API, unbounded counts, fuzzy files answering nonsense, tampered campaign
+and checkpoint folders, scenarios whose own robot decides reachability, ASCII terminals.
+
+Each :class:`~tests.validation.hostile_cases.Case` writes its files, runs a command line or Python
+code (``d`` is its folder; the names of :data:`PRELUDE` are bound) and says what must happen:
+exit 2 / an ``InputError`` whose message holds ``expect``, or (``status=0``) success with
+``expect`` in the output. Used by ``test_hostile_corpus.py`` and ``tests/validation/hostile_subprocesses.py``.
+"""
+
+from __future__ import annotations
+
+import json
+
+from tests.validation.hostile_cases import Case
+
+GYM_IDS = ("fuzzynav/GoalSeeking-v0", "fuzzynav/ObstacleAvoidance-v0", "fuzzynav/WallFollowing-v0",
+           "fuzzynav/PathTracking-v0")
+
+PRELUDE = """
+import json
+import numpy as np
+import gymnasium
+import fuzzynav
+import fuzzynav.gym
+from fuzzynav.errors import InputError
+
+def step_env(env_id, action, **options):
+    env = gymnasium.make(env_id, **options)
+    env.reset(seed=0)
+    env.step(action)
+
+def step_vector(env_id, batch, n=3, **options):
+    env = gymnasium.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **options)
+    env.reset(seed=0)
+    env.step(batch)
+
+def campaign(d, tamper=None, fis=None):
+    # a one-run campaign into d/out, then tamper with it and resume it
+    from fuzzynav.cli import main
+    out = d / "out"
+    args = ["bench", "circles:1", "--controllers", "goal-seeking", "--out", str(out), "--quiet", "--gallery", "0"]
+    assert main(args) == 0
+    if tamper is not None:
+        tamper(out)
+    if fis is not None:
+        (out / "fis.json").write_bytes(fis)
+    raise SystemExit(main(args + ["--resume"]))
+
+def edit_row(out, raw=None, **changes):
+    # rewrite runs.jsonl as its first row with changes; raw: bytes written in place of the world's name
+    line = json.loads((out / "runs.jsonl").read_text().splitlines()[0])
+    line.update(changes)
+    text = (json.dumps(line) + "\\n").encode()
+    if raw is not None:
+        text = text.replace(json.dumps(line["world"]).encode(), raw)
+    (out / "runs.jsonl").write_bytes(text)
+
+def trained_checkpoint(d, change):
+    # a real q-goal checkpoint (20 episodes), edited by change(document), then resumed
+    from fuzzynav.cli import main
+    out = d / "q.json"
+    assert main(["train", "q-goal", "--episodes", "20", "--quiet", "--out", str(out)]) == 0
+    path = d / "q.json.steering.checkpoint.json"
+    document = json.loads(path.read_text())
+    change(document)
+    path.write_text(json.dumps(document))
+    raise SystemExit(main(["train", "q-goal", "--episodes", "40", "--quiet", "--resume", "--out", str(out)]))
+
+def locked_bench(d):
+    # a second bench on an --out whose lock is held
+    from fuzzynav.bench.lock import campaign_lock
+    from fuzzynav.cli import main
+    with campaign_lock(d / "out"):
+        code = main(["bench", "circles:1", "--controllers", "goal-seeking", "--out", str(d / "out"), "--quiet"])
+    raise SystemExit(code)
+
+def ascii_terminal(argv):
+    # the command line with stdout and stderr encoded as ASCII; prints what it wrote
+    import io, sys
+    from fuzzynav.cli import main
+    real_out, real_err = sys.stdout, sys.stderr
+    sys.stdout = sys.stderr = io.TextIOWrapper(io.BytesIO(), encoding="ascii")
+    try:
+        code = main(argv)
+        sys.stdout.flush()
+        text = sys.stdout.buffer.getvalue().decode("ascii")
+    finally:
+        sys.stdout, sys.stderr = real_out, real_err
+    print(text, file=sys.stderr if code else sys.stdout)
+    raise SystemExit(code)
+"""
+
+_FLL = """Engine: t
+InputVariable: x
+  enabled: true
+  range: 0.000 1.000
+  term: lo Triangle 0 0 1
+  term: hi Triangle 0 1 1
+OutputVariable: v
+  enabled: true
+  range: 0 1
+  aggregation: Maximum
+  defuzzifier: Centroid 100
+  default: nan
+  term: lo Triangle 0 0 1
+  term: hi Triangle 0 1 1
+RuleBlock: rb
+  enabled: true
+  conjunction: Minimum
+  disjunction: Maximum
+  implication: Minimum
+  activation: General
+  rule: if x is lo then v is lo
+  rule: if x is hi then v is hi
+"""
+_HI = "term: hi Triangle 0 1 1\nRuleBlock"
+_TS = (_FLL.replace("  aggregation: Maximum\n  defuzzifier: Centroid 100",
+                    "  aggregation: none\n  defuzzifier: WeightedAverage")
+       .replace("term: lo Triangle 0 0 1\n  " + _HI, "term: lo Function FORMULA\n  term: hi Constant 1\nRuleBlock")
+       .replace("implication: Minimum", "implication: none"))
+_FIS = """[System]
+Name='t'
+Type='mamdani'
+NumInputs=1
+NumOutputs=1
+NumRules=2
+AndMethod='min'
+OrMethod='max'
+ImpMethod='min'
+AggMethod='max'
+DefuzzMethod='centroid'
+
+[Input1]
+Name='x'
+Range=[0 1]
+NumMFs=2
+MF1='lo':'trimf',[0 0 1]
+MF2='hi':'trimf',[0 1 1]
+
+[Output1]
+Name='v'
+Range=OUTRANGE
+NumMFs=2
+MF1='lo':'trimf',[0 0 1]
+MF2='hi':'trimf',[0 1 1]
+
+[Rules]
+1, 1 (1) : 1
+2, 2 (WEIGHT) : 1
+"""
+
+
+def _fis(out_range: str = "[0 1]", weight: str = "1") -> str:
+    return _FIS.replace("OUTRANGE", out_range).replace("WEIGHT", weight)
+
+
+def _fll(old: str, new: str) -> str:
+    assert old in _FLL
+    return _FLL.replace(old, new)
+
+
+def _eval(name: str) -> tuple:
+    return ("fis", "eval", "{d}/" + name, "--input", "x=0.3")
+
+
+ROBOT = "robot: {x: 5, y: 5}\n"
+RUN = ("run", "{d}/s.yaml", "--controller", "goal-seeking", "--json")
+
+
+GYM = [
+    *[Case(f"gym-nan-action-{env.split('/')[1]}",
+           python=f"step_env({env!r}, np.full({1 if 'Path' in env else 2}, np.nan, dtype=np.float32))", expect="action: must be finite")
+      for env in GYM_IDS],
+    *[Case(f"gym-vector-nan-action-{env.split('/')[1]}",
+           python=f"step_vector({env!r}, np.full((3, {1 if 'Path' in env else 2}), np.nan, dtype=np.float32))",
+           expect="actions[0]: must be finite") for env in GYM_IDS],
+    Case("gym-inf-action", python="step_env('fuzzynav/GoalSeeking-v0', [np.inf, 0.0])", expect="action: must be finite"),
+    Case("gym-discrete-minus-one", python="step_env('fuzzynav/GoalSeeking-v0', -1, actions='discrete')",
+         expect="action: must be in [0, 8]"),
+    Case("gym-discrete-float", python="step_env('fuzzynav/GoalSeeking-v0', 2.7, actions='discrete')",
+         expect="action: must be an integer index"),
+    Case("gym-discrete-too-large", python="step_env('fuzzynav/ObstacleAvoidance-v0', 9, actions='discrete')",
+         expect="action: must be in [0, 8]"),
+    Case("gym-action-shape-3", python="step_env('fuzzynav/GoalSeeking-v0', np.zeros(3))",
+         expect="action: must be an array of real numbers of shape (2,)"),
+    Case("gym-action-shape-2x2", python="step_env('fuzzynav/GoalSeeking-v0', np.zeros((2, 2)))",
+         expect="action: must be an array of real numbers of shape (2,)"),
+    Case("gym-action-string", python="step_env('fuzzynav/GoalSeeking-v0', 'left')",
+         expect="action: must be an array of real numbers"),
+    Case("gym-vector-discrete-out-of-range",
+         python="step_vector('fuzzynav/GoalSeeking-v0', np.array([0, 1, 99]), actions='discrete')",
+         expect="actions[2]: must be in [0, 8]"),
+    Case("gym-n-worlds-1e9", python="gymnasium.make('fuzzynav/ObstacleAvoidance-v0', worlds='circles', n_worlds=10**9)",
+         expect="n_worlds: must be an integer in [1, 100000]"),
+    Case("gym-decision-steps-1e9", python="gymnasium.make('fuzzynav/GoalSeeking-v0', decision_steps=10**9)",
+         expect="decision_steps: must be an integer in [1, 1000]"),
+    Case("gym-max-steps-float", python="gymnasium.make('fuzzynav/GoalSeeking-v0', max_steps=2.5)",
+         expect="max_steps: must be an integer"),
+    Case("gym-world-seed-negative",
+         python="gymnasium.make('fuzzynav/ObstacleAvoidance-v0', worlds='circles', world_seed=-1)",
+         expect="world_seed: must be an integer in [0,"),
+    Case("gym-num-envs-1e9", python="step_vector('fuzzynav/GoalSeeking-v0', None, n=10**9)",
+         expect="num_envs: must be an integer in [1, 100000]"),
+    Case("gym-params-dict", python="gymnasium.make('fuzzynav/GoalSeeking-v0', params={'radius': 1})",
+         expect="params: must be a TricycleParams"),
+    Case("gym-reset-seed-negative", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(seed=-1)",
+         expect="seed: must be an integer in [0,"),
+    Case("gym-reset-scenario-number", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenario': 5})",
+         expect="scenario: must be a file name"),
+    Case("gym-worlds-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0', worlds=['circles'])",
+         expect="worlds: must be a string"),
+    Case("gym-unknown-option", python="gymnasium.make('fuzzynav/GoalSeeking-v0', n_world=3)",
+         expect="unknown key 'n_world' (did you mean 'n_worlds'?)"),
+    Case("gym-vector-seed-list-text",
+         python="gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mode='vector_entry_point')"
+                ".reset(seed=['a', 'b'])", expect="seed[0]: must be an integer"),
+    Case("gym-vector-scenarios-number",
+         python="gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mode='vector_entry_point')"
+                ".reset(options={'scenarios': 5})", expect="scenarios: must be a list"),
+    Case("gym-clipped-action-ok", python="step_env('fuzzynav/GoalSeeking-v0', np.array([5.0, -7.0]))\nprint('clipped')",
+         status=0, expect="clipped"),
+]
+
+_SCENARIO, _CONTROLLER = "fuzzynav.load_scenario('example-goal')", "fuzzynav.make_controller('goal-seeking')"
+
+API = [
+    Case("api-run-episode-none", python=f"fuzzynav.run_episode({_SCENARIO}, None)", expect="controller: must be a controller"),
+    Case("api-run-episode-dict", python=f"fuzzynav.run_episode({_SCENARIO}, {{}})", expect="controller: must be a controller"),
+    Case("api-run-episode-name", python=f"fuzzynav.run_episode({_SCENARIO}, 'goal-seeking')",
+         expect="make_controller(name) makes one"),
+    Case("api-run-episode-scenario-name", python=f"fuzzynav.run_episode('example-goal', {_CONTROLLER})",
+         expect="scenario: must be a Scenario"),
+    Case("api-sensors-unknown", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, sensors='radar')",
+         expect="sensors: unknown sensor ring 'radar'"),
+    Case("api-sensors-number", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, sensors=7)",
+         expect="sensors: must be a SensorRing or a ring's name"),
+    Case("api-sensors-lidar-ok", python=f"print(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, sensors='lidar').outcome)",
+         status=0, expect="collision"),
+    Case("api-robot-params-dict", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, robot_params={{'radius': 1}})",
+         expect="robot_params: must be a fuzzynav.robot.tricycle.TricycleParams"),
+    Case("api-metrics-none", python=f"fuzzynav.metrics(None, {_SCENARIO})", expect="trace: must be a Trace"),
+    Case("api-metrics-scenario-none", python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), None)",
+         expect="scenario: must be a Scenario"),
+    Case("api-seed-negative", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, seed=-1)",
+         expect="seed: must be an integer in [0,"),
+    Case("api-evaluate-seed-negative", python="fuzzynav.evaluate('goal-seeking', worlds='circles', n=1, seed=-1)",
+         expect="must be an integer in [0,"),
+    Case("api-evaluate-n-1e9", python="fuzzynav.evaluate('goal-seeking', worlds='circles', n=10**9)",
+         expect="must be an integer in [1, 100000]"),
+    Case("api-generate-worlds-1e12", python="fuzzynav.generate_worlds('circles', 10**12)",
+         expect="must be an integer in [1, 100000]"),
+    Case("api-make-controller-none", python="fuzzynav.make_controller(None)", expect="name: must be a string"),
+    Case("api-batch-two-column-starts",
+         python=f"fuzzynav.BatchSimulator({_SCENARIO}, {_CONTROLLER}, starts=[[5, 5], [6, 6], [7, 7]])",
+         expect="starts: must be one pose (x, y, theta)"),
+    Case("api-batch-n-1e9", python=f"fuzzynav.BatchSimulator({_SCENARIO}, {_CONTROLLER}, n=10**9)",
+         expect="n: must be an integer in [1, 100000]"),
+    Case("api-load-scenario-none", python="fuzzynav.load_scenario(None)", expect="scenario: must be a file name"),
+    Case("api-load-controller-number", python="fuzzynav.load_controller(5)", expect="model: must be a file name"),
+    Case("api-load-fuzzy-system-none", python="fuzzynav.load_fuzzy_system(None)", expect="path: must be a file name"),
+    Case("api-train-episodes-1e12", python="fuzzynav.train('q-goal', d / 'q.json', episodes=10**12)",
+         expect="episodes: must be an integer in [1, 10000000]"),
+    Case("api-train-task-none", python="fuzzynav.train(None, d / 'q.json')", expect="task: must be a string"),
+    Case("api-plot-episode-none", python=f"fuzzynav.plot_episode(None, {_SCENARIO}, d / 'x.png')",
+         expect="trace: must be a Trace"),
+    Case("api-save-scenario-none", python="fuzzynav.save_scenario(None, d / 'x.yaml')", expect="scenario: must be a Scenario"),
+    Case("api-fuzzy-evaluate-text", python="fuzzynav.thesis_system('goal-seeking').evaluate('abc')",
+         expect="inputs: must be numbers"),
+    Case("api-batch-controller-count",
+         python=f"c = {_CONTROLLER}\nfuzzynav.BatchSimulator({_SCENARIO}, [c, c], n=3)",
+         expect="controller: 2 controllers for 3 robots"),
+]
+
+COUNTS = [
+    Case("bench-count-1e11", argv=("bench", "circles:99999999999", "--controllers", "goal-seeking", "--out", "{d}/o"),
+         expect="COUNT must be a whole number from 0 to 100,000"),
+    Case("bench-seeds-1e12", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--seeds", "1000000000000",
+                                   "--out", "{d}/o"), expect="--seeds: must be an integer in [1, 10000]"),
+    Case("bench-campaign-too-large", argv=("bench", "circles:100000", "--controllers", "goal-seeking,dwa",
+                                           "--seeds", "10", "--out", "{d}/o"), expect="more than the 1,000,000"),
+    Case("bench-workers-1e9", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--workers", "1000000000",
+                                    "--out", "{d}/o"), expect="--workers: must be an integer in [1, 1024]"),
+    Case("worlds-generate-1e12", argv=("worlds", "generate", "circles", "--n", "1000000000000", "--out", "{d}/w"),
+         expect="--n: must be an integer in [1, 100000]"),
+    Case("worlds-generate-5000-digits", argv=("worlds", "generate", "circles", "--n", "9" * 5000, "--out", "{d}/w"),
+         expect="--n: must be an integer in [1, 100000]"),
+    Case("train-curve-bad-suffix", argv=("train", "q-goal", "--curve", "{d}/x.xyz", "--out", "{d}/q.json"),
+         expect="matplotlib cannot write '.xyz'"),
+]
+
+FUZZY = [
+    Case("fis-output-range-4-4", {"t.fis": _fis("[4 4]")}, _eval("t.fis"), expect="v.range: range [4.0, 4.0] has no width"),
+    Case("fis-output-range-nan", {"t.fis": _fis("[0 nan]")}, _eval("t.fis"), expect="Range must be [lo hi]"),
+    Case("fis-weight-minus-2", {"t.fis": _fis(weight="-2")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
+    Case("fis-weight-1.5", {"t.fis": _fis(weight="1.5")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
+    Case("fis-ok", {"t.fis": _fis()}, _eval("t.fis"), status=0, expect='{"v": 0.40'),
+    Case("fll-range-1e300", {"t.fll": _fll("  range: 0 1\n", "  range: 0 1e300\n")}, _eval("t.fll"),
+         expect="no finite answer for x=0.3"),
+    Case("fll-range-inf", {"t.fll": _fll("  range: 0 1\n", "  range: 0 inf\n")}, _eval("t.fll"), expect="range"),
+    Case("fll-highest-minus-3", {"t.fll": _fll("activation: General", "activation: Highest -3")}, _eval("t.fll"),
+         expect="Highest takes a number of rules >= 1"),
+    Case("fll-threshold-nan", {"t.fll": _fll("activation: General", "activation: Threshold >= nan")}, _eval("t.fll"),
+         expect="Threshold threshold must be a number in [0, 1]"),
+    Case("fll-negative-height", {"t.fll": _fll(_HI, "term: hi Triangle 0 1 1 -2\nRuleBlock")}, _eval("t.fll"),
+         expect="v.hi: height must be a number in [0, 1]"),
+    Case("fll-discrete-unordered", {"t.fll": _fll(_HI, "term: hi Discrete 1 1 0 0\nRuleBlock")}, _eval("t.fll"),
+         expect="v.hi: discrete points must be given by increasing x"),
+    Case("fll-rule-weight-minus-2", {"t.fll": _fll("then v is hi\n", "then v is hi with -2\n")}, _eval("t.fll"),
+         expect="weight"),
+    Case("fll-function-divide-by-zero", {"t.fll": _TS.replace("FORMULA", "1/(x-x)")}, _eval("t.fll"),
+         expect="no finite answer for x=0.3: v = inf"),
+    Case("fll-function-log-minus-one", {"t.fll": _TS.replace("FORMULA", "log(x-1)")}, _eval("t.fll"),
+         expect="no finite answer for x=0.3: v = nan"),
+    Case("fll-function-overflow", {"t.fll": _TS.replace("FORMULA", "exp(1000)*exp(1000)")}, _eval("t.fll"),
+         expect="no finite answer"),
+    Case("fll-function-reads-own-output", {"t.fll": _TS.replace("FORMULA", "v+1")}, _eval("t.fll"),
+         expect="v.lo: a Function term of v reads v itself"),
+    Case("fll-csv-non-finite-answer", {"t.fll": _TS.replace("FORMULA", "1/(x-x)"), "in.csv": "x\n0.3\n"},
+         ("fis", "eval", "{d}/t.fll", "--csv", "{d}/in.csv"), expect="no finite answer"),
+    Case("json-duplicate-terms", {"g.json": '{"name": "g", "inputs": [{"name": "x", "universe": [0, 1], "terms": '
+                                            '{"Z": {"kind": "triangle", "params": [0, 0, 1]}, '
+                                            '"Z": {"kind": "triangle", "params": [0, 1, 1]}}}]}'},
+         ("fis", "show", "{d}/g.json"), expect="the key 'Z' appears twice"),
+]
+
+
+def _row_case(name: str, expect: str, **changes) -> Case:
+    args = ", ".join(f"{key}={value!r}" for key, value in changes.items())
+    return Case(f"campaign-{name}", python=f"campaign(d, lambda out: edit_row(out, {args}))", expect=expect)
+
+
+CAMPAIGN = [
+    _row_case("seed-abc", "line 1.seed: must be an integer", seed="abc"),
+    _row_case("seed-null", "line 1.seed: must be an integer", seed=None),
+    _row_case("time-fast", "line 1.time_s: must be a number", time_s="fast"),
+    _row_case("time-minus-1e9", "line 1.time_s: must be >= 0", time_s=-1e9),
+    _row_case("outcome-banana", "line 1.outcome: must be one of reached, collision, timeout", outcome="banana"),
+    _row_case("controller-outside-plan", "is not one of this campaign's", controller="dwa"),
+    _row_case("world-outside-plan", "is not one of this campaign's", world="circles-0-777"),
+    _row_case("non-utf8", "not UTF-8", raw=b'"\xff\xfe"'),
+    Case("campaign-missing-column",
+         python="campaign(d, lambda out: (out / 'runs.jsonl').write_text(json.dumps({'suite': 'circles:1:0'}) + '\\n'))",
+         expect="line 1.world: missing"),
+    Case("campaign-middle-line-garbage",
+         python="campaign(d, lambda out: (out / 'runs.jsonl').write_text('{{{\\n{}\\n'))",
+         expect="line 1: not a JSON object"),
+    Case("campaign-fis-json-not-json", python="campaign(d, fis=b'not json')", expect="fis.json: line 1, column 1: invalid JSON"),
+    Case("campaign-fis-json-list", python="campaign(d, fis=b'[1, 2]')", expect="fis.json: must be a mapping"),
+    Case("campaign-cut-last-line-ok",
+         python="campaign(d, lambda out: (out / 'runs.jsonl').write_text((out / 'runs.jsonl').read_text() + '{\"su'))",
+         status=0, expect=""),
+    Case("campaign-second-writer", python="locked_bench(d)", expect="another `fuzzynav bench` is writing"),
+    Case("campaign-benchmark-json-string-entry",
+         files={"w.yaml": "robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\n",
+                "benchmark.json": json.dumps({"scenarios": {"w": "fast"}})},
+         argv=("bench", "{d}", "--controllers", "goal-seeking", "--out", "{d}/o"),
+         expect="benchmark.json: scenarios.w: must be a mapping"),
+]
+
+CHECKPOINT = [
+    Case("checkpoint-episode-counter-edited",
+         python="trained_checkpoint(d, lambda doc: doc.update(episode=doc['episode'] + 1))",
+         expect="holds 1 batches, but the checkpoint says 2 were done"),
+    Case("checkpoint-curve-value-edited",
+         python="trained_checkpoint(d, lambda doc: doc['curve']['mean_reward'][0].__setitem__(0, 99.0))",
+         expect="digest: does not match the checkpoint's content"),
+    Case("checkpoint-curve-batch-dropped",
+         python="trained_checkpoint(d, lambda doc: [doc['curve'][k].pop() for k in doc['curve']])",
+         expect="holds 0 batches, but the checkpoint says 1"),
+    Case("checkpoint-qualities-edited",
+         python="trained_checkpoint(d, lambda doc: doc['learner']['q'][0][0].__setitem__(0, 5.0))",
+         expect="digest: does not match"),
+]
+
+SCENARIOS = [
+    Case("scenario-3m-robot-goal-unreachable", {"s.yaml": "robot: {x: 5, y: 5, radius: 3}\ngoal: {x: 19, y: 19}\n"},
+         RUN, expect="the robot (radius 3 m) cannot come closer"),
+    Case("scenario-small-robot-goal-ok", {"s.yaml": "robot: {x: 1, y: 1, radius: 0.1}\n"
+                                                    "goal: {x: 19.8, y: 19.8, tolerance: 0.1}\nmax_time: 1\n"},
+         RUN, status=0, expect='"outcome": "timeout"'),
+    Case("scenario-target-unreachable", {"s.yaml": ROBOT + "target: {x: 19.95, y: 19.95, tolerance: 0.1}\n"},
+         RUN, expect="target: target (19.95, 19.95) cannot be reached"),
+    Case("scenario-target-beside-obstacle", {"s.yaml": ROBOT + "target: {x: 12.3, y: 10, tolerance: 0.1}\n"
+                                                       "obstacles:\n  - circle: {center: [10, 10], radius: 2.2}\n"},
+         RUN, expect="target (12.3, 10) cannot be reached"),
+]
+
+ASCII = [
+    Case("ascii-terminal-fis-show", python="ascii_terminal(['fis', 'show', 'goal-seeking'])", status=0,
+         expect="thesis \\xa7IV.5.1"),
+    Case("ascii-terminal-scenario-error", {"s.yaml": "robot: {x: 5, y: 5, max_steering: 2}\ngoal: {x: 15, y: 15}\n"},
+         python="ascii_terminal(['run', str(d / 's.yaml'), '--controller', 'goal-seeking'])",
+         expect="robot.max_steering: must be below \\u03c0/2"),
+]
+
+CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII]
