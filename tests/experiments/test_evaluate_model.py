@@ -37,12 +37,15 @@ def test_evaluate_model_table(q_model, capsys):
     assert f"controller q-goal (model {q_model})" in out and "success_rate" in out
 
 
-@pytest.mark.parametrize("argv", [["--model", "MODEL", "--controller", "fuzzy-2b"], []])
-def test_evaluate_model_and_controller_are_mutually_exclusive_and_one_is_required(q_model, argv):
-    argv = [str(q_model) if a == "MODEL" else a for a in argv]
+def test_evaluate_model_and_controller_are_mutually_exclusive(q_model):
     with pytest.raises(SystemExit) as exit_info:
-        main(["evaluate", *argv, "--worlds", "circles", "--n", "1"])
+        main(["evaluate", "--model", str(q_model), "--controller", "fuzzy-2b", "--worlds", "circles", "--n", "1"])
     assert exit_info.value.code == 2
+
+
+def test_evaluate_without_a_controller_runs_the_default_navigator(capsys):
+    assert main(["evaluate", "--worlds", "circles", "--n", "1"]) == 0
+    assert "controller fuzzy-5b on 1 circles worlds" in capsys.readouterr().out
 
 
 def test_evaluate_missing_model_file_is_an_input_error(tmp_path, capsys):

@@ -57,7 +57,8 @@ def edit_row(out, raw=None, **changes):
     (out / "runs.jsonl").write_bytes(text)
 
 def trained_checkpoint(d, change):
-    # a real q-goal checkpoint (20 episodes), edited by change(document), then resumed
+    # a real q-goal checkpoint (20 episodes, one a batch: the thesis' protocol), edited by change(document),
+    # then resumed
     from fuzzynav.cli import main
     out = d / "q.json"
     assert main(["train", "q-goal", "--episodes", "20", "--quiet", "--out", str(out)]) == 0
@@ -361,13 +362,13 @@ CAMPAIGN = [
 CHECKPOINT = [
     Case("checkpoint-episode-counter-edited",
          python="trained_checkpoint(d, lambda doc: doc.update(episode=doc['episode'] + 1))",
-         expect="holds 1 batches, but the checkpoint says 2 were done"),
+         expect="holds 20 batches, but the checkpoint says 21 were done"),
     Case("checkpoint-curve-value-edited",
          python="trained_checkpoint(d, lambda doc: doc['curve']['mean_reward'][0].__setitem__(0, 99.0))",
          expect="digest: does not match the checkpoint's content"),
     Case("checkpoint-curve-batch-dropped",
          python="trained_checkpoint(d, lambda doc: [doc['curve'][k].pop() for k in doc['curve']])",
-         expect="holds 0 batches, but the checkpoint says 1"),
+         expect="holds 19 batches, but the checkpoint says 20"),
     Case("checkpoint-qualities-edited",
          python="trained_checkpoint(d, lambda doc: doc['learner']['q'][0][0].__setitem__(0, 5.0))",
          expect="digest: does not match"),

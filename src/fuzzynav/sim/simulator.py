@@ -80,15 +80,14 @@ class BatchSimulator:
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, record: bool = True):
         self.scenario = arguments.check_scenario(scenario)
-        listed = arguments.check_controllers(controller, len(starts) if starts is not None and hasattr(starts, "__len__")
-                                             else n)
+        self.starts = (check_starts(starts) if starts is not None
+                       else np.tile(scenario.start, (arguments.check_robots(n), 1)))
+        self.n = len(self.starts)
+        listed = arguments.check_controllers(controller, self.n)
         robot_params, sensors = arguments.check_params(robot_params), arguments.check_sensors(sensors)
         seed = arguments.check_seed(seed)
         self.params = robot_params if robot_params is not None else scenario.robot
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
-        self.starts = (check_starts(starts) if starts is not None
-                       else np.tile(scenario.start, (arguments.check_robots(n), 1)))
-        self.n = len(self.starts)
         self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
                                           field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))

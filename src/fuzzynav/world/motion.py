@@ -108,7 +108,7 @@ def read_motion(check, document, field: str, table: dict[str, dict[str, object]]
             values[key] = check.points(value, where, 2, limits.MAX_WAYPOINTS)
         elif key == "loop":
             if not isinstance(value, bool):
-                check.fail(where, f"must be true or false, got {validation._shown(value)}")
+                check.fail(where, f"must be true or false, got {validation.shown(value)}")
             values[key] = value
         elif key == "velocity":
             values[key] = np.array(validation.numbers(value, check.source, where, length=2,
