@@ -29,12 +29,22 @@ INSET = math.radians(5.0)  # how far inside a gap's edge the robot aims
 
 
 @jit
+def within(difference, limit):
+    """|wrap(``difference``)| ≤ ``limit``, the wrap (a float modulo, the costly part) skipped where
+    |``difference``| alone settles it (wrapping moves it by 0 or 2π; 0.1 rad of slack for rounding)."""
+    size = abs(difference)
+    if limit + 0.1 < size < 2.0 * math.pi - limit - 0.1:
+        return False
+    return abs(wrap(difference)) <= limit
+
+
+@jit
 def sector_readings(ranges, angles, half, max_range):
     """(d1, …, d7): the nearest reading within ``half`` of each of the thesis' directions."""
     d = [max_range] * 7
     for j in range(ranges.shape[0]):
         for k in range(7):
-            if abs(wrap(angles[j] - THESIS_ANGLES[k])) <= half + 1e-9 and ranges[j] < d[k]:
+            if within(angles[j] - THESIS_ANGLES[k], half + 1e-9) and ranges[j] < d[k]:
                 d[k] = ranges[j]
     return d[0], d[1], d[2], d[3], d[4], d[5], d[6]
 
@@ -42,7 +52,7 @@ def sector_readings(ranges, angles, half, max_range):
 @jit
 def covers(angles, i, j, spread):
     """Is direction ``angles[i]`` within ``spread`` of hit ``j``'s bearing?"""
-    return abs(wrap(angles[i] - angles[j])) <= spread
+    return within(angles[i] - angles[j], spread)
 
 
 @jit
