@@ -32,7 +32,8 @@ cusp — left for the next leg once within ``CUSP`` of it, or within ``PASSED`` 
 projection is there — by the Stanley law (S. Thrun et al., *Stanley: the robot that won the DARPA
 Grand Challenge*, J. Field Robotics 2006) with the path's curvature fed forward: α = atan(l κ) +
 gear · (heading error) − atan(k · cross-track offset / (V + 0.1)), at most ``reverse_speed``
-backwards, slowing into a cusp; its arc is checked as above (behind the robot when backing).
+backwards, slowing into a cusp; its arc is checked as above (behind the robot when backing). The
+last leg, forward to the goal, is driven by pure pursuit as a forward path is.
 """
 
 from __future__ import annotations
@@ -168,7 +169,9 @@ class AStarPurePursuit(Controller):
             return Command(0.0, 0.0, "A*-no-path")
         xy = np.asarray(obs.pose[:2], dtype=float)
         if self.heading is not None:
-            return self._legs(obs, xy)
+            self._next_leg(xy)
+            if self._end < len(self.path) - 1 or self.gear[min(self._index + 1, self._end)] < 0:
+                return self._legs(obs, xy)  # any leg but a last forward one, which pure pursuit drives
         ahead = self.path[self._index:self._index + 40]
         self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
         aim = min(self._index + int(round(self.lookahead / SPACING)), len(self.path) - 1)
@@ -179,11 +182,15 @@ class AStarPurePursuit(Controller):
         speed = min(self.body.max_speed * max(math.cos(bearing), 0.25), math.sqrt(self.lateral / max(bend, 1e-6)))
         return self._checked(obs.pose, steering, speed, math.hypot(dx, dy))
 
-    def _legs(self, obs, xy) -> Command:
-        """A path with backward legs: each leg tracked in turn by the Stanley law (module docstring)."""
+    def _next_leg(self, xy) -> None:
+        """At the cusp ending the present leg (module docstring): on to the next leg."""
         to_cusp = math.hypot(*(self.path[self._end] - xy))
         if self._end < len(self.path) - 1 and (to_cusp < CUSP or (self._index >= self._end - 1 and to_cusp < PASSED)):
-            self._index, self._end = self._end, self._leg_end(self._end)  # at the cusp: on to the next leg
+            self._index, self._end = self._end, self._leg_end(self._end)
+
+    def _legs(self, obs, xy) -> Command:
+        """A leg of a path with backward legs, tracked by the Stanley law (module docstring)."""
+        to_cusp = math.hypot(*(self.path[self._end] - xy))
         ahead = self.path[self._index:min(self._index + 40, self._end + 1)]
         self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
         i = self._index
