@@ -13,10 +13,10 @@ Contenders (training time = median of the fits, prediction = median per-call tim
 - ``anfis-toolbox`` — ``ANFISRegressor(n_mfs=5, mf_type="bell", epochs=200)``, hybrid optimiser;
 - ``xanfis`` — ``AnfisRegressor(num_rules=5, mf_class="GBell")``, its default Adam + least-squares.
 
-The two peers run in their own virtual environment (``--peer-python``, default
-``/work/venv-anfis/bin/python``: xanfis pins numpy ≤ 1.26 and pulls in torch), each in a
-subprocess that receives the same data as JSON; a peer that is not installed is reported, not
-faked. ``python benchmarks/anfis_bench.py [--json] [--repeats N] [--peer-python PATH]``.
+The two peers run in their own virtual environment (``--peer-python PATH``, or the environment
+variable ``FUZZYNAV_ANFIS_PEER_PYTHON``: xanfis pins numpy ≤ 1.26 and pulls in torch), each in a
+subprocess that receives the same data as JSON; a peer that is not installed, or no interpreter
+given, is reported, not faked. ``python benchmarks/anfis_bench.py [--json] [--repeats N] [--peer-python PATH]``.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import statistics
 import subprocess
 import sys
@@ -33,7 +34,7 @@ import warnings
 import numpy as np
 
 GOALS = {"test_rmse_rad": 1e-4, "train_s": 0.1, "predict_us": 5.0}
-DEFAULT_PEER_PYTHON = "/work/venv-anfis/bin/python"
+PEER_PYTHON_VARIABLE = "FUZZYNAV_ANFIS_PEER_PYTHON"  # the peers' interpreter, unless --peer-python
 
 PEER_CODE = r'''
 import json, statistics, sys, time, warnings
@@ -151,7 +152,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
     parser.add_argument("--repeats", type=int, default=5, help="fits per contender (median time); peers use 3 / 1")
-    parser.add_argument("--peer-python", default=DEFAULT_PEER_PYTHON, help="interpreter of the peers' venv")
+    parser.add_argument("--peer-python", default=os.environ.get(PEER_PYTHON_VARIABLE),
+                        help=f"interpreter of the peers' venv (default: ${PEER_PYTHON_VARIABLE}; none: no peers)")
     parser.add_argument("--no-peers", action="store_true", help="skip anfis-toolbox and xanfis")
     args = parser.parse_args(argv)
 
@@ -160,8 +162,9 @@ def main(argv=None) -> int:
     data = (X, target(X[:, 0]), Xt, target(Xt[:, 0]))
     results = [bench_fuzzynav(data, args.repeats), bench_mlp(data, args.repeats)]
     if not args.no_peers:
-        results.append(bench_peer("anfis-toolbox", args.peer_python, data, max(1, min(3, args.repeats))))
-        results.append(bench_peer("xanfis", args.peer_python, data, 1))
+        for peer, repeats in (("anfis-toolbox", max(1, min(3, args.repeats))), ("xanfis", 1)):
+            results.append(bench_peer(peer, args.peer_python, data, repeats) if args.peer_python else
+                           {"name": peer, "error": f"not run: give --peer-python or ${PEER_PYTHON_VARIABLE}"})
     ours = results[0]
     verdict = {key: ours[key] <= goal for key, goal in GOALS.items()}
     report = {"task": "alpha = (pi/4) tanh(1.5 theta), 100 train points on [-pi, pi], 1000 test points, 5 bell MFs",

@@ -2,10 +2,10 @@
 
     python benchmarks/fuzzify_bench.py            # 10,000 values, best of 7 CPU-time runs each
 
-The kernel's versions (:mod:`fuzzynav.fuzzy.engine.vmath`, :func:`~fuzzynav.fuzzy.engine.term_columns.term_column`)
+The kernel's versions (:mod:`fuzzynav.fuzzy.engine.vmath`, :func:`~fuzzynav.fuzzy.engine.fuzzify_terms.term_column`)
 and NumPy's (``np.exp``, ``np.log``, the NumPy formulas of :mod:`fuzzynav.fuzzy.membership`) are
 timed in the same run on the same values: uniform in [−20, 20] (log: their absolute values).
-Also Σ μ and Σ μ x of the centroid (:func:`~fuzzynav.fuzzy.engine.reduce.centroid_sums`) a
+Also Σ μ and Σ μ x of the centroid (:func:`~fuzzynav.fuzzy.engine.sampled_defuzzify.centroid_sums`) a
 sample, over 200 samples, called from compiled code (as the kernel does).
 """
 
@@ -16,8 +16,8 @@ import time
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine import term_columns, vmath
-from fuzzynav.fuzzy.engine.reduce import centroid_sums
+from fuzzynav.fuzzy.engine import fuzzify_terms, vmath
+from fuzzynav.fuzzy.engine.sampled_defuzzify import centroid_sums
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid
 from fuzzynav.jit import jit
 
@@ -54,9 +54,9 @@ def main(argv=None) -> int:
             ("log", lambda: vmath.log_column(positive, out), lambda: np.log(positive, out=out))]
     for name, mf in (("Gaussian", Gaussian(3.0, 0.5)), ("Bell", Bell(2.3, 1.7, 0.3)), ("Bell b=2", Bell(2.3, 2.0, 0.3)),
                      ("Sigmoid", Sigmoid(1.3, 0.5))):
-        code, params, height = term_columns.pack_term(mf)
+        code, params, height = fuzzify_terms.pack_term(mf)
         p = np.array(params)
-        rows.append((name, lambda c=code, p=p, h=height: term_columns.term_column(c, p, 0, len(p), h, x, out),
+        rows.append((name, lambda c=code, p=p, h=height: fuzzify_terms.term_column(c, p, 0, len(p), h, x, out),
                      lambda mf=mf: mf(x)))
     print(f"ns a value over {n:,} values (CPU time, best of 7)")
     print(f"{'':<10} {'fuzzynav':>9} {'NumPy':>9}")

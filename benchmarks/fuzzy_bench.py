@@ -239,7 +239,7 @@ def bench_examples(folders: list[str], clock: str = "wall", calls: int = 1) -> d
             engine.process()
         times = {"fuzzynav": [], "pyfuzzylite": []}
         for _ in range(5):  # interleaved: both see the same machine load
-            for name, run in (("fuzzynav", lambda: ours.evaluate(X)), ("pyfuzzylite", lambda: process(X))):
+            for name, run in (("fuzzynav", lambda ours=ours, X=X: ours.evaluate(X)), ("pyfuzzylite", lambda X=X: process(X))):
                 t0 = now()
                 for _ in range(calls):
                     run()

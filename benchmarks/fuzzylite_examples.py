@@ -36,8 +36,8 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.io import from_fll, to_fll
-from fuzzynav.fuzzy.io.fll import from_fll_engine
 from fuzzynav.fuzzy.io.fis import from_fis, to_fis
+from fuzzynav.fuzzy.io.fll import from_fll_engine
 
 TOLERANCE = 1e-9
 

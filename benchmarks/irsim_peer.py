@@ -16,6 +16,7 @@ so ellipses become 32-gons; walls become their rectangles.
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import sys
@@ -71,6 +72,7 @@ def world_yaml(job: dict) -> dict:
 
 
 def main() -> None:
+    argparse.ArgumentParser(description=__doc__.split("\n\n")[0]).parse_args()  # --help; the job comes on stdin
     answers, sys.stdout = sys.stdout, sys.stderr  # IR-SIM's own messages stay off the answers
     import irsim
     import numpy as np

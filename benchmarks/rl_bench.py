@@ -37,11 +37,10 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
+from fuzzynav.catalog.tasks import load_controller, trainer
 from fuzzynav.experiments import evaluation as evaluations
 from fuzzynav.learn import envs
-from fuzzynav.catalog.tasks import load_controller
-from fuzzynav.catalog.tasks import trainer
+from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
 from fuzzynav.learn.tasks.common import TrainRequest
 
 # the thesis' episodes to converge (Table VI.1, Figs VI.1, VI.8, VI.9, VI.13, VI.16, VI.22)

@@ -11,6 +11,11 @@ ratio compares chunks run under the same load (the ratio is the median of the pe
 (only robots still running count). Rates are medians of 7 chunks, wall clock and this process's
 CPU time (steadier on a busy machine).
 
+``moving_20`` times moving obstacles: the world of 15 plus 20 discs that move (lines reflecting at
+the border, circles, sinusoids, waypoint loops; :func:`moving_world`) against the same world with
+those 20 discs standing where they start, one robot and 64 robots, chunks alternating; its
+``slowdown`` is the median of the per-chunk ratios static / moving (the target: at most 2).
+
 IR-SIM lives in its own virtual environment (it pins its own NumPy): give its Python with
 ``--irsim-python PATH`` or the ``IRSIM_PYTHON`` environment variable, or let ``--setup-peers``
 create one (``pip install ir-sim`` into ``--peers-dir``, default ``benchmarks/.peers/irsim``) and
@@ -34,8 +39,8 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.control.batched import ConstantCommand
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.batched import ConstantCommand
 from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator
@@ -68,6 +73,45 @@ def obstacles_of_15(seed: int = 0) -> list[dict]:
 def world_of_15(seed: int = 0):
     return scenario_from_dict({"name": "bench-15", "robot": {"x": 1, "y": 1}, "goal": {"x": 19, "y": 19},
                                "obstacles": obstacles_of_15(seed), "max_time": 3600.0}, source="benchmark")
+
+
+MOVES = (
+    {"type": "line", "velocity": [0.8, 0.3]},
+    {"type": "circle", "center": [10.0, 10.0], "speed": 0.7},
+    {"type": "sinusoid", "velocity": [0.0, 0.5], "amplitude": 1.0, "period": 6.0},
+    {"type": "waypoints", "points": [[2.0, 2.0], [18.0, 2.0], [18.0, 18.0]], "speed": 1.2, "loop": True},
+)
+
+
+def moving_world(move: bool = True, seed: int = 2):
+    """The world of 15 plus 20 discs of radius 0.3 m, moving (cycling the motions of :data:`MOVES`)
+    or, with ``move=False``, standing where they start."""
+    rng = np.random.default_rng(seed)
+    discs = []
+    for i in range(20):
+        disc = {"circle": {"center": [float(v) for v in rng.uniform(2, 18, 2)], "radius": 0.3}}
+        if move:
+            motion = dict(MOVES[i % len(MOVES)])
+            if motion["type"] == "waypoints":
+                motion["points"] = [disc["circle"]["center"], *motion["points"][1:]]
+            disc["motion"] = motion
+        discs.append(disc)
+    return scenario_from_dict({"name": "bench-15+20", "robot": {"x": 1, "y": 1}, "goal": {"x": 19, "y": 19},
+                               "obstacles": obstacles_of_15() + discs, "max_time": 3600.0}, source="benchmark")
+
+
+def moving_case(make) -> dict:
+    """Steps per second with 20 moving obstacles and with the same 20 standing (module docstring)."""
+    static, moving = moving_world(False), moving_world(True)
+    report = {}
+    for n, steps in ((1, ONE_ROBOT_STEPS), (64, 100)):
+        starts = start_poses(static, n, clearance=3.0 if n == 1 else 0.5)
+        pair = (Timed(static, starts, make()), Timed(moving, starts, make()))
+        rates = [[timed.chunk(steps) for timed in pair] for _ in range(CHUNKS)]
+        report[str(n)] = {"static_steps_per_s_cpu": round(statistics.median(r[0][1] for r in rates)),
+                          "moving_steps_per_s_cpu": round(statistics.median(r[1][1] for r in rates)),
+                          "slowdown": round(statistics.median(r[0][1] / r[1][1] for r in rates), 2)}
+    return report
 
 
 def start_poses(scenario, n: int, clearance: float = 0.5) -> np.ndarray:
@@ -195,6 +239,7 @@ def main(argv=None) -> None:
             timed = Timed(scenario, start_poses(scenario, n), make())
             r = [timed.chunk(steps) for _ in range(5)]
             report["robot_steps_per_s"][name][str(n)] = {"wall": round(median(r, 0)), "cpu": round(median(r, 1))}
+    report["moving_20"] = {name: moving_case(make) for name, make in controllers.items()}
     for name, irsim in peers.items():
         irsim.close()
         report[name] = {"version": irsim.info["version"], "beams": irsim.info["beams"],
@@ -210,6 +255,10 @@ def main(argv=None) -> None:
     for name, rows in report["robot_steps_per_s"].items():
         for n, row in rows.items():
             print(f"{n:>5} robots, {name:10s} {row['wall']:>10,} robot-steps/s wall {row['cpu']:>10,} CPU")
+    for name, rows in report["moving_20"].items():
+        for n, row in rows.items():
+            print(f"{n:>5} robots, {name:10s} 20 moving obstacles: {row['moving_steps_per_s_cpu']:>10,} steps/s CPU, "
+                  f"static {row['static_steps_per_s_cpu']:>10,}: {row['slowdown']}x slower")
     if not peers:
         print("IR-SIM: unavailable (--irsim-python, IRSIM_PYTHON or --setup-peers)")
     for name in peers:

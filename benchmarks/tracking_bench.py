@@ -15,7 +15,7 @@ V = 1 m/s, |α| ≤ π/4, l = 0.5 m, 1 m waypoint tolerance zone), for
 
 Wall time per episode is the median of ``--repeats`` runs. ``--json`` prints one JSON object.
 
-    /work/venv/bin/python benchmarks/tracking_bench.py [--json] [--repeats 3]
+    python benchmarks/tracking_bench.py [--json] [--repeats 3]
 """
 
 from __future__ import annotations

@@ -13,7 +13,6 @@ import time
 
 import numpy as np
 
-from fuzzynav.bench.suites import parse_suite
 from fuzzynav.catalog.roles import make_with_systems
 from fuzzynav.sim import BatchSimulator
 from fuzzynav.tune.episodes import OUTCOME, STEPS

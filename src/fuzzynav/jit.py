@@ -7,19 +7,29 @@ module or numba) and, when any changed since the last check, deletes every cache
 on first use). Installs and upgrades rewrite every file, so numba's own check suffices there; the
 guard is for working copies (an editable install being edited). Caches put elsewhere by
 ``NUMBA_CACHE_DIR`` are not checked: clear that directory after editing kernels.
+
+The first time in a process that one of the package's kernels is compiled rather than loaded
+from the cache, one line on stderr (:data:`COMPILE_NOTICE`) says so: a cold first run is silent
+for a while otherwise. ``fuzzynav warmup`` compiles them all up front, with a progress bar.
 """
 
 from __future__ import annotations
 
 import hashlib
 import os
+import sys
 from pathlib import Path
 
 import numba
+from numba.core import event
 
 PACKAGE = Path(__file__).resolve().parent
 STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
 CACHE_SUFFIXES = (".nbi", ".nbc")
+# CPU seconds a cold cache costs the demo, rounded up (measured: docs/results/first-run.md)
+COLD_COMPILE_SECONDS = 40
+COMPILE_NOTICE = (f"fuzzynav: compiling the simulator's kernels, first run only — about {COLD_COMPILE_SECONDS} s "
+                  "of CPU (later runs load them from the cache)")
 
 
 def _kernel_sources(package: Path) -> list[Path]:
@@ -78,4 +88,29 @@ def jit(function=None, *, fastmath: tuple = ()):
         return numba.njit(**options)(function)
 
 
+class CompileNotice(event.Listener):
+    """Prints :data:`COMPILE_NOTICE` on stderr once, when numba starts compiling (a cache miss,
+    not a load) a kernel of this package; :meth:`silence` stops it (a caller that reports the
+    compilation its own way, such as ``fuzzynav warmup``)."""
+
+    def __init__(self) -> None:
+        self.said = False
+
+    def silence(self) -> None:
+        """Say nothing from now on in this process."""
+        self.said = True
+
+    def on_start(self, compile_event) -> None:
+        dispatcher = compile_event.data.get("dispatcher") if isinstance(compile_event.data, dict) else None
+        module = getattr(getattr(dispatcher, "py_func", None), "__module__", "") or ""
+        if not self.said and module.startswith("fuzzynav"):
+            self.said = True
+            print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+
+    def on_end(self, compile_event) -> None:
+        """Nothing to do when a compilation ends."""
+
+
+NOTICE = CompileNotice()
+event.register("numba:compile", NOTICE)
 clear_stale_caches()

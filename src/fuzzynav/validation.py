@@ -16,9 +16,8 @@ import json
 import math
 import operator
 import warnings
-from pathlib import Path
-
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import yaml

@@ -127,3 +127,34 @@ def test_barn_score_follows_run_py():
 def test_bad_input_exits_2_naming_the_field(argv, field, capsys, tmp_path):
     assert main([*argv, "--out", str(tmp_path / "o")]) == 2
     assert field in capsys.readouterr().err
+
+
+def test_index_page_has_html_tables_and_a_sentence_per_plot(reference):
+    from html.parser import HTMLParser
+
+    class Page(HTMLParser):
+        def __init__(self):
+            super().__init__()
+            self.tags, self.cells, self.images, self.headings, self.text = [], [], [], [], []
+
+        def handle_starttag(self, tag, attrs):
+            self.tags.append(tag)
+            if tag == "img":
+                self.images.append(dict(attrs)["src"])
+
+        def handle_data(self, data):
+            self.text.append(data)
+            if not data.strip():
+                return
+            if self.tags and self.tags[-1] in ("td", "th"):
+                self.cells.append(data)
+            if self.tags and self.tags[-1] == "h2":
+                self.headings.append(data)
+
+    page = Page()
+    page.feed((reference / "index.html").read_text())
+    assert "table" in page.tags and "pre" not in page.tags
+    assert {"goal-seeking", "vfh", "success %", "collision %", "timeout %"} <= set(page.cells)
+    assert page.images[:2] == ["rates.png", "path_ratio.png"]
+    assert len(page.headings) == 1 + len(page.images)  # the tables' heading, then one per plot
+    assert "|---|" not in "".join(page.text)  # no Markdown left in the page

@@ -2,11 +2,11 @@
 
 import pytest
 
-from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
-from fuzzynav.errors import InputError
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.lookup import descriptions, resolve
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.catalog.tasks import trainer
+from fuzzynav.errors import InputError
+from fuzzynav.lookup import descriptions, resolve
 
 
 def test_resolve_imports_the_registered_object():

@@ -1,28 +1,42 @@
-"""CONTRIBUTING.md's recipe for a training task holds: a task module plus its one line in
-``catalog.tasks.TASKS`` is all ``fuzzynav train`` and ``fuzzynav run --model`` need."""
+"""CONTRIBUTING.md's recipe for a training task holds: a task module plus its one registration
+(:func:`fuzzynav.catalog.tasks.register_task`, or an entry point of an installed distribution) is
+all ``fuzzynav train`` and ``fuzzynav run --model`` need."""
 
 import json
 
+import pytest
+
 from fuzzynav.catalog import tasks
+from fuzzynav.catalog.specs import TaskSpec
 from fuzzynav.cli import main
+from tests.catalog.plugins import installed
 
-ENTRY = ("tests.catalog.toy_task:train_toy", "toy-q-goal", "toy tabular goal seeker (tests)")
+TOY = TaskSpec("toy", "tests.catalog.toy_task:train_toy", "toy-q-goal", "toy tabular goal seeker (tests)")
 
 
-def add_task(monkeypatch):
-    """What the one line in TASKS does once the catalog is imported: the task, its trainer, its loader."""
-    monkeypatch.setitem(tasks.TASKS, "toy", ENTRY)
-    monkeypatch.setitem(tasks.TRAINERS, "toy", (ENTRY[0], ENTRY[2]))
-    monkeypatch.setitem(tasks.MODEL_LOADERS, ENTRY[1], "tests.catalog.toy_task:load_model")
+@pytest.fixture
+def toy():
+    """The one registration line, from outside the package, undone after the test."""
+    tasks.register_task(TOY)
+    yield
+    tasks.TASKS.unregister("toy")
 
 
 def test_the_loader_of_a_kind_is_the_load_model_of_its_task_module():
-    for task, (train, kind, _) in tasks.TASKS.items():
-        assert tasks.MODEL_LOADERS[kind] == train.split(":")[0] + ":load_model", task
+    for task, spec in tasks.TASKS.items():
+        assert tasks.model_loaders()[spec.kind] == spec.trainer.split(":")[0] + ":load_model", task
+    assert TOY.loader == "tests.catalog.toy_task:load_model"
 
 
-def test_a_new_task_trains_and_its_model_runs(monkeypatch, capsys, tmp_path):
-    add_task(monkeypatch)
+def test_a_task_name_or_a_kind_read_by_another_loader_is_refused():
+    with pytest.raises(ValueError, match="'fql-goal' is already registered"):
+        tasks.register_task(TaskSpec("fql-goal", "tests.catalog.toy_task:train_toy", "toy-q-goal", "twin"))
+    with pytest.raises(ValueError, match="model kind 'fql-goal' is already read by fuzzynav.learn.tasks.fql_goal"):
+        tasks.register_task(TaskSpec("toy-2", "tests.catalog.toy_task:train_toy", "fql-goal", "a toy"))
+    assert "toy-2" not in tasks.TASKS
+
+
+def _train_and_run(capsys, tmp_path):
     out = tmp_path / "toy.npz"
     assert main(["train", "toy", "--episodes", "100", "--quiet", "--out", str(out)]) == 0
     assert "steering: 100 episodes" in capsys.readouterr().out
@@ -30,3 +44,13 @@ def test_a_new_task_trains_and_its_model_runs(monkeypatch, capsys, tmp_path):
     result = json.loads(capsys.readouterr().out)
     assert result["controller"] == "toy" and result["outcome"] in ("reached", "timeout", "collision")
     assert "toy" in tasks.available()
+
+
+def test_a_new_task_trains_and_its_model_runs(toy, capsys, tmp_path):
+    _train_and_run(capsys, tmp_path)
+
+
+def test_a_task_from_an_installed_distribution(monkeypatch, capsys, tmp_path):
+    with installed(monkeypatch, tmp_path / "site", tasks.TASKS, {"toy": "tests.catalog.test_new_task_recipe:TOY"}):
+        _train_and_run(capsys, tmp_path)
+    assert "toy" not in tasks.TASKS

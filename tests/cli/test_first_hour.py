@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from fuzzynav import progress
+from fuzzynav.catalog.controllers import available, make_controller
 from fuzzynav.cli import main
 from fuzzynav.cli.demo import markdown_table
 from fuzzynav.cli.printing import result_lines
-from fuzzynav.catalog.controllers import available, make_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.viz.palette import BEHAVIOURS, behaviour_style
 from fuzzynav.world.generate import generate_worlds

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from fuzzynav.cli import main
-from fuzzynav.learn.tasks.trackers import default_document
 from fuzzynav.learn.anfis import ANFIS
+from fuzzynav.learn.tasks.trackers import default_document
 from fuzzynav.storage import save_document
 
 

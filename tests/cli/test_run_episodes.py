@@ -5,18 +5,25 @@ import json
 import pytest
 import yaml
 
-from fuzzynav.cli import main
-from fuzzynav.catalog import controllers as registry
 from fuzzynav import storage
-from fuzzynav.catalog import tasks
+from fuzzynav.catalog import controllers as registry, tasks
+from fuzzynav.catalog.specs import ControllerSpec
+from fuzzynav.cli import main
 
-TEST_CONTROLLER = ("tests.sim.controllers:HeadingController", "proportional heading (tests)")
+ALL = ("goal", "path", "target")
+TEST_CONTROLLERS = (
+    ControllerSpec("test-heading", "tests.sim.controllers:HeadingController", "proportional heading", "tests", ALL),
+    ControllerSpec("test-constant", "tests.sim.controllers:ConstantController", "constant", "tests", ALL),
+)
 
 
 @pytest.fixture
-def heading(monkeypatch):
-    monkeypatch.setitem(registry.CONTROLLERS, "test-heading", TEST_CONTROLLER)
-    monkeypatch.setitem(registry.CONTROLLERS, "test-constant", ("tests.sim.controllers:ConstantController", "constant"))
+def heading():
+    for spec in TEST_CONTROLLERS:
+        registry.register_controller(spec)
+    yield
+    for spec in TEST_CONTROLLERS:
+        registry.CONTROLLERS.unregister(spec.name)
 
 
 def test_json_is_one_object_with_the_metrics(heading, capsys, tmp_path):
@@ -64,7 +71,8 @@ def test_animation(heading, capsys, tmp_path):
 
 
 def test_model_file(monkeypatch, capsys, tmp_path):
-    monkeypatch.setitem(tasks.MODEL_LOADERS, "test-heading", "tests.sim.controllers:load_heading_model")
+    loaders = {**tasks.model_loaders(), "test-heading": "tests.sim.controllers:load_heading_model"}
+    monkeypatch.setattr(tasks, "model_loaders", lambda: loaders)
     model = tmp_path / "model.json"
     storage.save_json_atomic(model, {"kind": "test-heading", "gain": 2.0})
     assert main(["run", "example-target", "--model", str(model), "--json"]) == 0

@@ -5,10 +5,10 @@ import math
 import numpy as np
 import pytest
 
-from fuzzynav.control.baselines import PurePursuit, Stanley
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.sim import metrics, run_episode
 from fuzzynav.control.base import BatchObservation
+from fuzzynav.control.baselines import PurePursuit, Stanley
+from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import load_scenario
 
 

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.classic.astar_pp import PLANNERS, AStarPurePursuit
 from fuzzynav.catalog.controllers import available, make_controller
+from fuzzynav.control.classic.astar_pp import PLANNERS, AStarPurePursuit
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_world

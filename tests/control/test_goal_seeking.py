@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.base import BatchController, thesis_angle_error
 from fuzzynav.control.goal_seeking import GoalSeekingController, GuardedGoalSeeking
-from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.sim import run_episode
 from fuzzynav.sim.simulator import BatchSimulator

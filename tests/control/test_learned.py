@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control import learned
 from fuzzynav.control.base import Observation
 from fuzzynav.control.learned import (
@@ -15,11 +16,10 @@ from fuzzynav.control.learned import (
     side_distances,
 )
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks import common, fql_avoid, fql_goal
 from fuzzynav.fuzzy.io.document import from_document
-from fuzzynav.catalog.tasks import load_controller
-from fuzzynav.storage import save_json_atomic
+from fuzzynav.learn.tasks import common, fql_avoid, fql_goal
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES
+from fuzzynav.storage import save_json_atomic
 
 
 def test_goal_inputs_use_the_thesis_sign():

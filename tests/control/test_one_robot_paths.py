@@ -30,9 +30,9 @@ def test_a_batch_of_three_drives_as_three_single_runs(controller):
 def test_a_batch_through_the_safety_stop_stops_as_single_runs():
     world = generate_worlds("mixed", 10, 0)[9]  # mixed-0-009: the stop fires (tests/control/test_switching…)
     starts = np.array([world.start, world.start + [0.0, -1.0, 0.3]])
-    batch = BatchSimulator(world, make_controller("fuzzy-5b-thesis"), starts=starts, max_time=20.0).run()
+    batch = BatchSimulator(world, make_controller("fuzzy-5b-layered"), starts=starts, max_time=20.0).run()
     for i, start in enumerate(starts):
-        alone = run_episode(world, make_controller("fuzzy-5b-thesis"), start=start, max_time=20.0)
+        alone = run_episode(world, make_controller("fuzzy-5b-layered"), start=start, max_time=20.0)
         together = batch.trace(i)
         assert together.outcome == alone.outcome
         np.testing.assert_allclose(together.pose, alone.pose, rtol=0, atol=1e-9)

@@ -1,7 +1,9 @@
 """The chapter IV navigators on the seven range sensors with layers, ``fuzzy-5b-rays`` and
-``fuzzy-2b`` (recovery, loop escape, the robot's size), and the thesis variants kept as published.
+``fuzzy-2b`` (recovery, loop escape, the robot's size), and their navigators without those two
+layers kept as they were (``fuzzy-*-layered``: the thesis' navigators with this package's
+anti-orbit guard, turning room, safety stop and hysteresis).
 
-``data/thesis_traces.json`` was written by running ``fuzzy-5b`` / ``fuzzy-2b`` (today's ``-thesis``
+``data/thesis_traces.json`` was written by running ``fuzzy-5b`` / ``fuzzy-2b`` (today's ``-layered``
 variants) of the code before the navigators got their layers (every goal scenario of the package, and the mixed worlds
 0-008 and 0-009 of seed 0, ``data/mixed_worlds.json``): outcome, steps, final pose and sums of the
 poses and commands of each trace.
@@ -14,8 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fuzzynav.control.recovery import recovery_system
 from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
+from fuzzynav.control.recovery import recovery_system
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
@@ -33,8 +35,8 @@ def _scenario(name):
 
 @pytest.mark.parametrize("entry", json.loads((DATA / "thesis_traces.json").read_text()),
                          ids=lambda e: f"{e['scenario']}-{e['controller']}")
-def test_thesis_variants_drive_as_published(entry):
-    trace = run_episode(_scenario(entry["scenario"]), make_controller(entry["controller"] + "-thesis"), seed=0)
+def test_layered_variants_drive_as_recorded(entry):
+    trace = run_episode(_scenario(entry["scenario"]), make_controller(entry["controller"] + "-layered"), seed=0)
     assert (trace.outcome, trace.steps) == (entry["outcome"], entry["steps"])
     np.testing.assert_allclose(trace.pose[-1], entry["final_pose"], rtol=0, atol=1e-9)
     np.testing.assert_allclose(trace.pose.sum(axis=0), entry["pose_sum"], rtol=0, atol=1e-6)
@@ -44,8 +46,8 @@ def test_thesis_variants_drive_as_published(entry):
 
 
 def test_boxed_in_front_of_a_thin_wall_end_it_backs_out_and_reaches_the_goal():
-    world = _scenario("mixed-0-009")  # a thin wall end hides between the rays: the thesis navigator stops for good
-    stuck = run_episode(world, make_controller("fuzzy-5b-thesis"), seed=0)
+    world = _scenario("mixed-0-009")  # a thin wall end hides between the rays: the safety stop holds for good
+    stuck = run_episode(world, make_controller("fuzzy-5b-layered"), seed=0)
     assert stuck.outcome == "timeout" and stuck.speed[-1] == 0.0
     trace = run_episode(world, make_controller("fuzzy-5b-rays"), seed=0)
     assert trace.reached and not trace.collision
@@ -54,11 +56,11 @@ def test_boxed_in_front_of_a_thin_wall_end_it_backs_out_and_reaches_the_goal():
     assert world.world.clearance(trace.pose[:, :2]).min() > world.robot.radius
 
 
-@pytest.mark.parametrize("controller, thesis", [("fuzzy-5b-rays", "fuzzy-5b-thesis"), ("fuzzy-2b", "fuzzy-2b-thesis")])
-def test_a_robot_in_a_u_trap_escapes_by_following_the_boundary(controller, thesis):
+@pytest.mark.parametrize("controller, inner", [("fuzzy-5b-rays", "fuzzy-5b-layered"), ("fuzzy-2b", "fuzzy-2b-layered")])
+def test_a_robot_in_a_u_trap_escapes_by_following_the_boundary(controller, inner):
     scenario = scenario_from_dict(U_TRAP)
-    trapped = run_episode(scenario, make_controller(thesis))
-    assert trapped.outcome == "timeout"  # the thesis navigator circles inside the U
+    trapped = run_episode(scenario, make_controller(inner))
+    assert trapped.outcome == "timeout"  # without loop escape the navigator circles inside the U
     trace = run_episode(scenario, make_controller(controller))
     assert trace.reached and "BF" in set(trace.behaviour.tolist())
 

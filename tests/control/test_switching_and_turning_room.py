@@ -11,7 +11,6 @@ from fuzzynav.viz.trajectories import merged_changes
 from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
-
 RANK = (0, 1)
 
 
@@ -52,8 +51,8 @@ def test_hit_memory_keeps_world_points_seen_from_the_new_pose():
     assert (x, y) == pytest.approx((0.5, 0.0), abs=1e-12)  # remembered, now 0.5 m ahead
 
 
-@pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b-thesis"), ("fig-IV-15b", "fuzzy-2b-thesis"),
-                                              ("fig-IV-23", "fuzzy-5b-thesis")])
+@pytest.mark.parametrize("name, controller", [("fig-IV-15a", "fuzzy-2b-layered"), ("fig-IV-15b", "fuzzy-2b-layered"),
+                                              ("fig-IV-23", "fuzzy-5b-layered")])
 def test_few_switches_and_no_steering_chatter(name, controller):
     scenario = load_scenario(name)
     trace = run_episode(scenario, make_controller(controller))
@@ -86,7 +85,7 @@ def test_step_clearance_is_the_gap_after_one_straight_step():
 
 
 def test_safety_stop_turns_a_hidden_wall_end_into_a_stop():
-    controller = "fuzzy-5b-thesis"
+    controller = "fuzzy-5b-layered"
     # mixed-0-009: a thin wall end hides between the rays until no turn is free (README)
     world = generate_worlds("mixed", 10, 0)[9]
     unguarded = run_episode(world, make_controller(controller, stop_margin=-1.0), seed=0)

@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.base import BatchObservation
 from fuzzynav.control.reference import APPROACH, smoothed_path, swing_offset
 from fuzzynav.control.tracking import DEFAULT_CORNER_RADIUS, FuzzyTracker
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.sim.metrics import cross_track
-from fuzzynav.control.base import BatchObservation
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = ("fuzzy-tracker", "neural-tracker", "anfis-tracker")

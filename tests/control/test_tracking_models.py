@@ -8,11 +8,11 @@ import sys
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.errors import InputError
 from fuzzynav.learn.tasks import trackers as tt
-from fuzzynav.catalog.tasks import load_controller
-from fuzzynav.storage import read_document as read_model
 from fuzzynav.learn.tasks.common import TrainRequest
+from fuzzynav.storage import read_document as read_model
 
 
 def test_generalized_learning_pairs_invert_the_tricycle():

@@ -88,7 +88,9 @@ def edges(name: str, path: Path) -> set[tuple[str, str]]:
             targets = [f"{base}.{alias.name}" for alias in node.names]
         elif isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in skip:
             targets = [m.group(0) for m in MODULE_NAME.finditer(node.value)]
-            found |= {(t, "string") for t in filter(None, map(resolve, targets))}
+            # a dotted name no module of the package starts (an entry point group such as
+            # "fuzzynav.controllers") names no module
+            found |= {(t, "string") for t in filter(None, map(resolve, targets)) if t != "fuzzynav"}
             continue
         found |= {(t, "import") for t in filter(None, map(resolve, targets)) if t.startswith("fuzzynav")}
     found.discard((name, "import"))

@@ -64,3 +64,19 @@ def test_the_api_example_runs_and_saves_a_plot(tmp_path):
 def test_the_readme_counts_the_figures_and_tables_as_reproduce_list_does():
     counts = {int(n) for n in re.findall(r"all (\d+) figures/tables", README.read_text(encoding="utf-8"))}
     assert counts == {len(registry.available())}
+
+
+def test_the_first_screen_says_what_it_is_shows_it_and_installs_it():
+    lines = README.read_text(encoding="utf-8").splitlines()
+    assert len(lines) <= 250
+    screen = "\n".join(lines[:50])
+    assert "**fuzzynav**" in screen and "robot" in screen and "thesis" in screen  # what it is
+    picture = re.search(r"!\[[^\]]+\]\(([^)]+\.gif)\)", screen)
+    assert picture, "no picture in the first screen"
+    gif = README.parent / picture.group(1)
+    assert 10_000 < gif.stat().st_size < 1_000_000
+    assert "Python ≥ 3.11" in screen
+    assert ("python3 -m venv .venv && .venv/bin/pip install -e . && .venv/bin/fuzzynav demo --out fuzzynav-out"
+            in screen)
+    assert "python3 -m venv .venv && .venv/bin/pip install -e '.[test]' && .venv/bin/python -m pytest -q" in screen
+    assert "cold" in screen and "warm" in screen  # the first run's compile time, both ways

@@ -2,7 +2,7 @@
 
 import pytest
 
-from fuzzynav.catalog.experiments import experiment
+from fuzzynav.catalog.experiments import experiment, spec
 
 pytestmark = pytest.mark.slow
 
@@ -34,5 +34,13 @@ def test_fig_vi_28_wall_follower(tmp_path):
 def test_eval_iv_quick(tmp_path):
     result = experiment("eval-IV")(tmp_path, True, 0)
     assert result["fuzzy-2b-thesis/circles"]["n"] == 10
+    assert {"fuzzy-2b-layered/circles", "fuzzy-5b-layered/mixed"} <= set(result)
     assert result["fuzzy-2b-thesis/circles"]["success_rate"] >= 0.8
     assert result["fuzzy-5b-thesis/mixed"]["success_rate"] >= 0.7
+
+
+@pytest.mark.parametrize("key", ["fig-IV-12", "fig-IV-13", "fig-IV-15", "fig-IV-22", "fig-IV-23", "fig-VI-28"])
+def test_each_claim_holds_with_the_published_tables(tmp_path, key):
+    verdict, checks = spec(key).claim.evaluate(experiment(key)(tmp_path, True, 0))
+    assert verdict == "reproduced", [c for c in checks if not c.passed]
+    assert any(c.source == "package" and "published" in c.name for c in checks)  # it compares with the tables' run

@@ -2,7 +2,7 @@
 
 import pytest
 
-from fuzzynav.catalog.experiments import experiment
+from fuzzynav.catalog.experiments import experiment, spec
 
 pytestmark = pytest.mark.slow
 
@@ -27,3 +27,9 @@ def test_fig_v_28_and_pursuit(tmp_path):
         result = experiment(key)(tmp_path, True, 0)
         assert all(result[name]["captured"] for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker"))
         assert (tmp_path / f"{key}.png").is_file()
+
+
+@pytest.mark.parametrize("key", ["fig-V-7", "fig-V-10", "fig-V-11", "fig-V-19", "fig-V-28", "fig-V-33"])
+def test_each_claim_holds_with_the_published_table(tmp_path, key):
+    verdict, checks = spec(key).claim.evaluate(experiment(key)(tmp_path, True, 0))
+    assert verdict == "reproduced", [c for c in checks if not c.passed]

@@ -4,10 +4,10 @@ import json
 
 import pytest
 
+from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.cli import main
 from fuzzynav.errors import InputError
 from fuzzynav.experiments.evaluation import evaluate
-from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_worlds
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from fuzzynav.cli import main
 from fuzzynav.catalog import experiments as registry
+from fuzzynav.cli import main
 from fuzzynav.experiments.claims import NOT_REPRODUCED, PARTLY, REPRODUCED, Check, Claim, verdict_of
 
 
@@ -79,9 +79,17 @@ def test_index_puts_each_claim_beside_its_figure_and_works_offline(tmp_path, cap
 
 
 def test_a_claim_that_does_not_hold_is_reported_as_such():
-    verdict, checks = claim_of("fig-VI-28").evaluate({"fig-VI-27": {"outcome": "reached"},
-                                                      "fig-VI-28": {"outcome": "reached"}})
-    assert verdict == PARTLY and [c.passed for c in checks] == [True, False] and checks[1].value == "reached"
+    from fuzzynav.experiments.routes import reference
+
+    def runs(bend, corner):  # the published routes, with these outcomes
+        return {name: {"outcome": outcome, "route": reference(f"fig-VI-28/{name}")["route"]}
+                for name, outcome in (("fig-VI-27", bend), ("fig-VI-27b", "reached"), ("fig-VI-28", corner))}
+
+    verdict, checks = claim_of("fig-VI-28").evaluate(runs("reached", "reached"))
+    assert verdict == PARTLY and [c.passed for c in checks] == [True, False, True, True, True, True]
+    assert checks[1].value == "reached"
+    verdict, checks = claim_of("fig-VI-28").evaluate(runs("collision", "reached"))
+    assert verdict == PARTLY and [c.passed for c in checks][:2] == [False, False]
     verdict, checks = claim_of("fig-VI-28").evaluate({"fig-VI-27": {"outcome": "collision"},
                                                       "fig-VI-28": {"outcome": "reached"}})
     assert verdict == NOT_REPRODUCED

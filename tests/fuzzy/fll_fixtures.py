@@ -197,7 +197,7 @@ of three (computed by the rule pass)."""
 
 # MATLAB-like Mamdani output: six terms, five of them Bells (non-zero everywhere), concluded by two
 # blocks of Maximum aggregation, one implying by the minimum and one by the product: the kernel
-# max-combines its units four at a time (compiled._max_units)
+# max-combines its units four at a time (staged_kernels._max_units)
 _BELL_OUTPUT = "".join(f"  term: b{k} Bell {0.2 * k:.1f} 0.15 {1.5 + k}\n" for k in range(5)) + \
     "  term: tri Triangle 0.7 0.8 0.9\n"
 OVERLAPPING = ("Engine: overlapping\nInputVariable: x\n  enabled: true\n  range: 0.0 10.0\n  lock-range: false\n"

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.term_columns import BELL, GAUSSIAN, SIGMOID
+from fuzzynav.fuzzy.engine.fuzzify_terms import BELL, GAUSSIAN, SIGMOID
 
 OUTPUT_TOLERANCE = 1e-12  # × the output's range, where the kernel fuzzifies a Gaussian, Bell or Sigmoid term
 

@@ -4,9 +4,10 @@
 import numpy as np
 import pytest
 
-from fuzzynav.fuzzy.engine import centroid_rows, compiled, norms
-from fuzzynav.fuzzy.engine.compiled import AND, OR
+from fuzzynav.fuzzy.engine import centroid_rows, norms, staged_kernels
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
+from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
+from fuzzynav.fuzzy.engine.staged_kernels import AND, OR
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from tests.fuzzy.fll_fixtures import ENGINES
@@ -42,7 +43,7 @@ def _shapes(rng, n_terms, size):
     return np.ascontiguousarray(shapes), x
 
 
-@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+@pytest.mark.parametrize("reduction", range(len(REDUCTIONS)), ids=REDUCTIONS)
 def test_integral_skips_only_what_cannot_change_the_result(reduction):
     """Skipping zero activations and samples outside a term's support gives the very bits of
     sampling every term everywhere, for every implication and aggregation."""
@@ -64,18 +65,18 @@ def test_integral_skips_only_what_cannot_change_the_result(reduction):
                 units, unit_term = rows, terms
             imps = np.full(unit_term.size, implication, dtype=np.int64)
             fast, full = np.empty(300), np.empty(300)
-            compiled.integral(degrees, rows, units, unit_term, imps, shapes, support, x, aggregation, reduction, fast)
-            compiled.integral(degrees, rows, units, unit_term, imps, shapes, everywhere, x, aggregation, reduction, full)
+            staged_kernels.integral(degrees, rows, units, unit_term, imps, shapes, support, x, aggregation, reduction, fast)
+            staged_kernels.integral(degrees, rows, units, unit_term, imps, shapes, everywhere, x, aggregation, reduction, full)
             np.testing.assert_array_equal(fast, full, err_msg=f"{SNORMS[aggregation]} / {TNORMS[implication]}")
             assert np.isnan(fast[:3]).all()
             if (SNORMS[aggregation], TNORMS[implication]) == ("Maximum", "Minimum"):
                 assert (np.isfinite(fast) == (degrees > 0).any(axis=0)).all()
 
 
-@pytest.mark.parametrize("reduction", range(len(compiled.REDUCTIONS)), ids=compiled.REDUCTIONS)
+@pytest.mark.parametrize("reduction", range(len(REDUCTIONS)), ids=REDUCTIONS)
 def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
     """Units of Maximum aggregation whose supports overlap are max-combined four in one pass
-    (compiled._max_units): the very bits of one pass each, the minimum and the product mixed, with
+    (staged_kernels._max_units): the very bits of one pass each, the minimum and the product mixed, with
     zero degrees, a unit of narrow support among them and rows outside [0, 1] or NaN."""
     rng = np.random.default_rng(10 + reduction)
     x = np.linspace(0.0, 1.0, 201)
@@ -91,10 +92,10 @@ def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
     degrees[3, 2], degrees[1, 3] = 1.5, np.nan  # rows that take the full path
     rows = units = np.arange(unit_term.size, dtype=np.int64)
     maximum = SNORMS.index("Maximum")
-    assert compiled._spans_overlap(support, unit_term, units, 0)[2]
+    assert staged_kernels._spans_overlap(support, unit_term, units, 0)[2]
     four, one_by_one = np.empty(400), np.empty(400)
     for use_four, out in ((True, four), (False, one_by_one)):
-        compiled._integral(use_four, degrees, rows, units, unit_term, implication, np.ascontiguousarray(shapes),
+        staged_kernels._integral(use_four, degrees, rows, units, unit_term, implication, np.ascontiguousarray(shapes),
                            support, x, maximum, reduction, out, 0, 400)
     np.testing.assert_array_equal(four, one_by_one)
     assert np.isfinite(four[4:]).mean() > 0.9
@@ -120,8 +121,8 @@ def test_a_sparse_centroid_computed_across_rows_gives_the_bits_of_row_by_row():
     maximum = SNORMS.index("Maximum")
     assert centroid_rows.applies(unit_term, implication, support, x.size)
     across_rows, row_by_row = np.empty(1000), np.empty(1000)
-    compiled.integral(degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, across_rows)
-    compiled._integral(False, degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, row_by_row,
+    staged_kernels.integral(degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, across_rows)
+    staged_kernels._integral(False, degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, row_by_row,
                        0, 1000)
     np.testing.assert_array_equal(across_rows, row_by_row)
     assert np.isnan(across_rows[:3]).all() and np.isfinite(across_rows[3:5]).all()
@@ -159,7 +160,7 @@ def _weighted_reference(degrees, rows, groups, aggregation, coefficients, consta
 
 @pytest.mark.parametrize("n_inputs", [0, 1, 2, 3, 4, 5])
 def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_time(n_inputs):
-    """Takagi–Sugeno outputs of one to four inputs take their groups four by four (affine.py): the
+    """Takagi–Sugeno outputs of one to four inputs take their groups four by four (sugeno_outputs.py): the
     same bits as the groups one by one, over several chunks of rows, with folded groups, NaN and
     infinite inputs, and every count of groups around the tile."""
     rng = np.random.default_rng(3)
@@ -176,7 +177,7 @@ def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_
         for aggregation in (SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")):
             for weighted_sum in (False, True):
                 out = np.empty(n)
-                compiled.weighted_affine(degrees, rows, groups, np.zeros(groups.size, dtype=np.bool_),
+                staged_kernels.weighted_affine(degrees, rows, groups, np.zeros(groups.size, dtype=np.bool_),
                                          np.ones((0, 0), dtype=np.bool_), False, aggregation, coefficients, constants,
                                          inputs, weighted_sum, out)
                 with np.errstate(invalid="ignore"):  # inf − inf and 0 / 0, as in the kernel
@@ -192,7 +193,7 @@ def test_rule_degrees_give_the_bits_of_the_norms_applied_pair_by_pair(conjunctio
     bounds among the degrees, over several chunks of rows: the bits of each operator applied in
     turn with tnorm_into / snorm_into."""
     rng = np.random.default_rng(6)
-    n = 2 * compiled.CHUNK + 77
+    n = 2 * staged_kernels.CHUNK + 77
     table = rng.random((6, n))
     table[:, :40] = rng.choice([np.nan, 0.0, 1.0, 0.5], (6, 40))
     operators = [[], [AND], [AND, AND], [AND, AND, AND], [AND, AND, AND, AND, AND], [AND, OR, AND, AND],
@@ -209,7 +210,7 @@ def test_rule_degrees_give_the_bits_of_the_norms_applied_pair_by_pair(conjunctio
         expected.append(value)
     weights = np.array([1.0, 0.5, 1.0, 0.25, 1.0, 1.0, 0.75, 1.0])
     out = np.empty((len(operators), n))
-    compiled.rule_degrees(table, np.array(program), np.array(starts), weights, conjunction, SNORMS.index("Maximum"), out)
+    staged_kernels.rule_degrees(table, np.array(program), np.array(starts), weights, conjunction, SNORMS.index("Maximum"), out)
     for r, value in enumerate(expected):
         reference = value if weights[r] == 1.0 else weights[r] * value
         np.testing.assert_array_equal(out[r], reference, err_msg=f"rule {r}: {operators[r]}")

@@ -72,25 +72,25 @@ def test_what_the_kernel_does_not_take_keeps_the_numpy_path_and_says_why(name, r
 
 
 def test_blocks_of_rows_carry_lock_previous_across_their_boundaries():
-    """The kernel runs big batches by blocks of rows (fused.ROWS at least); lock-previous still
+    """The kernel runs big batches by blocks of rows (fused_kernel.ROWS at least); lock-previous still
     carries the last value of one block into the next, as the NumPy path over the whole batch."""
-    from fuzzynav.fuzzy.engine import fused
+    from fuzzynav.fuzzy.engine import fused_kernel
 
     engine = from_fll_engine(_every_term_engine())
-    X = _inputs(engine, 3 * fused.ROWS + 10)
-    gaps = [fused.ROWS - 1, fused.ROWS, 2 * fused.ROWS, 2 * fused.ROWS + 1]
+    X = _inputs(engine, 3 * fused_kernel.ROWS + 10)
+    gaps = [fused_kernel.ROWS - 1, fused_kernel.ROWS, 2 * fused_kernel.ROWS, 2 * fused_kernel.ROWS + 1]
     X[gaps] = np.nan  # no rule fires: w keeps the value of the row before (lock-previous)
     out = assert_fused_matches_numpy_path(engine, X)
     w = engine.output_names.index("w")
-    assert np.all(out[gaps, w] == out[[fused.ROWS - 2, fused.ROWS - 2, 2 * fused.ROWS - 1, 2 * fused.ROWS - 1], w])
+    assert np.all(out[gaps, w] == out[[fused_kernel.ROWS - 2, fused_kernel.ROWS - 2, 2 * fused_kernel.ROWS - 1, 2 * fused_kernel.ROWS - 1], w])
     assert np.isfinite(out[gaps, w]).all()
 
 
 @pytest.mark.parametrize("name", ["mamdani", "chained", "snorm-EinsteinSum"])
 def test_the_flat_buffers_give_back_every_packed_array(name):
-    """pack.flatten's three buffers, unpacked as the kernel does (fused._unpack), are the Packed
+    """pack.flatten's three buffers, unpacked as the kernel does (fused_kernel._unpack), are the Packed
     arrays themselves: same order, dtypes, shapes and values."""
-    from fuzzynav.fuzzy.engine.fused import _unpack
+    from fuzzynav.fuzzy.engine.fused_kernel import _unpack
     from fuzzynav.fuzzy.engine.pack import flatten
 
     engine = from_fll_engine(ENGINES[name])

@@ -5,8 +5,18 @@ import math
 import numpy as np
 import pytest
 
-from fuzzynav.fuzzy import (Bell, Gaussian, Ramp, Sigmoid, Singleton, Trapezoidal, Triangular, Variable,
-                            check_strong_partition, strong_partition)
+from fuzzynav.fuzzy import (
+    Bell,
+    Gaussian,
+    Ramp,
+    Sigmoid,
+    Singleton,
+    Trapezoidal,
+    Triangular,
+    Variable,
+    check_strong_partition,
+    strong_partition,
+)
 from fuzzynav.fuzzy.membership import make
 
 

@@ -3,8 +3,7 @@
 import math
 
 import numpy as np
-from hypothesis import given, settings
-from hypothesis import strategies as st
+from hypothesis import given, settings, strategies as st
 
 from fuzzynav.fuzzy import FuzzySystem, Singleton, Variable, check_strong_partition, rules_from_grid, strong_partition
 from fuzzynav.fuzzy.systems import get_system

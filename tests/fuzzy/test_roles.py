@@ -5,10 +5,10 @@ import json
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.catalog.roles import ROLES, default_system, load_replacement, systems_from_options
 from fuzzynav.cli import main
 from fuzzynav.control.base import thesis_angle_error
-from fuzzynav.catalog.roles import ROLES, default_system, load_replacement, systems_from_options
-from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import FuzzySystem
 from fuzzynav.fuzzy.io import load, save
@@ -112,7 +112,7 @@ def test_every_role_drives_the_compiled_navigators(controller, scenario, tmp_pat
 
 
 def _campaign(out, *extra):
-    return main(["bench", "circles:3:2", "--controllers", "goal-seeking,fuzzy-2b,pure-pursuit", "--workers", "1",
+    return main(["bench", "circles:3:2", "--controllers", "goal-seeking,fuzzy-2b,dwa", "--workers", "1",
                  "--quiet", "--gallery", "0", "--out", str(out), *extra])
 
 
@@ -126,7 +126,7 @@ def test_bench_fis_replaces_the_role_in_every_controller_that_has_it(edited_gsb,
     plain, edited = _runs(tmp_path / "plain"), _runs(tmp_path / "edited")
     assert plain.keys() == edited.keys()
     changed = {key[1] for key, row in edited.items() if row["path_length_m"] != plain[key]["path_length_m"]}
-    assert changed == {"goal-seeking", "fuzzy-2b"}  # both have gsb; pure pursuit has no fuzzy system
+    assert changed == {"goal-seeking", "fuzzy-2b"}  # both have gsb; dwa has no fuzzy system
     summary = json.loads((tmp_path / "edited" / "summary.json").read_text())
     assert summary["arguments"]["fis"] == {"gsb": str(edited_gsb.resolve())}
     # --resume checks the replacement: other rule bases (or none) cannot be mixed into these runs

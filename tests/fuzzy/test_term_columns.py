@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.term_columns import TRAPEZOID, pack_term, term_column
-from fuzzynav.fuzzy.terms import PiShape, SShape, ZShape
+from fuzzynav.fuzzy.engine.fuzzify_terms import TRAPEZOID, pack_term, term_column
 from fuzzynav.fuzzy.membership import Trapezoidal
+from fuzzynav.fuzzy.terms import PiShape, SShape, ZShape
 
 
 def _bits(values: np.ndarray) -> np.ndarray:

@@ -8,7 +8,7 @@ import sys
 import numpy as np
 import pytest
 
-from fuzzynav.fuzzy.engine.term_columns import BELL, GAUSSIAN, SIGMOID, pack_term, term_column
+from fuzzynav.fuzzy.engine.fuzzify_terms import BELL, GAUSSIAN, SIGMOID, pack_term, term_column
 from fuzzynav.fuzzy.engine.vmath import exp_column, log_column
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid
 
@@ -87,7 +87,7 @@ def test_exp_terms_in_the_kernel_against_numpy(mf):
 
 PLAIN_PYTHON = """
 import json, numpy as np
-from fuzzynav.fuzzy.engine.reduce import centroid_sums
+from fuzzynav.fuzzy.engine.sampled_defuzzify import centroid_sums
 from fuzzynav.fuzzy.engine.vmath import exp_column, log_column
 x = np.array(json.loads(input()))
 e, g = np.empty_like(x), np.empty_like(x)

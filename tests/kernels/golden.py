@@ -12,8 +12,9 @@ EPISODES = [(name, controller) for name in ("fig-IV-15a", "fig-IV-22a", "fig-IV-
 EPISODES += [("example-path", "fuzzy-tracker"), ("example-target", "pure-pursuit"), ("path-v", "stanley")]
 MIXED = [(i, controller) for i in (0, 3, 9) for controller in ("fuzzy-2b", "fuzzy-5b")]
 EVERY = 10  # poses kept: every 10th step and the last
-# the keys keep the names recorded at the base; fuzzy-2b / fuzzy-5b there are today's thesis variants
-THESIS = {"fuzzy-2b": "fuzzy-2b-thesis", "fuzzy-5b": "fuzzy-5b-thesis"}
+# the keys keep the names recorded at the base; goal-seeking, fuzzy-2b / fuzzy-5b there are today's
+# thesis navigators with this package's layers (anti-orbit guard, turning room, safety stop, hysteresis)
+THESIS = {"goal-seeking": "goal-seeking-guarded", "fuzzy-2b": "fuzzy-2b-layered", "fuzzy-5b": "fuzzy-5b-layered"}
 
 
 def run_all() -> dict:

@@ -57,7 +57,7 @@ worlds = json.loads(Path(%r).read_text())["worlds"]
 trace = run_episode(scenario_from_dict(worlds["dense-0-007"]), make_controller("fuzzy-2b"), seed=0)
 print(json.dumps({"jit": hasattr(route.target, "py_func"), "pose": trace.pose.tolist(),
                   "labels": trace.behaviour.tolist()}))
-""" % str(Path(__file__).parents[1] / "control" / "data" / "robust_traces.json")
+""" % str(Path(__file__).parents[1] / "control" / "data" / "robust_traces.json")  # noqa: UP031 (braces in the script)
 
 
 def _run(disable: bool, script: str = SCRIPT) -> dict:

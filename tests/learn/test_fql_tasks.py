@@ -6,16 +6,16 @@ import math
 import numpy as np
 import pytest
 
+from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control import learned
 from fuzzynav.control.learned import LearnedAvoidanceNavigator
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks import fql_avoid, fql_wall
 from fuzzynav.experiments import evaluation
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.learn.envs import RobotState
-from fuzzynav.catalog.tasks import load_controller
-from fuzzynav.storage import save_json_atomic
+from fuzzynav.learn.tasks import fql_avoid, fql_wall
 from fuzzynav.sim.simulator import BatchSimulator
+from fuzzynav.storage import save_json_atomic
 from fuzzynav.world.shapes import Circle
 from fuzzynav.world.world import World
 

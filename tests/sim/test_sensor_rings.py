@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from fuzzynav.cli import main
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import main
 from fuzzynav.errors import InputError
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict

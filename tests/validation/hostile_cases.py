@@ -2,7 +2,7 @@
 line (or Python code) to run, and what must happen — exit status 2 (or an InputError) with the
 expected text in the message, or, for inputs that are fine, exit 0.
 
-Used by ``test_hostile_inputs.py`` (in process) and by ``benchmarks/hostile_inputs.py`` (each case
+Used by ``test_hostile_inputs.py`` (in process) and by ``hostile_subprocesses.py`` (each case
 a subprocess with a 10 s timeout: tracebacks, hangs and silent wrong answers counted).
 """
 

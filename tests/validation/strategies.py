@@ -10,8 +10,7 @@ from __future__ import annotations
 import copy
 import os
 
-from hypothesis import HealthCheck, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, settings, strategies as st
 
 FUZZ = settings(max_examples=int(os.environ.get("FUZZYNAV_FUZZ_EXAMPLES", "1000")), derandomize=True,
                 deadline=None, database=None,

@@ -6,15 +6,15 @@ from __future__ import annotations
 
 import io
 import json
-from contextlib import redirect_stderr, redirect_stdout
 import tempfile
+from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 
 import numpy as np
 import yaml
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
 
+from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.cli import main
 from fuzzynav.cli.fis import _read_csv
 from fuzzynav.errors import InputError
@@ -22,10 +22,9 @@ from fuzzynav.fuzzy.io import dumps, from_document, loads, to_document
 from fuzzynav.fuzzy.systems import get_system
 from fuzzynav.learn.checkpoint import check_same_run, load_checkpoint, restore, save_checkpoint
 from fuzzynav.learn.tabular import TabularLearner
-from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.storage import save_document
 from fuzzynav.validation import parse_yaml
-from fuzzynav.world.scenario import read_yaml, scenario_from_dict, BUILTIN_DIR
+from fuzzynav.world.scenario import BUILTIN_DIR, read_yaml, scenario_from_dict
 
 from .strategies import FUZZ, documents, mutated, mutated_text
 

@@ -5,6 +5,7 @@
 - :mod:`.cells` — one unit of work (a world × seed, all its controllers), run in a worker;
 - :mod:`.backends` — local process pool or Ray tasks, the same cells and results;
 - :mod:`.campaign` — runs.csv / runs.jsonl appended as cells finish, resume, final order;
-- :mod:`.stats` and :mod:`.report` — rates with Wilson intervals, medians, summary, plots, index.html;
-- :mod:`.files` — atomic writes (temporary file + rename).
+- :mod:`.stats` and :mod:`.report` — rates with Wilson intervals, medians, summary, plots, index.html,
+
+every file written atomically by :mod:`fuzzynav.storage`.
 """

@@ -26,13 +26,13 @@ from pathlib import Path
 
 from fuzzynav.bench.backends import execute
 from fuzzynav.bench.cells import Cell
-from fuzzynav.bench.files import write_atomic
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
+from fuzzynav.storage import write_text_atomic
 
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
            "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",
-           "barn_score")
+           "barn_score", "collision_by")
 
 
 @dataclass(frozen=True)
@@ -113,8 +113,8 @@ def read_runs(out: Path) -> list[dict]:
 
 
 def _write_all(out: Path, rows: list[dict]) -> None:
-    write_atomic(out / "runs.jsonl", json_lines(rows))
-    write_atomic(out / "runs.csv", ",".join(COLUMNS) + "\n" + csv_lines(rows))
+    write_text_atomic(out / "runs.jsonl", json_lines(rows))
+    write_text_atomic(out / "runs.csv", ",".join(COLUMNS) + "\n" + csv_lines(rows))
 
 
 def _describe(record: dict) -> str:
@@ -134,7 +134,7 @@ def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
             raise InputError(f"its runs were made with {_describe(before)}, this campaign gives {_describe(record)}: "
                              "runs of different rule bases cannot be mixed (resume with the same --fis, or choose "
                              "another --out)", source=str(out), field="--fis")
-    write_atomic(path, json.dumps(record, indent=1) + "\n")
+    write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
 
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,

@@ -5,9 +5,11 @@ and the BARN score.
   start into the goal's tolerance disc: the shortest path to the goal centre
   (:func:`fuzzynav.world.planning.shortest_path`, radius = the simulated robot's) less the
   tolerance (exact when its last straight piece is longer than the tolerance, as it is in open
-  goal regions), computed once per world and cached (in memory, and on disk under the
+  goal regions), among the obstacles that stand still (the moving ones are left out), computed once per world and cached (in memory, and on disk under the
   campaign's ``cache/`` folder); ``path_ratio`` = driven length / that length, for runs that
   reached the goal.
+- ``collision_by``: ``"robot"`` or ``"obstacle"`` after a collision (who moved into whom,
+  :mod:`fuzzynav.sim.fault`); the summary counts the robot's as ``collision_at_fault``.
 - ``barn_score`` (worlds with a BARN reference): the BARN Challenge's metric, success ×
   t_opt / clip(t, 2 t_opt, 8 t_opt) with t_opt = optimal path length / 2 m/s (the challenge's
   ``run.py``), the optimal path length being BARN's own (``benchmark.json``).
@@ -20,7 +22,7 @@ import json
 import math
 from pathlib import Path
 
-from fuzzynav.bench.files import write_atomic
+from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.planning import path_length, shortest_path
 from fuzzynav.world.scenario import Scenario
 
@@ -47,10 +49,10 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
     if file is not None and file.is_file():
         length = json.loads(file.read_text(encoding="utf-8"))["shortest_path_m"]
     else:
-        path = shortest_path(scenario.world, scenario.start, scenario.goal.position, radius)
+        path = shortest_path(scenario.world.standing(), scenario.start, scenario.goal.position, radius)
         length = None if path is None else round(max(path_length(path) - scenario.goal.tolerance, 1e-6), 6)
         if file is not None:
-            write_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
+            write_text_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
     _MEMORY[key] = length
     return length
 
@@ -77,6 +79,7 @@ def run_row(numbers: dict, shortest: float | None, reference: dict) -> dict:
         "steering_variation_rad": numbers["steering_variation_rad"],
         "final_distance_m": numbers["final_distance_m"],
         "barn_score": barn_score(reached, numbers["time_s"], optimal) if optimal else None,
+        "collision_by": numbers["collision_by"],
     }
 
 

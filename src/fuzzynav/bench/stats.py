@@ -44,6 +44,8 @@ def summarise(rows: list[dict]) -> list[dict]:
             k = sum(run["outcome"] == outcome for run in runs)
             low, high = wilson(k, n)
             record[outcome] = {"count": k, "rate": k / n, "ci95": [low, high]}
+        k = sum(run.get("collision_by") == "robot" for run in runs)
+        record["collision_at_fault"] = {"count": k, "rate": k / n, "ci95": list(wilson(k, n))}
         reached = [run for run in runs if run["outcome"] == "reached"]
         record["median_time_s"] = _median(run["time_s"] for run in reached)
         record["median_path_ratio"] = _median(run["path_ratio"] for run in reached)

@@ -1,63 +1,154 @@
 """Controllers by name: ``fuzzynav run SCENARIO --controller NAME`` looks names up here.
 
-Each entry maps a command-line name to ``"module:factory"``; the module is imported only when
-the controller is made, so listing names stays cheap. A factory takes keyword options and
-returns a :class:`~fuzzynav.control.base.Controller`.
+Each controller is one :class:`~fuzzynav.catalog.specs.ControllerSpec`, registered once below
+with :func:`register_controller` (a name or alias taken twice is an error). Its factory is a
+``"module:function"`` string, imported only when the controller is made, so listing names stays
+cheap. An installed distribution adds its own controllers through the entry point group
+``fuzzynav.controllers`` (an object: a spec or a list of specs), read on first use::
+
+    [project.entry-points."fuzzynav.controllers"]
+    my-navigator = "my_package.navigator:NAVIGATOR"
 """
 
 from __future__ import annotations
 
+from fuzzynav.catalog.specs import SENSES, ControllerSpec
 from fuzzynav.control.base import Controller
-from fuzzynav.lookup import descriptions, resolve
+from fuzzynav.errors import InputError
+from fuzzynav.lookup import Registry, load
 
-# name -> ("module:factory", one-line description)
-CONTROLLERS: dict[str, tuple[str, str]] = {}
-CONTROLLERS["goal-seeking"] = ("fuzzynav.control.goal_seeking:make", "goal seeking alone, Table IV.1 (§IV.5.1)")
-CONTROLLERS["fuzzy-2b"] = ("fuzzynav.control.robust:fuzzy_2b",
-                           "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following)")
-CONTROLLERS["fuzzy-5b"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
-                           "fuzzy-5b-gap (lidar) aimed along a car route round what it has seen, with recovery "
-                           "and loop escape (the default)")
-CONTROLLERS["fuzzy-5b-rays"] = ("fuzzynav.control.robust:fuzzy_5b",
-                                "fuzzy-5b-thesis (7 range sensors) with recovery (backing out) and loop escape "
-                                "(boundary following); the default before fuzzy-5b moved to the lidar")
-CONTROLLERS["fuzzy-2b-thesis"] = ("fuzzynav.control.robust:fuzzy_2b_thesis",
-                                  "goal seeking + obstacle avoidance by D_ro, θ_o, Table IV.2, switch of Fig IV.9")
-CONTROLLERS["fuzzy-5b-thesis"] = ("fuzzynav.control.robust:fuzzy_5b_thesis",
-                                  "GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16 (§IV.7), 7 range sensors")
-CONTROLLERS["fuzzy-2b-gap"] = ("fuzzynav.control.avoidance:make_gap",
-                               "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits (opt-in)")
-CONTROLLERS["fuzzy-5b-gap"] = ("fuzzynav.control.five_behaviours:make_gap",
-                               "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits (inside fuzzy-5b)")
-CONTROLLERS["fuzzy-5b-gap-robust"] = ("fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
-                                      "another name of fuzzy-5b (the same navigator)")
-CONTROLLERS["wall-follow"] = ("fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower, Table VI.2")
-CONTROLLERS["fuzzy-tracker"] = ("fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path/target tracker, Table V.1 (§V.3.1)")
-CONTROLLERS["neural-tracker"] = ("fuzzynav.learn.tasks.trackers:neural_tracker",
-                                 "MLP inverse-model tracker (§V.3.2), trained on the fly")
-CONTROLLERS["anfis-tracker"] = ("fuzzynav.learn.tasks.trackers:anfis_tracker",
-                                "ANFIS tracker, 1 input, 5 MFs (§V.3.5), trained on the fly")
-CONTROLLERS["pure-pursuit"] = ("fuzzynav.control.baselines:pure_pursuit", "pure pursuit baseline (Coulter 1992)")
-CONTROLLERS["stanley"] = ("fuzzynav.control.baselines:stanley", "Stanley steering baseline (Thrun et al. 2006)")
-CONTROLLERS["dwa"] = ("fuzzynav.control.classic.dwa:make",
-                      "Dynamic Window Approach (Fox, Burgard & Thrun 1997) on the 7 range sensors")
-CONTROLLERS["apf"] = ("fuzzynav.control.classic.apf:make",
-                      "artificial potential field (Khatib 1986) on the 7 range sensors")
-CONTROLLERS["vfh"] = ("fuzzynav.control.classic.vfh:make", "VFH+ (Ulrich & Borenstein 1998) on the 7 range sensors")
-CONTROLLERS["astar-pp"] = ("fuzzynav.control.classic.astar_pp:make",
-                           "MAP-AWARE reference: A* on the inflated map + pure pursuit (knows the whole map)")
+CONTROLLERS: Registry[ControllerSpec] = Registry("controller", "--controller", ControllerSpec,
+                                                group="fuzzynav.controllers")
+
+
+def register_controller(spec: ControllerSpec) -> ControllerSpec:
+    """Add ``spec`` to the controllers (a ``ValueError`` when its name or an alias is taken)."""
+    return CONTROLLERS.register(spec)
+
+
+GSB = {"gsb": "goal-seeking"}
+TWO = {**GSB, "oab": "obstacle-avoidance"}
+FIVE = {**GSB, "foa": "foa", "roa": "roa", "loa": "loa", "vrb": "vrb"}
+GOAL, TRACK = ("goal",), ("path", "target")
+
+register_controller(ControllerSpec(
+    "goal-seeking", "fuzzynav.control.goal_seeking:make", "goal seeking alone (35 rules)",
+    "thesis Table IV.1, §IV.5.1", GOAL, roles=GSB))
+register_controller(ControllerSpec(
+    "fuzzy-5b", "fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
+    "the default navigator: the five behaviours on a lidar, steering through the gap that fits the body, "
+    "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
+    "and loop escape; version 1 of this name is fuzzy-5b-rays",
+    "thesis §IV.7; Dolgov et al. 2008", GOAL, "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=2))
+register_controller(ControllerSpec(
+    "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
+    "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "
+    "lidar scans (for dynamic worlds)", "this package; time to collision after Lee 1976", GOAL, "lidar"))
+register_controller(ControllerSpec(
+    "fuzzy-5b-rays", "fuzzynav.control.robust:fuzzy_5b",
+    "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors: "
+    "version 1 of fuzzy-5b", "thesis §IV.7; Lumelsky & Stepanov 1987", GOAL, "rays", roles=FIVE))
+register_controller(ControllerSpec(
+    "fuzzy-2b", "fuzzynav.control.robust:fuzzy_2b",
+    "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors",
+    "thesis Table IV.2, Fig IV.9; Lumelsky & Stepanov 1987", GOAL, "rays", roles=TWO))
+register_controller(ControllerSpec(
+    "fuzzy-2b-thesis", "fuzzynav.control.robust:fuzzy_2b_thesis",
+    "goal seeking + obstacle avoidance by distance and angle of the nearest obstacle, switched, as published",
+    "thesis Table IV.2, Fig IV.9", GOAL, "rays", roles=TWO))
+register_controller(ControllerSpec(
+    "fuzzy-5b-thesis", "fuzzynav.control.robust:fuzzy_5b_thesis",
+    "the five behaviours GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16, as published",
+    "thesis §IV.7", GOAL, "rays", roles=FIVE))
+register_controller(ControllerSpec(
+    "fuzzy-2b-layered", "fuzzynav.control.robust:fuzzy_2b_layered",
+    "fuzzy-2b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
+    "thesis Table IV.2, Fig IV.9; this package's layers", GOAL, "rays", roles=TWO))
+register_controller(ControllerSpec(
+    "fuzzy-5b-layered", "fuzzynav.control.robust:fuzzy_5b_layered",
+    "fuzzy-5b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
+    "thesis §IV.7; this package's layers", GOAL, "rays", roles=FIVE))
+register_controller(ControllerSpec(
+    "goal-seeking-guarded", "fuzzynav.control.goal_seeking:make_guarded",
+    "goal-seeking with this package's anti-orbit guard", "thesis Table IV.1; this package's layer", GOAL,
+    roles=GSB))
+register_controller(ControllerSpec(
+    "fuzzy-2b-gap", "fuzzynav.control.avoidance:make_gap",
+    "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits; no recovery, no route (opt-in)",
+    "thesis Table IV.2", GOAL, "lidar", roles=TWO))
+register_controller(ControllerSpec(
+    "fuzzy-5b-gap", "fuzzynav.control.five_behaviours:make_gap",
+    "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits; no recovery, no route "
+    "(the core of fuzzy-5b)", "thesis §IV.7", GOAL, "lidar", roles=FIVE))
+register_controller(ControllerSpec(
+    "wall-follow", "fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower",
+    "thesis Table VI.2", GOAL, "rays", goal_directed=False, roles={"wall": "wall-follow"}))
+register_controller(ControllerSpec(
+    "fuzzy-tracker", "fuzzynav.control.tracking:fuzzy_tracker", "fuzzy path / target tracker (25 rules)",
+    "thesis Table V.1, §V.3.1", TRACK, roles={"tracker": "tracking"}))
+register_controller(ControllerSpec(
+    "neural-tracker", "fuzzynav.learn.tasks.trackers:neural_tracker",
+    "MLP inverse-model tracker, trained on the fly", "thesis §V.3.2", TRACK))
+register_controller(ControllerSpec(
+    "anfis-tracker", "fuzzynav.learn.tasks.trackers:anfis_tracker",
+    "ANFIS tracker, 1 input, 5 MFs, trained on the fly", "thesis §V.3.5", TRACK))
+register_controller(ControllerSpec(
+    "pure-pursuit", "fuzzynav.control.baselines:pure_pursuit", "pure pursuit baseline", "Coulter 1992", TRACK))
+register_controller(ControllerSpec(
+    "stanley", "fuzzynav.control.baselines:stanley", "Stanley steering baseline", "Thrun et al. 2006", TRACK))
+register_controller(ControllerSpec(
+    "dwa", "fuzzynav.control.classic.dwa:make", "Dynamic Window Approach on the 7 range sensors",
+    "Fox, Burgard & Thrun 1997", GOAL, "rays"))
+register_controller(ControllerSpec(
+    "apf", "fuzzynav.control.classic.apf:make", "artificial potential field on the 7 range sensors",
+    "Khatib 1986", GOAL, "rays"))
+register_controller(ControllerSpec(
+    "vfh", "fuzzynav.control.classic.vfh:make", "VFH+ on the 7 range sensors", "Ulrich & Borenstein 1998",
+    GOAL, "rays"))
+register_controller(ControllerSpec(
+    "astar-pp", "fuzzynav.control.classic.astar_pp:make",
+    "MAP-AWARE reference: hybrid A* on the inflated map + pure pursuit (knows the whole map)",
+    "Dolgov et al. 2008; Coulter 1992", GOAL, needs_map=True))
 
 
 def available() -> dict[str, str]:
-    """Names of the built-in controllers with their one-line descriptions."""
-    return descriptions(CONTROLLERS)
+    """Names of the registered controllers with their one-line descriptions (and sources)."""
+    return {name: CONTROLLERS[name].summary for name in sorted(CONTROLLERS)}
+
+
+def spec_of(name: str) -> ControllerSpec:
+    """The spec registered as ``name`` or under the alias ``name`` (an :class:`InputError` on
+    ``--controller`` names close matches)."""
+    return CONTROLLERS.find(name)
 
 
 def make_controller(name: str, **options) -> Controller:
-    """Build the controller registered as ``name`` (an :class:`InputError` names close matches);
-    a factory registered under two names (``fuzzy-5b``, ``fuzzy-5b-gap-robust``) gives its
-    controller the name asked for, which its traces and metrics show."""
-    controller = resolve(CONTROLLERS, name, what="controller", field="--controller")(**options)
-    if sum(factory == CONTROLLERS[name][0] for factory, _ in CONTROLLERS.values()) > 1:
+    """Build the controller registered as ``name`` (or under the alias ``name``); a controller
+    with aliases carries the name asked for, which its traces and metrics show."""
+    spec = spec_of(name)
+    controller = load(spec.factory)(**options)
+    if spec.aliases:
         controller.name = name
     return controller
+
+
+def check_task(name: str, task: str, field: str = "--controller") -> None:
+    """An :class:`InputError` on ``field`` unless controller ``name`` can do ``task`` (``goal``,
+    ``path`` or ``target``, the scenario's), naming the controllers that can."""
+    spec = spec_of(name)
+    if task not in spec.tasks:
+        able = [other for other in sorted(CONTROLLERS) if task in CONTROLLERS[other].tasks]
+        raise InputError(f"{name} cannot do a {task} task (it does: {', '.join(spec.tasks)}); "
+                         f"for a {task} task use one of {', '.join(able)}", field=field)
+
+
+def controller_table() -> str:
+    """The controller table of the user guide (docs/guide/controllers.md), in Markdown."""
+    rows = ["| name | what it is | source | tasks | reads |", "|---|---|---|---|---|"]
+    for name in sorted(CONTROLLERS):
+        spec = CONTROLLERS[name]
+        names = ", ".join(f"`{each}`" for each in (name, *spec.aliases))
+        version = f" (version {spec.version})" if spec.version > 1 else ""
+        reads = "**the whole map**" if spec.needs_map else SENSES[spec.sensors]
+        rows.append(f"| {names}{version} | {spec.description} | {spec.citation} | {', '.join(spec.tasks)} | {reads} |")
+    return "\n".join(rows) + "\n"

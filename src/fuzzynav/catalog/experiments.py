@@ -22,14 +22,17 @@ from dataclasses import dataclass
 from importlib import import_module
 from typing import Protocol
 
-from fuzzynav.lookup import require
+from fuzzynav.lookup import unknown
 
 
 class ClaimLike(Protocol):
     """What the registry needs of a claim (:class:`fuzzynav.experiments.claims.Claim`)."""
 
-    thesis: str
-    asserted: str
+    @property
+    def thesis(self) -> str: ...
+
+    @property
+    def asserted(self) -> str: ...
 
     def evaluate(self, numbers: dict) -> tuple[str, list]: ...
 
@@ -63,6 +66,7 @@ class Experiment:
     def order(self) -> tuple:
         """Sort key in the thesis' order: chapter, then figure number (``position`` if given)."""
         match = _ID.match(self.id)
+        assert match is not None  # checked when made
         chapter = _roman(match["chapter"])
         number = self.position if self.position is not None else (
             float(match["number"]) if match["number"] else math.inf)
@@ -75,7 +79,7 @@ def _roman(numeral: str) -> int:
 
 
 _REGISTRY: dict[str, Experiment] = {}
-_THESIS_MODULES = ("fuzzynav.experiments.claims_iv", "fuzzynav.experiments.claims_v", "fuzzynav.experiments.claims_vi",
+_THESIS_MODULES: tuple[str, ...] = ("fuzzynav.experiments.claims_iv", "fuzzynav.experiments.claims_v", "fuzzynav.experiments.claims_vi",
                    "fuzzynav.experiments.claims_tuning")
 
 
@@ -109,7 +113,8 @@ def available() -> dict[str, str]:
 def spec(key: str) -> Experiment:
     """The experiment registered as ``key``; an unknown id is an :class:`~fuzzynav.errors.InputError`."""
     table = specs()
-    require(key, table, what="experiment", field="ID", listing="see 'fuzzynav reproduce --list'")
+    if key not in table:
+        raise unknown(table, key, what="experiment", field="ID", listing="see 'fuzzynav reproduce --list'")
     return table[key]
 
 

@@ -2,12 +2,13 @@
 
 Every fuzzy controller names its systems by role — ``goal-seeking``: ``gsb`` (Table IV.1);
 ``fuzzy-2b``: ``gsb`` and ``oab`` (Table IV.2); ``fuzzy-5b``: ``gsb``, ``foa``, ``roa``, ``loa``,
-``vrb`` (§IV.7), the same for their ``-thesis``, ``-gap`` and ``-rays`` variants and
-``fuzzy-5b-gap-robust`` (another name of ``fuzzy-5b``); ``wall-follow``: ``wall`` (Table VI.2) — and its factory accepts
-``systems={role: system}``. A replacement comes from any file :func:`fuzzynav.fuzzy.io.load`
-reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the role: the same input variables in
-the same order (the controller feeds them by position) and the same outputs; otherwise an
-:class:`InputError` names the file, the variable and what was expected.
+``vrb`` (§IV.7); ``wall-follow``: ``wall`` (Table VI.2); ``fuzzy-tracker``: ``tracker`` (Table V.1) — and
+its factory accepts
+``systems={role: system}``. Which controller has which roles is its spec's ``roles``
+(:mod:`fuzzynav.catalog.controllers`); :data:`ROLES` reads them. A replacement comes from any file
+:func:`fuzzynav.fuzzy.io.load` reads (``.yaml``/``.json``/``.fll``/``.fis``) and must fit the
+role: the same input variables in the same order (the controller feeds them by position) and the
+same outputs; otherwise an :class:`InputError` names the file, the variable and what was expected.
 
     fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml      # a role's system, to edit
     fuzzynav run fig-IV-22a --controller fuzzy-5b --fis foa=foa.yaml
@@ -15,22 +16,37 @@ the same order (the controller feeds them by position) and the same outputs; oth
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping
+
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems import get_system
 
-# controller -> {role: built-in fuzzy system (fuzzynav.fuzzy.systems.SYSTEMS)}
-ROLES: dict[str, dict[str, str]] = {
-    "goal-seeking": {"gsb": "goal-seeking"},
-    "fuzzy-2b": {"gsb": "goal-seeking", "oab": "obstacle-avoidance"},
-    "fuzzy-5b": {"gsb": "goal-seeking", "foa": "foa", "roa": "roa", "loa": "loa", "vrb": "vrb"},
-    "wall-follow": {"wall": "wall-follow"},
-}
-ROLES["fuzzy-2b-thesis"], ROLES["fuzzy-5b-thesis"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]  # the same rule bases
-ROLES["fuzzy-2b-gap"], ROLES["fuzzy-5b-gap"] = ROLES["fuzzy-2b"], ROLES["fuzzy-5b"]
-ROLES["fuzzy-5b-rays"], ROLES["fuzzy-5b-gap-robust"] = ROLES["fuzzy-5b"], ROLES["fuzzy-5b"]
+
+class _Roles(Mapping[str, Mapping[str, str]]):
+    """controller name (or alias) -> ``{role: built-in fuzzy system}``, for the controllers that
+    have replaceable rule bases; read from the registered specs, so a plug-in's roles are there too."""
+
+    def _table(self) -> dict[str, Mapping[str, str]]:
+        aliases = CONTROLLERS.aliases()
+        table = {name: spec.roles for name, spec in CONTROLLERS.items() if spec.roles}
+        table.update({alias: CONTROLLERS[name].roles for alias, name in aliases.items() if CONTROLLERS[name].roles})
+        return table
+
+    def __getitem__(self, controller: str) -> Mapping[str, str]:
+        return self._table()[controller]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._table())
+
+    def __len__(self) -> int:
+        return len(self._table())
 
 
-def roles_of(controller: str) -> dict[str, str]:
+ROLES: Mapping[str, Mapping[str, str]] = _Roles()
+
+
+def roles_of(controller: str) -> Mapping[str, str]:
     """``{role: built-in system}`` of ``controller`` (InputError for a controller without roles)."""
     if controller not in ROLES:
         raise InputError(f"controller {controller!r} has no replaceable fuzzy systems (those that do: "
@@ -96,8 +112,6 @@ def systems_from_options(controller: str, options: list[str] | None) -> dict:
 def make_with_systems(controller: str, systems: dict, **options):
     """``make_controller(controller, systems=systems)``; a controller whose factory does not take
     replacement systems is refused with an InputError (not a TypeError)."""
-    from fuzzynav.catalog.controllers import make_controller
-
     if not systems:
         return make_controller(controller, **options)
     try:

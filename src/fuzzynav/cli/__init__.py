@@ -14,11 +14,13 @@ import sys
 from importlib import import_module
 
 from fuzzynav import __version__
+from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
 # Sub-command modules, in the order ``fuzzynav --help`` lists them.
 COMMAND_MODULES: list[str] = [
     "demo",
+    "warmup",
     "run",
     "scenarios",
     "train",
@@ -36,6 +38,10 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="fuzzynav",
         description="Neuro-fuzzy navigation of a simulated tricycle robot (Cherroun, 2014).",
+        **arguments.with_example("""
+fuzzynav demo --out fuzzynav-out     # every built-in thesis scenario with its controllers
+fuzzynav run fig-IV-23 --plot u.png  # one episode of the default navigator
+fuzzynav COMMAND --help              # a command's options, with examples"""),
     )
     parser.add_argument("--version", action="version", version=f"fuzzynav {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")

@@ -1,5 +1,5 @@
-"""What the sub-commands share (not a sub-command itself): :func:`command`, which declares one,
-and the argument types.
+"""What the sub-commands share (not a sub-command itself): :func:`command`, which declares one
+with an example for its ``--help``, and the argument types.
 
 A bad value is an argparse error: usage and message on stderr, exit status 2, no traceback.
 """
@@ -7,15 +7,52 @@ A bad value is an argparse error: usage and message on stderr, exit status 2, no
 from __future__ import annotations
 
 import argparse
+import re
 from collections.abc import Callable
 
 
-def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], **texts) -> argparse.ArgumentParser:
-    """The parser of sub-command ``name`` (``texts``: ``help``, ``description``… of ``add_parser``),
-    which runs ``run(args) -> exit status``; the caller adds its arguments."""
-    parser = subparsers.add_parser(name, **texts)
+def plain(text: str) -> str:
+    """``text`` without the reStructuredText of docstrings: ``:func:`name``` → name, double or
+    single backticks → quotes (help texts are read in a terminal)."""
+    text = re.sub(r":\w+:`~?([^`]+)`", r"\1", text)
+    return re.sub(r"`{1,2}([^`]+)`{1,2}", r"'\1'", text)
+
+
+class ExampleFormatter(argparse.HelpFormatter):
+    """argparse's formatter on plain text (:func:`plain`), except that a text whose first line is a
+    heading (ends with ``:``, as the ``examples:`` epilog) keeps its lines as written."""
+
+    def _fill_text(self, text, width, indent):
+        if text.split("\n", 1)[0].endswith(":"):
+            return "".join(indent + line for line in text.splitlines(keepends=True))
+        return super()._fill_text(plain(text), width, indent)
+
+    def _split_lines(self, text, width):
+        return super()._split_lines(plain(text), width)
+
+
+def with_example(example: str, epilog: str = "") -> dict:
+    """The ``epilog`` and ``formatter_class`` keywords of ``add_parser`` that end a ``--help``
+    with ``example`` (one command a line, comments allowed) after ``epilog``."""
+    lines = "\n".join(f"  {line}" for line in example.strip().splitlines())
+    return {"epilog": (f"{epilog.rstrip()}\n\n" if epilog else "") + f"examples:\n{lines}\n",
+            "formatter_class": ExampleFormatter}
+
+
+def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], *, example: str,
+            **texts) -> argparse.ArgumentParser:
+    """The parser of sub-command ``name`` (``texts``: ``help``, ``description``, ``epilog`` of
+    ``add_parser``), which runs ``run(args) -> exit status``, its ``--help`` ending with
+    ``example`` (:func:`with_example`); the caller adds its arguments."""
+    epilog = texts.pop("epilog", "")
+    parser = subparsers.add_parser(name, **texts, **with_example(example, epilog))
     parser.set_defaults(func=run)
     return parser
+
+
+def names(text: str) -> list[str]:
+    """``--controllers A,B``: the comma-separated names (empty items dropped)."""
+    return [name for name in text.split(",") if name]
 
 
 def seed(text: str) -> int:

@@ -32,8 +32,11 @@ def register(subparsers) -> None:
     parser = arguments.command(subparsers, "bench", run,
                                help="run navigators against each other on suites of worlds",
                                description="Run every controller on every world of the suites (x seeds), write "
-                                           "runs.csv as runs finish, then rates with 95 %% Wilson intervals, medians, "
-                                           "plots and index.html.")
+                                           "runs.csv as runs finish, then rates with 95 % Wilson intervals, medians, "
+                                           "plots and index.html.",
+                               example="""
+fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
+fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench""")
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",
@@ -58,6 +61,7 @@ def register(subparsers) -> None:
 
 def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     from fuzzynav.bench.cells import build_controller, is_model_file
+    from fuzzynav.catalog.controllers import check_task
 
     specs = [spec.strip() for spec in text.split(",") if spec.strip()]
     if not specs:
@@ -68,7 +72,9 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
             if not Path(spec).is_file():
                 raise InputError("no such model file", source=spec, field="--controllers")
             spec = str(Path(spec).resolve())
-        try:  # unknown names and bad model files fail before any run
+        try:  # unknown names, controllers of other tasks and bad model files fail before any run
+            if not is_model_file(spec):
+                check_task(spec, "goal", field="--controllers")  # a campaign's worlds are goal tasks
             build_controller(spec)
         except InputError as error:
             if is_model_file(spec):

@@ -2,7 +2,8 @@
 
 Each built-in scenario lists in its ``controllers`` key the controllers the thesis runs on it
 (chapter IV navigators on the Fig IV.12–IV.23 worlds, the trackers on the chapter V paths…).
-The demo runs every pair, prints a progress line per run, and writes into DIR one trajectory /
+The demo first compiles the kernels its controllers use (``fuzzynav warmup``; a progress
+bar on the first run), then runs every pair, prints a progress line per run, and writes into DIR one trajectory /
 command plot per run (``<scenario>--<controller>.png``) and the metrics table as
 ``metrics.md`` (Markdown) and ``metrics.json``. ``--scenario`` takes built-in names or your own
 scenario files, ``--controllers a,b`` the controllers to run on them (instead of their own list).
@@ -19,7 +20,6 @@ from pathlib import Path
 
 from fuzzynav.cli import arguments
 
-
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
                 "target": ("capture_time_s",)}
@@ -28,11 +28,14 @@ TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_r
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "demo", run,
                                help="run the thesis' controllers on the built-in scenarios (plots + metrics table)",
-                               description=__doc__.split("\n\n")[1])
+                               description=__doc__.split("\n\n")[1],
+                               example="""
+fuzzynav demo --out fuzzynav-out
+fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-5b,dwa --out my-demo/""")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out"), help="output folder")
     parser.add_argument("--scenario", action="append", metavar="NAME|FILE",
                         help="only this built-in scenario or scenario file (repeatable)")
-    parser.add_argument("--controllers", metavar="A,B", type=lambda text: [n for n in text.split(",") if n],
+    parser.add_argument("--controllers", metavar="A,B", type=arguments.names,
                         help="run these controllers (comma-separated) instead of each scenario's own list")
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
 
@@ -68,6 +71,10 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def run(args) -> int:
+    from fuzzynav.cli.warmup import announce, warm_up
+
+    print(f"fuzzynav demo: the built-in thesis scenarios with their controllers, into {args.out}/", flush=True)
+    announce()
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.storage import write_text_atomic
@@ -76,6 +83,7 @@ def run(args) -> int:
     runs = demo_runs(args.scenario, args.controllers)
     for controller_name in dict.fromkeys(name for _, name in runs):
         make_controller(controller_name)  # unknown names fail before any run
+    warm_up(list(dict.fromkeys(name for _, name in runs)))
     args.out.mkdir(parents=True, exist_ok=True)
     rows = []
     for index, (name, controller_name) in enumerate(runs, 1):
@@ -92,5 +100,6 @@ def run(args) -> int:
               flush=True)
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
-    print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}")
+    plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
+    print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
     return 0

@@ -17,10 +17,10 @@ import sys
 from pathlib import Path
 
 from fuzzynav import progress as progress_bars, validation
-from fuzzynav.cli import arguments
-from fuzzynav.cli.run import SENSORS_HELP
+from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
-from fuzzynav.catalog.controllers import CONTROLLERS
+from fuzzynav.cli import arguments
+from fuzzynav.cli.run import DEFAULT_CONTROLLER, SENSORS_HELP
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 
@@ -29,10 +29,14 @@ def register(subparsers) -> None:
     parser = arguments.command(subparsers, "evaluate", run,
                                help="run a controller over N generated worlds",
                                description="Success / collision / timeout rates, mean time and path length of a "
-                                           "controller over N seeded random worlds (solvable by construction).")
-    source = parser.add_mutually_exclusive_group(required=True)
+                                           "controller over N seeded random worlds (solvable by construction).",
+                               example="""
+fuzzynav evaluate --worlds mixed --n 20                 # the default navigator, fuzzy-5b
+fuzzynav evaluate --controller fuzzy-5b-thesis --worlds mixed --n 100 --save-failures failed/
+fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
+    source = parser.add_mutually_exclusive_group()
     source.add_argument("--controller", metavar="NAME",
-                        help=f"built-in controller ({', '.join(sorted(CONTROLLERS))})")
+                        help=f"built-in controller (default {DEFAULT_CONTROLLER}; {', '.join(sorted(CONTROLLERS))})")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
@@ -53,11 +57,19 @@ def run(args) -> int:
     if args.worlds not in KINDS:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
     validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
+    if args.model is None and args.controller is None:
+        args.controller = DEFAULT_CONTROLLER
     if args.fis and args.model:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     systems = systems_from_options(args.controller, args.fis) if args.fis else None
     if args.controller is not None:
+        check_task(args.controller, "goal")  # every generated world is a goal task
         make_with_systems(args.controller, systems)  # unknown names fail before any world is drawn
+
+    if args.save_failures is not None:
+        if args.save_failures.exists() and not args.save_failures.is_dir():
+            raise InputError(f"{args.save_failures} is a file; give a folder", field="--save-failures")
+        args.save_failures.mkdir(parents=True, exist_ok=True)
 
     def progress(i, run):
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
@@ -79,6 +91,7 @@ def run(args) -> int:
     saved = [run["saved"] for run in result["episodes"] if "saved" in run]
     if args.save_failures is not None:
         rerun = f"--model {args.model}" if args.model else f"--controller {args.controller}"
-        print(f"saved {len(saved)} failed worlds (scenario + plot) to {args.save_failures}/"
-              + (f"; rerun one with: fuzzynav run {saved[0]} {rerun} --seed {args.seed}" if saved else ""))
+        print(f"saved {len(saved)} failed worlds (scenario + plot) to {args.save_failures}/; rerun one with: "
+              f"fuzzynav run {saved[0]} {rerun} --seed {args.seed}" if saved else
+              f"no world failed: nothing to save in {args.save_failures}/")
     return 0

@@ -26,9 +26,9 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav import validation
+from fuzzynav.catalog.roles import ROLES, default_system
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
-from fuzzynav.catalog.roles import ROLES, default_system
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.export_c import FIXED_FORMATS
@@ -253,26 +253,37 @@ def _plot(args) -> int:
 def _write(text: str, output: str | None) -> None:
     if output and output != "-":
         write_text_atomic(output, text)
+        print(f"wrote {output}", file=sys.stderr)
     else:
         sys.stdout.write(text)
 
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser("fis", help="show, evaluate, convert or plot a fuzzy system",
-                                   description=__doc__.split("\n\n")[0])
+                                   description=__doc__.split("\n\n")[0],
+                                   **arguments.with_example("fuzzynav fis show goal-seeking\nfuzzynav fis eval --help"))
     sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)
     target = "built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE or .json/.yaml/.fll/.fis file"
 
-    show = arguments.command(sub, "show", _show, help="variables, terms and rule table")
+    show = arguments.command(sub, "show", _show, help="variables, terms and rule table", example="""
+fuzzynav fis show goal-seeking               # Table IV.1 as a rule grid
+fuzzynav fis show fuzzy-5b:foa
+fuzzynav fis show gsb.fis""")
     show.add_argument("system", help=target)
 
-    ev = arguments.command(sub, "eval", _eval, help="evaluate for one input (--input) or a CSV table (--csv)")
+    ev = arguments.command(sub, "eval", _eval, help="evaluate for one input (--input) or a CSV table (--csv)",
+                          example="""
+fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3
+fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
     ev.add_argument("system", help=target)
     ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
     ev.add_argument("--csv", metavar="IN.csv", help="CSV with one column per input ('-' = stdin)")
     ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
 
-    conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML")
+    conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML",
+                            example="""
+fuzzynav fis convert tracking --to fll -o tracking.fll
+fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml""")
     conv.add_argument("system", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True)
     conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
@@ -280,14 +291,18 @@ def register(subparsers) -> None:
     export = arguments.command(sub, "export-c", _export_c,
                                help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
                                description="Write SYSTEM as a dependency-free C99 function (no heap): "
-                                           "-o controller.c and controller.h beside it.")
+                                           "-o controller.c and controller.h beside it.",
+                               example="fuzzynav fis export-c goal-seeking -o controller.c --fixed Q16.16")
     export.add_argument("system", help=target)
     export.add_argument("-o", "--output", required=True, metavar="FILE.c", help="the .c file (the .h goes beside it)")
     export.add_argument("--fixed", choices=FIXED_FORMATS, help="fixed-point arithmetic (default: double)")
     export.add_argument("--name", help="prefix of the C identifiers (default: the file's stem)")
 
     plot = arguments.command(sub, "plot", _plot,
-                             help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)")
+                             help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)",
+                             example="""
+fuzzynav fis plot goal-seeking -o terms.png
+fuzzynav fis plot tracking --surface -o surface.png""")
     plot.add_argument("system", help=target)
     plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
     plot.add_argument("--output-variable", dest="surface_output", help="output drawn by --surface")

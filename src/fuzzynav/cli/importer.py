@@ -20,11 +20,15 @@ def register(subparsers) -> None:
         "import",
         help="convert standard benchmark worlds into scenario files",
         description="Convert worlds of a standard benchmark into scenario files (`fuzzynav bench DIR` runs them).",
+        **arguments.with_example("fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5"),
     )
     formats = parser.add_subparsers(dest="format", metavar="FORMAT", required=True)
     barn = arguments.command(formats, "barn", run, help="BARN worlds (Gazebo .world files of the BARN Challenge)",
                              description="BARN worlds: posts become circles; the challenge's start, goal "
-                                         "(1 m tolerance), 100 s limit and optimal path (for its score).")
+                                         "(1 m tolerance), 100 s limit and optimal path (for its score).",
+                             example="""
+fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5
+fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out barn-bench""")
     barn.add_argument("worlds", nargs="+", metavar="WORLD.world", help="BARN world files (world_N.world)")
     barn.add_argument("--out", required=True, metavar="DIR", help="folder for the scenario files")
     barn.add_argument("--scale", type=float, default=1.0, metavar="S",
@@ -34,8 +38,8 @@ def register(subparsers) -> None:
 def run(args) -> int:
     import yaml
 
-    from fuzzynav.bench.files import write_atomic
     from fuzzynav.bench.suites import REFERENCE_FILE
+    from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
     from fuzzynav.world.scenario import scenario_from_dict
 
@@ -54,7 +58,7 @@ def run(args) -> int:
         path = Path(name)
         document = barn_scenario(read_posts(path), path.stem, args.scale)
         scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
-        write_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
+        write_text_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
         if path_file is None:
@@ -62,6 +66,6 @@ def run(args) -> int:
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         references[path.stem] = entry
-    write_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
+    write_text_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
     print(f"{len(args.worlds)} BARN worlds -> {out}", file=sys.stderr)
     return 0

@@ -1,6 +1,8 @@
-"""``fuzzynav run SCENARIO --controller NAME [--fis ROLE=FILE] | --model FILE`` — run one episode.
+"""``fuzzynav run SCENARIO [--controller NAME [--fis ROLE=FILE] | --model FILE]`` — run one episode.
 
-SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Prints a one-line
+SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Without ``--controller``
+or ``--model`` it runs :func:`default_controller`: the default navigator ``fuzzy-5b`` on a goal,
+else the first controller the scenario lists in its ``controllers`` key. Prints a one-line
 summary, or with ``--json`` exactly one JSON object with the metrics of
 :func:`fuzzynav.sim.metrics.metrics`. Exit status 0 whenever the episode ran (reached, collided
 or timed out), 2 for bad input (message on stderr).
@@ -8,17 +10,31 @@ or timed out), 2 for bad input (message on stderr).
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
+import sys
 
+from fuzzynav.catalog.controllers import available, check_task
 from fuzzynav.cli import arguments
-from fuzzynav.catalog.controllers import available
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
                 "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-5b, fuzzy-5b-gap-robust, "
                 "fuzzy-5b-gap and fuzzy-2b-gap, thesis for the others)")
+
+
+DEFAULT_CONTROLLER = "fuzzy-5b"  # the default navigator (docs/guide/controllers.md)
+
+
+def default_controller(scenario) -> str:
+    """The controller run when none is named: :data:`DEFAULT_CONTROLLER` on a goal task, else the
+    first of the scenario's own ``controllers`` (a tracker for a path, a pursuer for a target)."""
+    if scenario.task == "goal":
+        return DEFAULT_CONTROLLER
+    if scenario.controllers:
+        return scenario.controllers[0]
+    raise InputError(f"scenario {scenario.name!r} is a {scenario.task} task and lists no controllers: name one, "
+                     "e.g. --controller fuzzy-tracker", field="--controller")
 
 
 def register(subparsers) -> None:
@@ -29,11 +45,16 @@ def register(subparsers) -> None:
                                            "(`fuzzynav scenarios` lists the built-ins).",
                                epilog="controllers (--controller NAME):\n"
                                + "\n".join(f"  {name:{width}s}  {text}" for name, text in available().items()),
-                               formatter_class=argparse.RawDescriptionHelpFormatter)
+                               example="""
+fuzzynav run fig-IV-23                                # the default navigator, fuzzy-5b
+fuzzynav run my-world.yaml --controller dwa --plot dwa.png --animate dwa.gif
+fuzzynav run path-n --model anfis.json --json""")
     parser.add_argument("scenario", metavar="SCENARIO",
                         help="scenario YAML file, built-in name, or generated world (e.g. mixed-0-009)")
-    source = parser.add_mutually_exclusive_group(required=True)
-    source.add_argument("--controller", metavar="NAME", help="built-in controller name")
+    source = parser.add_mutually_exclusive_group()
+    source.add_argument("--controller", metavar="NAME",
+                        help=f"built-in controller name (default: {DEFAULT_CONTROLLER} on a goal, else the first of the "
+                             "scenario's own 'controllers')")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
@@ -65,11 +86,14 @@ def run(args) -> int:
     if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
     scenario = open_scenario(args.scenario)
+    if args.model is None and args.controller is None:
+        args.controller = default_controller(scenario)
     if args.model:
         from fuzzynav.catalog.tasks import load_controller
 
         controller = load_controller(args.model)
     else:
+        check_task(args.controller, scenario.task)
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
                         sensors=None if args.sensors is None else named_ring(args.sensors))
@@ -78,10 +102,12 @@ def run(args) -> int:
         from fuzzynav.viz.trajectories import plot_episode
 
         plot_episode(trace, scenario, args.plot, rays=args.rays)
+        print(f"wrote {args.plot} (trajectory and commands)", file=sys.stderr)
     if args.animate:
         from fuzzynav.viz.animation import animate_episode
 
-        animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
+        frames = animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
+        print(f"wrote {args.animate} ({frames} frames)", file=sys.stderr)
     if args.json:
         print(json.dumps(numbers))
     else:

@@ -1,7 +1,8 @@
 """``fuzzynav scenarios`` — list the built-in scenarios (name and description).
 
 Any listed name can be given to ``fuzzynav run`` instead of a file; ``--show NAME`` prints the
-scenario's YAML, a starting point for writing one's own.
+scenario's YAML, a starting point for writing one's own: its ``name:`` line is left out (a
+comment says so), so a copy saved as ``my-world.yaml`` is named ``my-world`` in every output.
 """
 
 from __future__ import annotations
@@ -16,8 +17,19 @@ from fuzzynav.world.scenario import BUILTIN_DIR, list_scenarios
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "scenarios", run,
                                help="list the built-in scenarios",
-                               description="List the built-in scenarios, which `fuzzynav run NAME` runs by name.")
+                               description="List the built-in scenarios, which `fuzzynav run NAME` runs by name.",
+                               example="""
+fuzzynav scenarios
+fuzzynav scenarios --show fig-IV-15a > my-world.yaml   # a copy named my-world, to edit""")
     parser.add_argument("--show", metavar="NAME", help="print the YAML of one built-in scenario")
+
+
+def copy_text(text: str, name: str) -> str:
+    """The YAML of built-in scenario ``name`` without its ``name:`` line, so that a copy takes the
+    name of its file (:func:`fuzzynav.world.scenario.load_scenario`)."""
+    lines = [f"# name: the file's name when absent (this is a copy of the built-in {name})"
+             if line.startswith("name:") else line for line in text.splitlines(keepends=True)]
+    return "".join(line if line.endswith("\n") else line + "\n" for line in lines)
 
 
 def run(args) -> int:
@@ -27,7 +39,7 @@ def run(args) -> int:
             close = difflib.get_close_matches(args.show, list(listing), n=3)
             hint = f" (did you mean {', '.join(close)}?)" if close else ""
             raise InputError(f"no built-in scenario {args.show!r}{hint}", field="--show")
-        print((BUILTIN_DIR / f"{args.show}.yaml").read_text(), end="")
+        print(copy_text((BUILTIN_DIR / f"{args.show}.yaml").read_text(), args.show), end="")
         return 0
     width = max((len(name) for name in listing), default=0)
     for name, description in listing.items():

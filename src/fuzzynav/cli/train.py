@@ -17,7 +17,11 @@ def register(subparsers) -> None:
     parser = arguments.command(subparsers, "train", run,
                                help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
                                description="Train a learning controller and write its model file (atomically). Tasks: "
-                               + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()))
+                               + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()),
+                               example="""
+fuzzynav train anfis-tracker --out anfis.json
+fuzzynav train fql-goal --episodes 3000 --seed 0 --out fql.npz --curve fql.png
+fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to 6000 in all""")
     parser.add_argument("task", metavar="TASK", help="training task name")
     parser.add_argument("--episodes", type=int, help="number of episodes / epochs (task default)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
@@ -55,4 +59,6 @@ def run(args) -> int:
         from fuzzynav.cli.printing import result_lines
 
         print("\n".join(result_lines(result)))
+        if args.curve is not None:
+            print(f"learning curve: {args.curve}")
     return 0

@@ -23,7 +23,10 @@ def register(subparsers) -> None:
                                help="tune a controller's fuzzy system by GA, PSO, DE, CMA-ES, NSGA-II or ant colony",
                                description="Optimise a role's membership breakpoints and/or rule conclusions on "
                                            "training worlds (every candidate of a generation on every world in one "
-                                           "compiled call), then test it on held-out worlds.")
+                                           "compiled call), then test it on held-out worlds.",
+                               example="""
+fuzzynav tune fuzzy-2b:oab --method ga --budget 3000 --worlds mixed:40 --seed 0 --out oab.yaml --curve oab.png
+fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 100 --seed 1000""")
     parser.add_argument("target", metavar="CONTROLLER:ROLE",
                         help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:foa")
     parser.add_argument("--worlds", required=True, metavar="SUITE",

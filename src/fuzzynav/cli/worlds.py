@@ -14,11 +14,15 @@ from fuzzynav.cli import arguments
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser("worlds", help="write generated worlds as scenario files",
-                                   description="Generated worlds (the ones `fuzzynav evaluate` runs) as files.")
+                                   description="Generated worlds (the ones `fuzzynav evaluate` runs) as files.",
+                                   **arguments.with_example("fuzzynav worlds generate mixed --n 3 --out worlds/"))
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
     generate = arguments.command(actions, "generate", run,
                                  help="write N generated worlds of a family as scenario files",
-                                 description=__doc__.split("\n\n")[1])
+                                 description=__doc__.split("\n\n")[1],
+                                 example="""
+fuzzynav worlds generate mixed --n 3 --out worlds/
+fuzzynav run worlds/mixed-0-002.yaml""")
     generate.add_argument("family", metavar="FAMILY", help="world family, e.g. circles or mixed (an unknown name lists them all)")
     generate.add_argument("--n", type=int, default=10, help="number of worlds (default 10)")
     generate.add_argument("--seed", type=arguments.seed, default=0, help="world seed (default 0)")

@@ -18,17 +18,22 @@ The switch of Fig IV.9 activates the avoider when an obstacle is detected "in fr
 right or on the left" (§IV.6.2) and stands in the way: D_ro below ``detection`` (default 2 m),
 the goal farther than the obstacle, and the obstacle either within ``front`` (default 45°) of
 the heading, or within ``sector`` (default 90°) of the heading and of the goal direction. An
-obstacle beside or behind the robot on the side away from the goal leaves the guarded
-goal-seeking behaviour of :mod:`fuzzynav.control.goal_seeking` in charge (it turns away from
+obstacle beside or behind the robot on the side away from the goal leaves the goal-seeking
+behaviour of :mod:`fuzzynav.control.goal_seeking` in charge (it turns away from
 such an obstacle anyway). Behaviour labels: ``GSB``, ``OA``.
 
-**Hysteresis** (Fig IV.9 states the switch only in words). Taken step by step that test
+**Layers** (this package's, each optional: ``layers=`` names those on, keys of
+:data:`fuzzynav.control.batched.LAYERS`; all by default, none in ``fuzzy-2b-thesis``): the
+anti-orbit guard of goal seeking, the hysteresis, the full-lock turn and the safety stop below.
+
+**Hysteresis** (layer ``hysteresis``; Fig IV.9 states the switch only in words). Taken step by step that test
 chatters at its edges — avoiding turns the obstacle out of the sector, goal seeking turns it
 back in — and the steering jumps between the two tables every step. The switch is therefore
 held by the switch of :mod:`fuzzynav.control.supervisor`: OA is taken at once, GSB only after OA
 has driven ``dwell`` steps (default 10, 1 s), and OA, once active, stays wanted while D_ro is
 below ``detection`` + ``release`` (default 0.5 m) and the obstacle within ``sector`` + 15° of
-the heading. Like the five-behaviour navigators, it turns at full lock (α = ±π/5, the extreme
+the heading. With the layers ``turning_room`` and ``safety_stop``, like the five-behaviour
+navigators, it turns at full lock (α = ±π/5, the extreme
 singletons of Table IV.2) and low speed ``v_turn`` when its turning room runs out
 (:class:`fuzzynav.control.turning_room.TurnGuard`; this turn is labelled ``OA``), and it has the
 same safety stop (V = 0 when the next step would bring the body within ``stop_margin`` of a
@@ -52,7 +57,7 @@ import functools
 import math
 from collections.abc import Mapping
 
-from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, LAYERS, CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
@@ -75,9 +80,9 @@ class TwoBehaviourNavigator(CompiledNavigator):
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,
                  stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
-                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK, layers=tuple(LAYERS)):
         gaps = self._variant(gap, gap_margin, gap_look)
-        self._build(systems, default_systems, navigator_params(
+        self._build(systems, default_systems, navigator_params(**layer_flags(layers),
             wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_turn, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             detection=detection, sector=sector, front=front, risk=risk, release=release,

@@ -113,7 +113,7 @@ class BatchObservation:
         return wrap_angle(np.arctan2(d[:, 1], d[:, 0]) - self.pose[:, 2])
 
     @classmethod
-    def of(cls, obs: Observation) -> "BatchObservation":
+    def of(cls, obs: Observation) -> BatchObservation:
         """``obs`` as a batch of one (what :meth:`BatchController.act` hands to ``act_batch``):
         every per-robot field gets a leading axis of 1; a missing speed or steering is 0, a
         missing obstacle distance ``inf`` at bearing 0."""

@@ -22,6 +22,15 @@ from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 GAP_MARGIN = 0.05  # m kept between the body and a post when aiming through a gap (then half, a quarter)
 GAP_LOOK = 2.0  # m: hits nearer than this shape the gaps
 GAP_FIELD = np.pi / 2  # directions searched: within ±90° of the heading
+# The layers this package adds to the thesis' navigators, each optional (the published ones run
+# without: ``goal-seeking``, ``fuzzy-2b-thesis``, ``fuzzy-5b-thesis``):
+LAYERS = {
+    "orbit_guard": "anti-orbit guard of goal seeking (fuzzynav.control.goal_seeking)",
+    "turning_room": "full-lock turn when the turning room runs out (fuzzynav.control.turning_room)",
+    "safety_stop": "V = 0 when the next step would touch a remembered hit (fuzzynav.control.five_behaviours)",
+    "hysteresis": "the behaviour switch held for a dwell, relaxed thresholds to keep goal seeking "
+                  "(fuzzynav.control.supervisor)",
+}
 
 
 class CompiledNavigator(BatchController):
@@ -65,7 +74,7 @@ class CompiledNavigator(BatchController):
         """Forget the modes, turns and hits (a new episode)."""
         self._state = None
 
-    def for_robot(self, robot) -> "CompiledNavigator":
+    def for_robot(self, robot) -> CompiledNavigator:
         """Size the navigator for ``robot`` (a :class:`~fuzzynav.robot.tricycle.TricycleParams`, the
         scenario's): its wheelbase (and with it the full-lock turn radius R = l / tan(π/5)), its
         body radius and, for the five-behaviour navigators, a top speed no higher than the robot's. The default
@@ -160,6 +169,16 @@ class CompiledNavigator(BatchController):
             np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
             np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_), out)
         return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
+
+
+def layer_flags(layers) -> dict:
+    """The ``navigator_params`` entries that switch on the named ``layers`` (keys of :data:`LAYERS`)
+    and off the others; an unknown name is an :class:`InputError`."""
+    layers = tuple(layers)
+    unknown = sorted(set(layers) - set(LAYERS))
+    if unknown:
+        raise InputError(f"unknown layer(s) {', '.join(unknown)}; known: {', '.join(LAYERS)}", field="layers")
+    return {name: float(name in layers) for name in LAYERS}
 
 
 def navigator_params(**values) -> np.ndarray:

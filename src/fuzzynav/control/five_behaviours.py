@@ -2,8 +2,7 @@
 IV.1, IV.3–IV.6) on the seven range sensors C1…C7; with ``gap=True`` (``fuzzy-5b-gap``) on a lidar,
 the navigator inside the default ``fuzzy-5b`` (:mod:`fuzzynav.control.through_gaps`).
 
-Behaviours: GSB (Table IV.1, guarded against orbiting as in
-:mod:`fuzzynav.control.goal_seeking`), FOA / ROA / LOA (Tables IV.3–IV.5, steering only) and VRB
+Behaviours: GSB (Table IV.1), FOA / ROA / LOA (Tables IV.3–IV.5, steering only) and VRB
 (Table IV.6), coordinated by :mod:`fuzzynav.control.supervisor`:
 
 - GSB alone when nothing is sensed: α and V_r from Table IV.1;
@@ -17,14 +16,20 @@ result is kept in [``v_floor``, 4 m/s]. ``v_floor`` (default 0.3 m/s) is this pa
 V_r = 0 near an obstacle Table IV.6 answers "no change" (AC) and a tricycle that does not move
 cannot turn, so the navigator would freeze.
 
+**Layers** (this package's, each optional: ``layers=`` names those on, keys of
+:data:`fuzzynav.control.batched.LAYERS`; all by default, none in ``fuzzy-5b-thesis``): the
+anti-orbit guard of goal seeking (:mod:`fuzzynav.control.goal_seeking`), the hysteresis of the
+switch, the turning room and the safety stop below. Without them the supervisor's choice of
+each step drives, goal seeking is Table IV.1 alone, and nothing stops the robot.
+
 **Switching** (the part Fig IV.16 states only in words) is :func:`supervisor.select` on the
-readings, held by the switch of :mod:`~fuzzynav.control.supervisor`: more caution at once when a reading is below
+readings, with the ``hysteresis`` layer held by the switch of :mod:`~fuzzynav.control.supervisor`: more caution at once when a reading is below
 d_m or the full-lock turn is needed, anything else after a dwell of ``dwell`` steps (1 s); goal seeking, once in charge, is kept under the relaxed thresholds of
 :func:`supervisor.relaxed`. (Handing the robot back to goal seeking only with the goal within
 45° of the heading, a literal reading of Fig IV.23's "vision interval", was tried: on 100 mixed
 worlds it turned 4 successes into endless wall following.)
 
-**Turning room** (the robot has no reverse, §IV.4). Slowing down does not shrink the tightest
+**Turning room** (layer ``turning_room``; the robot has no reverse, §IV.4). Slowing down does not shrink the tightest
 turn (R = l / tan(π/5) = 0.69 m), so the navigator watches the room left for it
 (:class:`fuzzynav.control.turning_room.TurnGuard`, on the range hits of the last second and the
 sonar-cone echo of the nearest obstacle point). When the straight lane ahead is blocked within ``lane`` (default d_m = 1.5 m) and the
@@ -35,7 +40,7 @@ The side is chosen when the turn starts (the roomier one; within 0.1 m, the goal
 kept until the turn ends; the turn ends, after the dwell, when lane and room exceed those
 thresholds by 0.5 m and 0.2 m. It is labelled ``FOA+VRB`` like the front avoider.
 
-**Safety stop** (this package's; the thesis has none). A thin wall end or a corner can hide
+**Safety stop** (layer ``safety_stop``, this package's; the thesis has none). A thin wall end or a corner can hide
 between the rays until the robot is too close for any turn, and in a pocket of obstacles neither
 full-lock turn may be free. Then the one step left is to stop: when the body after the next step
 (eq IV.2 moves it V Δt straight ahead, whatever the steering) would come within ``stop_margin``
@@ -78,7 +83,7 @@ import math
 from collections.abc import Mapping
 
 from fuzzynav.control import supervisor
-from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, CompiledNavigator, navigator_params
+from fuzzynav.control.batched import GAP_LOOK, GAP_MARGIN, LAYERS, CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.systems import goal_seeking
@@ -108,14 +113,14 @@ class FiveBehaviourNavigator(CompiledNavigator):
                  params: supervisor.SupervisorParams | None = None, wheelbase: float = DEFAULT_PARAMS.wheelbase,
                  dwell: int = 10, lane: float = nav.D_M, room_margin: float = 0.5, memory: int = 10,
                  stop_margin: float = 0.02, systems: Mapping | None = None, gap: bool = False,
-                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK):
+                 gap_margin: float = GAP_MARGIN, gap_look: float = GAP_LOOK, layers=tuple(LAYERS)):
         gaps = self._variant(gap, gap_margin, gap_look)
         self.supervisor = params or supervisor.SupervisorParams(detection=d_s, front=d_m, keep=d_m, clear=d_s)
         kept = supervisor.relaxed(self.supervisor)
         self.memory = int(memory)
         p = self.supervisor
         self._build(systems, lambda: default_systems(d_m, d_s, d_max), navigator_params(
-            wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
+            **layer_flags(layers), wheelbase=wheelbase, dwell=dwell, lane=lane, room_margin=room_margin, stop_margin=stop_margin,
             v_turn=v_floor, turn_radius=TURN_RADIUS, body=DEFAULT_PARAMS.radius, half_cone=math.radians(15.0),
             v_max=v_max, sensed=p.detection, front_5b=p.front, keep=p.keep, clear=p.clear, vision=p.vision,
             kept_detection=kept.detection, kept_keep=kept.keep, kept_clear=kept.clear,

@@ -12,7 +12,9 @@ A goal at distance d and bearing β is hit by the forward arc of steering
 :class:`GuardedGoalSeeking` keeps the table's command unless it steers less than that arc: then it
 steers α_arc; and when even the tightest turn α_max = π/5 is too wide (the goal inside the
 turning circle, r < l / tan(π/5) = 0.69 m for l = 0.5 m) it drives straight (α = 0, the table's
-speed) until the goal leaves the circle. Every navigator of this package uses this guarded GSB.
+speed) until the goal leaves the circle. The guard is an optional layer (``orbit_guard`` of
+:data:`fuzzynav.control.batched.LAYERS`): the published ``goal-seeking``, ``fuzzy-2b-thesis`` and
+``fuzzy-5b-thesis`` run Table IV.1 alone; ``goal-seeking-guarded`` and the other navigators use it.
 
 Rule base by role (``systems=``): ``"gsb"``, a TS0 system (d_rg, θ_r − θ_d) → (α, V_r); the
 default is Table IV.1.
@@ -21,17 +23,14 @@ default is Table IV.1.
 from __future__ import annotations
 
 import functools
-import math
 from collections.abc import Mapping
 
 import numpy as np
 
-from fuzzynav.control.batched import CompiledNavigator, navigator_params
+from fuzzynav.control.batched import CompiledNavigator, layer_flags, navigator_params
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import GOAL_SEEKING
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-
-ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
 
 
 @functools.lru_cache(maxsize=1)
@@ -70,10 +69,19 @@ class GoalSeekingController(CompiledNavigator):
     name = "goal-seeking"
     kind, labels, roles = GOAL_SEEKING, ("GSB",), ("gsb",)
 
-    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None):
-        self._build(systems, default_systems, navigator_params(wheelbase=wheelbase))
+    def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None,
+                 layers=("orbit_guard",)):
+        self._build(systems, default_systems, navigator_params(wheelbase=wheelbase, **layer_flags(layers)))
 
 
 def make(**options) -> GoalSeekingController:
-    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`."""
-    return GoalSeekingController(**options)
+    """Factory of the ``goal-seeking`` entry of :data:`fuzzynav.catalog.controllers.CONTROLLERS`:
+    Table IV.1 as published, without the anti-orbit guard (``layers=("orbit_guard",)`` adds it)."""
+    return GoalSeekingController(**{"layers": (), **options})
+
+
+def make_guarded(**options) -> GoalSeekingController:
+    """Factory of ``goal-seeking-guarded``: Table IV.1 with the anti-orbit guard."""
+    controller = GoalSeekingController(**options)
+    controller.name = "goal-seeking-guarded"
+    return controller

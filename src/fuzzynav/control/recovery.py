@@ -29,13 +29,13 @@ from __future__ import annotations
 
 import math
 
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
 
-ALPHA_TURN = math.pi / 5  # the largest steering singleton of Fig IV.7
 # the manoeuvre: back at v_back (m/s) for up to back_distance (m), keeping margin (m); turn at v_turn
 # (m/s) up to turn_angle (rad) or until the rays within ±31° read lane (m) free; all within
 # recovery_time (s)
@@ -61,8 +61,8 @@ def recovery_system() -> FuzzySystem:
     room = Variable("room", (-4.0, 4.0), strong_partition((-1.0, 0.0, 1.0), ROOM_LABELS, (-4.0, 4.0)))
     theta = Variable("theta", (-math.pi, math.pi),
                      strong_partition((-math.pi / 4, 0.0, math.pi / 4), GOAL_LABELS, (-math.pi, math.pi)))
-    values = {"NG": -ALPHA_TURN, "NM": -ALPHA_TURN / 2, "Z": 0.0, "PM": ALPHA_TURN / 2, "PG": ALPHA_TURN}
-    alpha = Variable("alpha", (-ALPHA_TURN, ALPHA_TURN), {k: Singleton(v) for k, v in values.items()})
+    values = {"NG": -ALPHA_MAX, "NM": -ALPHA_MAX / 2, "Z": 0.0, "PM": ALPHA_MAX / 2, "PG": ALPHA_MAX}
+    alpha = Variable("alpha", (-ALPHA_MAX, ALPHA_MAX), {k: Singleton(v) for k, v in values.items()})
     rules = rules_from_grid("room", "theta", ROOM_LABELS, GOAL_LABELS, TABLE_RECOVERY, ("alpha",),
                             columns_first=False, source="TABLE_RECOVERY")
     return FuzzySystem([room, theta], [alpha], rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",

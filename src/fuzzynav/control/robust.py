@@ -34,9 +34,11 @@ their compiled parameter vector: the simulator calls :meth:`CompiledNavigator.fo
 (the anti-orbit guard of goal seeking, the full-lock turn radius), the body radius (turning room
 and safety stop) and the top speed; :meth:`RobustNavigator.for_robot` gives the layers the
 robot's radius and reverse speed (a one-robot :meth:`~RobustNavigator.act` reads them from
-``extras["robot"]`` when there). With the default robot nothing changes, so the ``-thesis``
-variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`, the compiled navigators without
-layers) drive exactly as published.
+``extras["robot"]`` when there). With the default robot nothing changes. The ``-thesis``
+variants (:func:`fuzzy_5b_thesis`, :func:`fuzzy_2b_thesis`) are the compiled navigators with none
+of their own optional layers either (:data:`fuzzynav.control.batched.LAYERS`): the tables, switch,
+supervisor and VRB as published; the ``-layered`` ones (:func:`fuzzy_5b_layered`,
+:func:`fuzzy_2b_layered`) keep those layers, without recovery and loop escape.
 """
 
 from __future__ import annotations
@@ -98,7 +100,7 @@ class RobustNavigator(BatchController):
         """The ring the navigator reads by default (``None``: the thesis' seven rays)."""
         return getattr(self.navigator, "sensors", None)
 
-    def for_robot(self, robot, navigator: bool = True) -> "RobustNavigator":
+    def for_robot(self, robot, navigator: bool = True) -> RobustNavigator:
         """Size the navigator (unless ``navigator`` is False) and the layers for ``robot``
         (:class:`TricycleParams`)."""
         if navigator:
@@ -224,10 +226,23 @@ def fuzzy_2b(*, recovery: bool = True, escape: bool = True, **options) -> Robust
 
 
 def fuzzy_5b_thesis(**options):
-    """``fuzzy-5b-thesis``: the five-behaviour navigator of §IV.7 as published (no layers)."""
-    return _five("fuzzy-5b-thesis", **options)
+    """``fuzzy-5b-thesis``: the five-behaviour navigator of §IV.7 as published — none of the
+    layers of :data:`fuzzynav.control.batched.LAYERS` unless ``layers=`` names some."""
+    return _five("fuzzy-5b-thesis", **{"layers": (), **options})
 
 
 def fuzzy_2b_thesis(**options):
-    """``fuzzy-2b-thesis``: the two-behaviour navigator of Fig IV.9 as published (no layers)."""
-    return _two("fuzzy-2b-thesis", **options)
+    """``fuzzy-2b-thesis``: the two-behaviour navigator of Fig IV.9 as published — none of the
+    layers of :data:`fuzzynav.control.batched.LAYERS` unless ``layers=`` names some."""
+    return _two("fuzzy-2b-thesis", **{"layers": (), **options})
+
+
+def fuzzy_5b_layered(**options):
+    """``fuzzy-5b-layered``: ``fuzzy-5b-thesis`` with every layer of
+    :data:`~fuzzynav.control.batched.LAYERS` (what ``fuzzy-5b-thesis`` ran before it was stripped)."""
+    return _five("fuzzy-5b-layered", **options)
+
+
+def fuzzy_2b_layered(**options):
+    """``fuzzy-2b-layered``: ``fuzzy-2b-thesis`` with every layer of :data:`~fuzzynav.control.batched.LAYERS`."""
+    return _two("fuzzy-2b-layered", **options)

@@ -37,9 +37,8 @@ All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernel
 
 from __future__ import annotations
 
-import math
-
 from fuzzynav.control.robust import RobustNavigator
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 
 GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_direct": 3.0,
             "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0,  # m, m, s, m, m, m, m
@@ -51,7 +50,7 @@ GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_
             "guide_car": 1.0, "guide_car_room": 0.0, "guide_car_step": 0.2, "guide_car_node": 0.1,
             "guide_car_headings": 72, "guide_car_weight": 3.0, "guide_car_comfort": 0.3, "guide_car_turn": 0.1,
             "guide_car_switch": 0.05, "guide_car_reach": 0.5, "guide_car_budget": 60000, "guide_car_reverse": 2.0,
-            "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": math.pi / 5,
+            "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": ALPHA_MAX,
             "guide_car_ahead": 1.0, "guide_car_tight": 0.5, "guide_car_speed": 0.8}
 
 

@@ -119,6 +119,7 @@ class FuzzyTracker(AngleErrorTracker):
     """
 
     name = "fuzzy-tracker"
+    roles = ("tracker",)  # its rule base by role: Table V.1
 
     def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
                  lookahead: float = FUZZY_LOOKAHEAD, system=None):
@@ -155,6 +156,12 @@ class ModelTracker(AngleErrorTracker):
         return np.clip(alpha, -self.max_steering, self.max_steering)
 
 
-def fuzzy_tracker(**options) -> FuzzyTracker:
-    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``)."""
+def fuzzy_tracker(systems=None, **options) -> FuzzyTracker:
+    """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``;
+    ``systems={"tracker": system}``, its rule base by role, replaces Table V.1)."""
+    unknown = set(systems or {}) - {"tracker"}
+    if unknown:
+        raise InputError(f"unknown role(s) {', '.join(sorted(unknown))}; fuzzy-tracker has tracker", field="systems")
+    if systems:
+        options["system"] = systems["tracker"]
     return FuzzyTracker(**options)

@@ -35,9 +35,9 @@ import math
 
 import numpy as np
 
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
-ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7
 TURN_RADIUS = DEFAULT_PARAMS.wheelbase / math.tan(ALPHA_MAX)  # R = l / tan(π/5), eq IV.1 (m)
 
 

@@ -7,18 +7,22 @@
   the behaviour changes marked A, B, … (panels a, b);
 - ``fig-IV-22``: the five-behaviour navigator (``fuzzy-5b-thesis``) in two unknown worlds (a, b);
 - ``fig-IV-23``: ``fuzzy-5b-thesis`` reaching a goal inside a U-shaped wall;
-- ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend (Fig VI.27) and
-  into the sharp corner where it collides (Fig VI.28);
+- ``fig-VI-28``: the hand-made wall follower (Table VI.2) along an obtuse bend and a wall turning
+  45° away (Fig VI.27 a, b) and into the sharp corner where it collides (Fig VI.28);
 - ``eval-IV``: ``fuzzy-2b-thesis`` on circle worlds and ``fuzzy-5b-thesis`` on mixed worlds (100
   each, 10 with ``quick``), the numbers of ``fuzzynav evaluate``.
 
-The navigators are the ``-thesis`` variants, as published (``fuzzy-2b`` and ``fuzzy-5b-rays``
-add recovery and loop escape, :mod:`fuzzynav.control.robust`; the default ``fuzzy-5b`` is the
-five-behaviour navigator on a lidar with those layers and a route guidance,
-:mod:`fuzzynav.control.through_gaps`).
+The navigators are the ``-thesis`` variants and ``goal-seeking``, as published: the tables, the
+switch of Fig IV.9, the supervisor and VRB, without this package's layers
+(:data:`fuzzynav.control.batched.LAYERS`; ``fuzzy-*-layered`` have them, ``fuzzy-2b`` and
+``fuzzy-5b-rays`` add recovery and loop escape, :mod:`fuzzynav.control.robust`). ``eval-IV`` also
+runs the ``-layered`` variants. Every rule base comes from :mod:`fuzzynav.experiments.rule_bases`
+(``reproduce --fis ROLE=FILE`` replaces one).
 
 Every function has the registry signature ``(out_dir, quick, seed) -> dict``, writes PNGs and
-returns the measured outcomes.
+returns the measured outcomes, with what the figure shows of each run
+(:mod:`fuzzynav.experiments.routes`: the route, the switch points, the side each obstacle is
+passed on).
 """
 
 from __future__ import annotations
@@ -28,8 +32,9 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.experiments import routes
 from fuzzynav.experiments.evaluation import evaluate
+from fuzzynav.experiments.rule_bases import controller, systems_for
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
@@ -51,16 +56,18 @@ def _outcome(trace, scenario) -> dict:
     numbers = metrics(trace, scenario)
     keys = ("outcome", "time_s", "path_length_m", "min_clearance_m")
     return {**{k: numbers[k] for k in keys}, "final_speed_mps": float(trace.speed[-1]) if trace.steps else 0.0,
-            "behaviour_changes": len(trace.behaviour_changes())}
+            "max_speed_mps": float(trace.speed.max()) if trace.steps else 0.0,
+            "behaviour_changes": len(trace.behaviour_changes()), "switch_points": routes.switch_points(trace),
+            "obstacle_sides": routes.obstacle_sides(trace, scenario), "route": routes.route(trace)}
 
 
-def _panels(names, controller: str, out_dir, figure_name: str, markers: bool = True) -> dict:
+def _panels(names, navigator: str, out_dir, figure_name: str, markers: bool = True) -> dict:
     figure = Figure(figsize=(6 * len(names), 6), layout="constrained")
     axes = np.atleast_1d(figure.subplots(1, len(names)))
     result = {}
     for ax, name in zip(axes, names):
         scenario = load_scenario(name)
-        trace = run_episode(scenario, make_controller(controller))
+        trace = run_episode(scenario, controller(navigator))
         plot_trajectory(trace, scenario, ax, markers=markers)
         result[name] = _outcome(trace, scenario)
     result["figure"] = _save(figure, out_dir, figure_name)
@@ -76,7 +83,7 @@ def fig_iv_12(out_dir, quick: bool = False, seed: int = 0) -> dict:
         for i, (start, goal) in enumerate(pairs, 1):
             scenario = scenario_from_dict({"name": f"S{i}->G{i}", "robot": dict(zip("x y theta".split(), start)),
                                            "goal": {"x": goal[0], "y": goal[1]}, "max_time": 60})
-            trace = run_episode(scenario, make_controller("goal-seeking"))
+            trace = run_episode(scenario, controller("goal-seeking"))
             if i == 1:
                 draw_world(ax, scenario)
             ax.plot(*trace.pose[:, :2].T, linewidth=1.6)
@@ -95,7 +102,7 @@ def fig_iv_12(out_dir, quick: bool = False, seed: int = 0) -> dict:
 def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
     """Figs IV.13–IV.14: a free navigation and its steering and speed against time."""
     scenario = load_scenario("fig-IV-13")
-    trace = run_episode(scenario, make_controller("goal-seeking"))
+    trace = run_episode(scenario, controller("goal-seeking"))
     figure = Figure(figsize=(12, 6), layout="constrained")
     left, right = figure.subfigures(1, 2)
     plot_trajectory(trace, scenario, left.add_subplot(111), markers=False)
@@ -120,24 +127,28 @@ def fig_iv_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def fig_vi_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Figs VI.27–VI.28: the hand-made wall follower succeeds on a bend, collides at a sharp corner."""
-    return _panels(["fig-VI-27", "fig-VI-28"], "wall-follow", out_dir, "fig-VI-28.png", markers=False)
+    """Figs VI.27–VI.28: the hand-made wall follower succeeds round two corners, collides at a sharp one."""
+    return _panels(["fig-VI-27", "fig-VI-27b", "fig-VI-28"], "wall-follow", out_dir, "fig-VI-28.png", markers=False)
 
 
 def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Success / collision / timeout rates of ``fuzzy-2b-thesis`` (circles) and ``fuzzy-5b-thesis`` (mixed)."""
+    """Success / collision / timeout rates of ``fuzzy-2b-thesis`` (circles) and ``fuzzy-5b-thesis`` (mixed),
+    as published and with this package's layers (``-layered``)."""
     n = 10 if quick else 100
     result = {}
     figure = Figure(figsize=(7, 4), layout="constrained")
     ax = figure.add_subplot(111)
-    for i, (controller, worlds) in enumerate((("fuzzy-2b-thesis", "circles"), ("fuzzy-5b-thesis", "mixed"))):
-        numbers = evaluate(controller, worlds, n, seed)
+    runs = [(f"fuzzy-{b}-{variant}", worlds) for b, worlds in (("2b", "circles"), ("5b", "mixed"))
+            for variant in ("thesis", "layered")]
+    for i, (name, worlds) in enumerate(runs):
+        numbers = evaluate(name, worlds, n, seed, systems=systems_for(name) or None)
         numbers.pop("episodes")
-        result[f"{controller}/{worlds}"] = numbers
+        result[f"{name}/{worlds}"] = numbers
         rates = [100 * numbers[k] for k in ("success_rate", "collision_rate", "timeout_rate")]
-        bars = ax.bar(np.arange(3) + 0.4 * i, rates, width=0.4, label=f"{controller} on {n} {worlds} worlds")
-        ax.bar_label(bars, fmt="%.0f %%", fontsize=8)
-    ax.set_xticks(np.arange(3) + 0.2, ["reached the goal", "collided", "timed out"])
+        bars = ax.bar(np.arange(3) + 0.2 * i, rates, width=0.2, label=f"{name} on {n} {worlds} worlds",
+                      hatch=("", "//")[i % 2])
+        ax.bar_label(bars, fmt="%.0f", fontsize=7)
+    ax.set_xticks(np.arange(3) + 0.3, ["reached the goal (%)", "collided (%)", "timed out (%)"])
     ax.set_ylabel("share of the worlds (%)")
     ax.set_ylim(0, 110)
     ax.legend(loc="upper right")

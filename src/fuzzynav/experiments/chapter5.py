@@ -5,7 +5,9 @@
   output, and their error) with its training loss;
 - ``fig-V-23``: the same for the ANFIS tracker, with its training / validation RMSE per epoch;
 - ``fig-V-10`` / ``fig-V-18`` / ``fig-V-26``: the six straight lines T1…T6 from (10,10), robot
-  heading 0 (:func:`fuzzynav.sim.paths.star_lines`), tracked by CF / CN / CNF;
+  heading 0 (:func:`fuzzynav.sim.paths.star_lines`), tracked by CF / CN / CNF; each also draws one
+  straight segment per panel joined from beside its start (Figs V.8 / V.16 / V.24, :data:`SEGMENTS`)
+  and the steering it takes (Figs V.9 / V.17 / V.25);
 - ``fig-V-11`` / ``fig-V-19`` / ``fig-V-27``: the N (a) and trapezoid (b) paths (scenarios
   ``path-n``, ``path-trapezoid``) by CF / CN / CNF, as in the thesis (solid) and with this
   package's corner anticipation (dashed, :mod:`fuzzynav.control.reference`);
@@ -20,6 +22,9 @@
   (§V.5.1; the thesis prints no motion parameters, the scenarios ``fig-V-32``, ``fig-V-33a/b``,
   ``fig-V-34a/b`` choose them).
 
+The fuzzy tracker's Table V.1 is the role ``tracker`` of :mod:`fuzzynav.experiments.rule_bases`
+(``reproduce --fis tracker=FILE`` replaces it, in the surface of Fig V.7 too). Every run reports
+its route (:func:`fuzzynav.experiments.routes.route`) beside its errors or capture time.
 Path figures run the trackers as in the thesis (``corner_radius=0``) unless said otherwise.
 Every function has the registry signature ``(out_dir, quick, seed) -> dict`` and writes PNGs;
 the episodes are short (a few seconds in all), so ``quick`` changes nothing but the ANFIS epochs.
@@ -28,11 +33,13 @@ the episodes are short (a few seconds in all), so ``quick`` changes nothing but 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.experiments import routes
+from fuzzynav.experiments.rule_bases import controller, system
 from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.viz import palette
@@ -42,8 +49,17 @@ from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
 COLOURS = {name: colour for name, (colour, _) in palette.TRACKERS.items()}
-PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s")
-PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m")
+PATH_KEYS = ("completed", "mean_cross_track_m", "max_cross_track_m", "time_s", "route")
+PURSUIT_KEYS = ("captured", "capture_time_s", "path_length_m", "route")
+# line styles of the trackers where their curves overlap (CN and CNF coincide, fig-V-28)
+STYLES: dict[str, dict[str, Any]] = {"fuzzy-tracker": {"linestyle": "-"},
+          "neural-tracker": {"linestyle": "--", "marker": "o", "markevery": 25, "markersize": 4, "fillstyle": "none"},
+          "anfis-tracker": {"linestyle": ":", "marker": "x", "markevery": (12, 25), "markersize": 4}}
+# Figs V.8 / V.16 / V.24: one straight segment per panel, (start, end) of the reference and the
+# robot's start, heading 0, beside it — read off Fig V.8: the robot turns right to join it (Fig V.9)
+SEGMENTS = {"a": (((3.0, 16.0), (16.0, 3.0)), (2.5, 15.5)), "b": (((16.0, 16.0), (3.0, 3.0)), (15.5, 16.5))}
+SEGMENT_FIGURES = {"fig-V-10": ("fig-V-8", "fig-V-9"), "fig-V-18": ("fig-V-16", "fig-V-17"),
+                   "fig-V-26": ("fig-V-24", "fig-V-25")}
 
 
 def _save(figure: Figure, out_dir, name: str) -> str:
@@ -61,19 +77,24 @@ def _figure(doc: str, draw, *arguments):
     return figure
 
 
-def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
-    """Fig V.7: control surface of Table V.1."""
-    from fuzzynav.fuzzy.plot import plot_surface, surface
-    from fuzzynav.fuzzy.systems import tracking
+PEAKS = (-np.pi / 2, -np.pi / 6, 0.0, np.pi / 6, np.pi / 2)  # NG, NM, Z, PM, PG of θ_er and dθ_er (Fig V.5)
 
-    system = tracking()
-    _, _, alpha = surface(system)
-    figure = plot_surface(system)
+
+def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
+    """Fig V.7: control surface of Table V.1, and its value at the 25 peaks of the partition
+    (rows θ_er, columns dθ_er: there the surface is the table's singleton)."""
+    from fuzzynav.fuzzy.plot import plot_surface, surface
+
+    tracker = system("tracker")
+    _, _, alpha = surface(tracker)
+    figure = plot_surface(tracker)
     ax = figure.axes[0]
     ax.set(xlabel="θ_er (rad)", ylabel="dθ_er (rad per step of 0.1 s)", zlabel="steering α (rad)",
            title="Fuzzy tracker, Table V.1: control surface")
+    grid = np.array([[e, de] for e in PEAKS for de in PEAKS])
+    at_peaks = tracker.evaluate(grid)[:, 0].reshape(5, 5)
     return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
-            "alpha_max_rad": float(alpha.max())}
+            "alpha_max_rad": float(alpha.max()), "alpha_at_peaks_rad": np.round(at_peaks, 6).tolist()}
 
 
 def _training_figure(kind: str, out_dir, quick: bool, seed: int) -> dict:
@@ -100,8 +121,8 @@ def fig_v_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
 def _run(scenario, name: str, seed: int, **options):
     """One episode of tracker ``name`` (the learned ones trained with ``seed``): trace and metrics."""
     training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}
-    trace = run_episode(scenario, make_controller(name, **training_seed, **options), seed=seed)
-    return trace, metrics(trace, scenario)
+    trace = run_episode(scenario, controller(name, **training_seed, **options), seed=seed)
+    return trace, {**metrics(trace, scenario), "route": routes.route(trace)}
 
 
 def _runs(scenario_name: str, seed: int, **options):
@@ -111,6 +132,35 @@ def _runs(scenario_name: str, seed: int, **options):
 
 def _numbers(m: dict, keys) -> dict:
     return {k: m[k] for k in keys}
+
+
+def _draw(ax, trace, name: str, label: str | None = None) -> None:
+    """The route of tracker ``name`` in its colour and line style (:data:`STYLES`)."""
+    ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=label or TRACKERS[name], **STYLES[name])
+
+
+def _segments(kind: str, figure_id: str, out_dir, seed: int) -> dict:
+    """Figs V.8 / V.16 / V.24 (one segment per panel) and V.9 / V.17 / V.25 (the steering α(t))."""
+    route_figure, command_figure = (Figure(figsize=(11, 5.4), layout="constrained"),
+                                    Figure(figsize=(11, 3.4), layout="constrained"))
+    names = SEGMENT_FIGURES[figure_id]
+    result = {}
+    for ax, commands, (panel, (ends, start)) in zip(route_figure.subplots(1, 2), command_figure.subplots(1, 2),
+                                                    SEGMENTS.items()):
+        scenario = paths.path_scenario(np.array(ends), name=f"segment {panel}", start=start, theta=0.0)
+        trace, m = _run(scenario, kind, seed, corner_radius=0.0)
+        draw_world(ax, scenario, None)
+        _draw(ax, trace, kind, "robot")
+        ax.set_title(f"({panel}) max cross-track {m['max_cross_track_m']:.2f} m")
+        ax.legend(loc="upper right", fontsize=7)
+        commands.step(trace.t[:-1], trace.steering, where="post", color=COLOURS[kind])
+        commands.set(title=f"({panel}) steering α", xlabel="time (s)", ylabel="α (rad)")
+        commands.grid(alpha=0.3)
+        result[panel] = _numbers(m, PATH_KEYS)
+    route_figure.suptitle(f"{TRACKERS[kind]} ({kind}): one straight segment")
+    command_figure.suptitle(f"{TRACKERS[kind]} ({kind}): commands generated")
+    return {"segments": result, "segment_figures": [_save(route_figure, out_dir, f"{names[0]}.png"),
+                                                    _save(command_figure, out_dir, f"{names[1]}.png")]}
 
 
 def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
@@ -124,14 +174,15 @@ def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
         if i == 0:
             draw_world(ax, scenario, None)
         ax.plot(line[:, 0], line[:, 1], "--", color="0.3", linewidth=1.0)
-        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[kind])
+        _draw(ax, trace, kind)
         ax.annotate(f"T{i + 1}", line[1], textcoords="offset points", xytext=(4, 4))
         lines[f"T{i + 1}"] = _numbers(m, PATH_KEYS)
     ax.set(title=f"{TRACKERS[kind]} ({kind}): straight lines T1…T6 from (10, 10), θ = 0",
            xlabel="x (m)", ylabel="y (m)")
     return {"figure": _save(figure, out_dir, f"{figure_id}.png"), "lines": lines,
             "all_completed": all(v["completed"] for v in lines.values()),
-            "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values())}
+            "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values()),
+            **_segments(kind, figure_id, out_dir, seed)}
 
 
 def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
@@ -144,7 +195,7 @@ def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
         thesis, m_thesis = _run(scenario, kind, seed, corner_radius=0.0)
         anticipating, m_anticipating = _run(scenario, kind, seed)
         draw_world(ax, scenario, thesis)
-        ax.plot(thesis.pose[:, 0], thesis.pose[:, 1], color=COLOURS[kind], label=f"{TRACKERS[kind]} (thesis)")
+        _draw(ax, thesis, kind, f"{TRACKERS[kind]} (thesis)")
         ax.plot(anticipating.pose[:, 0], anticipating.pose[:, 1], "--", color="k", linewidth=0.9,
                 label=f"{TRACKERS[kind]} with corner anticipation")
         ax.set_title(f"({letter}) {scenario_name}: max cross-track {m_thesis['max_cross_track_m']:.2f} m "
@@ -163,18 +214,21 @@ def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
     axes = figure.subplots(1, 4)
     for ax, (name, (trace, _)) in zip(axes, runs.items()):
         draw_world(ax, scenario, trace)
-        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+        _draw(ax, trace, name)
         ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
     zoom = axes[3]
     corner = scenario.path.waypoints[1]
     w = scenario.path.waypoints
     zoom.plot(w[:, 0], w[:, 1], "--", color="0.3", label="reference")
     for name, (trace, _) in runs.items():
-        zoom.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+        _draw(zoom, trace, name)
     zoom.set(xlim=(corner[0] - 1.5, corner[0] + 1.5), ylim=(corner[1] - 1.0, corner[1] + 2.0),
              aspect="equal", title="(d) comparison at the corner", xlabel="x (m)", ylabel="y (m)")
     zoom.legend()
-    return {"figure": _save(figure, out_dir, "fig-V-28.png"),
+    gap = routes.deviation(runs["neural-tracker"][1]["route"], runs["anfis-tracker"][1]["route"])
+    figure.suptitle(f"CN and CNF learn the same inverse map α = f(θ_er) from the same pairs, so their curves "
+                    f"coincide (at most {gap:.2f} m apart): CN dashed with circles, CNF dotted with crosses")
+    return {"figure": _save(figure, out_dir, "fig-V-28.png"), "cn_cnf_route_gap_m": gap,
             **{name: _numbers(m, PATH_KEYS) for name, (_, m) in runs.items()}}
 
 
@@ -183,7 +237,7 @@ def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
     figure = Figure(figsize=(13, 4.4), layout="constrained")
     for ax, (name, (trace, _)) in zip(figure.subplots(1, 3), runs.items()):
         draw_world(ax, scenario, trace)
-        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label="robot")
+        _draw(ax, trace, name, "robot")
         ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
         ax.legend(loc="upper right", fontsize=7)
     return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
@@ -194,7 +248,7 @@ def _overlay(ax, scenario, runs: dict, title: str) -> None:
     """The three controllers' trajectories on one axis, with the target's course."""
     draw_world(ax, scenario, next(iter(runs.values()))[0])
     for name, (trace, _) in runs.items():
-        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+        _draw(ax, trace, name)
     ax.set_title(title)
     ax.legend(loc="upper right", fontsize=7)
 
@@ -206,14 +260,14 @@ def fig_v_32(out_dir, quick: bool = False, seed: int = 0) -> dict:
     axes = figure.subplots(1, 4)
     for ax, (name, (trace, m)) in zip(axes, runs.items()):
         draw_world(ax, scenario, trace)
-        ax.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label="robot")
+        _draw(ax, trace, name, "robot")
         ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}: captured at {m['capture_time_s']} s")
         ax.legend(loc="upper right", fontsize=7)
     capture = runs["anfis-tracker"][0].pose[-1, :2]
     zoom = axes[3]
     zoom.plot(*runs["anfis-tracker"][0].target.T, ":", color="k", label="target")
     for name, (trace, _) in runs.items():
-        zoom.plot(trace.pose[:, 0], trace.pose[:, 1], color=COLOURS[name], label=TRACKERS[name])
+        _draw(zoom, trace, name)
     zoom.set(xlim=(capture[0] - 2.0, capture[0] + 2.0), ylim=(capture[1] - 2.0, capture[1] + 2.0), aspect="equal",
              title="(d) comparison near the capture", xlabel="x (m)", ylabel="y (m)")
     zoom.legend(fontsize=7)

@@ -48,8 +48,10 @@ def save_failure(folder: Path, scenario, trace, controllers: tuple[str, ...] = (
 
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
-             systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None) -> dict:
-    """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given) —
+             systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None,
+             options: dict | None = None) -> dict:
+    """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given, and
+    the keyword ``options`` of its factory, e.g. ``layers=``) —
     or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
     sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
     ``progress(i, outcome)`` is called after each world.
@@ -66,7 +68,8 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         loaded = load_controller(model)
         build, controller = (lambda: loaded), loaded.name
     else:
-        build = lambda: make_controller(controller, systems=systems) if systems else make_controller(controller)
+        extra = {**(options or {}), **({"systems": systems} if systems else {})}
+        build = lambda: make_controller(controller, **extra)
     ring = None if sensors is None else named_ring(sensors)
     scenarios = generate_worlds(worlds, n, seed)
     runs = []

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import html
 import json
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from fuzzynav.catalog import experiments as registry
@@ -54,7 +54,7 @@ def record_run(out_dir: Path, key: str, numbers: dict, seconds: float, *, quick:
              "checks": [check.as_json() for check in checks], "verdict": verdict}
     write_text_atomic(folder / CLAIM_FILE, json.dumps(claim, indent=2, default=float, ensure_ascii=False))
     record = {"id": key, "seconds": round(seconds, 2), "quick": quick, "seed": seed, "verdict": verdict,
-              "finished": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")}
+              "finished": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC")}
     write_text_atomic(folder / RUN_FILE, json.dumps(record, indent=2))
     return record
 

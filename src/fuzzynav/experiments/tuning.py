@@ -103,7 +103,7 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
             systems = systems_from_options(controller, [f"{role}={path}"])
             start_cost = result["start"]["training"]["cost"]
             beaten = next((n for n, cost in result["curve"] if cost < start_cost), None)
-            rows[method].append({"seed": seed, **held_out(holdout, lambda: make_with_systems(controller, systems)),
+            rows[method].append({"seed": seed, **held_out(holdout, lambda systems=systems: make_with_systems(controller, systems)),
                                  "episodes_to_beat_start": beaten, "wall_s": seconds, "file": str(path),
                                  "training": result["tuned"]["training"]})
     rows["fql"] = []
@@ -114,7 +114,7 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
                                                     resume=False, checkpoint_every=None, curve=None, progress=False))
         seconds = time.perf_counter() - started
         model = load_controller(path)
-        rows["fql"].append({"seed": seed, **held_out(holdout, lambda: model), "wall_s": seconds, "file": str(path),
+        rows["fql"].append({"seed": seed, **held_out(holdout, lambda model=model: model), "wall_s": seconds, "file": str(path),
                             "episodes_to_beat_start": None,
                             "converged_at": {k: v.get("converged_at") for k, v in trained.items() if isinstance(v, dict)}})
     return {"target": task["target"], "fql": task["fql"], "train": task["train"], "holdout": task["holdout"],

@@ -6,6 +6,7 @@ written as FLL or MATLAB .fis (:mod:`fuzzynav.fuzzy.io`), exported to C (:mod:`.
 Knows nothing of robots. The thesis' own systems are in :mod:`fuzzynav.fuzzy.systems`.
 """
 
+from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.membership import (
     Bell,
     Gaussian,
@@ -17,7 +18,6 @@ from fuzzynav.fuzzy.membership import (
     Trapezoidal,
     Triangular,
 )
-from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.partition import PartitionReport, check_strong_partition, strong_partition
 from fuzzynav.fuzzy.rules import Rule, parse_rule, rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem

@@ -8,22 +8,18 @@ internals.
 
 from __future__ import annotations
 
-import math
-
+from fuzzynav.fuzzy.constants import ALPHA_MAX, SPEED_SINGLETONS, STEERING_SINGLETONS
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.variable import Variable
 
-PI = math.pi
-ANGLE7_LABELS = ("NG", "NM", "NP", "Z", "PP", "PM", "PG")
+ANGLE7_LABELS = tuple(STEERING_SINGLETONS)  # NG … PG
 
 
 def steering() -> Variable:
     """α singletons of Fig IV.7: ±π/5, ±π/10, ±π/20, 0 (rad)."""
-    values = (-PI / 5, -PI / 10, -PI / 20, 0.0, PI / 20, PI / 10, PI / 5)
-    return Variable("alpha", (-PI / 5, PI / 5), {k: Singleton(v) for k, v in zip(ANGLE7_LABELS, values)})
+    return Variable("alpha", (-ALPHA_MAX, ALPHA_MAX), {k: Singleton(v) for k, v in STEERING_SINGLETONS.items()})
 
 
 def speed() -> Variable:
     """V_r singletons of Fig IV.8: Z 0, F 1, M 1.8, G 3, TG 4 (m/s)."""
-    values = {"Z": 0.0, "F": 1.0, "M": 1.8, "G": 3.0, "TG": 4.0}
-    return Variable("v", (0.0, 4.0), {k: Singleton(v) for k, v in values.items()})
+    return Variable("v", (0.0, SPEED_SINGLETONS["TG"]), {k: Singleton(v) for k, v in SPEED_SINGLETONS.items()})

@@ -12,12 +12,15 @@ from __future__ import annotations
 
 import math
 import re
+from typing import TYPE_CHECKING
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.membership import (Bell, Gaussian, Linear, MembershipFunction, Ramp, Sigmoid, Singleton,
-                                       Trapezoidal, Triangular)
+from fuzzynav.fuzzy.membership import Bell, Gaussian, Linear, Ramp, Sigmoid, Singleton, Trapezoidal, Triangular
+
+if TYPE_CHECKING:  # annotations only
+    from fuzzynav.fuzzy.membership import MembershipFunction
 
 # .fis name: (class, number of parameters, from .fis parameters, to .fis parameters)
 _MFS = {

@@ -9,12 +9,15 @@ count ends with the height); ``Function`` takes a formula.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.membership import (Bell, Gaussian, Linear, MembershipFunction, Ramp, Sigmoid, Singleton,
-                                       Trapezoidal, Triangular)
+from fuzzynav.fuzzy.membership import Bell, Gaussian, Linear, Ramp, Sigmoid, Singleton, Trapezoidal, Triangular
+
+if TYPE_CHECKING:  # annotations only
+    from fuzzynav.fuzzy.membership import MembershipFunction
 
 # FLL name: (arity, builder from the FLL parameters, FLL parameters of a term)
 _TERMS = {

@@ -1,4 +1,4 @@
-"""T-norm and S-norm names (computed, compiled, by :mod:`fuzzynav.fuzzy.engine.compiled`), hedges
+"""T-norm and S-norm names (computed, compiled, by :mod:`fuzzynav.fuzzy.engine.staged_kernels`), hedges
 and activation methods, vectorised (thesis §II.3; fuzzylite 8).
 
 T-norms (conjunction, implication): AlgebraicProduct, BoundedDifference, DrasticProduct,

@@ -117,7 +117,7 @@ def rules_from_grid(
         raise InputError(f"table has {len(cells)} rows, expected {len(row_labels)} ({' '.join(row_labels)})",
                          source=source, field="rows")
     rules = []
-    for i, (row_label, row) in enumerate(zip(row_labels, cells)):
+    for row_label, row in zip(row_labels, cells):
         row = row.split() if isinstance(row, str) else list(row)
         if len(row) != len(column_labels):
             raise InputError(

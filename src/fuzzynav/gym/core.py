@@ -22,6 +22,7 @@ from dataclasses import replace
 import numpy as np
 
 from fuzzynav.control.learned import goal_inputs, side_distances
+from fuzzynav.errors import InputError
 from fuzzynav.kernels.layout import NEAREST_COLUMNS
 from fuzzynav.learn.envs.env import RobotState
 from fuzzynav.robot import tricycle
@@ -57,6 +58,10 @@ class RobotBatch:
     def start(self, rows, scenarios) -> None:
         """Begin new episodes in ``rows`` on ``scenarios`` (one each): start pose, zero command."""
         for row, scenario in zip(rows, scenarios):
+            if scenario.world.moving:  # never a silent wrong answer: these worlds would stand still here
+                raise InputError(f"the Gymnasium environments do not move obstacles yet; {scenario.name} has "
+                                 f"{len(scenario.world.moving)} moving (run it with `fuzzynav run` or BatchSimulator)",
+                                 source=scenario.source or scenario.name, field="obstacles")
             self.scenarios[row] = scenario
             self.pose[row] = scenario.start
             self.speed[row] = self.steering[row] = 0.0

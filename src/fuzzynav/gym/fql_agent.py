@@ -153,7 +153,7 @@ class FQLAgent:
         return GridLearning(DESIGNS[self.task], batch, head_names, gamma=self.gamma, epsilon=self.epsilon,
                             lam=self.lam, tolerance=self.tolerance)
 
-    def learn(self, env, total_steps: int, seed: int = 0, callback=None) -> "FQLAgent":
+    def learn(self, env, total_steps: int, seed: int = 0, callback=None) -> FQLAgent:
         """Train for ``total_steps`` environment steps (all sub-environments counted), from scratch.
 
         ``env`` is a :class:`~fuzzynav.gym.vector.FuzzynavVectorEnv` of the agent's task with

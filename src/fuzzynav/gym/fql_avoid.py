@@ -25,8 +25,18 @@ from fuzzynav.gym.episodes import unscale_actions
 from fuzzynav.learn.envs import GridPremise
 from fuzzynav.learn.tasks.common import PI, fql_learner, grid_system, output_variable, steering_episodes
 from fuzzynav.learn.tasks.fql_avoid import (
-    AVOID_SPEED, AVOID_SPEED_SHARE, AVOID_SPEEDS, AVOID_STEERING, AVOID_TOLERANCE, _avoid_candidates, avoid_inputs,
-    avoid_prior, avoid_rate, avoid_system, free_rules)
+    AVOID_SPEED,
+    AVOID_SPEED_SHARE,
+    AVOID_SPEEDS,
+    AVOID_STEERING,
+    AVOID_TOLERANCE,
+    _avoid_candidates,
+    avoid_inputs,
+    avoid_prior,
+    avoid_rate,
+    avoid_system,
+    free_rules,
+)
 
 HEADS = ("VI.20", "VI.21")  # the reward of the steering phase, of the speed phase
 

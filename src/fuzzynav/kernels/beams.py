@@ -20,8 +20,8 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import scene
 from fuzzynav.jit import jit
+from fuzzynav.kernels import scene
 from fuzzynav.kernels.layout import AT_EDGES, HEIGHT, N_CIRCLES, N_ELLIPSES, N_POLYGONS, WIDTH
 from fuzzynav.kernels.motion import wrap
 

@@ -13,10 +13,37 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import route
-from fuzzynav.kernels.layers import (ACTIVE, AHEAD, BEST, FAILED, FIRST, FOLLOW_TIME, FREE, HIT, HORIZON, LEAVE_GAIN,
-                                     LOOP_GAIN, MIN_LAP, NEAR, OFFSET, PATIENCE, PLACES_KEPT, PLANNED, REACH, REPLAN,
-                                     REVISIT, ROOM, ROUTE_X, ROUTE_Y, SAMPLE_EVERY, SEARCH, SIDE, T_BEST, T_FOLLOW,
-                                     TIGHT)
+from fuzzynav.kernels.layers import (
+    ACTIVE,
+    AHEAD,
+    BEST,
+    FAILED,
+    FIRST,
+    FOLLOW_TIME,
+    FREE,
+    HIT,
+    HORIZON,
+    LEAVE_GAIN,
+    LOOP_GAIN,
+    MIN_LAP,
+    NEAR,
+    OFFSET,
+    PATIENCE,
+    PLACES_KEPT,
+    PLANNED,
+    REACH,
+    REPLAN,
+    REVISIT,
+    ROOM,
+    ROUTE_X,
+    ROUTE_Y,
+    SAMPLE_EVERY,
+    SEARCH,
+    SIDE,
+    T_BEST,
+    T_FOLLOW,
+    TIGHT,
+)
 
 
 @jit

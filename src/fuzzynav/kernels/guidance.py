@@ -36,12 +36,37 @@ import numpy as np
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import car_route, recovery, route, sightings
-from fuzzynav.kernels.layers import (GUIDE_AHEAD, GUIDE_BARE, GUIDE_CAR, GUIDE_CAR_AHEAD, GUIDE_CAR_CELL,
-                                     GUIDE_CAR_GEAR, GUIDE_CAR_REVERSE, GUIDE_CAR_ROOM, GUIDE_CAR_SPEED,
-                                     GUIDE_CAR_STEERING, GUIDE_CAR_STEERINGS, GUIDE_CAR_TIGHT, GUIDE_CELL,
-                                     GUIDE_DIRECT, GUIDE_DRIVEN, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_NARROW, GUIDE_PLANNED,
-                                     GUIDE_REPLAN, GUIDE_ROOM, GUIDE_RUN, GUIDE_X, GUIDE_Y, MAX_REVERSE_SPEED, NO_PHASE,
-                                     PHASE, V_BACK, WHEELBASE)
+from fuzzynav.kernels.layers import (
+    GUIDE_AHEAD,
+    GUIDE_BARE,
+    GUIDE_CAR,
+    GUIDE_CAR_AHEAD,
+    GUIDE_CAR_CELL,
+    GUIDE_CAR_GEAR,
+    GUIDE_CAR_REVERSE,
+    GUIDE_CAR_ROOM,
+    GUIDE_CAR_SPEED,
+    GUIDE_CAR_STEERING,
+    GUIDE_CAR_STEERINGS,
+    GUIDE_CAR_TIGHT,
+    GUIDE_CELL,
+    GUIDE_DIRECT,
+    GUIDE_DRIVEN,
+    GUIDE_GEAR,
+    GUIDE_KAPPA,
+    GUIDE_NARROW,
+    GUIDE_PLANNED,
+    GUIDE_REPLAN,
+    GUIDE_ROOM,
+    GUIDE_RUN,
+    GUIDE_X,
+    GUIDE_Y,
+    MAX_REVERSE_SPEED,
+    NO_PHASE,
+    PHASE,
+    V_BACK,
+    WHEELBASE,
+)
 
 
 @jit

@@ -59,3 +59,20 @@ def _polygon_rows(polygons: list) -> tuple[np.ndarray, np.ndarray, int]:
         rows[same, 2:4] = centres = np.add.reduce(group, axis=1) / count
         rows[same, 4] = np.hypot(group[:, :, 0] - centres[:, None, 0], group[:, :, 1] - centres[:, None, 1]).max(axis=1)
     return rows, edges, len(a)
+
+
+def mover_rows(scene: np.ndarray, columns) -> np.ndarray:
+    """Rows ``(M, 4)`` int of the obstacle ``columns`` that move, for
+    :func:`fuzzynav.kernels.traffic.place`: (primitive code, offset of its row in ``scene``,
+    first edge, end edge — both 0 for a disc or an ellipse)."""
+    n_c, n_p = int(scene[N_CIRCLES]), int(scene[N_POLYGONS])
+    rows = np.zeros((len(columns), 4), dtype=np.int64)
+    for m, column in enumerate(columns):
+        if column < n_c:
+            rows[m, :2] = 0, int(scene[AT_CIRCLES]) + 3 * column
+        elif column < n_c + n_p:
+            at = int(scene[AT_POLYGONS]) + 5 * (column - n_c)
+            rows[m] = 1, at, int(scene[at]), int(scene[at + 1])
+        else:
+            rows[m, :2] = 2, int(scene[AT_ELLIPSES]) + 7 * (column - n_c - n_p)
+    return rows

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels import guard
 from fuzzynav.jit import jit
+from fuzzynav.kernels import guard
 from fuzzynav.kernels.motion import wrap
 from fuzzynav.kernels.navigators import guarded_goal_seeking
 

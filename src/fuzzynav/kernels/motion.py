@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels.angles import wrap_formula
 from fuzzynav.jit import jit
+from fuzzynav.kernels.angles import wrap_formula
 
 wrap = jit(wrap_formula)
 

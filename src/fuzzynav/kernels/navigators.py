@@ -14,12 +14,12 @@ from __future__ import annotations
 
 import math
 
-from fuzzynav.kernels import gaps, guard, ts0
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
+from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.kernels.motion import wrap
 
 GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
-ALPHA_MAX = math.pi / 5  # largest steering singleton of Fig IV.7 (the full-lock turn)
 MODE, HELD, SIDE, COUNT = range(4)
 # params: shared, then per navigator
 WHEELBASE, DWELL, LANE, ROOM_MARGIN, STOP_MARGIN, V_TURN, TURN_RADIUS, BODY, HALF_CONE = range(9)
@@ -29,7 +29,10 @@ WALL_COLUMNS = 9  # wall-follow: d_d, d_f, d_g
 STEERING, SPEED = 9, 10  # a constant command
 # shared again, after the longest block: readings by sector, gap finding (kernels.gaps)
 READING_HALF, GAP, GAP_CLEARANCE, GAP_LOOK, GAP_FIELD = range(COLUMNS + 7, COLUMNS + 12)
-N_PARAMS = GAP_FIELD + 1
+# the optional layers this package adds to the published navigators (1.0 on, 0.0 off;
+# fuzzynav.control.batched.LAYERS)
+ORBIT_GUARD, TURNING_ROOM, SAFETY_STOP, HYSTERESIS = range(GAP_FIELD + 1, GAP_FIELD + 5)
+N_PARAMS = HYSTERESIS + 1
 GSB_VRB, TURN, GAP_5B = 4, 5, 6  # fuzzy-5b modes beyond guard.GSB, FOA, ROA, LOA
 RANK_5B = (0, 3, 2, 2, 1, 4, 2)  # caution ranks of the fuzzy-5b modes
 GAP_2B = 3
@@ -41,8 +44,10 @@ RANK_2B = (0, 1, 2, 1)  # GSB, OA, OA at full lock, through the gap
 def guarded_goal_seeking(tables, system, distance, bearing, wheelbase):
     """(α, V, guard) of Table IV.1 with the anti-orbit guard: the arc through the goal
     α_arc = atan(2 l sin β / d) when the table steers less, straight on when even α_max is too
-    wide (:mod:`fuzzynav.control.goal_seeking`)."""
+    wide (:mod:`fuzzynav.control.goal_seeking`); ``wheelbase`` 0 is the table alone (no guard)."""
     table, speed = ts0.evaluate(tables, system, distance, -wrap(bearing), 0.0)
+    if wheelbase <= 0.0:
+        return table, speed, 0
     arc = math.atan(2.0 * wheelbase * math.sin(bearing) / max(distance, 1e-9))
     if abs(arc) > ALPHA_MAX:
         return 0.0, speed, 2
@@ -58,6 +63,18 @@ def goal_seeking_all(tables, system, distance, bearing, wheelbase, out):
 
 
 @jit
+def guard_wheelbase(params):
+    """The wheelbase the anti-orbit guard works with: 0 (the table alone) with that layer off."""
+    return params[WHEELBASE] if params[ORBIT_GUARD] != 0.0 else 0.0
+
+
+@jit
+def dwell(params):
+    """Steps a behaviour is held before a change that removes caution: none without hysteresis."""
+    return params[DWELL] if params[HYSTERESIS] != 0.0 else 0.0
+
+
+@jit
 def watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, goal_bearing, turning):
     """Remember this step's hits and ask the turning-room guard: (turn wanted?, side)."""
     guard.remember(memory, state[COUNT], x, y, theta, ranges, angles, max_range, d_o, b_o, params[HALF_CONE])
@@ -65,12 +82,15 @@ def watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, 
     wanted, side = guard.turn_wanted(memory, x, y, theta, v * dt, turning, goal_bearing, params[LANE],
                                      params[ROOM_MARGIN], state[SIDE], params[BODY], params[TURN_RADIUS])
     state[SIDE] = side
-    return wanted, side
+    return wanted and params[TURNING_ROOM] != 0.0, side
 
 
 @jit
 def safety_stop(params, memory, x, y, theta, speed, dt):
-    """0 when one step at ``speed`` would bring the body within the stop margin of a hit."""
+    """0 when one step at ``speed`` would bring the body within the stop margin of a hit (never
+    with that layer off)."""
+    if params[SAFETY_STOP] == 0.0:
+        return speed
     return 0.0 if guard.step_clearance(memory, x, y, theta, speed * dt, params[BODY]) < params[STOP_MARGIN] else speed
 
 
@@ -94,7 +114,7 @@ def through_gap(params, ranges, angles, bearing):
 def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
                    dt, d_o, b_o):
     """fuzzy-2b (Fig IV.9): (α, V, mode 0 GSB / 1 OA / 2 OA at full lock)."""
-    steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+    steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, guard_wheelbase(params))
     d_ro, theta_o = d_o, b_o
     k = 0
     for j in range(1, ranges.shape[0]):
@@ -107,7 +127,7 @@ def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bear
     in_way = abs(theta_o) <= params[FRONT] or (abs(theta_o) <= sector and abs(wrap(theta_o - bearing)) <= sector)
     avoid = d_ro < params[DETECTION] and in_way and distance > d_ro
     before = max(state[MODE], 0)
-    if before >= 1 and d_ro < params[DETECTION] + params[RELEASE] and abs(theta_o) <= sector + math.radians(15.0) \
+    if params[HYSTERESIS] != 0.0 and before >= 1 and d_ro < params[DETECTION] + params[RELEASE] and abs(theta_o) <= sector + math.radians(15.0) \
             and distance > d_ro:
         avoid = True
     turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
@@ -115,13 +135,13 @@ def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bear
     gap, heading = through_gap(params, ranges, angles, bearing) if avoid else (False, 0.0)
     turn = turn and not gap  # a passage that fits and can be turned to: no full-lock turn needed
     mode = guard.switch(state, 2 if turn else ((GAP_2B if gap else 1) if avoid else 0), True, RANK_2B,
-                        params[DWELL])
+                        dwell(params))
     if mode >= 1:
         steering, speed = ts0.evaluate(tables, 1, d_ro if math.isfinite(d_ro) else 1e3, -wrap(theta_o), 0.0)
     if mode == GAP_2B and not gap:  # held by the switch: this step's gap, if any
         gap, heading = through_gap(params, ranges, angles, bearing)
     if mode == GAP_2B and gap:  # Table IV.1 towards the gap, at the avoider's speed
-        steering = guarded_goal_seeking(tables, 0, distance, heading, params[WHEELBASE])[0]
+        steering = guarded_goal_seeking(tables, 0, distance, heading, guard_wheelbase(params))[0]
     if mode == 2:
         steering, speed = side * ALPHA_MAX, params[V_TURN]
     return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
@@ -140,7 +160,7 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
         d6 = ranges[int(params[c + 6])]
     d = (d0, d1, d2, d3, d4, d5, d6)
     before = state[MODE]
-    if before == guard.GSB or before == GSB_VRB:  # goal seeking keeps the robot under relaxed thresholds
+    if params[HYSTERESIS] != 0.0 and (before == guard.GSB or before == GSB_VRB):  # goal seeking keeps the robot under relaxed thresholds
         choice = guard.select(d, distance, bearing, params[KEPT_DETECTION], params[FRONT_5B], params[KEPT_KEEP],
                               params[KEPT_CLEAR], params[VISION])
     else:
@@ -153,13 +173,13 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
     gap, heading = through_gap(params, ranges, angles, bearing) if wanted != guard.GSB else (False, 0.0)
     if gap:  # a passage that fits and can be turned to: no full-lock turn needed
         wanted, turn = GAP_5B, False
-    mode = guard.switch(state, wanted, dmin < params[KEEP] or turn or gap, RANK_5B, params[DWELL])
+    mode = guard.switch(state, wanted, dmin < params[KEEP] or turn or gap, RANK_5B, dwell(params))
     if mode == GAP_5B and not gap:  # held by the switch: this step's gap, else the front avoider
         gap, heading = through_gap(params, ranges, angles, bearing)
     steering = speed = 0.0
     if mode == guard.GSB or mode == GSB_VRB or (mode == GAP_5B and gap):
         steering, speed, _ = guarded_goal_seeking(tables, 0, distance, heading if mode == GAP_5B else bearing,
-                                                  params[WHEELBASE])
+                                                  guard_wheelbase(params))
     elif mode == TURN:
         steering, speed = side * ALPHA_MAX, params[V_TURN]
     if mode != guard.GSB and mode != TURN:
@@ -187,7 +207,7 @@ def act_one(kind, params, tables, state, memory, x, y, theta, v, tx, ty, ranges,
     distance = math.hypot(tx - x, ty - y)
     bearing = wrap(math.atan2(ty - y, tx - x) - theta)
     if kind == GOAL_SEEKING:
-        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, params[WHEELBASE])
+        steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, guard_wheelbase(params))
         return steering, speed, 0
     if kind == TWO_BEHAVIOURS:
         return two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,

@@ -9,13 +9,34 @@ from __future__ import annotations
 
 import math
 
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
 from fuzzynav.kernels import sightings, ts0
-from fuzzynav.kernels.layers import (BACK, BACK_DISTANCE, BACK_SPEED, BACK_STEERING, FLIP, HEADING, LANE, LAST_X,
-                                     LAST_Y, MARGIN, MAX_REVERSE_SPEED, NO_PHASE, PHASE, RADIUS, RECOVERY_TIME,
-                                     START_X, START_Y, T_RECOVERY, TURN, TURN_ANGLE, V_BACK, V_TURN)
+from fuzzynav.kernels.layers import (
+    BACK,
+    BACK_DISTANCE,
+    BACK_SPEED,
+    BACK_STEERING,
+    FLIP,
+    HEADING,
+    LANE,
+    LAST_X,
+    LAST_Y,
+    MARGIN,
+    MAX_REVERSE_SPEED,
+    NO_PHASE,
+    PHASE,
+    RADIUS,
+    RECOVERY_TIME,
+    START_X,
+    START_Y,
+    T_RECOVERY,
+    TURN,
+    TURN_ANGLE,
+    V_BACK,
+    V_TURN,
+)
 
-ALPHA_TURN = math.pi / 5  # the largest steering singleton of Fig IV.7
 LANE_HALF = math.radians(31)  # the rays that must read the lane free to end the turn early
 
 
@@ -45,7 +66,7 @@ def start(state, params, tables, points, count, x, y, theta, goal_bearing, cap, 
     again = state[LAST_X] == state[LAST_X] and math.hypot(x - state[LAST_X], y - state[LAST_Y]) < 1.0
     state[FLIP] = (1.0 - state[FLIP]) if again else 0.0
     if state[FLIP]:
-        steering = -steering if abs(steering) > 1e-9 else ALPHA_TURN * (1.0 if goal_bearing >= 0 else -1.0)
+        steering = -steering if abs(steering) > 1e-9 else ALPHA_MAX * (1.0 if goal_bearing >= 0 else -1.0)
     state[LAST_X], state[LAST_Y] = x, y
     state[PHASE], state[START_X], state[START_Y], state[T_RECOVERY] = BACK, x, y, t
     state[BACK_STEERING], state[BACK_SPEED] = steering, -min(params[V_BACK], params[MAX_REVERSE_SPEED])
@@ -64,11 +85,11 @@ def command(state, params, points, count, x, y, theta, ranges, angles, dt, t):
         backed = math.hypot(x - state[START_X], y - state[START_Y])
         if backed < params[BACK_DISTANCE] and safe(params, points, count, x, y, theta, state[BACK_SPEED], dt):
             return True, state[BACK_STEERING], state[BACK_SPEED], BACK
-        state[PHASE] = TURN if abs(state[BACK_STEERING]) > ALPHA_TURN / 4 else NO_PHASE
+        state[PHASE] = TURN if abs(state[BACK_STEERING]) > ALPHA_MAX / 4 else NO_PHASE
         state[HEADING] = theta
     if state[PHASE] == TURN:
         turned = abs(remainder(theta - state[HEADING], math.tau))
-        steering = -math.copysign(ALPHA_TURN, state[BACK_STEERING])
+        steering = -math.copysign(ALPHA_MAX, state[BACK_STEERING])
         lane_free = True
         for i in range(angles.shape[0]):
             if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[LANE]:

@@ -15,9 +15,26 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import escape, guidance, navigators, recovery, sightings
-from fuzzynav.kernels.layers import (ACTIVE, COUNT, ESCAPE, GROW, GUIDE, MAX_REVERSE_SPEED, N_LABELS, NO_PHASE, ON,
-                                     PHASE, RADIUS, RECOVERY, STOP_WAIT, STOPPED, TABLES_AT, cells_of, places_of,
-                                     points_of)
+from fuzzynav.kernels.layers import (
+    ACTIVE,
+    COUNT,
+    ESCAPE,
+    GROW,
+    GUIDE,
+    MAX_REVERSE_SPEED,
+    N_LABELS,
+    NO_PHASE,
+    ON,
+    PHASE,
+    RADIUS,
+    RECOVERY,
+    STOP_WAIT,
+    STOPPED,
+    TABLES_AT,
+    cells_of,
+    places_of,
+    points_of,
+)
 from fuzzynav.kernels.motion import wrap
 
 

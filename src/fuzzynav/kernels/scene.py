@@ -9,12 +9,19 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from fuzzynav.jit import jit
+from fuzzynav.kernels.layout import (
+    AT_CIRCLES,
+    AT_EDGES,
+    AT_ELLIPSES,
+    AT_POLYGONS,
+    HEIGHT,
+    N_CIRCLES,
+    N_ELLIPSES,
+    N_POLYGONS,
+    WIDTH,
+)
 from fuzzynav.kernels.motion import ring_gap
-from fuzzynav.kernels.layout import (AT_CIRCLES, AT_EDGES, AT_ELLIPSES, AT_POLYGONS, HEIGHT, N_CIRCLES, N_ELLIPSES,
-                                     N_POLYGONS, WIDTH)
 
 
 @jit

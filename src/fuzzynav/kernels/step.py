@@ -8,7 +8,10 @@ Arrays:
   the sensor range (and, last, the sensors' half beam width), the task (:data:`SETUP_FIELDS`), then the sensor angles and the path's
   waypoints (x0, y0, x1, y1, …);
 - ``state`` (N, :data:`STATE_FIELDS`) floats per robot; ``ranges`` (N, S);
-- ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index.
+- ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index;
+- ``base``, ``movers``, ``offsets``: the moving obstacles (:mod:`fuzzynav.kernels.traffic`),
+  placed in ``scene_array`` at their offsets of step ``k`` before the robots move (none: a static
+  world, whose scene is never written).
 
 Finished robots are neither moved, judged nor sensed.
 """
@@ -19,10 +22,9 @@ import math
 
 import numpy as np
 
-from fuzzynav.kernels import beams, layers, robust, scene
 from fuzzynav.jit import jit
-from fuzzynav.kernels.layout import N_CIRCLES, N_ELLIPSES, N_POLYGONS
-from fuzzynav.kernels.motion import ROBOT_FIELDS, RADIUS, advance, clip, wrap
+from fuzzynav.kernels import beams, layers, navigators, robust, scene, traffic
+from fuzzynav.kernels.motion import RADIUS, ROBOT_FIELDS, advance, clip, wrap
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
                                "goal_y", "n_angles", "half_beam")
@@ -44,6 +46,21 @@ def idle_arguments() -> tuple:
     params, tables, state, memory, layer params and state)."""
     return (NO_NAVIGATOR, np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)),
             *layers.none())
+
+
+def lean_arguments(navigator: tuple) -> tuple:
+    """The navigator arguments of :func:`step` (kind, params, tables, state, memory, layer params
+    and state) with ``None`` for what the run does not use: the navigator's ``params`` without a
+    navigator (:data:`NO_NAVIGATOR`), the layers' params and state when they are off. numba
+    compiles one version of :func:`step` per pattern of ``None`` and prunes the branches they
+    close, so a run compiles only the code it runs (the layers of the default navigator are
+    most of the cold compile)."""
+    kind, params, tables, cstate, memory, layer_params, layer_state = navigator
+    if kind == NO_NAVIGATOR:
+        return kind, None, tables, cstate, memory, None, None
+    if layer_params[layers.ON] == 0.0:
+        return kind, params, tables, cstate, memory, None, None
+    return navigator
 
 
 @jit
@@ -132,12 +149,15 @@ def reset(setup, scene_array, state, ranges, status):
 
 
 @jit
-def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, scene_array, k, state, ranges, status):
+def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, base, movers, offsets, scene_array, k,
+         state, ranges, status):
     """One step of every running robot, ``k`` being the step count after it; returns how many
-    still run. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
+    still run. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
+    so the robots' stop tests and sensing see them there. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
     ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
     loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
-    (commands given in ``state``)."""
+    (commands given in ``state``), the arguments as :func:`lean_arguments` passes them."""
+    traffic.place(base, movers, offsets, scene_array)
     running = 0
     n_angles = int(setup[N_ANGLES])
     angles = setup[ANGLES:ANGLES + n_angles]
@@ -147,11 +167,17 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
             continue
         row = state[n]
         steering, speed = row[STEERING], row[SPEED]
-        if kind != NO_NAVIGATOR:
-            steering, speed, code = robust.act_one(
-                kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], row[X], row[Y], row[THETA],
-                row[SPEED], row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0],
-                row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING], (k - 1) * setup[0])
+        if params is not None:  # None (commands given) and the None of layer_params below: branches pruned
+            if layer_params is None:  # at compile time, so a run compiles only the navigator code it uses
+                steering, speed, code = navigators.act_one(
+                    kind, params, tables, cstate[n], memory[n], row[X], row[Y], row[THETA], row[SPEED],
+                    row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0],
+                    row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING])
+            else:
+                steering, speed, code = robust.act_one(
+                    kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], row[X], row[Y],
+                    row[THETA], row[SPEED], row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE],
+                    setup[0], row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING], (k - 1) * setup[0])
             row[BEHAVIOUR] = code
         steering, speed = clip(steering, speed, setup)
         if setup[FORCED_SPEED] == setup[FORCED_SPEED]:

@@ -22,7 +22,6 @@ Fuzzy Q-learning (Algorithm VI.1) calls the same policies with one row per rule.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-
 from dataclasses import dataclass, field
 from typing import ClassVar
 

@@ -17,8 +17,8 @@ An output's conclusions are named in one of three ways:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 

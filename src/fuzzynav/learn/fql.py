@@ -112,7 +112,7 @@ class FuzzyQLearner:
         self._traces = self._shares_now = self._quality = None
 
     @classmethod
-    def separate(cls, premise, outputs, **options) -> "FuzzyQLearner":
+    def separate(cls, premise, outputs, **options) -> FuzzyQLearner:
         """One head per output, each a candidate set (N,) or (R, N) with the same N."""
         n_rules = options.pop("n_rules", None) or _n_rules(premise)
         heads = [_as_candidates(c, n_rules)[0] for c in outputs]
@@ -122,7 +122,7 @@ class FuzzyQLearner:
         return cls(premise, np.stack(heads), n_rules=n_rules, **options)
 
     @classmethod
-    def joint(cls, premise, candidates, **options) -> "FuzzyQLearner":
+    def joint(cls, premise, candidates, **options) -> FuzzyQLearner:
         """One head whose candidates are vectors: (N, D) for every rule, or (R, N, D)."""
         n_rules = options.pop("n_rules", None) or _n_rules(premise)
         values = np.asarray(candidates, dtype=float)
@@ -279,7 +279,7 @@ class FuzzyQLearner:
         return document
 
     @classmethod
-    def from_dict(cls, document: dict, premise) -> "FuzzyQLearner":
+    def from_dict(cls, document: dict, premise) -> FuzzyQLearner:
         """Inverse of :meth:`to_dict`, given the premise (the fuzzy system of the rules)."""
         try:
             learner = cls(premise, document["candidates"], gamma=document["gamma"],

@@ -190,7 +190,7 @@ class TabularLearner:
         }
 
     @classmethod
-    def from_dict(cls, document: dict) -> "TabularLearner":
+    def from_dict(cls, document: dict) -> TabularLearner:
         """Inverse of :meth:`to_dict`."""
         try:
             learner = cls(document["n_states"], document["n_actions"], method=document["method"],

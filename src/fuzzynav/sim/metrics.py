@@ -5,7 +5,9 @@ completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``
 ``path_length_m`` (length of the driven polyline), ``min_clearance_m`` (smallest gap between
 the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
 ``mean_speed_mps``, ``final_distance_m`` (to the goal / current waypoint / target),
-``steering_effort_rad`` (mean |α|) and ``steering_variation_rad`` (Σ |Δα|).
+``steering_effort_rad`` (mean |α|), ``steering_variation_rad`` (Σ |Δα|) and ``collision_by``
+(``"robot"`` or ``"obstacle"``: who moved into whom, :mod:`fuzzynav.sim.fault`; None without a
+collision). With moving obstacles the clearances are measured to where they are at each step.
 Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
 ``max_cross_track_m`` (distance from each visited position to the path polyline, thesis §V.4).
 Target tasks add ``captured``, ``capture_time_s`` (None when not captured) and
@@ -42,7 +44,9 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
     """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
     xy = trace.pose[:, :2]
     steps = np.diff(xy, axis=0)
-    clearance = scenario.world.clearance(xy) - trace.robot_radius
+    world = scenario.world
+    clearance = (world.clearance(xy) if trace.obstacle_offsets is None
+                 else world.clearance_over_time(xy, trace.obstacle_offsets)) - trace.robot_radius
     final_distance = np.hypot(*(trace.target[-1] - xy[-1]))
     result = {
         "scenario": trace.scenario,
@@ -51,6 +55,7 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
         "outcome": trace.outcome,
         "reached_goal": trace.reached,
         "collision": trace.collision,
+        "collision_by": trace.collision_by,
         "timeout": trace.outcome == "timeout",
         "time_s": round(trace.time, 10),
         "steps": trace.steps,

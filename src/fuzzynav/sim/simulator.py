@@ -3,8 +3,8 @@
 :class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
 (:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:
 
-1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``) decides
-   inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
+1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``, the
+   optional hooks of :mod:`fuzzynav.control.hooks`) decides inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
    returning ``(steering (N,), speed (N,))`` or ``(steering, speed, behaviours)``, or
    ``controller.act(obs)`` per robot (one deep copy of the controller per robot when N > 1);
 2. clip the command to the robot's limits (path tasks: speed = the path's constant speed);
@@ -13,6 +13,10 @@
    boundary), task done (goal within tolerance / last waypoint / target captured), max_time;
 5. sense: range rings, nearest obstacle (D_ro, θ_o), the task's target; the
    :class:`BatchObservation` is built when asked for.
+
+Moving obstacles (:mod:`fuzzynav.world.moving`) are placed at their step's offsets by the same
+compiled call, before the robots move (the offsets are computed for blocks of steps at once);
+a collision records who moved into whom (:mod:`fuzzynav.sim.fault`).
 
 Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
 returning a :class:`Trace`; :func:`run_episode` is the one-call form.
@@ -30,15 +34,17 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
+from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
 from fuzzynav.errors import CommandError
-from fuzzynav.kernels import layers, step as step_kernel
+from fuzzynav.kernels import layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
-from fuzzynav.robot import tricycle
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
+from fuzzynav.sim.fault import collision_by
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world import moving
 from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 from fuzzynav.world.world import add_noise
@@ -46,6 +52,8 @@ from fuzzynav.world.world import add_noise
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
+_OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
+_STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
 
 
@@ -55,7 +63,7 @@ def default_ring(scenario: Scenario, controller) -> SensorRing:
     if scenario.sensors is not None:
         return named_ring(scenario.sensors)
     first = controller if hasattr(controller, "act") or hasattr(controller, "act_batch") else next(iter(controller))
-    return getattr(first, "sensors", None) or SensorRing()
+    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
 
 
 class BatchSimulator:
@@ -90,19 +98,20 @@ class BatchSimulator:
                 raise ValueError(f"{len(copies)} controllers for {self.n} robots")
             self.batch = False
         for copied in copies:  # map-aware controllers (``astar-pp``) are shown the map once
-            if callable(getattr(copied, "prepare", None)):
+            if isinstance(copied, MapAware):
                 copied.prepare(scenario)
         self.controllers = copies
         for each in copies:  # navigators sized for this robot (CompiledNavigator.for_robot)
-            if callable(getattr(each, "for_robot", None)):
+            if isinstance(each, SizedForRobot):
                 each.for_robot(self.params)
         self.controller_name = getattr(copies[0], "name", type(copies[0]).__name__)
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
-        self._scene, self._noisy = scenario.world.scene, self.sensors.noise_std > 0
-        compiled = getattr(copies[0], "compiled", None) if len(copies) == 1 and self.batch else None
-        self._compiled = compiled if callable(compiled) else None
+        self._noisy = self.sensors.noise_std > 0
+        self._set_traffic(scenario.world)
+        compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
+        self._compiled = copies[0].compiled if compiled else None
         self.reset()
 
     # -- episode -----------------------------------------------------------------------------
@@ -123,12 +132,37 @@ class BatchSimulator:
         self._moving_target = self.task.kind == "target"
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position(0.0)
-        self._running = step_kernel.reset(self._setup, self.scenario.world.scene, self._state, self._ranges,
-                                          self._status)
+        self._fault = np.full(self.n, "robot", dtype=object)
+        if self._movers.shape[0]:
+            self._scene[:] = self._base
+            traffic.place(self._base, self._movers, self._offsets(0), self._scene)
+        self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status)
         self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
-        self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour")}
+        self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
         self._record_state()
+
+    def _set_traffic(self, world) -> None:
+        """The moving obstacles of ``world``: their rows, a scene of its own that the compiled
+        step writes them into, and the map from kernel column to moving obstacle."""
+        self._base, self._movers = world.scene, world.movers
+        self._scene = world.scene.copy() if len(self._movers) else world.scene
+        self._mover_of_column = np.full(len(world.order), -1)
+        index = {obstacle: m for m, obstacle in enumerate(world.moving)}
+        for column, obstacle in enumerate(world.order[:-1]):
+            self._mover_of_column[column] = index.get(int(obstacle), -1)
+        self._block = (0, np.zeros((0, len(self._movers), 2)))  # (first step, offsets of the steps from it)
+
+    def _offsets(self, k: int) -> np.ndarray:
+        """Offsets ``(M, 2)`` of the moving obstacles at step ``k`` (``(0, 2)`` in a static world)."""
+        start, block = self._block
+        if not 0 <= k - start < len(block):
+            if not len(self._movers):
+                return _STILL
+            start = k - k % _OFFSET_BLOCK
+            block = moving.offsets(self.scenario.world, np.arange(start, start + _OFFSET_BLOCK) * self.params.dt)
+            self._block = (start, block)
+        return block[k - start]
 
     @property
     def pose(self) -> np.ndarray:
@@ -217,16 +251,26 @@ class BatchSimulator:
         """One step of every running robot (the new observation is :attr:`observation`)."""
         running = self.active if self._noisy else None
         labels = None if self._compiled is not None else self._act(self.observation)
+        moving = self._movers.shape[0]
+        if moving:
+            before, offsets_before, running_before = self._state[:, :2].copy(), self._offsets(self.k), self._running
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
         try:
-            self._running = step_kernel.step(*self._navigator, self._setup, self._scene, self.k, self._state,
-                                             self._ranges, self._status)
+            offsets = self._offsets(self.k)
+            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
+                                             self._movers, offsets, self._scene, self.k, self._state, self._ranges,
+                                             self._status)
         except ValueError as error:  # a compiled navigator refusing a non-finite input
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
         self._observation = None
+        if moving and self._running < running_before:  # someone stopped: a collision this step?
+            hit = (self._status[:, step_kernel.OUTCOME] == COLLISION) & (self._status[:, step_kernel.STEPS] == self.k)
+            if hit.any():
+                self._fault[hit] = collision_by(self._state[hit], before[hit], offsets - offsets_before,
+                                                self._mover_of_column, self.params.radius)
         if self._layer_params[layers.GROW]:  # the navigator makes room (the parameter array stays the same)
             self._navigator = self._compiled(self.n, self.sensors.angles)
         if running is not None:
@@ -245,8 +289,9 @@ class BatchSimulator:
             self._history["state"].append(self._state.copy())
             self._history["ranges"].append(self._ranges.copy())
             self._history["waypoint"].append(self._status[:, step_kernel.WAYPOINT].copy())
+            self._history["obstacles"].append(self._offsets(self.k))
 
-    def run(self) -> "BatchSimulator":
+    def run(self) -> BatchSimulator:
         """Step until every robot has finished; returns ``self`` (see :meth:`outcomes`, :meth:`trace`)."""
         while not self.done:
             self.step()
@@ -256,6 +301,11 @@ class BatchSimulator:
     def outcomes(self) -> list[str]:
         """Outcome of each robot: ``"reached"``, ``"collision"``, ``"timeout"`` (or ``"running"``)."""
         return [OUTCOME_NAMES.get(int(s), "running") for s in self.status]
+
+    def collisions_by(self) -> list[str | None]:
+        """Who moved into whom in each robot's collision (:mod:`fuzzynav.sim.fault`): ``"robot"``,
+        ``"obstacle"``, or ``None`` for a robot that did not collide."""
+        return [str(by) if s == COLLISION else None for s, by in zip(self.status, self._fault)]
 
     def trace(self, i: int = 0) -> Trace:
         """The :class:`Trace` of robot ``i`` (needs ``record=True``)."""
@@ -285,6 +335,8 @@ class BatchSimulator:
             max_range=self.sensors.max_range,
             outcome=self.outcomes()[i],
             robot_radius=self.params.radius,
+            collision_by=self.collisions_by()[i],
+            obstacle_offsets=(np.array(self._history["obstacles"][: k + 1]) if len(self._movers) else None),
         )
 
 

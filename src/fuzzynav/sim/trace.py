@@ -36,6 +36,8 @@ class Trace:
     max_range: float
     outcome: str
     robot_radius: float
+    collision_by: str | None = None  # "robot" | "obstacle" after a collision (fuzzynav.sim.fault)
+    obstacle_offsets: np.ndarray | None = None  # (K+1, M, 2) translations of the moving obstacles, None: static
 
     @property
     def steps(self) -> int:

@@ -10,7 +10,7 @@ counts and final poses against it). Each job is one robot with its own navigator
 memory and layer state; the layers' obstacle-point slots are sized up front (:data:`SLOTS`), and
 a job that would outgrow them stops with :data:`OVERFLOW` and is run again with twice the room.
 
-Noisy sensors and moving targets are simulated by the Python loop only; :class:`Worlds` refuses
+Noisy sensors, moving targets and moving obstacles are simulated by the Python loop only; :class:`Worlds` refuses
 them.
 """
 
@@ -49,14 +49,15 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
     radius = setup[RADIUS]
     gx, gy = setup[step_kernel.GOAL_X], setup[step_kernel.GOAL_Y]
     out[START_DISTANCE] = math.hypot(gx - start[0], gy - start[1])
+    still, no_offsets = np.zeros((0, 4), dtype=np.int64), np.zeros((0, 2))  # tuning worlds stand still
     running = step_kernel.reset(setup, scene, state, ranges, status)
     clearance = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
     path, k = 0.0, 0
     while running:
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
-        running = step_kernel.step(kind, params, tables, cstate, memory, lp, lstate, setup, scene, k, state, ranges,
-                                   status)
+        running = step_kernel.step(kind, params, tables, cstate, memory, lp, lstate, setup, scene, still, no_offsets,
+                                   scene, k, state, ranges, status)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
         if lp[layers.GROW] != 0.0:
@@ -104,6 +105,9 @@ class Worlds:
             if scenario.task == "target":
                 raise InputError("tuning runs goal and path tasks, not moving targets", source=scenario.name,
                                  field="task")
+            if len(scenario.world.moving):
+                raise InputError("tuning runs worlds whose obstacles stand still", source=scenario.name,
+                                 field="obstacles")
             robot = scenario.robot
             controller.for_robot(robot)
             arguments = controller.compiled(1, ring.angles)

@@ -1,29 +1,49 @@
-"""Animated GIF of an episode: the robot, its trail and its sensor rays over the world.
+"""Animated GIF of an episode: the robot, its trail and its sensor beams over the world.
 
-The world (obstacles, start, goal or path, axes and ticks) is rendered once with Agg and kept as
-a background; every frame restores it and draws only the moving artists (trail coloured by
-behaviour as in the static plots, body, heading, rays, target, title) — blitting, far cheaper than redrawing and re-laying out the whole figure
-per frame — and the frames, mapped to one 64-colour palette, are written with Pillow (no ffmpeg
-needed). Long
-episodes are subsampled to at most ``max_frames`` evenly spaced frames (the last one is the end
-of the episode); every frame shows the time and the active behaviour.
+The world (obstacles, start, goal or path, axes and ticks) and a legend of the behaviours the
+episode used are rendered once with Agg and kept as a background; every frame restores it and
+draws only the moving artists (trail coloured by behaviour as in the static plots, the robot's
+footprint and heading, the beams it senses, target, title) — blitting, far cheaper than
+redrawing and re-laying out the whole figure per frame — and the frames, mapped to one 64-colour
+palette, are written with Pillow (no ffmpeg needed). Long episodes are subsampled to at most
+``max_frames`` evenly spaced frames (the last one is the end of the episode); every frame shows
+the time and the active behaviour, and the last one, held for :data:`HOLD_S`, the outcome.
 """
 
 from __future__ import annotations
-
 
 import numpy as np
 from matplotlib import patches
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from PIL import Image
 
-from fuzzynav.storage import atomic_write
 from fuzzynav.sim.trace import Trace
-from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style
+from fuzzynav.storage import atomic_write
+from fuzzynav.viz.moving import MovingArtists
+from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 from fuzzynav.world.scenario import Scenario
+
+HOLD_S = 2.5  # seconds the last frame, with the outcome, stays on screen before the GIF loops
+MAX_BEAMS = 60  # beams drawn per frame at most (a lidar's 271 are thinned evenly)
+BODY_COLOUR = "#ffd54f"
+
+
+def short_meaning(label: str) -> str:
+    """The legend text of a behaviour up to its first detail: ``GSB: goal seeking``."""
+    return behaviour_style(label)[1].split(" (")[0].split(",")[0]
+
+
+def behaviour_legend(ax, trace: Trace) -> None:
+    """A legend, below the axes, of the behaviours the episode used, the robot and its beams."""
+    labels = sorted(dict.fromkeys(str(b) for b in trace.behaviour), key=legend_order)
+    handles = [Line2D([], [], color=behaviour_style(label)[0], linewidth=2.5) for label in labels]
+    handles += [patches.Patch(facecolor=BODY_COLOUR, edgecolor="k"), Line2D([], [], color=RAY_COLOUR, linewidth=1)]
+    ax.legend(handles, [short_meaning(label) for label in labels] + ["robot footprint, heading", "sensed beams"],
+              loc="upper center", bbox_to_anchor=(0.5, -0.07), ncols=2, fontsize=6.5, frameon=False)
 
 
 def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, max_frames: int = 100,
@@ -34,21 +54,24 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
-    draw_world(ax, scenario, trace)
+    draw_world(ax, scenario, trace, moving_obstacles=False)
+    obstacles = MovingArtists(ax, scenario, trace)  # moving obstacles and their tracks, frame by frame
+    behaviour_legend(ax, trace)
+    every = max(1, -(-len(trace.sensor_angles) // MAX_BEAMS))
     frames = np.unique(np.linspace(0, len(trace.pose) - 1, min(max_frames, len(trace.pose))).round().astype(int))
     trail = LineCollection([], linewidths=1.8, antialiaseds=False)  # coloured by behaviour, as in the static plots
     ax.add_collection(trail)
     xy = trace.pose[:, :2]
     segments = np.stack([xy[:-1], xy[1:]], axis=1)
     colours = [behaviour_style(str(b))[0] for b in trace.behaviour]
-    body = patches.Circle(trace.pose[0, :2], trace.robot_radius, fill=False, edgecolor="k")
+    body = patches.Circle(trace.pose[0, :2], trace.robot_radius, facecolor=BODY_COLOUR, edgecolor="k", linewidth=1.2)
     ax.add_patch(body)
-    heading, = ax.plot([], [], color="k", linewidth=1.5)
+    heading, = ax.plot([], [], color="k", linewidth=2.0)
     beams = LineCollection([], colors=RAY_COLOUR, linewidths=0.7, alpha=0.8)
     ax.add_collection(beams)
     target, = ax.plot([], [], "*", color=GOAL_COLOUR, markersize=12)
     title = ax.set_title(f"{trace.scenario} — {trace.controller}  t = {trace.t[-1]:.1f} s", fontsize=9)
-    moving = (trail, body, heading, beams, target, title)
+    moving = (*obstacles.artists, trail, beams, body, heading, target, title)
     for artist in moving:
         artist.set_animated(True)
     canvas.draw()  # the one full draw: layout, world, axes
@@ -58,22 +81,26 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     images = []
     for k in frames:
         pose = trace.pose[k]
+        obstacles.show(k)
         trail.set_segments(segments[:k])
         trail.set_color(colours[:k])
         body.center = pose[:2]
         tip = pose[:2] + 2 * trace.robot_radius * np.array([np.cos(pose[2]), np.sin(pose[2])])
         heading.set_data([pose[0], tip[0]], [pose[1], tip[1]])
         if rays:
-            beams.set_segments(sensor_segments(pose, trace.sensor_angles, trace.ranges[k]))
+            beams.set_segments(sensor_segments(pose, trace.sensor_angles[::every], trace.ranges[k][::every]))
         target.set_data([trace.target[k, 0]], [trace.target[k, 1]])
         behaviour = trace.behaviour[min(k, trace.steps - 1)] if trace.steps else ""
-        title.set_text(f"{trace.scenario} — {trace.controller}  t = {trace.t[k]:.1f} s  {behaviour}")
+        status = trace.outcome.upper() if k == frames[-1] else behaviour
+        title.set_text(f"{trace.scenario} — {trace.controller}  t = {trace.t[k]:.1f} s  {status}")
         canvas.restore_region(background)
         for artist in moving:
             figure.draw_artist(artist)
         images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy()))
     palette = images[-1].quantize(colors=64)  # one palette, from the busiest frame (the whole trail)
     images = [image.quantize(palette=palette, dither=Image.Dither.NONE) for image in images]
+    step_ms = max(10, int(round(1000 / fps)))
+    durations = [step_ms] * (len(images) - 1) + [max(step_ms, int(1000 * HOLD_S))]
     atomic_write(path, lambda handle: images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],
-                                                     duration=max(10, int(round(1000 / fps))), loop=0))
+                                                     duration=durations, loop=0))
     return len(frames)

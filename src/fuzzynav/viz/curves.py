@@ -17,9 +17,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from fuzzynav.storage import savefig_atomic
 from fuzzynav.errors import InputError  # noqa: E402
 from fuzzynav.learn.curves import episodes_to_converge, moving_average  # noqa: E402
+from fuzzynav.storage import savefig_atomic
 
 
 def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, label: str = "",

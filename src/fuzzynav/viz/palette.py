@@ -24,6 +24,8 @@ _CODES: dict[str, tuple[str, str]] = {
     "BF": ("#000080", "loop escape, following the boundary until the goal is free (Bug algorithms)"),
     "CAR-BACK": ("#66a61e", "car route (hybrid A* on what was seen), backing along its arc"),
     "CAR-FWD": ("#1b9e77", "car route (hybrid A* on what was seen), driving its arc where it is tight"),
+    "GAP+VRB": ("#e377c2", "through the gap that fits the body (Table IV.1 towards it) + VRB"),
+    "GAP": ("#e377c2", "through the gap that fits the body (Table IV.1 towards it)"),
 }
 # label -> (colour, legend text): the codes, then the labels that are words already
 BEHAVIOURS: dict[str, tuple[str, str]] = {

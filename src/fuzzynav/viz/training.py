@@ -12,6 +12,7 @@ from matplotlib.figure import Figure
 
 from fuzzynav.viz.trajectories import save_figure
 
+
 def plot_training(kind: str, model, data, path) -> Figure:
     """Figs V.15 / V.23: (a) desired and model output on the validation pairs, (b) their error,
     (c) the training curve (MLP loss per iteration, or ANFIS RMSE per epoch)."""

@@ -22,8 +22,9 @@ from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
-from fuzzynav.storage import savefig_atomic
 from fuzzynav.sim.trace import Trace
+from fuzzynav.storage import savefig_atomic
+from fuzzynav.viz.moving import draw_moving
 from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
 from fuzzynav.world.scenario import Scenario
 
@@ -49,12 +50,17 @@ def merged_changes(trace: Trace, distance: float = 0.5, time: float = 1.0) -> li
     return markers
 
 
-def draw_world(ax, scenario: Scenario, trace: Trace | None = None) -> None:
-    """Draw the world of ``scenario`` on ``ax`` (equal axes, metres)."""
+def draw_world(ax, scenario: Scenario, trace: Trace | None = None, *, moving_obstacles: bool = True) -> None:
+    """Draw the world of ``scenario`` on ``ax`` (equal axes, metres); its moving obstacles with
+    their tracks (:func:`fuzzynav.viz.moving.draw_moving`) unless ``moving_obstacles`` is False
+    (an animation draws them frame by frame)."""
     world = scenario.world
     ax.add_patch(patches.Rectangle((0, 0), world.width, world.height, fill=False, edgecolor="k", linewidth=1.5))
-    for shape in world.obstacles:
-        ax.add_patch(shape.patch(**OBSTACLE_STYLE))  # each obstacle type draws itself (fuzzynav.world.shapes)
+    for i, shape in enumerate(world.obstacles):
+        if i not in world.moving:
+            ax.add_patch(shape.patch(**OBSTACLE_STYLE))  # each obstacle type draws itself (fuzzynav.world.shapes)
+    if moving_obstacles and world.moving:
+        draw_moving(ax, scenario, trace)
     x, y, theta = scenario.start
     ax.plot(x, y, "ks", markersize=6, label="start")
     ax.annotate("", xy=(x + 0.8 * np.cos(theta), y + 0.8 * np.sin(theta)), xytext=(x, y),

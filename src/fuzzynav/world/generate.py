@@ -9,7 +9,10 @@ Four families on the thesis' 20 m × 20 m workspace:
   of the start or the goal are dropped: 12 to 20 remain);
 - ``"utrap"`` — a U-shaped trap of three walls (opening 3–5 m wide, 2–4 m deep) across the line
   from the start to the goal, its opening towards the start (the local minimum of reactive
-  navigation, Fig IV.23's U-wall), plus 2 to 5 discs.
+  navigation, Fig IV.23's U-wall), plus 2 to 5 discs;
+- ``"dynamic"`` — 3 to 6 standing discs and polygons plus 4 to 8 moving obstacles (crossing
+  pedestrians, patrols, oncoming traffic at 0.3–1.5 m/s, :mod:`fuzzynav.world.traffic`), none of
+  which ever comes within 1 m of the start or the goal; solvability is tested on the standing ones.
 
 Start and goal are at least 10 m apart, ≥ 2.5 m from the boundary walls and ≥ 1.5 m from every
 obstacle; the start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
@@ -27,19 +30,21 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.world import traffic
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
 from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
-KINDS = ("circles", "mixed", "dense", "utrap")  # append only: the index seeds each family
+KINDS = ("circles", "mixed", "dense", "utrap", "dynamic")  # append only: the index seeds each family
 WIDTH = HEIGHT = 20.0
 MIN_START_GOAL = 10.0  # m between start and goal
 POINT_CLEARANCE = 1.5  # m of free space around start and goal
 BORDER = 2.5  # m, start and goal keep this far from the boundary walls (room to turn from any heading)
 GRID = 0.2  # m, occupancy-grid cell
 MAX_DRAWS = 200
-TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(np.pi / 5)  # m, l / tan(α_max) = 0.69 m
+TURNING_MARGIN = DEFAULT_PARAMS.wheelbase / np.tan(ALPHA_MAX)  # m, l / tan(α_max) = 0.69 m
 
 
 def _u_trap(rng, start, goal) -> list[dict]:
@@ -58,8 +63,8 @@ def _u_trap(rng, start, goal) -> list[dict]:
 # the obstacle types each family draws (:data:`fuzzynav.world.shapes.SHAPES`, each type's ``random``); a
 # family's list is part of its worlds: extend it and its worlds change — add a family instead
 _MAKERS = {"circles": ("circle",), "mixed": ("circle", "polygon", "wall", "ellipse"),
-           "dense": ("circle", "polygon", "wall", "ellipse"), "utrap": ("circle",)}
-_COUNTS = {"circles": (8, 14), "mixed": (8, 12), "dense": (14, 20), "utrap": (2, 5)}
+           "dense": ("circle", "polygon", "wall", "ellipse"), "utrap": ("circle",), "dynamic": ("circle", "polygon")}
+_COUNTS = {"circles": (8, 14), "mixed": (8, 12), "dense": (14, 20), "utrap": (2, 5), "dynamic": (3, 6)}
 
 
 def _clear_of(shapes: list[dict], start, goal) -> bool:
@@ -108,6 +113,12 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
             shape = SHAPES[makers[int(rng.integers(len(makers)))]].random(rng)
             if _clear_of([shape], start, goal):
                 obstacles.append(shape)
+        standing = len(obstacles)
+        if kind == "dynamic":
+            movers = traffic.moving_obstacles(rng, start, goal)
+            if not _clear_of([{k: v for k, v in entry.items() if k != "motion"} for entry in movers], start, goal):
+                continue
+            obstacles += movers
         document = {
             "name": name,
             "description": f"random {kind} world",
@@ -118,7 +129,12 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
             "max_time": max_time,
         }
         scenario = scenario_from_dict(document, source=name)
-        if connected(scenario.world, scenario.start[:2], scenario.goal.position, robot_radius + margin):
+        world = scenario.world
+        if world.moving:
+            if not traffic.keeps_clear(world, (scenario.start[:2], scenario.goal.position), max_time):
+                continue
+            world = World(world.width, world.height, world.obstacles[:standing])
+        if connected(world, scenario.start[:2], scenario.goal.position, robot_radius + margin):
             return scenario
     raise RuntimeError(f"no solvable {kind} world in {MAX_DRAWS} draws")  # pragma: no cover - never seen
 

@@ -1,4 +1,5 @@
-"""Motions of a moving target, thesis §V.5 (Figs V.29–V.34).
+"""Motions of a moving target, thesis §V.5 (Figs V.29–V.34), and the reading of a ``motion``
+entry of a scenario file (the target's, and a moving obstacle's: :mod:`fuzzynav.world.moving`).
 
 The target starts at its scenario position p0 and moves along a straight line, a circle or a
 sinusoid; its position (and velocity) are known at all times. Every motion is a closed-form
@@ -7,9 +8,13 @@ function of time, vectorised over ``t``.
 
 from __future__ import annotations
 
+import difflib
 from dataclasses import dataclass
 
 import numpy as np
+
+from fuzzynav import validation
+from fuzzynav.world import limits
 
 # scenario-file parameters of each motion type: name -> (default or None when required)
 MOTION_PARAMS: dict[str, dict[str, object]] = {
@@ -78,3 +83,41 @@ class TargetMotion:
             return self.speed * np.stack([-np.sin(phase), np.cos(phase)], axis=-1)
         omega = 2.0 * np.pi / self.period
         return np.asarray(self.velocity) + self.amplitude * omega * np.cos(omega * tt) * self._normal()
+
+
+def read_motion(check, document, field: str, table: dict[str, dict[str, object]]) -> tuple[str, dict]:
+    """``(type, values)`` of a scenario file's ``motion`` mapping at ``field``, its ``type`` a key
+    of ``table`` (parameter name -> default, ``None`` when required; :data:`MOTION_PARAMS` for the
+    target): every value checked by the scenario's :class:`~fuzzynav.world.checks.Checks`
+    ``check``, each problem naming ``<field>.<key>``."""
+    if not isinstance(document, dict) or "type" not in document:
+        check.fail(f"{field}.type", "missing (one of: " + ", ".join(table) + ")")
+    kind = document["type"]
+    if not isinstance(kind, str) or kind not in table:
+        close = difflib.get_close_matches(str(kind), list(table), n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        check.fail(f"{field}.type", f"unknown motion {kind!r}{hint}; known: {', '.join(table)}")
+    params = table[kind]
+    check.mapping(document, field, ("type", *params), required=[k for k, v in params.items() if v is None])
+    values = {}
+    for key, default in params.items():
+        value, where = document.get(key, default), f"{field}.{key}"
+        if key == "center":
+            values[key] = check.point(value, where)
+        elif key == "points":
+            values[key] = check.points(value, where, 2, limits.MAX_WAYPOINTS)
+        elif key == "loop":
+            if not isinstance(value, bool):
+                check.fail(where, f"must be true or false, got {validation._shown(value)}")
+            values[key] = value
+        elif key == "velocity":
+            values[key] = np.array(validation.numbers(value, check.source, where, length=2,
+                                                      lo=-limits.MAX_TARGET_SPEED, hi=limits.MAX_TARGET_SPEED))
+        elif key == "speed":
+            values[key] = validation.number(value, check.source, where, lo=-limits.MAX_TARGET_SPEED,
+                                            hi=limits.MAX_TARGET_SPEED)
+        elif key == "period":
+            values[key] = validation.number(value, check.source, where, lo=0.0, lo_open=True, hi=limits.MAX_TIME)
+        else:
+            values[key] = check.number(value, where, positive=key != "amplitude")
+    return kind, values

@@ -13,6 +13,8 @@ obstacles:
   - polygon: {points: [[8, 8], [10, 8], [10, 10]]}
   - wall: {start: [2, 12], end: [10, 12], thickness: 0.2}
   - ellipse: {center: [14, 6], radii: [2.0, 1.0], angle: 0.3}
+  - circle: {center: [5, 9], radius: 0.3}           # any obstacle may move (fuzzynav.world.moving):
+    motion: {type: line, velocity: [0.6, 0.0]}       # line | circle | sinusoid | waypoints
 max_time: 120                         # seconds, optional
 controllers: [fuzzy-2b]               # optional: the controllers the thesis runs here (demo)
 sensors: lidar                        # optional: thesis | beam | lidar (default: the controller's ring)
@@ -46,7 +48,8 @@ from fuzzynav.errors import InputError
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import limits
 from fuzzynav.world.checks import Checks, ShapeFields
-from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion
+from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion, read_motion
+from fuzzynav.world.moving import parse_motion
 from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
@@ -139,16 +142,29 @@ class Scenario:
                 motion[key] = value.tolist() if isinstance(value, np.ndarray) else value
             doc["target"] = {"x": float(m.start[0]), "y": float(m.start[1]),
                              "tolerance": self.target.tolerance, "motion": motion}
-        doc["obstacles"] = [shape.to_dict() for shape in self.world.obstacles]
+        motions = self.world.motions or (None,) * len(self.world.obstacles)
+        doc["obstacles"] = [{**shape.to_dict(), **({"motion": motion.to_dict()} if motion is not None else {})}
+                            for shape, motion in zip(self.world.obstacles, motions)]
         doc["max_time"] = self.max_time
         return doc
+
+
+def _obstacle(check: Checks, entry, field: str):
+    """``(shape, motion or None)`` of the scenario entry ``{kind: {parameters}, motion: {...}}``
+    (``motion`` optional: :func:`fuzzynav.world.moving.parse_motion`)."""
+    if not isinstance(entry, dict) or "motion" not in entry:
+        return _shape(check, entry, field), None
+    entry = dict(entry)
+    motion = entry.pop("motion")
+    shape = _shape(check, entry, field)
+    return shape, parse_motion(check, motion, f"{field}.motion", shape)
 
 
 def _shape(check: Checks, entry, field: str):
     """The obstacle of the scenario entry ``{kind: {parameters}}``, by its type in the registry
     :data:`fuzzynav.world.shapes.SHAPES` (schema, defaults and parsing)."""
     if not isinstance(entry, dict) or len(entry) != 1:
-        check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPES))
+        check.fail(field, "must be a mapping with exactly one of: " + ", ".join(SHAPES) + " (and optionally motion)")
     (kind, params), = check.mapping(entry, field, SHAPES).items()
     shape, keys = SHAPES[kind], SHAPES[kind].schema()
     f = f"{field}.{kind}"
@@ -217,9 +233,11 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     width, height = limits.world_size(world_doc.get("width", 20.0), world_doc.get("height", 20.0), source)
     obstacles_doc = validation.sequence(doc.get("obstacles", []) or [], source, "obstacles",
                                         max_length=limits.MAX_OBSTACLES)
-    obstacles = tuple(_shape(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc))
+    entries = [_obstacle(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc)]
+    obstacles = tuple(shape for shape, _ in entries)
     limits.world_contents(obstacles, width, height, source)
-    world = World(width, height, obstacles)
+    motions = tuple(motion for _, motion in entries)
+    world = World(width, height, obstacles, motions if any(m is not None for m in motions) else ())
 
     robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS), required=("x", "y"))
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
@@ -252,32 +270,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         t = check.mapping(doc["target"], "target", ("x", "y", "tolerance", "motion"), required=("x", "y"))
         position = np.array([check.number(t["x"], "target.x"), check.number(t["y"], "target.y")])
         _place(check, world, position, "target", "target")
-        motion_doc = t.get("motion", {"type": "static"})
-        if not isinstance(motion_doc, dict) or "type" not in motion_doc:
-            check.fail("target.motion.type", "missing (one of: " + ", ".join(MOTION_PARAMS) + ")")
-        kind = motion_doc["type"]
-        if not isinstance(kind, str) or kind not in MOTION_PARAMS:
-            close = difflib.get_close_matches(str(kind), list(MOTION_PARAMS), n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            check.fail("target.motion.type", f"unknown motion {kind!r}{hint}; known: {', '.join(MOTION_PARAMS)}")
-        params = MOTION_PARAMS[kind]
-        check.mapping(motion_doc, "target.motion", ("type", *params), required=list(params))
-        values = {}
-        for key in params:
-            field = f"target.motion.{key}"
-            if key == "center":
-                values[key] = check.point(motion_doc[key], field)
-            elif key == "velocity":
-                values[key] = np.array(validation.numbers(motion_doc[key], source, field, length=2,
-                                                          lo=-limits.MAX_TARGET_SPEED, hi=limits.MAX_TARGET_SPEED))
-            elif key == "speed":
-                values[key] = validation.number(motion_doc[key], source, field, lo=-limits.MAX_TARGET_SPEED,
-                                                hi=limits.MAX_TARGET_SPEED)
-            elif key == "period":
-                values[key] = validation.number(motion_doc[key], source, field, lo=0.0, lo_open=True,
-                                                hi=limits.MAX_TIME)
-            else:
-                values[key] = check.number(motion_doc[key], field, positive=key != "amplitude")
+        kind, values = read_motion(check, t.get("motion", {"type": "static"}), "target.motion", MOTION_PARAMS)
         if kind == "circle" and np.allclose(values["center"], position):
             check.fail("target.motion.center", "must differ from the target start (zero radius)")
         target = TargetTask(TargetMotion(type=kind, start=position, **values),

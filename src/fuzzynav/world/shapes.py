@@ -40,10 +40,10 @@ from fuzzynav.kernels.layout import PRIMITIVES
 from fuzzynav.world import limits
 from fuzzynav.world.polygons import polygon_self_intersects
 
-SHAPES: dict[str, type["Shape"]] = {}  # scenario key -> obstacle type, in the order registered
+SHAPES: dict[str, type[Shape]] = {}  # scenario key -> obstacle type, in the order registered
 
 
-def register(cls: type["Shape"]) -> type["Shape"]:
+def register(cls: type[Shape]) -> type[Shape]:
     """Class decorator: add the obstacle type ``cls`` to :data:`SHAPES` under ``cls.kind``."""
     if not (dataclasses.is_dataclass(cls) and issubclass(cls, Shape)):
         raise TypeError(f"{cls.__name__} must be a dataclass deriving fuzzynav.world.shapes.Shape")
@@ -87,7 +87,7 @@ class Shape(ABC):
 
     @classmethod
     @abstractmethod
-    def parse(cls, fields) -> "Shape":
+    def parse(cls, fields) -> Shape:
         """The obstacle of a scenario entry, its values read through ``fields``
         (:class:`fuzzynav.world.checks.ShapeFields`)."""
 
@@ -147,7 +147,7 @@ class Circle(Shape):
         object.__setattr__(self, "radius", limits.length(self.radius, field="radius"))
 
     @classmethod
-    def parse(cls, fields) -> "Circle":
+    def parse(cls, fields) -> Circle:
         return cls(fields.point("center"), fields.length("radius"))
 
     @classmethod
@@ -176,7 +176,7 @@ class Polygon(Shape):
         object.__setattr__(self, "points", points)
 
     @classmethod
-    def parse(cls, fields) -> "Polygon":
+    def parse(cls, fields) -> Polygon:
         points = fields.points("points", 3, limits.MAX_POLYGON_VERTICES)
         if polygon_self_intersects(points):
             fields.fail("points", "polygon is self-intersecting (or has repeated points / zero area)")
@@ -222,7 +222,7 @@ class Wall(Shape):
             raise InputError(f"must differ from start by at least {limits.MIN_LENGTH:g} m (zero-length wall)", field="end")
 
     @classmethod
-    def parse(cls, fields) -> "Wall":
+    def parse(cls, fields) -> Wall:
         return cls(fields.point("start"), fields.point("end"), fields.length("thickness"))
 
     @classmethod
@@ -234,7 +234,7 @@ class Wall(Shape):
                          "thickness": round(float(rng.uniform(0.2, 0.4)), 2)}}
 
     @classmethod
-    def chain(cls, points, thickness: float = 0.2) -> tuple["Wall", ...]:
+    def chain(cls, points, thickness: float = 0.2) -> tuple[Wall, ...]:
         """The walls of the open polyline through ``points`` (n ≥ 2, 2), all of ``thickness``: the
         same walls as ``Wall(points[i], points[i + 1], thickness)`` one by one, checked and given
         their corners for all walls at once (the random wall courses of training build one per
@@ -302,7 +302,7 @@ class Ellipse(Shape):
         object.__setattr__(self, "angle", limits.angle(self.angle, field="angle"))
 
     @classmethod
-    def parse(cls, fields) -> "Ellipse":
+    def parse(cls, fields) -> Ellipse:
         return cls(fields.point("center"), fields.point("radii", positive=True), fields.angle("angle"))
 
     @classmethod

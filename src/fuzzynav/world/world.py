@@ -22,11 +22,16 @@ from fuzzynav.world.shapes import Shape
 
 @dataclass(frozen=True)
 class World:
-    """Workspace ``width`` × ``height`` (m) with ``obstacles`` (the boundary is not one of them)."""
+    """Workspace ``width`` × ``height`` (m) with ``obstacles`` (the boundary is not one of them);
+    ``motions``, empty or one per obstacle, gives each moving obstacle its
+    :class:`~fuzzynav.world.moving.ObstacleMotion` (``None``: it stands still). ``scene`` packs
+    the obstacles where they are at t = 0; :mod:`fuzzynav.world.moving` gives the moving ones'
+    offsets over time and :attr:`movers` their rows in ``scene``."""
 
     width: float = 20.0
     height: float = 20.0
     obstacles: tuple[Shape, ...] = ()
+    motions: tuple = ()
     scene: np.ndarray = field(init=False, repr=False, compare=False)  # the packed shapes
     order: np.ndarray = field(init=False, repr=False, compare=False)  # kernel column -> obstacle index (−1 -> −1)
 
@@ -41,9 +46,30 @@ class World:
                                                          for primitive in layout.PRIMITIVES))
         object.__setattr__(self, "scene", packed)
         object.__setattr__(self, "order", order)
+        object.__setattr__(self, "motions", tuple(self.motions))
+        if self.motions and len(self.motions) != len(self.obstacles):
+            raise ValueError(f"{len(self.motions)} motions for {len(self.obstacles)} obstacles")
+
+    @property
+    def moving(self) -> tuple[int, ...]:
+        """Indices of the obstacles that move (in obstacle order)."""
+        return tuple(i for i, motion in enumerate(self.motions) if motion is not None)
+
+    def standing(self) -> World:
+        """This world without its moving obstacles (itself when none moves)."""
+        if not self.motions:
+            return self
+        return World(self.width, self.height, tuple(s for s, m in zip(self.obstacles, self.motions) if m is None))
+
+    @property
+    def movers(self) -> np.ndarray:
+        """Rows ``(M, 4)`` of the moving obstacles in ``scene`` (:func:`fuzzynav.kernels.layout.mover_rows`),
+        in the order of :attr:`moving`."""
+        column = {int(index): c for c, index in enumerate(self.order[:-1])}
+        return layout.mover_rows(self.scene, [column[i] for i in self.moving])
 
     @classmethod
-    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> "World":
+    def prepacked(cls, width: float, height: float, obstacles: tuple, scene: np.ndarray) -> World:
         """``World(width, height, obstacles)`` for ``obstacles`` the library has built and checked
         itself and already packed into ``scene`` (the array :func:`fuzzynav.kernels.layout.pack`
         gives for them; :func:`fuzzynav.kernels.courses.pack_walls` for the random wall courses
@@ -56,8 +82,8 @@ class World:
         counts = scene[[layout.N_CIRCLES, layout.N_POLYGONS, layout.N_ELLIPSES]].tolist()
         if counts != [len(columns[primitive]) for primitive in layout.PRIMITIVES]:
             raise ValueError("the packed scene does not hold these obstacles")
-        for name, value in (("width", width), ("height", height), ("obstacles", obstacles), ("scene", scene),
-                            ("order", order)):
+        for name, value in (("width", width), ("height", height), ("obstacles", obstacles), ("motions", ()),
+                            ("scene", scene), ("order", order)):
             object.__setattr__(world, name, value)
         return world
 
@@ -88,6 +114,17 @@ class World:
         """Signed distance ``(N,)`` from points to the nearest obstacle surface or boundary."""
         distance, _, _, boundary = self.proximity(points)
         return np.minimum(distance, boundary)
+
+    def clearance_over_time(self, points, offsets):
+        """:meth:`clearance` of point k (``points`` (T, 2)) with the moving obstacles at their
+        offsets of time k (``offsets`` (T, M, 2), :func:`fuzzynav.world.moving.offsets`)."""
+        from fuzzynav.kernels import traffic
+
+        points = np.ascontiguousarray(np.asarray(points, dtype=float).reshape(-1, 2))
+        out = np.empty((len(points), layout.NEAREST_COLUMNS))
+        traffic.nearest_over_time(self.scene, self.movers, np.ascontiguousarray(offsets, dtype=float), points,
+                                  self.scene.copy(), out)
+        return np.minimum(out[:, 0], out[:, 4])
 
     def collides(self, points, radius: float = 0.0):
         """``(N,)`` bool: does a disc of ``radius`` at each point overlap an obstacle or the boundary."""

@@ -1,8 +1,8 @@
 """The centroid of a Mamdani output of Maximum aggregation, computed across rows, compiled.
 
-:func:`fuzzynav.fuzzy.engine.compiled.integral` otherwise works row by row: each row's units
+:func:`fuzzynav.fuzzy.engine.staged_kernels.integral` otherwise works row by row: each row's units
 imply and max-combine their terms over the samples, then the centroid's eight lane sums
-(:func:`~.reduce.centroid_sums`). Where every unit implies by the minimum or the product a term
+(:func:`~.sampled_defuzzify.centroid_sums`). Where every unit implies by the minimum or the product a term
 whose samples all lie in [0, 1], the same numbers can be computed for a block of rows at once,
 sample after sample, each step a loop over the rows: the units' degrees (the maximum of their
 activations'), μ of the sample (every unit whose term's support holds it, max-combined in unit
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.implied import implication, stored
+from fuzzynav.fuzzy.engine.implication import implication, stored
 from fuzzynav.fuzzy.engine.norms import MINIMUM, PRODUCT
 from fuzzynav.jit import jit
 
@@ -100,7 +100,7 @@ def _lanes_total(lanes, r):
 @jit
 def max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, support, x, out, unbounded):
     """``out[n]``: the centroid of row n of an output :func:`applies` takes (the arguments of
-    :func:`~.compiled.integral`), block of rows by block of rows (module docstring); returns the
+    :func:`~.staged_kernels.integral`), block of rows by block of rows (module docstring); returns the
     number of rows whose degrees are not all in [0, 1], their indices in ``unbounded`` (their
     ``out`` left to the row-by-row pass)."""
     n_units, n = unit_term.shape[0], degrees.shape[1]

@@ -20,9 +20,8 @@ from __future__ import annotations
 import math
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.engine import model
 from fuzzynav.fuzzy.engine.engine import Engine
-from fuzzynav.fuzzy.engine.model import (Defuzzifier, EngineRule, InputVariable, Operator, OutputVariable,
-                                         Proposition, RuleBlock)
 from fuzzynav.fuzzy.membership import KINDS, Linear, Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -41,31 +40,32 @@ def _by_value(table: dict, value: str) -> str | None:
 
 def system_to_engine(system: FuzzySystem) -> Engine:
     """The engine computing what ``system`` computes (see module docstring)."""
-    inputs = [InputVariable(v.name, *v.universe, dict(v.terms), lock_range=True) for v in system.inputs]
+    inputs = [model.InputVariable(v.name, *v.universe, dict(v.terms), lock_range=True) for v in system.inputs]
     if system.method == "mamdani":
-        defuzzifier = Defuzzifier("Centroid", system.resolution)
+        defuzzifier = model.Defuzzifier("Centroid", system.resolution)
         aggregation, implication = AGGREGATION_NAMES[system.aggregation], TNORM_NAMES[system.implication]
     else:
         kind = "Tsukamoto" if system.method == "tsukamoto" else "TakagiSugeno"
-        defuzzifier = Defuzzifier(DEFUZZIFIER_NAMES[system.defuzzifier], type=kind)
+        defuzzifier = model.Defuzzifier(DEFUZZIFIER_NAMES[system.defuzzifier], type=kind)
         aggregation, implication = None, None
-    outputs = [OutputVariable(v.name, *v.universe, {k: Constant(mf.value) if isinstance(mf, Singleton) else mf
+    outputs = [model.OutputVariable(v.name, *v.universe, {k: Constant(mf.value) if isinstance(mf, Singleton) else mf
                                                      for k, mf in v.terms.items()},
                               aggregation=aggregation, defuzzifier=defuzzifier) for v in system.outputs]
     rules = []
     for rule in system.rules:
-        props = [Proposition(v, (), t) for v, t in rule.premises]
-        antecedent = props[0] if props else Proposition(system.inputs[0].name, ("any",), None)
+        props = [model.Proposition(v, (), t) for v, t in rule.premises]
+        antecedent = props[0] if props else model.Proposition(system.inputs[0].name, ("any",), None)
         for prop in props[1:]:
-            antecedent = Operator("and", antecedent, prop)
-        rules.append(EngineRule(antecedent, tuple(Proposition(v, (), t) for v, t in rule.conclusions), rule.weight))
-    block = RuleBlock(rules, conjunction=TNORM_NAMES[system.tnorm], implication=implication, name="rules")
+            antecedent = model.Operator("and", antecedent, prop)
+        conclusions = tuple(model.Proposition(v, (), t) for v, t in rule.conclusions)
+        rules.append(model.EngineRule(antecedent, conclusions, rule.weight))
+    block = model.RuleBlock(rules, conjunction=TNORM_NAMES[system.tnorm], implication=implication, name="rules")
     return Engine(inputs, outputs, [block], name=system.name, description=system.description)
 
 
-def _premises(node) -> list[Proposition] | None:
+def _premises(node) -> list[model.Proposition] | None:
     """The propositions of a pure conjunction without hedges, else None."""
-    if isinstance(node, Proposition):
+    if isinstance(node, model.Proposition):
         return [node] if not node.hedges else None
     if node.name != "and":
         return None

@@ -4,7 +4,7 @@ Integral defuzzifiers sample the aggregated set on ``resolution`` midpoints of t
 (or, as MATLAB does, on ``resolution`` points from end to end): centroid Σyμ/Σμ; bisector, the
 sample where the running area is closest to half (averaged over ties); mean / smallest / largest
 of the samples of maximum membership (the sampling and the reductions compiled, in
-:mod:`fuzzynav.fuzzy.engine.compiled`). Weighted defuzzifiers group the activations by term (aggregated with the output's S-norm, or summed when it has none)
+:mod:`fuzzynav.fuzzy.engine.staged_kernels`). Weighted defuzzifiers group the activations by term (aggregated with the output's S-norm, or summed when it has none)
 and average (``WeightedAverage``) or sum (``WeightedSum``) the terms' crisp values: a constant's
 value, a linear term on the input values, a function of the degree, or — ``Tsukamoto`` — the
 abscissa where a monotone term reaches the degree.
@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from fuzzynav.fuzzy.engine.model import OutputVariable
+from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -61,7 +62,6 @@ _EVERY_ROW = np.ones((0, 0), dtype=bool)  # a "triggered" array the kernels neve
 
 def _groups(var: OutputVariable, acts: Activations) -> tuple:
     """Term labels in order of first activation, and the arguments of the compiled grouping."""
-    from fuzzynav.fuzzy.engine import compiled
 
     index: dict = {}
     opens = np.zeros(len(acts.labels), dtype=bool)
@@ -78,19 +78,19 @@ def _groups(var: OutputVariable, acts: Activations) -> tuple:
 def group(var: OutputVariable, acts: Activations) -> tuple[list, np.ndarray, np.ndarray]:
     """Term labels in order of first activation, their degrees (n_terms, N) folded with the
     output's S-norm (or summed), and where each was triggered at all (n_terms, N)."""
-    from fuzzynav.fuzzy.engine import compiled
+    from fuzzynav.fuzzy.engine import staged_kernels
 
     labels, args = _groups(var, acts)
     n = acts.degrees.shape[1]
     degree, present = np.empty((len(labels), n)), np.empty((len(labels), n), dtype=bool)
-    compiled.group(*args, degree, present)
+    staged_kernels.group(*args, degree, present)
     return labels, degree, present
 
 
 def weighted(var: OutputVariable, acts: Activations, inputs: np.ndarray, values: dict) -> np.ndarray:
     """Weighted average / sum over the activated terms; ``inputs`` holds the input values as rows
     (n_inputs, N)."""
-    from fuzzynav.fuzzy.engine import compiled
+    from fuzzynav.fuzzy.engine import staged_kernels
 
     n = inputs.shape[1]
     if not acts.labels:
@@ -101,12 +101,12 @@ def weighted(var: OutputVariable, acts: Activations, inputs: np.ndarray, values:
     mfs = [var.terms[label] for label in labels]
     if kind != "Tsukamoto" and all(isinstance(mf, (Constant, Singleton, Linear)) for mf in mfs):
         _, args = _groups(var, acts)
-        compiled.weighted_affine(*args, *_affine_terms(mfs, inputs.shape[0]), inputs, weighted_sum, out)
+        staged_kernels.weighted_affine(*args, *_affine_terms(mfs, inputs.shape[0]), inputs, weighted_sum, out)
         return out
     labels, degrees, present = group(var, acts)
     z = np.stack([np.broadcast_to(_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)), (n,))
                   for mf, d in zip(mfs, degrees)])
-    compiled.weighted_average(degrees, present, z, weighted_sum, out)
+    staged_kernels.weighted_average(degrees, present, z, weighted_sum, out)
     return out
 
 
@@ -129,10 +129,10 @@ def _affine_terms(mfs: list, n_inputs: int) -> tuple[np.ndarray, np.ndarray]:
 
 def _affine(mfs: list, inputs: np.ndarray) -> np.ndarray:
     """Values of constant and linear terms on every row: (n_terms, N)."""
-    from fuzzynav.fuzzy.engine import compiled
+    from fuzzynav.fuzzy.engine import staged_kernels
 
     z = np.empty((len(mfs), inputs.shape[1]))
-    compiled.affine(*_affine_terms(mfs, inputs.shape[0]), inputs, z)
+    staged_kernels.affine(*_affine_terms(mfs, inputs.shape[0]), inputs, z)
     return z
 
 
@@ -162,7 +162,7 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
     ``Maximum`` aggregation the activations of one term and implication max-combine first
     (max_r T(w_r, μ) = T(max_r w_r, μ)); otherwise every activation is folded in order, as
     fuzzylite does."""
-    from fuzzynav.fuzzy.engine import compiled
+    from fuzzynav.fuzzy.engine import staged_kernels
 
     shapes, support, x = sampled_terms
     degrees, rows = acts.degrees, acts.rows
@@ -178,7 +178,7 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
     unit_term = np.array([terms[label] for label, _ in unique], dtype=np.int64)
     unit_implication = np.array([TNORMS.index(implication) for _, implication in unique], dtype=np.int64)
     out = np.empty(n)
-    compiled.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,
-                      SNORMS.index(var.aggregation or "UnboundedSum"), compiled.REDUCTIONS.index(var.defuzzifier.kind),
+    staged_kernels.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,
+                      SNORMS.index(var.aggregation or "UnboundedSum"), REDUCTIONS.index(var.defuzzifier.kind),
                       out)
     return out

@@ -15,10 +15,10 @@ starting from NaN. NaN inputs propagate (fuzzylite's behaviour).
 
 An engine with General activation and constant, linear or integral-defuzzified outputs (every
 Mamdani and Takagi–Sugeno example fuzzylite ships) is packed into arrays on first use and
-evaluated by one compiled call (:mod:`fuzzynav.fuzzy.engine.fused`), only its ``exp``/``pow``
+evaluated by one compiled call (:mod:`fuzzynav.fuzzy.engine.fused_kernel`), only its ``exp``/``pow``
 terms fuzzified in NumPy first. Others (:attr:`Engine.fallback` says why) take the NumPy path:
 terms and hedges in NumPy over the batch, once per proposition; rules, aggregation and
-defuzzification compiled over the rows (:mod:`fuzzynav.fuzzy.engine.compiled`). Both give the
+defuzzification compiled over the rows (:mod:`fuzzynav.fuzzy.engine.staged_kernels`). Both give the
 same bits (tested on every fuzzylite example).
 """
 
@@ -32,11 +32,11 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import defuzzify
-from fuzzynav.fuzzy.engine.model import InputVariable, Operator, OutputVariable, Proposition, RuleBlock
+from fuzzynav.fuzzy.engine.model import InputVariable, OutputVariable, Proposition, RuleBlock
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear
-from fuzzynav.fuzzy.terms import Scaled
 from fuzzynav.fuzzy.operators import ACTIVATIONS, HEDGES, SNORMS, TNORMS, activate
+from fuzzynav.fuzzy.terms import Scaled
 from fuzzynav.fuzzy.variable import VariableNames
 
 
@@ -142,15 +142,15 @@ class Engine(VariableNames):
     @property
     def fallback(self) -> str | None:
         """Why :meth:`evaluate` keeps the NumPy path; None when one compiled kernel evaluates the
-        engine (:mod:`fuzzynav.fuzzy.engine.fused`)."""
+        engine (:mod:`fuzzynav.fuzzy.engine.fused_kernel`)."""
         if self._packed is None:  # packed once: a call then costs no imports nor searches
-            from fuzzynav.fuzzy.engine import fused
+            from fuzzynav.fuzzy.engine import fused_kernel
             from fuzzynav.fuzzy.engine.pack import NUMPY, flatten, pack
 
             packed = pack(self)
             self._packed = packed if isinstance(packed, str) else \
                 (*packed, np.flatnonzero(packed[1].literal[:, 0] == NUMPY).tolist(),
-                 functools.partial(fused.evaluate, flatten(packed[1])))
+                 functools.partial(fused_kernel.evaluate, flatten(packed[1])))
         return self._packed if isinstance(self._packed, str) else None
 
     def evaluate(self, X) -> np.ndarray:
@@ -165,7 +165,7 @@ class Engine(VariableNames):
                 for row in in_numpy:
                     table[row] = state.degree(literals[row])
             return evaluate_fused(table, X)
-        from fuzzynav.fuzzy.engine import compiled
+        from fuzzynav.fuzzy.engine import staged_kernels
 
         columns, values = self._values(X)
         state = _State(self, values, n)
@@ -183,7 +183,7 @@ class Engine(VariableNames):
                 y = defuzzify.integral(var, acts, self._sampled[var.name], n)
             else:
                 y = defuzzify.weighted(var, acts, columns, values)
-            compiled.finish(y, var.lock_previous, var.default, var.lock_range, var.minimum, var.maximum)
+            staged_kernels.finish(y, var.lock_previous, var.default, var.lock_range, var.minimum, var.maximum)
             values[var.name] = y
             out[:, k] = y
         return out
@@ -202,9 +202,9 @@ class Engine(VariableNames):
 
 def _program(block: RuleBlock, outputs: set) -> tuple:
     """(propositions, program, starts, weights, chained): every rule's antecedent in postfix over
-    the block's distinct propositions (see :func:`~fuzzynav.fuzzy.engine.compiled.rule_degrees`);
+    the block's distinct propositions (see :func:`~fuzzynav.fuzzy.engine.staged_kernels.rule_degrees`);
     ``chained`` when a premise reads an output."""
-    from_codes = {"and": -1, "or": -2}  # compiled.AND, compiled.OR
+    from_codes = {"and": -1, "or": -2}  # staged_kernels.AND, staged_kernels.OR
     literals: dict = {}
     program, starts = [], [0]
 
@@ -256,13 +256,13 @@ class _State:
 
     def rule_degrees(self, block: RuleBlock, literals, codes, starts, weights) -> np.ndarray:
         """Weighted antecedent degrees (n_rules, N) of the rules whose programs ``starts`` delimits."""
-        from fuzzynav.fuzzy.engine import compiled
+        from fuzzynav.fuzzy.engine import staged_kernels
 
         table = np.stack([self.degree(p) for p in literals]) if literals else np.empty((0, self.n))
         out = np.empty((len(starts) - 1, self.n))
         conjunction = TNORMS.index(block.conjunction) if block.conjunction else -1
         disjunction = SNORMS.index(block.disjunction) if block.disjunction else -1
-        compiled.rule_degrees(table, codes, starts, weights, conjunction, disjunction, out)
+        staged_kernels.rule_degrees(table, codes, starts, weights, conjunction, disjunction, out)
         return out
 
     def trigger(self, rule, degrees: np.ndarray, row: int, triggered, block: RuleBlock) -> None:

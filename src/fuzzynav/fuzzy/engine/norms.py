@@ -4,7 +4,7 @@
 :mod:`fuzzynav.fuzzy.operators` on two values, NaN-propagating as NumPy's ``maximum`` /
 ``minimum``; :func:`tnorm_into` / :func:`snorm_into` on two columns, one loop per norm so that
 each loop vectorises. Used by the rule, aggregation and defuzzification kernels of
-:mod:`.compiled` and :mod:`.fused`.
+:mod:`.staged_kernels` and :mod:`.fused_kernel`.
 """
 
 from __future__ import annotations

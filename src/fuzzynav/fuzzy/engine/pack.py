@@ -1,8 +1,8 @@
 """An :class:`~fuzzynav.fuzzy.engine.Engine` packed into flat arrays once, for the fused kernel.
 
 :func:`pack` returns the propositions to fuzzify in NumPy before the kernel (terms built on
-``exp`` or ``pow``, ``Function`` and ``Linear`` premises: see :mod:`.term_columns`) and a
-:class:`Packed` record of arrays that :func:`fuzzynav.fuzzy.engine.fused.run` reads (handed
+``exp`` or ``pow``, ``Function`` and ``Linear`` premises: see :mod:`.fuzzify_terms`) and a
+:class:`Packed` record of arrays that :func:`fuzzynav.fuzzy.engine.fused_kernel.run` reads (handed
 over as a :class:`Flat`), or — for what the kernel does not cover — the reason the engine keeps
 its NumPy path: an activation method other than General, or a
 weighted output whose conclusions are not all constant or linear (Tsukamoto's inverses, functions
@@ -15,10 +15,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine import compiled, defuzzify
+from fuzzynav.fuzzy.engine import defuzzify, staged_kernels
+from fuzzynav.fuzzy.engine.fuzzify_terms import HEDGE_CODES, pack_term
 from fuzzynav.fuzzy.engine.model import Proposition
 from fuzzynav.fuzzy.engine.norms import PRODUCT
-from fuzzynav.fuzzy.engine.term_columns import HEDGE_CODES, pack_term
+from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.fuzzy.terms import Constant
@@ -28,7 +29,7 @@ NAN_OUTPUT, INTEGRAL, WEIGHTED, EMPTY = 0, 1, 2, 3  # how an output is computed 
 
 
 class Packed(NamedTuple):
-    """The arrays the fused kernel reads, in the order :func:`fuzzynav.fuzzy.engine.fused._unpack`
+    """The arrays the fused kernel reads, in the order :func:`fuzzynav.fuzzy.engine.fused_kernel._unpack`
     returns them from a :class:`Flat`."""
 
     lock: np.ndarray  # inputs: clipped to [lo, hi] where locked
@@ -45,7 +46,7 @@ class Packed(NamedTuple):
     hedges: np.ndarray
     block: np.ndarray  # (B, 4): first rule, end, conjunction, disjunction
     block_chained: np.ndarray  # a block with a chained premise runs rule by rule
-    program: np.ndarray  # per rule: postfix antecedent (compiled.AND / OR, or a proposition)
+    program: np.ndarray  # per rule: postfix antecedent (staged_kernels.AND / OR, or a proposition)
     rule_start: np.ndarray
     rule_weight: np.ndarray
     rule_skipped: np.ndarray  # a rule the rule pass does not compute: its degree its one proposition's row
@@ -192,7 +193,7 @@ def _product_of_two(program, rule_start, weights, rule_conclusions, conclusions,
     other activation), the same bits (× 1 changes none)."""
     first, end = rule_start[r], rule_start[r + 1]
     mine = conclusions[rule_conclusions[r]:rule_conclusions[r + 1]]
-    return (end - first == 3 and program[end - 1] == compiled.AND and weights[r] == 1.0 and len(mine) == 1
+    return (end - first == 3 and program[end - 1] == staged_kernels.AND and weights[r] == 1.0 and len(mine) == 1
             and not mine[0][1].hedges and not chained)
 
 
@@ -202,7 +203,7 @@ def _emit(node, literals: dict, program: list) -> None:
     else:
         _emit(node.left, literals, program)
         _emit(node.right, literals, program)
-        program.append(compiled.AND if node.name == "and" else compiled.OR)
+        program.append(staged_kernels.AND if node.name == "and" else staged_kernels.OR)
 
 
 def _pack_outputs(engine, conclusions: list, degree_row: list, products: dict) -> tuple | str:
@@ -260,7 +261,7 @@ def _pack_outputs(engine, conclusions: list, degree_row: list, products: dict) -
         support_start.append(sum(len(a) for a in support))
         points_start.append(sum(a.size for a in points))
         rows.append((kind, SNORMS.index(var.aggregation or "UnboundedSum"),
-                     compiled.REDUCTIONS.index(d.kind) if kind == INTEGRAL else 0,
+                     REDUCTIONS.index(d.kind) if kind == INTEGRAL else 0,
                      d is not None and d.kind == "WeightedSum", var.lock_previous, var.lock_range))
         limits.append((var.default, var.minimum, var.maximum))
     return (_ints(rows).reshape(-1, 6), np.array(limits, dtype=float), _ints(act_start), _ints(act_conclusion),

@@ -1,7 +1,7 @@
 """The bits of n / d by multiplications, for loops that divide many values by one denominator.
 
 A division is the slowest arithmetic instruction (a 4-wide ``vdivpd`` takes several times the
-cycles of a fused multiply-add). A Bell of power 2, 4 or 8 (:mod:`.term_columns`) divides every
+cycles of a fused multiply-add). A Bell of power 2, 4 or 8 (:mod:`.fuzzify_terms`) divides every
 value by its width and otherwise only squares and adds, so its loop is bound by the divider; in
 loops whose other work hides the division (Gaussians and other Bells, with their exp and log;
 trapezoids, with their selects), the extra operations cost more than they save, and those divide.

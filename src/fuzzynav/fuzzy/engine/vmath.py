@@ -5,7 +5,7 @@ than NumPy's own ``exp`` (SIMD instructions), which works only on a whole array,
 kernel (README, "Speed on fuzzylite's examples"). :func:`exp_of` and :func:`log_of` are plain
 arithmetic without branches (selects) or calls, the bits of a double read and written by
 :func:`as_bits` / :func:`from_bits` (one LLVM ``bitcast`` each), so LLVM inlines them and
-vectorises any loop over them (:mod:`.term_columns` fuses a term's whole formula into one loop):
+vectorises any loop over them (:mod:`.fuzzify_terms` fuses a term's whole formula into one loop):
 
 - :func:`exp_of` — Cody & Waite's range reduction x = k ln 2 + r, |r| ≤ ln 2 / 2 (ln 2 split
   in two parts so that k ln 2 is exact), exp(r) by a minimax polynomial of degree 11, and 2ᵏ

@@ -16,13 +16,13 @@ from pathlib import Path
 import yaml
 
 from fuzzynav import validation
-from fuzzynav.storage import write_text_atomic
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy.io.document import from_document, to_document
 from fuzzynav.fuzzy.engine import Engine
+from fuzzynav.fuzzy.io.document import from_document, to_document
 from fuzzynav.fuzzy.io.fis import from_fis, to_fis
 from fuzzynav.fuzzy.io.fll import from_fll, to_fll
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.storage import write_text_atomic
 
 FORMATS = ("json", "yaml", "fll", "fis")
 _SUFFIX = {".json": "json", ".yaml": "yaml", ".yml": "yaml", ".fll": "fll", ".fis": "fis"}

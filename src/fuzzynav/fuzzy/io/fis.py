@@ -30,11 +30,10 @@ import math
 import re
 
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy.engine import (Defuzzifier, Engine, EngineRule, InputVariable, Operator, OutputVariable,
-                                   Proposition, RuleBlock)
+from fuzzynav.fuzzy.engine import Engine, model
 from fuzzynav.fuzzy.engine.convert import engine_to_system
-from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
+from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.system import FuzzySystem
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
@@ -63,21 +62,21 @@ class _Lines:
     def __init__(self, text: str, source):
         self.source = source
         self.sections: list[dict] = []
-        for number, raw in enumerate(text.splitlines(), start=1):
+        for line_number, raw in enumerate(text.splitlines(), start=1):
             line = raw.split("%", 1)[0].split("#", 1)[0].strip()
             if not line:
                 continue
             if line.startswith("["):
-                self.sections.append({"name": line, "line": number, "items": []})
+                self.sections.append({"name": line, "line": line_number, "items": []})
             elif not self.sections:
-                raise self.error("text before the first [Section]", number)
+                raise self.error("text before the first [Section]", line_number)
             elif self.sections[-1]["name"] == "[Rules]":
-                self.sections[-1]["items"].append(("rule", line, number))
+                self.sections[-1]["items"].append(("rule", line, line_number))
             else:
                 key, sep, value = line.partition("=")
                 if not sep:
-                    raise self.error(f"expected 'Key=value', got {line!r}", number)
-                self.sections[-1]["items"].append((key.strip(), value.strip(), number))
+                    raise self.error(f"expected 'Key=value', got {line!r}", line_number)
+                self.sections[-1]["items"].append((key.strip(), value.strip(), line_number))
 
     def error(self, message: str, line, field: str | None = None) -> InputError:
         where = f"line {line}" if line else None
@@ -103,7 +102,7 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
 
     MATLAB tells terms apart by position, so a repeated name gets a suffix (``_2``, ``_3``, …);
     fuzzylite resolves the name, so its reading keeps the last term of that name."""
-    cls = OutputVariable if output else InputVariable
+    cls = model.OutputVariable if output else model.InputVariable
     var = cls("", -math.inf, math.inf)
     order = []
     for key, value, line in section["items"]:
@@ -134,7 +133,7 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
     return var, order
 
 
-def _proposition(code: float, var, order: list, lines: _Lines, line) -> Proposition | None:
+def _proposition(code: float, var, order: list, lines: _Lines, line) -> model.Proposition | None:
     if code == 0:
         return None
     index = int(math.floor(abs(code))) - 1
@@ -145,13 +144,13 @@ def _proposition(code: float, var, order: list, lines: _Lines, line) -> Proposit
             raise lines.error(f"no hedge for the code {code!r}", line, var.name)
         hedges += _HEDGE_CODES[fraction]
     if hedges[-1:] == ("any",):
-        return Proposition(var.name, hedges, None)
+        return model.Proposition(var.name, hedges, None)
     if not 0 <= index < len(order):
         raise lines.error(f"term {index + 1} of {var.name} does not exist (it has {len(order)})", line, var.name)
-    return Proposition(var.name, hedges, order[index])
+    return model.Proposition(var.name, hedges, order[index])
 
 
-def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[EngineRule, int]:
+def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[model.EngineRule, int]:
     match = re.fullmatch(r"([-\d.\s]+),([-\d.\s]+)\(\s*([-\d.eE+]+)\s*\)\s*:\s*(\d)", text)
     if not match:
         raise lines.error(f"a rule reads 'i1 i2 ..., o1 ... (weight) : 1|2', got {text!r}", line)
@@ -173,8 +172,8 @@ def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[EngineRule, 
                           line)
     antecedent = premises[0]
     for p in premises[1:]:
-        antecedent = Operator("and" if connective == 1 else "or", antecedent, p)
-    return EngineRule(antecedent, conclusions, weight), connective
+        antecedent = model.Operator("and" if connective == 1 else "or", antecedent, p)
+    return model.EngineRule(antecedent, conclusions, weight), connective
 
 
 def _system_options(section: dict, lines: _Lines) -> dict:
@@ -218,10 +217,11 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
     kind = options.get("Type", "mamdani").lower()
     for var in outputs:
         if defuzz in ("Centroid", "Bisector", "MeanOfMaximum", "LargestOfMaximum", "SmallestOfMaximum"):
-            var.defuzzifier = Defuzzifier(defuzz, MATLAB_POINTS, grid="linspace") if matlab else Defuzzifier(defuzz)
+            points = {"resolution": MATLAB_POINTS, "grid": "linspace"} if matlab else {}
+            var.defuzzifier = model.Defuzzifier(defuzz, **points)
             var.aggregation = options.get("AggMethod")
         elif defuzz is not None:
-            var.defuzzifier = Defuzzifier(defuzz, type="Tsukamoto" if kind == "tsukamoto" else "Automatic")
+            var.defuzzifier = model.Defuzzifier(defuzz, type="Tsukamoto" if kind == "tsukamoto" else "Automatic")
             var.aggregation = None if matlab and kind == "sugeno" else options.get("AggMethod")
         if matlab and math.isnan(var.default):
             var.default = 0.5 * (var.minimum + var.maximum)
@@ -231,8 +231,8 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
             rule, connective = _rule(value, in_vars, out_vars, lines, line)
             rules.append(rule)
             connectives.add(connective)
-    block = RuleBlock(rules, conjunction=options.get("AndMethod"), disjunction=options.get("OrMethod"),
-                      implication=options.get("ImpMethod"))
+    block = model.RuleBlock(rules, conjunction=options.get("AndMethod"), disjunction=options.get("OrMethod"),
+                            implication=options.get("ImpMethod"))
     try:
         return Engine(inputs, outputs, [block], name=options.get("Name", ""))
     except InputError as error:
@@ -246,7 +246,7 @@ def from_fis(text: str, source: str | None = None, semantics: str = "matlab") ->
 
 
 # ---------------------------------------------------------------------------------------- export
-def _code(prop: Proposition, var) -> str:
+def _code(prop: model.Proposition, var) -> str:
     hedges = list(prop.hedges)
     negative = hedges[:1] == ["not"]
     hedges = hedges[1:] if negative else hedges
@@ -258,8 +258,8 @@ def _code(prop: Proposition, var) -> str:
     return repr(-value if negative else value) if fraction else str(-index if negative else index)
 
 
-def _flat(node) -> tuple[list[Proposition], str | None]:
-    if isinstance(node, Proposition):
+def _flat(node) -> tuple[list[model.Proposition], str | None]:
+    if isinstance(node, model.Proposition):
         return [node], None
     left, op1 = _flat(node.left)
     right, op2 = _flat(node.right)
@@ -294,7 +294,7 @@ def to_fis(system: FuzzySystem | Engine) -> str:
             lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
                       f"NumMFs={len(v.terms)}"]
             lines += [f"MF{k}='{label}':{term_to_fis(mf)}" for k, (label, mf) in enumerate(v.terms.items(), 1)]
-            if isinstance(v, OutputVariable) and v.lock_range:
+            if isinstance(v, model.OutputVariable) and v.lock_range:
                 lines.append("LockRange=1")
     lines += ["", "[Rules]"]
     by_name = {v.name: v for v in engine.inputs + outs}

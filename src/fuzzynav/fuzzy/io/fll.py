@@ -21,7 +21,6 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from fuzzynav.validation import MAX_RESOLUTION
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVariable, RuleBlock, parse_engine_rule
 from fuzzynav.fuzzy.engine.convert import engine_to_system, system_to_engine
@@ -30,6 +29,7 @@ from fuzzynav.fuzzy.fll_terms import num, term_from_fll, term_to_fll
 from fuzzynav.fuzzy.membership import Linear
 from fuzzynav.fuzzy.operators import ACTIVATIONS
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.validation import MAX_RESOLUTION
 
 _SECTION_KEYS = {  # the keys fuzzylite's FllImporter accepts in each section
     "Engine": {"description"},

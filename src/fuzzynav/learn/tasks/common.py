@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -28,12 +29,15 @@ from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
-from fuzzynav.learn.checkpoint import train_loop
+from fuzzynav.learn.checkpoint import load_checkpoint, train_loop
 from fuzzynav.learn.curves import episodes_to_converge
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.storage import save_document, savefig_atomic
+
+if TYPE_CHECKING:
+    from fuzzynav.learn.envs import RobotEnv
 
 PI = math.pi
 BATCH = 50  # parallel episodes per batch (random starts)
@@ -124,17 +128,29 @@ def checkpoint_path(out: Path, phase: str) -> Path:
     return Path(out).with_name(f"{Path(out).name}.{phase}.checkpoint.json")
 
 
-def batch_plan(episodes: int, batch: int) -> list[tuple[int, int]]:
+def batch_plan(episodes: int, batch: int, done: tuple[int, int] = (0, 0)) -> list[tuple[int, int]]:
     """(batches to reach, episodes per batch) of a phase of ``episodes`` single episodes: full
-    batches of ``batch``, then one last batch of the remainder (fewer parallel episodes) if any."""
-    full, rest = divmod(int(episodes), int(batch))
-    return [(n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
+    batches of ``batch``, then one last batch of the remainder (fewer parallel episodes) if any.
+    ``done``: the (batches, single episodes) a resumed checkpoint has already run, whose last batch
+    may have been a smaller one — the plan covers the episodes still to run."""
+    batches, singles = done
+    full, rest = divmod(max(int(episodes) - singles, 0), int(batch))
+    plan = [(batches + n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
+    return plan or [(batches, batch)]  # nothing left to run: the loop only restores the checkpoint
 
 
 def episode_curve(curve: dict, field: str) -> np.ndarray:
     """One field of a :func:`~fuzzynav.learn.checkpoint.train_loop` curve, one value per episode
     in order (batches of unequal size: the last one may be smaller, :func:`batch_plan`)."""
     return np.concatenate([np.ravel(np.asarray(row, dtype=float)) for row in curve[field]])
+
+
+def checkpoint_progress(path: Path, resume: bool) -> tuple[int, int]:
+    """(batches, single episodes) done by the checkpoint at ``path`` when resuming from it, else (0, 0)."""
+    if not (resume and Path(path).exists()):
+        return 0, 0
+    document = load_checkpoint(path)
+    return int(document["episode"]), sum(len(row) for row in document["curve"]["success"])
 
 
 def run_phase(phase: Phase, request, seed_offset: int) -> dict:
@@ -146,7 +162,7 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
     rng = np.random.default_rng([int(request.seed), seed_offset])
     resume, continued = request.resume, False
     try:
-        for batches, size in batch_plan(phase.episodes, batch):
+        for batches, size in batch_plan(phase.episodes, batch, checkpoint_progress(phase.checkpoint, resume)):
             phase.env.batch = size
             result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
                                 checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,

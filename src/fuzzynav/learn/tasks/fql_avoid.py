@@ -27,8 +27,23 @@ from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay
 from fuzzynav.learn.tasks.common import (
-    BATCH, GOAL_TOLERANCE, PI, STEERING3, WORLD_CONVERGENCE, Phase, checkpoint_path, episode_budget, finish,
-    fql_learner, grid_system, load_fuzzy_model, output_variable, run_phases, steering_episodes, summarise)
+    BATCH,
+    GOAL_TOLERANCE,
+    PI,
+    STEERING3,
+    WORLD_CONVERGENCE,
+    Phase,
+    checkpoint_path,
+    episode_budget,
+    finish,
+    fql_learner,
+    grid_system,
+    load_fuzzy_model,
+    output_variable,
+    run_phases,
+    steering_episodes,
+    summarise,
+)
 from fuzzynav.robot.sensors import SensorRing
 
 AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b-thesis (Fig IV.18)

@@ -29,9 +29,28 @@ from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
 from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
 from fuzzynav.learn.tasks.common import (
-    GOAL_TOLERANCE, MAX_STEPS, PI, SPEED3, SPEED_SHARE, STEERING3, STEERING5, STEERING_SPEED, TOLERANCE, Phase,
-    batch_size, checkpoint_path, episode_budget, finish, fql_learner, grid_system, load_fuzzy_model, output_variable,
-    run_phases, steering_episodes, summarise)
+    GOAL_TOLERANCE,
+    MAX_STEPS,
+    PI,
+    SPEED3,
+    SPEED_SHARE,
+    STEERING3,
+    STEERING5,
+    STEERING_SPEED,
+    TOLERANCE,
+    Phase,
+    batch_size,
+    checkpoint_path,
+    episode_budget,
+    finish,
+    fql_learner,
+    grid_system,
+    load_fuzzy_model,
+    output_variable,
+    run_phases,
+    steering_episodes,
+    summarise,
+)
 
 
 def goal_partition_15() -> list[Variable]:

@@ -24,8 +24,20 @@ from fuzzynav.learn.extraction import Interpretations
 from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import WallSpeedReward, WallSteeringReward
 from fuzzynav.learn.tasks.common import (
-    BATCH, PI, SPEED_SHARE, WORLD_CONVERGENCE, Phase, checkpoint_path, episode_budget, finish, fql_learner,
-    load_fuzzy_model, run_phases, steering_episodes, summarise)
+    BATCH,
+    PI,
+    SPEED_SHARE,
+    WORLD_CONVERGENCE,
+    Phase,
+    checkpoint_path,
+    episode_budget,
+    finish,
+    fql_learner,
+    load_fuzzy_model,
+    run_phases,
+    steering_episodes,
+    summarise,
+)
 from fuzzynav.learn.tasks.fql_avoid import AVOID_RATE
 from fuzzynav.robot.sensors import SensorRing
 

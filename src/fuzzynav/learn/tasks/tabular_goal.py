@@ -18,7 +18,16 @@ from fuzzynav.learn.rewards import GoalSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.learn.tabular import TabularLearner, ZoneSectorDiscretiser
 from fuzzynav.learn.tasks.common import (
-    GOAL_TOLERANCE, PI, Phase, batch_size, checkpoint_path, episode_budget, finish, run_phases, summarise)
+    GOAL_TOLERANCE,
+    PI,
+    Phase,
+    batch_size,
+    checkpoint_path,
+    episode_budget,
+    finish,
+    run_phases,
+    summarise,
+)
 
 Q_STEERING = (0.0, -PI / 5, PI / 5)  # forward (α1), right (α2), left (α3)
 Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)

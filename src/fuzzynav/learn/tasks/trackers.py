@@ -7,8 +7,10 @@ before and θ_d the heading reached (the sign of :func:`~fuzzynav.control.base.t
 
 - the MLP of Fig V.13 (two tanh hidden layers of 10, linear output; :mod:`fuzzynav.learn.neural`),
   validated on 100 unseen pairs (Fig V.15);
-- a first-order ANFIS with one input θ_er and 5 generalized-bell MFs (§V.3.5, Jang's hybrid
-  learning, :mod:`fuzzynav.learn.anfis`), with its training curve and validation (Fig V.23).
+- a first-order ANFIS with one input θ_er and 5 Gaussian MFs ("5 fonctions d'appartenance
+  gaussiennes", §V.3.5.1; Jang's hybrid learning, :mod:`fuzzynav.learn.anfis`), with its training
+  curve and validation (Fig V.23). The generalized bell of eq V.8 stays an option
+  (``fit_anfis(..., mf="bell")``); it is not better here (docs/results/claims-mutations.md).
 
 One step is the thesis' set-up ("at each Δt … after this action the robot is at its new
 position", §V.3.2); the commands reach |θ_er| ≤ V·tan(π/4)·Δt / l = 0.2 rad, and the trackers
@@ -93,9 +95,10 @@ def fit_neural(data: TrackerData, seed: int = 0, max_iter: int = 5000) -> Neural
     return fit_inverse_model(data.x_train, data.y_train, HIDDEN, max_iter=max_iter, random_state=seed)
 
 
-def fit_anfis(data: TrackerData, seed: int = 0, epochs: int = ANFIS_EPOCHS) -> ANFIS:
-    """The ANFIS of §V.3.5: one input, 5 bell MFs, first order, 20 % validation split."""
-    return ANFIS(n_mfs=ANFIS_MFS, mf="bell", order=1, epochs=epochs, validation_fraction=0.2,
+def fit_anfis(data: TrackerData, seed: int = 0, epochs: int = ANFIS_EPOCHS, mf: str = "gaussian") -> ANFIS:
+    """The ANFIS of §V.3.5: one input, 5 MFs (Gaussian as §V.3.5.1 says, or ``"bell"``, eq V.8),
+    first order, 20 % validation split."""
+    return ANFIS(n_mfs=ANFIS_MFS, mf=mf, order=1, epochs=epochs, validation_fraction=0.2,
                  random_state=seed).fit(data.x_train, data.y_train)
 
 

@@ -1,6 +1,6 @@
 """A Takagi–Sugeno output where every activation triggers: Σ g z / Σ g over constant and linear terms.
 
-:func:`every_row_affine` is :func:`~fuzzynav.fuzzy.engine.compiled.weighted_affine` for the
+:func:`every_row_affine` is :func:`~fuzzynav.fuzzy.engine.staged_kernels.weighted_affine` for the
 General activation: by chunks of rows that stay in cache, each term group's degree (its
 activation's, or several folded with the output's S-norm), its value z = c₀ + c₁ x₁ + … + cₘ xₘ
 and the sums num += g z, den += g, group after group; then num / den (times den for a weighted

@@ -1,7 +1,8 @@
 """Re-run the hostile inputs of the validation review through the installed ``fuzzynav`` and count
 what goes wrong: tracebacks, hangs past the timeout (10 s), silent wrong answers.
 
-Each case of ``tests/validation/hostile_cases.py`` runs in its own subprocess (a command line, or
+Each case of :mod:`hostile_cases` (beside this script; ``test_hostile_inputs.py`` runs the same
+cases in process) runs in its own subprocess (a command line, or
 its Python code for the constructor and simulator cases) in a fresh temporary directory:
 
 - traceback: ``Traceback`` on stderr, or an exit status other than 0 / 2;
@@ -12,7 +13,7 @@ its Python code for the constructor and simulator cases) in a fresh temporary di
 Also two end-to-end checks of ``train --resume``: a seed-0 checkpoint resumed with ``--seed 1``, and
 with fewer ``--episodes`` than done, must exit 2 naming the field. Run:
 
-    python benchmarks/hostile_inputs.py [--timeout 10] [--json]
+    python tests/validation/hostile_subprocesses.py [--timeout 10] [--json]
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from tests.validation.hostile_cases import CASES, PYTHON_PRELUDE, Case, argv_of, write_files  # noqa: E402

@@ -1,4 +1,4 @@
-"""Terms and hedges over a column of values, compiled: the fuzzification of :mod:`fuzzynav.fuzzy.engine.fused`.
+"""Terms and hedges over a column of values, compiled: the fuzzification of :mod:`fuzzynav.fuzzy.engine.fused_kernel`.
 
 :func:`term_column` evaluates a term given by its code (:func:`pack_term`) on every value of a
 column, one loop per term type (so each loop is a plain sequence of arithmetic that the compiler

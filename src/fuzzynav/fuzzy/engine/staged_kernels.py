@@ -9,7 +9,7 @@ evaluation per input term and hedge) and hands these kernels flat arrays:
   T-norm / S-norm), times the rule's weight;
 - :func:`integral` — a Mamdani output: every activation implies its term (sampled once at the
   defuzzifier's points) with the block's T-norm, the output's S-norm aggregates them, and the
-  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.reduce`)
+  sampled set is reduced (centroid, bisector, mean / smallest / largest of maximum: :mod:`.sampled_defuzzify`)
   — row by row, units of Maximum aggregation four in one pass where their supports overlap, or,
   for a centroid over short supports, across rows (:mod:`.centroid_rows`), the same bits;
 - :func:`group` and :func:`weighted_average` — a weighted output: activations of one term
@@ -28,12 +28,11 @@ from __future__ import annotations
 import numpy as np
 from numba import literally
 
-from fuzzynav.fuzzy.engine.affine import CHUNK, every_row_affine
 from fuzzynav.fuzzy.engine.centroid_rows import applies, max_centroid
-from fuzzynav.fuzzy.engine.implied import max_four, max_min, max_product, sum_min
-from fuzzynav.fuzzy.engine.norms import (ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into,
-                                         tnorm_into)
-from fuzzynav.fuzzy.engine.reduce import REDUCTIONS, centroid_sums, padded, reduce_sampled
+from fuzzynav.fuzzy.engine.implication import max_four, max_min, max_product, sum_min
+from fuzzynav.fuzzy.engine.norms import ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into, tnorm_into
+from fuzzynav.fuzzy.engine.sampled_defuzzify import centroid_sums, padded, reduce_sampled
+from fuzzynav.fuzzy.engine.sugeno_outputs import CHUNK, every_row_affine
 from fuzzynav.jit import jit
 
 AND, OR = -1, -2  # program codes; codes >= 0 push a proposition's degree
@@ -116,9 +115,9 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 @jit
 def _max_units(mu, shapes, support, units, count, unit_term, unit_implication, w):
-    """mu ← the maximum of mu and the implied term (min or product, :mod:`.implied`) of each of
+    """mu ← the maximum of mu and the implied term (min or product, :mod:`.implication`) of each of
     the first ``count`` of ``units``, in order, over its support: four in one pass
-    (:func:`~.implied.max_four`, over the span of their supports, where a term is 0 outside its
+    (:func:`~.implication.max_four`, over the span of their supports, where a term is 0 outside its
     own) where their supports overlap (:func:`_spans_overlap`), else one by one."""
     j = 0
     while j < count:
@@ -141,7 +140,7 @@ def _max_units(mu, shapes, support, units, count, unit_term, unit_implication, w
 def _spans_overlap(support, unit_term, units, j):
     """(first, end, whether) of the span of the supports of the four units ``units[j:j + 4]``:
     whether it is at most half their total length (MATLAB's Bells: everywhere), where
-    :func:`~.implied.max_four` pays."""
+    :func:`~.implication.max_four` pays."""
     first, end, total = support[unit_term[units[j]], 0], 0, 0
     for i in range(j, j + 4):
         t = unit_term[units[i]]
@@ -208,7 +207,7 @@ def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, s
             if four and plain and aggregation == MAXIMUM and (imp == MINIMUM or imp == PRODUCT):
                 maxed[n_maxed] = u  # after the others: the maximum is exact, so any order gives the same bits
                 n_maxed += 1
-            elif plain and aggregation == MAXIMUM and imp == MINIMUM:  # one pass (:mod:`.implied`)
+            elif plain and aggregation == MAXIMUM and imp == MINIMUM:  # one pass (:mod:`.implication`)
                 max_min(mu, shapes, t, first, end, wu)
             elif plain and aggregation == MAXIMUM and imp == PRODUCT:
                 max_product(mu, shapes, t, first, end, wu)

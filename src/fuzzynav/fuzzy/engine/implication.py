@@ -1,6 +1,6 @@
 """One-pass implication and aggregation of a Mamdani term over its samples, compiled.
 
-:func:`fuzzynav.fuzzy.engine.compiled.integral` otherwise implies a term (T-norm of the activation
+:func:`fuzzynav.fuzzy.engine.staged_kernels.integral` otherwise implies a term (T-norm of the activation
 degree and the term's samples, into a scratch array) and aggregates it (S-norm into the sampled
 set) in two passes of the general norms; for the usual pairs of norms, where no NaN can occur
 (activation degrees in [0, 1], samples within the term's support), these loops do both in one pass

@@ -4,15 +4,15 @@
 buffers: :func:`~.pack.flatten`) and the degrees of the few propositions fuzzified in NumPy,
 and does in one call what :class:`~fuzzynav.fuzzy.engine.Engine` otherwise does in Python
 around several kernels: the input values (clipped where
-``lock-range``); every proposition's degree (:func:`~.term_columns.term_column`, then its hedges);
-each block's rules (:func:`~.compiled.rule_degrees`: postfix antecedents with the block's norms,
+``lock-range``); every proposition's degree (:func:`~.fuzzify_terms.term_column`, then its hedges);
+each block's rules (:func:`~.staged_kernels.rule_degrees`: postfix antecedents with the block's norms,
 times the weights; a block reading an output term runs rule by rule, that degree accumulated
 from the conclusions before, as fuzzylite does; a rule p and q alone in its output's term group
 is left to that output, which multiplies p q where it reads it: ``pack.rule_skipped``); each
 conclusion's degree (hedges carried from one conclusion to the next); then each output — Mamdani
-by :func:`~.compiled.integral`, weighted by :func:`~.affine.every_row_affine` — and its
+by :func:`~.staged_kernels.integral`, weighted by :func:`~.sugeno_outputs.every_row_affine` — and its
 ``lock-previous`` / ``default`` / ``lock-range``
-(:func:`~.compiled.finish`). The same operations in the same order as that path, so the same
+(:func:`~.staged_kernels.finish`). The same operations in the same order as that path, so the same
 bits (the NumPy path stays for what :func:`~.pack.pack` refuses; the tests compare the two on the
 test engines and on pyfuzzylite's examples).
 """
@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine import compiled
-from fuzzynav.fuzzy.engine.affine import every_row_affine
+from fuzzynav.fuzzy.engine import staged_kernels
+from fuzzynav.fuzzy.engine.fuzzify_terms import hedge_column, term_column
 from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Flat, Packed
-from fuzzynav.fuzzy.engine.term_columns import hedge_column, term_column
+from fuzzynav.fuzzy.engine.sugeno_outputs import every_row_affine
 from fuzzynav.jit import jit
 
 ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
@@ -152,7 +152,7 @@ def run(X, table, ints, floats, bools, layout):
     for k in range(output.shape[0]):
         lock_previous, default, lock_range = output[k, 4] != 0, output_limits[k, 0], output[k, 5] != 0
         if output[k, 0] != NAN_OUTPUT and (lock_previous or default == default or lock_range):
-            compiled.finish(raw[k], lock_previous, default, lock_range, output_limits[k, 1], output_limits[k, 2])
+            staged_kernels.finish(raw[k], lock_previous, default, lock_range, output_limits[k, 1], output_limits[k, 2])
     return raw
 
 
@@ -189,7 +189,7 @@ def _rows(X, work, ints, floats, bools, layout, raw, at):
                 e = a + 1
                 while e < r1 and not rule_skipped[e]:
                     e += 1
-                compiled.rule_degrees(table, program, rule_start[a:e + 1], rule_weight[a:e], conjunction, disjunction,
+                staged_kernels.rule_degrees(table, program, rule_start[a:e + 1], rule_weight[a:e], conjunction, disjunction,
                                       value[a:e])
                 a = e
             for r in range(r0, r1):
@@ -201,7 +201,7 @@ def _rows(X, work, ints, floats, bools, layout, raw, at):
         if kind == INTEGRAL:
             n_terms, size = support_start[k + 1] - support_start[k], points_start[k + 1] - points_start[k]
             sampled = shapes[shape_start[k]:shape_start[k + 1]].reshape((n_terms, size))
-            compiled.integral(work, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
+            staged_kernels.integral(work, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
                               support[support_start[k]:support_start[k + 1]], points[points_start[k]:points_start[k + 1]],
                               output[k, 1], output[k, 2], y)
         elif kind == WEIGHTED:

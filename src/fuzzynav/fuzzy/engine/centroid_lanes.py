@@ -1,6 +1,6 @@
 """Σ μ and Σ μ x over eight lanes, written as LLVM vector instructions.
 
-The centroid's sums (:func:`fuzzynav.fuzzy.engine.reduce.centroid_sums`) keep eight running sums,
+The centroid's sums (:func:`fuzzynav.fuzzy.engine.sampled_defuzzify.centroid_sums`) keep eight running sums,
 sample k in sum k mod 8, added pairwise at the end: eight independent additions a step instead of
 one chain. numba leaves LLVM's SLP vectoriser off, and the loop vectoriser may not reorder a sum,
 so written as plain Python those eight sums stay scalar. :func:`lane_sums` compiles to the very

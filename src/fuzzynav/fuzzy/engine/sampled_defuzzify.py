@@ -3,14 +3,14 @@
 :func:`reduce_sampled` turns the aggregated set, sampled at the defuzzifier's points, into the
 crisp value: centroid Σ μ x / Σ μ, bisector (the samples where the running area is closest to half
 of it, averaged), mean / smallest / largest of the samples of maximum membership; NaN for an empty
-set. Used row by row by :func:`fuzzynav.fuzzy.engine.compiled.integral`.
+set. Used row by row by :func:`fuzzynav.fuzzy.engine.staged_kernels.integral`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.fuzzy.engine.lanes import lane_sums
+from fuzzynav.fuzzy.engine.centroid_lanes import lane_sums
 from fuzzynav.jit import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
@@ -21,7 +21,7 @@ def centroid_sums(mu, x, lo, hi):
     """(Σ μ, Σ μ x) over the samples [lo, hi) of ``mu``, which is 0 elsewhere (and padded with zeros,
     as ``x``, to a multiple of 8 samples): eight running sums, sample k in sum k mod 8 (eight
     independent additions per step instead of a chain of dependent ones), added pairwise, as
-    vector instructions (:func:`~.lanes.lane_sums`). Anchored on the sample index, so any
+    vector instructions (:func:`~.centroid_lanes.lane_sums`). Anchored on the sample index, so any
     [lo, hi) holding the non-zero samples gives the same bits."""
     return lane_sums(mu, x, lo - lo % 8, hi + (-hi) % 8)
 

@@ -1,0 +1,177 @@
+"""Which claims catch which edited rule table: the mutation harness of the chapter IV and V claims.
+
+Each mutation edits one published rule base — a sign flip of one cell's steering, a biased cell,
+or the whole steering set to zero (``all-Z``) — for every fuzzy role (``gsb`` Table IV.1,
+``oab`` Table IV.2, ``foa``/``roa``/``loa`` Tables IV.3–IV.5, ``vrb`` Table IV.6, ``wall`` Table
+VI.2, ``tracker`` Table V.1), writes it to a file and runs the experiments that use the role
+with it, read back as ``fuzzynav reproduce ID --fis ROLE=FILE`` reads it
+(:func:`fuzzynav.experiments.rule_bases.from_options`). For each mutation it prints how far it
+moves the figures (the farthest distance of a route from the published tables', the largest
+relative change of a tracking error or pursuit time) and which claims it fails; then, per claim,
+the mutations that catch it. The goal: every mutation that moves a route by more than 0.5 m or
+changes an error by more than 20 % fails a claim, and every claim is caught by some mutation.
+
+    PYTHONPATH=src python benchmarks/mutations.py                      # the table (a few minutes)
+    PYTHONPATH=src python benchmarks/mutations.py --roles tracker      # one role
+    PYTHONPATH=src python benchmarks/mutations.py --every-cell         # every cell's sign, one by one
+    PYTHONPATH=src python benchmarks/mutations.py --write-references   # store the published runs
+
+``--write-references`` runs the experiments with the published tables and stores what their
+figures show (:func:`fuzzynav.experiments.routes.published_entries`) in
+``src/fuzzynav/experiments/data/published_routes.json``, which the claims compare with.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import tempfile
+from pathlib import Path
+
+import yaml
+
+from fuzzynav.catalog import experiments as registry
+from fuzzynav.experiments import routes, rule_bases
+from fuzzynav.fuzzy.io.files import dumps
+
+# the experiments each role's table reaches (figures with a stored reference, and their claims)
+CHAPTER_IV = ("fig-IV-12", "fig-IV-13", "fig-IV-15", "fig-IV-22", "fig-IV-23", "eval-IV")
+REACHES = {"gsb": CHAPTER_IV, "oab": ("fig-IV-15", "eval-IV"),
+           **{role: ("fig-IV-22", "fig-IV-23", "eval-IV") for role in ("foa", "roa", "loa", "vrb")},
+           "wall": ("fig-VI-28",),
+           "tracker": ("fig-V-7", "fig-V-10", "fig-V-11", "fig-V-28", "fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32",
+                       "fig-V-33", "fig-V-34")}
+REFERENCED = tuple(dict.fromkeys(i for ids in REACHES.values() for i in ids if i not in ("eval-IV", "fig-V-7")))
+MIRROR = {"NG": "PG", "NM": "PM", "NP": "PP", "PP": "NP", "PM": "NM", "PG": "NG", "DI": "AI", "D": "A", "A": "D",
+          "AI": "DI"}
+ZERO = {"v_adjust": "AC"}  # the zero term of an output (Z otherwise)
+BIAS = {"v_adjust": "A"}  # the term a biased cell is set to (PM otherwise)
+# the two cells of Table IV.1 an audit flipped by hand: (θ_rg PP, d_rg P) NM → PM, (NM, G) PP → NP
+NAMED_FLIPS = {"gsb": ("drg IS P AND theta IS PP", "drg IS G AND theta IS NM")}
+
+
+def _conclusion(rule: str) -> tuple[str, str, str]:
+    """(text before the first conclusion's term, its variable, its term) of a rule's text."""
+    head, _, tail = rule.partition(" THEN ")
+    variable, _, rest = tail.partition(" IS ")
+    term = rest.split(" ")[0]
+    return f"{head} THEN {variable} IS ", variable, term
+
+
+def _with_term(rule: str, term: str) -> str:
+    head, _, old = _conclusion(rule)
+    tail = rule[len(head) + len(old):]
+    return f"{head}{term}{tail}"
+
+
+def mutations(role: str, every_cell: bool = False) -> list[tuple[str, dict]]:
+    """(name, edited document) of every mutation of ``role``'s published system: two sign flips
+    (the audited cells for ``gsb``; else the first rule and the middle one that steer; with
+    ``every_cell``, one flip per steering cell), a biased zero cell and the all-zero table."""
+    document = yaml.safe_load(dumps(rule_bases.system(role), "yaml"))
+    rules = document["rules"]
+    steering = [k for k, rule in enumerate(rules) if _conclusion(rule)[2] in MIRROR]
+    if every_cell:
+        flips = steering
+    elif role in NAMED_FLIPS:
+        flips = [next(k for k, rule in enumerate(rules) if cell in rule) for cell in NAMED_FLIPS[role]]
+    else:
+        flips = [steering[0], steering[len(steering) // 2]]
+    edited = []
+    for k in flips:
+        term = _conclusion(rules[k])[2]
+        edited.append((f"{role}: flip rule {k + 1} ({term} -> {MIRROR[term]})",
+                       {k: _with_term(rules[k], MIRROR[term])}))
+    variable = _conclusion(rules[0])[1]
+    zero, bias = ZERO.get(variable, "Z"), BIAS.get(variable, "PM")
+    zeros = [k for k, rule in enumerate(rules) if _conclusion(rule)[2] == zero]
+    if zeros:
+        k = zeros[len(zeros) // 2]
+        edited.append((f"{role}: biased rule {k + 1} ({zero} -> {bias})", {k: _with_term(rules[k], bias)}))
+    edited.append((f"{role}: all-{zero}", {k: _with_term(rule, zero) for k, rule in enumerate(rules)}))
+    return [(name, {**document, "name": f"{role}-mutated",
+                    "rules": [changes.get(k, rule) for k, rule in enumerate(rules)]}) for name, changes in edited]
+
+
+def run(ids, out: Path, systems: dict | None = None) -> dict:
+    """The numbers of experiments ``ids`` (quick settings: eval-IV on 10 worlds) with ``systems``."""
+    with rule_bases.replaced(systems or {}):
+        return {key: registry.experiment(key)(out / key, quick=True, seed=0) for key in ids}
+
+
+def moved(numbers: dict) -> tuple[float, float]:
+    """(farthest route distance from the published runs (m), largest relative change of an error or
+    pursuit time) over the runs of ``numbers`` that have a reference."""
+    stored, gap, change = routes.references(), 0.0, 0.0
+    for key, value in numbers.items():
+        for name, entry in routes.published_entries(key, value).items():
+            reference = stored[name]
+            gap = max(gap, routes.deviation(entry["route"], reference["route"]))
+            for field in ("max_cross_track_m", "mean_cross_track_m", "capture_time_s"):
+                if field in reference:
+                    ours, theirs = entry[field], reference[field]
+                    if ours is None or theirs is None:
+                        change = max(change, 0.0 if ours == theirs else math.inf)
+                    elif theirs > routes.ERROR_FLOOR_M:
+                        change = max(change, abs(ours - theirs) / theirs)
+    return gap, change
+
+
+def failing(numbers: dict) -> list[str]:
+    """The ids whose claim is not reproduced on ``numbers``."""
+    return [key for key, value in numbers.items() if registry.spec(key).claim.evaluate(value)[0] != "reproduced"]
+
+
+def write_references(out: Path) -> Path:
+    """Store the published tables' runs of :data:`REFERENCED` beside the claims."""
+    entries = {}
+    for key, value in run(REFERENCED, out).items():
+        entries.update(routes.published_entries(key, value))
+    path = Path(__file__).resolve().parents[1] / "src" / "fuzzynav" / "experiments" / "data" / routes.REFERENCES
+    path.parent.mkdir(exist_ok=True)
+    temporary = path.with_suffix(".tmp")
+    temporary.write_text(json.dumps(entries, separators=(",", ":")) + "\n")
+    temporary.replace(path)
+    return path
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--roles", nargs="*", default=list(REACHES), choices=list(REACHES))
+    parser.add_argument("--every-cell", action="store_true", help="flip the sign of every steering cell, one at a time")
+    parser.add_argument("--write-references", action="store_true")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as folder:
+        out = Path(folder)
+        if args.write_references:
+            print(f"wrote {write_references(out)}")
+            return
+        caught: dict[str, list[str]] = {}
+        baseline = sorted({key for role in args.roles for key in REACHES[role]})
+        print(f"published tables: claims not reproduced: {failing(run(baseline, out)) or 'none'}\n")
+        print("| mutation | route moved (m) | error / time change | significant | claims failed |")
+        print("|---|---|---|---|---|")
+        misses = 0
+        for role in args.roles:
+            for name, document in mutations(role, args.every_cell):
+                path = out / f"{role}.yaml"
+                path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
+                numbers = run(REACHES[role], out, rule_bases.from_options([f"{role}={path}"]))
+                gap, change = moved(numbers)
+                failed = failing(numbers)
+                significant = gap > routes.ROUTE_TOLERANCE_M or change > routes.ERROR_TOLERANCE
+                misses += significant and not failed
+                for key in failed:
+                    caught.setdefault(key, []).append(name)
+                print(f"| {name} | {gap:.2f} | {change:.0%} | {'yes' if significant else 'no'} | "
+                      f"{', '.join(failed) or ('**none**' if significant else 'none')} |", flush=True)
+        print(f"\nsignificant mutations no claim caught: {misses}\n")
+        print("| claim | caught by |")
+        print("|---|---|")
+        for key in baseline:
+            print(f"| {key} | {len(caught.get(key, []))} mutations: {'; '.join(caught.get(key, [])) or '**none**'} |")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,56 @@
+"""The optional hooks of a controller: what the simulator looks for beyond ``act`` / ``act_batch``.
+
+A controller (:class:`~fuzzynav.control.base.Controller`) needs only ``act`` (or, as every
+controller of the package, ``act_batch``: :class:`~fuzzynav.control.base.BatchController`) and,
+if it keeps state, ``reset(rng)``. The simulator (:class:`fuzzynav.sim.simulator.BatchSimulator`)
+also uses each of these protocols a controller implements — checked with ``isinstance``, so a
+controller implements one by defining its member, without deriving from it:
+
+- :class:`MapAware` — ``prepare(scenario)``: shown the whole scenario (obstacles included) once
+  before its episodes; a controller doing so is a map-aware reference, not a sensor-based
+  navigator (``astar-pp``), and its spec says ``needs_map=True``;
+- :class:`SizedForRobot` — ``for_robot(params)``: told the robot's size and limits
+  (:class:`~fuzzynav.robot.tricycle.TricycleParams`) before the episodes, to size its clearances;
+- :class:`BringsSensors` — ``sensors``: the sensor ring it reads by default
+  (:class:`~fuzzynav.robot.sensors.SensorRing`, ``None``: the thesis' seven rays); a scenario's
+  ``sensors`` key, or ``--sensors``, overrides it;
+- :class:`CompiledAct` — ``compiled(n, sensor_angles)``: the arguments of its decision inside
+  the compiled step (:func:`fuzzynav.kernels.step.step`) for ``n`` robots, so that sensing,
+  deciding and stepping are one compiled call (the thesis navigators,
+  :class:`~fuzzynav.control.batched.CompiledNavigator`);
+- :class:`HasRoles` — ``roles``: the names of its replaceable rule bases in the order it reads
+  them; its factory then takes ``systems={role: FuzzySystem}`` (``--fis ROLE=FILE``) and its spec
+  lists the same roles (:mod:`fuzzynav.catalog.roles`).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol, runtime_checkable
+
+
+@runtime_checkable
+class MapAware(Protocol):
+    def prepare(self, scenario) -> None:
+        """Read ``scenario`` (a :class:`~fuzzynav.world.scenario.Scenario`) before the episodes."""
+
+
+@runtime_checkable
+class SizedForRobot(Protocol):
+    def for_robot(self, params) -> None:
+        """Size what depends on the robot (its radius, wheelbase, limits) for ``params``."""
+
+
+@runtime_checkable
+class BringsSensors(Protocol):
+    sensors: object  # a SensorRing, or None for the thesis' seven rays
+
+
+@runtime_checkable
+class CompiledAct(Protocol):
+    def compiled(self, n: int, sensor_angles) -> tuple:
+        """The navigator arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots."""
+
+
+@runtime_checkable
+class HasRoles(Protocol):
+    roles: tuple[str, ...]

@@ -1,0 +1,142 @@
+"""``fuzzy-5b-yield``: ``fuzzy-5b`` with a fuzzy yield / evade layer fed by the time to collision
+with a moving obstacle, a named variant for dynamic worlds (the thesis' perspective of dynamic
+obstacles, Conclusion générale; docs/dynamic.md).
+
+The layer reads only the range sensors and the pose the robot believes. Each scan within
+``horizon`` m becomes points in the world frame; a point of a standing surface lies on the outline
+of the scan before (segments between neighbouring beams), a point of a moving obstacle lies off
+it by what the obstacle moved. A point that moved faster than ``mover_speed`` and whose gap to
+the robot shrank gives a time to collision gap / closing speed (the closing-speed cue of Fiorini &
+Shiller's velocity obstacles, 1998, read from two range scans). The smallest one gives the layer's
+two inputs: ``ttc`` (s: short, medium, long) and the threat's bearing ``side`` = |φ| (front,
+diagonal, abeam, behind). A TS0 rule base (:func:`yield_system`) gives the layer's ``authority``
+a ∈ [0, 1], the speed it asks for and a dodge angle; the command is (1 − a) · the navigator's +
+a · the layer's speed, and the steering turns by a · dodge away from the threat's side. Something
+coming from abeam or behind makes the robot speed out of its way, something diagonal ahead makes
+it swerve, something head-on makes it slow down and swerve while the navigator keeps a say (it
+avoids what is ahead anyway). The authority fades to nothing as the closest reading within 45° of
+the heading comes down to ``close`` m: there the navigator keeps the body off what is near.
+Beyond the horizon of the rules (``ttc`` long) the navigator drives alone.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from fuzzynav.control.base import BatchController
+from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust
+from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partition
+
+TTC_PEAKS = (1.0, 2.5, 4.5)  # s: short, medium, long
+SIDE_PEAKS = tuple(np.deg2rad((0.0, 45.0, 90.0, 150.0)))  # front, diagonal, abeam, behind
+# (ttc, side) -> (authority, speed m/s, dodge rad); dodge turns away from the threat's side
+RULES = {
+    ("S", "F"): (0.6, 0.4, 0.6), ("S", "D"): (1.0, 1.2, 0.5), ("S", "A"): (1.0, 2.5, 0.6), ("S", "B"): (1.0, 2.5, 0.0),
+    ("M", "F"): (0.3, 0.4, 0.4), ("M", "D"): (0.6, 0.8, 0.3), ("M", "A"): (0.6, 1.8, 0.4), ("M", "B"): (0.6, 1.8, 0.0),
+    **{("L", side): (0.0, 0.0, 0.0) for side in "FDAB"},
+}
+
+
+def yield_system() -> FuzzySystem:
+    """The yield / evade rule base (module docstring): TS0, product, weighted average."""
+    ttc = Variable("ttc", (0.0, 10.0), strong_partition(TTC_PEAKS, ("S", "M", "L"), (0.0, 10.0)))
+    side = Variable("side", (0.0, np.pi), strong_partition(SIDE_PEAKS, ("F", "D", "A", "B"), (0.0, np.pi)))
+    names = ("authority", "speed", "dodge")
+    values = [sorted({row[k] for row in RULES.values()}) for k in range(len(names))]  # each output's singletons
+    outputs = [Variable(name, (v[0] - 1.0, v[-1] + 1.0), {f"v{i}": Singleton(x) for i, x in enumerate(v)})
+               for name, v in zip(names, values)]
+    rules = [Rule((("ttc", t), ("side", s)), tuple((name, f"v{v.index(x)}") for name, v, x in zip(names, values, out)))
+             for (t, s), out in RULES.items()]
+    return FuzzySystem([ttc, side], outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_average",
+                       name="yield", description="yield / evade on the time to collision with a moving obstacle")
+
+
+class YieldingNavigator(BatchController):
+    """``inner`` (default ``fuzzy-5b``) under the yield / evade layer (module docstring)."""
+
+    name = "fuzzy-5b-yield"
+
+    def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
+                 close: float = 0.35):
+        self.inner = inner if inner is not None else fuzzy_5b_gap_robust()
+        self.sensors = getattr(self.inner, "sensors", None)
+        self.labels = getattr(self.inner, "labels", ())
+        self.system, self.mover_speed, self.max_speed, self.horizon = yield_system(), mover_speed, max_speed, horizon
+        self.close = close
+        self._previous = None
+
+    def reset(self, rng=None) -> None:
+        self.inner.reset(rng)
+        self._previous = None
+
+    def for_robot(self, robot) -> YieldingNavigator:
+        if callable(getattr(self.inner, "for_robot", None)):
+            self.inner.for_robot(robot)
+        self.max_speed = min(self.max_speed, robot.max_speed)
+        return self
+
+    def threats(self, obs) -> tuple[np.ndarray, np.ndarray]:
+        """(time to collision (N,), inf when nothing comes; bearing φ of that beam (N,))."""
+        pose, ranges = np.asarray(obs.pose, dtype=float), np.asarray(obs.ranges, dtype=float)
+        heading = pose[:, 2:3] + np.asarray(obs.sensor_angles, dtype=float)[None]
+        points = pose[:, None, :2] + ranges[..., None] * np.stack([np.cos(heading), np.sin(heading)], axis=-1)
+        seen = ranges < min(obs.max_range - 1e-6, self.horizon)
+        previous, self._previous = self._previous, (pose[:, :2].copy(), points, ranges < obs.max_range - 1e-6)
+        n = len(ranges)
+        ttc, bearing = np.full(n, np.inf), np.zeros(n)
+        if previous is None or previous[1].shape != points.shape:
+            return ttc, bearing
+        for i in np.flatnonzero(seen.any(axis=1)):
+            gap, closing = _closing(points[i][seen[i]], pose[i, :2], previous[1][i], previous[2][i], previous[0][i],
+                                    obs.dt, self.mover_speed)
+            if np.isfinite(gap).any():
+                times = gap / closing
+                j = int(np.argmin(times))
+                ttc[i], bearing[i] = times[j], np.asarray(obs.sensor_angles)[np.flatnonzero(seen[i])[j]]
+        return ttc, bearing
+
+    def act_batch(self, obs):
+        steering, speed, labels = self.inner.act_batch(obs)
+        ttc, bearing = self.threats(obs)
+        near = np.isfinite(ttc)
+        if not near.any():
+            return steering, speed, labels
+        steering, speed, labels = np.array(steering, dtype=float), np.array(speed, dtype=float), np.array(labels, dtype=object)
+        out = self.system.evaluate(np.column_stack([np.minimum(ttc[near], 10.0), np.abs(bearing[near])]))
+        ahead = np.abs(np.asarray(obs.sensor_angles)) <= np.pi / 4
+        room = np.asarray(obs.ranges)[near][:, ahead].min(axis=1)  # the navigator keeps the body off what is close ahead
+        authority = out[:, 0] * np.clip((room - self.close) / self.close, 0.0, 1.0)
+        wanted, dodge = np.minimum(out[:, 1], self.max_speed), out[:, 2]
+        speed[near] = (1 - authority) * speed[near] + authority * wanted
+        steering[near] = steering[near] - authority * dodge * np.sign(bearing[near])
+        labels[near] = np.where(authority > 0.5, "YIELD", labels[near])
+        return steering, speed, labels
+
+
+def make(**options) -> YieldingNavigator:
+    """``fuzzy-5b-yield`` (``options``: ``mover_speed``, ``max_speed``)."""
+    return YieldingNavigator(**options)
+
+
+def _closing(points, here, before, valid, there, dt: float, mover_speed: float, bridge: float = 0.3):
+    """(gap (P,), closing speed (P,)) of the scan ``points`` (P, 2) seen from ``here`` that moved
+    since the scan before (``before`` (S, 2), ``valid`` (S,), seen from ``there``): each point's
+    motion is its distance to the previous scan's outline (segments between neighbouring valid
+    beams less than ``bridge`` m apart), a surface that stands still being on it; a point that
+    moved faster than ``mover_speed`` and came closer gets its gap and the speed it closed it at
+    (gap inf elsewhere)."""
+    a, b = before[:-1], before[1:]
+    joined = valid[:-1] & valid[1:] & (np.hypot(*(b - a).T) < bridge)
+    a, e = a[joined], (b - a)[joined]
+    if not len(a):
+        return np.full(len(points), np.inf), np.ones(len(points))
+    u = np.clip(np.einsum("pk,sk->ps", points, e) - np.einsum("sk,sk->s", a, e)[None], 0.0, None)
+    u = np.minimum(u / np.maximum(np.einsum("sk,sk->s", e, e), 1e-12)[None], 1.0)
+    foot = a[None] + u[..., None] * e[None]  # (P, S, 2) nearest point of each segment
+    dist = np.hypot(*(points[:, None] - foot).transpose(2, 0, 1))
+    s = np.argmin(dist, axis=1)
+    was = foot[np.arange(len(points)), s]
+    gap = np.hypot(*(points - here).T)
+    closing = (np.hypot(*(was - there).T) - gap) / dt
+    moving = (dist[np.arange(len(points)), s] / dt > mover_speed) & (closing > mover_speed)
+    return np.where(moving, gap, np.inf), np.where(moving, closing, 1.0)

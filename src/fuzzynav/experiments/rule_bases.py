@@ -1,0 +1,78 @@
+"""The rule bases the experiments run, by role, and their replacement (``fuzzynav reproduce ID
+--fis ROLE=FILE``).
+
+A role names one published table wherever it is used: ``gsb`` (Table IV.1, in ``goal-seeking``,
+``fuzzy-2b-thesis`` and ``fuzzy-5b-thesis``), ``oab`` (Table IV.2), ``foa``, ``roa``, ``loa``
+(Tables IV.3–IV.5), ``vrb`` (Table IV.6), ``wall`` (Table VI.2) and ``tracker`` (Table V.1, the
+fuzzy tracker CF). Inside :func:`replaced`, :func:`controller` builds every controller with the
+replacement of each role it has, so a claim can be checked against an edited table
+(``benchmarks/mutations.py``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from contextvars import ContextVar
+from types import MappingProxyType
+
+from fuzzynav.catalog.roles import ROLES, check_fits, parse_option
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.systems import get_system
+
+# role -> the built-in system it defaults to (every role of every fuzzy controller)
+ROLE_SYSTEMS: dict[str, str] = {role: system for roles in ROLES.values() for role, system in roles.items()}
+
+_REPLACED: ContextVar[Mapping] = ContextVar("replaced_rule_bases", default=MappingProxyType({}))
+
+
+@contextmanager
+def replaced(systems: Mapping) -> Iterator[None]:
+    """Run the experiments inside with ``systems`` ({role: fuzzy system}) in place of the defaults."""
+    unknown = sorted(set(systems) - set(ROLE_SYSTEMS))
+    if unknown:
+        raise InputError(f"unknown role(s) {', '.join(unknown)} (roles: {', '.join(ROLE_SYSTEMS)})", field="--fis")
+    token = _REPLACED.set(dict(systems))
+    try:
+        yield
+    finally:
+        _REPLACED.reset(token)
+
+
+def system(role: str):
+    """The system of ``role`` the experiments run now: the replacement, else the built-in one."""
+    return _REPLACED.get().get(role) or get_system(ROLE_SYSTEMS[role])
+
+
+def active() -> dict:
+    """The replaced roles now in force ({role: system name}), empty for the published tables."""
+    return {role: getattr(s, "name", role) for role, s in _REPLACED.get().items()}
+
+
+def systems_for(name: str) -> dict:
+    """The replacements in force for the roles of controller ``name`` ({role: system})."""
+    return {role: s for role, s in _REPLACED.get().items() if role in ROLES.get(name, {})}
+
+
+def controller(name: str, **options):
+    """The registered controller ``name`` with the replacement of each of its roles (if any)."""
+    from fuzzynav.catalog.roles import make_with_systems
+
+    return make_with_systems(name, systems_for(name), **options)
+
+
+def from_options(options: list[str] | None) -> dict:
+    """``{role: system}`` from ``--fis ROLE=FILE`` options, each checked to fit its role."""
+    from fuzzynav.fuzzy.io import load
+
+    systems = {}
+    for option in options or []:
+        role, path = parse_option(option)
+        if role not in ROLE_SYSTEMS:
+            raise InputError(f"unknown role {role!r} (roles: {', '.join(ROLE_SYSTEMS)})", field=f"--fis {option}")
+        if role in systems:
+            raise InputError(f"role {role} is given twice", field=f"--fis {option}")
+        loaded = load(path)
+        check_fits(loaded, get_system(ROLE_SYSTEMS[role]), str(path), role)
+        systems[role] = loaded
+    return systems

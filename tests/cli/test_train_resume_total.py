@@ -1,0 +1,25 @@
+"""``fuzzynav train ... --resume`` reaches the requested total, also when the checkpoint's last
+batch was a smaller one (a budget that is not a multiple of the batch)."""
+
+import json
+
+import pytest
+
+from fuzzynav.cli import main
+
+
+def _curve_sizes(checkpoint):
+    return [len(row) for row in json.loads(checkpoint.read_text())["curve"]["success"]]
+
+
+@pytest.mark.slow
+def test_resume_after_a_smaller_last_batch_runs_to_the_total(tmp_path, capsys):
+    out = tmp_path / "fql.json"
+    assert main(["train", "fql-goal", "--episodes", "30", "--quiet", "--out", str(out)]) == 0
+    steering = tmp_path / "fql.json.steering.checkpoint.json"
+    assert _curve_sizes(steering) == [22]  # 30 episodes: 22 steering (one batch of 22), 8 speed
+    capsys.readouterr()
+    assert main(["train", "fql-goal", "--episodes", "60", "--quiet", "--json", "--out", str(out), "--resume"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert _curve_sizes(steering) == [22, 23]  # 45 steering episodes: the 22 done, then the 23 missing
+    assert result["steering"]["episodes"] + result["speed"]["episodes"] == 60

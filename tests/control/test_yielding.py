@@ -1,0 +1,52 @@
+"""fuzzy-5b-yield: the time to collision read from two lidar scans, and the layer getting through
+dynamic worlds where fuzzy-5b is run into."""
+
+import numpy as np
+import pytest
+
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.control.yielding import _closing, yield_system
+from fuzzynav.sim.simulator import run_episode
+from fuzzynav.world.generate import generate_world
+
+
+def scan(centre, radius, origin, angles):
+    """Points where rays from ``origin`` meet a disc (inf-free rows only) and which rays hit."""
+    d = np.stack([np.cos(angles), np.sin(angles)], axis=1)
+    rel = np.asarray(centre) - origin
+    along = d @ rel
+    disc = along ** 2 - (rel @ rel - radius ** 2)
+    hit = disc >= 0
+    t = along - np.sqrt(np.where(hit, disc, 0))
+    return origin + t[:, None] * d, hit & (t > 0)
+
+
+def test_a_standing_surface_is_no_threat_and_an_approaching_one_is():
+    angles = np.deg2rad(np.arange(-30.0, 31.0, 1.0))
+    robot_before, robot_now = np.array([0.0, 0.0]), np.array([0.08, 0.0])  # driving at 0.8 m/s
+    before, valid = scan([2.5, 0.0], 0.4, robot_before, angles)
+    now, seen = scan([2.5, 0.0], 0.4, robot_now, angles)
+    gap, _ = _closing(now[seen], robot_now, before, valid, robot_before, 0.1, 0.3)
+    assert np.isinf(gap).all()
+    now, seen = scan([2.4, 0.0], 0.4, robot_now, angles)  # the disc came 0.1 m closer: 1 m/s towards the robot
+    gap, closing = _closing(now[seen], robot_now, before, valid, robot_before, 0.1, 0.3)
+    j = np.argmin(gap / closing)
+    assert gap[j] == pytest.approx(2.4 - 0.4 - 0.08, abs=1e-6) and closing[j] == pytest.approx(1.8, abs=1e-6)
+
+
+def test_the_rule_base_waits_for_long_times_and_acts_on_short_ones():
+    out = yield_system().evaluate(np.array([[8.0, 0.0], [1.0, np.pi / 2], [1.0, 0.0]]))
+    assert out[0, 0] == 0.0  # far in time: the navigator drives alone
+    assert out[1, 0] == 1.0 and out[1, 1] > 1.0  # abeam and close: speed out of the way
+    assert 0.0 < out[2, 0] < 1.0 and out[2, 1] < 1.0  # head-on: slow down and swerve, the navigator keeps a say
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("index", [1, 3])
+def test_it_gets_through_where_fuzzy_5b_is_run_into(index):
+    scenario = generate_world("dynamic", 1, index)
+    plain = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    assert plain.outcome == "collision" and plain.collision_by == "obstacle"
+    trace = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
+    assert trace.outcome == "reached"
+    assert "YIELD" in set(trace.behaviour)
