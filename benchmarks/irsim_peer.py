@@ -3,13 +3,14 @@
 Run by ``sim_core.py`` in a subprocess with the Python of a virtualenv where the PyPI package
 ``ir-sim`` is installed (it pins its own NumPy, so it never goes into the project's venv). Reads
 one JSON line on stdin — ``obstacles`` (scenario-file shapes), ``start`` (x, y, θ), ``command``
-(V, α), ``dt``, ``max_range``, ``wheelbase`` —, builds the world, prints one JSON line with
+(V, α), ``dt``, ``max_range``, ``wheelbase`` and optionally the lidar's ``beams`` and ``field``
+(rad; default 7 over π) —, builds the world, prints one JSON line with
 IR-SIM's version and the beam count, then for every line ``N`` on stdin runs N steps and prints
 ``{"wall": s, "cpu": s}`` (so the caller can interleave its own timed chunks with IR-SIM's).
 
 The world is built to match: 20 m × 20 m, one Ackermann (car-like, the tricycle's kinematics)
-robot, a 2-D lidar of 7 beams over [−90°, +90°] (the thesis layout of §IV.7) with the same
-range, rendering off (``headless``), IR-SIM's own collision checks on. IR-SIM has no ellipse,
+robot, a 2-D lidar of 7 beams over [−90°, +90°] (the thesis layout of §IV.7), or the beams and
+field asked (271 over 270°: the lidar of ``fuzzy-5b``), with the same range, rendering off (``headless``), IR-SIM's own collision checks on. IR-SIM has no ellipse,
 so ellipses become 32-gons; walls become their rectangles.
 """
 
@@ -64,7 +65,7 @@ def world_yaml(job: dict) -> dict:
             "goal": [19.0, 19.0, 0.0],
             "vel_max": [4.0, 1.0],
             "sensors": [{"name": "lidar2d", "range_min": 0.0, "range_max": job["max_range"],
-                         "angle_range": math.pi, "number": 7}],
+                         "angle_range": job.get("field", math.pi), "number": job.get("beams", 7)}],
         }],
         "obstacle": obstacles,
     }

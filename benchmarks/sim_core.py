@@ -5,8 +5,9 @@ One robot is timed with a constant command (the compiled open-loop :class:`Const
 numbers measure the simulator) and, with ``--controller NAME``, with that controller in the loop
 (goal at (19, 19); an episode that ends starts again); their chunks alternate with IR-SIM's
 headless chunks of one robot under the same constant command (``benchmarks/irsim_peer.py`` in a
-subprocess), so every ratio compares chunks run under the same load (the ratio is the median of
-the per-chunk ratios). Then batches of 64, 1,024 and 8,192 robots spread over the free space
+subprocess) — ``irsim`` with a lidar of the thesis' 7 beams over 180°, ``irsim_lidar`` with the
+271 beams over 270° of ``fuzzy-5b``'s lidar (compare ``fuzzy-5b`` with that one) —, so every
+ratio compares chunks run under the same load (the ratio is the median of the per-chunk ratios). Then batches of 64, 1,024 and 8,192 robots spread over the free space
 (only robots still running count). Rates are medians of 7 chunks, wall clock and this process's
 CPU time (steadier on a busy machine).
 
@@ -27,6 +28,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -48,6 +50,9 @@ COMMAND = (0.5, 0.4)  # V (m/s), α (rad): circles of radius l / tan α ≈ 1.2 
 ONE_ROBOT_STEPS, IRSIM_STEPS, CHUNKS = 2000, 300, 7
 BATCHES = ((64, 100), (1024, 10), (8192, 3))  # robots, steps per timed chunk
 PEERS_DIR = Path(__file__).with_name(".peers")
+# IR-SIM peers: name in the JSON, lidar beams, field (rad) — the thesis' 7 rays over 180°, and the
+# 271-beam lidar over 270° of fuzzy-5b (compare fuzzy-5b with irsim_lidar)
+PEERS = (("irsim", 7, math.pi), ("irsim_lidar", 271, 1.5 * math.pi))
 
 
 def obstacles_of_15(seed: int = 0) -> list[dict]:
@@ -120,9 +125,10 @@ def start_poses(scenario, n: int, clearance: float = 0.5) -> np.ndarray:
 class IrSim:
     """IR-SIM's side: a subprocess that steps one robot in the same world on request."""
 
-    def __init__(self, python: str, start):
+    def __init__(self, python: str, start, beams: int = 7, field: float = math.pi):
         job = {"obstacles": obstacles_of_15(), "start": [float(v) for v in start], "command": list(COMMAND),
-               "dt": DEFAULT_PARAMS.dt, "max_range": 4.0, "wheelbase": DEFAULT_PARAMS.wheelbase}
+               "dt": DEFAULT_PARAMS.dt, "max_range": 4.0, "wheelbase": DEFAULT_PARAMS.wheelbase, "beams": beams,
+               "field": field}
         self.process = subprocess.Popen([python, str(Path(__file__).with_name("irsim_peer.py"))], text=True,
                                         stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                         env={**os.environ, "MPLBACKEND": "Agg"})
@@ -205,26 +211,27 @@ def main(argv=None) -> None:
     controllers = {"constant": lambda: ConstantCommand(COMMAND[1], COMMAND[0])}
     if args.controller:
         controllers[args.controller] = lambda: make_controller(args.controller)
-    irsim = None
+    peers = {}
     if irsim_python:
-        try:
-            irsim = IrSim(irsim_python, one[0])
-        except (OSError, RuntimeError, ValueError) as error:
-            print(f"IR-SIM unavailable: {error}", file=sys.stderr)
+        for name, beams, field in PEERS:
+            try:
+                peers[name] = IrSim(irsim_python, one[0], beams, field)
+            except (OSError, RuntimeError, ValueError) as error:
+                print(f"IR-SIM ({name}) unavailable: {error}", file=sys.stderr)
     single = {name: Timed(scenario, one, make()) for name, make in controllers.items()}
     rates = {name: [] for name in single}
-    peer = []
+    peer = {name: [] for name in peers}
     for _ in range(CHUNKS):
-        if irsim is not None:
-            peer.append(irsim.chunk())
+        for name, irsim in peers.items():
+            peer[name].append(irsim.chunk())
         for name, timed in single.items():
             rates[name].append(timed.chunk(ONE_ROBOT_STEPS))
     report = {"benchmark": "sim_core", "obstacles": 15, "sensors": 7, "one_robot": {}, "robot_steps_per_s": {},
-              "irsim": None}
+              **{name: None for name, _, _ in PEERS}}
     for name, r in rates.items():
         row = {"steps_per_s_wall": round(median(r, 0)), "steps_per_s_cpu": round(median(r, 1))}
-        if peer:
-            row.update(x_irsim_wall=ratio(r, peer, 0), x_irsim_cpu=ratio(r, peer, 1))
+        for peer_name, times in peer.items():
+            row.update({f"x_{peer_name}_wall": ratio(r, times, 0), f"x_{peer_name}_cpu": ratio(r, times, 1)})
         report["one_robot"][name] = row
     for name, make in controllers.items():
         report["robot_steps_per_s"][name] = {}
@@ -233,15 +240,17 @@ def main(argv=None) -> None:
             r = [timed.chunk(steps) for _ in range(5)]
             report["robot_steps_per_s"][name][str(n)] = {"wall": round(median(r, 0)), "cpu": round(median(r, 1))}
     report["moving_20"] = {name: moving_case(make) for name, make in controllers.items()}
-    if irsim is not None:
+    for name, irsim in peers.items():
         irsim.close()
-        report["irsim"] = {"version": irsim.info["version"], "beams": irsim.info["beams"],
-                           "steps_per_s_wall": round(median(peer, 0)), "steps_per_s_cpu": round(median(peer, 1))}
+        report[name] = {"version": irsim.info["version"], "beams": irsim.info["beams"],
+                        "steps_per_s_wall": round(median(peer[name], 0)),
+                        "steps_per_s_cpu": round(median(peer[name], 1))}
     if args.json:
         print(json.dumps(report))
         return
     for name, row in report["one_robot"].items():
-        ratios = (f"  {row['x_irsim_wall']}x IR-SIM wall, {row['x_irsim_cpu']}x CPU" if peer else "")
+        ratios = "".join(f"  {row[f'x_{peer_name}_wall']}x {peer_name} wall, {row[f'x_{peer_name}_cpu']}x CPU"
+                         for peer_name in peers)
         print(f"1 robot, {name:12s} {row['steps_per_s_wall']:>10,} steps/s wall {row['steps_per_s_cpu']:>10,} CPU{ratios}")
     for name, rows in report["robot_steps_per_s"].items():
         for n, row in rows.items():
@@ -250,9 +259,11 @@ def main(argv=None) -> None:
         for n, row in rows.items():
             print(f"{n:>5} robots, {name:10s} 20 moving obstacles: {row['moving_steps_per_s_cpu']:>10,} steps/s CPU, "
                   f"static {row['static_steps_per_s_cpu']:>10,}: {row['slowdown']}x slower")
-    print("IR-SIM: unavailable (--irsim-python, IRSIM_PYTHON or --setup-peers)" if irsim is None else
-          f"IR-SIM {report['irsim']['version']} (1 robot, headless): {report['irsim']['steps_per_s_wall']:,} steps/s "
-          f"wall, {report['irsim']['steps_per_s_cpu']:,} CPU")
+    if not peers:
+        print("IR-SIM: unavailable (--irsim-python, IRSIM_PYTHON or --setup-peers)")
+    for name in peers:
+        print(f"{name}: IR-SIM {report[name]['version']} ({report[name]['beams']} beams, 1 robot, headless): "
+              f"{report[name]['steps_per_s_wall']:,} steps/s wall, {report[name]['steps_per_s_cpu']:,} CPU")
     print(json.dumps(report))
 
 

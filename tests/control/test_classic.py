@@ -9,6 +9,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_world
 from fuzzynav.world.scenario import scenario_from_dict
+from tests.control.dead_ends import dead_end
 from tests.world.test_hybrid_astar import bay
 
 CLASSIC = ("dwa", "apf", "vfh", "astar-pp")
@@ -82,3 +83,23 @@ def test_astar_pp_drives_round_where_the_grid_path_cannot_be_driven():
 def test_bad_options_name_the_field(name, option):
     with pytest.raises(InputError, match=option):
         make_controller(name, **{option: -1.0})
+
+
+@pytest.mark.parametrize("width", [1.0, 1.6, 2.2])
+def test_astar_pp_backs_out_of_a_dead_end_it_starts_facing(width):
+    """Facing the closed end of a corridor no forward path leaves: hybrid A* with backward arcs
+    plans the way out, and the car backs along it, then drives to the goal without touching a wall."""
+    scenario = scenario_from_dict(dead_end(width=width))
+    navigator = AStarPurePursuit()
+    trace = run_episode(scenario, navigator, seed=0)
+    assert trace.outcome == "reached" and navigator.planner == "hybrid-A*"
+    assert (navigator.gear < 0).any() and any(label.endswith("-back") for label in trace.behaviour.tolist())
+    assert trace.pose[20, 0] < trace.pose[0, 0]  # backing away from the closed end first
+    assert metrics(trace, scenario)["min_clearance_m"] > 0
+
+
+def test_astar_pp_keeps_forward_plans_where_they_exist():
+    """Where a forward path exists, the plan has no backward leg and the pure-pursuit tracker follows it."""
+    navigator = AStarPurePursuit()
+    navigator.prepare(generate_world("mixed", 0, 0))
+    assert navigator.planner == "hybrid-A*" and navigator.gear is None and navigator.heading is None

@@ -54,3 +54,24 @@ def test_gap_heading_is_the_goal_bearing_when_free_else_the_nearest_free_directi
     assert found and np.deg2rad(3.0) + np.arcsin(0.4) < abs(heading) < np.deg2rad(3.0) + np.arcsin(0.4) + 0.1
     wall = np.full(angles.size, 0.5)
     assert not gaps.gap_heading(wall, angles, 0.0, 0.4, 2.0, np.pi / 2, 0.69)[0]
+
+
+def blocked_by_definition(ranges, angles, clearance, look):
+    """Every direction tested against every hit (the definition :func:`gaps.blocked_directions` scans runs of)."""
+    spread = np.arcsin(np.minimum(1.0, clearance / np.maximum(ranges, 1e-9)))
+    gap = np.abs(np.pi - (np.pi - (angles[:, None] - angles[None, :])) % (2 * np.pi))
+    return ((gap <= spread[None, :]) & (ranges[None, :] < look)).any(axis=1)
+
+
+@pytest.mark.parametrize("field_deg", [180.0, 270.0, 359.0])
+def test_blocked_directions_are_those_of_the_definition_on_random_scans(field_deg):
+    rng = np.random.default_rng(int(field_deg))
+    angles = np.deg2rad(np.linspace(-field_deg / 2, field_deg / 2, 271))
+    mixed = 0
+    for k in range(200):
+        ranges = np.where(rng.random(271) < 0.01 + k / 2000, rng.uniform(0.05, 4.0, 271), 4.0)
+        clearance = rng.uniform(0.2, 0.6)
+        expected = blocked_by_definition(ranges, angles, clearance, 2.0)
+        assert np.array_equal(gaps.blocked_directions(ranges, angles, clearance, 2.0), expected)
+        mixed += expected.any() and not expected.all()
+    assert mixed > 50  # most scans test both answers

@@ -67,6 +67,17 @@ def pop(heap_f, heap_n, size):
 
 
 @jit
+def slot(table, key):
+    """The slot of ``key`` in the open-addressing hash set ``table`` (size a power of two, −1:
+    empty): where it is, else the empty slot where it goes."""
+    mask = table.shape[0] - 1
+    s = (key * 2654435761) & mask
+    while table[s] != key and table[s] >= 0:
+        s = (s + 1) & mask
+    return s
+
+
+@jit
 def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
     """Hybrid A* from the pose ``start`` to within ``reach`` of ``goal`` on the grid
     ``clearance`` (ny, nx) of ``cell`` m whose lower-left corner is the origin; ``heuristic``
@@ -80,9 +91,14 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
     bins, budget, kinds = int(headings), int(budget), len(curvatures)
     primitives_per_node = 2 * kinds if reverse > 0 else kinds
     ny, nx = clearance.shape
-    node_rows, node_cols = int(ny * cell / node_cell) + 1, int(nx * cell / node_cell) + 1
-    best = np.full(node_rows * node_cols * bins, np.inf)
-    closed = np.zeros(node_rows * node_cols * bins, dtype=np.bool_)
+    node_cols = int(nx * cell / node_cell) + 1
+    # the best cost and closed flag of each search node seen, by key, in a hash table sized by the
+    # budget (at most ``budget`` keys), not by the grid: a plan costs what it searches
+    size_table = 1
+    while size_table < 2 * budget:
+        size_table *= 2
+    table = np.full(size_table, -1, np.int64)
+    best, closed = np.full(size_table, np.inf), np.zeros(size_table, dtype=np.bool_)
     xs, ys, ths, gs = np.empty(budget), np.empty(budget), np.empty(budget), np.empty(budget)
     parents, primitives, keys = np.empty(budget, np.int64), np.empty(budget, np.int64), np.empty(budget, np.int64)
     heap_f, heap_n = np.empty(budget), np.empty(budget, np.int64)
@@ -94,9 +110,10 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
     while size > 0:
         node, size = pop(heap_f, heap_n, size)
         if keys[node] >= 0:
-            if closed[keys[node]] or gs[node] > best[keys[node]]:
+            at = slot(table, keys[node])
+            if closed[at] or gs[node] > best[at]:
                 continue
-            closed[keys[node]] = True
+            closed[at] = True
         x, y, theta, g = xs[node], ys[node], ths[node], gs[node]
         if math.hypot(x - goal[0], y - goal[1]) <= reach:
             return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
@@ -127,11 +144,12 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
                     cost += gear
             key = ((int(py / node_cell) * node_cols + int(px / node_cell)) * bins
                    + int(pth / (2.0 * math.pi) * bins) % bins)
-            if closed[key] or g + cost >= best[key]:
+            at = slot(table, key)
+            if closed[at] or g + cost >= best[at]:
                 continue
             if count >= budget:
                 return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], -1
-            best[key] = g + cost
+            table[at], best[at] = key, g + cost
             xs[count], ys[count], ths[count], gs[count] = px, py, pth, g + cost
             parents[count], primitives[count], keys[count] = node, a, key
             size = push(heap_f, heap_n, size, g + cost + h, count)

@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from fuzzynav.jit import jit
 from fuzzynav.kernels.guard import THESIS_ANGLES
 from fuzzynav.kernels.motion import wrap
@@ -27,26 +29,59 @@ INSET = math.radians(5.0)  # how far inside a gap's edge the robot aims
 
 
 @jit
+def within(difference, limit):
+    """|wrap(``difference``)| ≤ ``limit``, the wrap (a float modulo, the costly part) skipped where
+    |``difference``| alone settles it (wrapping moves it by 0 or 2π; 0.1 rad of slack for rounding)."""
+    size = abs(difference)
+    if limit + 0.1 < size < 2.0 * math.pi - limit - 0.1:
+        return False
+    return abs(wrap(difference)) <= limit
+
+
+@jit
 def sector_readings(ranges, angles, half, max_range):
     """(d1, …, d7): the nearest reading within ``half`` of each of the thesis' directions."""
     d = [max_range] * 7
     for j in range(ranges.shape[0]):
         for k in range(7):
-            if abs(wrap(angles[j] - THESIS_ANGLES[k])) <= half + 1e-9 and ranges[j] < d[k]:
+            if within(angles[j] - THESIS_ANGLES[k], half + 1e-9) and ranges[j] < d[k]:
                 d[k] = ranges[j]
     return d[0], d[1], d[2], d[3], d[4], d[5], d[6]
 
 
 @jit
-def blocked(ranges, angles, i, clearance, look):
-    """Is direction ``angles[i]`` within the enlarged bearing of a hit nearer than ``look``?"""
-    for j in range(ranges.shape[0]):
+def covers(angles, i, j, spread):
+    """Is direction ``angles[i]`` within ``spread`` of hit ``j``'s bearing?"""
+    return within(angles[i] - angles[j], spread)
+
+
+@jit
+def blocked_directions(ranges, angles, clearance, look):
+    """(S,) booleans: is each direction within the enlarged bearing asin(``clearance`` / r) of a hit
+    nearer than ``look``? On a scan of ascending ``angles`` the directions a hit blocks are the
+    run round its own bearing and, for a scan wider than 180°, the runs at the scan's two ends
+    (across ±π), so each hit marks those runs only: the scan's cost grows with the hits near the
+    robot and their spread, not with the square of its size."""
+    size = ranges.shape[0]
+    mask = np.zeros(size, dtype=np.bool_)
+    for j in range(size):
         r = ranges[j]
-        if r < look:
-            spread = math.asin(min(1.0, clearance / max(r, 1e-9)))
-            if abs(wrap(angles[i] - angles[j])) <= spread:
-                return True
-    return False
+        if not r < look:
+            continue
+        spread = math.asin(min(1.0, clearance / max(r, 1e-9)))
+        i = j
+        while i >= 0 and covers(angles, i, j, spread):
+            mask[i], i = True, i - 1
+        i = j + 1
+        while i < size and covers(angles, i, j, spread):
+            mask[i], i = True, i + 1
+        i = 0
+        while i < size and covers(angles, i, j, spread):
+            mask[i], i = True, i + 1
+        i = size - 1
+        while i >= 0 and covers(angles, i, j, spread):
+            mask[i], i = True, i - 1
+    return mask
 
 
 @jit
@@ -76,9 +111,10 @@ def gap_heading(ranges, angles, goal_bearing, clearance, look, field, radius):
     to ``goal_bearing`` with obstacles enlarged by ``clearance`` (module docstring) — moved :data:`INSET` inside the gap when that is the gap's
     edge — and the angular width (rad) of its run of free directions; (False, 0, 0) when none is free."""
     low_limit, high_limit = turn_limits(ranges, angles, clearance, look, radius, field)
+    blocked = blocked_directions(ranges, angles, clearance, look)
     best, best_cost = -1, math.inf
     for i in range(angles.shape[0]):
-        if not low_limit <= angles[i] <= high_limit or blocked(ranges, angles, i, clearance, look):
+        if not low_limit <= angles[i] <= high_limit or blocked[i]:
             continue
         cost = abs(wrap(angles[i] - goal_bearing))
         if cost < best_cost:
@@ -86,10 +122,9 @@ def gap_heading(ranges, angles, goal_bearing, clearance, look, field, radius):
     if best < 0:
         return False, 0.0, 0.0
     low = high = best
-    while low > 0 and angles[low - 1] >= low_limit and not blocked(ranges, angles, low - 1, clearance, look):
+    while low > 0 and angles[low - 1] >= low_limit and not blocked[low - 1]:
         low -= 1
-    while high < angles.shape[0] - 1 and angles[high + 1] <= high_limit \
-            and not blocked(ranges, angles, high + 1, clearance, look):
+    while high < angles.shape[0] - 1 and angles[high + 1] <= high_limit and not blocked[high + 1]:
         high += 1
     width = angles[high] - angles[low]
     heading = angles[best]

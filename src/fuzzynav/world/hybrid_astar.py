@@ -1,4 +1,5 @@
-"""Paths a car can drive: hybrid A* on a world's occupancy grid (forward driving only).
+"""Paths a car can drive: hybrid A* on a world's occupancy grid (forward arcs, and backward ones
+when asked).
 
 D. Dolgov, S. Thrun, M. Montemerlo, J. Diebel, *Practical search techniques in path planning
 for autonomous driving*, AAAI workshop on search in AI and robotics, 2008. The map-aware
@@ -19,9 +20,12 @@ reference navigator ``astar-pp`` plans with it once per world.
 5. Heuristic: the cost-to-go of the 2-D grid search with the same radius and clearance cost
    (:func:`fuzzynav.world.planning.cost_to_go`), which knows the obstacles but not the heading
    (Dolgov et al.'s "non-holonomic-without-obstacles" heuristic is not used).
-6. The search (:func:`fuzzynav.kernels.car_search.search`, without its reverse arcs here) stops
-   at the first pose within ``reach`` of the goal, or gives up (None) after
-   ``budget`` nodes.
+6. The search (:func:`fuzzynav.kernels.car_search.search`) stops at the first pose within
+   ``reach`` of the goal, or gives up (None) after ``budget`` nodes.
+7. With ``reverse`` > 0 every arc is also driven backwards, at ``reverse`` times its cost, plus
+   ``gear`` per change of direction (the forward and backward arcs of Reeds & Shepp, Pacific
+   J. Math. 1990), so a path may back out of a dead end; ``reverse`` 0 (the default): forward
+   arcs only.
 
 Everything is deterministic in the world and the parameters.
 """
@@ -67,15 +71,19 @@ class Search:
     switch_cost: float = 0.05
     reach: float = 0.5
     budget: int = 200_000
+    reverse: float = 0.0
+    gear: float = 0.0
 
 
 @dataclass(frozen=True)
 class Plan:
-    """A drivable path: poses ``(m, 3)`` every ``spacing`` metres or less and the curvature
-    ``(m,)`` (1/m) driven from each pose to the next (0 at the last)."""
+    """A drivable path: poses ``(m, 3)`` every ``spacing`` metres or less, the curvature
+    ``(m,)`` (1/m) driven from each pose to the next (0 at the last) and the gear ``(m,)`` that
+    reaches each pose (+1 forward, −1 backward; the first pose's is its next's)."""
 
     poses: np.ndarray
     curvature: np.ndarray
+    gear: np.ndarray
 
 
 def hybrid_astar(world: World, start, goal, car: Car, search: Search = Search(), *,
@@ -90,7 +98,8 @@ def hybrid_astar(world: World, start, goal, car: Car, search: Search = Search(),
     steerings = np.linspace(-car.max_steering, car.max_steering, search.steerings)
     curvatures = np.tan(steerings) / car.wheelbase
     numbers = np.array([car.radius, search.step, search.node_cell, search.headings, search.weight, search.comfort,
-                        search.turn_cost, search.switch_cost, search.reach, search.budget, 0.0, 0.0], dtype=float)
+                        search.turn_cost, search.switch_cost, search.reach, search.budget, search.reverse, search.gear],
+                       dtype=float)
     xs, ys, ths, parents, primitives, end = car_search.search(grid.clearance, cell, heuristic,
                                                     np.asarray(start, dtype=float)[:3],
                                                     np.asarray(goal, dtype=float)[:2], curvatures, numbers)
@@ -101,13 +110,15 @@ def hybrid_astar(world: World, start, goal, car: Car, search: Search = Search(),
         chain.append(int(parents[chain[-1]]))
     chain.reverse()
     pieces = int(math.ceil(search.step / spacing))
-    poses, kappas = [np.array([xs[0], ys[0], ths[0]])], []
+    poses, kappas, gears = [np.array([xs[0], ys[0], ths[0]])], [], []
     for node in chain[1:]:
-        kappa = float(curvatures[primitives[node]])
+        kappa = float(curvatures[primitives[node] % len(curvatures)])
+        gear = -1.0 if primitives[node] >= len(curvatures) else 1.0
         parent = parents[node]
         x, y, th = float(xs[parent]), float(ys[parent]), float(ths[parent])
         for j in range(1, pieces + 1):
-            poses.append(np.array(car_search.arc_point(x, y, th, kappa, search.step * j / pieces)))
+            poses.append(np.array(car_search.arc_point(x, y, th, kappa, gear * search.step * j / pieces)))
             kappas.append(kappa)
+            gears.append(gear)
     kappas.append(0.0)
-    return Plan(np.array(poses), np.array(kappas))
+    return Plan(np.array(poses), np.array(kappas), np.array(gears[:1] + gears if gears else [1.0]))

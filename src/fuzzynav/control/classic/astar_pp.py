@@ -3,12 +3,16 @@ navigator here has. A path the car can drive, planned on the map inflated by the
 A*, Dolgov, Thrun, Montemerlo & Diebel 2008, :func:`fuzzynav.world.hybrid_astar.hybrid_astar`:
 forward arcs at seven steering values, so it respects the turning radius l / tan α_max, with a
 cost for passing closer than ``comfort`` to obstacles), followed with pure pursuit (R. C.
-Coulter, CMU-RI-TR-92-01, 1992).
+Coulter, CMU-RI-TR-92-01, 1992). Where no forward path exists — a start facing the closed end
+of a dead end — hybrid A* plans again with backward arcs too (Reeds & Shepp, Pacific J. Math.
+1990: ``reverse`` times the forward cost, ``gear`` per change of direction), and the tracker
+drives the path's legs in turn, backwards where the path backs up (``reverse_speed``).
 
 The planner runs once per world in :meth:`prepare` (the simulator calls it with the scenario
 before the episode) and is cached per world within the process, so several seeds on one world
 plan once. The planned disc is the body radius plus ``inflation`` (where that closes every way,
-plus 2 cm). When hybrid A* finds no path within its node budget, the grid A* path (Hart,
+plus 2 cm), forward arcs first, then with backward arcs. When hybrid A* finds no path within its
+node budget, the grid A* path (Hart,
 Nilsson & Raphael 1968, :func:`fuzzynav.world.planning.shortest_path`, which ignores the
 heading) is followed instead; :data:`PLANNERS` counts which planner each prepared world got.
 Without either (the start cannot reach the goal on the map inflated by ``inflation``, nor by
@@ -22,6 +26,14 @@ steering up to the aimed point is checked against the map: when the body would c
 ``check_margin`` of an obstacle on it, the nearest steering on a grid of 15 whose arc stays clear
 is taken instead (none: the clearest, at half speed), at a speed of at most 4/s times the arc's
 room (clearance less the radius; 0.5 m/s at least).
+
+A path with backward legs (runs of one gear between cusps) is tracked leg by leg, each to its
+cusp — left for the next leg once within ``CUSP`` of it, or within ``PASSED`` once the robot's
+projection is there — by the Stanley law (S. Thrun et al., *Stanley: the robot that won the DARPA
+Grand Challenge*, J. Field Robotics 2006) with the path's curvature fed forward: α = atan(l κ) +
+gear · (heading error) − atan(k · cross-track offset / (V + 0.1)), at most ``reverse_speed``
+backwards, slowing into a cusp; its arc is checked as above (behind the robot when backing). The
+last leg, forward to the goal, is driven by pure pursuit as a forward path is.
 """
 
 from __future__ import annotations
@@ -38,15 +50,23 @@ from fuzzynav.errors import InputError
 from fuzzynav.world.hybrid_astar import Car, Search, hybrid_astar
 from fuzzynav.world.planning import shortest_path
 
-_PLANS: dict[tuple, tuple[str, np.ndarray | None, np.ndarray | None]] = {}  # key -> (planner, points, curvature)
+_PLANS: dict[tuple, tuple] = {}  # key -> (planner, points, curvature, gear, heading)
 _MAX_PLANS = 64
 PLANNERS: Counter = Counter()  # planner used per prepared world: "hybrid-A*", "grid-A*" (fallback), "none"
 SPACING = 0.05  # m between path points
+CUSP = 0.1  # m: the tracker leaves a leg for the next within this of its end (or at its end, within PASSED)
+PASSED = 0.4
+STANLEY_GAIN = 1.0  # 1/s: the cross-track gain of the Stanley law on paths with backward legs
+BACKING = {"reverse": 2.0, "gear": 5.0}  # hybrid A*'s backward arcs, when no forward path exists: few cusps
+BACKING_ROOM = 0.1  # m more room tried first with backward arcs (the legs are tracked less closely)
+BACKING_LOCK = 0.8  # share of the steering limit planned with backward arcs (the tracker keeps the rest)
 
 
 def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
-    """(planner, path points ``(m, 2)``, curvature ``(m,)``) on ``scenario`` (cached per world and
-    parameters within the process); the points are None without a path."""
+    """(planner, path points ``(m, 2)``, curvature ``(m,)``, gear ``(m,)`` and heading ``(m,)``,
+    the last two None unless the path has backward legs (gear +1 forward, −1 backward)) on
+    ``scenario`` (cached per world and parameters within the process); the points are None
+    without a path."""
     key = (json.dumps(scenario.to_dict(), sort_keys=True), body, inflation, search, hybrid)
     if key not in _PLANS:
         if len(_PLANS) >= _MAX_PLANS:
@@ -56,23 +76,33 @@ def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
 
 
 def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bool = True):
-    """Uncached (planner, points, curvature) of :func:`_plan`: hybrid A* (unless ``hybrid`` is
-    False), else grid A*; each on the map inflated by the body + ``inflation``, then by the body + 2 cm."""
+    """Uncached (planner, points, curvature, gear, heading) of :func:`_plan`: hybrid A* (unless ``hybrid``
+    is False) with forward arcs, then with backward arcs too, else grid A*; each on the map
+    inflated by the body + ``inflation``, then by the body + 2 cm (with backward arcs, first by
+    ``BACKING_ROOM`` more, and planned at ``BACKING_LOCK`` of the steering limit)."""
     goal = scenario.goal.position
     reach = Search(**{**search.__dict__, "reach": min(search.reach, scenario.goal.tolerance)})
     radii = (body.radius + inflation, body.radius + 0.02)
-    for radius in radii if hybrid else ():
-        plan = hybrid_astar(scenario.world, scenario.start, goal, Car(radius, body.wheelbase, body.max_steering), reach)
+    backing = Search(**{**reach.__dict__, **BACKING})
+    tries = [(reach, radius, body.max_steering) for radius in radii]
+    tries += [(backing, radius, BACKING_LOCK * body.max_steering) for radius in (radii[0] + BACKING_ROOM, *radii)]
+    for setting, radius, lock in tries if hybrid else ():
+        plan = hybrid_astar(scenario.world, scenario.start, goal, Car(radius, body.wheelbase, lock), setting)
         if plan is not None:
             tail = _densify(np.array([plan.poses[-1, :2], goal]), SPACING)[1:]  # on to the goal itself
-            return "hybrid-A*", np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
+            points, curvature = np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
+            if (plan.gear > 0).all():
+                return "hybrid-A*", points, curvature, None, None
+            last = math.atan2(*(goal - plan.poses[-1, :2])[::-1])
+            return ("hybrid-A*", points, curvature, np.append(plan.gear, np.ones(len(tail))),
+                    np.append(plan.poses[:, 2], np.full(len(tail), last)))
     for radius in radii:
         path = shortest_path(scenario.world, scenario.start, goal, radius, weight=search.weight,
                              comfort=search.comfort)
         if path is not None:
             points = _densify(path, SPACING)
-            return "grid-A*", points, np.zeros(len(points))
-    return "none", None, None
+            return "grid-A*", points, np.zeros(len(points)), None, None
+    return "none", None, None, None, None
 
 
 def _densify(path: np.ndarray, step: float) -> np.ndarray:
@@ -88,7 +118,8 @@ class AStarPurePursuit(Controller):
     """Map-aware hybrid A* + pure pursuit (module docstring). Options: robot ``radius``/
     ``wheelbase``/``max_steering``/``max_speed``, ``inflation``, ``comfort`` (m), ``weight``
     (clearance cost), ``lookahead`` (m), ``lateral`` (m/s², speed in bends), ``check_margin`` (m),
-    ``planner`` (``"hybrid"``, or ``"grid"``: grid A* only, to measure what hybrid A* adds)."""
+    ``reverse_speed`` (m/s, on backward legs), ``planner`` (``"hybrid"``, or ``"grid"``: grid A*
+    only, to measure what hybrid A* adds)."""
 
     name = "astar-pp"
     map_aware = True
@@ -96,7 +127,8 @@ class AStarPurePursuit(Controller):
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  inflation: float = 0.05, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 0.6,
-                 lateral: float = 2.0, check_margin: float = 0.03, planner: str = "hybrid"):
+                 lateral: float = 2.0, check_margin: float = 0.03, reverse_speed: float = 0.5,
+                 planner: str = "hybrid"):
         if planner not in ("hybrid", "grid"):
             raise InputError(f"must be hybrid or grid, got {planner!r}", field="planner")
         self.body = Body(radius, wheelbase, max_steering, max_speed)
@@ -104,28 +136,42 @@ class AStarPurePursuit(Controller):
         self.search = Search(weight=float(weight), comfort=float(comfort))
         self.lookahead, self.lateral = positive(lookahead, "lookahead"), positive(lateral, "lateral")
         self.check_margin = float(check_margin)
+        self.reverse_speed = positive(reverse_speed, "reverse_speed")
         self.hybrid = planner == "hybrid"
         self.steering = np.linspace(-max_steering, max_steering, 15)
         self.world = None
-        self.planner, self.path, self.curvature = "none", None, None
-        self._index = 0
+        self.planner, self.path, self.curvature, self.gear, self.heading = "none", None, None, None, None
+        self._index = self._end = 0
 
     def prepare(self, scenario) -> None:
         """Plan on ``scenario``'s map (goal tasks; other tasks are not planned for)."""
         self.world = scenario.world
-        self.planner, self.path, self.curvature = "none", None, None
+        self.planner, self.path, self.curvature, self.gear, self.heading = "none", None, None, None, None
         if scenario.goal is not None:
-            self.planner, self.path, self.curvature = _plan(scenario, self.body, self.inflation, self.search, self.hybrid)
+            self.planner, self.path, self.curvature, self.gear, self.heading = _plan(
+                scenario, self.body, self.inflation, self.search, self.hybrid)
             PLANNERS[self.planner] += 1
-        self._index = 0
+        self.reset()
 
     def reset(self, rng=None) -> None:
         self._index = 0
+        self._end = self._leg_end(0)
+
+    def _leg_end(self, start: int) -> int:
+        """The last index of the leg (a run of one gear) that goes on from path index ``start``."""
+        if self.gear is None:
+            return 0
+        changes = np.flatnonzero(self.gear[start + 1:] != self.gear[start + 1 if start + 1 < len(self.gear) else start])
+        return start + int(changes[0]) if len(changes) else len(self.gear) - 1
 
     def act(self, obs) -> Command:
         if self.path is None:
             return Command(0.0, 0.0, "A*-no-path")
         xy = np.asarray(obs.pose[:2], dtype=float)
+        if self.heading is not None:
+            self._next_leg(xy)
+            if self._end < len(self.path) - 1 or self.gear[min(self._index + 1, self._end)] < 0:
+                return self._legs(obs, xy)  # any leg but a last forward one, which pure pursuit drives
         ahead = self.path[self._index:self._index + 40]
         self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
         aim = min(self._index + int(round(self.lookahead / SPACING)), len(self.path) - 1)
@@ -136,11 +182,40 @@ class AStarPurePursuit(Controller):
         speed = min(self.body.max_speed * max(math.cos(bearing), 0.25), math.sqrt(self.lateral / max(bend, 1e-6)))
         return self._checked(obs.pose, steering, speed, math.hypot(dx, dy))
 
-    def _checked(self, pose, steering: float, speed: float, length: float) -> Command:
-        """The command with its arc up to ``length`` metres checked against the map (module docstring)."""
+    def _next_leg(self, xy) -> None:
+        """At the cusp ending the present leg (module docstring): on to the next leg."""
+        to_cusp = math.hypot(*(self.path[self._end] - xy))
+        if self._end < len(self.path) - 1 and (to_cusp < CUSP or (self._index >= self._end - 1 and to_cusp < PASSED)):
+            self._index, self._end = self._end, self._leg_end(self._end)
+
+    def _legs(self, obs, xy) -> Command:
+        """A leg of a path with backward legs, tracked by the Stanley law (module docstring)."""
+        to_cusp = math.hypot(*(self.path[self._end] - xy))
+        ahead = self.path[self._index:min(self._index + 40, self._end + 1)]
+        self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
+        i = self._index
+        gear = self.gear[min(i + 1, self._end)]
+        psi, theta = float(self.heading[i]), float(obs.pose[2])
+        offset = (xy[1] - self.path[i, 1]) * math.cos(psi) - (xy[0] - self.path[i, 0]) * math.sin(psi)  # left +
+        speed = self.reverse_speed if gear < 0 else self.body.max_speed
+        speed = min(speed, math.sqrt(self.lateral / max(abs(float(self.curvature[i])), 1e-6)))
+        if self._end < len(self.path) - 1:  # slow down into a cusp
+            speed = min(speed, max(0.2, 2.0 * to_cusp))
+        turn = math.remainder(psi - theta, math.tau)
+        steering = (math.atan(self.body.wheelbase * float(self.curvature[i])) + gear * turn
+                    - math.atan(STANLEY_GAIN * offset / (speed + 0.1)))
+        steering = min(max(steering, -self.body.max_steering), self.body.max_steering)
+        command = self._checked(obs.pose, steering, speed, max(speed, 0.3), backwards=gear < 0)
+        if gear < 0:
+            return Command(command.steering, -command.speed, command.behaviour + "-back")
+        return command
+
+    def _checked(self, pose, steering: float, speed: float, length: float, backwards: bool = False) -> Command:
+        """The command with its arc up to ``length`` metres (behind the robot when ``backwards``)
+        checked against the map (module docstring)."""
         candidates = np.concatenate([[steering], self.steering])
         order = np.argsort(np.abs(candidates - steering), kind="stable")
-        lengths = np.linspace(0.1, 1.0, 10) * max(length, 0.3)
+        lengths = np.linspace(0.1, 1.0, 10) * max(length, 0.3) * (-1.0 if backwards else 1.0)
         local = arcs(np.tan(candidates) / self.body.wheelbase, lengths)  # (A, K, 2) robot frame
         c, s = math.cos(float(pose[2])), math.sin(float(pose[2]))
         world = np.stack([pose[0] + c * local[..., 0] - s * local[..., 1],

@@ -1,0 +1,119 @@
+"""Per-step cost split of the default navigator ``fuzzy-5b``, one robot and batched.
+
+``fuzzy-5b`` runs inside the simulator's compiled step, so its parts are timed by building it up
+one layer at a time and timing each build in the same run, chunks interleaved (so every build
+sees the same machine load): the simulator with the 271-beam lidar under a constant command
+(``sim+lidar``), then the inner navigator ``fuzzy-5b-gap`` (sector readings, gap finding, the
+five behaviours, the hit memory: ``navigator``), then the recovery and loop-escape layers with
+their obstacle-point memory (``layers``), then the route guidance on the grid route alone
+(``grid route``), then the whole ``fuzzy-5b`` with the car route by hybrid A* (``car route``).
+Each part's cost is the difference of two builds' mean time per running robot-step (µs); the
+builds drive differently from the layer they add on, so the split is a good estimate, not an
+exact account. World: ``benchmarks/sim_core.py``'s 15 mixed obstacles, goal (19, 19); an episode
+that ends starts again. Run:
+
+    python benchmarks/navigator_profile.py [--robots 1 64 1024] [--steps 400] [--json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent))
+
+from sim_core import COMMAND, start_poses, world_of_15  # noqa: E402
+
+from fuzzynav.control.batched import ConstantCommand  # noqa: E402
+from fuzzynav.control.five_behaviours import FiveBehaviourNavigator  # noqa: E402
+from fuzzynav.control.robust import RobustNavigator  # noqa: E402
+from fuzzynav.control.through_gaps import GUIDANCE, fuzzy_5b_gap_robust  # noqa: E402
+from fuzzynav.robot.sensors import named_ring  # noqa: E402
+from fuzzynav.sim import BatchSimulator  # noqa: E402
+
+CHUNKS = 5
+
+
+def builds() -> dict:
+    """The builds of ``fuzzy-5b``, each adding one part to the one before (module docstring)."""
+    def layers_only():
+        return RobustNavigator(FiveBehaviourNavigator(gap=True), "fuzzy-5b-layers")
+
+    return {
+        "sim+lidar": lambda: ConstantCommand(COMMAND[1], COMMAND[0]),
+        "navigator": lambda: FiveBehaviourNavigator(gap=True),
+        "layers": layers_only,
+        "grid route": lambda: fuzzy_5b_gap_robust(guidance={**GUIDANCE, "guide_car": 0.0}),
+        "car route": fuzzy_5b_gap_robust,
+    }
+
+
+class Run:
+    """One build driving ``n`` robots, timed in chunks of running-robot steps."""
+
+    def __init__(self, controller, n: int):
+        import numpy as np
+
+        scenario = world_of_15()
+        starts = start_poses(scenario, n, clearance=3.0 if n == 1 else 0.5)
+        self.sim = BatchSimulator(scenario, controller, starts=starts, record=False, sensors=named_ring("lidar"))
+        self.np = np
+        for _ in range(3):
+            self.sim.step()
+
+    def chunk(self, steps: int) -> float:
+        """Mean seconds of wall clock per running robot-step over ``steps`` steps."""
+        import time
+
+        sim, done, wall = self.sim, 0, 0.0
+        for _ in range(steps):
+            if sim.done:
+                sim.reset()
+            running = int(self.np.count_nonzero(sim.active)) if sim.n > 1 else 1
+            w0 = time.perf_counter()
+            sim.step()
+            wall += time.perf_counter() - w0
+            done += running
+        return wall / max(done, 1)
+
+
+def profile(n: int, steps: int) -> dict:
+    """µs per running robot-step of each build and each part (the difference to the build before)."""
+    runs = {name: Run(make(), n) for name, make in builds().items()}
+    times = {name: [] for name in runs}
+    for _ in range(CHUNKS):
+        for name, run in runs.items():
+            times[name].append(run.chunk(steps))
+    total = {name: statistics.median(t) * 1e6 for name, t in times.items()}
+    names, parts = list(total), {}
+    for before, name in zip([None, *names], names):
+        parts[name] = total[name] - (total[before] if before else 0.0)
+    return {"us_per_robot_step": {k: round(v, 1) for k, v in total.items()},
+            "part_us": {k: round(v, 1) for k, v in parts.items()},
+            "part_share": {k: round(v / total[names[-1]], 3) for k, v in parts.items()}}
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--robots", type=int, nargs="+", default=[1, 64, 1024])
+    parser.add_argument("--steps", type=int, default=400, help="steps per timed chunk (one robot; batches: /n·64)")
+    parser.add_argument("--json", action="store_true", help="print only one JSON object")
+    args = parser.parse_args(argv)
+    report = {"benchmark": "navigator_profile", "controller": "fuzzy-5b", "chunks": CHUNKS, "robots": {}}
+    for n in args.robots:
+        steps = args.steps if n == 1 else max(5, args.steps * 64 // (n * 4))
+        report["robots"][str(n)] = {"steps_per_chunk": steps, **profile(n, steps)}
+    if not args.json:
+        for n, row in report["robots"].items():
+            print(f"{n} robot(s), {row['steps_per_chunk']} steps a chunk:")
+            for name, us in row["part_us"].items():
+                print(f"  {name:12s} {us:>10.1f} µs/robot-step  {100 * row['part_share'][name]:5.1f} %   "
+                      f"(build total {row['us_per_robot_step'][name]:.1f})")
+    print(json.dumps(report))
+
+
+if __name__ == "__main__":
+    main()
