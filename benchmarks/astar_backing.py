@@ -1,5 +1,5 @@
 """``astar-pp`` on dead-end starts: corridors whose start faces the closed end, so the way out
-begins backwards (``tests/control/dead_ends.py``: width 1.0–2.4 m, depth 4–9 m, any orientation).
+begins backwards (:mod:`fuzzynav.world.dead_ends`: width 1.0–2.4 m, depth 4–9 m, any orientation).
 Reports outcomes, the planner used and the median time to the goal. Run:
 
     python benchmarks/astar_backing.py [--n 40] [--seed 0] [--json]
@@ -10,15 +10,11 @@ from __future__ import annotations
 import argparse
 import json
 import statistics
-import sys
 from collections import Counter
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
-from fuzzynav.catalog.controllers import make_controller  # noqa: E402
-from fuzzynav.sim import metrics, run_episode  # noqa: E402
-from tests.control.dead_ends import dead_ends  # noqa: E402
+from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.world.dead_ends import dead_ends
 
 
 def main(argv=None) -> None:

@@ -7,9 +7,9 @@ from fuzzynav.catalog.controllers import available, make_controller
 from fuzzynav.control.classic.astar_pp import PLANNERS, AStarPurePursuit
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.world.dead_ends import dead_end
 from fuzzynav.world.generate import generate_world
 from fuzzynav.world.scenario import scenario_from_dict
-from tests.control.dead_ends import dead_end
 from tests.world.test_hybrid_astar import bay
 
 CLASSIC = ("dwa", "apf", "vfh", "astar-pp")

@@ -1,6 +1,7 @@
-"""Dead-end corridors whose start faces the closed end (the robot must back out): for the
-closed-loop test of ``astar-pp`` backing out (tests/control/test_classic.py) and its benchmark
-(``benchmarks/astar_backing.py``)."""
+"""Dead-end corridors whose start faces the closed end (the robot must back out): the worlds on
+which ``astar-pp`` shows it backs out (its closed-loop test and ``benchmarks/astar_backing.py``)."""
+
+from __future__ import annotations
 
 import math
 
