@@ -39,17 +39,15 @@ from fuzzynav import progress
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedAvoidanceNavigator
-from fuzzynav.experiments import evaluation
+from fuzzynav.experiments import chapter6_worlds as worlds, evaluation
 from fuzzynav.learn.checkpoint import load_checkpoint
-from fuzzynav.learn.envs import FixedGoal, RandomGoal, RandomObstacles
+from fuzzynav.learn.envs import RandomObstacles
 from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
 from fuzzynav.learn.tasks.common import TrainRequest
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.curves import plot_learning_curve
 from fuzzynav.viz.trajectories import draw_world, plot_trajectory, save_figure
-from fuzzynav.world.scenario import Goal, Scenario, load_scenario
-from fuzzynav.world.shapes import Wall
-from fuzzynav.world.world import World
+from fuzzynav.world.scenario import load_scenario
 
 TABLE_VI_1_EPISODES = 10_000  # the thesis' 8,950 plus a hold of 500 reachable
 EARLY_EPISODES = (1, 20)  # Figs VI.18–VI.19
@@ -105,22 +103,6 @@ def _figure(curves: dict, converged: dict, controller, starts, title: str, out_d
             "trajectories": outcomes, "curve": _curve_ends(curves)}
 
 
-def _goal_scenarios(seed: int, n: int = 4, layout=None):
-    layout = layout or RandomGoal()
-    rng = np.random.default_rng(seed + 1000)
-    scenarios = []
-    for k in range(n):
-        world, start, goal = layout.sample(rng, 1)
-        scenarios.append(evaluation.scenario_of(world, start[0], goal[0], f"start {k + 1}", 60.0))
-    return scenarios
-
-
-def _fixed_scenario():
-    layout = FixedGoal()
-    world, start, goal = layout.sample(None, 1)
-    return [evaluation.scenario_of(world, start[0], goal[0], "fixed start", 60.0)]
-
-
 # -- tabular Q-learning (§VI.2) ----------------------------------------------------------------
 def _q_run(out_dir, name, episodes, seed, n_states=13, n_actions=3, fixed=False):
     """Tabular Q-learning under the thesis' protocol (one robot, episodes one by one)."""
@@ -137,14 +119,14 @@ def _q_run(out_dir, name, episodes, seed, n_states=13, n_actions=3, fixed=False)
 def fig_vi_1(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.1–VI.2: tabular Q-learning, fixed start (thesis: converges from episode ~1000)."""
     request, controller, result = _q_run(out_dir, "q-goal-fixed", 500 if quick else 1500, seed, fixed=True)
-    return _figure(_curves(request, ["steering"]), {"steering": result}, controller, _fixed_scenario(),
+    return _figure(_curves(request, ["steering"]), {"steering": result}, controller, worlds.fixed_scenario(),
                    "Q-learning, fixed start", out_dir, "fig-VI-1.png")
 
 
 def fig_vi_4(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.3–VI.4: tabular Q-learning, random starts and goals (thesis: ~3,500 episodes)."""
     request, controller, result = _q_run(out_dir, "q-goal", 600 if quick else 3000, seed)
-    numbers = _figure(_curves(request, ["steering"]), {"steering": result}, controller, _goal_scenarios(seed),
+    numbers = _figure(_curves(request, ["steering"]), {"steering": result}, controller, worlds.goal_scenarios(seed),
                       "Q-learning, random starts", out_dir, "fig-VI-4.png")
     return {**numbers, "evaluation": evaluation.evaluate_goal(controller, 20 if quick else EVALUATION_RUNS)}
 
@@ -217,7 +199,7 @@ def fig_vi_8(out_dir, quick=False, seed=0) -> dict:
     faster than tabular Q-learning from the same start, Fig VI.1)."""
     task = replace(fql_goal.GOAL_TASKS["fql-goal"], fixed=True, learn_speed=False)
     numbers = _fql_goal(out_dir, task, quick, 200 if quick else 1000, seed, "FQL 15 rules, fixed start",
-                        "fig-VI-8.png", _fixed_scenario())
+                        "fig-VI-8.png", worlds.fixed_scenario())
     _, _, tabular = _q_run(out_dir, "q-goal-fixed", 500 if quick else 1500, seed, fixed=True)
     return {**numbers, "q_learning": tabular}
 
@@ -226,7 +208,7 @@ def fig_vi_9(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.9–VI.10: FQL, 15 rules × 3, random starts, steering then speed (thesis: ~3,000 /
     ~900; the robot "s'arrête lorsqu'il atteint la cible")."""
     return _fql_goal(out_dir, fql_goal.GOAL_TASKS["fql-goal"], quick, 400 if quick else None, seed, "FQL 15 rules",
-                     "fig-VI-9.png", _goal_scenarios(seed))
+                     "fig-VI-9.png", worlds.goal_scenarios(seed))
 
 
 def fig_vi_13(out_dir, quick=False, seed=0) -> dict:
@@ -234,7 +216,7 @@ def fig_vi_13(out_dir, quick=False, seed=0) -> dict:
     slower than the 15 rules)."""
     task = fql_goal.GOAL_TASKS["fql-goal-35"]
     numbers = _fql_goal(out_dir, task, quick, 400 if quick else None, seed, "FQL 35 rules", "fig-VI-13.png",
-                        _goal_scenarios(seed))
+                        worlds.goal_scenarios(seed))
     small = fql_goal.GOAL_TASKS["fql-goal"]
     return {**numbers, "rules_15": _steering_converged(out_dir, small, _steering_budget(small, quick, 400), seed)}
 
@@ -243,7 +225,7 @@ def fig_vi_16(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.15–VI.16: FQL 15 rules × 3 with eligibility traces (thesis: ~1,400 episodes,
     faster than FQL without, Fig VI.10)."""
     numbers = _fql_goal(out_dir, fql_goal.GOAL_TASKS["fql-goal-traces"], quick, 300 if quick else None, seed,
-                        "FQL with eligibility traces", "fig-VI-16.png", _goal_scenarios(seed))
+                        "FQL with eligibility traces", "fig-VI-16.png", worlds.goal_scenarios(seed))
     plain = fql_goal.GOAL_TASKS["fql-goal"]
     return {**numbers, "no_traces": _steering_converged(out_dir, plain, _steering_budget(plain, quick, 400), seed)}
 
@@ -306,14 +288,6 @@ def initial_avoider(prior: str = "none") -> LearnedAvoidanceNavigator:
     return LearnedAvoidanceNavigator(system, constant_speed=fql_avoid.AVOID_SPEED, name=f"fql-avoid initial ({prior})")
 
 
-def wall_to_goal_scenario() -> Scenario:
-    """Fig VI.21: a closed room whose goal lies behind a long wall with a return (an L): the
-    avoider reaches it only by following the wall."""
-    walls = (Wall((3.0, 11.0), (15.0, 11.0), 0.3), Wall((15.0, 11.0), (15.0, 7.0), 0.3))
-    return Scenario(name="fig-VI-21", world=World(20.0, 20.0, walls), start=np.array([9.0, 4.0, np.pi / 2]),
-                    goal=Goal(np.array([9.0, 16.0]), common.GOAL_TOLERANCE), max_time=90.0)
-
-
 def _training_panel(ax, path, episode: int, outcome: str) -> None:
     scenario = evaluation.scenario_of(path["world"], path["start"], path["goal"], f"episode {episode}", 60.0)
     draw_world(ax, scenario)
@@ -338,7 +312,7 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
     training_figure = _save(figure, out_dir, "fig-VI-18-19.png")
     window = common.convergence_window(common.WORLD_CONVERGENCE, common.THESIS["robots"])[0]
     numbers = _figure(_curves(request, ["steering", "speed"]), summary, controller,
-                      _goal_scenarios(seed, 3, layout=RandomObstacles()) + [wall_to_goal_scenario()],
+                      worlds.goal_scenarios(seed, 3, layout=RandomObstacles()) + [worlds.wall_to_goal_scenario()],
                       "FQL obstacle avoidance", out_dir, "fig-VI-22.png", obstacles=True, window=window)
     model = json.loads(Path(request.out).read_text())
     return {**numbers, "training_figure": training_figure, "wall_following": numbers["trajectories"][-1],
@@ -349,26 +323,13 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
             "initial_table": evaluation.evaluate_avoid(initial_avoider(), runs)}
 
 
-def blocked_scenario(seed: int, tries: int = 200) -> Scenario:
-    """A random obstacle world (the training layout, seeded) whose straight route from start to
-    goal is blocked: the segment passes within the robot's radius + 0.3 m of an obstacle, so both
-    navigators of Figs VI.23–VI.24 must avoid."""
-    rng = np.random.default_rng(seed + 2000)
-    for k in range(tries):
-        world, start, goal = RandomObstacles().sample(rng, 1)
-        line = start[0, :2] + np.linspace(0.0, 1.0, 200)[:, None] * (goal[0] - start[0, :2])
-        if world.clearance(line).min() < 0.3 + 0.3:
-            return evaluation.scenario_of(world, start[0], goal[0], f"blocked world {k}", 60.0)
-    raise RuntimeError(f"no blocked world in {tries} draws")  # pragma: no cover - the layout is cluttered
-
-
 def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
     """Figs VI.23–VI.24: the chapter IV fuzzy navigator (fuzzy-2b-thesis) and the FQL navigator
     learned from q = 0 on the same world, one whose straight route is blocked, and both over
     the same random worlds."""
     _, learned, _, _ = _avoid_model(out_dir, quick, seed)
     fuzzy = make_controller("fuzzy-2b-thesis")
-    scenario = blocked_scenario(seed)
+    scenario = worlds.blocked_scenario(seed)
     figure = Figure(figsize=(11, 5.5), layout="constrained")
     numbers = {}
     for ax, (name, controller) in zip(figure.subplots(1, 2), (("fuzzy-2b-thesis, hand-made (Fig VI.23)", fuzzy),
@@ -382,16 +343,6 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
 
 
 # -- wall following (§VI.5.3) ------------------------------------------------------------------
-def second_corner() -> Scenario:
-    """The second sharp corner of Fig VI.28 (b): the wall of ``fig-VI-28`` turning at nearly a
-    right angle towards the robot, the goal beyond the corner along the wall's return (reached
-    only by following it round; the hand-made follower of Table VI.2 hits it)."""
-    base = load_scenario("fig-VI-28")
-    walls = (Wall((2.0, 10.0), (14.0, 10.0), 0.3), Wall((14.0, 10.0), (14.5, 3.0), 0.3))
-    return replace(base, name="fig-VI-28b", world=World(20.0, 20.0, walls),
-                   goal=Goal(np.array([13.0, 3.0]), 0.5))
-
-
 def _corner_outcomes(controller, corners) -> dict:
     return {scenario.name: run_episode(scenario, controller).outcome for scenario in corners}
 
@@ -404,7 +355,7 @@ def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
     request = _request(out_dir, "fql-wall", 300 if quick else None, seed)
     fql_wall.train_fql_wall(request)
     learned, handmade = load_controller(request.out), make_controller("wall-follow")
-    corners = (load_scenario("fig-VI-28"), second_corner())
+    corners = (load_scenario("fig-VI-28"), worlds.second_corner())
     course = evaluation.wall_course_scenario(np.random.default_rng(seed + 1000), "wall course")
     figure = Figure(figsize=(16, 11), layout="constrained")
     axes = figure.subplots(2, 3)
