@@ -3,6 +3,8 @@ never another exception, and nothing non-finite ever reaches the robot's pose.""
 
 from __future__ import annotations
 
+import contextlib
+
 import gymnasium
 import numpy as np
 from hypothesis import HealthCheck, given, settings, strategies as st
@@ -29,10 +31,8 @@ VALUES = st.one_of(ANY_ARRAY, st.floats(), st.integers(-10**20, 10**20), st.text
 def test_any_action_is_used_or_refused(action, discrete):
     env = DISCRETE if discrete else ENV
     env.reset(seed=0)
-    try:
+    with contextlib.suppress(InputError):  # refused is fine; what is used must leave the pose finite
         env.step(action)
-    except InputError:
-        pass
     assert np.isfinite(env.unwrapped.episodes.batch.pose).all()
 
 
