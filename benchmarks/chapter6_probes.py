@@ -1,0 +1,109 @@
+"""Probes of chapter VI's learned controllers: which rule causes the collisions, and how far the
+wall follower's interpretations can go (thesis §VI.5.2, §VI.5.3.2; docs/results/chapter-vi.md).
+
+``avoid-rules MODEL``: an ``fql-avoid`` model learned from q = 0, evaluated on the 100 held-out
+obstacle worlds (:func:`fuzzynav.experiments.evaluation.evaluate_avoid`) as learned, then once per
+rule whose steering differs from the a-priori table (:func:`fuzzynav.learn.tasks.fql_avoid.avoid_prior`)
+with that one rule given its a-priori conclusion — the rules whose learned turn costs collisions.
+
+``wall-bound rays|modules``: the best per-rule interpretations of Table VI.2's follower (the
+learner's candidates, :func:`fuzzynav.learn.tasks.fql_wall.wall_parts`: steering value − 10°,
+value, + 10°; speed × 0.7, 1, 1.3) that a coordinate descent finds *on the evaluation courses
+themselves* (:func:`fuzzynav.experiments.evaluation.evaluate_wall`'s 100 courses, seed 777),
+starting from the hand-made choice: an optimistic bound of what any learner choosing among the
+same interpretations, reading the same distances, can reach on those courses. Prints one line
+per tried variable, then the best table as JSON.
+
+    python benchmarks/chapter6_probes.py avoid-rules avoid-4.json
+    python benchmarks/chapter6_probes.py wall-bound rays --sweeps 2
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+
+import numpy as np
+
+from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.control.learned import LearnedWallFollower
+from fuzzynav.experiments.evaluation import evaluate_avoid, wall_course_scenario
+from fuzzynav.learn.extraction import rule_table
+from fuzzynav.learn.tasks.common import STEERING3
+from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
+from fuzzynav.learn.tasks.fql_wall import wall_parts
+from fuzzynav.sim import BatchSimulator
+from fuzzynav.storage import save_document
+
+RUNS = 100
+
+
+def avoid_rules(model: str, scratch: str) -> None:
+    """Collisions of ``model`` as learned, then with each differing rule set to its prior."""
+    document = json.loads(open(model).read())
+    labels = list(STEERING3)
+    print("as learned", evaluate_avoid(load_controller(model), RUNS))
+    for r, prior in enumerate(avoid_prior()[:free_rules()[0]]):
+        rule = document["rules"][r]
+        learned = re.search(r"alpha IS (\w+)", rule).group(1)
+        if learned == labels[prior]:
+            continue
+        patched = {**document, "rules": list(document["rules"])}
+        patched["rules"][r] = rule.replace(f"alpha IS {learned}", f"alpha IS {labels[prior]}")
+        save_document(scratch, patched)
+        print(f"rule {r} ({rule.split(' THEN')[0][3:]}): {learned} -> {labels[prior]}",
+              evaluate_avoid(load_controller(scratch), RUNS), flush=True)
+
+
+def wall_bound(sensing: str, sweeps: int) -> dict:
+    """Coordinate descent of the per-rule interpretations on the 100 evaluation courses."""
+    handmade, _, alpha, speed = wall_parts()
+    rng = np.random.default_rng(777)
+    courses = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+
+    def collisions(choice):
+        system = rule_table(handmade, [("alpha", alpha, choice[0]), ("v", speed, choice[1])], name="probe",
+                            description="interpretation probe")
+        controller = LearnedWallFollower(system, sensing)
+        return sum(BatchSimulator(s, controller, record=False).run().outcomes()[0] == "collision" for s in courses)
+
+    rules = alpha.shape[0]
+    choice = [np.ones(rules, dtype=int), np.ones(rules, dtype=int)]  # the hand-made value of every label
+    best = start = collisions(choice)
+    for sweep in range(sweeps):
+        improved = False
+        for output in (0, 1):
+            for r in range(rules):
+                keep = choice[output][r]
+                for j in {0, 1, 2} - {keep}:
+                    choice[output][r] = j
+                    count = collisions(choice)
+                    if count < best:
+                        best, keep, improved = count, j, True
+                choice[output][r] = keep
+                print(f"sweep {sweep} output {output} rule {r}: {best} collisions", flush=True)
+        if not improved:
+            break
+    return {"sensing": sensing, "hand-made": int(start), "best": int(best),
+            "alpha": choice[0].tolist(), "v": choice[1].tolist()}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="probe", required=True)
+    avoid = sub.add_parser("avoid-rules")
+    avoid.add_argument("model")
+    avoid.add_argument("--scratch", default="avoid-probe.json", help="patched model file (overwritten)")
+    wall = sub.add_parser("wall-bound")
+    wall.add_argument("sensing", choices=("rays", "modules"))
+    wall.add_argument("--sweeps", type=int, default=2)
+    args = parser.parse_args()
+    if args.probe == "avoid-rules":
+        avoid_rules(args.model, args.scratch)
+    else:
+        print(json.dumps(wall_bound(args.sensing, args.sweeps)))
+
+
+if __name__ == "__main__":
+    main()
