@@ -42,6 +42,7 @@ def test_worlds_have_dynabarns_set_up():
             on_border = (np.abs(ends[:, 1]) >= inner - 1e-6) | (np.abs(ends[:, 0]) >= inner - 1e-6)
             assert on_border.all(), (scenario.name, ends)
             assert np.allclose(track[1:], track[:0:-1])  # the way back is the way out, reversed
+            assert np.hypot(*(track[0] - dynabarn.GOAL)) >= 1.5  # the goal is never covered at t = 0
         assert generate_world("dynabarn", 3, worlds.index(scenario)).to_dict() == scenario.to_dict()
     assert counts <= set(range(2, 6)) and len(counts) > 1
 

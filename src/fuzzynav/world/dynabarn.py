@@ -22,7 +22,8 @@ recipe, written anew from the generator's description (docs/dynamic.md):
 
 Coordinates: the world is the arena's inside, x from the back wall's face (−9.75) to 1 m beyond
 the start, y between the side walls' faces (±9.75), its lower-left corner the origin; the walls
-are the world's border. Centres of the cylinders stay 0.5 m inside the walls.
+are the world's border. Centres of the cylinders stay 0.5 m inside the walls, and no track
+starts within 1.5 m of the goal (a scenario's goal may not lie inside an obstacle at t = 0).
 
 :data:`REFERENCE` is the BARN score's reference of every world: the true optimal path, 20 m
 (the straight line from the start to the goal: nothing stands in the way), and the challenge's
@@ -86,6 +87,8 @@ def dynabarn_document(rng: np.random.Generator, name: str) -> dict:
     obstacles = []
     for _ in range(int(rng.integers(COUNT[0], COUNT[1] + 1))):
         points = track(rng)
+        while np.hypot(*(points[0] - GOAL)) < RADIUS + TOLERANCE:  # a scenario's goal may not start covered
+            points = track(rng)
         there_and_back = np.vstack([points, points[-2:0:-1]])
         speed = round(float(rng.choice(np.arange(SPEEDS[0], SPEEDS[1] + 0.05, 0.1))), 1)
         obstacles.append({"circle": {"center": _world(points[0]), "radius": RADIUS},
