@@ -33,7 +33,7 @@ MARGIN = 0.2  # m added to the sum of the radii
 def clusters(points: np.ndarray, moved: np.ndarray, here: np.ndarray) -> list[tuple[np.ndarray, float]]:
     """(centre, radius) of each group of neighbouring moved echoes (``points`` (B, 2) in beam
     order, ``moved`` (B,) bool) seen from ``here``."""
-    found = []
+    found: list[tuple[np.ndarray, float]] = []
     index = np.flatnonzero(moved)
     if not len(index):
         return found
