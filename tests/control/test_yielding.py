@@ -54,11 +54,9 @@ def test_it_gets_through_where_fuzzy_5b_is_run_into(index):
 
 @pytest.mark.slow
 def test_tracked_obstacles_keep_it_clear_of_what_comes_from_behind():
-    """In this world version 1 (the two-scan cue alone) is run into from behind, out of the
-    lidar's view; version 2, predicting the tracked obstacle there, gets through."""
+    """In this world fuzzy-5b-yield (the two-scan cue alone) is run into from behind, out of the
+    lidar's view; fuzzy-5b-yield-tracks, predicting the tracked obstacle there, gets through."""
     scenario = generate_world("dynamic", 7, 69)
-    from fuzzynav.control.yielding import make
-
-    before = run_episode(scenario, make(tracks=False), seed=0)
+    before = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
     assert before.outcome == "collision" and before.collision_by == "obstacle"
-    assert run_episode(scenario, make(), seed=0).outcome == "reached"
+    assert run_episode(scenario, make_controller("fuzzy-5b-yield-tracks"), seed=0).outcome == "reached"

@@ -18,13 +18,14 @@ avoids what is ahead anyway). The authority fades to nothing as the closest read
 the heading comes down to ``close`` m: there the navigator keeps the body off what is near.
 Beyond the horizon of the rules (``ttc`` long) the navigator drives alone.
 
-Version 2 adds the obstacles tracked over successive scans (:mod:`fuzzynav.control.sighting_tracks`):
+``fuzzy-5b-yield-tracks`` (``tracks=True``) adds the obstacles tracked over successive scans (:mod:`fuzzynav.control.sighting_tracks`):
 their velocity fitted over up to 8 sightings, their centre predicted at constant velocity for 2 s
 after the last one, and the first time the relative motion enters the collision cone (Fiorini &
 Shiller's velocity obstacles, IJRR 1998) is a second time to collision. It counts for threats
 more than ``tracked_beyond`` (60°) off the heading — abeam, and behind in the lidar's blind
 sector where the two-scan cue sees nothing; ahead the two-scan cue decides (tracks ahead too,
-alone, did worse on the worlds the rules were set on: docs/dynamic.md). ``tracks=False`` is version 1.
+alone, did worse on the worlds the rules were set on). On worlds it was not designed on it gets
+no more through than ``fuzzy-5b-yield`` (docs/dynamic.md), so it is a variant, not the default.
 """
 
 from __future__ import annotations
@@ -66,7 +67,7 @@ class YieldingNavigator(BatchController):
     name = "fuzzy-5b-yield"
 
     def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
-                 close: float = 0.35, tracks: bool = True, track_range: float = 6.0, tracked_beyond: float = 60.0):
+                 close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0):
         self.inner = inner if inner is not None else fuzzy_5b_gap_robust()
         self.sensors = getattr(self.inner, "sensors", None)
         self.labels = getattr(self.inner, "labels", ())
@@ -140,9 +141,15 @@ class YieldingNavigator(BatchController):
 
 
 def make(**options) -> YieldingNavigator:
-    """``fuzzy-5b-yield`` (``options``: ``mover_speed``, ``max_speed``, ``tracks``: False for version 1,
-    the closing speed alone)."""
+    """``fuzzy-5b-yield`` (``options``: ``mover_speed``, ``max_speed``, ``tracks``)."""
     return YieldingNavigator(**options)
+
+
+def make_tracked(**options) -> YieldingNavigator:
+    """``fuzzy-5b-yield-tracks``: ``fuzzy-5b-yield`` with ``tracks=True`` (module docstring)."""
+    navigator = YieldingNavigator(**{"tracks": True, **options})
+    navigator.name = "fuzzy-5b-yield-tracks"
+    return navigator
 
 
 def _off_outline(points, before, valid, bridge: float = 0.3):
