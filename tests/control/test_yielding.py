@@ -50,3 +50,13 @@ def test_it_gets_through_where_fuzzy_5b_is_run_into(index):
     trace = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
     assert trace.outcome == "reached"
     assert "YIELD" in set(trace.behaviour)
+
+
+@pytest.mark.slow
+def test_tracked_obstacles_keep_it_clear_of_what_comes_from_behind():
+    """In this world fuzzy-5b-yield (the two-scan cue alone) is run into from behind, out of the
+    lidar's view; fuzzy-5b-yield-tracks, predicting the tracked obstacle there, gets through."""
+    scenario = generate_world("dynamic", 7, 69)
+    before = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
+    assert before.outcome == "collision" and before.collision_by == "obstacle"
+    assert run_episode(scenario, make_controller("fuzzy-5b-yield-tracks"), seed=0).outcome == "reached"

@@ -37,7 +37,7 @@ from fuzzynav.storage import write_text_atomic
 
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
            "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",
-           "barn_score", "collision_by")
+           "barn_score", "barn_score_challenge", "collision_by")
 
 
 @dataclass(frozen=True)

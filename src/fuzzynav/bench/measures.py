@@ -12,7 +12,13 @@ and the BARN score.
   :mod:`fuzzynav.sim.fault`); the summary counts the robot's as ``collision_at_fault``.
 - ``barn_score`` (worlds with a BARN reference): the BARN Challenge's metric, success ×
   t_opt / clip(t, 2 t_opt, 8 t_opt) with t_opt = optimal path length / 2 m/s (the challenge's
-  ``run.py``), the optimal path length being BARN's own (``benchmark.json``).
+  ``run.py``), the optimal path length being BARN's own (``benchmark.json``, or the family's,
+  :func:`fuzzynav.world.generate.family_reference`);
+- ``barn_score_challenge`` (worlds whose reference gives ``barn_challenge_path_m``): the same
+  formula with the path length the challenge's ``run.py`` uses, right or wrong — for DynaBARN's
+  worlds it is GOAL_POSITION[0] − INIT_POSITION[0] = −31 m, and with t_opt < 0 numpy's clip
+  returns its upper bound 8 t_opt, so every success scores t_opt / 8 t_opt = 0.125
+  (docs/dynamic.md). Both are reported so that results compare with published ones.
 """
 
 from __future__ import annotations
@@ -67,7 +73,8 @@ def _cached_length(file: Path) -> float | None:
 
 
 def barn_score(reached: bool, time_s: float, optimal_path_m: float) -> float:
-    """The BARN Challenge score of one run (module docstring)."""
+    """The BARN Challenge score of one run (module docstring); ``min(max(·))`` is numpy's ``clip``,
+    also when ``optimal_path_m`` < 0 (the challenge's value on DynaBARN)."""
     optimal = optimal_path_m / BARN_SPEED
     return float(reached) * optimal / min(max(time_s, 2 * optimal), 8 * optimal)
 
@@ -77,6 +84,7 @@ def run_row(numbers: dict, shortest: float | None, reference: dict) -> dict:
     reached = numbers["outcome"] == "reached"
     ratio = numbers["path_length_m"] / shortest if reached and shortest else None
     optimal = reference.get("barn_optimal_path_m")
+    challenge = reference.get("barn_challenge_path_m")
     return {
         "outcome": numbers["outcome"],
         "time_s": numbers["time_s"],
@@ -88,6 +96,7 @@ def run_row(numbers: dict, shortest: float | None, reference: dict) -> dict:
         "steering_variation_rad": numbers["steering_variation_rad"],
         "final_distance_m": numbers["final_distance_m"],
         "barn_score": barn_score(reached, numbers["time_s"], optimal) if optimal else None,
+        "barn_score_challenge": barn_score(reached, numbers["time_s"], challenge) if challenge else None,
         "collision_by": numbers["collision_by"],
     }
 

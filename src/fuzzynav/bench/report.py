@@ -38,17 +38,18 @@ def markdown(records: list[dict]) -> str:
     """``summary.md``: one table per suite (rates in %, 95 % Wilson intervals in brackets)."""
     lines = ["# Benchmark summary", "",
              "Rates in % with 95 % Wilson intervals; medians over the successful runs (time, path ratio) "
-             "or all runs (clearance, steering effort); BARN score: mean over all runs.", ""]
+             "or all runs (clearance, steering effort); BARN score: mean over all runs, with the true optimal "
+             "path; challenge's: with the path length the challenge's run.py uses (on DynaBARN −31 m).", ""]
     for suite in dict.fromkeys(record["suite"] for record in records):
         lines += [f"## {suite}", "",
                   "| controller | runs | success % | collision % | timeout % | median time (s) | median path ratio "
-                  "| median min clearance (m) | median steering effort (rad) | BARN score |",
-                  "|---|---|---|---|---|---|---|---|---|---|"]
+                  "| median min clearance (m) | median steering effort (rad) | BARN score | BARN score (challenge's) |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
         for r in (record for record in records if record["suite"] == suite):
             lines.append(f"| {r['controller']} | {r['runs']} | {_pct(r['reached'])} | {_pct(r['collision'])} | "
                          f"{_pct(r['timeout'])} | {_num(r['median_time_s'], 1)} | {_num(r['median_path_ratio'], 3)} | "
                          f"{_num(r['median_min_clearance_m'])} | {_num(r['median_steering_effort_rad'], 3)} | "
-                         f"{_num(r['mean_barn_score'], 3)} |")
+                         f"{_num(r['mean_barn_score'], 3)} | {_num(r.get('mean_barn_score_challenge'), 3)} |")
         lines.append("")
     return "\n".join(lines)
 
@@ -139,7 +140,8 @@ def plot_failures(plan: Plan, rows: list[dict], label: str, path: Path, gallery:
 
 
 TABLE_COLUMNS = ("controller", "runs", "success %", "collision %", "timeout %", "median time (s)",
-                 "median path ratio", "median min clearance (m)", "median steering effort (rad)", "BARN score")
+                 "median path ratio", "median min clearance (m)", "median steering effort (rad)", "BARN score",
+                 "BARN score (challenge's)")
 PLOT_TEXTS = {
     "rates.png": ("Success, collision and timeout rates",
                   "Each bar is the share of a controller's runs on a suite that reached the goal, collided or ran out "
@@ -159,7 +161,8 @@ def html_tables(records: list[dict]) -> str:
         for r in (record for record in records if record["suite"] == suite):
             cells = (r["controller"], r["runs"], _pct(r["reached"]), _pct(r["collision"]), _pct(r["timeout"]),
                      _num(r["median_time_s"], 1), _num(r["median_path_ratio"], 3), _num(r["median_min_clearance_m"]),
-                     _num(r["median_steering_effort_rad"], 3), _num(r["mean_barn_score"], 3))
+                     _num(r["median_steering_effort_rad"], 3), _num(r["mean_barn_score"], 3),
+                     _num(r.get("mean_barn_score_challenge"), 3))
             body.append("<tr>" + "".join(f"<td>{html.escape(str(cell))}</td>" for cell in cells) + "</tr>")
         parts.append(f"<h3>{html.escape(suite)}</h3>\n<table>\n<thead><tr>{head}</tr></thead>\n<tbody>\n"
                      + "\n".join(body) + "\n</tbody>\n</table>")

@@ -1,4 +1,5 @@
-"""Per controller × suite: outcome rates with 95 % Wilson intervals, medians, the BARN score.
+"""Per controller × suite: outcome rates with 95 % Wilson intervals, medians, the BARN score (true
+optimal path) and the challenge's own (:mod:`fuzzynav.bench.measures`).
 
 E. B. Wilson, *Probable inference, the law of succession, and statistical inference*, JASA
 22(158), 1927: for k successes in n trials, p̂ = k/n and z = 1.96, the interval is
@@ -51,7 +52,8 @@ def summarise(rows: list[dict]) -> list[dict]:
         record["median_path_ratio"] = _median(run["path_ratio"] for run in reached)
         record["median_min_clearance_m"] = _median(run["min_clearance_m"] for run in runs)
         record["median_steering_effort_rad"] = _median(run["steering_effort_rad"] for run in runs)
-        scores = [run["barn_score"] for run in runs if run["barn_score"] is not None]
-        record["mean_barn_score"] = sum(scores) / len(scores) if scores else None
+        for key in ("barn_score", "barn_score_challenge"):
+            scores = [run[key] for run in runs if run.get(key) is not None]
+            record[f"mean_{key}"] = sum(scores) / len(scores) if scores else None
         records.append(record)
     return records

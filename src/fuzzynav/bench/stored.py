@@ -23,7 +23,8 @@ NAMES = ("suite", "world", "controller")
 # measure -> lowest value (None: any finite number)
 MEASURES = {"time_s": 0.0, "path_length_m": 0.0, "shortest_path_m": 0.0, "path_ratio": 0.0,
             "min_clearance_m": None, "steering_effort_rad": 0.0, "steering_variation_rad": 0.0,
-            "final_distance_m": 0.0, "barn_score": 0.0}
+            "final_distance_m": 0.0, "barn_score": 0.0,
+            "barn_score_challenge": 0.0}
 
 
 def check_row(row, columns, source: str, where: str) -> dict:

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.world.generate import KINDS, generate_world
+from fuzzynav.world.generate import KINDS, family_reference, generate_world
 from fuzzynav.world.scenario import Scenario, load_scenario
 
 DEFAULT_COUNT = 100
@@ -60,9 +60,10 @@ class Suite:
         return generate_world(self.family, self.seed + seed, index)
 
     def reference(self, index: int) -> dict:
-        """Reference data of world ``index`` from ``benchmark.json`` (empty when there is none)."""
+        """Reference data of world ``index``: its family's (:func:`~fuzzynav.world.generate.family_reference`)
+        or its entry in ``benchmark.json`` (empty when there is none)."""
         if self.family is not None:
-            return {}
+            return family_reference(self.family)
         return self.references.get(Path(self.files[index]).stem, {})
 
 
@@ -84,6 +85,8 @@ def _references(file: Path) -> dict:
         if "barn_optimal_path_m" in entry:
             validation.number(entry["barn_optimal_path_m"], source, f"scenarios.{name}.barn_optimal_path_m",
                               lo=0.0, lo_open=True)
+        if "barn_challenge_path_m" in entry:  # the challenge's own value, which may be wrong (negative)
+            validation.number(entry["barn_challenge_path_m"], source, f"scenarios.{name}.barn_challenge_path_m")
     return references
 
 

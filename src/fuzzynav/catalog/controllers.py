@@ -46,6 +46,11 @@ register_controller(ControllerSpec(
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "
     "lidar scans (for dynamic worlds)", "this package; time to collision after Lee 1976", GOAL, "lidar"))
 register_controller(ControllerSpec(
+    "fuzzy-5b-yield-tracks", "fuzzynav.control.yielding:make_tracked",
+    "fuzzy-5b-yield that also tracks moving obstacles over successive scans and predicts them out of view "
+    "(time to collision by velocity obstacles, for threats abeam and behind)",
+    "this package; Fiorini & Shiller 1998", GOAL, "lidar"))
+register_controller(ControllerSpec(
     "fuzzy-5b-rays", "fuzzynav.control.robust:fuzzy_5b",
     "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors: "
     "version 1 of fuzzy-5b", "thesis §IV.7; Lumelsky & Stepanov 1987", GOAL, "rays", roles=FIVE))

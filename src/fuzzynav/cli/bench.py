@@ -2,7 +2,7 @@
 [--backend local|ray] [--out DIR] [--resume]`` — a benchmark campaign (:mod:`fuzzynav.bench`).
 
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
-family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap). Controllers are registered
+family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap, dynamic, dynabarn). Controllers are registered
 names (``fuzzynav run --help`` lists them) or trained model files (``.json``/``.npz``, labelled by
 their file name without the suffix). ``--fis ROLE=FILE`` replaces that rule base in every
 controller of the campaign that has the role (as ``fuzzynav run --fis`` does). Writes runs.csv /

@@ -13,6 +13,12 @@ its own world: the packed scene arrays (:func:`fuzzynav.kernels.layout.pack`) of
 worlds are concatenated and each robot reads its own slice (:func:`fuzzynav.kernels.scene.nearest_worlds`,
 :func:`fuzzynav.kernels.beams.read_worlds`), as a path's set-up array for its waypoints
 (:func:`fuzzynav.kernels.step.task_update_rows`).
+
+Moving obstacles (docs/dynamic.md): a row whose world has some gets a copy of its world's scene
+of its own, and after every step Δt its moving obstacles are written into it where they are at
+that row's episode time (:func:`fuzzynav.kernels.traffic.place`, offsets of
+:func:`fuzzynav.world.moving.offsets`), before the collision test and the sensing — the order of
+the simulator's compiled step, so both see the obstacles at the same place at the same step.
 """
 
 from __future__ import annotations
@@ -22,7 +28,6 @@ from dataclasses import replace
 import numpy as np
 
 from fuzzynav.control.learned import goal_inputs, side_distances
-from fuzzynav.errors import InputError
 from fuzzynav.kernels.layout import NEAREST_COLUMNS
 from fuzzynav.learn.envs.env import RobotState
 from fuzzynav.robot import tricycle
@@ -53,16 +58,16 @@ class RobotBatch:
         self.state: RobotState | None = None
         self.scenes = self.scene_bounds = None  # the rows' worlds packed together (_pack_worlds)
         self.path_setups = self.setup_bounds = None  # the path rows' set-up arrays packed together
+        self.steps = np.zeros(self.n, dtype=np.int64)  # steps Δt of each row's episode so far
+        self._row_scenes = [None] * self.n  # a row's scene: its world's, or its own copy when obstacles move
 
     # -- episodes ----------------------------------------------------------------------------
     def start(self, rows, scenarios) -> None:
         """Begin new episodes in ``rows`` on ``scenarios`` (one each): start pose, zero command."""
         for row, scenario in zip(rows, scenarios):
-            if scenario.world.moving:  # never a silent wrong answer: these worlds would stand still here
-                raise InputError(f"the Gymnasium environments do not move obstacles yet; {scenario.name} has "
-                                 f"{len(scenario.world.moving)} moving (run it with `fuzzynav run` or BatchSimulator)",
-                                 source=scenario.source or scenario.name, field="obstacles")
             self.scenarios[row] = scenario
+            self.steps[row] = 0
+            self._row_scenes[row] = scenario.world.scene.copy() if scenario.world.moving else scenario.world.scene
             self.pose[row] = scenario.start
             self.speed[row] = self.steering[row] = 0.0
             path = TaskState(scenario, 1) if scenario.task == "path" else None
@@ -75,7 +80,8 @@ class RobotBatch:
                 self.tolerance[row] = scenario.goal.tolerance
             elif path is not None:
                 self.target[row] = path.target()[0]
-        self.scenes, self.scene_bounds = _concatenate([None if s is None else s.world.scene for s in self.scenarios])
+        self.scenes, self.scene_bounds = _concatenate(self._row_scenes)
+        self.place_obstacles(np.ones(self.n, dtype=bool))
         self.path_setups, self.setup_bounds = _concatenate(self._setups)
         rows = np.asarray(list(rows), dtype=int)
         if self.state is None or len(rows) == self.n:
@@ -107,6 +113,23 @@ class RobotBatch:
             goal = goal_inputs(pose, target if goal_target is None else goal_target)
         return RobotState(None, pose, speed, steering, target, ranges, goal, sides)
 
+    def obstacle_offsets(self, row: int) -> np.ndarray:
+        """Offsets ``(M, 2)`` of the moving obstacles of ``row``'s world at its episode time."""
+        from fuzzynav.world import moving
+
+        return moving.offsets(self.scenarios[row].world, [self.steps[row] * self.params.dt])[0]
+
+    def place_obstacles(self, rows) -> None:
+        """Write the moving obstacles of the ``rows`` (a mask) into their scenes where they are now."""
+        from fuzzynav.kernels import traffic
+
+        for row in np.flatnonzero(rows):
+            world = None if self.scenarios[row] is None else self.scenarios[row].world
+            if world is None or not world.moving:
+                continue
+            lo, hi = self.scene_bounds[row]
+            traffic.place(world.scene, world.movers, self.obstacle_offsets(row), self.scenes[lo:hi])
+
     def clearance(self, pose) -> np.ndarray:
         """Signed distance (N,) of each robot centre to its world's obstacles or boundary."""
         from fuzzynav.kernels import scene
@@ -136,6 +159,8 @@ class RobotBatch:
             self.steering = np.where(moving, a, self.steering)
             self.speed = np.where(moving, v, 0.0)
             pose = np.where(moving[:, None], tricycle.step(pose, self.steering, self.speed, self.params), pose)
+            self.steps += moving
+            self.place_obstacles(moving)
             collided |= moving & (self.clearance(pose) < self.params.radius)
             done, switched = self._task_update(pose, moving & ~collided)
             reached |= done

@@ -84,7 +84,7 @@ class FuzzynavEnv(gymnasium.Env):
         state = batch.state
         ranges = None if state.ranges is None else state.ranges[0]
         return self._renderer.draw(self.scenario, batch.pose[0], batch.target[0] if self.episodes.task.goal else None,
-                                   batch.sensors, ranges)
+                                   batch.sensors, ranges, batch.obstacle_offsets(0))
 
     def close(self):
         if self._renderer is not None:

@@ -1,5 +1,5 @@
 """Frames of an environment with matplotlib: the world, the robot's footprint and heading, its
-rays and its target (the drawing of :func:`fuzzynav.viz.trajectories.draw_world`).
+rays, its target and the moving obstacles where they are (the drawing of :func:`fuzzynav.viz.trajectories.draw_world`).
 
 ``rgb_array`` renders off-screen (Agg) and returns an (H, W, 3) ``uint8`` array; ``human``
 draws into a pyplot window and pauses 1 / fps (with a non-interactive backend it only draws,
@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.viz.moving import draw_placed
 from fuzzynav.viz.trajectories import draw_world, sensor_segments
 
 
@@ -29,12 +30,15 @@ class Renderer:
             self.figure = Figure(figsize=(size, size), dpi=80)
             FigureCanvasAgg(self.figure)
 
-    def draw(self, scenario, pose, target, sensors, ranges):
+    def draw(self, scenario, pose, target, sensors, ranges, obstacle_offsets=None):
+        """One frame; ``obstacle_offsets`` ``(M, 2)``: where the moving obstacles are now."""
         from matplotlib import patches
 
         self.figure.clf()
         ax = self.figure.add_subplot()
-        draw_world(ax, scenario)
+        draw_world(ax, scenario, moving_obstacles=False)
+        if scenario.world.moving:
+            draw_placed(ax, scenario.world, obstacle_offsets)
         if target is not None:
             ax.plot(*target, "x", color="tab:red", markersize=8)
         if ranges is not None:

@@ -3,6 +3,7 @@
 
 - :func:`draw_moving`: on a static plot, the tracks over the episode (or, without a trace, over
   the scenario's ``max_time``) and the obstacles where they were at the end.
+- :func:`draw_placed`: the obstacles where they are at one time (a Gymnasium frame);
 - :class:`MovingArtists`: in an animation, the obstacles and their tracks so far, moved frame by
   frame (a translation of each patch, no redrawing of the world).
 """
@@ -53,6 +54,13 @@ def draw_moving(ax, scenario, trace=None) -> None:
         ax.add_patch(_placed(ax, shape, offsets[-1, m], **MOVING_STYLE))
     if world.moving:
         ax.plot([], [], ":", color="tab:orange", label="moving obstacles' tracks")
+
+
+def draw_placed(ax, world, offsets) -> None:
+    """The moving obstacles of ``world`` on ``ax`` where they are at one time (``offsets``
+    ``(M, 2)``): a frame of the Gymnasium environments' ``render``."""
+    for m, index in enumerate(world.moving):
+        ax.add_patch(_placed(ax, world.obstacles[index], offsets[m], **MOVING_STYLE))
 
 
 class MovingArtists:

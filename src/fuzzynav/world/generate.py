@@ -12,7 +12,10 @@ Four families on the thesis' 20 m × 20 m workspace:
   navigation, Fig IV.23's U-wall), plus 2 to 5 discs;
 - ``"dynamic"`` — 3 to 6 standing discs and polygons plus 4 to 8 moving obstacles (crossing
   pedestrians, patrols, oncoming traffic at 0.3–1.5 m/s, :mod:`fuzzynav.world.traffic`), none of
-  which ever comes within 1 m of the start or the goal; solvability is tested on the standing ones.
+  which ever comes within 1 m of the start or the goal; solvability is tested on the standing ones;
+- ``"dynabarn"`` — DynaBARN's set-up (:mod:`fuzzynav.world.dynabarn`): 2 to 5 cylinders crossing
+  a walled 20 m arena on polynomial tracks, its fixed start, goal and 100 s limit (the other
+  families' start, goal and solvability rules do not apply to it).
 
 Start and goal are at least 10 m apart, ≥ 2.5 m from the boundary walls and ≥ 1.5 m from every
 obstacle; the start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
@@ -33,12 +36,12 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-from fuzzynav.world import traffic
+from fuzzynav.world import dynabarn, traffic
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
 from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
-KINDS = ("circles", "mixed", "dense", "utrap", "dynamic")  # append only: the index seeds each family
+KINDS = ("circles", "mixed", "dense", "utrap", "dynamic", "dynabarn")  # append only: the index seeds each family
 WIDTH = HEIGHT = 20.0
 MIN_START_GOAL = 10.0  # m between start and goal
 POINT_CLEARANCE = 1.5  # m of free space around start and goal
@@ -100,6 +103,8 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
     """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="kind")
+    if kind == "dynabarn":
+        return scenario_from_dict(dynabarn.dynabarn_document(rng, name), source=name)
     makers = _MAKERS[kind]
     lo, hi = _COUNTS[kind]
     for _ in range(MAX_DRAWS):
@@ -138,6 +143,12 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
         if connected(world, scenario.start[:2], scenario.goal.position, robot_radius + margin):
             return scenario
     raise RuntimeError(f"no solvable {kind} world in {MAX_DRAWS} draws")  # pragma: no cover - never seen
+
+
+def family_reference(kind: str) -> dict:
+    """Reference data of every world of family ``kind`` for the benchmark (as a folder's
+    ``benchmark.json`` gives per world): the BARN score's path lengths of ``dynabarn``, else none."""
+    return dict(dynabarn.REFERENCE) if kind == "dynabarn" else {}
 
 
 def generate_world(kind: str, seed: int, i: int, **options) -> Scenario:
