@@ -7,10 +7,12 @@ import math
 import numpy as np
 import pytest
 
+from fuzzynav.control.base import Command
 from fuzzynav.errors import CommandError, InputError
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.scenario import load_scenario
+from tests.sim.controllers import CountingController
 
 
 class NanAtStep3:
@@ -42,22 +44,14 @@ def test_batch_nan_command_stops_that_robot_before_it_moves():
     assert sim.trace(0).steps > 3 and sim.trace(0).invalid_command is None
 
 
-class InfiniteSpeed:
+class InfiniteSpeed(CountingController):
     """A one-robot controller (``act``) that asks for an infinite speed at its third step."""
 
     name = "inf-speed"
 
-    def __init__(self):
-        self.calls = 0
-
-    def reset(self, rng=None):
-        self.calls = 0
-
     def act(self, obs):
-        from fuzzynav.control.base import Command
-
-        self.calls += 1
-        return Command(0.0, math.inf if self.calls == 3 else 0.5)
+        command = super().act(obs)
+        return Command(0.0, math.inf) if self.calls == 3 else command
 
 
 def test_infinite_command_recorded_in_the_run_json():
