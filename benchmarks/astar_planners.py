@@ -32,7 +32,7 @@ PLANNERS = ("hybrid", "grid")
 
 def _timed(scenario, navigator: AStarPurePursuit, hybrid: bool) -> tuple[str, float]:
     started = time.perf_counter()
-    planner, _, _ = plan_path(scenario, navigator.body, navigator.inflation, navigator.search, hybrid)
+    planner = plan_path(scenario, navigator.body, navigator.inflation, navigator.search, hybrid)[0]
     return planner, time.perf_counter() - started
 
 

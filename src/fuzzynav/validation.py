@@ -81,6 +81,39 @@ def number(value, source=None, field=None, *, lo: float = -MAX_MAGNITUDE, hi: fl
     return result
 
 
+def positive(value, source=None, field=None) -> float:
+    """``value`` as a float: a real number (not a bool, not a string), finite and > 0 (a size, a
+    time, a gain, a distance)."""
+    try:
+        result = float(value) if isinstance(value, (int, float)) or _is_numpy_number(value) else math.nan
+    except OverflowError:
+        result = math.inf
+    if isinstance(value, bool) or not (math.isfinite(result) and result > 0):
+        fail(f"must be a finite number > 0, got {shown(value)}", source, field)
+    return result
+
+
+def finite_array(value, source=None, field=None, *, ndim: int | None = None, shape: tuple | None = None,
+                 empty: bool = True) -> np.ndarray:
+    """``value`` as a float array of finite numbers (no strings, booleans, NaN or infinities) of
+    ``ndim`` dimensions or exactly ``shape`` when given, not empty unless ``empty``."""
+    try:
+        array = np.asarray(value)
+    except ValueError:  # ragged nesting
+        array = np.asarray(None)
+    expected = (f"an array of shape {tuple(shape)}" if shape is not None else
+                f"a {ndim}-D array" if ndim is not None else "an array")
+    if array.dtype.kind not in "iuf" or (ndim is not None and array.ndim != ndim) or \
+            (shape is not None and array.shape != tuple(shape)):
+        fail(f"must be {expected} of numbers, got {shown(value)}", source, field)
+    if array.size == 0 and not empty:
+        fail("must not be empty", source, field)
+    array = array.astype(float)
+    if not np.isfinite(array).all():
+        fail(f"must be finite numbers (no NaN or infinity), got {shown(value)}", source, field)
+    return array
+
+
 def _is_numpy_number(value) -> bool:
     return type(value).__module__ == "numpy" and hasattr(value, "dtype") and value.dtype.kind in "iuf" \
         and getattr(value, "ndim", 0) == 0

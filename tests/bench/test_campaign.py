@@ -82,6 +82,7 @@ def test_killed_half_way_then_resumed_gives_the_same_files(reference, tmp_path):
     assert main([*command[3:], "--resume"]) == 0
     for name in FINAL:
         assert (out / name).read_bytes() == (reference / name).read_bytes(), name
+    assert [p.name for p in out.rglob("*") if ".tmp" in p.name] == []  # no stray temporary file
 
 
 @pytest.mark.slow

@@ -76,3 +76,79 @@ def test_anfis_bench_reports_peers_it_cannot_run(monkeypatch):
     report = json.loads(_run("anfis_bench.py", "--json", "--repeats", "1").stdout)
     errors = {result["name"]: result.get("error", "") for result in report["results"]}
     assert "not run: give --peer-python" in errors["anfis-toolbox"] and "not run" in errors["xanfis"]
+
+
+# The smallest configuration of each script that measures something in this Python: (script,
+# arguments, text its output must hold). The peers a script compares with are found only through
+# its flags or environment variables; without them it says what it did not run.
+SMALLEST = [
+    ("astar_backing.py", ("--n", "1", "--json"), '"benchmark": "astar_backing"'),
+    ("astar_planners.py", ("mixed:1", "--episodes", "--json"), '"plan_median_s"'),
+    ("bench_overhead.py", ("--worlds", "1", "--repeats", "1", "--controllers", "goal-seeking", "--json"), '"cpu_ratio"'),
+    ("fuzzy_bench.py", ("--only", "fuzzynav", "--json"), '"single_call_us"'),
+    ("navigator_profile.py", ("--robots", "1", "--steps", "10", "--json"), '"part_share"'),
+    ("robust_nav.py", ("--family", "mixed", "--seeds", "0", "--n", "1", "--json"), '"stood_still_10s"'),
+    ("robust_nav.py", ("--layers", "--controller", "fuzzy-2b-thesis", "--family", "mixed", "--seeds", "0", "--n", "1"),
+     "| fuzzy-2b-thesis | all layers |"),
+    ("sim_core.py", ("--json",), '"irsim": null'),
+]
+# Scripts whose smallest run is too long for the suite (their --help still runs above: the argument
+# parsing and every import) or that need a peer Python: why, and what checks them instead.
+NOT_RUN_HERE = {
+    "fuzzify_bench.py": "about a minute of timing loops at any size",
+    "mutations.py": "two minutes for one role (every claim of chapters IV and V rerun per mutation)",
+    "tracking_bench.py": "about a minute: every tracker timed on the three chapter V paths",
+    "tuning_compare.py": "a tuner needs at least one generation: 400 episodes",
+    "train_time.py": "trains with the task's whole default budget in fresh processes",
+    "irsim_peer.py": "needs the ir-sim package (its own virtualenv); its world conversion is tested below",
+    # smallest runs (the arguments given) of 20-45 s on an idle 2-core machine:
+    "gym_vector.py": "--robots 2 --steps 5 --rounds 1: 25 s (every task's environments built twice)",
+    "tune_speed.py": "--worlds mixed:1 --population 2: 22 s (the tuner's compiled call is compiled first)",
+    "rl_bench.py": "--tasks q-goal --seeds 1 --episodes 50: 20 s (a training and its evaluation)",
+    "rl_compare.py": "--algos fql --tasks goal --seeds 1 --steps 200 --checkpoints 100 200: 43 s",
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("script", "args", "expect"), SMALLEST, ids=[f"{s}-{i}" for i, (s, _, _) in enumerate(SMALLEST)])
+def test_smallest_configuration_runs(script, args, expect, tmp_path):
+    done = _run(script, *(arg.format(tmp=tmp_path) for arg in args))
+    assert expect in done.stdout, done.stdout[-2000:]
+
+
+def test_every_script_has_a_smoke_run_or_a_reason():
+    covered = {script for script, _, _ in SMALLEST} | set(NOT_RUN_HERE) | {
+        "barn_eval.py", "same_results.py", "trace_compare.py", "learn_core.py", "anfis_bench.py",
+        "cold_call_bench.py", "fuzzylite_examples.py"}
+    assert {path.name for path in SCRIPTS} == covered
+
+
+@pytest.mark.parametrize(("script", "args", "message"), [
+    ("cold_call_bench.py", ("engine.fll",), "pyfuzzylite is not importable here"),
+    ("fuzzylite_examples.py", (), "give --examples DIR (or set FUZZYNAV_FLL_EXAMPLES)"),
+])
+def test_scripts_without_their_peer_say_how_to_give_it(script, args, message, monkeypatch):
+    monkeypatch.delenv("FUZZYNAV_FLL_EXAMPLES", raising=False)
+    done = _run(script, *args, check=False)
+    assert done.returncode == 2 and message in done.stderr and "Traceback" not in done.stderr
+
+
+def test_irsim_peer_builds_the_same_world():
+    """The IR-SIM side's world: the 20 m square, one car-like robot at the start, a 7-beam lidar,
+    and every obstacle (an ellipse as a 32-gon)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("irsim_peer", ROOT / "benchmarks" / "irsim_peer.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    job = {"obstacles": [{"circle": {"center": [5, 5], "radius": 1}},
+                         {"ellipse": {"center": [10, 10], "radii": [2, 1], "angle": 0.3}}],
+           "start": [1, 1, 0], "command": [1.0, 0.0], "dt": 0.1, "max_range": 5.0, "wheelbase": 0.5}
+    world = module.world_yaml(job)
+    assert (world["world"]["width"], world["world"]["height"]) == (20.0, 20.0)
+    (robot,) = world["robot"]
+    assert robot["kinematics"]["name"] == "acker" and robot["state"] == [1, 1, 0, 0.0]
+    assert robot["sensors"][0]["number"] == 7 and robot["shape"]["wheelbase"] == 0.5
+    circle, ellipse = world["obstacle"]
+    assert circle == {"shape": {"name": "circle", "radius": 1.0}, "state": [5.0, 5.0, 0.0]}
+    assert ellipse["shape"]["name"] == "polygon" and len(ellipse["shape"]["vertices"]) == 32

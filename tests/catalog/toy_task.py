@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers
+from fuzzynav import validation
+from fuzzynav.control.learned import TabularGoalSeeker
 from fuzzynav.learn.tasks.common import Phase, checkpoint_path, episode_budget, finish, run_phases, summarise
 from fuzzynav.learn.tasks.tabular_goal import Q_SPEED, q_goal_parts
 
@@ -29,4 +30,4 @@ def load_model(document: dict, path) -> TabularGoalSeeker:
     """The greedy policy of a ``toy-q-goal`` file."""
     _, _, disc, _ = q_goal_parts(n_states=document["n_states"], fixed=True)
     return TabularGoalSeeker(disc, np.asarray(document["greedy"], dtype=int),
-                             finite_numbers(document["steering"], "steering", 1), Q_SPEED, name="toy")
+                             validation.finite_array(document["steering"], field="steering", ndim=1, empty=False), Q_SPEED, name="toy")

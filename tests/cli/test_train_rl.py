@@ -50,7 +50,8 @@ def test_fql_model_is_a_readable_rule_table(tmp_path, capsys):
 
 
 @pytest.mark.slow
-def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
+@pytest.mark.parametrize("stop", [signal.SIGINT, signal.SIGKILL], ids=["ctrl-c", "kill-9"])
+def test_resume_after_ctrl_c_or_kill_equals_an_uninterrupted_run(tmp_path, stop):
     args = ["fql-goal-traces", "--episodes", "1000", "--seed", "5", "--checkpoint-every", "100", "--quiet", "--parallel", "50"]
     whole, part = tmp_path / "whole.json", tmp_path / "part.json"
     assert main(["train", *args, "--out", str(whole)]) == 0
@@ -63,14 +64,15 @@ def test_resume_after_ctrl_c_equals_an_uninterrupted_run(tmp_path):
     deadline = time.time() + 60
     while not checkpoint.exists() and time.time() < deadline and process.poll() is None:
         time.sleep(0.02)
-    process.send_signal(signal.SIGINT)
+    process.send_signal(stop)
     process.wait(timeout=60)
-    assert process.returncode == 130, process.stderr.read()  # interrupted before the end
+    assert process.returncode == (130 if stop == signal.SIGINT else -stop), process.stderr.read()  # before the end
     assert not part.exists()
     saved = json.loads(checkpoint.read_text())
     assert 0 < saved["episode"] < 20  # batches of 50 episodes (random starts)
     assert main(["train", *args, "--out", str(part), "--resume"]) == 0
     assert json.loads(part.read_text()) == json.loads(whole.read_text())
+    assert [p.name for p in tmp_path.iterdir() if p.name.endswith(".tmp")] == []
 
 
 def _curve_sizes(checkpoint):

@@ -151,8 +151,10 @@ CASES = [
     Case("python-circle-negative-radius", python="Circle([1, 1], -1)", expect="radius: must be > 0"),
     Case("python-two-point-polygon", python="Polygon([[0, 0], [1, 1]])", expect="points: needs 3 to 1000 points"),
     Case("python-zero-length-wall", python="Wall([1, 1], [1, 1])", expect="end: must differ from start"),
-    Case("python-nan-command", python="run_episode(load_scenario('example-goal'), Constant(float('nan'), 1.0))",
-         expect="controller constant: step 0: returned a non-finite command"),
+    Case("python-nan-command", status=0,
+         python="trace = run_episode(load_scenario('example-goal'), Constant(float('nan'), 1.0))\n"
+                "print(trace.outcome, trace.invalid_command)",
+         expect="invalid_command step 0: steering nan, speed 1.0"),
     Case("python-checkpoint-rng-out-of-range",
          python="resume_changed(d, lambda doc: doc['rng']['state'].update(state=-1))", expect="rng: bad RNG state"),
     Case("python-checkpoint-string-curve-rows",

@@ -22,7 +22,7 @@ from matplotlib.figure import Figure
 
 from fuzzynav.bench.campaign import Plan
 from fuzzynav.bench.stats import summarise
-from fuzzynav.storage import write_text_atomic
+from fuzzynav.storage import savefig_atomic, write_text_atomic
 
 
 def _pct(block: dict) -> str:
@@ -54,12 +54,6 @@ def markdown(records: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def _save(figure: Figure, path: Path) -> None:
-    tmp = path.with_name(f".{path.name}.tmp.png")
-    figure.savefig(tmp, dpi=90)
-    tmp.replace(path)
-
-
 OUTCOME_PANELS = (("reached", "success"), ("collision", "collision"), ("timeout", "timeout"))
 
 
@@ -85,7 +79,7 @@ def plot_rates(records: list[dict], path: Path) -> None:
         ax.grid(axis="y", alpha=0.3)
     axes[-1].set_xticks(np.arange(len(controllers)), controllers, rotation=20)
     axes[0].legend(title="suite", fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    _save(figure, path)
+    savefig_atomic(figure, path, dpi=90)
 
 
 def plot_ratios(rows: list[dict], path: Path) -> None:
@@ -105,7 +99,7 @@ def plot_ratios(rows: list[dict], path: Path) -> None:
         ax.set_title(f"{suite}: path / shortest path, successful runs", fontsize=9)
         ax.set_ylabel("path ratio")
         ax.grid(axis="y", alpha=0.3)
-    _save(figure, path)
+    savefig_atomic(figure, path, dpi=90)
 
 
 def plot_failures(plan: Plan, rows: list[dict], label: str, path: Path, gallery: int) -> bool:
@@ -135,7 +129,7 @@ def plot_failures(plan: Plan, rows: list[dict], label: str, path: Path, gallery:
         ax.plot(trace.pose[:, 0], trace.pose[:, 1], lw=1.0, color="tab:red")
         ax.tick_params(labelsize=6)
     figure.tight_layout()
-    _save(figure, path)
+    savefig_atomic(figure, path, dpi=90)
     return True
 
 

@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 import statistics
 
+from fuzzynav.sim.trace import OUTCOMES
+
 Z95 = 1.959963984540054
-OUTCOMES = ("reached", "collision", "timeout")
 
 
 def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:

@@ -17,8 +17,8 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.sim.trace import OUTCOMES
 
-OUTCOMES = ("reached", "collision", "timeout")
 NAMES = ("suite", "world", "controller")
 # measure -> lowest value (None: any finite number)
 MEASURES = {"time_s": 0.0, "path_length_m": 0.0, "shortest_path_m": 0.0, "path_ratio": 0.0,

@@ -11,6 +11,7 @@ import json
 import sys
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
@@ -43,8 +44,7 @@ def run(args) -> int:
     from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
     from fuzzynav.world.scenario import scenario_from_dict
 
-    if not (args.scale > 0 and args.scale < float("inf")):
-        raise InputError(f"must be a finite number > 0, got {args.scale!r}", field="--scale")
+    validation.positive(args.scale, field="--scale")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     reference_file = out / REFERENCE_FILE

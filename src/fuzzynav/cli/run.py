@@ -14,6 +14,7 @@ import json
 import math
 import sys
 
+from fuzzynav import validation
 from fuzzynav.catalog.controllers import available, check_task
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
@@ -77,8 +78,8 @@ def run(args) -> int:
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.world.scenario_file import open_scenario
 
-    if args.max_time is not None and not (math.isfinite(args.max_time) and args.max_time > 0):
-        raise InputError(f"must be a finite number > 0, got {args.max_time!r}", field="--max-time")
+    if args.max_time is not None:
+        validation.positive(args.max_time, field="--max-time")
     if args.fis and args.model:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     if not 64 <= args.size <= 4000:

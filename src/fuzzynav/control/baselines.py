@@ -27,17 +27,11 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control.base import BatchController
-from fuzzynav.errors import InputError
+from fuzzynav.validation import positive
 from fuzzynav.world.geometry import wrap_angle
 
 DEFAULT_SPEED = 1.0
 WHEELBASE = 0.5  # l of the default robot (docs/ARCHITECTURE.md)
-
-
-def _positive(value, field: str) -> float:
-    if not (np.isfinite(value) and value > 0):
-        raise InputError(f"must be a finite number > 0, got {value!r}", field=field)
-    return float(value)
 
 
 def _window(path: np.ndarray, index: np.ndarray):
@@ -55,8 +49,8 @@ class _PathBaseline(BatchController):
     label = "track"
 
     def __init__(self, speed: float, wheelbase: float):
-        self.speed = _positive(speed, "speed")
-        self.wheelbase = _positive(wheelbase, "wheelbase")
+        self.speed = positive(speed, field="speed")
+        self.wheelbase = positive(wheelbase, field="wheelbase")
 
     def act_batch(self, obs):
         alpha = self._steer(np.atleast_2d(obs.pose), np.atleast_2d(obs.target), obs.path,
@@ -71,7 +65,7 @@ class PurePursuit(_PathBaseline):
 
     def __init__(self, lookahead: float = 1.0, speed: float = DEFAULT_SPEED, wheelbase: float = WHEELBASE):
         super().__init__(speed, wheelbase)
-        self.lookahead = _positive(lookahead, "lookahead")
+        self.lookahead = positive(lookahead, field="lookahead")
 
     def goal_points(self, pose, target, path, index) -> np.ndarray:
         """Goal point ``(N, 2)``: the furthest-along intersection of the look-ahead circle with the path.
@@ -117,8 +111,8 @@ class Stanley(_PathBaseline):
     def __init__(self, gain: float = 2.5, softening: float = 1.0, speed: float = DEFAULT_SPEED,
                  wheelbase: float = WHEELBASE):
         super().__init__(speed, wheelbase)
-        self.gain = _positive(gain, "gain")
-        self.softening = _positive(softening, "softening")
+        self.gain = positive(gain, field="gain")
+        self.softening = positive(softening, field="softening")
 
     def _steer(self, pose, target, path, index, speed):
         theta = pose[:, 2]

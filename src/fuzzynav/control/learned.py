@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import BatchController
 from fuzzynav.errors import InputError
 
@@ -131,23 +132,6 @@ def check_speed(value, field: str) -> float:
     return float(value)
 
 
-def finite_numbers(value, field: str, ndim: int, empty: bool = False) -> np.ndarray:
-    """``value`` as a float array of ``ndim`` dimensions of finite numbers (no strings, booleans,
-    NaN or infinities; non-empty unless ``empty``), else InputError naming ``field``."""
-    try:
-        array = np.asarray(value)
-    except ValueError:  # ragged nesting
-        array = np.asarray(None)
-    if array.dtype.kind not in "iuf" or array.ndim != ndim:
-        raise InputError(f"must be a {ndim}-D array of numbers, got {value!r}", field=field)
-    if array.size == 0 and not empty:
-        raise InputError("must not be empty", field=field)
-    array = array.astype(float)
-    if not np.isfinite(array).all():
-        raise InputError(f"must be finite numbers (no NaN or infinity), got {value!r}", field=field)
-    return array
-
-
 def _batch(obs):
     """(pose (B, 3), target (B, 2) or None, ranges (B, S) or None) of an Observation or a batch."""
     pose = np.asarray(obs.pose, dtype=float).reshape(-1, 3)
@@ -196,7 +180,7 @@ class TabularGoalSeeker(BatchController):
     def __init__(self, state_of, greedy, steering, speed: float, name: str = "q-goal"):
         self.state_of = state_of
         self.greedy = np.asarray(greedy, dtype=int)
-        self.steering = finite_numbers(steering, "steering", 1)
+        self.steering = validation.finite_array(steering, field="steering", ndim=1, empty=False)
         if self.greedy.size == 0 or self.greedy.min() < 0 or self.greedy.max() >= self.steering.size:
             raise InputError("greedy actions outside the action set", field="greedy")
         self.speed = check_speed(speed, "speed")

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.errors import InputError
+from fuzzynav import validation
 from fuzzynav.world.geometry import wrap_angle
 
 STEP = 0.02  # m between reference samples
@@ -89,8 +89,7 @@ def smoothed_path(waypoints, radius: float, transition: float = 2.0, approach: f
     min(R, room / tan(|φ_k|/2), d / (1/cos(|φ_k|/2) − 1)), d = ``approach``.
     """
     path = np.asarray(waypoints, dtype=float)
-    if not (np.isfinite(radius) and radius > 0):
-        raise InputError(f"must be a finite number > 0, got {radius!r}", field="corner_radius")
+    validation.positive(radius, field="corner_radius")
     lengths = np.hypot(*np.diff(path, axis=0).T)
     u = np.diff(path, axis=0) / lengths[:, None]
     turn = wrap_angle(np.diff(np.arctan2(u[:, 1], u[:, 0])))

@@ -35,6 +35,7 @@ from abc import abstractmethod
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import BatchController, thesis_angle_error
 from fuzzynav.control.reference import STEP, WINDOW, advance, smoothed_path
 from fuzzynav.errors import InputError
@@ -60,12 +61,9 @@ class AngleErrorTracker(BatchController):
 
     def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
                  lookahead: float = DEFAULT_LOOKAHEAD):
-        if not (np.isfinite(speed) and speed > 0):
-            raise InputError(f"must be a finite number > 0, got {speed!r}", field="speed")
-        if not (np.isfinite(corner_radius) and corner_radius >= 0):
-            raise InputError(f"must be a finite number >= 0, got {corner_radius!r}", field="corner_radius")
-        if not (np.isfinite(lookahead) and lookahead > 0):
-            raise InputError(f"must be a finite number > 0, got {lookahead!r}", field="lookahead")
+        validation.positive(speed, field="speed")
+        validation.number(corner_radius, field="corner_radius", lo=0.0)
+        validation.positive(lookahead, field="lookahead")
         self.speed = float(speed)
         self.corner_radius = float(corner_radius)
         self.lookahead = float(lookahead)

@@ -1,8 +1,9 @@
 """Evaluations of a controller in the simulator: success, collision and timeout rates.
 
 :func:`evaluate` runs one episode per world of :func:`fuzzynav.world.generate.generate_worlds`
-and summarises them: ``success_rate``, ``collision_rate``, ``timeout_rate`` (fractions of the
-``n`` worlds), ``mean_time_s`` and ``mean_path_length_m`` over the successful episodes, plus the
+and summarises them: ``success_rate``, ``collision_rate``, ``timeout_rate``,
+``invalid_command_rate`` (fractions of the ``n`` worlds; the last counts episodes the simulator
+stopped on a NaN or infinite command, each with its ``invalid_command`` reason), ``mean_time_s`` and ``mean_path_length_m`` over the successful episodes, plus the
 per-world outcomes. ``fuzzynav evaluate`` prints it. The controller is a registered name or a
 trained model file (``model``, built by :func:`fuzzynav.catalog.tasks.load_controller`). With
 ``save_failures`` (a folder), each world not reached is written there as a scenario file with
@@ -79,6 +80,8 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         numbers = metrics(trace, scenario)
         runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
                                                     "min_clearance_m")})
+        if numbers["invalid_command"] is not None:
+            runs[-1]["invalid_command"] = numbers["invalid_command"]
         if save_failures is not None and numbers["outcome"] != "reached":
             named = () if model is not None else (controller,)
             runs[-1]["saved"] = str(save_failure(save_failures, scenario, trace, named))
@@ -99,6 +102,7 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         "success_rate": rate("reached"),
         "collision_rate": rate("collision"),
         "timeout_rate": rate("timeout"),
+        "invalid_command_rate": rate("invalid_command"),
         "mean_time_s": float(np.mean([r["time_s"] for r, ok in zip(runs, reached) if ok])) if reached.any() else None,
         "mean_path_length_m": (float(np.mean([r["path_length_m"] for r, ok in zip(runs, reached) if ok]))
                                if reached.any() else None),

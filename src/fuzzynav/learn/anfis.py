@@ -43,6 +43,7 @@ import numpy as np
 from sklearn.base import BaseEstimator, RegressorMixin
 from sklearn.utils.validation import check_is_fitted
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
 from fuzzynav.learn.anfis_hybrid import TINY, Grid, StepRule
@@ -51,10 +52,6 @@ from fuzzynav.learn.estimator_checks import (
     check_premises,
     check_x,
     check_xy,
-    finite_array,
-    finite_float,
-    positive_float,
-    positive_int,
 )
 
 _FORMAT = "fuzzynav-anfis"
@@ -141,17 +138,17 @@ class ANFIS(RegressorMixin, BaseEstimator):
             raise InputError(f"must be one of {', '.join(anfis_mf.FAMILIES)}, got {self.mf!r}", field="mf")
         if self.order not in (0, 1) or isinstance(self.order, bool):
             raise InputError(f"must be 0 or 1, got {self.order!r}", field="order")
-        positive_int("epochs", self.epochs)
-        positive_int("n_iter_no_change", self.n_iter_no_change)
+        validation.integer(self.epochs, field="epochs", lo=1)
+        validation.integer(self.n_iter_no_change, field="n_iter_no_change", lo=1)
         for name in ("step_size", "step_increase"):
-            positive_float(name, getattr(self, name))
-        if not 0.0 < positive_float("step_decrease", self.step_decrease) < 1.0:
+            validation.positive(getattr(self, name), field=name)
+        if not 0.0 < validation.positive(self.step_decrease, field="step_decrease") < 1.0:
             raise InputError(f"must be in (0, 1), got {self.step_decrease!r}", field="step_decrease")
         if self.step_increase < 1.0:
             raise InputError(f"must be >= 1, got {self.step_increase!r}", field="step_increase")
-        if not 0.0 <= finite_float("validation_fraction", self.validation_fraction) < 1.0:
+        if not 0.0 <= validation.number(self.validation_fraction, field="validation_fraction") < 1.0:
             raise InputError(f"must be in [0, 1), got {self.validation_fraction!r}", field="validation_fraction")
-        if finite_float("tol", self.tol) < 0 or finite_float("ridge", self.ridge) < 0:
+        if validation.number(self.tol, field="tol") < 0 or validation.number(self.ridge, field="ridge") < 0:
             raise InputError("tol and ridge must be >= 0", field="tol" if self.tol < 0 else "ridge")
         if self.premises is not None:
             return [len(p) for p in check_premises(self.premises, self.mf, n_features, "premises")]
@@ -350,9 +347,9 @@ class ANFIS(RegressorMixin, BaseEstimator):
                              source=source, field="premises")
         model.rules_ = np.array(list(itertools.product(*(range(c) for c in counts))), dtype=np.intp).reshape(-1, n)
         width = n + 1 if model.order == 1 else 1
-        model.consequents_ = finite_array(document.get("consequents"), (len(model.rules_), width), "consequents", source)
-        model.input_range_ = finite_array(document.get("input_range"), (n, 2), "input_range", source)
-        model.output_range_ = finite_array(document.get("output_range"), (2,), "output_range", source)
+        model.consequents_ = validation.finite_array(document.get("consequents"), source, "consequents", shape=(len(model.rules_), width))
+        model.input_range_ = validation.finite_array(document.get("input_range"), source, "input_range", shape=(n, 2))
+        model.output_range_ = validation.finite_array(document.get("output_range"), source, "output_range", shape=(2,))
         model.premises_ = premises
         model.n_features_in_ = n
         model.best_epoch_ = int(document.get("best_epoch", -1))

@@ -6,9 +6,6 @@ document is read from one).
 
 from __future__ import annotations
 
-import math
-import numbers
-
 import numpy as np
 
 from fuzzynav.errors import InputError
@@ -66,31 +63,3 @@ def check_premises(premises, family: str, n_features: int, field: str, source: s
                              source=source, field=f"{field}[{i}]")
         tables.append(table)
     return tables
-
-
-def finite_array(value, shape: tuple, field: str, source: str | None) -> np.ndarray:
-    try:
-        array = np.array(value, dtype=float)
-    except (TypeError, ValueError):
-        array = None
-    if array is None or array.shape != shape or not np.isfinite(array).all():
-        raise InputError(f"expected finite numbers of shape {shape}", source=source, field=field)
-    return array
-
-
-def finite_float(name: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
-        raise InputError(f"must be a finite number, got {value!r}", field=name)
-    return float(value)
-
-
-def positive_float(name: str, value) -> float:
-    if finite_float(name, value) <= 0:
-        raise InputError(f"must be > 0, got {value!r}", field=name)
-    return float(value)
-
-
-def positive_int(name: str, value) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
-        raise InputError(f"must be an integer >= 1, got {value!r}", field=name)
-    return int(value)

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 
 INTEGRATORS = ("euler", "arc")
@@ -47,9 +48,7 @@ class TricycleParams:
 
     def __post_init__(self):
         for name in ("dt", "wheelbase", "width", "radius", "max_steering", "max_speed"):
-            value = getattr(self, name)
-            if not np.isfinite(value) or value <= 0:
-                raise InputError(f"must be a finite number > 0, got {value!r}", field=name)
+            validation.positive(getattr(self, name), field=name)
         if self.max_steering >= np.pi / 2:
             raise InputError(f"must be below π/2 (90°), got {self.max_steering!r}", field="max_steering")
         if not np.isfinite(self.min_speed) or self.min_speed > self.max_speed:

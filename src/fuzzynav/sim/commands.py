@@ -1,14 +1,16 @@
 """The simulator's guard on what a controller returns: nothing non-finite reaches the robot.
 
-A controller (built-in, learned, or a user's own class) that returns ``None``, a non-number or a
-NaN / infinite steering or speed stops the run with a :class:`~fuzzynav.errors.CommandError`
-naming the controller, the step and the value, instead of turning the pose to NaN (which would
-end as a silent "timeout" with no collision ever detected); start poses must be finite too.
+A NaN or infinite steering or speed from a controller (built-in, learned, or a user's own class)
+stops that robot's episode before it moves, with the outcome ``"invalid_command"`` and the reason
+recorded (:func:`invalid_reason`: the step and the values; ``Trace.invalid_command``, the
+``invalid_command`` field of a run's metrics) — instead of turning the pose to NaN, which would
+end as a silent "timeout" with no collision ever detected. The other robots of the batch run on.
+A controller that returns no command at all (``None``, not numbers, the wrong number of them) is
+a programming error: a :class:`~fuzzynav.errors.CommandError` naming the controller, the step and
+the value. Start poses must be finite too.
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -16,23 +18,29 @@ from fuzzynav import validation
 from fuzzynav.errors import CommandError, InputError
 from fuzzynav.kernels import step as step_kernel
 
+INVALID_COMMAND = 4  # outcome code beside the kernel's RUNNING, REACHED, COLLISION, TIMEOUT (0-3)
+
+
+def invalid_reason(when: str, steering: float, speed: float) -> str:
+    """The recorded reason of a stop on a non-finite command, ``when`` being ``"step 3"``:
+    ``"step 3: steering nan, speed 1.0"``."""
+    return f"{when}: steering {float(steering)!r}, speed {float(speed)!r}"
+
 
 def command_values(command, controller: str, step: int) -> tuple[float, float, str]:
-    """``(steering, speed, behaviour)`` of one robot's command, both numbers finite."""
+    """``(steering, speed, behaviour)`` of one robot's command, both numbers (possibly non-finite:
+    the caller stops the robot)."""
     try:
         steering, speed = float(command.steering), float(command.speed)
     except (AttributeError, TypeError, ValueError, OverflowError):
         raise CommandError(f"returned {command!r}, not a command with numeric steering and speed",
                            source=f"controller {controller}", field=f"step {step}") from None
-    if not (math.isfinite(steering) and math.isfinite(speed)):
-        raise CommandError(f"returned a non-finite command (steering {steering!r}, speed {speed!r})",
-                           source=f"controller {controller}", field=f"step {step}")
     return steering, speed, str(getattr(command, "behaviour", ""))
 
 
-def check_commands(steering, speed, active, n: int, controller: str, step: int):
-    """The batch commands ``(n,)`` of the running robots (``active``) as finite float arrays
-    (robots that have finished may return anything: their commands are not used)."""
+def check_commands(steering, speed, n: int, controller: str, step: int):
+    """The batch commands as float arrays ``(n,)`` (non-finite values are the caller's to stop;
+    robots that have finished may return anything: their commands are not used)."""
     try:
         steering, speed = np.asarray(steering, dtype=float), np.asarray(speed, dtype=float)
         if steering.shape != (n,) or speed.shape != (n,):
@@ -40,33 +48,25 @@ def check_commands(steering, speed, active, n: int, controller: str, step: int):
     except (TypeError, ValueError):
         raise CommandError(f"returned steering {steering!r} and speed {speed!r}, not {n} numbers each",
                            source=f"controller {controller}", field=f"step {step}") from None
-    if np.isfinite(steering).all() and np.isfinite(speed).all():
-        return steering, speed
-    bad = np.flatnonzero(np.asarray(active, dtype=bool) & ~(np.isfinite(steering) & np.isfinite(speed)))
-    if bad.size:
-        i = int(bad[0])
-        raise CommandError(f"returned a non-finite command for robot {i} (steering {float(steering[i])!r}, "
-                           f"speed {float(speed[i])!r})", source=f"controller {controller}", field=f"step {step}")
     return steering, speed
 
 
-def check_state(state, controller: str, step: int, history=None) -> None:
-    """After a compiled navigator's steps: the pose and command of every robot finite (the
-    navigator decides inside the compiled call, so its commands are checked in the state; the
-    simulator does so every few steps). With ``history`` (the states recorded so far, one per
-    step) the first step that went non-finite is named, else the step ``step`` it was found by."""
+def invalid_states(state, step: int, history=None) -> dict[int, tuple[int, str]]:
+    """After a compiled navigator's steps (it decides inside the compiled call, so its commands
+    are found in the state; the simulator looks every few steps): ``{robot: (steps, reason)}``
+    of each robot whose pose or command is not finite — ``steps`` the commands it took before the
+    bad one and ``reason`` of :func:`invalid_reason`. With ``history`` (the states recorded so
+    far, one per step) the first bad step is found; without, the robot is named ``by step``."""
     moved = state[:, step_kernel.X:step_kernel.SPEED + 1]
-    if np.isfinite(moved).all():
-        return
-    i = int(np.flatnonzero(~np.isfinite(moved).all(axis=1))[0])
-    where = f"by step {step}"
-    if history:
-        step = next(k for k, past in enumerate(history)
-                    if not np.isfinite(past[i, step_kernel.X:step_kernel.SPEED + 1]).all())
-        state, where = history[step], f"step {step}"
-    steering, speed = float(state[i, step_kernel.STEERING]), float(state[i, step_kernel.SPEED])
-    raise CommandError(f"returned a non-finite command for robot {i} (steering {steering!r}, speed {speed!r})",
-                       source=f"controller {controller}", field=where)
+    found = {}
+    for i in np.flatnonzero(~np.isfinite(moved).all(axis=1)):
+        row, where, steps = state[i], f"by step {step}", step
+        if history:
+            bad = next(k for k, past in enumerate(history)
+                       if not np.isfinite(past[i, step_kernel.X:step_kernel.SPEED + 1]).all())
+            row, where, steps = history[bad][i], f"step {bad - 1}", bad - 1
+        found[int(i)] = (steps, invalid_reason(where, row[step_kernel.STEERING], row[step_kernel.SPEED]))
+    return found
 
 
 def check_starts(starts) -> np.ndarray:

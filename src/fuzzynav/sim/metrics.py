@@ -8,7 +8,9 @@ the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
 ≤ 0.2 m/s for a robot that stops at its goal as Table IV.1's does), ``final_distance_m`` (to the
 goal / current waypoint / target), ``steering_effort_rad`` (mean |α|), ``steering_variation_rad``
 (Σ |Δα|) and ``collision_by`` (``"robot"`` or ``"obstacle"``: who moved into whom,
-:mod:`fuzzynav.sim.fault`; None without a collision). With moving obstacles the clearances are
+:mod:`fuzzynav.sim.fault`; None without a collision) and ``invalid_command`` (the outcome
+``"invalid_command"``: the controller returned a NaN or infinite command, and this says at which
+step and what, e.g. ``"step 3: steering nan, speed 1.0"``; None otherwise). With moving obstacles the clearances are
 measured to where they are at each step.
 Path tasks add ``completed``, ``waypoints_reached``, ``mean_cross_track_m`` and
 ``max_cross_track_m`` (distance from each visited position to the path polyline, thesis §V.4).
@@ -61,6 +63,7 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
         "reached_goal": trace.reached,
         "collision": trace.collision,
         "collision_by": trace.collision_by,
+        "invalid_command": trace.invalid_command,
         "timeout": trace.outcome == "timeout",
         "time_s": round(trace.time, 10),
         "steps": trace.steps,

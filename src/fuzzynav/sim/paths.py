@@ -21,6 +21,7 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.world.scenario import DEFAULT_PATH_SPEED, DEFAULT_PATH_TOLERANCE, scenario_from_dict
 
@@ -44,8 +45,7 @@ def segment(start, end) -> np.ndarray:
 
 def star_lines(center=STAR_CENTER, length: float = 8.0, angles=STAR_ANGLES) -> list[np.ndarray]:
     """Straight lines T1…T6 from ``center`` in the directions ``angles`` (Figs V.10, V.18, V.26)."""
-    if not (math.isfinite(length) and length > 0):
-        raise InputError(f"must be a finite number > 0, got {length!r}", field="length")
+    validation.positive(length, field="length")
     c = np.asarray(center, dtype=float)
     return [segment(c, c + length * np.array([math.cos(a), math.sin(a)])) for a in angles]
 

@@ -11,6 +11,8 @@
 3. kinematic step (eq IV.2 or the exact arc) of the robots still running;
 4. stop tests on the new state, in this order: collision (footprint disc vs obstacles and
    boundary), task done (goal within tolerance / last waypoint / target captured), max_time;
+   a robot whose command is NaN or infinite is stopped before it moves, with the outcome
+   ``"invalid_command"`` and the reason in its trace (:mod:`fuzzynav.sim.commands`);
 5. sense: range rings, nearest obstacle (D_ro, θ_o), the task's target; the
    :class:`BatchObservation` is built when asked for.
 
@@ -35,13 +37,19 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
-from fuzzynav.errors import CommandError
 from fuzzynav.kernels import layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
-from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
+from fuzzynav.sim.commands import (
+    INVALID_COMMAND,
+    check_commands,
+    check_starts,
+    command_values,
+    invalid_reason,
+    invalid_states,
+)
 from fuzzynav.sim.fault import collision_by
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
@@ -55,7 +63,7 @@ from fuzzynav.world.world import add_noise
 _CHECK_EVERY = 32
 _OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
 _STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
-OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout"}
+OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout", INVALID_COMMAND: "invalid_command"}
 
 
 def default_ring(scenario: Scenario, controller) -> SensorRing:
@@ -135,6 +143,7 @@ class BatchSimulator:
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position(0.0)
         self._fault = np.full(self.n, "robot", dtype=object)
+        self._invalid: list[str | None] = [None] * self.n  # why a robot stopped on a non-finite command
         if self._movers.shape[0]:
             self._scene[:] = self._base
             traffic.place(self._base, self._movers, self._offsets(0), self._scene)
@@ -183,7 +192,7 @@ class BatchSimulator:
 
     @property
     def status(self) -> np.ndarray:
-        """``(N,)`` outcome codes: RUNNING, REACHED, COLLISION, TIMEOUT."""
+        """``(N,)`` outcome codes: RUNNING, REACHED, COLLISION, TIMEOUT, INVALID_COMMAND."""
         return self._status[:, step_kernel.OUTCOME]
 
     @property
@@ -234,13 +243,17 @@ class BatchSimulator:
         """Commands of the Python controllers, written into the state of the running robots."""
         if self.batch:
             out = self.controllers[0].act_batch(obs)
-            steering, speed = check_commands(out[0], out[1], obs.active, self.n, self.controller_name, self.k)
+            steering, speed = check_commands(out[0], out[1], self.n, self.controller_name, self.k)
             labels = list(out[2]) if len(out) > 2 else [""] * self.n
         else:
             steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
             for i in np.flatnonzero(obs.active):
                 command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
                 steering[i], speed[i], labels[i] = command_values(command, self.controller_name, self.k)
+        finite = np.isfinite(steering) & np.isfinite(speed)
+        for i in np.flatnonzero(obs.active & ~finite):  # stopped before the command reaches the robot
+            self._stop(int(i), self.k, invalid_reason(f"step {self.k}", steering[i], speed[i]))
+        steering, speed = np.where(finite, steering, 0.0), np.where(finite, speed, 0.0)
         if self._running == self.n:
             self._state[:, step_kernel.STEERING], self._state[:, step_kernel.SPEED] = steering, speed
         else:
@@ -264,9 +277,11 @@ class BatchSimulator:
             self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
                                              self._movers, offsets, self._scene, self.k, self._state, self._ranges,
                                              self._status)
-        except ValueError as error:  # a compiled navigator refusing a non-finite input
-            raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
-                               field=f"step {self.k}") from None
+        except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it
+            live = np.flatnonzero(self.active)
+            broken = [i for i in live if not np.isfinite(self._state[i, step_kernel.X:step_kernel.SPEED + 1]).all()]
+            for i in broken or live:
+                self._stop(int(i), int(self.steps[i]), f"step {self.k - 1}: {error}")
         self._observation = None
         if moving and self._running < running_before:  # someone stopped: a collision this step?
             hit = (self._status[:, step_kernel.OUTCOME] == COLLISION) & (self._status[:, step_kernel.STEPS] == self.k)
@@ -281,7 +296,16 @@ class BatchSimulator:
             self._history["behaviour"].append(labels)
             self._record_state()
         if self._compiled is not None and (self.k % _CHECK_EVERY == 0 or not self._running):
-            check_state(self._state, self.controller_name, self.k, self._history["state"] if self.record else None)
+            found = invalid_states(self._state, self.k, self._history["state"] if self.record else None)
+            for i, (steps, reason) in found.items():
+                if self._invalid[i] is None:
+                    self._stop(i, steps, reason)
+
+    def _stop(self, i: int, steps: int, reason: str) -> None:
+        """End robot ``i``'s episode after ``steps`` commands: its command was not finite (``reason``)."""
+        self._status[i, step_kernel.OUTCOME], self._status[i, step_kernel.STEPS] = INVALID_COMMAND, steps
+        self._invalid[i] = reason
+        self._running = int(np.count_nonzero(self._status[:, step_kernel.OUTCOME] == RUNNING))
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
@@ -301,13 +325,18 @@ class BatchSimulator:
 
     # -- results -----------------------------------------------------------------------------
     def outcomes(self) -> list[str]:
-        """Outcome of each robot: ``"reached"``, ``"collision"``, ``"timeout"`` (or ``"running"``)."""
+        """Outcome of each robot: ``"reached"``, ``"collision"``, ``"timeout"``, ``"invalid_command"``
+        (or ``"running"``)."""
         return [OUTCOME_NAMES.get(int(s), "running") for s in self.status]
 
     def collisions_by(self) -> list[str | None]:
         """Who moved into whom in each robot's collision (:mod:`fuzzynav.sim.fault`): ``"robot"``,
         ``"obstacle"``, or ``None`` for a robot that did not collide."""
         return [str(by) if s == COLLISION else None for s, by in zip(self.status, self._fault)]
+
+    def invalid_commands(self) -> list[str | None]:
+        """Why each robot stopped on a non-finite command (``"step 3: steering nan, speed 1.0"``), or None."""
+        return list(self._invalid)
 
     def trace(self, i: int = 0) -> Trace:
         """The :class:`Trace` of robot ``i`` (needs ``record=True``)."""
@@ -338,6 +367,7 @@ class BatchSimulator:
             outcome=self.outcomes()[i],
             robot_radius=self.params.radius,
             collision_by=self.collisions_by()[i],
+            invalid_command=self._invalid[i],
             obstacle_offsets=(np.array(self._history["obstacles"][: k + 1]) if len(self._movers) else None),
         )
 

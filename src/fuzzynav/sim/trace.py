@@ -12,13 +12,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-OUTCOMES = ("reached", "collision", "timeout")
+OUTCOMES = ("reached", "collision", "timeout", "invalid_command")
 
 
 @dataclass(frozen=True)
 class Trace:
     """One robot's episode. ``outcome`` is ``"reached"`` (goal reached, path completed or target
-    captured), ``"collision"`` (footprint touched an obstacle or the boundary) or ``"timeout"``."""
+    captured), ``"collision"`` (footprint touched an obstacle or the boundary), ``"timeout"`` or
+    ``"invalid_command"`` (the controller returned a NaN or infinite command: ``invalid_command``
+    says at which step and what, :mod:`fuzzynav.sim.commands`)."""
 
     scenario: str
     controller: str
@@ -38,6 +40,7 @@ class Trace:
     robot_radius: float
     collision_by: str | None = None  # "robot" | "obstacle" after a collision (fuzzynav.sim.fault)
     obstacle_offsets: np.ndarray | None = None  # (K+1, M, 2) translations of the moving obstacles, None: static
+    invalid_command: str | None = None  # "step 3: steering nan, speed 1.0" when the outcome is "invalid_command"
 
     @property
     def steps(self) -> int:

@@ -22,7 +22,8 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, LocalMap, positive
+from fuzzynav.control.classic.local_map import Body, LocalMap
+from fuzzynav.validation import positive
 
 
 class PotentialField(Controller):
@@ -36,8 +37,8 @@ class PotentialField(Controller):
                  attraction: float = 1.0, repulsion: float = 0.3, influence: float = 1.5, lookahead: float = 1.0,
                  memory: int = 10):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.attraction, self.repulsion = positive(attraction, "attraction"), positive(repulsion, "repulsion")
-        self.influence, self.lookahead = positive(influence, "influence"), positive(lookahead, "lookahead")
+        self.attraction, self.repulsion = positive(attraction, field="attraction"), positive(repulsion, field="repulsion")
+        self.influence, self.lookahead = positive(influence, field="influence"), positive(lookahead, field="lookahead")
         self.map = LocalMap(memory)
 
     def reset(self, rng=None) -> None:

@@ -45,8 +45,9 @@ from collections import Counter
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, arcs, positive
+from fuzzynav.control.classic.local_map import Body, arcs
 from fuzzynav.errors import InputError
+from fuzzynav.validation import positive
 from fuzzynav.world.hybrid_astar import Car, Search, hybrid_astar
 from fuzzynav.world.planning import shortest_path
 
@@ -134,9 +135,9 @@ class AStarPurePursuit(Controller):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.inflation = float(inflation)
         self.search = Search(weight=float(weight), comfort=float(comfort))
-        self.lookahead, self.lateral = positive(lookahead, "lookahead"), positive(lateral, "lateral")
+        self.lookahead, self.lateral = positive(lookahead, field="lookahead"), positive(lateral, field="lateral")
         self.check_margin = float(check_margin)
-        self.reverse_speed = positive(reverse_speed, "reverse_speed")
+        self.reverse_speed = positive(reverse_speed, field="reverse_speed")
         self.hybrid = planner == "hybrid"
         self.steering = np.linspace(-max_steering, max_steering, 15)
         self.world = None

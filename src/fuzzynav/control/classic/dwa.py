@@ -31,7 +31,8 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, LocalMap, arcs, free_length, positive
+from fuzzynav.control.classic.local_map import Body, LocalMap, arcs, free_length
+from fuzzynav.validation import positive
 
 
 class DynamicWindow(Controller):
@@ -47,9 +48,9 @@ class DynamicWindow(Controller):
                  lookahead: float = 1.0, heading: float = 1.0, clearance: float = 1.0, velocity: float = 0.2,
                  n_steering: int = 15, n_speeds: int = 5, memory: int = 10):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.acceleration, self.braking = positive(acceleration, "acceleration"), positive(braking, "braking")
-        self.margin, self.horizon = float(margin), positive(horizon, "horizon")
-        self.lookahead = positive(lookahead, "lookahead")
+        self.acceleration, self.braking = positive(acceleration, field="acceleration"), positive(braking, field="braking")
+        self.margin, self.horizon = float(margin), positive(horizon, field="horizon")
+        self.lookahead = positive(lookahead, field="lookahead")
         self.weights = np.array([float(heading), float(clearance), float(velocity)])
         self.steering = np.linspace(-max_steering, max_steering, int(n_steering))
         self.n_speeds = int(n_speeds)

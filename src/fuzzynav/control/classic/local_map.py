@@ -14,16 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fuzzynav.errors import InputError
 from fuzzynav.kernels import guard
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-
-
-def positive(value, field: str) -> float:
-    """``value`` as a float, or an :class:`InputError` on ``field`` unless finite and > 0."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not (math.isfinite(value) and value > 0):
-        raise InputError(f"must be a finite number > 0, got {value!r}", field=field)
-    return float(value)
+from fuzzynav.validation import positive
 
 
 @dataclass(frozen=True)
@@ -38,7 +31,7 @@ class Body:
 
     def __post_init__(self):
         for name in ("radius", "wheelbase", "max_steering", "max_speed"):
-            positive(getattr(self, name), name)
+            positive(getattr(self, name), field=name)
 
     @property
     def turn_radius(self) -> float:

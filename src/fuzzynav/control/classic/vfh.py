@@ -28,7 +28,8 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, LocalMap, positive
+from fuzzynav.control.classic.local_map import Body, LocalMap
+from fuzzynav.validation import positive
 
 
 class VectorFieldHistogram(Controller):
@@ -43,10 +44,10 @@ class VectorFieldHistogram(Controller):
                  sector: float = 5.0, window: float = 3.0, safety: float = 0.15, lookahead: float = 1.0,
                  tau_low: float = 0.4, tau_high: float = 0.8, s_max: int = 16, h_m: float = 3.0, memory: int = 10):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.n = int(round(360.0 / positive(sector, "sector")))
+        self.n = int(round(360.0 / positive(sector, field="sector")))
         self.width = 2 * math.pi / self.n
-        self.window, self.safety = positive(window, "window"), float(safety)
-        self.lookahead, self.h_m = positive(lookahead, "lookahead"), positive(h_m, "h_m")
+        self.window, self.safety = positive(window, field="window"), float(safety)
+        self.lookahead, self.h_m = positive(lookahead, field="lookahead"), positive(h_m, field="h_m")
         self.tau_low, self.tau_high, self.s_max = float(tau_low), float(tau_high), int(s_max)
         self.directions = np.angle(np.exp(1j * np.arange(self.n) * self.width))  # sector k ↦ k·width, wrapped
         self.map = LocalMap(memory)

@@ -26,33 +26,12 @@ from fuzzynav.learn.envs import GridPremise, RandomObstacles, RobotEnv
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward
 from fuzzynav.learn.schedules import ExponentialDecay
-from fuzzynav.learn.tasks.common import (
-    BATCH,
-    GOAL_TOLERANCE,
-    PI,
-    STEERING3,
-    WORLD_CONVERGENCE,
-    Phase,
-    checkpoint_path,
-    episode_budget,
-    extraction_tolerance,
-    finish,
-    fql_learner,
-    grid_system,
-    load_fuzzy_model,
-    output_variable,
-    protocol_record,
-    robots,
-    rules_changed,
-    run_phases,
-    steering_episodes,
-    summarise,
-)
+from fuzzynav.learn.tasks import common
 from fuzzynav.robot.sensors import SensorRing
 
 AVOID_D_MIN, AVOID_D_SAFE = 1.5, 3.0  # d_m, d_s of Fig VI.17 (m): those of fuzzy-5b-thesis (Fig IV.18)
 AVOID_SPEED = 1.0  # m/s: constant speed of the avoider while its steering is learned
-AVOID_STEERING = STEERING3  # eq VI.18: {−π/5, 0, π/5}
+AVOID_STEERING = common.STEERING3  # eq VI.18: {−π/5, 0, π/5}
 AVOID_SPEEDS = {"F": 0.5, "M": 1.0, "G": 1.8}  # candidate speeds of the avoider (m/s)
 AVOID_MAX_STEPS = 400
 AVOID_BATCH = 10  # parallel episodes (one random world) per batch of the avoider — see docs/training.md
@@ -64,7 +43,7 @@ def avoid_rate() -> ExponentialDecay:
     """β of the avoider's corrections (every robot of a batch adds one): fast while the first
     worlds teach the most, then down to the per-correction rate AVOID_RATE / BATCH (0.02) whose
     qualities average enough corrections for the extraction tolerance to hold."""
-    return ExponentialDecay(AVOID_RATE_START, AVOID_RATE_DECAY, AVOID_RATE / BATCH)
+    return ExponentialDecay(AVOID_RATE_START, AVOID_RATE_DECAY, AVOID_RATE / common.BATCH)
 
 
 AVOID_DECISION = 3  # steps Δt per learning decision (0.3 s)
@@ -129,19 +108,20 @@ def avoid_prior(open_side: bool = AVOID_OPEN) -> tuple:
 def avoid_template(open_side: bool = AVOID_OPEN) -> FuzzySystem:
     """The avoider's premise: the rules of its whole input grid, the free rules included (every
     conclusion Z until learned)."""
-    return grid_system(avoid_inputs(open_side), [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
-                       [["Z"] * (free_rules(open_side)[-1] + 1)], "premise", "")
+    return common.grid_system(avoid_inputs(open_side),
+                              [common.output_variable("alpha", AVOID_STEERING, (-common.PI / 5, common.PI / 5))],
+                              [["Z"] * (free_rules(open_side)[-1] + 1)], "premise", "")
 
 
 def avoid_system(steering_index, speed_index=None, open_side: bool = AVOID_OPEN) -> FuzzySystem:
     """The learned avoider: the rules of Fig VI.17 with an obstacle near (the free rules of
     :func:`free_rules` excluded), conclusions by candidate index (steering, and speed if given),
     built by the one extractor :func:`~fuzzynav.learn.extraction.rule_table`."""
-    outputs = [(output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5)),
+    outputs = [(common.output_variable("alpha", AVOID_STEERING, (-common.PI / 5, common.PI / 5)),
                 _avoid_candidates(AVOID_STEERING, open_side), steering_index)]
     if speed_index is not None:
-        outputs.append((output_variable("v", AVOID_SPEEDS, (0.0, 4.0)), _avoid_candidates(AVOID_SPEEDS, open_side),
-                        speed_index))
+        outputs.append((common.output_variable("v", AVOID_SPEEDS, (0.0, 4.0)),
+                        _avoid_candidates(AVOID_SPEEDS, open_side), speed_index))
     extra = " and which side is more open (a deviation: 16 rules instead of 8)" if open_side else ""
     return rule_table(avoid_template(open_side), outputs, rules=free_rules(open_side)[0], name="fql-avoid",
                       description="Obstacle avoidance learned by fuzzy Q-learning (thesis §VI.5.2, eqs VI.18-VI.21) "
@@ -180,7 +160,7 @@ def initial_tables(prior: str, open_side: bool = AVOID_OPEN) -> tuple[tuple, int
 
 def prior_tolerance(prior: str, batch: int) -> float:
     """Extraction tolerance for a prior: the best quality (none), else :data:`AVOID_TOLERANCE`."""
-    return extraction_tolerance(batch, AVOID_TOLERANCE) if prior == "none" else AVOID_TOLERANCE
+    return common.extraction_tolerance(batch, AVOID_TOLERANCE) if prior == "none" else AVOID_TOLERANCE
 
 
 def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_side: bool = AVOID_OPEN,
@@ -214,25 +194,27 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
 
     steering_prior, speed_prior = initial_tables(prior, open_side)
     tolerance = prior_tolerance(prior, batch)
-    steer = fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
+    steer = common.fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
                         prior=steering_prior, alpha=avoid_rate())
-    n_steer = steering_episodes(episodes, AVOID_SPEED_SHARE)
+    n_steer = common.steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, observe, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
-                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
+                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
-    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
+    yield common.Phase("steering", env, steer, n_steer, common.checkpoint_path(out, "steering"),
+                       common.WORLD_CONVERGENCE)
 
     steering_rules = steer.greedy_indices(tolerance)  # the extracted steering, frozen from here on
 
     def speed_command(a, s):
         return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
-    speed = fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=speed_prior,
+    speed = common.fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=speed_prior,
                         alpha=avoid_rate())
     env = RobotEnv(layout, observe, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
-                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=GOAL_TOLERANCE, sensors=sensors,
+                   max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
-    yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
+    yield common.Phase("speed", env, speed, episodes - n_steer, common.checkpoint_path(out, "speed"),
+                       common.WORLD_CONVERGENCE)
 
 
 AVOID_SPEED_SHARE = 0.5  # the thesis: ~250 episodes steering, ~2,000 speed (Fig VI.22)
@@ -245,19 +227,19 @@ def train_fql_avoid(request, open_side: bool = AVOID_OPEN, watch=None) -> dict:
     rules instead of the thesis' 8). The model's ``training`` records the protocol, the prior and
     ``rules_changed``: how many learned rules conclude otherwise than the initial table.
     ``watch(phase)``, if given, sees each phase before it runs (e.g. to record its episodes)."""
-    prior, batch = request.prior or "none", robots(request)
-    phases = fql_avoid_phases(request.out, episode_budget(request, AVOID_EPISODES), batch, open_side, prior)
+    prior, batch = request.prior or "none", common.robots(request)
+    phases = fql_avoid_phases(request.out, common.episode_budget(request, AVOID_EPISODES), batch, open_side, prior)
     if watch is not None:
         phases = (watch(phase) or phase for phase in phases)
-    phases, learners = run_phases(phases, request)
+    phases, learners = common.run_phases(phases, request)
     learned, tolerance = free_rules(open_side)[0], prior_tolerance(prior, batch)
     system = avoid_system(learners["steering"].greedy_indices(tolerance)[0, 0, :learned],
                           learners["speed"].greedy_indices(tolerance)[0, 0, :learned], open_side)
-    changed = rules_changed([learners["steering"], learners["speed"]], tolerance, rules=learned)
+    changed = common.rules_changed([learners["steering"], learners["speed"]], tolerance, rules=learned)
     document = {"kind": "fql-avoid", **to_document(system), "constant_speed": AVOID_SPEED,
-                "training": {"task": "fql-avoid", "seed": request.seed, **protocol_record(batch, prior),
-                             "rules_changed": changed, "rules_learned": int(learned), **summarise(phases)}}
-    return finish(request, document, phases, "fql-avoid")
+                "training": {"task": "fql-avoid", "seed": request.seed, **common.protocol_record(batch, prior),
+                             "rules_changed": changed, "rules_learned": int(learned), **common.summarise(phases)}}
+    return common.finish(request, document, phases, "fql-avoid")
 
 
 def load_model(document: dict, path) -> LearnedAvoidanceNavigator:
@@ -270,4 +252,4 @@ def load_model(document: dict, path) -> LearnedAvoidanceNavigator:
             raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
         return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
 
-    return load_fuzzy_model(document, path, build)
+    return common.load_fuzzy_model(document, path, build)

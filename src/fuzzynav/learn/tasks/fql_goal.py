@@ -28,33 +28,7 @@ from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import FixedGoal, GridPremise, RandomGoal, RobotEnv
 from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import GoalSpeedReward, GoalSteeringReward
-from fuzzynav.learn.tasks.common import (
-    GOAL_TOLERANCE,
-    MAX_STEPS,
-    PI,
-    SPEED3,
-    SPEED_CANDIDATES,
-    SPEED_SHARE,
-    STEERING3,
-    STEERING5,
-    STEERING_SPEED,
-    TOLERANCE,
-    Phase,
-    checkpoint_path,
-    episode_budget,
-    extraction_tolerance,
-    finish,
-    fql_learner,
-    grid_system,
-    load_fuzzy_model,
-    output_variable,
-    protocol_record,
-    robots,
-    rules_changed,
-    run_phases,
-    steering_episodes,
-    summarise,
-)
+from fuzzynav.learn.tasks import common
 
 
 def goal_partition_15() -> list[Variable]:
@@ -68,8 +42,9 @@ def goal_partition_15() -> list[Variable]:
         "M": Triangular(0.3, 1.0, 3.0),
         "G": Trapezoidal(1.0, 3.0, D_MAX_GOAL, D_MAX_GOAL),
     })
-    peaks = (-PI / 2, -PI / 6, 0.0, PI / 6, PI / 2)
-    theta = Variable("theta", (-PI, PI), strong_partition(peaks, ("NG", "NM", "Z", "PM", "PG"), (-PI, PI)))
+    peaks = (-common.PI / 2, -common.PI / 6, 0.0, common.PI / 6, common.PI / 2)
+    theta = Variable("theta", (-common.PI, common.PI),
+                     strong_partition(peaks, ("NG", "NM", "Z", "PM", "PG"), (-common.PI, common.PI)))
     return [drg, theta]
 
 
@@ -105,9 +80,9 @@ class GoalFQL:
 
 
 GOAL_TASKS = {
-    "fql-goal": GoalFQL("fql-goal", goal_partition_15, STEERING3),
-    "fql-goal-35": GoalFQL("fql-goal-35", goal_partition_35, STEERING5, episodes=4000),
-    "fql-goal-traces": GoalFQL("fql-goal-traces", goal_partition_15, STEERING3, lam=0.7, learn_speed=False,
+    "fql-goal": GoalFQL("fql-goal", goal_partition_15, common.STEERING3),
+    "fql-goal-35": GoalFQL("fql-goal-35", goal_partition_35, common.STEERING5, episodes=4000),
+    "fql-goal-traces": GoalFQL("fql-goal-traces", goal_partition_15, common.STEERING3, lam=0.7, learn_speed=False,
                                episodes=1500),
 }
 
@@ -116,41 +91,41 @@ GOAL_TASKS = {
 def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = 1):
     """Yields the phases of an FQL goal task (``batch`` robots per batch: 1 is the thesis'
     protocol); the speed phase is built from the trained steering."""
-    tolerance = extraction_tolerance(batch, TOLERANCE)
+    tolerance = common.extraction_tolerance(batch, common.TOLERANCE)
     inputs = task.inputs()
-    alpha = output_variable("alpha", task.steering, (-PI / 5, PI / 5))
-    template = grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
+    alpha = common.output_variable("alpha", task.steering, (-common.PI / 5, common.PI / 5))
+    template = common.grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
                            task.name, "premise")
     premise = GridPremise(template)
     layout = FixedGoal() if task.fixed else RandomGoal()
     steer_values = np.array(list(task.steering.values()))
-    n_steer = steering_episodes(episodes, SPEED_SHARE if task.learn_speed else 0.0)
-    steer = fql_learner(premise, steer_values, task.lam, batch)
-    env = RobotEnv(layout, lambda s: s.goal, lambda a, s: (a[:, 0], STEERING_SPEED), GoalSteeringReward(),
-                   batch=batch, max_steps=MAX_STEPS, tolerance=GOAL_TOLERANCE)
-    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"))
+    n_steer = common.steering_episodes(episodes, common.SPEED_SHARE if task.learn_speed else 0.0)
+    steer = common.fql_learner(premise, steer_values, task.lam, batch)
+    env = RobotEnv(layout, lambda s: s.goal, lambda a, s: (a[:, 0], common.STEERING_SPEED), GoalSteeringReward(),
+                   batch=batch, max_steps=common.MAX_STEPS, tolerance=common.GOAL_TOLERANCE)
+    yield common.Phase("steering", env, steer, n_steer, common.checkpoint_path(out, "steering"))
     if task.learn_speed:
-        speed = fql_learner(premise, speed_candidates(inputs), 0.0, batch)
+        speed = common.fql_learner(premise, speed_candidates(inputs), 0.0, batch)
         env = RobotEnv(layout, lambda s: s.goal,
                        lambda a, s: (steer.greedy_action(s.goal, tolerance)[:, 0], a[:, 0]), GoalSpeedReward(),
-                       batch=batch, max_steps=MAX_STEPS // SPEED_DECISION, tolerance=GOAL_TOLERANCE,
-                       decision_steps=SPEED_DECISION, start_speed=STEERING_SPEED, timeout_reward=SPEED_TIMEOUT)
-        yield Phase("speed", env, speed, episodes - n_steer, checkpoint_path(out, "speed"))
+                       batch=batch, max_steps=common.MAX_STEPS // SPEED_DECISION, tolerance=common.GOAL_TOLERANCE,
+                       decision_steps=SPEED_DECISION, start_speed=common.STEERING_SPEED, timeout_reward=SPEED_TIMEOUT)
+        yield common.Phase("speed", env, speed, episodes - n_steer, common.checkpoint_path(out, "speed"))
 
 
 def speed_candidates(inputs) -> np.ndarray:
     """(R, 3) candidate speeds of every rule of the grid over ``inputs`` (d_rg first, slowest):
     :data:`~fuzzynav.learn.tasks.common.SPEED_CANDIDATES` by the position of the rule's d_rg term."""
-    per_term = [SPEED_CANDIDATES[min(k, len(SPEED_CANDIDATES) - 1)] for k in range(len(inputs[0].terms))]
+    per_term = [common.SPEED_CANDIDATES[min(k, len(common.SPEED_CANDIDATES) - 1)] for k in range(len(inputs[0].terms))]
     rows = math.prod(len(v.terms) for v in inputs[1:])
-    return np.array([[SPEED3[label] for label in per_term[r // rows]] for r in range(len(per_term) * rows)])
+    return np.array([[common.SPEED3[label] for label in per_term[r // rows]] for r in range(len(per_term) * rows)])
 
 
-def goal_system(task: GoalFQL, learners: dict, tolerance: float = TOLERANCE) -> FuzzySystem:
+def goal_system(task: GoalFQL, learners: dict, tolerance: float = common.TOLERANCE) -> FuzzySystem:
     """The extracted controller: every rule with its best conclusion(s), as a TS0 system
     (:func:`~fuzzynav.learn.fql.extract_system`)."""
-    outputs = {"steering": output_variable("alpha", task.steering, (-PI / 5, PI / 5)),
-               "speed": output_variable("v", SPEED3, (0.0, 4.0))}
+    outputs = {"steering": common.output_variable("alpha", task.steering, (-common.PI / 5, common.PI / 5)),
+               "speed": common.output_variable("v", common.SPEED3, (0.0, 4.0))}
     learned = [name for name in outputs if name in learners]
     rules = math.prod(len(v.terms) for v in task.inputs())
     return extract_system([learners[name] for name in learned], [outputs[name] for name in learned],
@@ -162,17 +137,17 @@ def goal_system(task: GoalFQL, learners: dict, tolerance: float = TOLERANCE) -> 
 
 def train_goal_fql(task: GoalFQL, request) -> dict:
     """Train ``task`` and write its model (the steering, and the speed if the task learns it)."""
-    batch = robots(request)
-    phases, learners = run_phases(goal_fql_phases(task, request.out, episode_budget(request, task.episodes), batch),
-                                  request)
-    tolerance = extraction_tolerance(batch, TOLERANCE)
+    batch = common.robots(request)
+    episodes = common.episode_budget(request, task.episodes)
+    phases, learners = common.run_phases(goal_fql_phases(task, request.out, episodes, batch), request)
+    tolerance = common.extraction_tolerance(batch, common.TOLERANCE)
     system = goal_system(task, learners, tolerance)
     learned = list(learners.values())
-    document = {"kind": "fql-goal", **to_document(system), "constant_speed": STEERING_SPEED,
-                "training": {"task": task.name, "seed": request.seed, **protocol_record(batch, "none"),
-                             "rules_changed": rules_changed(learned, tolerance),
-                             **summarise(phases)}}
-    return finish(request, document, phases, task.name)
+    document = {"kind": "fql-goal", **to_document(system), "constant_speed": common.STEERING_SPEED,
+                "training": {"task": task.name, "seed": request.seed, **common.protocol_record(batch, "none"),
+                             "rules_changed": common.rules_changed(learned, tolerance),
+                             **common.summarise(phases)}}
+    return common.finish(request, document, phases, task.name)
 
 
 def train_fql_goal(request) -> dict:
@@ -192,4 +167,5 @@ def train_fql_goal_traces(request) -> dict:
 
 def load_model(document: dict, path) -> FuzzyGoalSeeker:
     """Model loader of kind ``fql-goal``: the learned rule base over (d_rg, θ_r − θ_d)."""
-    return load_fuzzy_model(document, path, lambda system, speed, name: FuzzyGoalSeeker(system, speed, name=name))
+    return common.load_fuzzy_model(document, path,
+                                   lambda system, speed, name: FuzzyGoalSeeker(system, speed, name=name))

@@ -23,25 +23,7 @@ from fuzzynav.learn.envs import GridPremise, RobotEnv, WallCourse
 from fuzzynav.learn.extraction import Interpretations
 from fuzzynav.learn.fql import extract_system
 from fuzzynav.learn.rewards import WallSpeedReward, WallSteeringReward
-from fuzzynav.learn.tasks.common import (
-    BATCH,
-    PI,
-    SPEED_SHARE,
-    WORLD_CONVERGENCE,
-    Phase,
-    checkpoint_path,
-    episode_budget,
-    extraction_tolerance,
-    finish,
-    fql_learner,
-    load_fuzzy_model,
-    protocol_record,
-    robots,
-    rules_changed,
-    run_phases,
-    steering_episodes,
-    summarise,
-)
+from fuzzynav.learn.tasks import common
 from fuzzynav.learn.tasks.fql_avoid import AVOID_RATE
 from fuzzynav.robot.sensors import SensorRing
 
@@ -57,7 +39,7 @@ def wall_parts():
     """The hand-made follower (Table VI.2), its premise, and the candidates of every rule."""
     handmade = wall_follower()
     values = handmade.compiled.values  # (R, 2): α and V_r of every rule
-    alpha = np.clip(values[:, :1] + WALL_SPREAD * np.array([-1.0, 0.0, 1.0]), -PI / 4, PI / 4)
+    alpha = np.clip(values[:, :1] + WALL_SPREAD * np.array([-1.0, 0.0, 1.0]), -common.PI / 4, common.PI / 4)
     speed = np.clip(values[:, 1:] * np.array(WALL_SPEED_SCALE), 0.0, 4.0)
     return handmade, GridPremise(handmade), alpha, speed
 
@@ -69,7 +51,7 @@ WALL_SENSING = "rays"  # the hand-made follower's single rays (control.learned.S
 WALL_REWARD_SENSING = "modules"  # the d_i of the rewards VI.21-VI.22: nearest of each module's three sensors
 
 
-def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str = WALL_SENSING):
+def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing: str = WALL_SENSING):
     """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower:
     the a-priori knowledge the thesis injects here ("le contrôleur précédent est optimisé",
     §VI.5.3.2) is that rule base, each rule's prior being its label's own value (every q still
@@ -88,18 +70,20 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = BATCH, sensing: str =
     def observe(s):
         return inputs(s.ranges)[:, WALL_COLUMNS]
 
-    tolerance = extraction_tolerance(batch, WALL_TOLERANCE)
-    steer = fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
-    n_steer = steering_episodes(episodes, SPEED_SHARE)
+    tolerance = common.extraction_tolerance(batch, WALL_TOLERANCE)
+    steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    n_steer = common.steering_episodes(episodes, common.SPEED_SHARE)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
-    yield Phase("steering", env, steer, n_steer, checkpoint_path(out, "steering"), WORLD_CONVERGENCE)
-    fast = fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    yield common.Phase("steering", env, steer, n_steer, common.checkpoint_path(out, "steering"),
+                       common.WORLD_CONVERGENCE)
+    fast = common.fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), tolerance)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
-    yield Phase("speed", env, fast, episodes - n_steer, checkpoint_path(out, "speed"), WORLD_CONVERGENCE)
+    yield common.Phase("speed", env, fast, episodes - n_steer, common.checkpoint_path(out, "speed"),
+                       common.WORLD_CONVERGENCE)
 
 
 def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING, tolerance: float = WALL_TOLERANCE) -> FuzzySystem:
@@ -111,7 +95,7 @@ def wall_system(handmade, learners: dict, sensing: str = WALL_SENSING, tolerance
         return Interpretations(name, universe, lambda r, j: base[r] + WALL_SUFFIXES[j])
 
     return extract_system([learners["steering"], learners["speed"]],
-                          [interpretations("alpha", (-PI / 4, PI / 4)), interpretations("v", (0.0, 4.0))],
+                          [interpretations("alpha", (-common.PI / 4, common.PI / 4)), interpretations("v", (0.0, 4.0))],
                           tolerance=tolerance, name="fql-wall",
                           description="Wall follower of Table VI.2 optimised by fuzzy Q-learning "
                                       f"(thesis §VI.5.3.2, eqs VI.21-VI.22); sensing: {sensing} "
@@ -125,20 +109,21 @@ WALL_SENSINGS = {"rays": "single rays at -90, 0, +90 degrees, as the hand-made f
 def train_fql_wall(request, sensing: str = WALL_SENSING) -> dict:
     """``fuzzynav train fql-wall``: Table VI.2's interpretations learned (Figs VI.29–VI.30) on the
     hand-made follower's single rays (``sensing``: :data:`WALL_SENSINGS`)."""
-    batch = robots(request)
-    phases, learners = run_phases(fql_wall_phases(request.out, episode_budget(request, 1500), batch, sensing),
-                                  request)
-    tolerance = extraction_tolerance(batch, WALL_TOLERANCE)
+    batch = common.robots(request)
+    episodes = common.episode_budget(request, 1500)
+    phases, learners = common.run_phases(fql_wall_phases(request.out, episodes, batch, sensing), request)
+    tolerance = common.extraction_tolerance(batch, WALL_TOLERANCE)
     system = wall_system(wall_follower(), learners, sensing, tolerance)
     document = {"kind": "fql-wall", "sensing": sensing, **to_document(system),
-                "training": {"task": "fql-wall", "seed": request.seed, **protocol_record(batch, "hand-made follower"),
-                             "rules_changed": rules_changed(list(learners.values()), tolerance),
-                             **summarise(phases)}}
-    return finish(request, document, phases, "fql-wall")
+                "training": {"task": "fql-wall", "seed": request.seed,
+                             **common.protocol_record(batch, "hand-made follower"),
+                             "rules_changed": common.rules_changed(list(learners.values()), tolerance),
+                             **common.summarise(phases)}}
+    return common.finish(request, document, phases, "fql-wall")
 
 
 def load_model(document: dict, path) -> LearnedWallFollower:
     """Model loader of kind ``fql-wall``: the optimised rule base and how it reads its distances
     (``sensing``, default ``"modules"``)."""
-    return load_fuzzy_model(document, path, lambda system, speed, name: LearnedWallFollower(
+    return common.load_fuzzy_model(document, path, lambda system, speed, name: LearnedWallFollower(
         system, document.get("sensing", "modules"), name=name))

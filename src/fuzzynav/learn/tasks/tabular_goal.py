@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.learned import TabularGoalSeeker, finite_numbers, model_name
+from fuzzynav import validation
+from fuzzynav.control.learned import TabularGoalSeeker, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.learn.envs import FixedGoal, RandomGoal, RobotEnv
 from fuzzynav.learn.exploration import EpsilonGreedy
@@ -99,10 +100,10 @@ def load_model(document: dict, path) -> TabularGoalSeeker:
             raise InputError(f"must be a positive integer, got {sectors!r}", field="n_sectors")
         if not isinstance(merge, bool):
             raise InputError(f"must be true or false, got {merge!r}", field="merge_inner")
-        disc = ZoneSectorDiscretiser(finite_numbers(document["zone_edges"], "zone_edges", 1, empty=True), sectors,
+        disc = ZoneSectorDiscretiser(validation.finite_array(document["zone_edges"], field="zone_edges", ndim=1), sectors,
                                      merge)
-        q = finite_numbers(document["q"], "q", 2)
-        steering = finite_numbers(document["steering"], "steering", 1)
+        q = validation.finite_array(document["q"], field="q", ndim=2, empty=False)
+        steering = validation.finite_array(document["steering"], field="steering", ndim=1, empty=False)
         if q.shape != (disc.n_states, steering.size):
             raise InputError(f"Q table of shape {q.shape}, expected {(disc.n_states, steering.size)} "
                              "(states of zone_edges × n_sectors, actions of steering)", field="q")
