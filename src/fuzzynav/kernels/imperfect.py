@@ -49,17 +49,15 @@ def gauss(rng, n):
 
 @jit
 def sense(imperfect, n, ranges, max_range):
-    """Robot ``n``'s ``ranges`` as the real sensor reads them: capped at its reach, a dropout
-    reads the reach, the others get Gaussian noise (kept within [0, reach])."""
+    """Robot ``n``'s ``ranges`` as the real sensor reads them: no echo (the reach) beyond its
+    reach or at a dropout; the echoes get Gaussian noise (kept within [0, reach])."""
     params, _, _, rng = imperfect
     reach = min(max_range, params[REACH])
     for j in range(ranges.shape[0]):
-        if params[DROPOUT] > 0.0 and uniform(rng, n) < params[DROPOUT]:
+        if ranges[j] >= reach or (params[DROPOUT] > 0.0 and uniform(rng, n) < params[DROPOUT]):
             ranges[j] = reach
         elif params[RANGE_SIGMA] > 0.0:
             ranges[j] = min(max(ranges[j] + params[RANGE_SIGMA] * gauss(rng, n), 0.0), reach)
-        else:
-            ranges[j] = min(ranges[j], reach)
 
 
 @jit
