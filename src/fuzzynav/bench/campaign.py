@@ -14,6 +14,8 @@ Files in the output folder:
 - ``cache/shortest/``: the shortest path of each world (:mod:`.measures`).
 - ``fis.json``: the rule-base replacements (``--fis``: role, file, SHA-256 of its content); a
   ``--resume`` with other replacements (or none where there were some) is refused.
+- ``perturb.json``: the robot's imperfections set in every world (``--perturb KEY=VALUE``,
+  :mod:`fuzzynav.robot.imperfections`); a ``--resume`` with others is refused likewise.
 """
 
 from __future__ import annotations
@@ -43,13 +45,15 @@ COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_le
 @dataclass(frozen=True)
 class Plan:
     """What to run: ``suites``, ``controllers`` ((label, spec) pairs), ``seeds`` (count), robot
-    ``radius``, and ``fis``: (role, file) rule-base replacements (``--fis``)."""
+    ``radius``, ``fis``: (role, file) rule-base replacements (``--fis``), and ``perturb``: (key,
+    value) imperfections set in every world (``--perturb``)."""
 
     suites: tuple[Suite, ...]
     controllers: tuple[tuple[str, str], ...]
     seeds: int
     radius: float
     fis: tuple[tuple[str, str], ...] = ()
+    perturb: tuple[tuple[str, float], ...] = ()
 
     def __post_init__(self):
         validation.count(self.seeds, field="--seeds", hi=validation.MAX_SEEDS)
@@ -80,7 +84,7 @@ class Plan:
                     todo = tuple((label, spec) for label, spec in self.controllers
                                  if (suite.name, world, seed, label) not in done)
                     if todo:
-                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir, self.fis))
+                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir, self.fis, self.perturb))
         return cells
 
 
@@ -140,6 +144,20 @@ def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
     write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
 
+def _check_perturbations(out: Path, perturb: tuple, resuming: bool) -> None:
+    """Record the imperfections (``--perturb``) in ``perturb.json``; a campaign whose runs were
+    made with others is refused."""
+    record = {name: value for name, value in perturb}
+    path = out / "perturb.json"
+    if resuming:
+        before = stored.read_perturbations(path) if path.exists() else {}
+        if before != record:
+            raise InputError(f"its runs were made with --perturb {before or 'none'}, this campaign gives "
+                             f"{record or 'none'}: runs of different robots cannot be mixed (resume with the same "
+                             "--perturb, or choose another --out)", source=str(out), field="--perturb")
+    write_text_atomic(path, json.dumps(record, indent=1) + "\n")
+
+
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
                  address: str | None = None, progress: bool = True) -> list[dict]:
     """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
@@ -154,6 +172,7 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
         raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
                          "another --out", source=str(out), field="--out")
     _check_replacements(out, plan.fis, bool(previous))
+    _check_perturbations(out, plan.perturb, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))

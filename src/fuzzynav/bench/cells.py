@@ -7,14 +7,16 @@ paths between cells (:data:`_MODELS`, :mod:`.measures`), so a cell costs little 
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from fuzzynav.bench.measures import run_row, shortest_length
 from fuzzynav.bench.suites import Suite
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
+from fuzzynav.robot.imperfections import perturbed
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.world.scenario import Scenario
 
 _MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
 _SYSTEMS: dict[tuple, dict] = {}  # (controller, its (role, file) pairs) -> {role: replacement system}
@@ -25,7 +27,8 @@ MODEL_SUFFIXES = (".json", ".npz")
 class Cell:
     """World ``index`` of ``suite`` under ``seed``, to run with ``controllers`` ((label, spec)
     pairs: a registered name or a model file); ``radius`` is the simulated robot's; ``fis``
-    ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it."""
+    ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it;
+    ``perturb`` ((key, value) pairs, ``--perturb``) sets imperfections of the robot in the world."""
 
     suite: Suite
     index: int
@@ -34,6 +37,16 @@ class Cell:
     radius: float
     cache_dir: str | None = None
     fis: tuple[tuple[str, str], ...] = ()
+    perturb: tuple[tuple[str, float], ...] = ()
+
+
+def perturb_scenario(scenario: Scenario, perturb) -> Scenario:
+    """``scenario`` with the imperfections ``perturb`` ((key, value) pairs, keys written as in a
+    scenario file: ``robot.actuation.latency``) set on top of its own."""
+    imperfections = scenario.imperfections
+    for name, value in perturb:
+        imperfections = perturbed(imperfections, name, value)
+    return replace(scenario, imperfections=imperfections) if perturb else scenario
 
 
 def is_model_file(spec: str) -> bool:
@@ -60,7 +73,7 @@ def build_controller(spec: str, fis: tuple[tuple[str, str], ...] = ()):
 
 def run_cell(cell: Cell) -> list[dict]:
     """The rows (runs.csv fields, :mod:`.campaign`) of every controller of ``cell``."""
-    scenario = cell.suite.scenario(cell.index, cell.seed)
+    scenario = perturb_scenario(cell.suite.scenario(cell.index, cell.seed), cell.perturb)
     shortest = shortest_length(scenario, cell.radius, cell.cache_dir)
     reference = cell.suite.reference(cell.index)
     rows = []

@@ -84,3 +84,14 @@ def read_replacements(path: Path) -> dict:
         if len(digest) != 64 or any(c not in "0123456789abcdef" for c in digest):
             raise InputError("must be 64 lowercase hexadecimal digits", source=source, field=f"{role}.sha256")
     return record
+
+
+def read_perturbations(path: Path) -> dict:
+    """``perturb.json``: {key: value}, each a known imperfection key with a value in its range."""
+    from fuzzynav.robot.imperfections import NONE, perturbed
+
+    source = str(path)
+    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    for name, value in record.items():
+        perturbed(NONE, name, value, source)
+    return record

@@ -1,11 +1,15 @@
 """``fuzzynav bench SUITE… --controllers a,b,c [--fis ROLE=FILE] [--seeds K] [--workers N]
-[--backend local|ray] [--out DIR] [--resume]`` — a benchmark campaign (:mod:`fuzzynav.bench`).
+[--backend local|ray] [--perturb KEY=VALUE] [--out DIR] [--resume]`` — a benchmark campaign
+(:mod:`fuzzynav.bench`).
 
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
 family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap, dynamic, dynabarn). Controllers are registered
 names (``fuzzynav run --help`` lists them) or trained model files (``.json``/``.npz``, labelled by
 their file name without the suffix). ``--fis ROLE=FILE`` replaces that rule base in every
-controller of the campaign that has the role (as ``fuzzynav run --fis`` does). Writes runs.csv /
+controller of the campaign that has the role (as ``fuzzynav run --fis`` does). ``--perturb
+KEY=VALUE`` (repeatable) sets one of the robot's imperfections in every world
+(:mod:`fuzzynav.robot.imperfections`, e.g. ``robot.sensor_noise.range_sigma=0.02``), recorded in
+perturb.json and the summary. Writes runs.csv /
 runs.jsonl as runs finish, then summary.md, summary.json, plots and index.html into --out.
 """
 
@@ -37,6 +41,11 @@ fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the fuzzy system for ROLE in every controller that has it (any "
                              ".yaml/.json/.fll/.fis; repeat per role; part of what --resume checks)")
+    parser.add_argument("--perturb", action="append", metavar="KEY=VALUE",
+                        help="set one of the robot's imperfections in every world, e.g. "
+                             "robot.sensor_noise.range_sigma=0.02 (repeat per key; keys: robot.sensor_noise."
+                             "{range_sigma,dropout,max_range}, robot.actuation.{latency,steering_rate,acceleration,"
+                             "slip}, robot.odometry.drift; part of what --resume checks)")
     parser.add_argument("--seeds", type=arguments.count(validation.MAX_SEEDS), default=1, metavar="K",
                         help=f"seeds 0..K-1, K from 1 to {validation.MAX_SEEDS:,} (generated families: K world "
                              f"sets; default 1); a campaign holds at most {validation.MAX_CAMPAIGN_RUNS:,} runs "
@@ -104,6 +113,27 @@ def _replacements(options: list[str] | None, controllers) -> tuple[tuple[str, st
     return tuple((role, str(Path(path).resolve())) for role, path in pairs)
 
 
+def _perturbations(options: list[str] | None) -> tuple[tuple[str, float], ...]:
+    """(key, value) of every ``--perturb KEY=VALUE``, each checked (InputError naming it)."""
+    from fuzzynav.robot.imperfections import NONE, perturbed
+
+    pairs: dict[str, float] = {}
+    for option in options or ():
+        name, equals, text = option.partition("=")
+        if not equals:
+            raise InputError(f"must be KEY=VALUE, got {validation.shown(option)}", field="--perturb")
+        if name in pairs:
+            raise InputError(f"{name} given twice", field="--perturb")
+        try:
+            value = float(text)
+        except ValueError:
+            raise InputError(f"the value of {name} must be a number, got {validation.shown(text)}",
+                             field="--perturb") from None
+        perturbed(NONE, name, value, source="--perturb")
+        pairs[name] = value
+    return tuple(pairs.items())
+
+
 def run(args) -> int:
     from fuzzynav.bench.campaign import Plan, run_campaign
     from fuzzynav.bench.report import write_reports
@@ -115,13 +145,15 @@ def run(args) -> int:
     if len(set(names)) != len(names):
         raise InputError(f"suites repeat ({', '.join(names)})", field="SUITE")
     controllers = _controllers(args.controllers)
-    plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers))
+    plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers),
+                _perturbations(args.perturb))
     out = Path(args.out)
     workers = args.workers or os.cpu_count() or 1
     rows = run_campaign(plan, out, resume=args.resume, backend=args.backend, workers=workers,
                         address=args.ray_address, progress=not args.quiet)
     arguments_used = {"suites": names, "controllers": [label for label, _ in plan.controllers], "seeds": args.seeds,
-                      **({"fis": dict(plan.fis)} if plan.fis else {})}
+                      **({"fis": dict(plan.fis)} if plan.fis else {}),
+                      **({"perturb": dict(plan.perturb)} if plan.perturb else {})}
     write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
     print(f"{len(rows)} runs in {out}: summary.md, summary.json, index.html", file=sys.stderr)
     return 0

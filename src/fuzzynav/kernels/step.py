@@ -11,7 +11,9 @@ Arrays:
 - ``status`` (N, 3) ints per robot: outcome code (0 running), steps taken, waypoint index;
 - ``base``, ``movers``, ``offsets``: the moving obstacles (:mod:`fuzzynav.kernels.traffic`),
   placed in ``scene_array`` at their offsets of step ``k`` before the robots move (none: a static
-  world, whose scene is never written).
+  world, whose scene is never written);
+- ``imperfect``: the real robot's imperfections (:mod:`fuzzynav.kernels.imperfect`), or ``None``
+  for the perfect robot (numba then compiles the step without them).
 
 Finished robots are neither moved, judged nor sensed.
 """
@@ -23,7 +25,7 @@ import math
 import numpy as np
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels import beams, layers, navigators, robust, scene, traffic
+from fuzzynav.kernels import beams, imperfect as real, layers, navigators, robust, scene, traffic
 from fuzzynav.kernels.motion import RADIUS, ROBOT_FIELDS, advance, clip, wrap
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
@@ -118,10 +120,11 @@ def task_update(setup, i, x, y):
 
 
 @jit
-def settle(setup, scene_array, k, state, ranges, status, n):
+def settle(setup, scene_array, k, state, ranges, status, n, imperfect):
     """Stop tests and sensing of robot ``n`` at step ``k`` (the state after its move): collision
     (footprint vs obstacles and boundary) first, then the task, then the time limit; then the
-    next target, the rays and the nearest obstacle's bearing θ_o."""
+    next target, the rays (as the real sensor reads them with ``imperfect``) and the nearest
+    obstacle's bearing θ_o."""
     row = state[n]
     scene.nearest_one(scene_array, row[X], row[Y], row[OBSTACLE_DISTANCE:BOUNDARY + 1])
     collided = min(row[OBSTACLE_DISTANCE], row[BOUNDARY]) < setup[RADIUS]
@@ -133,26 +136,29 @@ def settle(setup, scene_array, k, state, ranges, status, n):
     n_angles = int(setup[N_ANGLES])
     beams.read_one(scene_array, row[X], row[Y], row[THETA], setup[ANGLES:ANGLES + n_angles], setup[HALF_BEAM],
                    setup[MAX_RANGE], ranges[n])
+    if imperfect is not None:
+        real.sense(imperfect, n, ranges[n], setup[MAX_RANGE])
     finite = math.isfinite(row[OBSTACLE_DISTANCE])
     row[OBSTACLE_BEARING] = wrap(math.atan2(row[NEAREST_Y] - row[Y], row[NEAREST_X] - row[X]) - row[THETA]) \
         if finite else 0.0
 
 
 @jit
-def reset(setup, scene_array, state, ranges, status):
+def reset(setup, scene_array, state, ranges, status, imperfect):
     """Stop tests and sensing of every robot at step 0; returns how many still run."""
     running = 0
     for n in range(state.shape[0]):
-        settle(setup, scene_array, 0, state, ranges, status, n)
+        settle(setup, scene_array, 0, state, ranges, status, n, imperfect)
         running += status[n, OUTCOME] == RUNNING
     return running
 
 
 @jit
 def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, base, movers, offsets, scene_array, k,
-         state, ranges, status):
+         state, ranges, status, imperfect):
     """One step of every running robot, ``k`` being the step count after it; returns how many
-    still run. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
+    still run. With ``imperfect``, the controller is given its believed position and noisy
+    distances, and its commands go through the actuators' queue, limits and slip. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
     so the robots' stop tests and sensing see them there. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
     ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
     loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
@@ -167,25 +173,32 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
             continue
         row = state[n]
         steering, speed = row[STEERING], row[SPEED]
+        x, y, distance = row[X], row[Y], row[OBSTACLE_DISTANCE]
+        if imperfect is not None:
+            x, y, distance = real.believed(imperfect, n, x, y, distance)
         if params is not None:  # None (commands given) and the None of layer_params below: branches pruned
             if layer_params is None:  # at compile time, so a run compiles only the navigator code it uses
                 steering, speed, code = navigators.act_one(
-                    kind, params, tables, cstate[n], memory[n], row[X], row[Y], row[THETA], row[SPEED],
+                    kind, params, tables, cstate[n], memory[n], x, y, row[THETA], row[SPEED],
                     row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0],
-                    row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING])
+                    distance, row[OBSTACLE_BEARING])
             else:
                 steering, speed, code = robust.act_one(
-                    kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], row[X], row[Y],
+                    kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], x, y,
                     row[THETA], row[SPEED], row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE],
-                    setup[0], row[OBSTACLE_DISTANCE], row[OBSTACLE_BEARING], (k - 1) * setup[0])
+                    setup[0], distance, row[OBSTACLE_BEARING], (k - 1) * setup[0])
             row[BEHAVIOUR] = code
         steering, speed = clip(steering, speed, setup)
         if setup[FORCED_SPEED] == setup[FORCED_SPEED]:
             speed = setup[FORCED_SPEED]
+        if imperfect is None:
+            row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
+        else:
+            steering, speed = real.actuate(imperfect, n, steering, speed, k, setup)
+            row[X], row[Y], row[THETA] = real.move(imperfect, n, row[X], row[Y], row[THETA], steering, speed, setup)
         row[STEERING], row[SPEED] = steering, speed
-        row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
         status[n, STEPS] += 1
-        settle(setup, scene_array, k, state, ranges, status, n)
+        settle(setup, scene_array, k, state, ranges, status, n, imperfect)
         running += status[n, OUTCOME] == RUNNING
     return running
 

@@ -37,8 +37,9 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
-from fuzzynav.kernels import layers, step as step_kernel, traffic
+from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
+from fuzzynav.robot.imperfections import Imperfections
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
@@ -64,6 +65,19 @@ _CHECK_EVERY = 32
 _OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
 _STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout", INVALID_COMMAND: "invalid_command"}
+
+
+def imperfect_record(imperfections: Imperfections, dt: float, n: int, seed: np.random.SeedSequence):
+    """The compiled step's ``imperfect`` record (:mod:`fuzzynav.kernels.imperfect`) of ``n``
+    robots, every draw from ``seed``; ``None`` for the perfect robot."""
+    if imperfections.off:
+        return None
+    params = imperfections.array(dt)
+    rng = np.random.default_rng(seed)
+    memory = np.zeros((n, len(imperfect.MEMORY_FIELDS)))
+    memory[:, imperfect.DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
+    queue = np.zeros((n, max(int(params[imperfect.DELAY]), 1), 2))
+    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
 
 
 def default_ring(scenario: Scenario, controller) -> SensorRing:
@@ -101,6 +115,7 @@ class BatchSimulator:
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
+        self.imperfections = scenario.imperfections
         if listed is None:
             self.batch = callable(getattr(controller, "act_batch", None))
             copies = [controller] if self.batch or self.n == 1 else [copy.deepcopy(controller) for _ in range(self.n)]
@@ -127,10 +142,11 @@ class BatchSimulator:
     # -- episode -----------------------------------------------------------------------------
     def reset(self) -> None:
         """Start poses, zero commands, task state at t = 0; controllers reset with seeded rngs."""
-        seeds = np.random.SeedSequence(self.seed).spawn(1 + len(self.controllers))
+        seeds = np.random.SeedSequence(self.seed).spawn(2 + len(self.controllers))
         self.rng = np.random.default_rng(seeds[0])
-        for controller, child in zip(self.controllers, seeds[1:]):
+        for controller, child in zip(self.controllers, seeds[1:-1]):
             controller.reset(np.random.default_rng(child))
+        self._imperfect = imperfect_record(self.imperfections, self.params.dt, self.n, seeds[-1])
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
                            else step_kernel.idle_arguments())
         self._layer_params = self._navigator[-2]  # its GROW flag: a layer's arrays need room
@@ -147,7 +163,8 @@ class BatchSimulator:
         if self._movers.shape[0]:
             self._scene[:] = self._base
             traffic.place(self._base, self._movers, self._offsets(0), self._scene)
-        self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status)
+        self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status,
+                                          self._imperfect)
         self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
@@ -220,6 +237,8 @@ class BatchSimulator:
     def sense(self) -> BatchObservation:
         """A new :class:`BatchObservation` of the current state (its arrays are its own)."""
         state, t = self._state.copy(), self.k * self.params.dt
+        if self._imperfect is not None:  # the controller's believed position
+            state[:, step_kernel.X:step_kernel.Y + 1] += self._imperfect[1][:, imperfect.ERROR_X:imperfect.ERROR_Y + 1]
         return BatchObservation(
             t=t,
             dt=self.params.dt,
@@ -276,7 +295,7 @@ class BatchSimulator:
             offsets = self._offsets(self.k)
             self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
                                              self._movers, offsets, self._scene, self.k, self._state, self._ranges,
-                                             self._status)
+                                             self._status, self._imperfect)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it
             live = np.flatnonzero(self.active)
             broken = [i for i in live if not np.isfinite(self._state[i, step_kernel.X:step_kernel.SPEED + 1]).all()]

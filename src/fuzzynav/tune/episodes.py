@@ -50,14 +50,14 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
     gx, gy = setup[step_kernel.GOAL_X], setup[step_kernel.GOAL_Y]
     out[START_DISTANCE] = math.hypot(gx - start[0], gy - start[1])
     still, no_offsets = np.zeros((0, 4), dtype=np.int64), np.zeros((0, 2))  # tuning worlds stand still
-    running = step_kernel.reset(setup, scene, state, ranges, status)
+    running = step_kernel.reset(setup, scene, state, ranges, status, None)
     clearance = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
     path, k = 0.0, 0
     while running:
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
         running = step_kernel.step(kind, params, tables, cstate, memory, lp, lstate, setup, scene, still, no_offsets,
-                                   scene, k, state, ranges, status)
+                                   scene, k, state, ranges, status, None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
         if lp[layers.GROW] != 0.0:

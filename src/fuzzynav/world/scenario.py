@@ -7,6 +7,9 @@ world: {width: 20.0, height: 20.0}    # optional, default 20 x 20; origin bottom
 robot: {x: 1.0, y: 1.0, theta: 0.0}   # metres, radians CCW from +x (theta optional, 0)
 # optional robot keys (defaults: robot.tricycle.TricycleParams): radius (footprint disc, 0.3 m),
 # wheelbase (0.5 m), max_steering (π/4 rad), max_speed (4 m/s), max_reverse_speed (0.5 m/s; 0: no reverse)
+# and the real robot's imperfections, all off by default (fuzzynav.robot.imperfections):
+#   sensor_noise: {range_sigma, dropout, max_range}, actuation: {latency, steering_rate, acceleration, slip},
+#   odometry: {drift}
 goal: {x: 18.0, y: 18.0, tolerance: 0.3}
 obstacles:
   - circle: {center: [5, 5], radius: 1.0}
@@ -45,6 +48,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.robot import imperfections as real
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import limits
 from fuzzynav.world.checks import Checks, ShapeFields
@@ -109,6 +113,7 @@ class Scenario:
     controllers: tuple[str, ...] = ()  # the controllers the thesis runs on it (``fuzzynav demo``)
     robot: TricycleParams = field(default=DEFAULT_PARAMS)
     sensors: str | None = None  # the sensor ring by name (fuzzynav.robot.sensors.RINGS); None: the controller's
+    imperfections: real.Imperfections = field(default=real.NONE)  # the real robot's (all off: the perfect one)
 
     @property
     def task(self) -> str:
@@ -126,6 +131,7 @@ class Scenario:
         doc["robot"] = {"x": float(self.start[0]), "y": float(self.start[1]), "theta": float(self.start[2])}
         doc["robot"].update({key: getattr(self.robot, key) for key in ROBOT_KEYS
                              if getattr(self.robot, key) != getattr(DEFAULT_PARAMS, key)})
+        doc["robot"].update(self.imperfections.to_dict())
         if self.goal is not None:
             doc["goal"] = {"x": float(self.goal.position[0]), "y": float(self.goal.position[1]),
                            "tolerance": self.goal.tolerance}
@@ -241,7 +247,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     motions = tuple(motion for _, motion in entries)
     world = World(width, height, obstacles, motions if any(m is not None for m in motions) else ())
 
-    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS), required=("x", "y"))
+    robot = check.mapping(doc["robot"], "robot", ("x", "y", "theta", *ROBOT_KEYS, *real.KEYS), required=("x", "y"))
     start = np.array([check.number(robot["x"], "robot.x"), check.number(robot["y"], "robot.y"),
                       limits.angle(robot.get("theta", 0.0), source, "robot.theta")])
     robot_limits = _robot_params(check, robot)
@@ -294,6 +300,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         source=source,
         controllers=_controller_names(check, doc.get("controllers", [])),
         robot=robot_limits,
+        imperfections=real.read(robot, source),
         sensors=limits.sensor_ring(doc.get("sensors"), source),
     )
 
