@@ -15,6 +15,7 @@ from fuzzynav.bench.suites import Suite
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim.plants import DEFAULT_PLANT
 
 _MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
 _SYSTEMS: dict[tuple, dict] = {}  # (controller, its (role, file) pairs) -> {role: replacement system}
@@ -25,7 +26,8 @@ MODEL_SUFFIXES = (".json", ".npz")
 class Cell:
     """World ``index`` of ``suite`` under ``seed``, to run with ``controllers`` ((label, spec)
     pairs: a registered name or a model file); ``radius`` is the simulated robot's; ``fis``
-    ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it."""
+    ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it;
+    ``plant`` moves the robots (:mod:`fuzzynav.sim.plants`)."""
 
     suite: Suite
     index: int
@@ -34,6 +36,7 @@ class Cell:
     radius: float
     cache_dir: str | None = None
     fis: tuple[tuple[str, str], ...] = ()
+    plant: str = DEFAULT_PLANT
 
 
 def is_model_file(spec: str) -> bool:
@@ -65,7 +68,7 @@ def run_cell(cell: Cell) -> list[dict]:
     reference = cell.suite.reference(cell.index)
     rows = []
     for label, spec in cell.controllers:
-        trace = run_episode(scenario, build_controller(spec, cell.fis), seed=cell.seed)
+        trace = run_episode(scenario, build_controller(spec, cell.fis), seed=cell.seed, plant=cell.plant)
         rows.append({"suite": cell.suite.name, "world": cell.suite.world_name(cell.index, cell.seed),
                      "seed": cell.seed, "controller": label,
                      **run_row(metrics(trace, scenario), shortest, reference)})

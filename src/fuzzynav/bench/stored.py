@@ -17,6 +17,7 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.sim.plants import PLANTS
 
 OUTCOMES = ("reached", "collision", "timeout")
 NAMES = ("suite", "world", "controller")
@@ -83,3 +84,14 @@ def read_replacements(path: Path) -> dict:
         if len(digest) != 64 or any(c not in "0123456789abcdef" for c in digest):
             raise InputError("must be 64 lowercase hexadecimal digits", source=source, field=f"{role}.sha256")
     return record
+
+
+def read_plant(path: Path) -> str:
+    """``plant.json``: {"plant": name}, the name one of :data:`fuzzynav.sim.plants.PLANTS`."""
+    source = str(path)
+    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    validation.known_keys(record, ("plant",), source, required=("plant",))
+    name = validation.text(record["plant"], source, "plant")
+    if name not in PLANTS:
+        raise InputError(f"unknown plant {name!r} (known: {', '.join(PLANTS)})", source=source, field="plant")
+    return name

@@ -18,6 +18,10 @@ Moving obstacles (:mod:`fuzzynav.world.moving`) are placed at their step's offse
 compiled call, before the robots move (the offsets are computed for blocks of steps at once);
 a collision records who moved into whom (:mod:`fuzzynav.sim.fault`).
 
+The plant (``plant``, :mod:`fuzzynav.sim.plants`) moves the robots and reads their sensors: the
+kinematic model inside the compiled step by default; another plant (``mujoco``) gets the clipped
+commands of step 2 and moves the robots, and its readings replace those of step 5.
+
 Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
 returning a :class:`Trace`; :func:`run_episode` is the one-call form.
 The robot's parameters (size, wheelbase, limits, reverse speed) are the scenario's
@@ -43,6 +47,7 @@ from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
 from fuzzynav.sim.commands import check_commands, check_starts, check_state, command_values
 from fuzzynav.sim.fault import collision_by
+from fuzzynav.sim.plants import DEFAULT_PLANT, make_plant
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world import moving
@@ -73,12 +78,14 @@ class BatchSimulator:
     ``starts`` are the start poses ``(N, 3)`` (default: ``n`` copies of the scenario start).
     ``controller`` is one controller (batch-capable, or copied per robot) or a sequence of N.
     ``seed`` seeds the sensor noise and the controllers' ``reset(rng)``. ``max_time`` overrides
-    the scenario's. ``record=False`` keeps only outcomes (for benchmarks).
+    the scenario's. ``record=False`` keeps only outcomes (for benchmarks). ``plant`` names the
+    plant (:data:`fuzzynav.sim.plants.PLANTS`; default ``kinematic``).
     """
 
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
-                 seed: int | None = None, max_time: float | None = None, record: bool = True):
+                 seed: int | None = None, max_time: float | None = None, record: bool = True,
+                 plant: str = DEFAULT_PLANT):
         self.scenario = arguments.check_scenario(scenario)
         self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (arguments.check_robots(n), 1)))
@@ -112,6 +119,7 @@ class BatchSimulator:
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._noisy = self.sensors.noise_std > 0
         self._set_traffic(scenario.world)
+        self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
         self._compiled = copies[0].compiled if compiled else None
         self.reset()
@@ -139,6 +147,8 @@ class BatchSimulator:
             self._scene[:] = self._base
             traffic.place(self._base, self._movers, self._offsets(0), self._scene)
         self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status)
+        if not self.plant.in_kernel:
+            self.plant.reset(self._state, self._ranges, self.active)
         self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
@@ -261,9 +271,12 @@ class BatchSimulator:
         self.k += 1
         try:
             offsets = self._offsets(self.k)
-            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
-                                             self._movers, offsets, self._scene, self.k, self._state, self._ranges,
-                                             self._status)
+            if self.plant.in_kernel:
+                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
+                                                 self._movers, offsets, self._scene, self.k, self._state, self._ranges,
+                                                 self._status)
+            else:
+                self._plant_step(offsets)
         except ValueError as error:  # a compiled navigator refusing a non-finite input
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
@@ -282,6 +295,18 @@ class BatchSimulator:
             self._record_state()
         if self._compiled is not None and (self.k % _CHECK_EVERY == 0 or not self._running):
             check_state(self._state, self.controller_name, self.k, self._history["state"] if self.record else None)
+
+    def _plant_step(self, offsets) -> None:
+        """The step of a plant outside the compiled step: act and clip (compiled), the plant
+        moves the running robots, then the stop tests and sensing (compiled) and the plant's
+        readings."""
+        moved = self.active.copy()
+        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base, self._movers,
+                         offsets, self._scene, self.k, self._state, self._ranges, self._status, False)
+        self.plant.move(self._state, moved)
+        self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
+                                                 self._status, moved)
+        self.plant.sense(self._state, self._ranges, self.active)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
@@ -347,9 +372,9 @@ class Simulator:
 
     def __init__(self, scenario: Scenario, controller: Controller, *,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
-                 seed: int | None = None, max_time: float | None = None, start=None):
+                 seed: int | None = None, max_time: float | None = None, start=None, plant: str = DEFAULT_PLANT):
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
-                                     sensors=sensors, seed=seed, max_time=max_time)
+                                     sensors=sensors, seed=seed, max_time=max_time, plant=plant)
 
     def run(self) -> Trace:
         """Reset and run the episode to its end; returns its :class:`Trace`."""
