@@ -5,14 +5,19 @@ kinematic one integrating eq IV.1 exactly, the arc); for each, the distance driv
 of the circle fitted to the last three quarters of the path (turns only) and the largest
 distance between the two paths at equal times.
 
-``compare A B``: two ``fuzzynav bench`` folders of the same worlds and controllers (one per plant),
-paired run by run: outcomes of each, the worlds whose outcome differs, and the median of the
+``compare --kinematic DIR… --mujoco DIR…``: ``fuzzynav bench`` folders of the same worlds and
+controllers, one plant each (a plant's worlds may be split over several folders), paired run by
+run (world, seed, controller): outcomes of each, the worlds whose outcome differs, and the median of the
 per-world ratio of the times of the runs both reached.
+
+``cost SCENARIO…``: wall time per control step of the default navigator on each plant (each
+episode run twice, the second timed: compiled kernels and the MuJoCo model warm).
 
 Usage::
 
     python benchmarks/physics_plant.py manoeuvres
-    python benchmarks/physics_plant.py compare KINEMATIC_DIR MUJOCO_DIR
+    python benchmarks/physics_plant.py compare --kinematic DIR [DIR ...] --mujoco DIR [DIR ...]
+    python benchmarks/physics_plant.py cost SCENARIO [SCENARIO ...]
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ import argparse
 import csv
 import math
 import statistics
+import time
 from collections import Counter
 from pathlib import Path
 
@@ -58,18 +64,23 @@ def manoeuvres() -> None:
         print(f"| {steering:.3f} | {speed:.2f} | {driven[0]:.2f} / {driven[1]:.2f} | {radius} | {gap:.3f} |")
 
 
-def compare(kinematic: Path, mujoco: Path) -> None:
-    read = lambda folder: {(r["suite"], r["world"], r["seed"], r["controller"]): r  # noqa: E731
-                           for r in csv.DictReader(open(folder / "runs.csv", encoding="utf-8"))}
-    a, b = read(kinematic), read(mujoco)
-    both = sorted(set(a) & set(b), key=lambda k: (k[0], int(k[1].rpartition("_")[2]) if k[1][-1].isdigit() else 0))
+def read_runs(folders: list[Path]) -> dict[tuple, dict]:
+    """The rows of the ``runs.csv`` of ``folders`` by (world, seed, controller)."""
+    return {(r["world"], r["seed"], r["controller"]): r for folder in folders
+            for r in csv.DictReader(open(folder / "runs.csv", encoding="utf-8"))}
+
+
+def compare(kinematic: list[Path], mujoco: list[Path]) -> None:
+    a, b = read_runs(kinematic), read_runs(mujoco)
+    number = lambda k: int(k[0].rpartition("_")[2]) if k[0][-1].isdigit() else 0  # noqa: E731
+    both = sorted(set(a) & set(b), key=lambda k: (number(k), k))
     for name, rows in (("kinematic", a), ("mujoco", b)):
         counts = Counter(rows[k]["outcome"] for k in both)
         print(f"{name}: {len(both)} paired runs, " + ", ".join(f"{o} {counts[o]} ({100 * counts[o] / len(both):.1f} %)"
                                                              for o in ("reached", "collision", "timeout")))
     for k in both:
         if a[k]["outcome"] != b[k]["outcome"]:
-            print(f"  {k[1]}: kinematic {a[k]['outcome']} {a[k]['time_s']} s, mujoco {b[k]['outcome']} {b[k]['time_s']} s")
+            print(f"  {k[0]}: kinematic {a[k]['outcome']} {a[k]['time_s']} s, mujoco {b[k]['outcome']} {b[k]['time_s']} s")
     reached = [k for k in both if a[k]["outcome"] == b[k]["outcome"] == "reached"]
     if reached:
         ratios = [float(b[k]["time_s"]) / float(a[k]["time_s"]) for k in reached]
@@ -79,18 +90,38 @@ def compare(kinematic: Path, mujoco: Path) -> None:
               f"{statistics.median(c[0] for c in clear):.3f} m, MuJoCo {statistics.median(c[1] for c in clear):.3f} m")
 
 
+def cost(scenarios: list[str]) -> None:
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.sim.simulator import run_episode
+    from fuzzynav.world.scenario_file import open_scenario
+
+    for name in scenarios:
+        scenario = open_scenario(name)
+        for plant in ("kinematic", "mujoco"):
+            for _ in range(2):
+                start = time.perf_counter()
+                trace = run_episode(scenario, make_controller("fuzzy-5b"), seed=0, plant=plant)
+                seconds = time.perf_counter() - start
+            steps = len(trace.t) - 1
+            print(f"{scenario.name} {plant}: {trace.outcome} in {steps} steps, {1000 * seconds / steps:.2f} ms per step")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
     commands.add_parser("manoeuvres", help="constant commands on both plants")
     pair = commands.add_parser("compare", help="two bench folders, paired run by run")
-    pair.add_argument("kinematic", type=Path)
-    pair.add_argument("mujoco", type=Path)
+    pair.add_argument("--kinematic", type=Path, nargs="+", required=True)
+    pair.add_argument("--mujoco", type=Path, nargs="+", required=True)
+    timed = commands.add_parser("cost", help="wall time per step of fuzzy-5b on each plant")
+    timed.add_argument("scenarios", nargs="+")
     args = parser.parse_args()
     if args.command == "manoeuvres":
         manoeuvres()
-    else:
+    elif args.command == "compare":
         compare(args.kinematic, args.mujoco)
+    else:
+        cost(args.scenarios)
 
 
 if __name__ == "__main__":
