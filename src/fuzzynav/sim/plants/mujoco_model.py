@@ -25,18 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from fuzzynav.kernels.layout import (
-    AT_CIRCLES,
-    AT_EDGES,
-    AT_ELLIPSES,
-    AT_POLYGONS,
-    HEIGHT,
-    N_CIRCLES,
-    N_EDGES,
-    N_ELLIPSES,
-    N_POLYGONS,
-    WIDTH,
-)
+from fuzzynav.kernels import layout
 
 OBSTACLE_GROUP = 1  # geom group of the obstacles: the only geoms the range sensors see
 WALL_HEIGHT = 1.0  # m, every obstacle
@@ -75,7 +64,7 @@ def _f(*values) -> str:
 
 def obstacle_geoms(scene: np.ndarray) -> list[str]:
     """MJCF ``<geom>`` elements of the obstacles and boundary walls of a packed ``scene``."""
-    width, height = scene[WIDTH], scene[HEIGHT]
+    width, height = scene[layout.WIDTH], scene[layout.HEIGHT]
     z, half = 0.5 * WALL_HEIGHT, 0.5 * WALL_HEIGHT
     common = f'group="{OBSTACLE_GROUP}" rgba="0.5 0.5 0.5 1"'
     geoms = []
@@ -85,13 +74,13 @@ def obstacle_geoms(scene: np.ndarray) -> list[str]:
                            (0.5 * width, -thick, 0.5 * width + 2 * thick, thick),
                            (0.5 * width, height + thick, 0.5 * width + 2 * thick, thick)):
         geoms.append(f'<geom type="box" pos="{_f(cx, cy, z)}" size="{_f(hx, hy, half)}" {common}/>')
-    at = int(scene[AT_CIRCLES])
-    for i in range(int(scene[N_CIRCLES])):
+    at = int(scene[layout.AT_CIRCLES])
+    for i in range(int(scene[layout.N_CIRCLES])):
         cx, cy, r = scene[at + 3 * i:at + 3 * i + 3]
         geoms.append(f'<geom type="cylinder" pos="{_f(cx, cy, z)}" size="{_f(r, half)}" {common}/>')
-    edges = scene[int(scene[AT_EDGES]):int(scene[AT_EDGES]) + 7 * int(scene[N_EDGES])].reshape(-1, 7)
-    at = int(scene[AT_POLYGONS])
-    for p in range(int(scene[N_POLYGONS])):
+    edges = scene[int(scene[layout.AT_EDGES]):int(scene[layout.AT_EDGES]) + 7 * int(scene[layout.N_EDGES])].reshape(-1, 7)
+    at = int(scene[layout.AT_POLYGONS])
+    for p in range(int(scene[layout.N_POLYGONS])):
         first, end = (int(v) for v in scene[at + 5 * p:at + 5 * p + 2])
         rows = edges[first:end]
         area = 0.5 * float(np.sum(rows[:, 0] * rows[:, 3] - rows[:, 2] * rows[:, 1]))
@@ -105,8 +94,8 @@ def obstacle_geoms(scene: np.ndarray) -> list[str]:
             angle = math.atan2(ey, ex)
             geoms.append(f'<geom type="box" pos="{_f(cx, cy, z)}" size="{_f(0.5 * length + SKIN, SKIN, half)}" '
                          f'euler="{_f(0.0, 0.0, angle)}" {common}/>')
-    at = int(scene[AT_ELLIPSES])
-    for i in range(int(scene[N_ELLIPSES])):
+    at = int(scene[layout.AT_ELLIPSES])
+    for i in range(int(scene[layout.N_ELLIPSES])):
         cx, cy, a, b, c, s, _ = scene[at + 7 * i:at + 7 * i + 7]
         geoms.append(f'<geom type="ellipsoid" pos="{_f(cx, cy, 0.0)}" size="{_f(a, b, TALL)}" '
                      f'euler="{_f(0.0, 0.0, math.atan2(s, c))}" {common}/>')
@@ -151,7 +140,7 @@ def robot_actuators(name: str, params, physique: Physique) -> str:
 def model_xml(scene: np.ndarray, poses: np.ndarray, params, physique: Physique) -> str:
     """The MJCF text of a world (packed ``scene``) with one tricycle per row of ``poses`` (N, 3)."""
     names = [f"robot{i}" for i in range(len(poses))]
-    width, height = scene[WIDTH], scene[HEIGHT]
+    width, height = scene[layout.WIDTH], scene[layout.HEIGHT]
     floor = (f'<geom name="floor" type="plane" pos="{_f(0.5 * width, 0.5 * height, 0)}" '
              f'size="{_f(0.5 * width + 5, 0.5 * height + 5, 0.1)}" contype="1" conaffinity="2" '
              f'friction="0.1 0.005 0.0001"/>')  # contacts take the larger friction: the tyres'
