@@ -101,3 +101,13 @@ def test_a_world_with_moving_obstacles_is_refused_by_the_mujoco_plant():
     with pytest.raises(InputError, match="static worlds") as error:
         BatchSimulator(open_world(5.0, [moving]), ConstantCommand(0.0, 0.5), plant="mujoco")
     assert error.value.field == "--plant"
+
+
+def test_evaluate_runs_on_the_mujoco_plant_and_says_so(capsys):
+    import json
+
+    assert main(["evaluate", "--controller", "goal-seeking", "--worlds", "circles", "--n", "1", "--plant", "mujoco",
+                 "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["plant"] == "mujoco" and len(result["episodes"]) == 1
+    assert result["success_rate"] + result["collision_rate"] + result["timeout_rate"] == pytest.approx(1.0)
