@@ -16,6 +16,8 @@ Files in the output folder:
   ``--resume`` with other replacements (or none where there were some) is refused.
 - ``perturb.json``: the robot's imperfections set in every world (``--perturb KEY=VALUE``,
   :mod:`fuzzynav.robot.imperfections`); a ``--resume`` with others is refused likewise.
+- ``plant.json``: the plant that moved the robots (``--plant``, :mod:`fuzzynav.sim.plants`); a
+  ``--resume`` with another plant is refused.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ from fuzzynav.bench.cells import Cell
 from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
+from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.storage import write_text_atomic
 
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
@@ -45,8 +48,8 @@ COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_le
 @dataclass(frozen=True)
 class Plan:
     """What to run: ``suites``, ``controllers`` ((label, spec) pairs), ``seeds`` (count), robot
-    ``radius``, ``fis``: (role, file) rule-base replacements (``--fis``), and ``perturb``: (key,
-    value) imperfections set in every world (``--perturb``)."""
+    ``radius``, ``fis``: (role, file) rule-base replacements (``--fis``), ``perturb``: (key,
+    value) imperfections set in every world (``--perturb``), and the ``plant``."""
 
     suites: tuple[Suite, ...]
     controllers: tuple[tuple[str, str], ...]
@@ -54,6 +57,7 @@ class Plan:
     radius: float
     fis: tuple[tuple[str, str], ...] = ()
     perturb: tuple[tuple[str, float], ...] = ()
+    plant: str = DEFAULT_PLANT
 
     def __post_init__(self):
         validation.count(self.seeds, field="--seeds", hi=validation.MAX_SEEDS)
@@ -84,7 +88,8 @@ class Plan:
                     todo = tuple((label, spec) for label, spec in self.controllers
                                  if (suite.name, world, seed, label) not in done)
                     if todo:
-                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir, self.fis, self.perturb))
+                        cells.append(Cell(suite, index, seed, todo, self.radius, cache_dir, self.fis, self.perturb,
+                                          self.plant))
         return cells
 
 
@@ -158,6 +163,18 @@ def _check_perturbations(out: Path, perturb: tuple, resuming: bool) -> None:
     write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
 
+def _check_plant(out: Path, plant: str, resuming: bool) -> None:
+    """Record the campaign's plant in ``plant.json``; runs made by another plant are not mixed."""
+    path = out / "plant.json"
+    if resuming:
+        before = stored.read_plant(path) if path.exists() else DEFAULT_PLANT
+        if before != plant:
+            raise InputError(f"its runs were made with the {before} plant, this campaign asks for {plant}: runs of "
+                             "different plants cannot be mixed (resume with the same --plant, or choose another --out)",
+                             source=str(out), field="--plant")
+    write_text_atomic(path, json.dumps({"plant": plant}) + "\n")
+
+
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
                  address: str | None = None, progress: bool = True) -> list[dict]:
     """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
@@ -173,6 +190,7 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
                          "another --out", source=str(out), field="--out")
     _check_replacements(out, plan.fis, bool(previous))
     _check_perturbations(out, plan.perturb, bool(previous))
+    _check_plant(out, plan.plant, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))

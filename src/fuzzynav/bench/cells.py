@@ -16,6 +16,7 @@ from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
 from fuzzynav.robot.imperfections import perturbed
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.world.scenario import Scenario
 
 _MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
@@ -28,7 +29,8 @@ class Cell:
     """World ``index`` of ``suite`` under ``seed``, to run with ``controllers`` ((label, spec)
     pairs: a registered name or a model file); ``radius`` is the simulated robot's; ``fis``
     ((role, file) pairs, ``--fis``) replaces that role's rule base in every controller that has it;
-    ``perturb`` ((key, value) pairs, ``--perturb``) sets imperfections of the robot in the world."""
+    ``perturb`` ((key, value) pairs, ``--perturb``) sets imperfections of the robot in the world;
+    ``plant`` moves the robots (:mod:`fuzzynav.sim.plants`)."""
 
     suite: Suite
     index: int
@@ -38,6 +40,7 @@ class Cell:
     cache_dir: str | None = None
     fis: tuple[tuple[str, str], ...] = ()
     perturb: tuple[tuple[str, float], ...] = ()
+    plant: str = DEFAULT_PLANT
 
 
 def perturb_scenario(scenario: Scenario, perturb) -> Scenario:
@@ -78,7 +81,7 @@ def run_cell(cell: Cell) -> list[dict]:
     reference = cell.suite.reference(cell.index)
     rows = []
     for label, spec in cell.controllers:
-        trace = run_episode(scenario, build_controller(spec, cell.fis), seed=cell.seed)
+        trace = run_episode(scenario, build_controller(spec, cell.fis), seed=cell.seed, plant=cell.plant)
         rows.append({"suite": cell.suite.name, "world": cell.suite.world_name(cell.index, cell.seed),
                      "seed": cell.seed, "controller": label,
                      **run_row(metrics(trace, scenario), shortest, reference)})

@@ -124,7 +124,7 @@ def plot_failures(plan: Plan, rows: list[dict], label: str, path: Path, gallery:
             continue
         index = next(k for k in range(suite.size) if suite.world_name(k, row["seed"]) == row["world"])
         scenario = suite.scenario(index, row["seed"])
-        trace = run_episode(scenario, build_controller(spec), seed=row["seed"])
+        trace = run_episode(scenario, build_controller(spec), seed=row["seed"], plant=plan.plant)
         draw_world(ax, scenario, trace)
         ax.plot(trace.pose[:, 0], trace.pose[:, 1], lw=1.0, color="tab:red")
         ax.tick_params(labelsize=6)

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.sim.plants import PLANTS
 from fuzzynav.sim.trace import OUTCOMES
 
 NAMES = ("suite", "world", "controller")
@@ -95,3 +96,14 @@ def read_perturbations(path: Path) -> dict:
     for name, value in record.items():
         perturbed(NONE, name, value, source)
     return record
+
+
+def read_plant(path: Path) -> str:
+    """``plant.json``: {"plant": name}, the name one of :data:`fuzzynav.sim.plants.PLANTS`."""
+    source = str(path)
+    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    validation.known_keys(record, ("plant",), source, required=("plant",))
+    name = validation.text(record["plant"], source, "plant")
+    if name not in PLANTS:
+        raise InputError(f"unknown plant {name!r} (known: {', '.join(PLANTS)})", source=source, field="plant")
+    return name

@@ -1,5 +1,5 @@
 """``fuzzynav bench SUITE… --controllers a,b,c [--fis ROLE=FILE] [--seeds K] [--workers N]
-[--backend local|ray] [--perturb KEY=VALUE] [--out DIR] [--resume]`` — a benchmark campaign
+[--backend local|ray] [--perturb KEY=VALUE] [--plant kinematic|mujoco] [--out DIR] [--resume]`` — a benchmark campaign
 (:mod:`fuzzynav.bench`).
 
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
@@ -9,7 +9,8 @@ their file name without the suffix). ``--fis ROLE=FILE`` replaces that rule base
 controller of the campaign that has the role (as ``fuzzynav run --fis`` does). ``--perturb
 KEY=VALUE`` (repeatable) sets one of the robot's imperfections in every world
 (:mod:`fuzzynav.robot.imperfections`, e.g. ``robot.sensor_noise.range_sigma=0.02``), recorded in
-perturb.json and the summary. Writes runs.csv /
+perturb.json and the summary. ``--plant`` chooses what moves the robots
+(:mod:`fuzzynav.sim.plants`). Writes runs.csv /
 runs.jsonl as runs finish, then summary.md, summary.json, plots and index.html into --out.
 """
 
@@ -21,6 +22,7 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.cli import arguments
+from fuzzynav.cli.run import PLANT_HELP
 from fuzzynav.errors import InputError
 
 
@@ -56,6 +58,7 @@ fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3
                         help="local process pool (default) or Ray tasks (pip install 'fuzzynav[cluster]')")
     parser.add_argument("--ray-address", metavar="ADDR", default=None,
                         help="Ray cluster to join (default: $RAY_ADDRESS, else a local instance)")
+    parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--out", default="bench-out", metavar="DIR", help="output folder (default bench-out)")
     parser.add_argument("--resume", action="store_true", help="continue the campaign already in --out")
     parser.add_argument("--gallery", type=arguments.count(1000, lo=0), default=6, metavar="N",
@@ -139,21 +142,24 @@ def run(args) -> int:
     from fuzzynav.bench.report import write_reports
     from fuzzynav.bench.suites import parse_suite
     from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+    from fuzzynav.sim.plants import DEFAULT_PLANT, check_plant
 
     suites = tuple(parse_suite(spec) for spec in args.suites)
     names = [suite.name for suite in suites]
     if len(set(names)) != len(names):
         raise InputError(f"suites repeat ({', '.join(names)})", field="SUITE")
+    check_plant(args.plant)
     controllers = _controllers(args.controllers)
     plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers),
-                _perturbations(args.perturb))
+                _perturbations(args.perturb), args.plant)
     out = Path(args.out)
     workers = args.workers or os.cpu_count() or 1
     rows = run_campaign(plan, out, resume=args.resume, backend=args.backend, workers=workers,
                         address=args.ray_address, progress=not args.quiet)
     arguments_used = {"suites": names, "controllers": [label for label, _ in plan.controllers], "seeds": args.seeds,
                       **({"fis": dict(plan.fis)} if plan.fis else {}),
-                      **({"perturb": dict(plan.perturb)} if plan.perturb else {})}
+                      **({"perturb": dict(plan.perturb)} if plan.perturb else {}),
+                      **({"plant": plan.plant} if plan.plant != DEFAULT_PLANT else {})}
     write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
     print(f"{len(rows)} runs in {out}: summary.md, summary.json, index.html", file=sys.stderr)
     return 0

@@ -20,7 +20,7 @@ from fuzzynav import progress as progress_bars, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.cli import arguments
-from fuzzynav.cli.run import DEFAULT_CONTROLLER, SENSORS_HELP
+from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, SENSORS_HELP
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
 
@@ -45,6 +45,7 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
                         help=f"number of worlds, 1 to {validation.MAX_RUNS:,} (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
+    parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -54,10 +55,12 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
 
 def run(args) -> int:
     from fuzzynav.experiments.evaluation import evaluate
+    from fuzzynav.sim.plants import check_plant
 
     if args.worlds not in KINDS:
         raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
     validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
+    check_plant(args.plant)
     if args.model is None and args.controller is None:
         args.controller = DEFAULT_CONTROLLER
     if args.fis and args.model:
@@ -78,12 +81,13 @@ def run(args) -> int:
     with progress_bars.quiet(args.quiet or args.json or args.progress):
         result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
                           model=args.model, systems=systems, save_failures=args.save_failures,
-                          sensors=args.sensors)
+                          sensors=args.sensors, plant=args.plant)
     if args.json:
         print(json.dumps(result))
         return 0
     source = f" (model {result['model']})" if result["model"] else ""
-    print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} worlds (seed {result['seed']})")
+    print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} worlds (seed {result['seed']}, "
+          f"{result['plant']} plant)")
     for key in ("success_rate", "collision_rate", "timeout_rate"):
         print(f"  {key:20s} {100 * result[key]:6.1f} %")
     for key, unit in (("mean_time_s", "s"), ("mean_path_length_m", "m")):

@@ -24,6 +24,9 @@ SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 
                 "fuzzy-5b-gap and fuzzy-2b-gap, thesis for the others)")
 
 
+PLANT_HELP = ("what moves the robot and reads its sensors: kinematic (the thesis' model, default) or mujoco (a "
+              "rigid-body tricycle in the MuJoCo physics engine; the optional extra 'physics'; docs/physics.md)")
+
 DEFAULT_CONTROLLER = "fuzzy-5b"  # the default navigator (docs/guide/controllers.md)
 
 
@@ -63,6 +66,7 @@ fuzzynav run path-n --model anfis.json --json""")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
     parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
+    parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
     parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
@@ -76,6 +80,7 @@ def run(args) -> int:
     from fuzzynav.catalog.roles import make_with_systems, systems_from_options
     from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim import metrics, run_episode
+    from fuzzynav.sim.plants import check_plant
     from fuzzynav.world.scenario_file import open_scenario
 
     if args.max_time is not None:
@@ -86,6 +91,7 @@ def run(args) -> int:
         raise InputError(f"must be between 64 and 4000 pixels, got {args.size}", field="--size")
     if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
+    check_plant(args.plant)
     scenario = open_scenario(args.scenario)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario)
@@ -97,7 +103,7 @@ def run(args) -> int:
         check_task(args.controller, scenario.task)
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
-                        sensors=None if args.sensors is None else named_ring(args.sensors))
+                        sensors=None if args.sensors is None else named_ring(args.sensors), plant=args.plant)
     numbers = metrics(trace, scenario)
     if args.plot:
         from fuzzynav.viz.trajectories import plot_episode

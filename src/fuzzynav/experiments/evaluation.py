@@ -30,6 +30,7 @@ from fuzzynav.learn.envs import RandomGoal, RandomObstacles, WallCourse
 from fuzzynav.learn.tasks.common import GOAL_TOLERANCE
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.generate import generate_worlds
 from fuzzynav.world.scenario import Goal, Scenario, load_scenario
@@ -50,12 +51,13 @@ def save_failure(folder: Path, scenario, trace, controllers: tuple[str, ...] = (
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
              systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None,
-             options: dict | None = None) -> dict:
+             options: dict | None = None, plant: str = DEFAULT_PLANT) -> dict:
     """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given, and
     the keyword ``options`` of its factory, e.g. ``layers=``) —
     or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
     sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
-    ``progress(i, outcome)`` is called after each world.
+    ``progress(i, outcome)`` is called after each world; ``plant`` moves the robot
+    (:mod:`fuzzynav.sim.plants`).
 
     A model is loaded once; every episode starts from the simulator's ``reset(rng)`` of it, as a
     registered controller is built afresh per world. A progress bar shows on a terminal
@@ -76,7 +78,7 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
     runs = []
     bar = progress_bars.bar(total=len(scenarios), desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
     for i, scenario in enumerate(scenarios):
-        trace = run_episode(scenario, build(), seed=seed, sensors=ring)
+        trace = run_episode(scenario, build(), seed=seed, sensors=ring, plant=plant)
         numbers = metrics(trace, scenario)
         runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
                                                     "min_clearance_m")})
@@ -99,6 +101,7 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         "worlds": worlds,
         "n": int(n),
         "seed": int(seed),
+        "plant": plant,
         "success_rate": rate("reached"),
         "collision_rate": rate("collision"),
         "timeout_rate": rate("timeout"),

@@ -155,14 +155,16 @@ def reset(setup, scene_array, state, ranges, status, imperfect):
 
 @jit
 def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, base, movers, offsets, scene_array, k,
-         state, ranges, status, imperfect):
+         state, ranges, status, imperfect, moves=True):
     """One step of every running robot, ``k`` being the step count after it; returns how many
     still run. With ``imperfect``, the controller is given its believed position and noisy
     distances, and its commands go through the actuators' queue, limits and slip. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
     so the robots' stop tests and sensing see them there. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
     ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
     loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
-    (commands given in ``state``), the arguments as :func:`lean_arguments` passes them."""
+    (commands given in ``state``), the arguments as :func:`lean_arguments` passes them.
+    ``moves=False``: only act and clip, the commands left in ``state`` for another plant
+    (:mod:`fuzzynav.sim.plants`) to move the robots, then :func:`settle_moved`."""
     traffic.place(base, movers, offsets, scene_array)
     running = 0
     n_angles = int(setup[N_ANGLES])
@@ -191,6 +193,9 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
         steering, speed = clip(steering, speed, setup)
         if setup[FORCED_SPEED] == setup[FORCED_SPEED]:
             speed = setup[FORCED_SPEED]
+        if not moves:  # another plant moves the robot (fuzzynav.sim.plants): decide and clip only
+            row[STEERING], row[SPEED] = steering, speed
+            continue
         if imperfect is None:
             row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
         else:
@@ -199,6 +204,19 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
         row[STEERING], row[SPEED] = steering, speed
         status[n, STEPS] += 1
         settle(setup, scene_array, k, state, ranges, status, n, imperfect)
+        running += status[n, OUTCOME] == RUNNING
+    return running
+
+
+@jit
+def settle_moved(setup, scene_array, k, state, ranges, status, moved):
+    """Stop tests and sensing at step ``k`` of the robots another plant has just moved (``moved``
+    (N,) bool, their poses written in ``state``), each counted one step; returns how many still run."""
+    running = 0
+    for n in range(state.shape[0]):
+        if moved[n]:
+            status[n, STEPS] += 1
+            settle(setup, scene_array, k, state, ranges, status, n, None)
         running += status[n, OUTCOME] == RUNNING
     return running
 

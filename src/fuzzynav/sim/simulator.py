@@ -20,6 +20,10 @@ Moving obstacles (:mod:`fuzzynav.world.moving`) are placed at their step's offse
 compiled call, before the robots move (the offsets are computed for blocks of steps at once);
 a collision records who moved into whom (:mod:`fuzzynav.sim.fault`).
 
+The plant (``plant``, :mod:`fuzzynav.sim.plants`) moves the robots and reads their sensors: the
+kinematic model inside the compiled step by default; another plant (``mujoco``) gets the clipped
+commands of step 2 and moves the robots, and its readings replace those of step 5.
+
 Finished robots are not stepped, judged nor sensed. :class:`Simulator` is the one-robot case,
 returning a :class:`Trace`; :func:`run_episode` is the one-call form.
 The robot's parameters (size, wheelbase, limits, reverse speed) are the scenario's
@@ -37,6 +41,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
+from fuzzynav.errors import InputError
 from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.imperfections import Imperfections
@@ -52,6 +57,7 @@ from fuzzynav.sim.commands import (
     invalid_states,
 )
 from fuzzynav.sim.fault import collision_by
+from fuzzynav.sim.plants import DEFAULT_PLANT, make_plant
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world import moving
@@ -95,12 +101,14 @@ class BatchSimulator:
     ``starts`` are the start poses ``(N, 3)`` (default: ``n`` copies of the scenario start).
     ``controller`` is one controller (batch-capable, or copied per robot) or a sequence of N.
     ``seed`` seeds the sensor noise and the controllers' ``reset(rng)``. ``max_time`` overrides
-    the scenario's. ``record=False`` keeps only outcomes (for benchmarks).
+    the scenario's. ``record=False`` keeps only outcomes (for benchmarks). ``plant`` names the
+    plant (:data:`fuzzynav.sim.plants.PLANTS`; default ``kinematic``).
     """
 
     def __init__(self, scenario: Scenario, controller, *, n: int = 1, starts=None,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
-                 seed: int | None = None, max_time: float | None = None, record: bool = True):
+                 seed: int | None = None, max_time: float | None = None, record: bool = True,
+                 plant: str = DEFAULT_PLANT):
         self.scenario = arguments.check_scenario(scenario)
         self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (arguments.check_robots(n), 1)))
@@ -135,6 +143,11 @@ class BatchSimulator:
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self._noisy = self.sensors.noise_std > 0
         self._set_traffic(scenario.world)
+        self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
+        if not self.plant.in_kernel and not self.imperfections.off:
+            raise InputError(f"the robot's imperfections (robot.sensor_noise, actuation, odometry) are simulated by "
+                             f"the kinematic plant only, not by the {plant} plant", source=scenario.name,
+                             field="robot")
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
         self._compiled = copies[0].compiled if compiled else None
         self.reset()
@@ -165,6 +178,8 @@ class BatchSimulator:
             traffic.place(self._base, self._movers, self._offsets(0), self._scene)
         self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status,
                                           self._imperfect)
+        if not self.plant.in_kernel:
+            self.plant.reset(self._state, self._ranges, self.active)
         self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
@@ -293,9 +308,12 @@ class BatchSimulator:
         self.k += 1
         try:
             offsets = self._offsets(self.k)
-            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
-                                             self._movers, offsets, self._scene, self.k, self._state, self._ranges,
-                                             self._status, self._imperfect)
+            if self.plant.in_kernel:
+                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
+                                                 self._movers, offsets, self._scene, self.k, self._state, self._ranges,
+                                                 self._status, self._imperfect)
+            else:
+                self._plant_step(offsets)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it
             live = np.flatnonzero(self.active)
             broken = [i for i in live if not np.isfinite(self._state[i, step_kernel.X:step_kernel.SPEED + 1]).all()]
@@ -325,6 +343,18 @@ class BatchSimulator:
         self._status[i, step_kernel.OUTCOME], self._status[i, step_kernel.STEPS] = INVALID_COMMAND, steps
         self._invalid[i] = reason
         self._running = int(np.count_nonzero(self._status[:, step_kernel.OUTCOME] == RUNNING))
+
+    def _plant_step(self, offsets) -> None:
+        """The step of a plant outside the compiled step: act and clip (compiled), the plant
+        moves the running robots, then the stop tests and sensing (compiled) and the plant's
+        readings."""
+        moved = self.active.copy()
+        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base, self._movers,
+                         offsets, self._scene, self.k, self._state, self._ranges, self._status, None, False)
+        self.plant.move(self._state, moved)
+        self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
+                                                 self._status, moved)
+        self.plant.sense(self._state, self._ranges, self.active)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
@@ -396,9 +426,9 @@ class Simulator:
 
     def __init__(self, scenario: Scenario, controller: Controller, *,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
-                 seed: int | None = None, max_time: float | None = None, start=None):
+                 seed: int | None = None, max_time: float | None = None, start=None, plant: str = DEFAULT_PLANT):
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
-                                     sensors=sensors, seed=seed, max_time=max_time)
+                                     sensors=sensors, seed=seed, max_time=max_time, plant=plant)
 
     def run(self) -> Trace:
         """Reset and run the episode to its end; returns its :class:`Trace`."""
