@@ -85,9 +85,9 @@ def _retrained(document: dict, seed: int, targets=None, short: bool = False) -> 
     if targets is not None:
         data = trackers.TrackerData(data.x_train, targets(data.y_train), data.x_val, data.y_val)
     if document["kind"] == "neural-tracker":
-        fitted = trackers.fit_neural(data, seed, **({"max_iter": 2} if short else {}))
+        fitted = trackers.fit_neural(data, seed, max_iter=2) if short else trackers.fit_neural(data, seed)
     else:
-        fitted = trackers.fit_anfis(data, seed, **({"epochs": 1} if short else {}))
+        fitted = trackers.fit_anfis(data, seed, epochs=1) if short else trackers.fit_anfis(data, seed)
     return {**document, "model": fitted.to_dict()}
 
 
