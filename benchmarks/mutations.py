@@ -1,4 +1,4 @@
-"""Which claims catch which edited rule table: the mutation harness of the chapter IV and V claims.
+"""Which claims catch which edited rule table or model: the mutation harness of the chapter IV and V claims.
 
 Each mutation edits one published rule base — a sign flip of one cell's steering, a biased cell,
 or the whole steering set to zero (``all-Z``) — for every fuzzy role (``gsb`` Table IV.1,
@@ -11,8 +11,15 @@ relative change of a tracking error or pursuit time) and which claims it fails; 
 the mutations that catch it. The goal: every mutation that moves a route by more than 0.5 m or
 changes an error by more than 20 % fails a claim, and every claim is caught by some mutation.
 
+The learned trackers (``neural-tracker`` CN, ``anfis-tracker`` CNF) have no rule table: their
+model is replaced instead (:func:`fuzzynav.experiments.learned_models.mutations`: output layer
+sign-flipped, zeroed or halved, trained on negated or shuffled targets, training stopped early)
+in their training figure and every run of theirs, and the runs are compared with those of the
+trained models; a validation RMSE over 1e-3 rad (the scale of Figs V.15 / V.23) is significant too.
+
     PYTHONPATH=src python benchmarks/mutations.py                      # the table (a few minutes)
     PYTHONPATH=src python benchmarks/mutations.py --roles tracker      # one role
+    PYTHONPATH=src python benchmarks/mutations.py --roles neural-tracker anfis-tracker   # the models
     PYTHONPATH=src python benchmarks/mutations.py --every-cell         # every cell's sign, one by one
     PYTHONPATH=src python benchmarks/mutations.py --write-references   # store the published runs
 
@@ -32,7 +39,7 @@ from pathlib import Path
 import yaml
 
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.experiments import routes, rule_bases
+from fuzzynav.experiments import learned_models, routes, rule_bases
 from fuzzynav.fuzzy.io.files import dumps
 
 # the experiments each role's table reaches (figures with a stored reference, and their claims)
@@ -42,6 +49,11 @@ REACHES = {"gsb": CHAPTER_IV, "oab": ("fig-IV-15", "eval-IV"),
            "wall": ("fig-VI-28",),
            "tracker": ("fig-V-7", "fig-V-10", "fig-V-11", "fig-V-28", "fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32",
                        "fig-V-33", "fig-V-34")}
+# the learned trackers' models (CN, CNF: no rule table) reach their training figure and their runs
+PURSUITS = ("fig-V-28", "fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32", "fig-V-33", "fig-V-34")
+LEARNED_REACHES = {"neural-tracker": ("fig-V-15", "fig-V-18", "fig-V-19", *PURSUITS),
+                   "anfis-tracker": ("fig-V-23", "fig-V-26", "fig-V-27", *PURSUITS)}
+VALIDATION_BOUND_RAD = 1e-3  # the scale of Figs V.15 / V.23's error: a larger validation RMSE is visible
 REFERENCED = tuple(dict.fromkeys(i for ids in REACHES.values() for i in ids if i not in ("eval-IV", "fig-V-7")))
 MIRROR = {"NG": "PG", "NM": "PM", "NP": "PP", "PP": "NP", "PM": "NM", "PG": "NG", "DI": "AI", "D": "A", "A": "D",
           "AI": "DI"}
@@ -94,18 +106,32 @@ def mutations(role: str, every_cell: bool = False) -> list[tuple[str, dict]]:
                     "rules": [changes.get(k, rule) for k, rule in enumerate(rules)]}) for name, changes in edited]
 
 
-def run(ids, out: Path, systems: dict | None = None) -> dict:
-    """The numbers of experiments ``ids`` (quick settings: eval-IV on 10 worlds) with ``systems``."""
-    with rule_bases.replaced(systems or {}):
+def run(ids, out: Path, systems: dict | None = None, models: dict | None = None) -> dict:
+    """The numbers of experiments ``ids`` (quick settings: eval-IV on 10 worlds) with ``systems``
+    ({role: fuzzy system}) and ``models`` ({learned tracker: model document})."""
+    with rule_bases.replaced(systems or {}), learned_models.replaced(models or {}):
         return {key: registry.experiment(key)(out / key, quick=True, seed=0) for key in ids}
 
 
-def moved(numbers: dict) -> tuple[float, float]:
-    """(farthest route distance from the published runs (m), largest relative change of an error or
-    pursuit time) over the runs of ``numbers`` that have a reference."""
-    stored, gap, change = routes.references(), 0.0, 0.0
-    for key, value in numbers.items():
-        for name, entry in routes.published_entries(key, value).items():
+def every_run(numbers: dict) -> dict:
+    """The entries of every run of ``numbers`` that reports a route, the learned trackers' included."""
+    return {name: entry for key, value in numbers.items()
+            for name, entry in routes.published_entries(key, value, skip=()).items()}
+
+
+def moved(numbers: dict, stored: dict | None = None) -> tuple[float, float]:
+    """(farthest route distance from the reference runs (m), largest relative change of an error or
+    pursuit time) over the runs of ``numbers`` that have a reference: ``stored`` ({entry name:
+    entry}, e.g. :func:`every_run` of an unmutated run), by default the published tables' runs."""
+    gap, change = 0.0, 0.0
+    if stored is None:
+        stored = routes.references()
+        runs = {name: entry for key, value in numbers.items()
+                for name, entry in routes.published_entries(key, value).items()}
+    else:
+        runs = every_run(numbers)
+    for name, entry in runs.items():
+        if name in stored:
             reference = stored[name]
             gap = max(gap, routes.deviation(entry["route"], reference["route"]))
             for field in ("max_cross_track_m", "mean_cross_track_m", "capture_time_s"):
@@ -136,9 +162,31 @@ def write_references(out: Path) -> Path:
     return path
 
 
+def _row(name: str, failed: list[str], gap: float, change: float, rmse: float | None = None) -> tuple[str, bool]:
+    """The table row of one mutation, and whether it is significant."""
+    significant = (gap > routes.ROUTE_TOLERANCE_M or change > routes.ERROR_TOLERANCE
+                   or (rmse is not None and rmse > VALIDATION_BOUND_RAD))
+    cells = [name, *([f"{rmse:.1e}"] if rmse is not None else []), f"{gap:.2f}", f"{change:.0%}",
+             "yes" if significant else "no", ", ".join(failed) or ("**none**" if significant else "none")]
+    return "| " + " | ".join(cells) + " |", significant
+
+
+def learned_rows(kind: str, out: Path, stored: dict):
+    """(table row, claims failed, significant) of every wrong model of learned tracker ``kind``,
+    against ``stored``, the runs of the trained models (:func:`every_run`)."""
+    training = LEARNED_REACHES[kind][0]
+    for name, document in learned_models.mutations(kind):
+        numbers = run(LEARNED_REACHES[kind], out, models={kind: document})
+        failed = failing(numbers)
+        row, significant = _row(name, failed, *moved(numbers, stored), numbers[training]["validation_rmse_rad"])
+        yield name, row, failed, significant
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--roles", nargs="*", default=list(REACHES), choices=list(REACHES))
+    roles = [*REACHES, *LEARNED_REACHES]
+    parser.add_argument("--roles", nargs="*", default=roles, choices=roles,
+                        help="fuzzy roles (rule tables) and learned trackers (their models) to mutate")
     parser.add_argument("--every-cell", action="store_true", help="flip the sign of every steering cell, one at a time")
     parser.add_argument("--write-references", action="store_true")
     args = parser.parse_args()
@@ -148,24 +196,37 @@ def main() -> None:
             print(f"wrote {write_references(out)}")
             return
         caught: dict[str, list[str]] = {}
-        baseline = sorted({key for role in args.roles for key in REACHES[role]})
-        print(f"published tables: claims not reproduced: {failing(run(baseline, out)) or 'none'}\n")
-        print("| mutation | route moved (m) | error / time change | significant | claims failed |")
-        print("|---|---|---|---|---|")
+        reaches = {**REACHES, **LEARNED_REACHES}
+        baseline = sorted({key for role in args.roles for key in reaches[role]})
+        published = run(baseline, out)
+        print(f"published tables, trained models: claims not reproduced: {failing(published) or 'none'}\n")
         misses = 0
-        for role in args.roles:
+        tables = [role for role in args.roles if role in REACHES]
+        if tables:
+            print("| mutation | route moved (m) | error / time change | significant | claims failed |")
+            print("|---|---|---|---|---|")
+        for role in tables:
             for name, document in mutations(role, args.every_cell):
                 path = out / f"{role}.yaml"
                 path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
                 numbers = run(REACHES[role], out, rule_bases.from_options([f"{role}={path}"]))
-                gap, change = moved(numbers)
                 failed = failing(numbers)
-                significant = gap > routes.ROUTE_TOLERANCE_M or change > routes.ERROR_TOLERANCE
+                row, significant = _row(name, failed, *moved(numbers))
                 misses += significant and not failed
                 for key in failed:
                     caught.setdefault(key, []).append(name)
-                print(f"| {name} | {gap:.2f} | {change:.0%} | {'yes' if significant else 'no'} | "
-                      f"{', '.join(failed) or ('**none**' if significant else 'none')} |", flush=True)
+                print(row, flush=True)
+        kinds = [role for role in args.roles if role in LEARNED_REACHES]
+        if kinds:
+            print("\n| mutation | validation RMSE (rad) | route moved (m) | error / time change | significant | "
+                  "claims failed |")
+            print("|---|---|---|---|---|---|")
+        for kind in kinds:
+            for name, row, failed, significant in learned_rows(kind, out, every_run(published)):
+                misses += significant and not failed
+                for key in failed:
+                    caught.setdefault(key, []).append(name)
+                print(row, flush=True)
         print(f"\nsignificant mutations no claim caught: {misses}\n")
         print("| claim | caught by |")
         print("|---|---|")

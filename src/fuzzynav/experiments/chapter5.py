@@ -23,7 +23,8 @@
   ``fig-V-34a/b`` choose them).
 
 The fuzzy tracker's Table V.1 is the role ``tracker`` of :mod:`fuzzynav.experiments.rule_bases`
-(``reproduce --fis tracker=FILE`` replaces it, in the surface of Fig V.7 too). Every run reports
+(``reproduce --fis tracker=FILE`` replaces it, in the surface of Fig V.7 too); the learned trackers'
+models are replaced by :func:`fuzzynav.experiments.learned_models.replaced`. Every run reports
 its route (:func:`fuzzynav.experiments.routes.route`) beside its errors or capture time.
 Path figures run the trackers as in the thesis (``corner_radius=0``) unless said otherwise.
 Every function has the registry signature ``(out_dir, quick, seed) -> dict`` and writes PNGs;
@@ -38,7 +39,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 
-from fuzzynav.experiments import routes
+from fuzzynav.experiments import learned_models, routes
 from fuzzynav.experiments.rule_bases import controller, system
 from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
@@ -99,8 +100,7 @@ def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 def _training_figure(kind: str, out_dir, quick: bool, seed: int) -> dict:
     data = tt.tracker_data(seed)
-    model = tt.fit_neural(data, seed) if kind == "neural-tracker" else tt.fit_anfis(
-        data, seed, epochs=50 if quick else tt.ANFIS_EPOCHS)
+    model = learned_models.model(kind, seed, quick)
     name = "fig-V-15.png" if kind == "neural-tracker" else "fig-V-23.png"
     figure = plot_training(kind, model, data, None)
     residual = data.y_val - model.predict(data.x_val)
@@ -119,9 +119,10 @@ def fig_v_23(out_dir, quick: bool = False, seed: int = 0) -> dict:
 
 
 def _run(scenario, name: str, seed: int, **options):
-    """One episode of tracker ``name`` (the learned ones trained with ``seed``): trace and metrics."""
-    training_seed = {} if name == "fuzzy-tracker" else {"seed": seed}
-    trace = run_episode(scenario, controller(name, **training_seed, **options), seed=seed)
+    """One episode of tracker ``name`` (the learned ones trained with ``seed``, or their
+    replacement of :mod:`~fuzzynav.experiments.learned_models`): trace and metrics."""
+    robot = controller(name, **options) if name == "fuzzy-tracker" else learned_models.tracker(name, seed, **options)
+    trace = run_episode(scenario, robot, seed=seed)
     return trace, {**metrics(trace, scenario), "route": routes.route(trace)}
 
 

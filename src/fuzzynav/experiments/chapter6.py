@@ -36,10 +36,9 @@ from matplotlib.figure import Figure
 from scipy.stats import spearmanr
 
 from fuzzynav import progress
-from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedAvoidanceNavigator
-from fuzzynav.experiments import chapter6_worlds as worlds, evaluation
+from fuzzynav.experiments import chapter6_worlds as worlds, evaluation, rule_bases
 from fuzzynav.learn.checkpoint import load_checkpoint
 from fuzzynav.learn.envs import RandomObstacles
 from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
@@ -328,7 +327,7 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
     learned from q = 0 on the same world, one whose straight route is blocked, and both over
     the same random worlds."""
     _, learned, _, _ = _avoid_model(out_dir, quick, seed)
-    fuzzy = make_controller("fuzzy-2b-thesis")
+    fuzzy = rule_bases.controller("fuzzy-2b-thesis")  # with the --fis replacements of its tables
     scenario = worlds.blocked_scenario(seed)
     figure = Figure(figsize=(11, 5.5), layout="constrained")
     numbers = {}
@@ -354,7 +353,7 @@ def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
     random wall courses."""
     request = _request(out_dir, "fql-wall", 300 if quick else None, seed)
     fql_wall.train_fql_wall(request)
-    learned, handmade = load_controller(request.out), make_controller("wall-follow")
+    learned, handmade = load_controller(request.out), rule_bases.controller("wall-follow")
     corners = (load_scenario("fig-VI-28"), worlds.second_corner())
     course = evaluation.wall_course_scenario(np.random.default_rng(seed + 1000), "wall course")
     figure = Figure(figsize=(16, 11), layout="constrained")
