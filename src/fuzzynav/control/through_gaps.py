@@ -61,7 +61,7 @@ GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_
 
 # the pace (kernels.pace): room kept beyond the radius on the arc ahead (m), seconds of travel left
 # before it, seconds to the target
-PACE = {"pace_room": 0.05, "pace_horizon": 1.0, "pace_goal": 1.0}
+PACE = {"pace_room": 0.05, "pace_horizon": 1.5, "pace_goal": 1.0}
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
