@@ -13,7 +13,7 @@ Usage (the BARN folder holds ``world_N.world`` and ``path_N.npy``, e.g. a copy o
 ``jackal_helper/worlds/BARN`` of Daffan/the-barn-challenge with ``path_files/`` flattened)::
 
     python benchmarks/barn_eval.py --barn DIR --worlds 0-149 --scale 1.0 --controller fuzzy-5b-gap \
-        [--sensors thesis|beam|lidar] [--out result.json]
+        [--sensors thesis|beam|lidar] [--max-speed 2] [--out result.json]
 """
 
 from __future__ import annotations
@@ -25,15 +25,20 @@ import time
 from pathlib import Path
 
 
-def scenario(world_file: Path, scale: float):
-    """The fuzzynav scenario of a BARN world at ``scale``."""
+def scenario(world_file: Path, scale: float, max_speed: float | None = None):
+    """The fuzzynav scenario of a BARN world at ``scale`` (the robot's top speed ``max_speed`` m/s,
+    if given: BARN's Jackal drives at most 2 m/s)."""
     from fuzzynav.world.barn import barn_scenario, read_posts
     from fuzzynav.world.scenario import scenario_from_dict
 
-    return scenario_from_dict(barn_scenario(read_posts(world_file), world_file.stem, scale), source=str(world_file))
+    document = barn_scenario(read_posts(world_file), world_file.stem, scale)
+    if max_speed is not None:
+        document["robot"]["max_speed"] = max_speed
+    return scenario_from_dict(document, source=str(world_file))
 
 
-def run_world(barn: Path, index: int, scale: float, controller: str, sensors: str | None) -> dict:
+def run_world(barn: Path, index: int, scale: float, controller: str, sensors: str | None,
+              max_speed: float | None = None) -> dict:
     """One run: outcome, time (s) and BARN score of world ``index``."""
     from fuzzynav.bench.measures import barn_score
     from fuzzynav.catalog.controllers import make_controller
@@ -41,7 +46,7 @@ def run_world(barn: Path, index: int, scale: float, controller: str, sensors: st
     from fuzzynav.sim.simulator import BatchSimulator
     from fuzzynav.world.barn import optimal_path_length
 
-    sim = BatchSimulator(scenario(barn / f"world_{index}.world", scale), make_controller(controller),
+    sim = BatchSimulator(scenario(barn / f"world_{index}.world", scale, max_speed), make_controller(controller),
                          sensors=None if sensors is None else named_ring(sensors), seed=0, record=False).run()
     outcome, seconds = sim.outcomes()[0], float(sim.steps[0]) * sim.params.dt
     score = barn_score(outcome == "reached", seconds, scale * optimal_path_length(barn / f"path_{index}.npy"))
@@ -70,11 +75,14 @@ def main(argv=None) -> None:
     parser.add_argument("--scale", type=float, default=1.0)
     parser.add_argument("--controller", default="fuzzy-5b")
     parser.add_argument("--sensors", default=None, help="sensor ring by name (default: the controller's)")
+    parser.add_argument("--max-speed", type=float, default=None,
+                        help="the robot's top speed in m/s (default: the scenario's 4; BARN's Jackal: 2)")
     parser.add_argument("--out", type=Path, help="write the rows and the summary as JSON here")
     args = parser.parse_args(argv)
     started = time.perf_counter()
-    rows = [run_world(args.barn, i, args.scale, args.controller, args.sensors) for i in world_range(args.worlds)]
+    rows = [run_world(args.barn, i, args.scale, args.controller, args.sensors, args.max_speed) for i in world_range(args.worlds)]
     result = {"controller": args.controller, "sensors": args.sensors, "scale": args.scale, "worlds": args.worlds,
+              "max_speed": args.max_speed,
               "summary": summary(rows), "seconds": round(time.perf_counter() - started, 1), "runs": rows}
     print(json.dumps({k: v for k, v in result.items() if k != "runs"}))
     if args.out:

@@ -65,16 +65,20 @@ class RobustNavigator(BatchController):
     ``stop_wait``: seconds of safety stop before a recovery) and, given ``guidance`` (the
     ``guide_*`` values of :mod:`fuzzynav.kernels.layers`, e.g.
     :data:`fuzzynav.control.through_gaps.GUIDANCE`), the route guidance
-    (:mod:`fuzzynav.kernels.guidance`); ``systems`` of the navigator are its rule bases by role."""
+    (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (the ``pace_*`` values, e.g.
+    :data:`fuzzynav.control.through_gaps.PACE`), the speed set by the room ahead
+    (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0, guidance: dict | None = None):
+                 stop_wait: float = 1.0, guidance: dict | None = None, pace: dict | None = None):
         self.navigator, self.name = navigator, name
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
                   "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
         if guidance is not None:
-            values.update(_guidance(guidance))
+            values.update(_switched("guide", guidance, "guidance"))
+        if pace is not None:
+            values.update(_switched("pace", pace, "pace"))
         values["places_slots"] = int(LOOP["horizon"] / (LOOP["sample_every"] - 1e-9)) + 3  # never all in use
         self.params = np.concatenate([[values.get(key, 0.0) for key in layers.PARAM_NAMES], _recovery_tables()])
         self.for_robot(DEFAULT_PARAMS, navigator=False)
@@ -106,7 +110,7 @@ class RobustNavigator(BatchController):
         if navigator:
             self.navigator.for_robot(robot)
         self.params[layers.RADIUS], self.params[layers.MAX_REVERSE_SPEED] = robot.radius, robot.max_reverse_speed
-        self.params[layers.WHEELBASE] = robot.wheelbase
+        self.params[layers.WHEELBASE], self.params[layers.MAX_SPEED] = robot.wheelbase, robot.max_speed
         return self
 
     def compiled(self, n: int, sensor_angles):
@@ -162,13 +166,13 @@ class RobustNavigator(BatchController):
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
 
-def _guidance(values: dict) -> dict:
-    """The layers' values that switch the route guidance on with ``values`` (every ``guide_*``
-    parameter but the switch)."""
-    names = {name for name in layers.PARAM_NAMES if name.startswith("guide_")}
+def _switched(switch: str, values: dict, field: str) -> dict:
+    """The layers' values that switch a layer on (``switch``: ``guide``, the route guidance, or
+    ``pace``) with ``values`` (every ``<switch>_*`` parameter but the switch)."""
+    names = {name for name in layers.PARAM_NAMES if name.startswith(f"{switch}_")}
     if set(values) != names:
-        raise InputError(f"route guidance needs exactly {sorted(names)}, got {sorted(values)}", field="guidance")
-    return {"guide": 1.0, **{name: float(value) for name, value in values.items()}}
+        raise InputError(f"{field} needs exactly {sorted(names)}, got {sorted(values)}", field=field)
+    return {switch: 1.0, **{name: float(value) for name, value in values.items()}}
 
 
 @functools.cache

@@ -27,6 +27,11 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   ``guide_car_speed``, ``CAR-BACK`` at the recovery's backing speed, each step checked against
   the remembered points) and plans again after each. The grid route is the fallback when the
   search gives up within ``guide_car_budget`` nodes.
+- The pace (:mod:`fuzzynav.kernels.pace`, ``pace_*``): where the navigator drives (not the
+  layers' manoeuvres), its speed is raised to the one that leaves ``pace_horizon`` s of travel on
+  the arc of its steering before the body comes within ``pace_room`` m of a lidar hit (at most
+  the robot's top speed and the target's distance per ``pace_goal`` s), when the safety stop's
+  test passes at that speed; the thesis' speeds (Table IV.1, VRB) stay the floor.
 - :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
   (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
   escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
@@ -54,14 +59,20 @@ GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_
             "guide_car_ahead": 1.0, "guide_car_tight": 0.5, "guide_car_speed": 0.8}
 
 
+# the pace (kernels.pace): room kept beyond the radius on the arc ahead (m), seconds of travel left
+# before it, seconds to the target
+PACE = {"pace_room": 0.05, "pace_horizon": 1.5, "pace_goal": 1.0}
+
+
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
-                        **options) -> RobustNavigator:
+                        paced: bool = True, pace: dict | None = None, **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
-    (``guidance``: values replacing those of :data:`GUIDANCE`), with recovery and loop escape
-    (either can be switched off)."""
+    (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
+    values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
+    can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did)."""
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
 
     navigator = FiveBehaviourNavigator(gap=True, **options)
     navigator.name = "fuzzy-5b-gap-robust"
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
-                           guidance={**GUIDANCE, **(guidance or {})})
+                           guidance={**GUIDANCE, **(guidance or {})}, pace={**PACE, **(pace or {})} if paced else None)

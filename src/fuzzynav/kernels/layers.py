@@ -44,6 +44,9 @@ PARAM_NAMES = (
     "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reach", "guide_car_budget",
     "guide_car_reverse", "guide_car_gear", "guide_car_cell", "guide_car_steerings", "guide_car_steering",
     "guide_car_ahead", "guide_car_tight", "guide_car_speed", "wheelbase",
+    # the pace (kernels.pace; off unless ``pace``): room kept on the arc ahead (m), seconds of travel
+    # left before it, seconds to the target; the robot's top speed
+    "pace", "pace_room", "pace_horizon", "pace_goal", "max_speed",
     # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     "places_slots", "points_slots", "cell_slots", "grow",
 )
@@ -55,7 +58,7 @@ PARAM_NAMES = (
  GUIDE_CAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEP, GUIDE_CAR_NODE, GUIDE_CAR_HEADINGS, GUIDE_CAR_WEIGHT,
  GUIDE_CAR_COMFORT, GUIDE_CAR_TURN, GUIDE_CAR_SWITCH, GUIDE_CAR_REACH, GUIDE_CAR_BUDGET,
  GUIDE_CAR_REVERSE, GUIDE_CAR_GEAR, GUIDE_CAR_CELL, GUIDE_CAR_STEERINGS, GUIDE_CAR_STEERING,
- GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, GUIDE_CAR_SPEED, WHEELBASE,
+ GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, GUIDE_CAR_SPEED, WHEELBASE, PACE, PACE_ROOM, PACE_HORIZON, PACE_GOAL, MAX_SPEED,
  PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
 TABLES_AT = len(PARAM_NAMES)
 STATE_NAMES = (

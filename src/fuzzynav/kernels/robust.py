@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels import escape, guidance, navigators, recovery, sightings
+from fuzzynav.kernels import escape, guidance, navigators, pace, recovery, sightings
 from fuzzynav.kernels.layers import (
     ACTIVE,
     COUNT,
@@ -25,6 +25,7 @@ from fuzzynav.kernels.layers import (
     N_LABELS,
     NO_PHASE,
     ON,
+    PACE,
     PHASE,
     RADIUS,
     RECOVERY,
@@ -74,6 +75,10 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
         aim_x, aim_y = guidance.aim(state, p, points, count, x, y, theta, aim_x, aim_y, t, p[RADIUS])
     steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
                                                ranges, angles, max_range, dt, d_o, b_o)
+    if p[PACE] != 0.0 and speed > 0.0:
+        faster = pace.pace(ranges, angles, max_range, steering, p, distance)
+        if faster > speed and navigators.safety_stop(params, memory, x, y, theta, faster, dt) > 0.0:
+            speed = faster
     labels = int(p[N_LABELS])
     if following:
         code = labels + 2

@@ -1,0 +1,63 @@
+"""The pace's free run (fuzzynav.kernels.pace) against a march along the arc in small steps."""
+
+import math
+
+import numpy as np
+import pytest
+
+from fuzzynav.kernels import layers
+from fuzzynav.kernels.pace import free_run, pace
+
+ANGLES = np.radians(np.linspace(-135.0, 135.0, 271))
+MAX_RANGE = 5.0
+
+
+def marched(ranges, kappa, room, step=1e-3):
+    """Arc length before the centre comes within ``room`` of a hit, walking the arc."""
+    hits = np.c_[ranges * np.cos(ANGLES), ranges * np.sin(ANGLES)][ranges < MAX_RANGE]
+    s = 0.0
+    while s < MAX_RANGE:
+        if abs(kappa) < 1e-9:
+            x, y = s, 0.0
+        else:
+            x, y = math.sin(kappa * s) / kappa, (1.0 - math.cos(kappa * s)) / kappa
+        if len(hits) and np.min(np.hypot(hits[:, 0] - x, hits[:, 1] - y)) < room:
+            return s
+        s += step
+    return MAX_RANGE
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("kappa", [0.0, 0.5, -0.8, 1.45, -1.45])
+def test_free_run_is_the_arc_length_to_the_first_hit_within_room(seed, kappa):
+    rng = np.random.default_rng(seed)
+    ranges = np.full(ANGLES.size, MAX_RANGE)
+    beams = rng.choice(ANGLES.size, 12, replace=False)
+    ranges[beams] = rng.uniform(0.6, 4.5, 12)
+    run = free_run(ranges, ANGLES, MAX_RANGE, kappa, 0.35)
+    assert run == pytest.approx(marched(ranges, kappa, 0.35), abs=0.01)
+
+
+def test_a_hit_inside_the_room_ahead_leaves_no_run_and_one_behind_is_ignored():
+    ranges = np.full(ANGLES.size, MAX_RANGE)
+    ranges[135] = 0.3  # straight ahead, within 0.35 m
+    assert free_run(ranges, ANGLES, MAX_RANGE, 0.0, 0.35) == 0.0
+    assert free_run(ranges, ANGLES, MAX_RANGE, 1.0, 0.35) == 0.0
+    ranges[135], ranges[0] = MAX_RANGE, 0.3  # 135° to the right, behind the centre
+    assert free_run(ranges, ANGLES, MAX_RANGE, 0.0, 0.35) == MAX_RANGE
+
+
+def layer_params(horizon=1.0, top=4.0):
+    params = np.zeros(layers.TABLES_AT)
+    params[[layers.WHEELBASE, layers.RADIUS, layers.PACE_ROOM]] = 0.5, 0.3, 0.05
+    params[[layers.PACE_HORIZON, layers.PACE_GOAL, layers.MAX_SPEED]] = horizon, 1.0, top
+    return params
+
+
+def test_pace_is_the_slowest_of_top_speed_room_and_target():
+    ranges = np.full(ANGLES.size, MAX_RANGE)
+    ranges[135] = 2.35  # 2 m of run straight ahead with 0.35 m of room
+    assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(), 9.0) == pytest.approx(2.0)
+    assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(horizon=2.0), 9.0) == pytest.approx(1.0)
+    assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(), 0.5) == pytest.approx(0.5)
+    assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(horizon=0.1, top=1.5), 9.0) == pytest.approx(1.5)
