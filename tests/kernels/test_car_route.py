@@ -10,6 +10,7 @@ import pytest
 
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels import car_route, guidance, layers
+from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
 BODY = float(PARAMS[layers.RADIUS])
@@ -129,9 +130,10 @@ def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
     else:  # following a boundary for longer than its limit
         row[[layers.ACTIVE, layers.SIDE, layers.T_FOLLOW]] = 1.0, 1.0, -100.0
     ranges = np.full(len(angles), controller.sensors.max_range)
-    steering, speed, code = robust.act_one(kind, params, tables, nav_state[0], memory[0], layer_params, row, 0.0, 0.0,
-                                           0.0, 0.5, 10.0, 0.0, ranges, angles, controller.sensors.max_range, 0.05,
-                                           math.inf, 0.0, 30.0)
+    steering, speed, code = robust.act_one(Navigator(kind, params, tables), nav_state[0], memory[0],
+                                           Layers(layer_params, row), Robot(0.0, 0.0, 0.0, 0.5, 10.0, 0.0),
+                                           Reading(ranges, angles, controller.sensors.max_range, math.inf, 0.0), 0.05,
+                                           30.0)
     assert row[layers.ACTIVE] == (1.0 if starts else 0.0)
     assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
     assert row[layers.GUIDE_GEAR] == 0.0 and row[layers.GUIDE_PLANNED] == 30.0  # planned again at once

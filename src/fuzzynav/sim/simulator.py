@@ -37,6 +37,7 @@ from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
 from fuzzynav.errors import CommandError
 from fuzzynav.kernels import layers, step as step_kernel, traffic
+from fuzzynav.kernels.records import Robots, Traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
@@ -261,9 +262,9 @@ class BatchSimulator:
         self.k += 1
         try:
             offsets = self._offsets(self.k)
-            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
-                                             self._movers, offsets, self._scene, self.k, self._state, self._ranges,
-                                             self._status)
+            self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
+                                             Traffic(self._base, self._movers, offsets, self._scene), self.k,
+                                             Robots(self._state, self._ranges, self._status))
         except ValueError as error:  # a compiled navigator refusing a non-finite input
             raise CommandError(f"stopped: {error}", source=f"controller {self.controller_name}",
                                field=f"step {self.k}") from None
