@@ -13,22 +13,6 @@ PACKAGE = Path(fuzzynav.__file__).resolve().parent
 FOLDERS = (PACKAGE / "kernels", PACKAGE / "fuzzy" / "engine")
 MOST = 8
 STILL_WIDE = {  # "module.function": arguments, to convert
-    "kernels/car_route.py:first_leg": 14,
-    "kernels/car_route.py:plan": 12,
-    "kernels/escape.py:virtual_goal": 13,
-    "kernels/guard.py:turn_wanted": 12,
-    "kernels/guard.py:remember": 11,
-    "kernels/guard.py:select_all": 9,
-    "kernels/sightings.py:see": 11,
-    "kernels/recovery.py:start": 11,
-    "kernels/recovery.py:command": 11,
-    "kernels/guidance.py:plan": 11,
-    "kernels/guidance.py:aim": 11,
-    "kernels/guidance.py:car": 10,
-    "kernels/scene.py:cast": 9,
-    "kernels/route.py:target": 9,
-    "kernels/learned.py:drive": 9,
-    "kernels/beams.py:cone_one": 9,
     "fuzzy/engine/staged_kernels.py:_integral": 14,
     "fuzzy/engine/staged_kernels.py:weighted_affine": 12,
     "fuzzy/engine/staged_kernels.py:integral": 11,

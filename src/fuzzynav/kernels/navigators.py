@@ -18,7 +18,7 @@ from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
 from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.kernels.motion import wrap
-from fuzzynav.kernels.records import Reading, Robot
+from fuzzynav.kernels.records import Pose, Reading, Robot, TurnRoom
 
 GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
 MODE, HELD, SIDE, COUNT = range(4)
@@ -78,12 +78,11 @@ def dwell(params):
 @jit
 def watch(params, state, memory, robot, seen, dt, goal_bearing, turning):
     """Remember this step's hits and ask the turning-room guard: (turn wanted?, side)."""
-    x, y, theta = robot.x, robot.y, robot.theta
-    guard.remember(memory, state[COUNT], x, y, theta, seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o,
-                   params[HALF_CONE])
+    pose = Pose(robot.x, robot.y, robot.theta)
+    guard.remember(memory, state[COUNT], pose, seen, params[HALF_CONE])
     state[COUNT] += 1
-    wanted, side = guard.turn_wanted(memory, x, y, theta, robot.v * dt, turning, goal_bearing, params[LANE],
-                                     params[ROOM_MARGIN], state[SIDE], params[BODY], params[TURN_RADIUS])
+    wanted, side = guard.turn_wanted(memory, pose, robot.v * dt, turning, goal_bearing, state[SIDE],
+                                     TurnRoom(params[LANE], params[ROOM_MARGIN], params[BODY], params[TURN_RADIUS]))
     state[SIDE] = side
     return wanted and params[TURNING_ROOM] != 0.0, side
 

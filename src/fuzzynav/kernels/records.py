@@ -5,11 +5,17 @@ reads by name (``robot.theta``, ``seen.ranges``), at no cost over separate argum
 inside a kernel or in Python alike. A field's comment gives its unit.
 
 - :class:`Navigator` — which navigator and its constants (shared by the robots);
+- :class:`Pose` — where a robot is;
 - :class:`Robot` — one robot this step: pose, speed and the point it aims at;
 - :class:`Reading` — what one robot's sensors read this step;
 - :class:`Readings` — the same, and the robots' poses, speeds and targets, for a batch;
 - :class:`Layers` — the recovery / loop-escape / guidance layers of one robot
   (:mod:`fuzzynav.kernels.layers`);
+- :class:`Sightings` — the obstacle points a robot remembers (:mod:`fuzzynav.kernels.sightings`);
+- :class:`CarSearch` — the car route's search settings (:mod:`fuzzynav.kernels.car_route`);
+- :class:`TurnRoom` — the turning-room guard's distances (:func:`fuzzynav.kernels.guard.turn_wanted`);
+- :class:`Thresholds` — the behaviour selection's distances (:func:`fuzzynav.kernels.guard.select`);
+- :class:`Shares` — the learned avoider's shares of a batch (:func:`fuzzynav.kernels.learned.drive`);
 - :class:`StepNavigator`, :class:`Traffic`, :class:`Robots` — the arguments of the simulator's step
   (:func:`fuzzynav.kernels.step.step`).
 """
@@ -27,6 +33,14 @@ class Navigator(NamedTuple):
     kind: int  # navigators.GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER or CONSTANT
     params: np.ndarray  # (P,) its constants at the indices of kernels.navigators
     tables: np.ndarray  # its rule bases (kernels.ts0.pack), in the order of its roles
+
+
+class Pose(NamedTuple):
+    """Where a robot is."""
+
+    x: float  # m
+    y: float  # m
+    theta: float  # rad, heading
 
 
 class Robot(NamedTuple):
@@ -68,6 +82,48 @@ class Layers(NamedTuple):
 
     params: np.ndarray  # layers.PARAM_NAMES, then the recovery's rule base
     state: np.ndarray  # the robot's row: layers.STATE_NAMES, then its places, points and cells
+
+
+class Sightings(NamedTuple):
+    """The obstacle points a robot remembers."""
+
+    points: np.ndarray  # (P, 2) m, world frame; the first ``count`` are filled
+    count: int
+
+
+class CarSearch(NamedTuple):
+    """The car route's search (:func:`fuzzynav.kernels.car_search.search`)."""
+
+    curvatures: np.ndarray  # (K,) 1/m, the arcs' curvatures
+    numbers: np.ndarray  # the search's numbers, in the order of car_search.search (radius first, m)
+    cell: float  # m, the clearance grid's cell
+
+
+class TurnRoom(NamedTuple):
+    """The distances of the turning-room guard."""
+
+    lane: float  # m, the lane ahead that must be free
+    margin: float  # m, the room the better half turn must keep
+    body: float  # m, the body's radius
+    radius: float  # m, the full-lock turn's radius
+
+
+class Thresholds(NamedTuple):
+    """The distances of the behaviour selection (Fig IV.16)."""
+
+    detection: float  # m, an obstacle nearer than this is avoided
+    front: float  # m, the front avoider (FOA) while the front reading is below this
+    keep: float  # m, no reading below this for the goal direction to count clear
+    clear: float  # m, the rays towards the goal read at least min(d_rg, clear) to count clear
+    vision: float  # rad, the rays within this of the goal bearing are those looked at
+
+
+class Shares(NamedTuple):
+    """The learned avoider's shares of a batch of N rows."""
+
+    alpha: np.ndarray  # (N,) rad, its steering share
+    speed: np.ndarray  # (N,) m/s, its speed share
+    free: np.ndarray  # (N,) the goal seeker's weight w_free
 
 
 class StepNavigator(NamedTuple):

@@ -36,7 +36,7 @@ from fuzzynav.kernels.layers import (
     points_of,
 )
 from fuzzynav.kernels.motion import wrap
-from fuzzynav.kernels.records import Layers, Robot
+from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
 
 
 @jit
@@ -51,9 +51,10 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
     ranges, angles, max_range, d_o, b_o = seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o
     points = points_of(p, state)
-    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), x, y, theta, ranges, angles, max_range, d_o,
-                          b_o)
+    pose = Pose(x, y, theta)
+    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), pose, seen)
     state[COUNT] = count
+    remembered = Sightings(points, count)
     if count + ranges.shape[0] + 1 > points.shape[0]:  # the next step could fill the slots
         p[GROW] = 1.0
     distance = math.hypot(tx - x, ty - y)
@@ -72,9 +73,9 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
             guidance.drop(state)
         if state[ACTIVE] != 0.0:
             following = True
-            aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
+            aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[RADIUS])
     if p[GUIDE] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, theta, aim_x, aim_y, t, p[RADIUS])
+        aim_x, aim_y = guidance.aim(state, p, remembered, Robot(x, y, theta, robot.v, aim_x, aim_y), t, p[RADIUS])
     steering, speed, code = navigators.act_one(navigator, cstate, memory, Robot(x, y, theta, robot.v, aim_x, aim_y),
                                                seen, dt)
     labels = int(p[N_LABELS])
@@ -87,14 +88,14 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
         return steering, speed, code
     if state[PHASE] != NO_PHASE:
-        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
             return a, u, labels + phase - 1
     state[STOPPED] = state[STOPPED] + dt if speed == 0.0 and distance > 0.5 else 0.0
     if state[STOPPED] >= p[STOP_WAIT] - 1e-9:
         state[STOPPED] = 0.0
-        recovery.start(state, p, p[TABLES_AT:], points, count, x, y, theta, bearing, max_range, t)
-        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        recovery.start(state, p, p[TABLES_AT:], remembered, pose, bearing, max_range, t)
+        moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
             return a, u, labels + phase - 1
     return steering, speed, code
