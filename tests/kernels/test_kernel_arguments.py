@@ -1,8 +1,7 @@
-"""No compiled kernel takes more than eight arguments: wider kernels group theirs into named
-records (the NamedTuples of :mod:`fuzzynav.kernels.records`, read by field name) instead of
-positions kept by hand. Every ``@jit`` function under ``kernels/`` and ``fuzzy/engine/`` is
-inspected; :data:`STILL_WIDE` lists the kernels not converted yet, and may only shrink (an entry
-that is no longer wider than eight, or no longer exists, fails the test until it is removed)."""
+"""No compiled kernel takes more than eight arguments: wider ones group theirs into named records
+(the NamedTuples of :mod:`fuzzynav.kernels.records` and :mod:`fuzzynav.fuzzy.engine.records`,
+read by field name) instead of positions kept by hand. Every ``@jit`` function under
+``kernels/`` and ``fuzzy/engine/`` is inspected."""
 
 import ast
 from pathlib import Path
@@ -12,18 +11,6 @@ import fuzzynav
 PACKAGE = Path(fuzzynav.__file__).resolve().parent
 FOLDERS = (PACKAGE / "kernels", PACKAGE / "fuzzy" / "engine")
 MOST = 8
-STILL_WIDE = {  # "module.function": arguments, to convert
-    "fuzzy/engine/staged_kernels.py:_integral": 14,
-    "fuzzy/engine/staged_kernels.py:weighted_affine": 12,
-    "fuzzy/engine/staged_kernels.py:integral": 11,
-    "fuzzy/engine/staged_kernels.py:group": 9,
-    "fuzzy/engine/sugeno_outputs.py:_group_degree": 12,
-    "fuzzy/engine/sugeno_outputs.py:every_row_affine": 10,
-    "fuzzy/engine/fused_kernel.py:_fuzzify": 12,
-    "fuzzy/engine/centroid_rows.py:max_centroid": 10,
-    "fuzzy/engine/centroid_rows.py:_one_unit_to_lane": 9,
-    "fuzzy/engine/implication.py:max_four": 9,
-}
 
 
 def _is_jit(decorator: ast.expr) -> bool:
@@ -54,11 +41,5 @@ def test_the_kernels_are_found():
 
 def test_no_kernel_takes_more_than_eight_arguments():
     widths = kernel_widths()
-    wide = {name: count for name, count in widths.items() if count > MOST and name not in STILL_WIDE}
-    assert wide == {}, f"group these kernels' arguments into named records (kernels/records.py): {wide}"
-
-
-def test_the_list_of_kernels_still_wide_only_shrinks():
-    widths = kernel_widths()
-    stale = {name: widths.get(name) for name in STILL_WIDE if widths.get(name, 0) <= MOST}
-    assert stale == {}, f"no longer wide (or gone): remove them from STILL_WIDE: {stale}"
+    wide = {name: count for name, count in widths.items() if count > MOST}
+    assert wide == {}, f"group these kernels' arguments into named records (a records module): {wide}"
