@@ -74,14 +74,15 @@ def test_one_robot_act_and_act_batch_decide_as_the_compiled_step(wrapper):
 
 def test_route_goes_round_a_wall_on_its_shorter_side_and_not_through_a_closed_box():
     from fuzzynav.kernels import route
+    from fuzzynav.kernels.records import Sightings
 
     wall = np.array([[10.0, y] for y in np.arange(6.0, 16.0, 0.05)])  # x = 10, y 6 … 16; start and goal at y = 9
-    found, x, y = route.target(wall, len(wall), 5.0, 9.0, 15.0, 9.0, 0.5, 6.0)
+    found, x, y = route.target(Sightings(wall, len(wall)), 5.0, 9.0, 15.0, 9.0, 0.5, 6.0)
     assert found and x > 10.0 and y < 6.0  # 6 m along the route: past the wall, round its nearer (lower) end
     corners = np.array([[5.0 + a, 9.0 + b] for a, b in ((-1, -1), (1, -1), (-1, 1), (1, 1))])
     box = np.vstack([np.column_stack([np.linspace(p[0], q[0], 41), np.linspace(p[1], q[1], 41)])
                      for p, q in zip(corners[[0, 1, 3, 2]], corners[[1, 3, 2, 0]])])
-    assert not route.target(box, len(box), 5.0, 9.0, 15.0, 9.0, 0.3, 2.5)[0]
+    assert not route.target(Sightings(box, len(box)), 5.0, 9.0, 15.0, 9.0, 0.3, 2.5)[0]
 
 
 def test_switches_turn_the_layers_off():

@@ -6,6 +6,7 @@ import pytest
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.kernels import guard
+from fuzzynav.kernels.records import Pose, Reading
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.trajectories import merged_changes
 from fuzzynav.world.generate import generate_worlds
@@ -42,10 +43,10 @@ def test_turning_room_of_a_wall_ahead():
 def test_hit_memory_keeps_world_points_seen_from_the_new_pose():
     memory = np.zeros((2, 3, 3))  # 2 steps, 2 rays + the cone echo
     angles = np.array([0.0, 0.5])
-    guard.remember(memory, 0, 1.0, 2.0, np.pi / 2, np.array([1.0, 4.0]), angles, 4.0, np.inf, 0.0, 0.26)
+    guard.remember(memory, 0, Pose(1.0, 2.0, np.pi / 2), Reading(np.array([1.0, 4.0]), angles, 4.0, np.inf, 0.0), 0.26)
     np.testing.assert_allclose(memory[0, :, 2], [1.0, 0.0, 0.0])  # the max-range reading is no hit, no echo
     np.testing.assert_allclose(memory[0, 0, :2], [1.0, 3.0], atol=1e-12)
-    guard.remember(memory, 1, 1.0, 2.5, np.pi / 2, np.array([4.0, 4.0]), angles, 4.0, 2.0, 0.1, 0.26)
+    guard.remember(memory, 1, Pose(1.0, 2.5, np.pi / 2), Reading(np.array([4.0, 4.0]), angles, 4.0, 2.0, 0.1), 0.26)
     np.testing.assert_allclose(memory[1, 2, 2], 1.0)  # the nearest point within the cone: an echo
     x, y = guard.local(memory, 0, 0, 1.0, 2.5, np.cos(np.pi / 2), np.sin(np.pi / 2))
     assert (x, y) == pytest.approx((0.5, 0.0), abs=1e-12)  # remembered, now 0.5 m ahead

@@ -9,6 +9,7 @@ from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.control.through_gaps import GUIDANCE
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import guidance, layers
+from fuzzynav.kernels.records import Robot, Sightings
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import scenario_from_dict
 
@@ -59,7 +60,8 @@ def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:
     params = make_controller("fuzzy-5b-gap-robust", guidance={**GUIDANCE, "guide_car": float(car)}).params
     state = layers.fresh_state(1, params)[0]
     points = np.asarray(points, dtype=float)
-    return np.array(guidance.aim(state, params, points, len(points), *pose, 0.0, 10.0, 0.0, params[layers.RADIUS]))
+    return np.array(guidance.aim(state, params, Sightings(points, len(points)), Robot(*pose, 0.0, 0.0, 10.0), 0.0,
+                                 params[layers.RADIUS]))
 
 
 @pytest.mark.parametrize("car", [True, False])
@@ -81,9 +83,10 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
     wall = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
     radius = params[layers.RADIUS]
     pose = (0.0, 0.0, np.pi / 2)
-    first = guidance.aim(state, params, wall, len(wall), *pose, 0.0, 10.0, 0.0, radius)
-    assert guidance.aim(state, params, wall, 0, *pose, 0.0, 10.0, 0.5, radius) == first  # not re-planned yet
-    assert guidance.aim(state, params, wall, 0, *pose, 0.0, 10.0, 1.0, radius) == (0.0, 10.0)  # nothing seen
+    robot = Robot(*pose, 0.0, 0.0, 10.0)
+    first = guidance.aim(state, params, Sightings(wall, len(wall)), robot, 0.0, radius)
+    assert guidance.aim(state, params, Sightings(wall, 0), robot, 0.5, radius) == first  # not re-planned yet
+    assert guidance.aim(state, params, Sightings(wall, 0), robot, 1.0, radius) == (0.0, 10.0)  # nothing seen
 
 
 def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only():

@@ -6,6 +6,7 @@ import pytest
 
 from fuzzynav.fuzzy.engine import centroid_rows, norms, staged_kernels
 from fuzzynav.fuzzy.engine.defuzzify import midpoints
+from fuzzynav.fuzzy.engine.records import Affine, Groups, Sampled, Units
 from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
 from fuzzynav.fuzzy.engine.staged_kernels import AND, OR
 from fuzzynav.fuzzy.io.fll import from_fll_engine
@@ -65,8 +66,9 @@ def test_integral_skips_only_what_cannot_change_the_result(reduction):
                 units, unit_term = rows, terms
             imps = np.full(unit_term.size, implication, dtype=np.int64)
             fast, full = np.empty(300), np.empty(300)
-            staged_kernels.integral(degrees, rows, units, unit_term, imps, shapes, support, x, aggregation, reduction, fast)
-            staged_kernels.integral(degrees, rows, units, unit_term, imps, shapes, everywhere, x, aggregation, reduction, full)
+            unit = Units(units, unit_term, imps, aggregation)
+            staged_kernels.integral(degrees, rows, unit, Sampled(shapes, support, x, reduction), fast)
+            staged_kernels.integral(degrees, rows, unit, Sampled(shapes, everywhere, x, reduction), full)
             np.testing.assert_array_equal(fast, full, err_msg=f"{SNORMS[aggregation]} / {TNORMS[implication]}")
             assert np.isnan(fast[:3]).all()
             if (SNORMS[aggregation], TNORMS[implication]) == ("Maximum", "Minimum"):
@@ -95,8 +97,8 @@ def test_maximum_units_four_at_a_time_give_the_bits_of_one_by_one(reduction):
     assert staged_kernels._spans_overlap(support, unit_term, units, 0)[2]
     four, one_by_one = np.empty(400), np.empty(400)
     for use_four, out in ((True, four), (False, one_by_one)):
-        staged_kernels._integral(use_four, degrees, rows, units, unit_term, implication, np.ascontiguousarray(shapes),
-                           support, x, maximum, reduction, out, 0, 400)
+        staged_kernels._integral(use_four, degrees, rows, Units(units, unit_term, implication, maximum),
+                                 Sampled(np.ascontiguousarray(shapes), support, x, reduction), out, 0, 400)
     np.testing.assert_array_equal(four, one_by_one)
     assert np.isfinite(four[4:]).mean() > 0.9
 
@@ -121,9 +123,9 @@ def test_a_sparse_centroid_computed_across_rows_gives_the_bits_of_row_by_row():
     maximum = SNORMS.index("Maximum")
     assert centroid_rows.applies(unit_term, implication, support, x.size)
     across_rows, row_by_row = np.empty(1000), np.empty(1000)
-    staged_kernels.integral(degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, across_rows)
-    staged_kernels._integral(False, degrees, rows, units, unit_term, implication, shapes, support, x, maximum, 0, row_by_row,
-                       0, 1000)
+    unit, sampled = Units(units, unit_term, implication, maximum), Sampled(shapes, support, x, 0)
+    staged_kernels.integral(degrees, rows, unit, sampled, across_rows)
+    staged_kernels._integral(False, degrees, rows, unit, sampled, row_by_row, 0, 1000)
     np.testing.assert_array_equal(across_rows, row_by_row)
     assert np.isnan(across_rows[:3]).all() and np.isfinite(across_rows[3:5]).all()
     assert np.isfinite(across_rows[5:]).mean() > 0.9
@@ -177,9 +179,10 @@ def test_weighted_outputs_four_groups_at_a_time_give_the_bits_of_one_group_at_a_
         for aggregation in (SNORMS.index("Maximum"), SNORMS.index("AlgebraicSum")):
             for weighted_sum in (False, True):
                 out = np.empty(n)
-                staged_kernels.weighted_affine(degrees, rows, groups, np.zeros(groups.size, dtype=np.bool_),
-                                         np.ones((0, 0), dtype=np.bool_), False, aggregation, coefficients, constants,
-                                         inputs, weighted_sum, out)
+                grouping = Groups(rows, groups, np.zeros(groups.size, dtype=np.bool_), np.ones((0, 0), dtype=np.bool_),
+                                  False, aggregation)
+                staged_kernels.weighted_affine(degrees, grouping, Affine(coefficients, constants), inputs, weighted_sum,
+                                               out)
                 with np.errstate(invalid="ignore"):  # inf − inf and 0 / 0, as in the kernel
                     expected = _weighted_reference(degrees, rows, groups, aggregation, coefficients, constants,
                                                    inputs, weighted_sum)

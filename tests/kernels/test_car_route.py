@@ -10,6 +10,7 @@ import pytest
 
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels import car_route, guidance, layers
+from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
 BODY = float(PARAMS[layers.RADIUS])
@@ -38,8 +39,8 @@ def chamber():
 
 
 def _plan(points, pose, goal, reverse=True):
-    return car_route.plan(points, len(points), *pose, *goal, BODY + _numbers()[0], BODY, _curvatures(),
-                          _numbers(reverse), PARAMS[layers.GUIDE_CAR_CELL])
+    return car_route.plan(Sightings(points, len(points)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
+                          CarSearch(_curvatures(), _numbers(reverse), PARAMS[layers.GUIDE_CAR_CELL]))
 
 
 def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
@@ -51,9 +52,9 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     backwards = primitives[1:] >= len(_curvatures())
     assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
     assert np.hypot(*(poses[-1, :2] - goal)) <= _numbers()[8]
-    leg = car_route.first_leg(walls, len(walls), *pose, *goal, BODY + _numbers()[0], BODY, _curvatures(), _numbers(),
-                              PARAMS[layers.GUIDE_CAR_CELL], PARAMS[layers.GUIDE_CAR_AHEAD],
-                              PARAMS[layers.GUIDE_CAR_TIGHT])
+    leg = car_route.first_leg(Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
+                              CarSearch(_curvatures(), _numbers(), PARAMS[layers.GUIDE_CAR_CELL]),
+                              PARAMS[layers.GUIDE_CAR_AHEAD], PARAMS[layers.GUIDE_CAR_TIGHT])
     assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
 
 
@@ -71,11 +72,12 @@ def test_every_pose_of_the_plan_keeps_the_clearance_asked():
 def test_a_route_point_that_newly_seen_points_block_is_planned_again():
     state = layers.fresh_state(1, PARAMS)[0]
     posts = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
-    first = guidance.aim(state, PARAMS, posts, len(posts), 0.0, 0.0, math.pi / 2, 0.0, 10.0, 0.0, BODY)
+    robot = Robot(0.0, 0.0, math.pi / 2, 0.0, 0.0, 10.0)
+    first = guidance.aim(state, PARAMS, Sightings(posts, len(posts)), robot, 0.0, BODY)
     point = state[[layers.GUIDE_X, layers.GUIDE_Y]].copy()
     assert np.isfinite(point).all()
     seen = np.vstack([posts, point + np.array([[0.0, 0.0], [0.1, 0.0], [-0.1, 0.0]])])
-    assert guidance.aim(state, PARAMS, seen, len(seen), 0.0, 0.0, math.pi / 2, 0.0, 10.0, 0.1, BODY) != first
+    assert guidance.aim(state, PARAMS, Sightings(seen, len(seen)), robot, 0.1, BODY) != first
     assert state[layers.GUIDE_PLANNED] == pytest.approx(0.1)
     # a new route point clear of the blocked one, or (the plan now passing close to the new
     # points) an arc the layer drives itself
@@ -89,24 +91,24 @@ def test_a_robot_that_cannot_reverse_gets_no_backward_arc():
         params = PARAMS.copy()
         params[layers.MAX_REVERSE_SPEED] = reverse_speed
         state = layers.fresh_state(1, params)[0]
-        guidance.aim(state, params, walls, len(walls), *pose, *goal, 0.0, BODY)
+        guidance.aim(state, params, Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), 0.0, BODY)
         assert state[layers.GUIDE_GEAR] == gear  # backs up if it can; else no arc is driven
 
 
 def test_no_arc_is_kept_or_planned_while_the_recovery_drives_and_its_end_plans_again():
     walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
     state = layers.fresh_state(1, PARAMS)[0]
-    guidance.aim(state, PARAMS, walls, len(walls), *pose, *goal, 0.0, BODY)
+    guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), 0.0, BODY)
     assert state[layers.GUIDE_GEAR] == -1.0  # a backward arc pending
     state[layers.PHASE] = layers.BACK  # the recovery manoeuvre takes over and moves the robot
     moved = (0.1, 1.0, math.pi / 2 + 0.3)
     for t in (0.1, 2.0):  # before and after guide_replan
-        guidance.aim(state, PARAMS, walls, len(walls), *moved, *goal, t, BODY)
+        guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), t, BODY)
         assert state[layers.GUIDE_GEAR] == 0.0 and state[layers.GUIDE_PLANNED] == -math.inf
     state[layers.PHASE] = layers.NO_PHASE  # the recovery ends: planned again at once, from where the robot is
-    guidance.aim(state, PARAMS, walls, len(walls), *moved, *goal, 2.1, BODY)
+    guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), 2.1, BODY)
     fresh = layers.fresh_state(1, PARAMS)[0]
-    guidance.aim(fresh, PARAMS, walls, len(walls), *moved, *goal, 2.1, BODY)
+    guidance.aim(fresh, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), 2.1, BODY)
     columns = [layers.GUIDE_PLANNED, layers.GUIDE_GEAR, layers.GUIDE_KAPPA, layers.GUIDE_RUN, layers.GUIDE_DRIVEN]
     np.testing.assert_array_equal(state[columns], fresh[columns])
     assert state[layers.GUIDE_PLANNED] == pytest.approx(2.1)
@@ -129,9 +131,10 @@ def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
     else:  # following a boundary for longer than its limit
         row[[layers.ACTIVE, layers.SIDE, layers.T_FOLLOW]] = 1.0, 1.0, -100.0
     ranges = np.full(len(angles), controller.sensors.max_range)
-    steering, speed, code = robust.act_one(kind, params, tables, nav_state[0], memory[0], layer_params, row, 0.0, 0.0,
-                                           0.0, 0.5, 10.0, 0.0, ranges, angles, controller.sensors.max_range, 0.05,
-                                           math.inf, 0.0, 30.0)
+    steering, speed, code = robust.act_one(Navigator(kind, params, tables), nav_state[0], memory[0],
+                                           Layers(layer_params, row), Robot(0.0, 0.0, 0.0, 0.5, 10.0, 0.0),
+                                           Reading(ranges, angles, controller.sensors.max_range, math.inf, 0.0), 0.05,
+                                           30.0)
     assert row[layers.ACTIVE] == (1.0 if starts else 0.0)
     assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
     assert row[layers.GUIDE_GEAR] == 0.0 and row[layers.GUIDE_PLANNED] == 30.0  # planned again at once

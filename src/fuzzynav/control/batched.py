@@ -16,6 +16,7 @@ import numpy as np
 from fuzzynav.control.base import BatchController, Command, Observation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
+from fuzzynav.kernels.records import Navigator, Reading, Readings, Robot
 from fuzzynav.robot.sensors import THESIS_SENSOR_ANGLES, named_ring
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
@@ -131,8 +132,9 @@ class CompiledNavigator(BatchController):
         tx, ty = (float(value) for value in obs.target)
         v = 0.0 if obs.speed is None else float(obs.speed)
         steering, speed, code = navigators.act_one(
-            kind, params, tables, state[0], memory[0], x, y, theta, v, tx, ty,
-            np.ascontiguousarray(obs.ranges, dtype=float), self._angles, float(obs.max_range), float(obs.dt), d_o, b_o)
+            Navigator(kind, params, tables), state[0], memory[0], Robot(x, y, theta, v, tx, ty),
+            Reading(np.ascontiguousarray(obs.ranges, dtype=float), self._angles, float(obs.max_range), d_o, b_o),
+            float(obs.dt))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
     def _variant(self, gap: bool, gap_margin: float, gap_look: float) -> dict:
@@ -164,10 +166,8 @@ class CompiledNavigator(BatchController):
         ranges = np.zeros((n, 0)) if obs.ranges is None else obs.ranges
         active = getattr(obs, "active", None)
         out = np.zeros((n, 3))
-        navigators.act(kind, params, tables, state, memory, *(np.ascontiguousarray(v, dtype=float) for v in (
-            obs.pose, obs.speed, obs.target, ranges, angles)), float(obs.max_range), float(obs.dt),
-            np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
-            np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_), out)
+        navigators.act(Navigator(kind, params, tables), state, memory, readings(obs, ranges, angles, active, n),
+                       float(obs.dt), out)
         return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
 
 
@@ -179,6 +179,15 @@ def layer_flags(layers) -> dict:
     if unknown:
         raise InputError(f"unknown layer(s) {', '.join(unknown)}; known: {', '.join(LAYERS)}", field="layers")
     return {name: float(name in layers) for name in LAYERS}
+
+
+def readings(obs, ranges, angles, active, n: int) -> Readings:
+    """The :class:`~fuzzynav.kernels.records.Readings` of a batch observation of ``n`` robots
+    (``ranges``, ``angles`` and ``active`` given; every robot active when ``active`` is None)."""
+    return Readings(*(np.ascontiguousarray(v, dtype=float) for v in (obs.pose, obs.speed, obs.target, ranges, angles)),
+                    float(obs.max_range),
+                    np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
+                    np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_))
 
 
 def navigator_params(**values) -> np.ndarray:

@@ -30,6 +30,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchController
 from fuzzynav.errors import InputError
+from fuzzynav.kernels.records import Shares
 
 # Sensor groups of the seven-sensor ring C1…C7 at 0°, −30°, +30°, −60°, +60°, −90°, +90°
 # (fuzzynav.robot.sensors), as the modules of §IV.7: front = C1, C2, C3 (FOA); right = C2, C4,
@@ -309,7 +310,7 @@ class LearnedAvoidanceNavigator(BatchController):
         ranges = _readings(ranges)
         n = len(ranges)
         out = np.empty((n, 3))
-        learned.drive(as_column(alpha, n), as_column(speed, n), as_column(free, n), ranges,
+        learned.drive(Shares(as_column(alpha, n), as_column(speed, n), as_column(free, n)), ranges,
                       np.ascontiguousarray(goal, dtype=float), self.goal.tables, self.goal.wheelbase, self.supervisor,
                       out)
         return out[:, 0], out[:, 1], out[:, 2] != 0.0

@@ -49,10 +49,12 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import BatchController, Command
+from fuzzynav.control.batched import readings
 from fuzzynav.control.escape import FOLLOW, LOOP
 from fuzzynav.control.recovery import RECOVERY, recovery_system
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import layers
+from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
@@ -136,11 +138,9 @@ class RobustNavigator(BatchController):
         arguments = self.compiled(n, obs.sensor_angles)
         active = getattr(obs, "active", None)
         out = np.zeros((n, 3))
-        robust.act(*arguments, *(np.ascontiguousarray(v, dtype=float) for v in (
-            obs.pose, obs.speed, obs.target, obs.ranges, obs.sensor_angles)), float(obs.max_range), float(obs.dt),
-            np.ascontiguousarray(np.column_stack([obs.obstacle_distance, obs.obstacle_bearing]), dtype=float),
-            np.ones(n, dtype=np.bool_) if active is None else np.ascontiguousarray(active, dtype=np.bool_),
-            float(obs.t), out)
+        kind, params, tables, state, memory, layer_params, rows = arguments
+        robust.act(Navigator(kind, params, tables), state, memory, Layers(layer_params, rows),
+                   readings(obs, obs.ranges, obs.sensor_angles, active, n), float(obs.dt), float(obs.t), out)
         return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
 
     def act(self, obs) -> Command:
@@ -160,9 +160,10 @@ class RobustNavigator(BatchController):
         b_o = 0.0 if obs.obstacle_bearing is None else float(obs.obstacle_bearing)
         v = 0.0 if obs.speed is None else float(obs.speed)
         steering, speed, code = robust.act_one(
-            kind, params, tables, state[0], memory[0], layer_params, rows[0], x, y, theta, v, tx, ty,
-            np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), float(obs.dt), d_o, b_o,
-            float(obs.t))
+            Navigator(kind, params, tables), state[0], memory[0], Layers(layer_params, rows[0]),
+            Robot(x, y, theta, v, tx, ty),
+            Reading(np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), d_o, b_o),
+            float(obs.dt), float(obs.t))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
 

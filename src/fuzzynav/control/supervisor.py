@@ -38,6 +38,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from fuzzynav.fuzzy.systems_navigation import D_M, D_S
+from fuzzynav.kernels.records import Thresholds
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3  # fuzzynav.kernels.guard.GSB, FOA, ROA, LOA
 THESIS_ANGLES_DEG = (0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0)  # C1…C7 (thesis §IV.7)
@@ -61,8 +62,8 @@ def select(d: np.ndarray, goal_distance, goal_bearing, params: SupervisorParams 
 
     d = np.ascontiguousarray(d, dtype=float).reshape(-1, 7)
     out = np.empty(len(d), dtype=np.int64)
-    guard.select_all(d, column(goal_distance, len(d)), column(goal_bearing, len(d)), params.detection, params.front,
-                     params.keep, params.clear, params.vision, out)
+    guard.select_all(d, column(goal_distance, len(d)), column(goal_bearing, len(d)),
+                     Thresholds(params.detection, params.front, params.keep, params.clear, params.vision), out)
     return out
 
 

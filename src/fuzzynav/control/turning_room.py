@@ -36,6 +36,7 @@ import math
 import numpy as np
 
 from fuzzynav.fuzzy.constants import ALPHA_MAX
+from fuzzynav.kernels.records import Readings
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 TURN_RADIUS = DEFAULT_PARAMS.wheelbase / math.tan(ALPHA_MAX)  # R = l / tan(π/5), eq IV.1 (m)
@@ -80,10 +81,12 @@ class TurnGuard:
         out = np.empty((n, 2))
         from fuzzynav.control.supervisor import column
 
-        navigators.guard_all(self.params, self._state, self._memory, self._pose, column(obs.speed, n), ranges,
-                             np.ascontiguousarray(obs.sensor_angles, dtype=float), float(obs.max_range), float(obs.dt),
-                             np.column_stack([column(obs.obstacle_distance, n), column(obs.obstacle_bearing, n)]),
-                             column(bearing, n), column(turning, n, np.bool_), out)
+        seen = Readings(self._pose, column(obs.speed, n), np.zeros((n, 2)), ranges,
+                        np.ascontiguousarray(obs.sensor_angles, dtype=float), float(obs.max_range),
+                        np.column_stack([column(obs.obstacle_distance, n), column(obs.obstacle_bearing, n)]),
+                        np.ones(n, dtype=np.bool_))
+        navigators.guard_all(self.params, self._state, self._memory, seen, float(obs.dt), column(bearing, n),
+                             column(turning, n, np.bool_), out)
         return out[:, 0] != 0.0, out[:, 1]
 
     def stop(self, speed, dt: float, margin: float) -> np.ndarray:

@@ -35,13 +35,14 @@ def in_cone(px, py, x, y, heading, half):
 
 
 @jit
-def cone_one(scene_array, x, y, heading, half, max_range, near, count, edges):
+def cone_one(scene_array, x, y, heading, half, max_range, near, edges):
     """The nearest echo inside the cone of half width ``half`` about ``heading``; ``near`` holds
-    the ``count`` columns within reach, ``edges`` (3,) is scratch for the edge and axis rays
-    (cast first: their best hit prunes the shapes)."""
+    the columns within reach, ``edges`` (3,) is scratch for the edge and axis rays (cast first:
+    their best hit prunes the shapes)."""
+    count = near.shape[0]
     edges[0], edges[1], edges[2] = heading - half, heading, heading + half
     rays = np.empty(3)
-    scene.cast(scene_array, x, y, 0.0, edges, max_range, rays, near, count)
+    scene.cast(scene_array, x, y, 0.0, edges, max_range, rays, near)
     best = min(rays[0], min(rays[1], rays[2]))
     width, height = scene_array[WIDTH], scene_array[HEIGHT]
     for px, py in ((0.0, y), (width, y), (x, 0.0), (x, height)):
@@ -77,10 +78,10 @@ def read_one(scene_array, x, y, theta, angles, half, max_range, out):
     if half <= 0.0:
         scene.ranges_one(scene_array, x, y, theta, angles, max_range, out, near)
         return
-    count = scene.near_columns(scene_array, x, y, max_range, near)
+    within = near[:scene.near_columns(scene_array, x, y, max_range, near)]
     edges = np.empty(3)
     for j in range(angles.shape[0]):
-        out[j] = cone_one(scene_array, x, y, theta + angles[j], half, max_range, near, count, edges)
+        out[j] = cone_one(scene_array, x, y, theta + angles[j], half, max_range, within, edges)
 
 
 @jit

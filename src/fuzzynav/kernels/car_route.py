@@ -84,12 +84,17 @@ def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
 
 
 @jit
-def plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell):
-    """(found, poses (m, 3), primitives (m,)): the plan from the pose (x, y, θ) to within
-    ``reach`` of (tx, ty), world frame, its first pose the start (primitive −1), each next one
-    reached by the arc of ``primitives`` (:func:`fuzzynav.kernels.car_search.search`, whose
-    ``numbers`` these are, but the radius: ``radius``, or less as the module docstring says,
-    never below ``body``); ``found`` False when the search gives up."""
+def plan(seen, robot, radius, body, search):
+    """(found, poses (m, 3), primitives (m,)): the plan of ``robot`` (a
+    :class:`~fuzzynav.kernels.records.Robot`) from the pose (x, y, θ) to within ``reach`` of
+    (tx, ty) round the points ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`), world
+    frame, its first pose the start (primitive −1), each next one reached by the arc of
+    ``primitives`` (:func:`fuzzynav.kernels.car_search.search`, whose ``numbers`` those of
+    ``search``, a :class:`~fuzzynav.kernels.records.CarSearch`, are, but the radius: ``radius``, or
+    less as the module docstring says, never below ``body``); ``found`` False when the search
+    gives up."""
+    points, count, x, y, theta, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.theta, robot.tx, robot.ty
+    curvatures, numbers, cell = search.curvatures, search.numbers, search.cell
     radius = max(body, min(radius, sightings.clearance(points, count, x, y) - SLACK))
     comfort = numbers[5]
     low_x, low_y, high_x, high_y = min(x, tx), min(y, ty), max(x, tx), max(y, ty)
@@ -119,17 +124,18 @@ def plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, 
 
 
 @jit
-def first_leg(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell, ahead, tight):
+def first_leg(seen, robot, radius, body, search, ahead, tight):
     """(found, manoeuvre, backwards, px, py, kappa, run) of the :func:`plan` (the same
     arguments): ``found`` False when the search gives up; else ``backwards`` tells the first
     leg's gear and ``manoeuvre`` whether it is part of a K-turn (backward, or forward to a cusp
     less than ``ahead`` m away); (px, py) is the point ``ahead`` m along the first leg or its
     end (the target when the robot is within reach), and ``kappa`` the curvature of the first
     arc, which the plan keeps for ``run`` m."""
-    found, poses, primitives = plan(points, count, x, y, theta, tx, ty, radius, body, curvatures, numbers, cell)
+    found, poses, primitives = plan(seen, robot, radius, body, search)
+    points, count, tx, ty, curvatures = seen.points, seen.count, robot.tx, robot.ty, search.curvatures
     if not found or len(poses) == 1:
         return found, False, False, tx, ty, 0.0, 0.0
-    kinds, step = len(curvatures), numbers[1]
+    kinds, step = len(curvatures), search.numbers[1]
     backwards = primitives[1] >= kinds
     kappa = curvatures[primitives[1] % kinds]
     run, same, travelled, cusp, narrow = 0.0, True, 0.0, False, False

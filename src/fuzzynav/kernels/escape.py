@@ -120,18 +120,21 @@ def should_leave(state, params, distance, bearing, ranges, angles):
 
 
 @jit
-def virtual_goal(state, params, points, count, x, y, theta, tx, ty, t, d_o, ranges, radius):
-    """The point the navigator drives to while following: ``ahead`` m along the route round the
-    remembered ``points`` (:func:`fuzzynav.kernels.route.target`, keeping ``radius`` + ``room``,
+def virtual_goal(state, params, seen, robot, t, d_o, ranges, radius):
+    """The point the navigator drives to while following (``robot`` a
+    :class:`~fuzzynav.kernels.records.Robot` aiming at the goal): ``ahead`` m along the route round
+    the remembered points ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`;
+    :func:`fuzzynav.kernels.route.target`, keeping ``radius`` + ``room``,
     the room of a turn; where no such route exists, ``radius`` + ``tight``), planned again every
     ``replan`` s or when the robot is within 1 m of it; without a route, a point ``reach`` ahead
     and ``offset`` to the followed side with an obstacle within ``near`` (D_ro or a reading),
     ``search`` without (a wide arc that finds the boundary again, not a tight circle)."""
+    x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
     stale = state[ROUTE_X] != state[ROUTE_X] or math.hypot(state[ROUTE_X] - x, state[ROUTE_Y] - y) < 1.0
     if stale or t - state[PLANNED] >= params[REPLAN] - 1e-9:
-        found, rx, ry = route.target(points, count, x, y, tx, ty, radius + params[ROOM], params[AHEAD])
+        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[ROOM], params[AHEAD])
         if not found:
-            found, rx, ry = route.target(points, count, x, y, tx, ty, radius + params[TIGHT], params[AHEAD])
+            found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[TIGHT], params[AHEAD])
         state[ROUTE_X], state[ROUTE_Y] = (rx, ry) if found else (math.nan, math.nan)
         state[PLANNED] = t
     if state[ROUTE_X] == state[ROUTE_X]:

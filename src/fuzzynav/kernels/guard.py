@@ -59,10 +59,13 @@ def switch(state, wanted, urgent, rank, dwell):
 
 
 @jit
-def remember(memory, count, x, y, theta, ranges, angles, max_range, distance, bearing, half_cone):
-    """Store this step's hits in slot ``count % steps``: the rays plus the cone echo — the
-    nearest obstacle point (``distance``, ``bearing``) where it lies within ``half_cone`` of a
-    sensor direction (a sonar's cone, not a line)."""
+def remember(memory, count, pose, seen, half_cone):
+    """Store this step's hits, read at ``pose`` (a :class:`~fuzzynav.kernels.records.Pose`), in
+    slot ``count % steps``: the rays of ``seen`` (a :class:`~fuzzynav.kernels.records.Reading`)
+    plus the cone echo — the nearest obstacle point (``d_o``, ``b_o``) where it lies within
+    ``half_cone`` of a sensor direction (a sonar's cone, not a line)."""
+    x, y, theta, ranges, angles = pose.x, pose.y, pose.theta, seen.ranges, seen.angles
+    max_range, distance, bearing = seen.max_range, seen.d_o, seen.b_o
     slot = count % memory.shape[0]
     gap = math.inf
     for a in angles:
@@ -113,12 +116,14 @@ def turning_room(memory, x, y, theta, body, radius):
 
 
 @jit
-def turn_wanted(memory, x, y, theta, step, turning, goal_bearing, lane, margin, side, body, radius):
-    """(full-lock turn wanted?, side ±1): the lane ahead blocked within ``lane`` and the better
-    half turn closer than ``margin`` to a hit, both after one more ``step`` (m) — a turn under
-    way until they exceed those by 0.5 m and 0.2 m. The side is the roomier one (within 0.1 m
-    the goal's), kept while ``turning`` (``side`` ≠ 0 is the current one)."""
-    left, right, ahead = turning_room(memory, x, y, theta, body, radius)
+def turn_wanted(memory, pose, step, turning, goal_bearing, side, room):
+    """(full-lock turn wanted?, side ±1) at ``pose`` (a :class:`~fuzzynav.kernels.records.Pose`),
+    ``room`` a :class:`~fuzzynav.kernels.records.TurnRoom`: the lane ahead blocked within
+    ``lane`` and the better half turn closer than ``margin`` to a hit, both after one more
+    ``step`` (m) — a turn under way until they exceed those by 0.5 m and 0.2 m. The side is the
+    roomier one (within 0.1 m the goal's), kept while ``turning`` (``side`` ≠ 0 is the current one)."""
+    lane, margin = room.lane, room.margin
+    left, right, ahead = turning_room(memory, pose.x, pose.y, pose.theta, room.body, room.radius)
     wanted = (ahead - step < (lane + 0.5 if turning else lane)
               and max(left, right) - step < (margin + 0.2 if turning else margin))
     if abs(left - right) < 0.1:
@@ -142,7 +147,9 @@ def step_clearance(memory, x, y, theta, advance, body):
 
 
 @jit
-def select_all(d, goal_distance, goal_bearing, detection, front, keep, clear, vision, out):
-    """:func:`select` of every row of ``d`` (N, 7) into ``out`` (N,)."""
+def select_all(d, goal_distance, goal_bearing, limits, out):
+    """:func:`select` of every row of ``d`` (N, 7) into ``out`` (N,), with the distances of
+    ``limits`` (a :class:`~fuzzynav.kernels.records.Thresholds`)."""
     for n in range(d.shape[0]):
-        out[n] = select(d[n], goal_distance[n], goal_bearing[n], detection, front, keep, clear, vision)
+        out[n] = select(d[n], goal_distance[n], goal_bearing[n], limits.detection, limits.front, limits.keep,
+                        limits.clear, limits.vision)

@@ -67,6 +67,7 @@ from fuzzynav.kernels.layers import (
     V_BACK,
     WHEELBASE,
 )
+from fuzzynav.kernels.records import CarSearch
 
 
 @jit
@@ -86,16 +87,19 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 
 
 @jit
-def car(state, params, points, count, x, y, theta, tx, ty, radius):
-    """Plan the car route (module docstring) from (x, y, θ) to (tx, ty): the route point, or the
-    arc the layer drives; False when the search gives up."""
+def car(state, params, seen, robot, radius):
+    """Plan the car route (module docstring) of ``robot`` (a :class:`~fuzzynav.kernels.records.Robot`)
+    from (x, y, θ) to (tx, ty) round the points ``seen`` (a
+    :class:`~fuzzynav.kernels.records.Sightings`): the route point, or the arc the layer drives;
+    False when the search gives up."""
+    tx, ty = robot.tx, robot.ty
     steering = params[GUIDE_CAR_STEERING]
     curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
     numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
     if params[MAX_REVERSE_SPEED] <= 0:  # a robot that cannot reverse: forward arcs only
         numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
-        points, count, x, y, theta, tx, ty, radius + numbers[0], radius, curvatures, numbers, params[GUIDE_CAR_CELL],
+        seen, robot, radius + numbers[0], radius, CarSearch(curvatures, numbers, params[GUIDE_CAR_CELL]),
         params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
     if found and manoeuvre:
         state[GUIDE_GEAR], state[GUIDE_KAPPA], state[GUIDE_RUN] = -1.0 if backwards else 1.0, kappa, run
@@ -113,9 +117,12 @@ def drop(state):
 
 
 @jit
-def plan(state, params, points, count, x, y, theta, tx, ty, t, radius):
-    """Plan the route point again when ``guide_replan`` s have passed, or when a remembered
-    point blocks it; never while the recovery drives (module docstring)."""
+def plan(state, params, seen, robot, t, radius):
+    """Plan the route point of ``robot`` (a :class:`~fuzzynav.kernels.records.Robot`) again when
+    ``guide_replan`` s have passed, or when a point of ``seen`` (a
+    :class:`~fuzzynav.kernels.records.Sightings`) blocks it; never while the recovery drives
+    (module docstring)."""
+    points, count, x, y, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.tx, robot.ty
     if state[PHASE] != NO_PHASE:
         drop(state)
         return
@@ -126,10 +133,10 @@ def plan(state, params, points, count, x, y, theta, tx, ty, t, radius):
     state[GUIDE_X], state[GUIDE_Y], state[GUIDE_PLANNED] = math.nan, math.nan, t
     if line_free(points, count, x, y, tx, ty, radius + params[GUIDE_ROOM], params[GUIDE_DIRECT]):
         return
-    if params[GUIDE_CAR] != 0.0 and car(state, params, points, count, x, y, theta, tx, ty, radius):
+    if params[GUIDE_CAR] != 0.0 and car(state, params, seen, robot, radius):
         return
     for room in (GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE):
-        found, rx, ry = route.target(points, count, x, y, tx, ty, radius + params[room], params[GUIDE_AHEAD],
+        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[room], params[GUIDE_AHEAD],
                                      params[GUIDE_CELL])
         if found:
             state[GUIDE_X], state[GUIDE_Y] = rx, ry
@@ -152,11 +159,13 @@ def manoeuvre(state, params, points, count, x, y, theta, dt):
 
 
 @jit
-def aim(state, params, points, count, x, y, theta, tx, ty, t, radius):
+def aim(state, params, seen, robot, t, radius):
     """The target the navigator is given at (x, y, θ) on its way to (tx, ty) at time ``t``
-    (``radius``: the body's): towards the route point, at the target's distance; the target
-    itself without a route point."""
-    plan(state, params, points, count, x, y, theta, tx, ty, t, radius)
+    (``robot`` a :class:`~fuzzynav.kernels.records.Robot`, ``seen`` the remembered points, a
+    :class:`~fuzzynav.kernels.records.Sightings`; ``radius``: the body's): towards the route point,
+    at the target's distance; the target itself without a route point."""
+    x, y, tx, ty = robot.x, robot.y, robot.tx, robot.ty
+    plan(state, params, seen, robot, t, radius)
     if state[GUIDE_X] != state[GUIDE_X]:
         return tx, ty
     ox, oy = state[GUIDE_X] - x, state[GUIDE_Y] - y

@@ -71,10 +71,12 @@ def supervise_one(blend_alpha, blend_speed, goal_alpha, goal_speed, readings, di
 
 
 @jit
-def drive(alpha, speed, free, ranges, goal, tables, wheelbase, supervisor, out):
+def drive(shares, ranges, goal, tables, wheelbase, supervisor, out):
     """The learned navigator of every row into ``out`` (N, 3) = α, V_r, goal seeking (0/1): the
-    avoider's shares (α, V_r) plus w_free times the guarded goal seeker's command for
-    ``goal`` (N, 2) = (d_rg, θ_r − θ_d), then :func:`supervise_one`."""
+    avoider's ``shares`` (a :class:`~fuzzynav.kernels.records.Shares`: α, V_r) plus w_free
+    times the guarded goal seeker's command for ``goal`` (N, 2) = (d_rg, θ_r − θ_d), then
+    :func:`supervise_one`."""
+    alpha, speed, free = shares.alpha, shares.speed, shares.free
     for n in range(ranges.shape[0]):
         g_alpha, g_speed, _ = guarded_goal_seeking(tables, 0, goal[n, 0], -goal[n, 1], wheelbase)
         out[n, 0], out[n, 1], out[n, 2] = supervise_one(alpha[n] + free[n] * g_alpha, speed[n] + free[n] * g_speed,

@@ -18,6 +18,7 @@ from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
 from fuzzynav.kernels import gaps, guard, ts0
 from fuzzynav.kernels.motion import wrap
+from fuzzynav.kernels.records import Pose, Reading, Robot, TurnRoom
 
 GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER, CONSTANT = range(5)
 MODE, HELD, SIDE, COUNT = range(4)
@@ -75,12 +76,13 @@ def dwell(params):
 
 
 @jit
-def watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, goal_bearing, turning):
+def watch(params, state, memory, robot, seen, dt, goal_bearing, turning):
     """Remember this step's hits and ask the turning-room guard: (turn wanted?, side)."""
-    guard.remember(memory, state[COUNT], x, y, theta, ranges, angles, max_range, d_o, b_o, params[HALF_CONE])
+    pose = Pose(robot.x, robot.y, robot.theta)
+    guard.remember(memory, state[COUNT], pose, seen, params[HALF_CONE])
     state[COUNT] += 1
-    wanted, side = guard.turn_wanted(memory, x, y, theta, v * dt, turning, goal_bearing, params[LANE],
-                                     params[ROOM_MARGIN], state[SIDE], params[BODY], params[TURN_RADIUS])
+    wanted, side = guard.turn_wanted(memory, pose, robot.v * dt, turning, goal_bearing, state[SIDE],
+                                     TurnRoom(params[LANE], params[ROOM_MARGIN], params[BODY], params[TURN_RADIUS]))
     state[SIDE] = side
     return wanted and params[TURNING_ROOM] != 0.0, side
 
@@ -111,11 +113,11 @@ def through_gap(params, ranges, angles, bearing):
 
 
 @jit
-def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
-                   dt, d_o, b_o):
+def two_behaviours(navigator, state, memory, robot, distance, bearing, seen, dt):
     """fuzzy-2b (Fig IV.9): (α, V, mode 0 GSB / 1 OA / 2 OA at full lock)."""
+    params, tables, ranges, angles = navigator.params, navigator.tables, seen.ranges, seen.angles
     steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, guard_wheelbase(params))
-    d_ro, theta_o = d_o, b_o
+    d_ro, theta_o = seen.d_o, seen.b_o
     k = 0
     for j in range(1, ranges.shape[0]):
         if ranges[j] < ranges[k]:
@@ -130,8 +132,7 @@ def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bear
     if params[HYSTERESIS] != 0.0 and before >= 1 and d_ro < params[DETECTION] + params[RELEASE] and abs(theta_o) <= sector + math.radians(15.0) \
             and distance > d_ro:
         avoid = True
-    turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
-                       before == 2)
+    turn, side = watch(params, state, memory, robot, seen, dt, bearing, before == 2)
     gap, heading = through_gap(params, ranges, angles, bearing) if avoid else (False, 0.0)
     turn = turn and not gap  # a passage that fits and can be turned to: no full-lock turn needed
     mode = guard.switch(state, 2 if turn else ((GAP_2B if gap else 1) if avoid else 0), True, RANK_2B,
@@ -144,16 +145,16 @@ def two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bear
         steering = guarded_goal_seeking(tables, 0, distance, heading, guard_wheelbase(params))[0]
     if mode == 2:
         steering, speed = side * ALPHA_MAX, params[V_TURN]
-    return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
+    return steering, safety_stop(params, memory, robot.x, robot.y, robot.theta, speed, dt), mode
 
 
 @jit
-def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles, max_range,
-                    dt, d_o, b_o):
+def five_behaviours(navigator, state, memory, robot, distance, bearing, seen, dt):
     """fuzzy-5b (Fig IV.16): (α, V, mode GSB / FOA / ROA / LOA / GSB+VRB / full-lock turn)."""
+    params, tables, ranges, angles, v = navigator.params, navigator.tables, seen.ranges, seen.angles, robot.v
     c = COLUMNS
     if params[READING_HALF] > 0.0:
-        d0, d1, d2, d3, d4, d5, d6 = gaps.sector_readings(ranges, angles, params[READING_HALF], max_range)
+        d0, d1, d2, d3, d4, d5, d6 = gaps.sector_readings(ranges, angles, params[READING_HALF], seen.max_range)
     else:
         d0, d1, d2, d3, d4, d5 = (ranges[int(params[c])], ranges[int(params[c + 1])], ranges[int(params[c + 2])],
                                   ranges[int(params[c + 3])], ranges[int(params[c + 4])], ranges[int(params[c + 5])])
@@ -167,8 +168,7 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
         choice = guard.select(d, distance, bearing, params[SENSED], params[FRONT_5B], params[KEEP], params[CLEAR],
                               params[VISION])
     dmin = min(min(min(d0, d1), min(d2, d3)), min(min(d4, d5), d6))
-    turn, side = watch(params, state, memory, x, y, theta, v, ranges, angles, max_range, dt, d_o, b_o, bearing,
-                       before == TURN)
+    turn, side = watch(params, state, memory, robot, seen, dt, bearing, before == TURN)
     wanted = TURN if turn else (GSB_VRB if choice == guard.GSB and dmin < params[SENSED] else choice)
     gap, heading = through_gap(params, ranges, angles, bearing) if wanted != guard.GSB else (False, 0.0)
     if gap:  # a passage that fits and can be turned to: no full-lock turn needed
@@ -197,24 +197,24 @@ def five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bea
             else:
                 steering, _ = ts0.evaluate(tables, 3, d2, d4, d6)
             speed = v_vrb
-    return steering, safety_stop(params, memory, x, y, theta, speed, dt), mode
+    return steering, safety_stop(params, memory, robot.x, robot.y, robot.theta, speed, dt), mode
 
 
 @jit
-def act_one(kind, params, tables, state, memory, x, y, theta, v, tx, ty, ranges, angles, max_range, dt, d_o, b_o):
-    """(α, V, behaviour code) of navigator ``kind`` for one robot at (x, y, θ) moving at ``v``,
-    aiming at (tx, ty), reading ``ranges`` along ``angles``, nearest obstacle (d_o, b_o)."""
-    distance = math.hypot(tx - x, ty - y)
-    bearing = wrap(math.atan2(ty - y, tx - x) - theta)
+def act_one(navigator, state, memory, robot, seen, dt):
+    """(α, V, behaviour code) of ``navigator`` (a :class:`~fuzzynav.kernels.records.Navigator`)
+    for one ``robot`` (:class:`~fuzzynav.kernels.records.Robot`: at (x, y, θ) moving at ``v``,
+    aiming at (tx, ty)) reading ``seen`` (:class:`~fuzzynav.kernels.records.Reading`)."""
+    kind, params, tables, ranges = navigator.kind, navigator.params, navigator.tables, seen.ranges
+    distance = math.hypot(robot.tx - robot.x, robot.ty - robot.y)
+    bearing = wrap(math.atan2(robot.ty - robot.y, robot.tx - robot.x) - robot.theta)
     if kind == GOAL_SEEKING:
         steering, speed, _ = guarded_goal_seeking(tables, 0, distance, bearing, guard_wheelbase(params))
         return steering, speed, 0
     if kind == TWO_BEHAVIOURS:
-        return two_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,
-                              max_range, dt, d_o, b_o)
+        return two_behaviours(navigator, state, memory, robot, distance, bearing, seen, dt)
     if kind == FIVE_BEHAVIOURS:
-        return five_behaviours(params, tables, state, memory, x, y, theta, v, distance, bearing, ranges, angles,
-                               max_range, dt, d_o, b_o)
+        return five_behaviours(navigator, state, memory, robot, distance, bearing, seen, dt)
     if kind == CONSTANT:
         return params[STEERING], params[SPEED], 0
     steering, speed = ts0.evaluate(tables, 0, ranges[int(params[WALL_COLUMNS])], ranges[int(params[WALL_COLUMNS + 1])],
@@ -223,24 +223,36 @@ def act_one(kind, params, tables, state, memory, x, y, theta, v, tx, ty, ranges,
 
 
 @jit
-def act(kind, params, tables, state, memory, poses, speeds, targets, ranges, angles, max_range, dt, obstacle,
-        active, out):
-    """:func:`act_one` of every ``active`` robot: ``out`` (N, 3) = α, V, behaviour code;
-    ``obstacle`` (N, 2) = D_ro, θ_o."""
-    for n in range(poses.shape[0]):
-        if active[n]:
-            out[n, 0], out[n, 1], out[n, 2] = act_one(
-                kind, params, tables, state[n], memory[n], poses[n, 0], poses[n, 1], poses[n, 2], speeds[n],
-                targets[n, 0], targets[n, 1], ranges[n], angles, max_range, dt, obstacle[n, 0], obstacle[n, 1])
+def act(navigator, state, memory, seen, dt, out):
+    """:func:`act_one` of every active robot of ``seen`` (a
+    :class:`~fuzzynav.kernels.records.Readings`): ``out`` (N, 3) = α, V, behaviour code."""
+    for n in range(seen.poses.shape[0]):
+        if seen.active[n]:
+            out[n, 0], out[n, 1], out[n, 2] = act_one(navigator, state[n], memory[n], robot_of(seen, n),
+                                                      reading_of(seen, n), dt)
 
 
 @jit
-def guard_all(params, state, memory, poses, speeds, ranges, angles, max_range, dt, obstacle, goal_bearing, turning,
-              out):
-    """The turning-room guard of every robot (:func:`watch`): ``out`` (N, 2) = turn wanted (0/1), side."""
-    for n in range(poses.shape[0]):
-        wanted, side = watch(params, state[n], memory[n], poses[n, 0], poses[n, 1], poses[n, 2], speeds[n], ranges[n],
-                             angles, max_range, dt, obstacle[n, 0], obstacle[n, 1], goal_bearing[n], turning[n])
+def robot_of(seen, n):
+    """Robot ``n`` of a :class:`~fuzzynav.kernels.records.Readings` as a :class:`~fuzzynav.kernels.records.Robot`."""
+    return Robot(seen.poses[n, 0], seen.poses[n, 1], seen.poses[n, 2], seen.speeds[n], seen.targets[n, 0],
+                 seen.targets[n, 1])
+
+
+@jit
+def reading_of(seen, n):
+    """What robot ``n`` of a :class:`~fuzzynav.kernels.records.Readings` reads, as a
+    :class:`~fuzzynav.kernels.records.Reading`."""
+    return Reading(seen.ranges[n], seen.angles, seen.max_range, seen.obstacle[n, 0], seen.obstacle[n, 1])
+
+
+@jit
+def guard_all(params, state, memory, seen, dt, goal_bearing, turning, out):
+    """The turning-room guard of every robot of ``seen`` (a :class:`~fuzzynav.kernels.records.Readings`,
+    its targets and ``active`` unused; :func:`watch`): ``out`` (N, 2) = turn wanted (0/1), side."""
+    for n in range(seen.poses.shape[0]):
+        wanted, side = watch(params, state[n], memory[n], robot_of(seen, n), reading_of(seen, n), dt, goal_bearing[n],
+                             turning[n])
         out[n, 0], out[n, 1] = wanted, side
 
 

@@ -56,11 +56,13 @@ def remainder(x, y):
 
 
 @jit
-def start(state, params, tables, points, count, x, y, theta, goal_bearing, cap, t):
-    """Begin a manoeuvre at (x, y, θ): the back-up arc's steering from the rule base (room on the
-    left − room on the right within ``cap``, the goal bearing); a second recovery within 1 m of
-    the last one swings the other way (full lock towards the goal when the rule base says
-    straight)."""
+def start(state, params, tables, seen, pose, goal_bearing, cap, t):
+    """Begin a manoeuvre at ``pose`` (a :class:`~fuzzynav.kernels.records.Pose`), the remembered
+    points ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`): the back-up arc's steering
+    from the rule base (room on the left − room on the right within ``cap``, the goal bearing); a
+    second recovery within 1 m of the last one swings the other way (full lock towards the goal
+    when the rule base says straight)."""
+    points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
     left, right = sightings.side_room(points, count, x, y, theta, cap)
     steering = ts0.evaluate(tables, 0, left - right, goal_bearing, 0.0)[0]
     again = state[LAST_X] == state[LAST_X] and math.hypot(x - state[LAST_X], y - state[LAST_Y]) < 1.0
@@ -73,12 +75,14 @@ def start(state, params, tables, points, count, x, y, theta, goal_bearing, cap, 
 
 
 @jit
-def command(state, params, points, count, x, y, theta, ranges, angles, dt, t):
-    """(moving, α, V, phase) of this step of the manoeuvre; ``moving`` is False when it has ended
-    (the navigator takes over). Backing ends after ``back_distance`` or when the next step would
-    not be safe; the turn at full lock the other way (only after an arc) ends after
+def command(state, params, seen, pose, ranges, angles, dt, t):
+    """(moving, α, V, phase) of this step of the manoeuvre at ``pose`` among the remembered points
+    ``seen`` (:class:`~fuzzynav.kernels.records.Pose`, :class:`~fuzzynav.kernels.records.Sightings`);
+    ``moving`` is False when it has ended (the navigator takes over). Backing ends after
+    ``back_distance`` or when the next step would not be safe; the turn at full lock the other way (only after an arc) ends after
     ``turn_angle``, when the rays within ±31° read the lane free, or when not safe; the whole
     manoeuvre after ``recovery_time``."""
+    points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
     if t - state[T_RECOVERY] > params[RECOVERY_TIME]:
         state[PHASE] = NO_PHASE
     if state[PHASE] == BACK:

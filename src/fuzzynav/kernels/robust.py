@@ -37,21 +37,25 @@ from fuzzynav.kernels.layers import (
     points_of,
 )
 from fuzzynav.kernels.motion import wrap
+from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
 
 
 @jit
-def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, ty, ranges, angles, max_range, dt, d_o,
-            b_o, t):
+def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     """(α, V, behaviour code) of one robot at time ``t`` (the arguments of
-    :func:`fuzzynav.kernels.navigators.act_one`, plus the layers' ``params`` ``p`` and the
-    robot's ``state`` row, :mod:`fuzzynav.kernels.layers`)."""
+    :func:`fuzzynav.kernels.navigators.act_one`, plus ``layer``, a
+    :class:`~fuzzynav.kernels.records.Layers`: the layers' parameters and the robot's state row,
+    :mod:`fuzzynav.kernels.layers`)."""
+    p, state = layer.params, layer.state
     if p[ON] == 0.0:
-        return navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, tx, ty, ranges, angles,
-                                  max_range, dt, d_o, b_o)
+        return navigators.act_one(navigator, cstate, memory, robot, seen, dt)
+    x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
+    ranges, angles, max_range, d_o, b_o = seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o
     points = points_of(p, state)
-    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), x, y, theta, ranges, angles, max_range, d_o,
-                          b_o)
+    pose = Pose(x, y, theta)
+    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), pose, seen)
     state[COUNT] = count
+    remembered = Sightings(points, count)
     if count + ranges.shape[0] + 1 > points.shape[0]:  # the next step could fill the slots
         p[GROW] = 1.0
     distance = math.hypot(tx - x, ty - y)
@@ -70,14 +74,14 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
             guidance.drop(state)
         if state[ACTIVE] != 0.0:
             following = True
-            aim_x, aim_y = escape.virtual_goal(state, p, points, count, x, y, theta, tx, ty, t, d_o, ranges, p[RADIUS])
+            aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[RADIUS])
     if p[GUIDE] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, points, count, x, y, theta, aim_x, aim_y, t, p[RADIUS])
-    steering, speed, code = navigators.act_one(kind, params, tables, cstate, memory, x, y, theta, v, aim_x, aim_y,
-                                               ranges, angles, max_range, dt, d_o, b_o)
+        aim_x, aim_y = guidance.aim(state, p, remembered, Robot(x, y, theta, robot.v, aim_x, aim_y), t, p[RADIUS])
+    steering, speed, code = navigators.act_one(navigator, cstate, memory, Robot(x, y, theta, robot.v, aim_x, aim_y),
+                                               seen, dt)
     if p[PACE] != 0.0 and speed > 0.0:
         faster = pace.pace(ranges, angles, max_range, steering, p, distance)
-        if faster > speed and navigators.safety_stop(params, memory, x, y, theta, faster, dt) > 0.0:
+        if faster > speed and navigators.safety_stop(navigator.params, memory, x, y, theta, faster, dt) > 0.0:
             speed = faster
     labels = int(p[N_LABELS])
     if following:
@@ -89,30 +93,29 @@ def act_one(kind, params, tables, cstate, memory, p, state, x, y, theta, v, tx, 
     if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
         return steering, speed, code
     if state[PHASE] != NO_PHASE:
-        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
             return a, u, labels + phase - 1
     state[STOPPED] = state[STOPPED] + dt if speed == 0.0 and distance > 0.5 else 0.0
     if state[STOPPED] >= p[STOP_WAIT] - 1e-9:
         state[STOPPED] = 0.0
-        recovery.start(state, p, p[TABLES_AT:], points, count, x, y, theta, bearing, max_range, t)
-        moving, a, u, phase = recovery.command(state, p, points, count, x, y, theta, ranges, angles, dt, t)
+        recovery.start(state, p, p[TABLES_AT:], remembered, pose, bearing, max_range, t)
+        moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
             return a, u, labels + phase - 1
     return steering, speed, code
 
 
 @jit
-def act(kind, params, tables, cstate, memory, layer_params, layer_state, poses, speeds, targets, ranges, angles,
-        max_range, dt, obstacle, active, t, out):
-    """:func:`act_one` of every ``active`` robot at time ``t``: ``out`` (N, 3) = α, V, behaviour
-    code; ``obstacle`` (N, 2) = D_ro, θ_o."""
-    for n in range(poses.shape[0]):
-        if active[n]:
-            out[n, 0], out[n, 1], out[n, 2] = act_one(
-                kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], poses[n, 0], poses[n, 1],
-                poses[n, 2], speeds[n], targets[n, 0], targets[n, 1], ranges[n], angles, max_range, dt, obstacle[n, 0],
-                obstacle[n, 1], t)
+def act(navigator, cstate, memory, layers, seen, dt, t, out):
+    """:func:`act_one` of every active robot of ``seen`` (a :class:`~fuzzynav.kernels.records.Readings`)
+    at time ``t``, ``layers`` holding every robot's state rows: ``out`` (N, 3) = α, V, behaviour code."""
+    for n in range(seen.poses.shape[0]):
+        if seen.active[n]:
+            out[n, 0], out[n, 1], out[n, 2] = act_one(navigator, cstate[n], memory[n],
+                                                      Layers(layers.params, layers.state[n]),
+                                                      navigators.robot_of(seen, n), navigators.reading_of(seen, n), dt,
+                                                      t)
 
 
 @jit

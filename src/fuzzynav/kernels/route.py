@@ -61,10 +61,12 @@ def blocked_grid(points, count, low_x, low_y, nx, ny, inflate, cell):
 
 
 @jit
-def target(points, count, sx, sy, gx, gy, inflate, ahead, cell=CELL):
+def target(seen, sx, sy, gx, gy, inflate, ahead, cell=CELL):
     """(found, x, y): a point ``ahead`` m along the shortest route, on a grid of ``cell`` m, from
-    (sx, sy) to (gx, gy) that keeps ``inflate`` from the first ``count`` of ``points`` (P, 2),
-    world frame; ``found`` is False when no route exists."""
+    (sx, sy) to (gx, gy) that keeps ``inflate`` from the first ``count`` of the ``points`` (P, 2)
+    of ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`), world frame; ``found`` is False
+    when no route exists."""
+    points, count = seen.points, seen.count
     low_x, low_y, high_x, high_y = min(sx, gx), min(sy, gy), max(sx, gx), max(sy, gy)
     for p in range(count):
         low_x, low_y = min(low_x, points[p, 0]), min(low_y, points[p, 1])

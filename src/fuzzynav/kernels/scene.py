@@ -90,13 +90,15 @@ def near_columns(scene, x, y, max_range, near):
 def ranges_one(scene, x, y, theta, angles, max_range, out, near):
     """Readings of rays from (x, y) at headings θ + angles, capped at ``max_range``, into ``out``
     (``near``: scratch of :func:`near_columns`)."""
-    cast(scene, x, y, theta, angles, max_range, out, near, near_columns(scene, x, y, max_range, near))
+    cast(scene, x, y, theta, angles, max_range, out, near[:near_columns(scene, x, y, max_range, near)])
 
 
 @jit
-def cast(scene, x, y, theta, angles, max_range, out, near, count):
-    """The rays of :func:`ranges_one` against the walls and the ``count`` shapes listed in
-    ``near``; a ray skips a disc it misses or meets beyond its best hit so far."""
+def cast(scene, x, y, theta, angles, max_range, out, near):
+    """The rays of :func:`ranges_one` against the walls and the shapes listed in ``near`` (the
+    columns of :func:`near_columns`); a ray skips a disc it misses or meets beyond its best hit
+    so far."""
+    count = near.shape[0]
     width, height = scene[WIDTH], scene[HEIGHT]
     for j in range(angles.shape[0]):
         heading = theta + angles[j]

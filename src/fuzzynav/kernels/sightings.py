@@ -53,9 +53,12 @@ def rehash(points, count, cells):
 
 
 @jit
-def see(points, cells, count, x, y, theta, ranges, angles, max_range, d_o, b_o):
-    """Remember the hits of the ring read at (x, y, θ) and the nearest obstacle point (D_ro =
+def see(points, cells, count, pose, seen):
+    """Remember the hits of the ring read at ``pose`` (a :class:`~fuzzynav.kernels.records.Pose`)
+    and the nearest obstacle point of ``seen`` (a :class:`~fuzzynav.kernels.records.Reading`: D_ro =
     ``d_o``, θ_o = ``b_o``; ``inf``: none); returns the new count (at most S + 1 more)."""
+    x, y, theta, ranges, angles = pose.x, pose.y, pose.theta, seen.ranges, seen.angles
+    max_range, d_o, b_o = seen.max_range, seen.d_o, seen.b_o
     for i in range(ranges.shape[0]):
         r = ranges[i]
         if math.isfinite(r) and r < max_range - 1e-9:

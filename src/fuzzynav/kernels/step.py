@@ -27,6 +27,7 @@ import numpy as np
 from fuzzynav.jit import jit
 from fuzzynav.kernels import beams, imperfect as real, layers, navigators, robust, scene, traffic
 from fuzzynav.kernels.motion import RADIUS, ROBOT_FIELDS, advance, clip, wrap
+from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot, StepNavigator
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
                                "goal_y", "n_angles", "half_beam")
@@ -44,25 +45,26 @@ NO_NAVIGATOR = -1  # commands given in state[:, STEERING], state[:, SPEED]
 
 
 def idle_arguments() -> tuple:
-    """The navigator arguments of :func:`step` without a compiled navigator (kind, then unused
+    """The navigator of :func:`lean_arguments` without a compiled navigator (kind, then unused
     params, tables, state, memory, layer params and state)."""
     return (NO_NAVIGATOR, np.zeros(1), np.zeros(1), np.zeros((1, 4), dtype=np.int64), np.zeros((1, 1, 1, 3)),
             *layers.none())
 
 
 def lean_arguments(navigator: tuple) -> tuple:
-    """The navigator arguments of :func:`step` (kind, params, tables, state, memory, layer params
-    and state) with ``None`` for what the run does not use: the navigator's ``params`` without a
-    navigator (:data:`NO_NAVIGATOR`), the layers' params and state when they are off. numba
-    compiles one version of :func:`step` per pattern of ``None`` and prunes the branches they
-    close, so a run compiles only the code it runs (the layers of the default navigator are
-    most of the cold compile)."""
+    """The navigator arguments of :func:`step` — ``(params, layer params, StepNavigator)`` — of a
+    navigator's ``(kind, params, tables, state, memory, layer params, layer state)``, with ``None``
+    for what the run does not use: the navigator's ``params`` without a navigator
+    (:data:`NO_NAVIGATOR`), the layers' params and state when they are off. numba compiles one
+    version of :func:`step` per pattern of ``None`` and prunes the branches they close, so a run
+    compiles only the code it runs (the layers of the default navigator are most of the cold
+    compile)."""
     kind, params, tables, cstate, memory, layer_params, layer_state = navigator
     if kind == NO_NAVIGATOR:
-        return kind, None, tables, cstate, memory, None, None
+        return None, None, StepNavigator(kind, tables, cstate, memory, None)
     if layer_params[layers.ON] == 0.0:
-        return kind, params, tables, cstate, memory, None, None
-    return navigator
+        return params, None, StepNavigator(kind, tables, cstate, memory, None)
+    return params, layer_params, StepNavigator(kind, tables, cstate, memory, layer_state)
 
 
 @jit
@@ -154,18 +156,25 @@ def reset(setup, scene_array, state, ranges, status, imperfect):
 
 
 @jit
-def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup, base, movers, offsets, scene_array, k,
-         state, ranges, status, imperfect, moves=True):
+def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
     """One step of every running robot, ``k`` being the step count after it; returns how many
-    still run. With ``imperfect``, the controller is given its believed position and noisy
-    distances, and its commands go through the actuators' queue, limits and slip. The moving obstacles go first to their place at step ``k`` (``offsets`` (M, 2)),
-    so the robots' stop tests and sensing see them there. ``kind`` is a :mod:`fuzzynav.kernels.navigators` code (its ``params``,
-    ``tables``, ``cstate``, ``memory``; ``layer_params``, ``layer_state``: the recovery and
-    loop-escape layers around it, :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR`
-    (commands given in ``state``), the arguments as :func:`lean_arguments` passes them.
-    ``moves=False``: only act and clip, the commands left in ``state`` for another plant
-    (:mod:`fuzzynav.sim.plants`) to move the robots, then :func:`settle_moved`."""
-    traffic.place(base, movers, offsets, scene_array)
+    still run. The moving obstacles of ``world`` (a :class:`~fuzzynav.kernels.records.Traffic`)
+    go first to their place at step ``k``, so the robots' stop tests and sensing see them there.
+    ``navigator`` (a :class:`~fuzzynav.kernels.records.StepNavigator`) holds a
+    :mod:`fuzzynav.kernels.navigators` code (its ``params``, rule tables, state and memory;
+    ``layer_params`` and its ``layer_state``: the recovery and loop-escape layers around it,
+    :mod:`fuzzynav.kernels.layers`) or :data:`NO_NAVIGATOR` (commands given in ``state``), the
+    arguments as :func:`lean_arguments` passes them; ``robots`` (a
+    :class:`~fuzzynav.kernels.records.Robots`) the arrays updated in place. With ``imperfect``
+    (:mod:`fuzzynav.kernels.imperfect`), the controller is given its believed position and noisy
+    distances, and its commands go through the actuators' queue, limits and slip. With
+    ``robots.moves`` false, the step only acts and clips, the commands left in ``state`` for
+    another plant (:mod:`fuzzynav.sim.plants`) to move the robots, then :func:`settle_moved`."""
+    traffic.place(world.base, world.movers, world.offsets, world.scene)
+    scene_array, state, ranges, status = world.scene, robots.state, robots.ranges, robots.status
+    kind, tables, cstate, memory, layer_state = (navigator.kind, navigator.tables, navigator.state, navigator.memory,
+                                                 navigator.layer_state)
+    moves = robots.moves
     running = 0
     n_angles = int(setup[N_ANGLES])
     angles = setup[ANGLES:ANGLES + n_angles]
@@ -179,16 +188,15 @@ def step(kind, params, tables, cstate, memory, layer_params, layer_state, setup,
         if imperfect is not None:
             x, y, distance = real.believed(imperfect, n, x, y, distance)
         if params is not None:  # None (commands given) and the None of layer_params below: branches pruned
+            robot = Robot(x, y, row[THETA], row[SPEED], row[TARGET_X], row[TARGET_Y])
+            seen = Reading(ranges[n], angles, setup[MAX_RANGE], distance, row[OBSTACLE_BEARING])
             if layer_params is None:  # at compile time, so a run compiles only the navigator code it uses
-                steering, speed, code = navigators.act_one(
-                    kind, params, tables, cstate[n], memory[n], x, y, row[THETA], row[SPEED],
-                    row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE], setup[0],
-                    distance, row[OBSTACLE_BEARING])
+                steering, speed, code = navigators.act_one(Navigator(kind, params, tables), cstate[n], memory[n], robot,
+                                                           seen, setup[0])
             else:
-                steering, speed, code = robust.act_one(
-                    kind, params, tables, cstate[n], memory[n], layer_params, layer_state[n], x, y,
-                    row[THETA], row[SPEED], row[TARGET_X], row[TARGET_Y], ranges[n], angles, setup[MAX_RANGE],
-                    setup[0], distance, row[OBSTACLE_BEARING], (k - 1) * setup[0])
+                steering, speed, code = robust.act_one(Navigator(kind, params, tables), cstate[n], memory[n],
+                                                       Layers(layer_params, layer_state[n]), robot, seen, setup[0],
+                                                       (k - 1) * setup[0])
             row[BEHAVIOUR] = code
         steering, speed = clip(steering, speed, setup)
         if setup[FORCED_SPEED] == setup[FORCED_SPEED]:

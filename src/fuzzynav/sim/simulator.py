@@ -43,6 +43,7 @@ from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
+from fuzzynav.kernels.records import Robots, Traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.imperfections import Imperfections
 from fuzzynav.robot.sensors import SensorRing, named_ring
@@ -309,9 +310,9 @@ class BatchSimulator:
         try:
             offsets = self._offsets(self.k)
             if self.plant.in_kernel:
-                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base,
-                                                 self._movers, offsets, self._scene, self.k, self._state, self._ranges,
-                                                 self._status, self._imperfect)
+                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
+                                                 Traffic(self._base, self._movers, offsets, self._scene), self.k,
+                                                 Robots(self._state, self._ranges, self._status), self._imperfect)
             else:
                 self._plant_step(offsets)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it
@@ -349,8 +350,9 @@ class BatchSimulator:
         moves the running robots, then the stop tests and sensing (compiled) and the plant's
         readings."""
         moved = self.active.copy()
-        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, self._base, self._movers,
-                         offsets, self._scene, self.k, self._state, self._ranges, self._status, None, False)
+        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
+                         Traffic(self._base, self._movers, offsets, self._scene), self.k,
+                         Robots(self._state, self._ranges, self._status, False), None)
         self.plant.move(self._state, moved)
         self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
                                                  self._status, moved)

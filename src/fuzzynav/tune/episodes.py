@@ -24,6 +24,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.jit import jit
 from fuzzynav.kernels import layers, step as step_kernel
 from fuzzynav.kernels.motion import RADIUS
+from fuzzynav.kernels.records import Robots, StepNavigator, Traffic
 
 OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE = range(6)  # columns of run_jobs' ``out``
 N_OUT = 6
@@ -56,8 +57,8 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
     while running:
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
-        running = step_kernel.step(kind, params, tables, cstate, memory, lp, lstate, setup, scene, still, no_offsets,
-                                   scene, k, state, ranges, status, None)
+        running = step_kernel.step(params, lp, StepNavigator(kind, tables, cstate, memory, lstate), setup,
+                                   Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status), None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
         if lp[layers.GROW] != 0.0:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fuzzynav.kernels import guard
+from fuzzynav.kernels.records import Pose, Reading
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.validation import positive
 
@@ -68,8 +69,9 @@ class LocalMap:
             self._memory, self._count = np.zeros((self.steps, len(angles) + 1, 3)), 0
         x, y, theta = (float(v) for v in obs.pose)
         distance = math.inf if obs.obstacle_distance is None else float(obs.obstacle_distance)
-        guard.remember(self._memory, self._count, x, y, theta, np.ascontiguousarray(obs.ranges, dtype=float),
-                       angles, float(obs.max_range), distance, float(obs.obstacle_bearing or 0.0), self.HALF_CONE)
+        guard.remember(self._memory, self._count, Pose(x, y, theta),
+                       Reading(np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), distance,
+                               float(obs.obstacle_bearing or 0.0)), self.HALF_CONE)
         self._count += 1
         valid = self._memory[..., 2] > 0.0
         rx, ry = self._memory[..., 0][valid] - x, self._memory[..., 1][valid] - y

@@ -19,6 +19,7 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine.implication import implication, stored
 from fuzzynav.fuzzy.engine.norms import MINIMUM, PRODUCT
+from fuzzynav.fuzzy.engine.records import Lanes
 from fuzzynav.jit import jit
 
 BLOCK = 128  # rows at a time: the units' degrees and the sixteen lane sums stay in the L1 cache
@@ -81,9 +82,11 @@ def _add_to_lane(mu, at, lane, totals, moments, m):
 
 
 @jit
-def _one_unit_to_lane(w, u, s, product, at, lane, totals, moments, m):
+def _one_unit_to_lane(w, u, s, product, at, lane, sums, m):
     """A sample only unit u's term's support holds: its μ, max(0, min(w[u, r], s)) (or the
-    product), straight into its lane's sums — :func:`_max_implied` then :func:`_add_to_lane` in one loop."""
+    product), straight into its lane's ``sums`` (a :class:`~.records.Lanes`) — :func:`_max_implied`
+    then :func:`_add_to_lane` in one loop."""
+    totals, moments = sums.totals, sums.moments
     for r in range(m):
         mu = stored(max(0.0, implication(w[u, r], s, product)))
         totals[lane, r] += mu
@@ -98,17 +101,20 @@ def _lanes_total(lanes, r):
 
 
 @jit
-def max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, support, x, out, unbounded):
+def max_centroid(degrees, rows, unit, sampled, out, unbounded):
     """``out[n]``: the centroid of row n of an output :func:`applies` takes (the arguments of
     :func:`~.staged_kernels.integral`), block of rows by block of rows (module docstring); returns the
     number of rows whose degrees are not all in [0, 1], their indices in ``unbounded`` (their
     ``out`` left to the row-by-row pass)."""
+    units, unit_term, unit_implication = unit.of, unit.term, unit.implication
+    shapes, support, x = sampled.shapes, sampled.support, sampled.x
     n_units, n = unit_term.shape[0], degrees.shape[1]
     first, end = x.shape[0], 0
     for u in range(n_units):
         first, end = min(first, support[unit_term[u], 0]), max(end, support[unit_term[u], 1])
     w, mu = np.empty((n_units, BLOCK)), np.empty(BLOCK)
     totals, moments = np.empty((8, BLOCK)), np.empty((8, BLOCK))
+    sums = Lanes(totals, moments)
     count = 0
     for r0 in range(0, n, BLOCK):
         m = min(BLOCK, n - r0)
@@ -122,7 +128,7 @@ def max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, supp
                     held, only = held + 1, u
             if held == 1:
                 _one_unit_to_lane(w, only, shapes[unit_term[only], k], unit_implication[only] == PRODUCT, x[k], k % 8,
-                                  totals, moments, m)
+                                  sums, m)
                 continue
             opened = False
             for u in range(n_units):

@@ -17,6 +17,7 @@ from typing import NamedTuple
 import numpy as np
 
 from fuzzynav.fuzzy.engine.model import OutputVariable
+from fuzzynav.fuzzy.engine.records import Affine, Groups, Sampled, Units
 from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
@@ -71,8 +72,8 @@ def _groups(var: OutputVariable, acts: Activations) -> tuple:
     labels = list(index)
     groups = np.array([index[label] for label in acts.labels], dtype=np.int64)
     masked = acts.triggered is not None
-    return labels, (acts.degrees, acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
-                    SNORMS.index(var.aggregation or "UnboundedSum"))
+    return labels, (acts.degrees, Groups(acts.rows, groups, opens, acts.triggered if masked else _EVERY_ROW, masked,
+                                         SNORMS.index(var.aggregation or "UnboundedSum")))
 
 
 def group(var: OutputVariable, acts: Activations) -> tuple[list, np.ndarray, np.ndarray]:
@@ -101,7 +102,7 @@ def weighted(var: OutputVariable, acts: Activations, inputs: np.ndarray, values:
     mfs = [var.terms[label] for label in labels]
     if kind != "Tsukamoto" and all(isinstance(mf, (Constant, Singleton, Linear)) for mf in mfs):
         _, args = _groups(var, acts)
-        staged_kernels.weighted_affine(*args, *_affine_terms(mfs, inputs.shape[0]), inputs, weighted_sum, out)
+        staged_kernels.weighted_affine(*args, Affine(*_affine_terms(mfs, inputs.shape[0])), inputs, weighted_sum, out)
         return out
     labels, degrees, present = group(var, acts)
     z = np.stack([np.broadcast_to(_crisp(mf, d, inputs, values, _tsukamoto(mf, kind)), (n,))
@@ -178,7 +179,7 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
     unit_term = np.array([terms[label] for label, _ in unique], dtype=np.int64)
     unit_implication = np.array([TNORMS.index(implication) for _, implication in unique], dtype=np.int64)
     out = np.empty(n)
-    staged_kernels.integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x,
-                      SNORMS.index(var.aggregation or "UnboundedSum"), REDUCTIONS.index(var.defuzzifier.kind),
-                      out)
+    staged_kernels.integral(degrees, rows,
+                            Units(units, unit_term, unit_implication, SNORMS.index(var.aggregation or "UnboundedSum")),
+                            Sampled(shapes, support, x, REDUCTIONS.index(var.defuzzifier.kind)), out)
     return out

@@ -25,9 +25,11 @@ from fuzzynav.fuzzy.engine import staged_kernels
 from fuzzynav.fuzzy.engine.fuzzify_terms import hedge_column, term_column
 from fuzzynav.fuzzy.engine.norms import snorm_into
 from fuzzynav.fuzzy.engine.pack import ANY, INTEGRAL, NAN_OUTPUT, NUMPY, TERM, WEIGHTED, ZERO, Flat, Packed
+from fuzzynav.fuzzy.engine.records import Affine, Groups, Sampled, Units
 from fuzzynav.fuzzy.engine.sugeno_outputs import every_row_affine
 from fuzzynav.jit import jit
 
+NOT_MASKED = np.zeros((0, 0), dtype=np.bool_)  # the triggers of a weighted output: every row (never read)
 ROWS, CACHE_BYTES = 2048, 2 ** 19  # a block of :func:`run`: at least ROWS rows, as many as fit in 512 KiB
 LO, LITERAL, WEIGHT, CONCLUSION_ROW, OUTPUT, OUTPUT_LIMITS = (
     Packed._fields.index(name) for name in ("lo", "literal", "rule_weight", "conclusion_row", "output", "output_limits"))
@@ -56,17 +58,22 @@ def _field2(buffer, layout, k):
 
 @jit
 def _unpack(ints, floats, bools, layout):
-    """The fields of a :class:`~.pack.Flat` engine in :class:`~.pack.Packed`'s order, as views of
-    its buffers (ints, floats, bools)."""
+    """The :class:`~.pack.Packed` record of a :class:`~.pack.Flat` engine, its fields views of the
+    buffers (ints, floats, bools), field k at row k of ``layout``."""
     i, f, b, a = ints, floats, bools, layout
-    return (_field(b, a, 0), _field(f, a, 1), _field(f, a, 2), _field2(i, a, 3), _field(i, a, 4), _field(i, a, 5),
-            _field(f, a, 6), _field(f, a, 7), _field2(i, a, 8), _field(i, a, 9), _field(i, a, 10), _field(i, a, 11),
-            _field2(i, a, 12), _field(b, a, 13), _field(i, a, 14), _field(i, a, 15), _field(f, a, 16),
-            _field(b, a, 17), _field(i, a, 18), _field(i, a, 19), _field(i, a, 20), _field2(i, a, 21),
-            _field2(f, a, 22), _field(i, a, 23), _field(i, a, 24), _field(i, a, 25), _field(b, a, 26),
-            _field(i, a, 27), _field(i, a, 28), _field(i, a, 29), _field(i, a, 30), _field(i, a, 31),
-            _field(f, a, 32), _field(i, a, 33), _field(f, a, 34), _field(i, a, 35), _field2(i, a, 36),
-            _field2(f, a, 37), _field(f, a, 38))
+    return Packed(lock=_field(b, a, 0), lo=_field(f, a, 1), hi=_field(f, a, 2), literal=_field2(i, a, 3),
+                  term_code=_field(i, a, 4), term_start=_field(i, a, 5), term_height=_field(f, a, 6),
+                  params=_field(f, a, 7), chained=_field2(i, a, 8), chained_start=_field(i, a, 9),
+                  chained_conclusions=_field(i, a, 10), hedges=_field(i, a, 11), block=_field2(i, a, 12),
+                  block_chained=_field(b, a, 13), program=_field(i, a, 14), rule_start=_field(i, a, 15),
+                  rule_weight=_field(f, a, 16), rule_skipped=_field(b, a, 17), rule_conclusions=_field(i, a, 18),
+                  conclusion_hedges=_field(i, a, 19), conclusion_row=_field(i, a, 20), output=_field2(i, a, 21),
+                  output_limits=_field2(f, a, 22), act_start=_field(i, a, 23), act_conclusion=_field(i, a, 24),
+                  act_unit=_field(i, a, 25), act_opens=_field(b, a, 26), act_partner=_field(i, a, 27),
+                  unit_start=_field(i, a, 28), unit_term=_field(i, a, 29), unit_implication=_field(i, a, 30),
+                  shape_start=_field(i, a, 31), shapes=_field(f, a, 32), points_start=_field(i, a, 33),
+                  points=_field(f, a, 34), support_start=_field(i, a, 35), support=_field2(i, a, 36),
+                  coefficients=_field2(f, a, 37), constants=_field(f, a, 38))
 
 
 @jit
@@ -93,9 +100,11 @@ def _accumulate(value, conclusions, conclusion_row, before, aggregation, d):
 
 
 @jit
-def _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table):
+def _fuzzify(X, p, inputs, table):
     """``inputs`` (n_inputs, N): X's columns clipped where locked; ``table`` rows of the
-    propositions evaluated here."""
+    propositions evaluated here (``p``: the engine's :class:`~.pack.Packed` record)."""
+    lock, lo, hi, literal, hedges = p.lock, p.lo, p.hi, p.literal, p.hedges
+    term_code, term_start, term_height, params = p.term_code, p.term_start, p.term_height, p.params
     for i in range(lo.shape[0]):
         for n in range(X.shape[0]):
             v = X[n, i]
@@ -162,50 +171,49 @@ def _rows(X, work, ints, floats, bools, layout, raw, at):
     ``lock-range``, on the rows X; ``work`` holds the propositions' degrees there (NumPy's rows filled), then room for
     the rules' values (the activations' rows index both: an aliased or deferred rule's is its
     proposition's, a deferred one's partner its second)."""
-    (lock, lo, hi, literal, term_code, term_start, term_height, params, chained, chained_start, chained_conclusions,
-     hedges, block, block_chained, program, rule_start, rule_weight, rule_skipped, rule_conclusions, conclusion_hedges,
-     conclusion_row, output, output_limits, act_start, act_conclusion, act_unit, act_opens, act_partner, unit_start,
-     unit_term, unit_implication, shape_start, shapes, points_start, points, support_start, support, coefficients,
-     constants) = _unpack(ints, floats, bools, layout)
+    p = _unpack(ints, floats, bools, layout)
     n = X.shape[0]
-    table, value = work[:literal.shape[0]], work[literal.shape[0]:]
-    inputs = np.empty((lo.shape[0], n))
-    _fuzzify(X, lock, lo, hi, literal, term_code, term_start, term_height, params, hedges, inputs, table)
-    for b in range(block.shape[0]):
-        first, end, conjunction, disjunction = block[b, 0], block[b, 1], block[b, 2], block[b, 3]
-        step = 1 if block_chained[b] else end - first  # rule by rule when a premise reads an output
+    table, value = work[:p.literal.shape[0]], work[p.literal.shape[0]:]
+    inputs = np.empty((p.lo.shape[0], n))
+    _fuzzify(X, p, inputs, table)
+    for b in range(p.block.shape[0]):
+        first, end, conjunction, disjunction = p.block[b, 0], p.block[b, 1], p.block[b, 2], p.block[b, 3]
+        step = 1 if p.block_chained[b] else end - first  # rule by rule when a premise reads an output
         for r0 in range(first, end, step):
             r1 = r0 + step
-            for j in range(chained.shape[0] if block_chained[b] else 0):
-                lit = chained[j, 0]
-                _accumulate(value, chained_conclusions[chained_start[j]:chained_start[j + 1]], conclusion_row,
-                            rule_conclusions[r0], chained[j, 1], table[lit])
-                _hedges(table[lit], hedges, literal[lit, 3], literal[lit, 4])
+            for j in range(p.chained.shape[0] if p.block_chained[b] else 0):
+                lit = p.chained[j, 0]
+                _accumulate(value, p.chained_conclusions[p.chained_start[j]:p.chained_start[j + 1]], p.conclusion_row,
+                            p.rule_conclusions[r0], p.chained[j, 1], table[lit])
+                _hedges(table[lit], p.hedges, p.literal[lit, 3], p.literal[lit, 4])
             a = r0
             while a < r1:  # the runs of rules computed here (not aliased nor deferred to their output)
-                if rule_skipped[a]:
+                if p.rule_skipped[a]:
                     a += 1
                     continue
                 e = a + 1
-                while e < r1 and not rule_skipped[e]:
+                while e < r1 and not p.rule_skipped[e]:
                     e += 1
-                staged_kernels.rule_degrees(table, program, rule_start[a:e + 1], rule_weight[a:e], conjunction, disjunction,
-                                      value[a:e])
+                staged_kernels.rule_degrees(table, p.program, p.rule_start[a:e + 1], p.rule_weight[a:e], conjunction,
+                                            disjunction, value[a:e])
                 a = e
             for r in range(r0, r1):
-                _conclude(r, value, hedges, rule_conclusions, conclusion_hedges, conclusion_row)
-    for k in range(output.shape[0]):
+                _conclude(r, value, p.hedges, p.rule_conclusions, p.conclusion_hedges, p.conclusion_row)
+    for k in range(p.output.shape[0]):
         y = raw[k, at:at + n]
-        kind, acts, units = output[k, 0], act_conclusion[act_start[k]:act_start[k + 1]], act_unit[act_start[k]:act_start[k + 1]]
-        first, end = unit_start[k], unit_start[k + 1]
+        acts_at, acts_end = p.act_start[k], p.act_start[k + 1]
+        kind, acts, units = p.output[k, 0], p.act_conclusion[acts_at:acts_end], p.act_unit[acts_at:acts_end]
+        first, end = p.unit_start[k], p.unit_start[k + 1]
         if kind == INTEGRAL:
-            n_terms, size = support_start[k + 1] - support_start[k], points_start[k + 1] - points_start[k]
-            sampled = shapes[shape_start[k]:shape_start[k + 1]].reshape((n_terms, size))
-            staged_kernels.integral(work, acts, units, unit_term[first:end], unit_implication[first:end], sampled,
-                              support[support_start[k]:support_start[k + 1]], points[points_start[k]:points_start[k + 1]],
-                              output[k, 1], output[k, 2], y)
+            n_terms, size = p.support_start[k + 1] - p.support_start[k], p.points_start[k + 1] - p.points_start[k]
+            shapes = p.shapes[p.shape_start[k]:p.shape_start[k + 1]].reshape((n_terms, size))
+            staged_kernels.integral(work, acts,
+                                    Units(units, p.unit_term[first:end], p.unit_implication[first:end], p.output[k, 1]),
+                                    Sampled(shapes, p.support[p.support_start[k]:p.support_start[k + 1]],
+                                            p.points[p.points_start[k]:p.points_start[k + 1]], p.output[k, 2]), y)
         elif kind == WEIGHTED:
-            every_row_affine(work, acts, act_partner[act_start[k]:act_start[k + 1]], units, output[k, 1],
-                             coefficients[first:end], constants[first:end], inputs, output[k, 3] != 0, y)
+            grouping = Groups(acts, units, p.act_opens[acts_at:acts_end], NOT_MASKED, False, p.output[k, 1])
+            every_row_affine(work, grouping, p.act_partner[acts_at:acts_end],
+                             Affine(p.coefficients[first:end], p.constants[first:end]), inputs, p.output[k, 3] != 0, y)
         else:
             y[:] = np.nan

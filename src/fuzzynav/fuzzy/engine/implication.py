@@ -59,11 +59,13 @@ def implication(w, sample, product):
 
 
 @jit
-def max_four(mu, shapes, units, j, unit_term, unit_implication, w, first, end):
+def max_four(mu, shapes, units, j, unit, w, first, end):
     """mu ← max(…max(max(mu, i₀), i₁)…, i₃) on the samples [first, end), i_q the implied term of
-    unit u = ``units[j + q]`` (its term ``unit_term[u]``, degree ``w[u]``, the product or the
-    minimum by ``unit_implication[u]``): four :func:`max_min` / :func:`max_product` passes in one,
-    the same maxima in the same order (so the same bits), a quarter of the reads and writes of ``mu``."""
+    unit u = ``units[j + q]`` (of ``unit``, a :class:`~.records.Units`: its term ``unit.term[u]``,
+    degree ``w[u]``, the product or the minimum by ``unit.implication[u]``): four :func:`max_min` /
+    :func:`max_product` passes in one, the same maxima in the same order (so the same bits), a
+    quarter of the reads and writes of ``mu``."""
+    unit_term, unit_implication = unit.term, unit.implication
     m = mu[first:end]
     u0, u1, u2, u3 = units[j], units[j + 1], units[j + 2], units[j + 3]
     s0, s1 = shapes[unit_term[u0], first:end], shapes[unit_term[u1], first:end]

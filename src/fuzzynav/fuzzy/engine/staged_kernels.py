@@ -31,6 +31,7 @@ from numba import literally
 from fuzzynav.fuzzy.engine.centroid_rows import applies, max_centroid
 from fuzzynav.fuzzy.engine.implication import max_four, max_min, max_product, sum_min
 from fuzzynav.fuzzy.engine.norms import ALGEBRAIC_SUM, MAXIMUM, MINIMUM, PRODUCT, conjoin_into, snorm_into, tnorm_into
+from fuzzynav.fuzzy.engine.records import Groups
 from fuzzynav.fuzzy.engine.sampled_defuzzify import centroid_sums, padded, reduce_sampled
 from fuzzynav.fuzzy.engine.sugeno_outputs import CHUNK, every_row_affine
 from fuzzynav.jit import jit
@@ -114,17 +115,19 @@ def rule_degrees(table, program, starts, weights, conjunction, disjunction, out)
 
 
 @jit
-def _max_units(mu, shapes, support, units, count, unit_term, unit_implication, w):
+def _max_units(mu, shapes, support, units, count, unit, w):
     """mu ← the maximum of mu and the implied term (min or product, :mod:`.implication`) of each of
     the first ``count`` of ``units``, in order, over its support: four in one pass
     (:func:`~.implication.max_four`, over the span of their supports, where a term is 0 outside its
-    own) where their supports overlap (:func:`_spans_overlap`), else one by one."""
+    own) where their supports overlap (:func:`_spans_overlap`), else one by one (``unit``: the
+    output's :class:`~.records.Units`)."""
+    unit_term, unit_implication = unit.term, unit.implication
     j = 0
     while j < count:
         if j + 4 <= count:
             first, end, overlap = _spans_overlap(support, unit_term, units, j)
             if overlap:
-                max_four(mu, shapes, units, j, unit_term, unit_implication, w, first, end)
+                max_four(mu, shapes, units, j, unit, w, first, end)
                 j += 4
                 continue
         u = units[j]
@@ -149,37 +152,37 @@ def _spans_overlap(support, unit_term, units, j):
 
 
 @jit
-def integral(degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction, out):
+def integral(degrees, rows, unit, sampled, out):
     """:func:`_integral`. The centroid of Maximum aggregation, where it applies, is computed across
     rows (:func:`~.centroid_rows.max_centroid`: the same bits), :func:`_integral` taking only its
     rows of degrees outside [0, 1]; otherwise units of Maximum aggregation go four at a time
     (:func:`_max_units`) when the first four's supports overlap (:func:`_spans_overlap`)."""
-    n = degrees.shape[1]
-    if reduction == 0 and aggregation == MAXIMUM and applies(unit_term, unit_implication, support, x.shape[0]):
+    n, unit_term, support = degrees.shape[1], unit.term, sampled.support
+    if sampled.reduction == 0 and unit.aggregation == MAXIMUM and applies(unit_term, unit.implication, support,
+                                                                          sampled.x.shape[0]):
         unbounded = np.empty(n, dtype=np.int64)
-        for i in range(max_centroid(degrees, rows, units, unit_term, unit_implication, shapes, support, x, out,
-                                    unbounded)):
-            _integral(False, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
-                      reduction, out, unbounded[i], unbounded[i] + 1)
-    elif aggregation == MAXIMUM and unit_term.shape[0] >= 4 and _spans_overlap(support, unit_term, np.arange(4), 0)[2]:
-        _integral(True, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
-                  reduction, out, 0, n)
+        for i in range(max_centroid(degrees, rows, unit, sampled, out, unbounded)):
+            _integral(False, degrees, rows, unit, sampled, out, unbounded[i], unbounded[i] + 1)
+    elif unit.aggregation == MAXIMUM and unit_term.shape[0] >= 4 and _spans_overlap(support, unit_term, np.arange(4),
+                                                                                    0)[2]:
+        _integral(True, degrees, rows, unit, sampled, out, 0, n)
     else:
-        _integral(False, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation,
-                  reduction, out, 0, n)
+        _integral(False, degrees, rows, unit, sampled, out, 0, n)
 
 
 @jit
-def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, support, x, aggregation, reduction,
-              out, start, stop):
+def _integral(four, degrees, rows, unit, sampled, out, start, stop):
     """A Mamdani output for every row n in [start, stop): activation a has degree ``degrees[rows[a], n]`` and
-    belongs to unit ``units[a]`` (its own, or — Maximum aggregation — the one of every
-    activation of the same term and implication, whose degrees max-combine first: T is
-    monotone); unit u implies term ``unit_term[u]`` sampled as ``shapes`` (T, R) at ``x`` with the
-    T-norm ``unit_implication[u]``. ``support[t]`` = (first, end) of term t's non-zero samples,
-    (-1, R) when a sample lies outside [0, 1]. ``four`` (compiled once for each value): the units
-    of Maximum aggregation and Minimum or product implication are left to :func:`_max_units`."""
+    belongs to unit ``units[a]`` (``unit``, a :class:`~.records.Units`: its own, or — Maximum
+    aggregation — the one of every activation of the same term and implication, whose degrees
+    max-combine first: T is monotone); unit u implies term ``unit_term[u]`` sampled as ``shapes``
+    (T, R) at ``x`` (``sampled``, a :class:`~.records.Sampled`) with the T-norm
+    ``unit_implication[u]``. ``support[t]`` = (first, end) of term t's non-zero samples, (-1, R)
+    when a sample lies outside [0, 1]. ``four`` (compiled once for each value): the units of
+    Maximum aggregation and Minimum or product implication are left to :func:`_max_units`."""
     literally(four)
+    units, unit_term, unit_implication, aggregation = unit.of, unit.term, unit.implication, unit.aggregation
+    shapes, support, x, reduction = sampled.shapes, sampled.support, sampled.x, sampled.reduction
     n_units, size = unit_term.shape[0], x.shape[0]
     w, maxed = np.empty(n_units), np.empty(n_units, dtype=np.int64)  # maxed: the units left to max_four
     mu, scratch, area = np.zeros(padded(size)), np.empty(size), np.empty(padded(size))
@@ -219,7 +222,7 @@ def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, s
                 tnorm_into(imp, implied, shapes[t, first:end], implied)
                 snorm_into(aggregation, mu[first:end], implied, mu[first:end])
         if four:
-            _max_units(mu, shapes, support, maxed, n_maxed, unit_term, unit_implication, w)
+            _max_units(mu, shapes, support, maxed, n_maxed, unit, w)
         if reduction == 0:  # Centroid: its sums called here, as reduce_sampled's call costs more than they do
             total, moment = centroid_sums(mu, at, lo, max(lo, hi))
             out[n] = moment / total
@@ -229,10 +232,13 @@ def _integral(four, degrees, rows, units, unit_term, unit_implication, shapes, s
 
 
 @jit
-def group(degrees, rows, groups, opens, triggered, masked, aggregation, degree, present):
-    """Per term group g and row n: ``degree[g, n]`` the S-norm ``aggregation`` folded over its
-    activations' degrees in order (``opens[a]``: a is the group's first; 0 where not triggered),
-    ``present[g, n]`` whether any triggered (``masked`` False: every activation triggers)."""
+def group(degrees, grouping, degree, present):
+    """Per term group g of ``grouping`` (a :class:`~.records.Groups`) and row n: ``degree[g, n]``
+    the S-norm ``aggregation`` folded over its activations' degrees in order (``opens[a]``: a is
+    the group's first; 0 where not triggered), ``present[g, n]`` whether any triggered (``masked``
+    False: every activation triggers)."""
+    rows, groups, opens, triggered = grouping.rows, grouping.groups, grouping.opens, grouping.triggered
+    masked, aggregation = grouping.masked, grouping.aggregation
     zeroed = np.empty(degrees.shape[1])
     for a in range(rows.shape[0]):
         g, v = groups[a], degrees[rows[a]]
@@ -285,13 +291,13 @@ def affine(coefficients, constants, inputs, z):
 
 
 @jit
-def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation, coefficients, constants, inputs,
-                    weighted_sum, out):
+def weighted_affine(degrees, grouping, terms, inputs, weighted_sum, out):
     """:func:`group`, :func:`affine` and :func:`weighted_average` by chunks of rows that stay in
-    cache: a weighted output whose terms are all constant or linear."""
-    if not masked:
-        every_row_affine(degrees, rows, np.full(rows.shape[0], -1), groups, aggregation, coefficients, constants,
-                         inputs, weighted_sum, out)
+    cache: a weighted output whose terms (``terms``, a :class:`~.records.Affine`) are all constant
+    or linear, its groups ``grouping`` (a :class:`~.records.Groups`)."""
+    coefficients, constants = terms.coefficients, terms.constants
+    if not grouping.masked:
+        every_row_affine(degrees, grouping, np.full(grouping.rows.shape[0], -1), terms, inputs, weighted_sum, out)
         return
     n_groups, n = coefficients.shape[0], out.shape[0]
     degree, present = np.empty((n_groups, CHUNK)), np.empty((n_groups, CHUNK), dtype=np.bool_)
@@ -299,8 +305,9 @@ def weighted_affine(degrees, rows, groups, opens, triggered, masked, aggregation
     for lo in range(0, n, CHUNK):
         hi = min(n, lo + CHUNK)
         size = hi - lo
-        group(degrees[:, lo:hi], rows, groups, opens, triggered[:, lo:hi] if masked else triggered, masked,
-              aggregation, degree[:, :size], present[:, :size])
+        chunk = Groups(grouping.rows, grouping.groups, grouping.opens, grouping.triggered[:, lo:hi], True,
+                       grouping.aggregation)
+        group(degrees[:, lo:hi], chunk, degree[:, :size], present[:, :size])
         affine(coefficients, constants, inputs[:, lo:hi], z[:, :size])
         weighted_average(degree[:, :size], present[:, :size], z[:, :size], weighted_sum, out[lo:hi])
 

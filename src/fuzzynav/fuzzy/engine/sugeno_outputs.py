@@ -61,11 +61,14 @@ def _group_rows(rows, partners, groups, n_groups):
 
 
 @jit
-def _group_degree(degrees, rows, groups, aggregation, g, first, partner, count, lo, hi, folded, ones):
+def _group_degree(degrees, grouping, g, heads, lo, hi, folded, ones):
     """Group g's degree on rows [lo, hi) as two factors (no copy): its one activation's row of
     ``degrees`` and the row ``partner`` where it has one (a deferred rule), else ``ones`` (× 1
     changes no bit); or its activations folded in order with the S-norm ``aggregation`` into
-    ``folded``, and ``ones``."""
+    ``folded``, and ``ones`` (``grouping`` a :class:`~.records.Groups`, ``heads`` the arrays of
+    :func:`_group_rows`)."""
+    rows, groups, aggregation = grouping.rows, grouping.groups, grouping.aggregation
+    first, partner, count = heads[0][g], heads[1][g], heads[2][g]
     if count == 1:
         return degrees[first, lo:hi], degrees[partner, lo:hi] if partner >= 0 else ones
     seen = 0
@@ -130,14 +133,18 @@ def _four_groups(paired, tile, coefficients, constants, g, x, num, den):
 
 
 @jit
-def every_row_affine(degrees, rows, partners, groups, aggregation, coefficients, constants, inputs, weighted_sum, out):
+def every_row_affine(degrees, grouping, partners, terms, inputs, weighted_sum, out):
     """``out``: Σ g z / Σ g (× Σ g for a weighted sum; NaN without groups) on every row, activation
     a of degree ``degrees[rows[a]]`` (times ``degrees[partners[a]]`` where that is not −1: a
-    deferred rule, alone in its group) in group ``groups[a]``, group g's value z the constant
-    ``constants[g]`` plus ``coefficients[g]`` · the ``inputs`` (n_inputs, N) (module docstring)."""
+    deferred rule, alone in its group) in group ``groups[a]`` (``grouping``, a
+    :class:`~.records.Groups`, its triggers not read), group g's value z the constant
+    ``constants[g]`` plus ``coefficients[g]`` · the ``inputs`` (n_inputs, N) (``terms``, a
+    :class:`~.records.Affine`; module docstring)."""
+    coefficients, constants = terms.coefficients, terms.constants
     n_groups, n, m = coefficients.shape[0], out.shape[0], coefficients.shape[1]
     tiled = n_groups - n_groups % TILE if 1 <= m <= TILE else 0  # groups that go four by four
-    first, partner, count = _group_rows(rows, partners, groups, n_groups)
+    heads = _group_rows(grouping.rows, partners, grouping.groups, n_groups)
+    _, partner, count = heads
     folded, ones = np.empty((TILE, CHUNK)), np.ones(CHUNK)
     z, num, den = np.empty(CHUNK), np.empty(CHUNK), np.empty(CHUNK)
     for lo in range(0, n, CHUNK):
@@ -146,14 +153,10 @@ def every_row_affine(degrees, rows, partners, groups, aggregation, coefficients,
         num[:size] = 0.0
         den[:size] = 0.0
         for g in range(0, tiled, TILE):
-            d0, f0 = _group_degree(degrees, rows, groups, aggregation, g, first[g], partner[g], count[g], lo, hi,
-                                   folded[0, :size], ones[:size])
-            d1, f1 = _group_degree(degrees, rows, groups, aggregation, g + 1, first[g + 1], partner[g + 1],
-                                   count[g + 1], lo, hi, folded[1, :size], ones[:size])
-            d2, f2 = _group_degree(degrees, rows, groups, aggregation, g + 2, first[g + 2], partner[g + 2],
-                                   count[g + 2], lo, hi, folded[2, :size], ones[:size])
-            d3, f3 = _group_degree(degrees, rows, groups, aggregation, g + 3, first[g + 3], partner[g + 3],
-                                   count[g + 3], lo, hi, folded[3, :size], ones[:size])
+            d0, f0 = _group_degree(degrees, grouping, g, heads, lo, hi, folded[0, :size], ones[:size])
+            d1, f1 = _group_degree(degrees, grouping, g + 1, heads, lo, hi, folded[1, :size], ones[:size])
+            d2, f2 = _group_degree(degrees, grouping, g + 2, heads, lo, hi, folded[2, :size], ones[:size])
+            d3, f3 = _group_degree(degrees, grouping, g + 3, heads, lo, hi, folded[3, :size], ones[:size])
             tile = (d0, f0, d1, f1, d2, f2, d3, f3)
             x = (inputs[0, lo:hi], inputs[min(1, m - 1), lo:hi], inputs[min(2, m - 1), lo:hi],
                  inputs[min(3, m - 1), lo:hi])
@@ -162,8 +165,7 @@ def every_row_affine(degrees, rows, partners, groups, aggregation, coefficients,
             else:
                 _four_groups(False, tile, coefficients, constants, g, x, num[:size], den[:size])
         for g in range(tiled, n_groups):
-            d, f = _group_degree(degrees, rows, groups, aggregation, g, first[g], partner[g], count[g], lo, hi,
-                                 folded[0, :size], ones[:size])
+            d, f = _group_degree(degrees, grouping, g, heads, lo, hi, folded[0, :size], ones[:size])
             if partner[g] >= 0 and count[g] == 1:
                 tnorm_into(PRODUCT, d, f, folded[1, :size])  # the deferred rule's degree, as the rule pass writes it
                 d = folded[1, :size]

@@ -1,0 +1,155 @@
+"""The named records the compiled navigators and the step take instead of long argument lists.
+
+Each is a ``typing.NamedTuple``: numba compiles a kernel taking one as a struct whose fields it
+reads by name (``robot.theta``, ``seen.ranges``), at no cost over separate arguments, and built
+inside a kernel or in Python alike. A field's comment gives its unit.
+
+- :class:`Navigator` — which navigator and its constants (shared by the robots);
+- :class:`Pose` — where a robot is;
+- :class:`Robot` — one robot this step: pose, speed and the point it aims at;
+- :class:`Reading` — what one robot's sensors read this step;
+- :class:`Readings` — the same, and the robots' poses, speeds and targets, for a batch;
+- :class:`Layers` — the recovery / loop-escape / guidance layers of one robot
+  (:mod:`fuzzynav.kernels.layers`);
+- :class:`Sightings` — the obstacle points a robot remembers (:mod:`fuzzynav.kernels.sightings`);
+- :class:`CarSearch` — the car route's search settings (:mod:`fuzzynav.kernels.car_route`);
+- :class:`TurnRoom` — the turning-room guard's distances (:func:`fuzzynav.kernels.guard.turn_wanted`);
+- :class:`Thresholds` — the behaviour selection's distances (:func:`fuzzynav.kernels.guard.select`);
+- :class:`Shares` — the learned avoider's shares of a batch (:func:`fuzzynav.kernels.learned.drive`);
+- :class:`StepNavigator`, :class:`Traffic`, :class:`Robots` — the arguments of the simulator's step
+  (:func:`fuzzynav.kernels.step.step`).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+
+class Navigator(NamedTuple):
+    """A compiled navigator (:mod:`fuzzynav.kernels.navigators`)."""
+
+    kind: int  # navigators.GOAL_SEEKING, TWO_BEHAVIOURS, FIVE_BEHAVIOURS, WALL_FOLLOWER or CONSTANT
+    params: np.ndarray  # (P,) its constants at the indices of kernels.navigators
+    tables: np.ndarray  # its rule bases (kernels.ts0.pack), in the order of its roles
+
+
+class Pose(NamedTuple):
+    """Where a robot is."""
+
+    x: float  # m
+    y: float  # m
+    theta: float  # rad, heading
+
+
+class Robot(NamedTuple):
+    """One robot this step."""
+
+    x: float  # m
+    y: float  # m
+    theta: float  # rad, heading
+    v: float  # m/s, speed
+    tx: float  # m, the point it aims at (goal, waypoint or target)
+    ty: float  # m
+
+
+class Reading(NamedTuple):
+    """What one robot's sensors read this step."""
+
+    ranges: np.ndarray  # (S,) m, one per ray
+    angles: np.ndarray  # (S,) rad, the rays' directions from the heading
+    max_range: float  # m
+    d_o: float  # m, D_ro: the nearest obstacle (inf: none)
+    b_o: float  # rad, θ_o: its bearing from the heading
+
+
+class Readings(NamedTuple):
+    """What a batch of N robots knows this step (one row each)."""
+
+    poses: np.ndarray  # (N, 3) m, m, rad
+    speeds: np.ndarray  # (N,) m/s
+    targets: np.ndarray  # (N, 2) m, the points they aim at
+    ranges: np.ndarray  # (N, S) m
+    angles: np.ndarray  # (S,) rad
+    max_range: float  # m
+    obstacle: np.ndarray  # (N, 2) D_ro (m), θ_o (rad)
+    active: np.ndarray  # (N,) bool: the robots to act for
+
+
+class Layers(NamedTuple):
+    """The layers around a navigator, for one robot (:mod:`fuzzynav.kernels.layers`)."""
+
+    params: np.ndarray  # layers.PARAM_NAMES, then the recovery's rule base
+    state: np.ndarray  # the robot's row: layers.STATE_NAMES, then its places, points and cells
+
+
+class Sightings(NamedTuple):
+    """The obstacle points a robot remembers."""
+
+    points: np.ndarray  # (P, 2) m, world frame; the first ``count`` are filled
+    count: int
+
+
+class CarSearch(NamedTuple):
+    """The car route's search (:func:`fuzzynav.kernels.car_search.search`)."""
+
+    curvatures: np.ndarray  # (K,) 1/m, the arcs' curvatures
+    numbers: np.ndarray  # the search's numbers, in the order of car_search.search (radius first, m)
+    cell: float  # m, the clearance grid's cell
+
+
+class TurnRoom(NamedTuple):
+    """The distances of the turning-room guard."""
+
+    lane: float  # m, the lane ahead that must be free
+    margin: float  # m, the room the better half turn must keep
+    body: float  # m, the body's radius
+    radius: float  # m, the full-lock turn's radius
+
+
+class Thresholds(NamedTuple):
+    """The distances of the behaviour selection (Fig IV.16)."""
+
+    detection: float  # m, an obstacle nearer than this is avoided
+    front: float  # m, the front avoider (FOA) while the front reading is below this
+    keep: float  # m, no reading below this for the goal direction to count clear
+    clear: float  # m, the rays towards the goal read at least min(d_rg, clear) to count clear
+    vision: float  # rad, the rays within this of the goal bearing are those looked at
+
+
+class Shares(NamedTuple):
+    """The learned avoider's shares of a batch of N rows."""
+
+    alpha: np.ndarray  # (N,) rad, its steering share
+    speed: np.ndarray  # (N,) m/s, its speed share
+    free: np.ndarray  # (N,) the goal seeker's weight w_free
+
+
+class StepNavigator(NamedTuple):
+    """The navigator of the simulator's step, but for the two parameter arrays the step takes
+    apart (a ``None`` there prunes the code that reads them at compile time)."""
+
+    kind: int  # a navigators code, or step.NO_NAVIGATOR (commands given)
+    tables: np.ndarray  # its rule bases
+    state: np.ndarray  # (N, 4) ints: navigators.MODE, HELD, SIDE, COUNT
+    memory: np.ndarray  # (N, steps, S + 1, 3) the hit memory of kernels.guard
+    layer_state: np.ndarray  # (N, …) the layers' rows (unused without layers)
+
+
+class Traffic(NamedTuple):
+    """The world the step moves the robots in (:mod:`fuzzynav.kernels.traffic`)."""
+
+    base: np.ndarray  # the static scene's rows of the moving obstacles
+    movers: np.ndarray  # (M, 4) ints: which scene rows each moving obstacle owns
+    offsets: np.ndarray  # (M, 2) m, where the moving obstacles are at this step
+    scene: np.ndarray  # the scene array (kernels.scene), written with the movers in place
+
+
+class Robots(NamedTuple):
+    """The per-robot arrays the step updates in place."""
+
+    state: np.ndarray  # (N, step.STATE_FIELDS) floats
+    ranges: np.ndarray  # (N, S) m
+    status: np.ndarray  # (N, 3) ints: outcome, steps taken, waypoint index
+    moves: bool = True  # False: the step only acts and clips; another plant moves them (sim.plants)
