@@ -8,7 +8,8 @@ working tree), then compares every model file and every reproduce ``<id>.json`` 
     python benchmarks/same_results.py --base BASE_DIR/.venv/bin/fuzzynav \
         --new .venv/bin/fuzzynav --out OUT_DIR
 
-Paths inside the run's directory are compared relative to it; fields that measure wall time (any key ending in ``_seconds``, a checkpoint's ``saved_at``, and an
+Paths inside the run's directory are compared relative to it; fields that measure wall time (any key ending in ``_seconds``, a checkpoint's ``saved_at`` and the
+``digest`` that covers it, and an
 experiment record's ``seconds`` and ``finished``, ``reproduce <id>/run.json``) are removed
 before comparing, since they differ between any two runs; everything else must be identical.
 Exit status 0 when every file matches, 1 otherwise.
@@ -49,7 +50,9 @@ def run(fuzzynav: str, out: Path) -> None:
                    stdout=subprocess.DEVNULL)
 
 
-WALL_CLOCK = ("saved_at", "seconds", "finished")  # a checkpoint's save time; an experiment record's run time and end
+# a checkpoint's save time and its digest (which covers the save time; the rest is compared); an
+# experiment record's run time and end
+WALL_CLOCK = ("saved_at", "digest", "seconds", "finished")
 
 
 def _without_timings(value):
