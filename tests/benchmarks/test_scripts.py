@@ -91,6 +91,8 @@ SMALLEST = [
     ("robust_nav.py", ("--layers", "--controller", "fuzzy-2b-thesis", "--family", "mixed", "--seeds", "0", "--n", "1"),
      "| fuzzy-2b-thesis | all layers |"),
     ("sim_core.py", ("--json",), '"irsim": null'),
+    ("physics_plant.py", ("cost", "fig-IV-22a"), "fig-IV-22a mujoco: reached"),
+    ("robustness.py", ("mixed:1", "--navigators", "goal-seeking", "--quick", "--out", "{tmp}/sweep"), "| combined |"),
 ]
 # Scripts whose smallest run is too long for the suite (their --help still runs above: the argument
 # parsing and every import) or that need a peer Python: why, and what checks them instead.
@@ -100,6 +102,8 @@ NOT_RUN_HERE = {
     "tracking_bench.py": "about a minute: every tracker timed on the three chapter V paths",
     "tuning_compare.py": "a tuner needs at least one generation: 400 episodes",
     "train_time.py": "trains with the task's whole default budget in fresh processes",
+    "chapter6_probes.py": "avoid-rules reads a trained fql-avoid model (minutes of training first); wall-bound "
+                          "searches the wall follower's interpretations for tens of minutes",
     "irsim_peer.py": "needs the ir-sim package (its own virtualenv); its world conversion is tested below",
     # smallest runs (the arguments given) of 20-45 s on an idle 2-core machine:
     "gym_vector.py": "--robots 2 --steps 5 --rounds 1: 25 s (every task's environments built twice)",
