@@ -62,13 +62,15 @@ def yield_system() -> FuzzySystem:
 
 
 class YieldingNavigator(BatchController):
-    """``inner`` (default ``fuzzy-5b``) under the yield / evade layer (module docstring)."""
+    """``inner`` (default ``fuzzy-5b`` at the thesis' speeds, ``paced=False``: the yield rules
+    were written and measured for them, not for the pace layer's faster driving) under the yield /
+    evade layer (module docstring)."""
 
     name = "fuzzy-5b-yield"
 
     def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
                  close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0):
-        self.inner = inner if inner is not None else fuzzy_5b_gap_robust()
+        self.inner = inner if inner is not None else fuzzy_5b_gap_robust(paced=False)
         self.sensors = getattr(self.inner, "sensors", None)
         self.labels = getattr(self.inner, "labels", ())
         self.system, self.mover_speed, self.max_speed, self.horizon = yield_system(), mover_speed, max_speed, horizon
