@@ -54,26 +54,23 @@ def _temporaries(folder):
     return sorted(str(p.relative_to(folder)) for p in folder.rglob("*") if p.name.endswith(".tmp"))
 
 
-@pytest.mark.slow
-def test_train_killed_at_random_moments_resumes_into_the_uninterrupted_model(tmp_path):
-    whole = tmp_path / "whole.json"
-    moments = _moments(38, _timed_run([*TRAIN, "--out", str(whole)]))
-    for number, delay in enumerate(moments):
-        part = tmp_path / f"part{number}.json"
-        _kill_after([*TRAIN, "--out", str(part)], delay)
-        assert main([*TRAIN, "--out", str(part), "--resume"]) == 0, f"killed after {delay:.2f} s"
-        assert json.loads(part.read_text()) == json.loads(whole.read_text()), f"killed after {delay:.2f} s"
-    assert _temporaries(tmp_path) == []
+def _model(path):
+    return json.loads(path.read_text())
+
+
+def _campaign(folder):
+    return {name: (folder / name).read_bytes() for name in CAMPAIGN_FILES}
 
 
 @pytest.mark.slow
-def test_bench_killed_at_random_moments_resumes_into_the_uninterrupted_files(tmp_path):
-    whole = tmp_path / "whole"
-    moments = _moments(83, _timed_run([*BENCH, "--out", str(whole)]))
+@pytest.mark.parametrize(("argv", "seed", "out", "result"), [(TRAIN, 38, "m.json", _model), (BENCH, 83, "campaign", _campaign)],
+                         ids=["train", "bench"])
+def test_killed_at_random_moments_then_resumed_equals_an_uninterrupted_run(tmp_path, argv, seed, out, result):
+    whole = tmp_path / "whole" / out
+    moments = _moments(seed, _timed_run([*argv, "--out", str(whole)]))
     for number, delay in enumerate(moments):
-        part = tmp_path / f"part{number}"
-        _kill_after([*BENCH, "--out", str(part)], delay)
-        assert main([*BENCH, "--out", str(part), "--resume"]) == 0, f"killed after {delay:.2f} s"
-        for name in CAMPAIGN_FILES:
-            assert (part / name).read_bytes() == (whole / name).read_bytes(), f"{name}, killed after {delay:.2f} s"
+        part = tmp_path / f"killed{number}" / out
+        _kill_after([*argv, "--out", str(part)], delay)
+        assert main([*argv, "--out", str(part), "--resume"]) == 0, f"killed after {delay:.2f} s"
+        assert result(part) == result(whole), f"killed after {delay:.2f} s"
     assert _temporaries(tmp_path) == []
