@@ -1,5 +1,6 @@
 """Saving never corrupts the previous file and leaves no temporary file behind: a save that fails
-(an exception in the middle of writing, a full disk) removes its temporary file at once; a save
+(an exception in the middle of writing, a full disk, a read-only folder) removes its temporary file
+at once; a save
 killed with SIGKILL (nothing can clean up) leaves the previous file intact, and its temporary
 file is removed by the next save of that file."""
 
@@ -9,10 +10,13 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import time
+from pathlib import Path
 
 import pytest
 
+from fuzzynav.cli import main
 from fuzzynav.errors import InputError
 from fuzzynav.storage import atomic_write, save_json_atomic
 
@@ -47,6 +51,52 @@ def test_full_disk_is_an_input_error_naming_the_file_and_keeps_the_previous_file
     with pytest.raises(InputError, match=r"m\.json: cannot write \(No space left on device\)"):
         atomic_write(path, disk_full)
     assert json.loads(path.read_text()) == PREVIOUS and _leftovers(tmp_path) == []
+
+
+def _read_only(monkeypatch, folder, fail):
+    """Simulate a read-only ``folder`` (root ignores permissions): creating a file in it
+    (``fail="create"``) or renaming one onto a file in it (``fail="replace"``) raises EROFS."""
+    folder = Path(folder).resolve()
+    real_mkstemp, real_replace = tempfile.mkstemp, os.replace
+
+    def refuse(where):
+        if Path(where).resolve().parent == folder:
+            raise OSError(errno.EROFS, os.strerror(errno.EROFS), str(where))
+
+    def mkstemp(*args, **options):
+        if fail == "create":
+            refuse(Path(options.get("dir") or ".") / "new")
+        return real_mkstemp(*args, **options)
+
+    def replace(source, target, **options):
+        if fail == "replace":
+            refuse(target)
+        return real_replace(source, target, **options)
+
+    monkeypatch.setattr(tempfile, "mkstemp", mkstemp)
+    monkeypatch.setattr(os, "replace", replace)
+
+
+@pytest.mark.parametrize("fail", ["create", "replace"])
+def test_read_only_folder_is_an_input_error_naming_the_file_and_keeps_the_previous_file(tmp_path, monkeypatch, fail):
+    path = tmp_path / "m.json"
+    save_json_atomic(path, PREVIOUS)
+    _read_only(monkeypatch, tmp_path, fail)
+    with pytest.raises(InputError, match=r"m\.json: cannot write \(Read-only file system\)"):
+        save_json_atomic(path, {"kind": "x", "weights": [4]})
+    assert json.loads(path.read_text()) == PREVIOUS and _leftovers(tmp_path) == []
+
+
+def test_cli_into_a_read_only_out_is_one_line_and_exit_2(tmp_path, monkeypatch, capsys):
+    out = tmp_path / "ro" / "m.json"
+    out.parent.mkdir()
+    _read_only(monkeypatch, out.parent, "create")
+    assert main(["train", "q-goal", "--episodes", "2", "--out", str(out), "--quiet"]) == 2
+    captured = capsys.readouterr()
+    assert captured.err.count("\n") == 1 and "Traceback" not in captured.err
+    assert captured.err.startswith("fuzzynav train: error: " + str(out))  # the model or its checkpoint
+    assert captured.err.endswith(": cannot write (Read-only file system)\n")
+    assert list(out.parent.iterdir()) == []
 
 
 KILLED_SAVE = """
