@@ -44,6 +44,19 @@ def remove_stale_temporaries(path, older_than: float | None = None) -> list[Path
     return removed
 
 
+def remove_temporaries_under(folder) -> list[Path]:
+    """Remove every ``.NAME.*.tmp`` file under ``folder`` (a killed save's leftovers); only for
+    a caller that holds the folder's lock, so that no save into it is under way."""
+    removed = []
+    for tmp in Path(folder).rglob(".*.tmp") if Path(folder).is_dir() else ():
+        try:
+            tmp.unlink()
+            removed.append(tmp)
+        except OSError:
+            continue  # gone already, or not ours to remove
+    return removed
+
+
 def atomic_write(path, write) -> None:
     """Write through ``write(handle)`` (a binary file) to a temporary file ``.NAME.XXXX.tmp``
     beside ``path``, then rename it onto ``path``; temporaries an earlier killed save left

@@ -38,7 +38,7 @@ from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
 from fuzzynav.sim.plants import DEFAULT_PLANT
-from fuzzynav.storage import write_text_atomic
+from fuzzynav.storage import remove_temporaries_under, write_text_atomic
 
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
            "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",
@@ -185,6 +185,8 @@ def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = 
 def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, address: str | None,
          progress: bool) -> list[dict]:
     previous = read_runs(out, plan if resume else None)
+    if resume:  # under the campaign's lock: a temporary file here is a killed run's (plots included)
+        remove_temporaries_under(out)
     if previous and not resume:
         raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
                          "another --out", source=str(out), field="--out")

@@ -50,16 +50,16 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
     if scenario.goal is None:
         return None
     key = world_key(scenario, radius)
-    if key in _MEMORY:
-        return _MEMORY[key]
     file = Path(cache_dir) / "shortest" / f"{key}.json" if cache_dir is not None else None
-    if file is not None and file.is_file():
+    if key in _MEMORY:  # computed by an earlier campaign of this process: still written to this one's cache
+        length = _MEMORY[key]
+    elif file is not None and file.is_file():
         length = _cached_length(file)
     else:
         path = shortest_path(scenario.world.standing(), scenario.start, scenario.goal.position, radius)
         length = None if path is None else round(max(path_length(path) - scenario.goal.tolerance, 1e-6), 6)
-        if file is not None:
-            write_text_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
+    if file is not None and not file.is_file():
+        write_text_atomic(file, json.dumps({"scenario": scenario.name, "shortest_path_m": length}))
     _MEMORY[key] = length
     return length
 

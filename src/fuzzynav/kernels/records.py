@@ -152,4 +152,4 @@ class Robots(NamedTuple):
     state: np.ndarray  # (N, step.STATE_FIELDS) floats
     ranges: np.ndarray  # (N, S) m
     status: np.ndarray  # (N, 3) ints: outcome, steps taken, waypoint index
-    moves: bool = True  # False: the step only acts and clips; another plant moves them (sim.plants)
+    moves: bool  # False: the step only acts and clips; another plant moves them (sim.plants)

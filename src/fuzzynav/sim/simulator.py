@@ -312,7 +312,7 @@ class BatchSimulator:
             if self.plant.in_kernel:
                 self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
                                                  Traffic(self._base, self._movers, offsets, self._scene), self.k,
-                                                 Robots(self._state, self._ranges, self._status), self._imperfect)
+                                                 Robots(self._state, self._ranges, self._status, True), self._imperfect)
             else:
                 self._plant_step(offsets)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it

@@ -58,7 +58,7 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
         running = step_kernel.step(params, lp, StepNavigator(kind, tables, cstate, memory, lstate), setup,
-                                   Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status), None)
+                                   Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status, True), None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
         if lp[layers.GROW] != 0.0:
