@@ -19,15 +19,24 @@ import numpy as np
 
 from fuzzynav.jit import jit
 
+FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
+
 
 @jit
 def arc_point(x, y, theta, kappa, s):
     """The pose after driving ``s`` metres (backwards when ``s`` < 0) on the arc of curvature
     ``kappa`` from (x, y, θ)."""
+    return arc_from(x, y, theta, math.cos(theta), math.sin(theta), kappa, s)
+
+
+@jit
+def arc_from(x, y, theta, cos_theta, sin_theta, kappa, s):
+    """:func:`arc_point` given cos θ and sin θ (the search computes them once per node, not per
+    point of each arc)."""
     if abs(kappa) < 1e-9:
-        return x + s * math.cos(theta), y + s * math.sin(theta), theta
+        return x + s * cos_theta, y + s * sin_theta, theta
     end = theta + kappa * s
-    return x + (math.sin(end) - math.sin(theta)) / kappa, y - (math.cos(end) - math.cos(theta)) / kappa, end
+    return x + (math.sin(end) - sin_theta) / kappa, y - (math.cos(end) - cos_theta) / kappa, end
 
 
 @jit
@@ -78,6 +87,18 @@ def slot(table, key):
 
 
 @jit
+def grown(table, best, closed):
+    """The search's hash table (keys, best costs, closed flags) with twice the slots, every entry kept."""
+    size = 2 * table.shape[0]
+    keys, costs, shut = np.full(size, -1, np.int64), np.full(size, np.inf), np.zeros(size, np.bool_)
+    for s in range(table.shape[0]):
+        if table[s] >= 0:
+            at = slot(keys, table[s])
+            keys[at], costs[at], shut[at] = table[s], best[s], closed[s]
+    return keys, costs, shut
+
+
+@jit
 def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
     """Hybrid A* from the pose ``start`` to within ``reach`` of ``goal`` on the grid
     ``clearance`` (ny, nx) of ``cell`` m whose lower-left corner is the origin; ``heuristic``
@@ -92,17 +113,16 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
     primitives_per_node = 2 * kinds if reverse > 0 else kinds
     ny, nx = clearance.shape
     node_cols = int(nx * cell / node_cell) + 1
-    # the best cost and closed flag of each search node seen, by key, in a hash table sized by the
-    # budget (at most ``budget`` keys), not by the grid: a plan costs what it searches
-    size_table = 1
-    while size_table < 2 * budget:
-        size_table *= 2
-    table = np.full(size_table, -1, np.int64)
-    best, closed = np.full(size_table, np.inf), np.zeros(size_table, dtype=np.bool_)
+    # the best cost and closed flag of each search node seen, by key, in a hash table sized by what
+    # the search has seen (doubled when half full), not by the grid or the budget: a plan costs
+    # what it searches, and a small search's table stays in the processor's cache
+    table, best, closed = np.full(FIRST_SLOTS, -1, np.int64), np.full(FIRST_SLOTS, np.inf), np.zeros(FIRST_SLOTS, np.bool_)
+    entries = 0
     xs, ys, ths, gs = np.empty(budget), np.empty(budget), np.empty(budget), np.empty(budget)
     parents, primitives, keys = np.empty(budget, np.int64), np.empty(budget, np.int64), np.empty(budget, np.int64)
     heap_f, heap_n = np.empty(budget), np.empty(budget, np.int64)
     samples = max(2, int(math.ceil(step / (0.5 * cell))))
+    end_sampled = step * samples / samples == step  # the last sample is then exactly the arc's end
     kmax = np.abs(curvatures).max()
     xs[0], ys[0], ths[0], gs[0], parents[0], primitives[0] = start[0], start[1], start[2], 0.0, -1, -1
     keys[0] = -1
@@ -117,12 +137,14 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
         x, y, theta, g = xs[node], ys[node], ths[node], gs[node]
         if math.hypot(x - goal[0], y - goal[1]) <= reach:
             return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
+        cos_theta, sin_theta = math.cos(theta), math.sin(theta)
         for a in range(primitives_per_node):
             kappa, backwards = curvatures[a % kinds], a >= kinds
             length = -step if backwards else step
             penalty, blocked = 0.0, False
+            px = py = pth = 0.0
             for j in range(1, samples + 1):
-                px, py, _ = arc_point(x, y, theta, kappa, length * j / samples)
+                px, py, pth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length * j / samples)
                 row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
                 if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < radius:
                     blocked = True
@@ -130,7 +152,8 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
                 penalty += 1.0 + weight * max(0.0, comfort - (clearance[row, col] - radius))
             if blocked:
                 continue
-            px, py, pth = arc_point(x, y, theta, kappa, length)
+            if not end_sampled:
+                px, py, pth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length)
             pth = pth % (2.0 * math.pi)
             h = heuristic[int(math.floor(py / cell)), int(math.floor(px / cell))]
             if not math.isfinite(h):
@@ -149,7 +172,11 @@ def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
                 continue
             if count >= budget:
                 return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], -1
+            if table[at] != key:
+                entries += 1
             table[at], best[at] = key, g + cost
+            if 2 * entries > table.shape[0]:
+                table, best, closed = grown(table, best, closed)
             xs[count], ys[count], ths[count], gs[count] = px, py, pth, g + cost
             parents[count], primitives[count], keys[count] = node, a, key
             size = push(heap_f, heap_n, size, g + cost + h, count)
