@@ -6,11 +6,13 @@ sees the same machine load): the simulator with the 271-beam lidar under a const
 (``sim+lidar``), then the inner navigator ``fuzzy-5b-gap`` (sector readings, gap finding, the
 five behaviours, the hit memory: ``navigator``), then the recovery and loop-escape layers with
 their obstacle-point memory (``layers``), then the route guidance on the grid route alone
-(``grid route``), then the whole ``fuzzy-5b`` with the car route by hybrid A* (``car route``).
-Each part's cost is the difference of two builds' mean time per running robot-step (µs); the
-builds drive differently from the layer they add on, so the split is a good estimate, not an
-exact account. World: ``benchmarks/sim_core.py``'s 15 mixed obstacles, goal (19, 19); an episode
-that ends starts again. Run:
+(``grid route``), then with the car route by hybrid A* (``car route``), then the whole
+``fuzzy-5b`` with its pace (``pace``). Each part's cost is the difference of two builds' mean time
+per running robot-step (µs); the builds drive differently from the layer they add on (the pace
+above all: quicker, the robots reach clutter and plan sooner), so the split is an estimate, not
+an exact account. :func:`plans` then counts how often ``fuzzy-5b`` plans and splits one car
+route plan into its parts (CPU time), which the builds cannot separate. World:
+``benchmarks/sim_core.py``'s 15 mixed obstacles, goal (19, 19); an episode that ends starts again. Run:
 
     python benchmarks/navigator_profile.py [--robots 1 64 1024] [--steps 400] [--json]
 """
@@ -35,6 +37,7 @@ from fuzzynav.robot.sensors import named_ring  # noqa: E402
 from fuzzynav.sim import BatchSimulator  # noqa: E402
 
 CHUNKS = 5
+GOAL = (19.0, 19.0)  # the goal of world_of_15
 
 
 def builds() -> dict:
@@ -46,8 +49,9 @@ def builds() -> dict:
         "sim+lidar": lambda: ConstantCommand(COMMAND[1], COMMAND[0]),
         "navigator": lambda: FiveBehaviourNavigator(gap=True),
         "layers": layers_only,
-        "grid route": lambda: fuzzy_5b_gap_robust(guidance={**GUIDANCE, "guide_car": 0.0}),
-        "car route": fuzzy_5b_gap_robust,
+        "grid route": lambda: fuzzy_5b_gap_robust(guidance={**GUIDANCE, "guide_car": 0.0}, paced=False),
+        "car route": lambda: fuzzy_5b_gap_robust(paced=False),
+        "pace": fuzzy_5b_gap_robust,
     }
 
 
@@ -96,6 +100,65 @@ def profile(n: int, steps: int) -> dict:
             "part_share": {k: round(v / total[names[-1]], 3) for k, v in parts.items()}}
 
 
+def plans(n: int, steps: int) -> dict:
+    """How often ``fuzzy-5b``'s robots plan, and what a car route plan costs, by part: ``n`` robots
+    drive ``steps`` steps (a route planned again shows as a new ``guide_planned`` time); then, for
+    each robot still running (at most 64) whose straight line to the goal is not free, the plan it
+    would make there is made again part by part (CPU time of 3 repeats): the clearance grid, the Dijkstra
+    heuristic, the hybrid A* search (``fuzzynav.kernels.car_route.plan``)."""
+    import time
+
+    import numpy as np
+
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.kernels import car_route, car_search, guidance, layers
+    from fuzzynav.kernels.records import Robot, Sightings
+
+    controller = make_controller("fuzzy-5b")
+    run = Run(controller, n)
+    sim, planned, robot_steps = run.sim, 0, 0
+    for _ in range(steps):
+        if sim.done:
+            break
+        before = controller.compiled(n, sim.sensors.angles)[-1][:, layers.GUIDE_PLANNED].copy()
+        robot_steps += int(np.count_nonzero(sim.active))
+        sim.step()
+        planned += int(np.count_nonzero(controller.compiled(n, sim.sensors.angles)[-1][:, layers.GUIDE_PLANNED] != before))
+    params, rows = controller.params, controller.compiled(n, sim.sensors.angles)[-1]
+    search, radius = guidance.search_settings(params), float(params[layers.RADIUS])
+    tx, ty = GOAL
+    seconds, searched = {"clearance grid": 0.0, "heuristic": 0.0, "search": 0.0}, 0
+    running = np.flatnonzero(sim.active)[:64]
+    for i in running:
+        points, count = layers.points_of(params, rows[i]), int(rows[i, layers.COUNT])
+        x, y, theta = sim.pose[i]
+        if guidance.line_free(points, count, x, y, tx, ty, radius + params[layers.GUIDE_ROOM],
+                              params[layers.GUIDE_DIRECT]):
+            continue
+        seen, robot = Sightings(points, count), Robot(x, y, theta, 0.0, tx, ty)
+        kept, low_x, low_y, nx, ny = car_route.frame(seen, robot, radius + search.numbers[0], radius, search.cell)
+        comfort, setting = search.numbers[5], search.numbers.copy()
+        setting[0] = kept
+        start, goal = np.array([x - low_x, y - low_y, theta % (2 * np.pi)]), np.array([tx - low_x, ty - low_y])
+        row, col = int((ty - low_y) / search.cell), int((tx - low_x) / search.cell)
+        for _ in range(3):
+            t0 = time.process_time()
+            grid = car_route.clearance_grid(points, count, low_x, low_y, nx, ny, search.cell, kept + comfort)
+            t1 = time.process_time()
+            heuristic = car_route.cost_to_go(grid, search.cell, row, col, kept, search.numbers[4], comfort)
+            t2 = time.process_time()
+            car_search.search(grid, search.cell, heuristic, start, goal, search.curvatures, setting)
+            t3 = time.process_time()
+            for name, spent in zip(seconds, (t1 - t0, t2 - t1, t3 - t2)):
+                seconds[name] += spent / 3
+        searched += 1
+    total = sum(seconds.values())
+    return {"plans_per_robot_step": round(planned / max(robot_steps, 1), 4),
+            "robots_needing_the_search": f"{searched} of {len(running)}",
+            "ms_per_search_plan": round(1e3 * total / max(searched, 1), 2),
+            "plan_share": {name: round(value / total, 3) if total else None for name, value in seconds.items()}}
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--robots", type=int, nargs="+", default=[1, 64, 1024])
@@ -105,13 +168,14 @@ def main(argv=None) -> None:
     report = {"benchmark": "navigator_profile", "controller": "fuzzy-5b", "chunks": CHUNKS, "robots": {}}
     for n in args.robots:
         steps = args.steps if n == 1 else max(5, args.steps * 64 // (n * 4))
-        report["robots"][str(n)] = {"steps_per_chunk": steps, **profile(n, steps)}
+        report["robots"][str(n)] = {"steps_per_chunk": steps, **profile(n, steps), "plans": plans(n, steps)}
     if not args.json:
         for n, row in report["robots"].items():
             print(f"{n} robot(s), {row['steps_per_chunk']} steps a chunk:")
             for name, us in row["part_us"].items():
                 print(f"  {name:12s} {us:>10.1f} µs/robot-step  {100 * row['part_share'][name]:5.1f} %   "
                       f"(build total {row['us_per_robot_step'][name]:.1f})")
+            print(f"  plans: {row['plans']}")
     print(json.dumps(report))
 
 

@@ -84,6 +84,21 @@ def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
 
 
 @jit
+def frame(seen, robot, radius, body, cell):
+    """(radius kept, low x, low y, nx, ny) of :func:`plan`'s search: the radius of the module
+    docstring (3.) and the grid (1.) of ``cell`` m round the robot, its target and the points ``seen``."""
+    points, count, x, y, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.tx, robot.ty
+    radius = max(body, min(radius, sightings.clearance(points, count, x, y) - SLACK))
+    low_x, low_y, high_x, high_y = min(x, tx), min(y, ty), max(x, tx), max(y, ty)
+    for p in range(count):
+        low_x, low_y = min(low_x, points[p, 0]), min(low_y, points[p, 1])
+        high_x, high_y = max(high_x, points[p, 0]), max(high_y, points[p, 1])
+    low_x, low_y = low_x - MARGIN, low_y - MARGIN
+    nx, ny = int(math.ceil((high_x + MARGIN - low_x) / cell)), int(math.ceil((high_y + MARGIN - low_y) / cell))
+    return radius, low_x, low_y, nx, ny
+
+
+@jit
 def plan(seen, robot, radius, body, search):
     """(found, poses (m, 3), primitives (m,)): the plan of ``robot`` (a
     :class:`~fuzzynav.kernels.records.Robot`) from the pose (x, y, θ) to within ``reach`` of
@@ -95,14 +110,8 @@ def plan(seen, robot, radius, body, search):
     gives up."""
     points, count, x, y, theta, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.theta, robot.tx, robot.ty
     curvatures, numbers, cell = search.curvatures, search.numbers, search.cell
-    radius = max(body, min(radius, sightings.clearance(points, count, x, y) - SLACK))
+    radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
     comfort = numbers[5]
-    low_x, low_y, high_x, high_y = min(x, tx), min(y, ty), max(x, tx), max(y, ty)
-    for p in range(count):
-        low_x, low_y = min(low_x, points[p, 0]), min(low_y, points[p, 1])
-        high_x, high_y = max(high_x, points[p, 0]), max(high_y, points[p, 1])
-    low_x, low_y = low_x - MARGIN, low_y - MARGIN
-    nx, ny = int(math.ceil((high_x + MARGIN - low_x) / cell)), int(math.ceil((high_y + MARGIN - low_y) / cell))
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
     heuristic = cost_to_go(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius, numbers[4],
                            comfort)

@@ -87,20 +87,28 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 
 
 @jit
+def search_settings(params):
+    """The car route's search settings (a :class:`~fuzzynav.kernels.records.CarSearch`) of the
+    layers' ``params``: the steering values' curvatures, the search's numbers (forward arcs only
+    for a robot that cannot reverse), the grid cell."""
+    steering = params[GUIDE_CAR_STEERING]
+    curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
+    numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
+    if params[MAX_REVERSE_SPEED] <= 0:
+        numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
+    return CarSearch(curvatures, numbers, params[GUIDE_CAR_CELL])
+
+
+@jit
 def car(state, params, seen, robot, radius):
     """Plan the car route (module docstring) of ``robot`` (a :class:`~fuzzynav.kernels.records.Robot`)
     from (x, y, θ) to (tx, ty) round the points ``seen`` (a
     :class:`~fuzzynav.kernels.records.Sightings`): the route point, or the arc the layer drives;
     False when the search gives up."""
     tx, ty = robot.tx, robot.ty
-    steering = params[GUIDE_CAR_STEERING]
-    curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
-    numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
-    if params[MAX_REVERSE_SPEED] <= 0:  # a robot that cannot reverse: forward arcs only
-        numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
+    search = search_settings(params)
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
-        seen, robot, radius + numbers[0], radius, CarSearch(curvatures, numbers, params[GUIDE_CAR_CELL]),
-        params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
+        seen, robot, radius + search.numbers[0], radius, search, params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
     if found and manoeuvre:
         state[GUIDE_GEAR], state[GUIDE_KAPPA], state[GUIDE_RUN] = -1.0 if backwards else 1.0, kappa, run
         state[GUIDE_DRIVEN] = 0.0
