@@ -41,7 +41,6 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
-from fuzzynav.errors import InputError
 from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
 from fuzzynav.kernels.records import Robots, Traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -145,10 +144,6 @@ class BatchSimulator:
         self._noisy = self.sensors.noise_std > 0
         self._set_traffic(scenario.world)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
-        if not self.plant.in_kernel and not self.imperfections.off:
-            raise InputError(f"the robot's imperfections (robot.sensor_noise, actuation, odometry) are simulated by "
-                             f"the kinematic plant only, not by the {plant} plant", source=scenario.name,
-                             field="robot")
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
         self._compiled = copies[0].compiled if compiled else None
         self.reset()
@@ -181,6 +176,8 @@ class BatchSimulator:
                                           self._imperfect)
         if not self.plant.in_kernel:
             self.plant.reset(self._state, self._ranges, self.active)
+            if self._imperfect is not None:
+                imperfect.plant_sense(self._imperfect, self._ranges, self.active, self.sensors.max_range)
         self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
@@ -348,15 +345,23 @@ class BatchSimulator:
     def _plant_step(self, offsets) -> None:
         """The step of a plant outside the compiled step: act and clip (compiled), the plant
         moves the running robots, then the stop tests and sensing (compiled) and the plant's
-        readings."""
-        moved = self.active.copy()
+        readings; the robot's imperfections around the plant (:mod:`fuzzynav.kernels.imperfect`)."""
+        moved, real = self.active.copy(), self._imperfect
         step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
                          Traffic(self._base, self._movers, offsets, self._scene), self.k,
-                         Robots(self._state, self._ranges, self._status, False), None)
+                         Robots(self._state, self._ranges, self._status, False), real)
+        if real is not None:
+            imperfect.plant_commands(real, self.k, self._state, moved, self._setup, step_kernel.STEERING,
+                                     step_kernel.SPEED)
+            before = self._state[:, step_kernel.X:step_kernel.THETA + 1].copy()
         self.plant.move(self._state, moved)
+        if real is not None:
+            imperfect.plant_moved(real, before, self._state, moved)
         self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
                                                  self._status, moved)
         self.plant.sense(self._state, self._ranges, self.active)
+        if real is not None:
+            imperfect.plant_sense(real, self._ranges, self.active, self.sensors.max_range)
 
     def _add_noise(self, rows) -> None:
         add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
