@@ -33,6 +33,20 @@ MEMORY_FIELDS = ("applied_steering", "applied_speed", "error_x", "error_y", "dri
 APPLIED_STEERING, APPLIED_SPEED, ERROR_X, ERROR_Y, DRIFT_ANGLE = range(len(MEMORY_FIELDS))
 
 
+def record(imperfections, dt: float, n: int, seed: np.random.SeedSequence):
+    """The ``imperfect`` record of ``n`` robots for an
+    :class:`~fuzzynav.robot.imperfections.Imperfections`, every draw from ``seed``; ``None`` for
+    the perfect robot."""
+    if imperfections.off:
+        return None
+    params = imperfections.array(dt)
+    rng = np.random.default_rng(seed)
+    memory = np.zeros((n, len(MEMORY_FIELDS)))
+    memory[:, DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
+    queue = np.zeros((n, max(int(params[DELAY]), 1), 2))
+    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
+
+
 @jit
 def uniform(rng, n):
     """The next number in [0, 1) of robot ``n``'s stream (SplitMix64)."""

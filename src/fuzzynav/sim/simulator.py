@@ -44,7 +44,7 @@ from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedFo
 from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
 from fuzzynav.kernels.records import Robots, Traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
-from fuzzynav.robot.imperfections import Imperfections
+from fuzzynav.robot.imperfections import with_ring_noise
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
@@ -63,7 +63,6 @@ from fuzzynav.sim.trace import Trace
 from fuzzynav.world import moving
 from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
-from fuzzynav.world.world import add_noise
 
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
@@ -71,19 +70,6 @@ _CHECK_EVERY = 32
 _OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
 _STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout", INVALID_COMMAND: "invalid_command"}
-
-
-def imperfect_record(imperfections: Imperfections, dt: float, n: int, seed: np.random.SeedSequence):
-    """The compiled step's ``imperfect`` record (:mod:`fuzzynav.kernels.imperfect`) of ``n``
-    robots, every draw from ``seed``; ``None`` for the perfect robot."""
-    if imperfections.off:
-        return None
-    params = imperfections.array(dt)
-    rng = np.random.default_rng(seed)
-    memory = np.zeros((n, len(imperfect.MEMORY_FIELDS)))
-    memory[:, imperfect.DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
-    queue = np.zeros((n, max(int(params[imperfect.DELAY]), 1), 2))
-    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
 
 
 def default_ring(scenario: Scenario, controller) -> SensorRing:
@@ -123,7 +109,6 @@ class BatchSimulator:
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
-        self.imperfections = scenario.imperfections
         if listed is None:
             self.batch = callable(getattr(controller, "act_batch", None))
             copies = [controller] if self.batch or self.n == 1 else [copy.deepcopy(controller) for _ in range(self.n)]
@@ -141,7 +126,7 @@ class BatchSimulator:
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
-        self._noisy = self.sensors.noise_std > 0
+        self.imperfections = with_ring_noise(scenario.imperfections, self.sensors.noise_std)
         self._set_traffic(scenario.world)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
@@ -155,7 +140,7 @@ class BatchSimulator:
         self.rng = np.random.default_rng(seeds[0])
         for controller, child in zip(self.controllers, seeds[1:-1]):
             controller.reset(np.random.default_rng(child))
-        self._imperfect = imperfect_record(self.imperfections, self.params.dt, self.n, seeds[-1])
+        self._imperfect = imperfect.record(self.imperfections, self.params.dt, self.n, seeds[-1])
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
                            else step_kernel.idle_arguments())
         self._layer_params = self._navigator[-2]  # its GROW flag: a layer's arrays need room
@@ -178,7 +163,6 @@ class BatchSimulator:
             self.plant.reset(self._state, self._ranges, self.active)
             if self._imperfect is not None:
                 imperfect.plant_sense(self._imperfect, self._ranges, self.active, self.sensors.max_range)
-        self._add_noise(np.ones(self.n, dtype=bool))
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
         self._record_state()
@@ -296,7 +280,6 @@ class BatchSimulator:
 
     def step(self) -> None:
         """One step of every running robot (the new observation is :attr:`observation`)."""
-        running = self.active if self._noisy else None
         labels = None if self._compiled is not None else self._act(self.observation)
         moving = self._movers.shape[0]
         if moving:
@@ -325,8 +308,6 @@ class BatchSimulator:
                                                 self._mover_of_column, self.params.radius)
         if self._layer_params[layers.GROW]:  # the navigator makes room (the parameter array stays the same)
             self._navigator = self._compiled(self.n, self.sensors.angles)
-        if running is not None:
-            self._add_noise(running)
         if self.record:
             self._history["behaviour"].append(labels)
             self._record_state()
@@ -362,9 +343,6 @@ class BatchSimulator:
         self.plant.sense(self._state, self._ranges, self.active)
         if real is not None:
             imperfect.plant_sense(real, self._ranges, self.active, self.sensors.max_range)
-
-    def _add_noise(self, rows) -> None:
-        add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
 
     def _record_state(self) -> None:
         if self.record:
