@@ -7,7 +7,9 @@ Every run is one episode (seed 0) of a navigator on a world with one key set, as
 ``fuzzynav bench SUITE --perturb KEY=VALUE`` runs it. Rows go to ``OUT/runs.jsonl`` as they
 finish (a run already there is skipped: an interrupted sweep resumes); at the end
 ``OUT/table.md`` (success / collision % per navigator, suite and condition) and
-``OUT/robustness-SUITE.png`` (success and collisions against each key).
+``OUT/robustness-SUITE.png`` (success and collisions against each key). The runs go world by
+world, so a sweep stopped early (``--tables-only`` then writes the table and plots of what is
+done) has every condition and navigator on the same first worlds.
 
 Usage::
 
@@ -121,6 +123,7 @@ def main() -> None:
     parser.add_argument("--out", required=True)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--quick", action="store_true", help="two levels per key (the middle and the largest)")
+    parser.add_argument("--tables-only", action="store_true", help="no runs: the table and plots of the runs done")
     args = parser.parse_args()
     from fuzzynav.bench.suites import parse_suite
 
@@ -133,11 +136,15 @@ def main() -> None:
     rows = [json.loads(line) for line in done_file.read_text().splitlines() if line.strip()] \
         if done_file.exists() else []
     done = {key(r) for r in rows}
+    # world by world (the suites in turn): a sweep stopped early has every condition on its first worlds
     tasks = [(spec, index, name, perturbations, navigator)
-             for spec, suite in zip(args.suites, suites) for name, perturbations in chosen
-             for index in range(suite.size) for navigator in navigators
+             for index in range(max(suite.size for suite in suites))
+             for spec, suite in zip(args.suites, suites) if index < suite.size
+             for name, perturbations in chosen for navigator in navigators
              if (suite.name, suite.world_name(index, 0), name, navigator) not in done]
     print(f"{len(tasks)} runs to do, {len(rows)} done", flush=True)
+    if args.tables_only:
+        tasks = []
     with open(done_file, "a", encoding="utf-8") as stream, multiprocessing.Pool(args.workers) as pool:
         for row in pool.imap_unordered(run, tasks):
             stream.write(json.dumps(row) + "\n")

@@ -163,3 +163,13 @@ def test_bench_perturb_is_recorded_and_checked_on_resume(tmp_path, capsys):
         assert main(["bench", "circles:1", "--controllers", "dwa", "--out", str(tmp_path / "o"),
                      "--perturb", bad]) == 2
         assert "--perturb" in capsys.readouterr().err
+
+
+def test_a_rings_noise_std_is_the_one_range_noise_model():
+    ring = named_ring("lidar")
+    noisy_ring = dataclasses.replace(ring, noise_std=0.03)
+    by_ring = BatchSimulator(load_scenario("fig-IV-22a"), ConstantController(), sensors=noisy_ring, seed=3)
+    by_key = BatchSimulator(dataclasses.replace(load_scenario("fig-IV-22a"), imperfections=Imperfections(
+        range_sigma=0.03)), ConstantController(), sensors=ring, seed=3)
+    np.testing.assert_array_equal(by_ring._ranges, by_key._ranges)
+    assert np.all(by_ring._ranges[0][by_ring._ranges[0] > 3.99] == ring.max_range)  # no echo: no noise

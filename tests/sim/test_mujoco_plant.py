@@ -111,3 +111,66 @@ def test_evaluate_runs_on_the_mujoco_plant_and_says_so(capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["plant"] == "mujoco" and len(result["episodes"]) == 1
     assert result["success_rate"] + result["collision_rate"] + result["timeout_rate"] == pytest.approx(1.0)
+
+
+def _mujoco_drive(imperfections, steering=0.0, speed=0.5, max_time=4.0, seed=0, sensors=None):
+    import dataclasses
+
+    scenario = dataclasses.replace(open_world(max_time), imperfections=imperfections)
+    sim = BatchSimulator(scenario, ConstantCommand(steering, speed), robot_params=EXACT, plant="mujoco", seed=seed,
+                         sensors=sensors)
+    return sim.run().trace(0), sim
+
+
+def test_the_imperfections_apply_on_the_mujoco_plant_latency_slip_and_drift():
+    from fuzzynav.robot.imperfections import NONE, Imperfections
+
+    perfect, _ = _mujoco_drive(NONE)
+    late, _ = _mujoco_drive(Imperfections(latency=0.5))
+    assert np.all(late.speed[:5] == 0.0) and np.all(late.speed[5:] == 0.5)  # the queue: 5 steps of Δt
+    assert abs(late.pose[4, 0] - 10.0) < 1e-3 < perfect.pose[4, 0] - 10.0
+    slipping, _ = _mujoco_drive(Imperfections(slip=0.2))
+    ratio = (slipping.pose[-1, 0] - 10.0) / (perfect.pose[-1, 0] - 10.0)
+    assert 0.7 < ratio < 0.9  # the wheels' set points lose 20 % on average
+    trace, sim = _mujoco_drive(Imperfections(drift=0.05))
+    np.testing.assert_array_equal(trace.pose, perfect.pose)  # the true pose moves as the perfect one
+    believed = sim.observation.pose[0]
+    driven = np.hypot(*np.diff(trace.pose[:, :2], axis=0).T).sum()
+    assert np.hypot(*(believed[:2] - trace.pose[-1, :2])) == pytest.approx(0.05 * driven, rel=0.01)
+
+
+def test_range_noise_and_dropout_apply_to_the_mujoco_readings():
+    from fuzzynav.robot.imperfections import NONE, Imperfections
+
+    obstacles = [{"wall": {"start": [12, 6], "end": [12, 14], "thickness": 0.2}}]
+
+    def first_ranges(imperfections, seed):
+        import dataclasses
+
+        scenario = dataclasses.replace(open_world(1.0, obstacles), imperfections=imperfections)
+        sim = BatchSimulator(scenario, ConstantCommand(0.0, 0.0), plant="mujoco", seed=seed,
+                             sensors=named_ring("lidar", max_range=4.0))
+        return sim.observation.ranges[0]
+
+    exact = first_ranges(NONE, 0)
+    seen = exact < 4.0
+    assert seen.sum() > 50
+    errors = np.concatenate([first_ranges(Imperfections(range_sigma=0.05), seed)[seen] - exact[seen]
+                             for seed in range(5)])
+    assert abs(errors.mean()) < 0.01 and errors.std() == pytest.approx(0.05, rel=0.15)
+    dropped = first_ranges(Imperfections(dropout=0.3), 0)
+    assert np.all(dropped[~seen] == 4.0) and 0.15 < np.mean(dropped[seen] == 4.0) < 0.45
+
+
+@pytest.mark.slow
+def test_the_default_navigator_copes_with_the_five_imperfections_on_the_mujoco_plant():
+    import dataclasses
+
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.robot.imperfections import Imperfections
+    from fuzzynav.world.scenario import load_scenario
+
+    real = Imperfections(range_sigma=0.02, dropout=0.01, latency=0.1, slip=0.05, drift=0.01)
+    scenario = dataclasses.replace(load_scenario("fig-IV-22a"), imperfections=real)
+    trace = run_episode(scenario, make_controller("fuzzy-5b"), seed=0, plant="mujoco")
+    assert trace.outcome == "reached"

@@ -11,6 +11,10 @@ They travel as one record, ``imperfect = (params, memory, queue, rng)``:
 - ``rng`` (N,) uint64: each robot's random stream (SplitMix64, Steele, Lea & Flood 2014), seeded
   from the episode's seed.
 
+A plant outside the compiled step (:mod:`fuzzynav.sim.plants`) gets the same imperfections around
+it (``plant_*``): the queue, limits and slip on the set points it is given, the drift on the
+distance it drove, the noise and dropout on its readings.
+
 The step passes ``None`` for a perfect robot: numba then compiles none of this, and the step is
 the one without imperfections, bit for bit.
 """
@@ -27,6 +31,20 @@ from fuzzynav.kernels.motion import DT, advance
 RANGE_SIGMA, DROPOUT, REACH, DELAY, STEERING_RATE, ACCELERATION, SLIP, DRIFT = range(8)
 MEMORY_FIELDS = ("applied_steering", "applied_speed", "error_x", "error_y", "drift_angle")
 APPLIED_STEERING, APPLIED_SPEED, ERROR_X, ERROR_Y, DRIFT_ANGLE = range(len(MEMORY_FIELDS))
+
+
+def record(imperfections, dt: float, n: int, seed: np.random.SeedSequence):
+    """The ``imperfect`` record of ``n`` robots for an
+    :class:`~fuzzynav.robot.imperfections.Imperfections`, every draw from ``seed``; ``None`` for
+    the perfect robot."""
+    if imperfections.off:
+        return None
+    params = imperfections.array(dt)
+    rng = np.random.default_rng(seed)
+    memory = np.zeros((n, len(MEMORY_FIELDS)))
+    memory[:, DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
+    queue = np.zeros((n, max(int(params[DELAY]), 1), 2))
+    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
 
 
 @jit
@@ -94,19 +112,62 @@ def actuate(imperfect, n, steering, speed, k, robot):
 
 
 @jit
-def move(imperfect, n, x, y, theta, steering, speed, robot):
-    """Robot ``n``'s pose after one step under the applied (α, V), losing a random part of its
-    speed and heading rate (slip); the odometry's error grows by ``drift`` times the distance
-    driven, in the drift's direction."""
-    params, memory, _, rng = imperfect
+def slipped(imperfect, n, steering, speed):
+    """The applied (α, V) after the slip: a random part of the speed and of the heading rate lost."""
+    params, _, _, rng = imperfect
     if params[SLIP] > 0.0:
         speed_kept = 1.0 - 2.0 * params[SLIP] * uniform(rng, n)
         turn_kept = 1.0 - 2.0 * params[SLIP] * uniform(rng, n)
         steering = math.atan(math.tan(steering) * turn_kept / speed_kept)  # ω = V tan α / l loses turn_kept
         speed *= speed_kept
-    new_x, new_y, new_theta = advance(x, y, theta, steering, speed, robot)
+    return steering, speed
+
+
+@jit
+def drift(imperfect, n, x, y, theta, new_x, new_y):
+    """The odometry's error of robot ``n`` grows by ``drift`` times the distance it drove from
+    (x, y) to (new_x, new_y), in the drift's direction in its frame (heading θ before the step)."""
+    params, memory, _, _ = imperfect
     if params[DRIFT] > 0.0:
         error = params[DRIFT] * math.hypot(new_x - x, new_y - y)
         memory[n, ERROR_X] += error * math.cos(theta + memory[n, DRIFT_ANGLE])
         memory[n, ERROR_Y] += error * math.sin(theta + memory[n, DRIFT_ANGLE])
+
+
+@jit
+def move(imperfect, n, x, y, theta, steering, speed, robot):
+    """Robot ``n``'s pose after one step under the applied (α, V), with the slip
+    (:func:`slipped`); the odometry's error grows (:func:`drift`)."""
+    steering, speed = slipped(imperfect, n, steering, speed)
+    new_x, new_y, new_theta = advance(x, y, theta, steering, speed, robot)
+    drift(imperfect, n, x, y, theta, new_x, new_y)
     return new_x, new_y, new_theta
+
+
+# -- another plant (fuzzynav.sim.plants) moves the robots: the same imperfections around it ------
+@jit
+def plant_commands(imperfect, k, state, rows, robot, steering_column, speed_column):
+    """The set points another plant is given at step ``k``, written over the clipped commands in
+    ``state`` of the ``rows`` it moves: through the queue and rate limits (:func:`actuate`), then
+    the slip (:func:`slipped`), a loss of the set points of the steering servo and wheel speeds."""
+    for n in range(state.shape[0]):
+        if rows[n]:
+            steering, speed = actuate(imperfect, n, state[n, steering_column], state[n, speed_column], k, robot)
+            state[n, steering_column], state[n, speed_column] = slipped(imperfect, n, steering, speed)
+
+
+@jit
+def plant_moved(imperfect, before, state, rows):
+    """The odometry's error after another plant moved the ``rows`` from the poses ``before``
+    (N, 3) to those of ``state`` (x, y first): :func:`drift` on the distance it really drove."""
+    for n in range(state.shape[0]):
+        if rows[n] and math.isfinite(state[n, 0]) and math.isfinite(state[n, 1]):
+            drift(imperfect, n, before[n, 0], before[n, 1], before[n, 2], state[n, 0], state[n, 1])
+
+
+@jit
+def plant_sense(imperfect, ranges, rows, max_range):
+    """Another plant's readings of the ``rows`` as the real sensor reads them (:func:`sense`)."""
+    for n in range(ranges.shape[0]):
+        if rows[n]:
+            sense(imperfect, n, ranges[n], max_range)

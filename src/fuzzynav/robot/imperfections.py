@@ -116,6 +116,15 @@ def perturbed(imperfections: Imperfections, key: str, value, source=None) -> Imp
     return replace(imperfections, **{name: _value(value, source, key, name)})
 
 
+def with_ring_noise(imperfections: Imperfections, noise_std: float) -> Imperfections:
+    """``imperfections`` with a sensor ring's own Gaussian noise
+    (:attr:`fuzzynav.robot.sensors.SensorRing.noise_std`) added to ``range_sigma``: one noise
+    model, two independent Gaussian noises adding in quadrature."""
+    if noise_std <= 0.0:
+        return imperfections
+    return replace(imperfections, range_sigma=math.hypot(imperfections.range_sigma, noise_std))
+
+
 def describe(imperfections: Imperfections) -> str:
     """One line of the keys that are on, e.g. ``range_sigma=0.02, latency=0.1`` (``none``)."""
     on = [f"{f.name}={getattr(imperfections, f.name):g}" for f in fields(imperfections)

@@ -38,8 +38,10 @@ THESIS_SENSOR_NAMES = ("C1", "C2", "C3", "C4", "C5", "C6", "C7")
 class SensorRing:
     """A ring of range sensors: directions relative to the heading, range, optional noise.
 
-    ``noise_std`` (m) adds zero-mean Gaussian noise drawn from the generator passed to
-    :meth:`read`; readings stay within [0, max_range].
+    ``noise_std`` (m) is Gaussian noise of the real sensor's model
+    (:mod:`fuzzynav.robot.imperfections`, ``range_sigma``: an echo gets the noise, kept within
+    [0, max_range]; no echo stays at the reach), drawn from the generator passed to :meth:`read`;
+    the simulator adds it to the scenario's ``range_sigma``.
     """
 
     angles: np.ndarray = field(default_factory=lambda: THESIS_SENSOR_ANGLES.copy())
@@ -66,8 +68,17 @@ class SensorRing:
     def read(self, world, poses, rng: np.random.Generator | None = None) -> np.ndarray:
         """Readings ``(N, S)`` for poses ``(N, 3)`` in ``world`` (a :class:`fuzzynav.world.World`);
         a noisy ring needs ``rng``."""
-        return world.ranges(poses, self.angles, self.max_range, noise_std=self.noise_std, rng=rng,
-                            beam_width=self.beam_width)
+        readings = world.ranges(poses, self.angles, self.max_range, beam_width=self.beam_width)
+        if self.noise_std > 0.0:
+            from fuzzynav.kernels import imperfect
+            from fuzzynav.robot.imperfections import Imperfections
+
+            if not isinstance(rng, np.random.Generator):
+                raise ValueError("noisy ranges need an explicit numpy.random.Generator (rng)")
+            real = imperfect.record(Imperfections(range_sigma=self.noise_std), 1.0, len(readings),
+                                    np.random.SeedSequence(int(rng.integers(2**63))))
+            imperfect.plant_sense(real, readings, np.ones(len(readings), dtype=bool), self.max_range)
+        return readings
 
 
 LIDAR_ANGLES = np.deg2rad(np.arange(-135.0, 135.5, 1.0))

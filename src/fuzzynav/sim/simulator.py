@@ -41,11 +41,10 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
-from fuzzynav.errors import InputError
 from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
 from fuzzynav.kernels.records import Robots, Traffic
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
-from fuzzynav.robot.imperfections import Imperfections
+from fuzzynav.robot.imperfections import with_ring_noise
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
@@ -64,7 +63,6 @@ from fuzzynav.sim.trace import Trace
 from fuzzynav.world import moving
 from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
-from fuzzynav.world.world import add_noise
 
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
@@ -72,19 +70,6 @@ _CHECK_EVERY = 32
 _OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
 _STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout", INVALID_COMMAND: "invalid_command"}
-
-
-def imperfect_record(imperfections: Imperfections, dt: float, n: int, seed: np.random.SeedSequence):
-    """The compiled step's ``imperfect`` record (:mod:`fuzzynav.kernels.imperfect`) of ``n``
-    robots, every draw from ``seed``; ``None`` for the perfect robot."""
-    if imperfections.off:
-        return None
-    params = imperfections.array(dt)
-    rng = np.random.default_rng(seed)
-    memory = np.zeros((n, len(imperfect.MEMORY_FIELDS)))
-    memory[:, imperfect.DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
-    queue = np.zeros((n, max(int(params[imperfect.DELAY]), 1), 2))
-    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
 
 
 def default_ring(scenario: Scenario, controller) -> SensorRing:
@@ -124,7 +109,6 @@ class BatchSimulator:
         self.max_steps = max(1, math.ceil(self.max_time / self.params.dt - 1e-9))
         self.seed = seed
         self.record = record
-        self.imperfections = scenario.imperfections
         if listed is None:
             self.batch = callable(getattr(controller, "act_batch", None))
             copies = [controller] if self.batch or self.n == 1 else [copy.deepcopy(controller) for _ in range(self.n)]
@@ -142,13 +126,9 @@ class BatchSimulator:
         self.task = TaskState(scenario, self.n)
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
-        self._noisy = self.sensors.noise_std > 0
+        self.imperfections = with_ring_noise(scenario.imperfections, self.sensors.noise_std)
         self._set_traffic(scenario.world)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
-        if not self.plant.in_kernel and not self.imperfections.off:
-            raise InputError(f"the robot's imperfections (robot.sensor_noise, actuation, odometry) are simulated by "
-                             f"the kinematic plant only, not by the {plant} plant", source=scenario.name,
-                             field="robot")
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
         self._compiled = copies[0].compiled if compiled else None
         self.reset()
@@ -160,7 +140,7 @@ class BatchSimulator:
         self.rng = np.random.default_rng(seeds[0])
         for controller, child in zip(self.controllers, seeds[1:-1]):
             controller.reset(np.random.default_rng(child))
-        self._imperfect = imperfect_record(self.imperfections, self.params.dt, self.n, seeds[-1])
+        self._imperfect = imperfect.record(self.imperfections, self.params.dt, self.n, seeds[-1])
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
                            else step_kernel.idle_arguments())
         self._layer_params = self._navigator[-2]  # its GROW flag: a layer's arrays need room
@@ -181,7 +161,8 @@ class BatchSimulator:
                                           self._imperfect)
         if not self.plant.in_kernel:
             self.plant.reset(self._state, self._ranges, self.active)
-        self._add_noise(np.ones(self.n, dtype=bool))
+            if self._imperfect is not None:
+                imperfect.plant_sense(self._imperfect, self._ranges, self.active, self.sensors.max_range)
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
         self._record_state()
@@ -299,7 +280,6 @@ class BatchSimulator:
 
     def step(self) -> None:
         """One step of every running robot (the new observation is :attr:`observation`)."""
-        running = self.active if self._noisy else None
         labels = None if self._compiled is not None else self._act(self.observation)
         moving = self._movers.shape[0]
         if moving:
@@ -328,8 +308,6 @@ class BatchSimulator:
                                                 self._mover_of_column, self.params.radius)
         if self._layer_params[layers.GROW]:  # the navigator makes room (the parameter array stays the same)
             self._navigator = self._compiled(self.n, self.sensors.angles)
-        if running is not None:
-            self._add_noise(running)
         if self.record:
             self._history["behaviour"].append(labels)
             self._record_state()
@@ -348,18 +326,23 @@ class BatchSimulator:
     def _plant_step(self, offsets) -> None:
         """The step of a plant outside the compiled step: act and clip (compiled), the plant
         moves the running robots, then the stop tests and sensing (compiled) and the plant's
-        readings."""
-        moved = self.active.copy()
+        readings; the robot's imperfections around the plant (:mod:`fuzzynav.kernels.imperfect`)."""
+        moved, real = self.active.copy(), self._imperfect
         step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
                          Traffic(self._base, self._movers, offsets, self._scene), self.k,
-                         Robots(self._state, self._ranges, self._status, False), None)
+                         Robots(self._state, self._ranges, self._status, False), real)
+        if real is not None:
+            imperfect.plant_commands(real, self.k, self._state, moved, self._setup, step_kernel.STEERING,
+                                     step_kernel.SPEED)
+            before = self._state[:, step_kernel.X:step_kernel.THETA + 1].copy()
         self.plant.move(self._state, moved)
+        if real is not None:
+            imperfect.plant_moved(real, before, self._state, moved)
         self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
                                                  self._status, moved)
         self.plant.sense(self._state, self._ranges, self.active)
-
-    def _add_noise(self, rows) -> None:
-        add_noise(self._ranges, self.sensors.max_range, self.sensors.noise_std, self.rng, rows)
+        if real is not None:
+            imperfect.plant_sense(real, self._ranges, self.active, self.sensors.max_range)
 
     def _record_state(self) -> None:
         if self.record:

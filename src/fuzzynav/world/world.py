@@ -135,13 +135,11 @@ class World:
         return self.boundary_distance(points) >= 0.0
 
     # -- range sensors -----------------------------------------------------------------------
-    def ranges(self, poses, angles, max_range: float, noise_std: float = 0.0, rng: np.random.Generator | None = None,
-               beam_width: float = 0.0):
+    def ranges(self, poses, angles, max_range: float, beam_width: float = 0.0):
         """Range readings ``(N, S)``: rays from each pose's (x, y) at heading θ + angle, cast
         against every obstacle and the boundary, capped at ``max_range`` (thesis §IV.7).
 
-        ``noise_std`` > 0 adds Gaussian noise from ``rng`` (required then), clipped to
-        [0, max_range]. A ray starting inside an obstacle measures the distance to its surface.
+        A ray starting inside an obstacle measures the distance to its surface.
         ``beam_width`` > 0 (rad) reads the nearest echo inside each sensor's cone instead
         (:mod:`fuzzynav.kernels.beams`).
         """
@@ -151,7 +149,7 @@ class World:
         angles = np.ascontiguousarray(np.asarray(angles, dtype=float).reshape(-1))
         readings = np.empty((len(poses), len(angles)))
         beams.read(self.scene, poses, angles, 0.5 * float(beam_width), float(max_range), readings)
-        return add_noise(readings, max_range, noise_std, rng)
+        return readings
 
 
 def _kernel_columns(obstacles) -> tuple[dict, np.ndarray]:
@@ -160,16 +158,3 @@ def _kernel_columns(obstacles) -> tuple[dict, np.ndarray]:
     columns = {primitive: [i for i, s in enumerate(obstacles) if s.primitive == primitive]
                for primitive in layout.PRIMITIVES}
     return columns, np.array([i for primitive in layout.PRIMITIVES for i in columns[primitive]] + [-1], dtype=int)
-
-
-def add_noise(readings, max_range, noise_std, rng, rows=None):
-    """Readings plus Gaussian noise of ``noise_std`` from ``rng`` (drawn for every reading), clipped
-    to [0, max_range]; with ``rows`` (bool (N,)) only those rows change, in place."""
-    if noise_std > 0.0:
-        if rng is None:
-            raise ValueError("noisy ranges need an explicit numpy.random.Generator (rng)")
-        noisy = np.clip(readings + rng.normal(0.0, noise_std, readings.shape), 0.0, max_range)
-        if rows is None:
-            return noisy
-        readings[rows] = noisy[rows]
-    return readings
