@@ -37,6 +37,7 @@ def test_eval_iv_quick(tmp_path, spoiled):
     assert {"fuzzy-2b-layered/circles", "fuzzy-5b-layered/mixed"} <= set(result)
     assert result["fuzzy-2b-thesis/circles"]["success_rate"] >= 0.8
     assert result["fuzzy-5b-thesis/mixed"]["success_rate"] >= 0.7
+    assert spec("eval-IV").claim.evaluate(result)[0] == "reproduced"
     verdict, checks = spec("eval-IV").claim.evaluate(spoiled(result))  # rates r -> 1 - r
     assert verdict == "not reproduced" and len(checks) == 6
 
