@@ -21,6 +21,7 @@ trained models; a validation RMSE over 1e-3 rad (the scale of Figs V.15 / V.23) 
     PYTHONPATH=src python benchmarks/mutations.py --roles tracker      # one role
     PYTHONPATH=src python benchmarks/mutations.py --roles neural-tracker anfis-tracker   # the models
     PYTHONPATH=src python benchmarks/mutations.py --every-cell         # every cell's sign, one by one
+    PYTHONPATH=src python benchmarks/mutations.py --learning           # Figs VI.24, VI.29 (FQL trains first)
     PYTHONPATH=src python benchmarks/mutations.py --write-references   # store the published runs
 
 ``--write-references`` runs the experiments with the published tables and stores what their
@@ -49,6 +50,8 @@ REACHES = {"gsb": CHAPTER_IV, "oab": ("fig-IV-15", "eval-IV"),
            "wall": ("fig-VI-28",),
            "tracker": ("fig-V-7", "fig-V-10", "fig-V-11", "fig-V-28", "fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32",
                        "fig-V-33", "fig-V-34")}
+# the figures that train an FQL controller first (--quick setting), then run a published table beside it
+LEARNING_REACHES = {"gsb": ("fig-VI-24",), "oab": ("fig-VI-24",), "wall": ("fig-VI-29",)}
 # the learned trackers' models (CN, CNF: no rule table) reach their training figure and their runs
 PURSUITS = ("fig-V-28", "fig-V-29", "fig-V-30", "fig-V-31", "fig-V-32", "fig-V-33", "fig-V-34")
 LEARNED_REACHES = {"neural-tracker": ("fig-V-15", "fig-V-18", "fig-V-19", *PURSUITS),
@@ -111,6 +114,14 @@ def run(ids, out: Path, systems: dict | None = None, models: dict | None = None)
     ({role: fuzzy system}) and ``models`` ({learned tracker: model document})."""
     with rule_bases.replaced(systems or {}), learned_models.replaced(models or {}):
         return {key: registry.experiment(key)(out / key, quick=True, seed=0) for key in ids}
+
+
+def run_mutated(role: str, document: dict, ids, out: Path) -> dict:
+    """The numbers of experiments ``ids`` with ``role``'s system replaced by ``document``, written
+    to a file and read back as ``fuzzynav reproduce ID --fis ROLE=FILE`` reads it."""
+    path = out / f"{role}.yaml"
+    path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
+    return run(ids, out, rule_bases.from_options([f"{role}={path}"]))
 
 
 def every_run(numbers: dict) -> dict:
@@ -182,12 +193,45 @@ def learned_rows(kind: str, out: Path, stored: dict):
         yield name, row, failed, significant
 
 
+def hand_made(numbers: dict) -> str:
+    """What the navigator of the published table did in Figs VI.24 / VI.29 (the FQL controller
+    beside it reads no edited table)."""
+    parts = []
+    for name, run in numbers.get("fig-VI-24", {}).items():
+        if name.startswith("fuzzy-2b-thesis"):
+            evaluation = run["evaluation"]
+            parts.append(f"fuzzy-2b-thesis: blocked world {run['outcome']}, {evaluation['success']:.0%} of "
+                         f"{evaluation['runs']} random worlds reached")
+    if "fig-VI-29" in numbers:
+        corners, evaluation = numbers["fig-VI-29"]["corners"], numbers["fig-VI-29"]["evaluation"]["wall-follow"]
+        parts.append(f"wall-follow: corners {', '.join(corners['wall-follow'].values())}; "
+                     f"{evaluation['collisions']} collisions on {evaluation['courses']} wall courses")
+    return "; ".join(parts)
+
+
+def learning_table(roles, every_cell: bool, out: Path) -> None:
+    """Print what each mutation of ``roles`` does to Figs VI.24 / VI.29 and which claims it fails."""
+    published = run(sorted({key for role in roles for key in LEARNING_REACHES[role]}), out)
+    print(f"published tables: claims not reproduced: {failing(published) or 'none'}; {hand_made(published)}\n")
+    print("| mutation | the published table's navigator | changed | claims failed |")
+    print("|---|---|---|---|")
+    for role in roles:
+        before = hand_made({key: published[key] for key in LEARNING_REACHES[role]})
+        for name, document in mutations(role, every_cell):
+            numbers = run_mutated(role, document, LEARNING_REACHES[role], out)
+            after = hand_made(numbers)
+            print(f"| {name} | {after} | {'yes' if after != before else 'no'} | {', '.join(failing(numbers)) or 'none'} |",
+                  flush=True)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     roles = [*REACHES, *LEARNED_REACHES]
     parser.add_argument("--roles", nargs="*", default=roles, choices=roles,
                         help="fuzzy roles (rule tables) and learned trackers (their models) to mutate")
     parser.add_argument("--every-cell", action="store_true", help="flip the sign of every steering cell, one at a time")
+    parser.add_argument("--learning", action="store_true",
+                        help="run the chapter VI figures that train FQL first (Figs VI.24, VI.29) instead")
     parser.add_argument("--write-references", action="store_true")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
@@ -196,20 +240,21 @@ def main() -> None:
             print(f"wrote {write_references(out)}")
             return
         caught: dict[str, list[str]] = {}
+        if args.learning:
+            learning_table([role for role in args.roles if role in LEARNING_REACHES], args.every_cell, out)
+            return
         reaches = {**REACHES, **LEARNED_REACHES}
         baseline = sorted({key for role in args.roles for key in reaches[role]})
         published = run(baseline, out)
         print(f"published tables, trained models: claims not reproduced: {failing(published) or 'none'}\n")
         misses = 0
-        tables = [role for role in args.roles if role in REACHES]
-        if tables:
+        roles = [role for role in args.roles if role in REACHES]
+        if roles:
             print("| mutation | route moved (m) | error / time change | significant | claims failed |")
             print("|---|---|---|---|---|")
-        for role in tables:
+        for role in roles:
             for name, document in mutations(role, args.every_cell):
-                path = out / f"{role}.yaml"
-                path.write_text(yaml.safe_dump(document, sort_keys=False, allow_unicode=True))
-                numbers = run(REACHES[role], out, rule_bases.from_options([f"{role}={path}"]))
+                numbers = run_mutated(role, document, REACHES[role], out)
                 failed = failing(numbers)
                 row, significant = _row(name, failed, *moved(numbers))
                 misses += significant and not failed

@@ -31,12 +31,15 @@ def test_fig_vi_28_wall_follower(tmp_path):
     assert result["fig-VI-28"]["outcome"] == "collision"
 
 
-def test_eval_iv_quick(tmp_path):
+def test_eval_iv_quick(tmp_path, spoiled):
     result = experiment("eval-IV")(tmp_path, True, 0)
     assert result["fuzzy-2b-thesis/circles"]["n"] == 10
     assert {"fuzzy-2b-layered/circles", "fuzzy-5b-layered/mixed"} <= set(result)
     assert result["fuzzy-2b-thesis/circles"]["success_rate"] >= 0.8
     assert result["fuzzy-5b-thesis/mixed"]["success_rate"] >= 0.7
+    assert spec("eval-IV").claim.evaluate(result)[0] == "reproduced"
+    verdict, checks = spec("eval-IV").claim.evaluate(spoiled(result))  # rates r -> 1 - r
+    assert verdict == "not reproduced" and len(checks) == 6
 
 
 @pytest.mark.parametrize("key", ["fig-IV-12", "fig-IV-13", "fig-IV-15", "fig-IV-22", "fig-IV-23", "fig-VI-28"])

@@ -20,18 +20,13 @@ def test_training_figures(tmp_path):
     assert (tmp_path / "fig-V-15.png").is_file() and (tmp_path / "fig-V-23.png").is_file()
 
 
-def test_fig_v_28_and_pursuit(tmp_path):
-    result = experiment("fig-V-28")(tmp_path, True, 0)
-    assert all(result[name]["completed"] for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker"))
-    for key in ("fig-V-29", "fig-V-30", "fig-V-31"):
-        result = experiment(key)(tmp_path, True, 0)
-        assert all(result[name]["captured"] for name in ("fuzzy-tracker", "neural-tracker", "anfis-tracker"))
-        assert (tmp_path / f"{key}.png").is_file()
-
-
-@pytest.mark.parametrize("key", ["fig-V-7", "fig-V-10", "fig-V-11", "fig-V-19", "fig-V-28", "fig-V-33"])
+# the pursuit claims check that CF, CN and CNF all capture, CN and CNF no later than CF (Figs V.32–V.34:
+# test_chapter5_figures.py)
+@pytest.mark.parametrize("key", ["fig-V-7", "fig-V-10", "fig-V-11", "fig-V-19", "fig-V-28", "fig-V-29", "fig-V-30",
+                                 "fig-V-31"])
 def test_each_claim_holds_with_the_published_table(tmp_path, key, spoiled):
     numbers = experiment(key)(tmp_path, True, 0)
     verdict, checks = spec(key).claim.evaluate(numbers)
     assert verdict == "reproduced", [c for c in checks if not c.passed]
     assert spec(key).claim.evaluate(spoiled(numbers))[0] != "reproduced"  # and it can fail
+    assert any(tmp_path.glob("*.png"))

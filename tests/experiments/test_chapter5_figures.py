@@ -2,7 +2,7 @@
 
 import pytest
 
-from fuzzynav.catalog.experiments import experiment
+from fuzzynav.catalog.experiments import experiment, spec
 
 pytestmark = pytest.mark.slow
 
@@ -33,12 +33,16 @@ def test_n_and_trapezoid_paths(tmp_path, key):
             assert result[path]["anticipation"]["max_cross_track_m"] < 0.7 * result[path]["thesis"]["max_cross_track_m"]
 
 
-def test_pursuit_extras(tmp_path):
+def test_pursuit_extras(tmp_path, spoiled):
     runs = {"fig-V-32": experiment("fig-V-32")(tmp_path, True, 0)}
     for key in ("fig-V-33", "fig-V-34"):
         result = experiment(key)(tmp_path, True, 0)
         runs.update({k: v for k, v in result.items() if k != "figure"})
         assert (tmp_path / f"{key}.png").is_file()
+        assert spec(key).claim.evaluate(result)[0] == "reproduced"
+        assert spec(key).claim.evaluate(spoiled(result))[0] != "reproduced"  # the claim can fail
+    assert spec("fig-V-32").claim.evaluate(runs["fig-V-32"])[0] == "reproduced"
+    assert spec("fig-V-32").claim.evaluate(spoiled(runs["fig-V-32"]))[0] != "reproduced"
     assert set(runs) == {"fig-V-32", "fig-V-33a", "fig-V-33b", "fig-V-34a", "fig-V-34b"}
     for name, result in runs.items():
         assert all(result[c]["captured"] for c in ("fuzzy-tracker", *LEARNED)), name

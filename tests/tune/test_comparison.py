@@ -1,22 +1,43 @@
 """``cmp-VI-tuning``: a short comparison runs every tuner and FQL on held-out worlds and its claim
-turns the numbers into checks (one success and one collision check per method)."""
+turns the numbers into checks (one success and one collision check per method); a rule base
+replaced by ``reproduce --fis`` is the hand-made start it compares with."""
 
 import pytest
 
 from fuzzynav.catalog.experiments import spec
-from fuzzynav.experiments.tuning import cmp_vi_tuning
+from fuzzynav.experiments import rule_bases
+from fuzzynav.experiments.tuning import cmp_vi_tuning, starts
+from fuzzynav.fuzzy.io.files import dumps, loads
+from fuzzynav.fuzzy.systems import get_system
+
+CELL = "IF drg IS Z AND theta IS NG THEN alpha IS "  # Table IV.1, row NG, first column: PM
+
+
+def _edited_table_iv_1():
+    text = dumps(get_system("goal-seeking"), "yaml")
+    assert f"{CELL}PM" in text
+    return loads(text.replace(f"{CELL}PM", f"{CELL}NM"), "yaml")
+
+
+def test_the_start_is_the_replaced_table_of_the_tuned_controller():
+    edited, wall = _edited_table_iv_1(), get_system("wall-follow")
+    assert starts("goal-seeking", "gsb")[1].rules == get_system("goal-seeking").rules
+    with rule_bases.replaced({"gsb": edited, "wall": wall}):
+        assert starts("fuzzy-2b", "oab")[0] == {"gsb": edited}  # the fixed role; wall is not fuzzy-2b's
+        assert starts("goal-seeking", "gsb") == ({"gsb": edited}, edited)
 
 
 @pytest.mark.slow
 def test_a_short_comparison_gives_every_method_its_held_out_numbers_and_checks(tmp_path):
-    numbers = cmp_vi_tuning(tmp_path, tasks=("goal",), seeds=1, episodes=400)
+    with rule_bases.replaced({"gsb": _edited_table_iv_1()}):  # as `reproduce cmp-VI-tuning --fis gsb=FILE`
+        numbers = cmp_vi_tuning(tmp_path, tasks=("goal",), seeds=1, episodes=400)
     rows = numbers["tasks"]["goal"]["rows"]
     assert set(rows) == {"hand-made", "ga", "pso", "aco", "fql"}
     for seeds in rows.values():
         assert 0.0 <= seeds[0]["success"] <= 1.0 and seeds[0]["collisions"] >= 0
     assert (tmp_path / "cmp-VI-tuning.png").stat().st_size > 0
     hand_made = numbers["tasks"]["goal"]["tables"]["hand-made"]
-    assert hand_made[1].split("|")[1].split() == ["PM/Z", "PG/F", "PM/F", "PM/F", "PM/F"]  # Table IV.1, row NG
+    assert hand_made[1].split("|")[1].split() == ["NM/Z", "PG/F", "PM/F", "PM/F", "PM/F"]  # the edited row NG
     verdict, checks = spec("cmp-VI-tuning").claim.evaluate(numbers)
     assert len(checks) == 2 * 4 and all(check.source == "package" for check in checks)
     assert verdict in ("reproduced", "partly", "not reproduced")

@@ -3,12 +3,15 @@ training worlds, a killed run resumed to the same end, the tuned file read back 
 ``fis convert`` and the C export, and bad options refused before any simulation."""
 
 import json
+import re
 
 import numpy as np
 import pytest
 
 from fuzzynav.cli import main
 from fuzzynav.fuzzy.io import load
+from fuzzynav.fuzzy.io.files import dumps, loads
+from fuzzynav.fuzzy.systems import get_system
 from fuzzynav.tune import session
 from fuzzynav.tune.fitness import Fitness
 from fuzzynav.tune.session import TuneRequest, tune
@@ -43,6 +46,16 @@ def test_aco_changes_only_rule_conclusions():
     start = session.check(TuneRequest(target="fuzzy-2b:oab", **SMALL))[1]
     assert result["system"].inputs == start.inputs and result["system"].outputs == start.outputs
     assert result["system"].rules != start.rules
+
+
+def test_replaced_systems_are_the_start_and_the_fixed_roles():
+    text = dumps(get_system("obstacle-avoidance"), "yaml")
+    zeroed = loads(re.sub(r"alpha IS \w+", "alpha IS Z", text), "yaml")  # Table IV.2 steering all Z
+    controller, start, _, _ = session.check(TuneRequest(target="fuzzy-2b:oab", systems={"oab": zeroed}, **SMALL))
+    assert start is zeroed and controller.systems["oab"] is zeroed
+    assert controller.systems["gsb"].rules == get_system("goal-seeking").rules  # the other role stays as published
+    with pytest.raises(session.InputError, match="no role wall"):
+        session.check(TuneRequest(target="fuzzy-2b:oab", systems={"wall": zeroed}, **SMALL))
 
 
 def test_nsga2_gives_a_front_of_non_dominated_files(tmp_path, capsys):

@@ -13,6 +13,12 @@ Tasks (each method gets the same number of episodes per seed):
   worlds written as scenario files (random start pose, goal ≥ 10 m away); FQL trains ``fql-goal``
   (§VI.5.1). Held out: 40 other such worlds.
 
+Under ``fuzzynav reproduce cmp-VI-tuning --fis ROLE=FILE`` the replaced tables
+(:mod:`fuzzynav.experiments.rule_bases`) stand in for the hand-made ones of the tuned controller —
+its held-out row, the tuners' start and the roles they keep fixed — so the comparison can be run
+from an edited table. FQL learns from q = 0 and reads none of them (the ``fql-avoid`` navigator
+keeps its own guarded Table IV.1 goal seeking, :class:`fuzzynav.control.learned.LearnedAvoidanceNavigator`).
+
 Every controller — the hand-made start, each tuned system (``--fis ROLE=FILE``), each FQL model
 (``--model``) — is then run on the held-out worlds by the ordinary simulator
 (:func:`fuzzynav.sim.run_episode`), not by the tuner's compiled loop. Reported per method and
@@ -31,8 +37,9 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+from fuzzynav.catalog.roles import default_system, make_with_systems, systems_from_options
 from fuzzynav.catalog.tasks import load_controller, trainer
+from fuzzynav.experiments import rule_bases
 from fuzzynav.fuzzy.io import load, save
 from fuzzynav.learn.tasks.common import TrainRequest
 from fuzzynav.sim import metrics, run_episode
@@ -84,23 +91,32 @@ def _suite(spec: str, work: Path) -> tuple[str, list]:
     return text, [suite.scenario(i, 0) for i in range(suite.size)]
 
 
+def starts(controller: str, role: str) -> tuple[dict, object]:
+    """(``{role: system}`` of ``controller`` replaced by ``--fis``, the start of the tuned ``role``):
+    the replacement, else the hand-made table."""
+    replaced = rule_bases.systems_for(controller)
+    return replaced, replaced[role] if role in replaced else default_system(controller, role)
+
+
 def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
     """One task: the hand-made start, each tuner and FQL for every seed of ``seeds``, on its held-out worlds."""
     task = TASKS[name]
     controller, role = task["target"].split(":")
+    replaced, start = starts(controller, role)
     worlds, _ = _suite(task["train"], out)
     holdout_spec, holdout = _suite(task["holdout"], out)
-    rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, {}))]}
+    rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, replaced))]}
     for method, what in task["methods"].items():
         rows[method] = []
         for seed in seeds:
             path = out / f"{name}-{method}-{seed}.yaml"
             started = time.perf_counter()
             result = tune(TuneRequest(target=task["target"], worlds=worlds, holdout=holdout_spec, what=what,
-                                      method=method, budget=episodes, seed=seed, out=str(path), progress=False))
+                                      method=method, budget=episodes, seed=seed, out=str(path), progress=False,
+                                      systems=replaced))
             seconds = time.perf_counter() - started
             save(result["system"], path)
-            systems = systems_from_options(controller, [f"{role}={path}"])
+            systems = {**replaced, **systems_from_options(controller, [f"{role}={path}"])}
             start_cost = result["start"]["training"]["cost"]
             beaten = next((n for n, cost in result["curve"] if cost < start_cost), None)
             rows[method].append({"seed": seed, **held_out(holdout, lambda systems=systems: make_with_systems(controller, systems)),
@@ -118,15 +134,13 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
                             "episodes_to_beat_start": None,
                             "converged_at": {k: v.get("converged_at") for k, v in trained.items() if isinstance(v, dict)}})
     return {"target": task["target"], "fql": task["fql"], "train": task["train"], "holdout": task["holdout"],
-            "episodes": episodes, "rows": rows, "tables": _tables(controller, role, rows)}
+            "episodes": episodes, "rows": rows, "tables": _tables(start, rows)}
 
 
-def _tables(controller: str, role: str, rows: dict) -> dict:
+def _tables(start, rows: dict) -> dict:
     """The rule grid (first input across, second down; cells joined by '/') of the hand-made
-    system and of each tuner's seed-0 file."""
-    from fuzzynav.catalog.roles import default_system
-
-    systems = {"hand-made": default_system(controller, role)}
+    system (or its ``--fis`` replacement) and of each tuner's seed-0 file."""
+    systems = {"hand-made": start}
     systems.update({method: load(seeds[0]["file"]) for method, seeds in rows.items()
                     if method not in ("hand-made", "fql") and seeds})
     return {label: _grid(system) for label, system in systems.items()}

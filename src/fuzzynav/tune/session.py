@@ -15,8 +15,10 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import asdict, dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -47,6 +49,9 @@ class TuneRequest:
     resume: bool = False
     curve: str | None = None
     progress: bool = True
+    # the controller's rule bases by role in place of its built-in ones: the tuned role's start and
+    # the fixed others (``fuzzynav reproduce cmp-VI-tuning --fis ROLE=FILE`` passes them)
+    systems: Mapping[str, Any] = field(default_factory=dict)
 
     @property
     def controller(self) -> str:
@@ -60,14 +65,13 @@ class TuneRequest:
         """The options a checkpoint must share with the run resuming it."""
         keys = ("target", "worlds", "what", "method", "seed", "population", "objectives")
         return {key: list(value) if isinstance(value, tuple) else value
-                for key, value in asdict(self).items() if key in keys}
+                for key, value in ((key, getattr(self, key)) for key in keys)}
 
 
 def check(request: TuneRequest):
     """Every option checked before any work; returns (controller, start system, suite, held-out suite)."""
     from fuzzynav.bench.suites import parse_suite
-    from fuzzynav.catalog.controllers import make_controller
-    from fuzzynav.catalog.roles import default_system
+    from fuzzynav.catalog.roles import default_system, make_with_systems, roles_of
     from fuzzynav.tune.space import SearchSpace
 
     controller, sep, role = request.target.partition(":")
@@ -78,6 +82,11 @@ def check(request: TuneRequest):
         system = default_system(controller, role)
     except InputError as error:
         raise InputError(error.problem, field="CONTROLLER:ROLE") from None
+    foreign = sorted(set(request.systems) - set(roles_of(controller)))
+    if foreign:
+        raise InputError(f"{controller} has no role {', '.join(foreign)} (its roles: {', '.join(roles_of(controller))})",
+                         field="--fis")
+    system = request.systems[role] if role in request.systems else system
     validation.choice(request.what, WHAT, field="--what")
     validation.choice(request.method, METHODS, field="--method")
     validation.integer(request.population, field="--population", lo=2, hi=10_000)
@@ -110,7 +119,7 @@ def check(request: TuneRequest):
                          f"{suite.size} worlds = {request.population * suite.size} episodes at least", field="--budget")
     holdout = parse_suite(request.holdout) if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
-    return make_controller(controller), system, suite, holdout
+    return make_with_systems(controller, dict(request.systems)), system, suite, holdout
 
 
 def checkpoint_path(request: TuneRequest) -> Path | None:
