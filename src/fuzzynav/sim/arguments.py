@@ -13,8 +13,15 @@ start poses at most ``validation.MAX_ROBOTS``.
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
+
 from fuzzynav import validation
+from fuzzynav.control.hooks import BringsSensors
 from fuzzynav.errors import InputError
+from fuzzynav.kernels import imperfect
+from fuzzynav.robot.imperfections import Imperfections
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.trace import Trace
@@ -87,3 +94,25 @@ def check_seed(seed) -> int | None:
 def check_robots(n) -> int:
     """``n``: the number of robots, in [1, ``MAX_ROBOTS``]."""
     return validation.count(n, field="n", hi=validation.MAX_ROBOTS)
+
+
+def imperfect_record(imperfections: Imperfections, dt: float, n: int, seed: np.random.SeedSequence):
+    """The compiled step's ``imperfect`` record (:mod:`fuzzynav.kernels.imperfect`) of ``n``
+    robots, every draw from ``seed``; ``None`` for the perfect robot."""
+    if imperfections.off:
+        return None
+    params = imperfections.array(dt)
+    rng = np.random.default_rng(seed)
+    memory = np.zeros((n, len(imperfect.MEMORY_FIELDS)))
+    memory[:, imperfect.DRIFT_ANGLE] = rng.uniform(-math.pi, math.pi, n)
+    queue = np.zeros((n, max(int(params[imperfect.DELAY]), 1), 2))
+    return params, memory, queue, rng.integers(0, 2**64, n, dtype=np.uint64)
+
+
+def default_ring(scenario: Scenario, controller) -> SensorRing:
+    """The ring of the scenario's ``sensors`` key, else the controller's own (``sensors``
+    attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
+    if scenario.sensors is not None:
+        return named_ring(scenario.sensors)
+    first = controller if is_controller(controller) else next(iter(controller))
+    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
