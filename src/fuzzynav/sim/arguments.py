@@ -115,4 +115,5 @@ def default_ring(scenario: Scenario, controller) -> SensorRing:
     if scenario.sensors is not None:
         return named_ring(scenario.sensors)
     first = controller if is_controller(controller) else next(iter(controller))
-    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
+    ring = first.sensors if isinstance(first, BringsSensors) else None
+    return ring if isinstance(ring, SensorRing) else SensorRing()

@@ -21,6 +21,7 @@ its own, where they are written at the robot's episode time before it moves,
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -44,14 +45,14 @@ class Fleet:
         self.worlds: list = [None] * self.n
         self._scenes: list = [None] * self.n  # each row's scene: its world's, or a copy when obstacles move
         self._setups: list = [None] * self.n
-        self.scenes = self.setups = np.zeros(0)
-        self.scene_bounds = self.setup_bounds = np.zeros((self.n, 2), dtype=np.int64)
+        self.scenes, self.scene_bounds = concatenate(self._scenes)  # filled by start
+        self.setups, self.setup_bounds = concatenate(self._setups)
 
     def setup(self, **task) -> np.ndarray:
         """A robot's set-up array: these robots and sensors, the task of :func:`task_fields`."""
         ring = self.sensors
-        sensing = {} if ring is None else {"max_range": ring.max_range, "angles": ring.angles,
-                                           "half_beam": 0.5 * float(ring.beam_width)}
+        sensing: dict[str, Any] = {} if ring is None else {
+            "max_range": ring.max_range, "angles": ring.angles, "half_beam": 0.5 * float(ring.beam_width)}
         return core.setup_array(self.params.array(), **sensing, **task_fields(**task))
 
     def start(self, rows, worlds, poses, setups, speed: float = 0.0) -> None:
@@ -164,7 +165,7 @@ class Fleet:
         return self.outcome == core.REACHED
 
 
-def task_fields(*, goal=None, tolerance: float = -math.inf, path=None, task: int = core.GOAL) -> dict:
+def task_fields(*, goal=None, tolerance: float = -math.inf, path=None, task: int = core.GOAL) -> dict[str, Any]:
     """The task's keywords of :func:`fuzzynav.kernels.step.setup_array`: the path task of
     ``path`` (a :class:`~fuzzynav.world.scenario.PathTask`: its waypoints, zone, constant speed
     and switching rule), else ``task`` (goal or target code) at ``goal`` (x, y) within
