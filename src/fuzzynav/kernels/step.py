@@ -170,12 +170,13 @@ def limit(setup, steering, speed):
 
 
 @jit
-def move(setup, scene_array, k, state, ranges, status, n, steering, speed, imperfect):
-    """Robot ``n`` driven one step Δt by its command (α, V) of :func:`limit`, ``k`` the step count
-    after it: the kinematics (eq IV.2, or the exact arc; with ``imperfect``, through the actuators
+def move(setup, scene_array, k, robots, n, steering, speed, imperfect):
+    """Robot ``n`` of ``robots`` (a :class:`~fuzzynav.kernels.records.Robots`) driven one step Δt
+    by its command (α, V) of :func:`limit`, ``k`` the step count after it: the kinematics (eq IV.2, or the exact arc; with ``imperfect``, through the actuators
     and with slip), the command applied written in its state, the step counted, then
     :func:`settle` — the one transition every stepping loop uses (:func:`step`,
     :func:`fuzzynav.kernels.worlds.step`)."""
+    state, ranges, status = robots.state, robots.ranges, robots.status
     row = state[n]
     if imperfect is None:
         row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
@@ -244,7 +245,7 @@ def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
         if not moves:  # another plant moves the robot (fuzzynav.sim.plants): decide and clip only
             row[STEERING], row[SPEED] = steering, speed
             continue
-        move(setup, scene_array, k, state, ranges, status, n, steering, speed, imperfect)
+        move(setup, scene_array, k, robots, n, steering, speed, imperfect)
         running += status[n, OUTCOME] == RUNNING
     return running
 

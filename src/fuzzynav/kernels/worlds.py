@@ -30,7 +30,7 @@ def step(scenes, scene_bounds, setups, setup_bounds, commands, live, robots):
     ``commands[n]`` = (α, V); the others stand still at speed 0. ``robots`` is a
     :class:`~fuzzynav.kernels.records.Robots` (its ``moves`` unused). Each robot's step count is
     its own (``status[n, STEPS]``). Returns how many still run."""
-    state, ranges, status = robots.state, robots.ranges, robots.status
+    state, status = robots.state, robots.status
     running = 0
     for n in range(state.shape[0]):
         if not live[n] or status[n, OUTCOME] != RUNNING:
@@ -38,7 +38,7 @@ def step(scenes, scene_bounds, setups, setup_bounds, commands, live, robots):
             continue
         setup = setups[setup_bounds[n, 0]:setup_bounds[n, 1]]
         steering, speed = limit(setup, commands[n, 0], commands[n, 1])
-        move(setup, scenes[scene_bounds[n, 0]:scene_bounds[n, 1]], status[n, STEPS] + 1, state, ranges, status, n,
-             steering, speed, None)
+        move(setup, scenes[scene_bounds[n, 0]:scene_bounds[n, 1]], status[n, STEPS] + 1, robots, n, steering, speed,
+             None)
         running += status[n, OUTCOME] == RUNNING
     return running
