@@ -147,9 +147,12 @@ def test_a_path_task_refuses_a_goal_scenario():
 
 
 def test_path_tracking_follows_waypoints_to_the_end():
-    """Aiming at the current waypoint (θ_rg → 0) completes a path: waypoints switch, success at the end."""
+    """Aiming at the current waypoint (θ_rg → 0) completes a path: waypoints switch, success at the
+    end. The robot starts on the first waypoint: as in the simulator, it aims at the second from
+    the start, and each later one is rewarded when reached."""
     env = FuzzynavEnv("path", scenario="example-path")
     obs, _ = env.reset(seed=0)
+    assert obs[0] > 1.0  # not the distance 0 to the waypoint it stands on
     passed = 0
     for _ in range(env.episodes.max_steps):
         steer = np.clip(obs[1] / (np.pi / 4), -1.0, 1.0)  # θ_rg > 0: goal on the right, steer right (α < 0)
@@ -158,7 +161,7 @@ def test_path_tracking_follows_waypoints_to_the_end():
         if terminated or truncated:
             break
     assert terminated and info["success"]
-    assert passed == len(load_scenario("example-path").path.waypoints)
+    assert passed == len(load_scenario("example-path").path.waypoints) - 1
 
 
 @pytest.mark.parametrize("mode", ["rgb_array", "human"])

@@ -40,14 +40,15 @@ def test_each_robot_senses_the_obstacles_where_they_are_at_its_own_time():
         batch.step(np.zeros(2), np.zeros(2), live)
         if k == 9:
             batch.start([1], [scenario])  # row 1 starts a new episode: its clock goes back to 0
-    assert list(batch.steps) == [30 * batch.decision_steps, 20 * batch.decision_steps]
+    fleet = batch.fleet
+    assert list(fleet.steps) == [30 * batch.decision_steps, 20 * batch.decision_steps]
     ring = SensorRing()
     for row in range(2):
-        moved = offsets(scenario.world, [batch.steps[row] * batch.params.dt])[0]
+        moved = offsets(scenario.world, [fleet.steps[row] * batch.params.dt])[0]
         assert np.abs(moved).max() > 1.0
         expected = ring.read(_standing(scenario, moved).world, batch.pose[row][None])[0]
         np.testing.assert_allclose(batch.state.ranges[row], expected, atol=1e-9)
-        np.testing.assert_allclose(batch.clearance(batch.pose)[row],
+        np.testing.assert_allclose(fleet.clearance[row],
                                    _standing(scenario, moved).world.clearance(batch.pose[row][None, :2])[0], atol=1e-9)
     assert not np.allclose(batch.state.ranges[0], batch.state.ranges[1])
 

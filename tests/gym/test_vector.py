@@ -77,11 +77,11 @@ def test_each_robot_is_sensed_in_its_own_world_as_the_world_itself_answers():
     assert len({id(s.world) for s in scenarios}) == len(scenarios)
     assert any(type(o).__name__ == "Ellipse" for s in scenarios for o in s.world.obstacles)
     poses = np.column_stack([rng.uniform(0.5, 19.5, (len(scenarios), 2)), rng.uniform(-np.pi, np.pi, len(scenarios))])
-    batch.pose = poses
+    fleet = batch.fleet
+    fleet.start(range(len(scenarios)), [s.world for s in scenarios], poses, [fleet.setup() for _ in scenarios])
     expected_ranges = np.array([SensorRing().read(s.world, p[None])[0] for s, p in zip(scenarios, poses)])
-    np.testing.assert_array_equal(batch._state(poses, batch.speed, batch.steering, batch.target).ranges, expected_ranges)
-    np.testing.assert_array_equal(batch.clearance(poses),
-                                  [s.world.clearance(p[None, :2])[0] for s, p in zip(scenarios, poses)])
+    np.testing.assert_array_equal(fleet.ranges, expected_ranges)
+    np.testing.assert_array_equal(fleet.clearance, [s.world.clearance(p[None, :2])[0] for s, p in zip(scenarios, poses)])
 
 
 def test_waypoints_switch_as_the_path_task_says():
@@ -89,23 +89,30 @@ def test_waypoints_switch_as_the_path_task_says():
     from fuzzynav.gym.core import RobotBatch
     from fuzzynav.gym.sources import RandomPaths
     from fuzzynav.gym.tasks import TASKS
+    from fuzzynav.kernels import worlds
     from fuzzynav.sim.tasks import TaskState
 
     rng = np.random.default_rng(5)
     scenarios = [RandomPaths().draw(rng) for _ in range(4)]
     batch = RobotBatch(4, TASKS["path"])
     batch.start(range(4), scenarios)
+    fleet = batch.fleet
     states = [TaskState(s, 1) for s in scenarios]
+    for s, t in zip(scenarios, states):  # the stop tests at the start, as the batch's
+        t.update(s.start[None, :2], 0.0, np.ones(1, dtype=bool))
     switches = 0
     for _ in range(200):  # robots hop along their paths with noise
         points = np.array([s.path.waypoints[min(t.waypoint_index[0], len(s.path.waypoints) - 1)]
                            for s, t in zip(scenarios, states)]) + rng.normal(0.0, 0.4, (4, 2))
-        pose = np.column_stack([points, np.zeros(4)])
-        done, switched = batch._task_update(pose, np.ones(4, dtype=bool))
+        before = fleet.waypoint
+        fleet.state[:, :2] = points
+        worlds.settle_rows(fleet.scenes, fleet.scene_bounds, fleet.setups, fleet.setup_bounds, np.arange(4),
+                           fleet.state, fleet.ranges, fleet.status)
+        done, switched = fleet.reached, fleet.waypoint != before
         for i, t in enumerate(states):
             before = t.waypoint_index[0]
             assert done[i] == t.update(points[i:i + 1], 0.0, np.ones(1, dtype=bool))[0]
             assert switched[i] == (t.waypoint_index[0] != before)
             switches += switched[i]
-        np.testing.assert_array_equal(batch.target, [t.target()[0] for t in states])
+        np.testing.assert_array_equal(fleet.target, [t.target()[0] for t in states])
     assert switches >= 4

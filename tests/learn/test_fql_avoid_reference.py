@@ -1,4 +1,4 @@
-"""The compiled training of the avoider (fuzzynav.kernels.learned, kernels.motion.move_live)
+"""The compiled training of the avoider (fuzzynav.kernels.learned, the stepping core kernels.worlds)
 learns what the NumPy implementation it replaced learned: both phases of a short run (60
 episodes, seed 3) against ``fql_avoid_reference.json``, written by that NumPy implementation
 (commit 729cfd7) — the learning curve bit for bit (every episode's rewards, so every action the

@@ -62,19 +62,3 @@ def advance_all(poses, steering, speed, robot, out):
     """:func:`advance` of every row of ``poses`` (N, 3) into ``out`` (N, 3)."""
     for n in range(poses.shape[0]):
         out[n, 0], out[n, 1], out[n, 2] = advance(poses[n, 0], poses[n, 1], poses[n, 2], steering[n], speed[n], robot)
-
-
-@jit
-def move_live(poses, steering, speed, live, robot, out, commands):
-    """One step of the ``live`` rows of ``poses`` (N, 3) into ``out`` (N, 3) under their clipped
-    commands; the others keep their pose at speed 0. ``commands`` (N, 2) receives the applied
-    (α, V)."""
-    for n in range(poses.shape[0]):
-        a, v = clip(steering[n], speed[n], robot)
-        if not live[n]:
-            v = 0.0
-        commands[n, 0], commands[n, 1] = a, v
-        if live[n]:
-            out[n, 0], out[n, 1], out[n, 2] = advance(poses[n, 0], poses[n, 1], poses[n, 2], a, v, robot)
-        else:
-            out[n, 0], out[n, 1], out[n, 2] = poses[n, 0], poses[n, 1], poses[n, 2]

@@ -44,6 +44,20 @@ RUNNING, REACHED, COLLISION, TIMEOUT = range(4)
 NO_NAVIGATOR = -1  # commands given in state[:, STEERING], state[:, SPEED]
 
 
+def setup_array(robot, *, max_range: float = 0.0, task: int = GOAL, tolerance: float = -math.inf,
+                forced_speed: float = math.nan, passed: bool = False, max_steps: float = math.inf, goal=(0.0, 0.0),
+                angles=(), half_beam: float = 0.0, waypoints=()) -> np.ndarray:
+    """The ``setup`` array (:data:`SETUP_FIELDS`) of a robot (``robot``:
+    :meth:`~fuzzynav.robot.tricycle.TricycleParams.array`), its sensors (``max_range``, ``angles``,
+    ``half_beam``) and its task: ``task`` code, ``goal`` (x, y) within ``tolerance`` (−∞: never
+    reached), a path's ``forced_speed`` (NaN: none), ``passed`` rule and ``waypoints`` (n, 2), the
+    time limit ``max_steps`` (∞: none)."""
+    angles = np.asarray(angles, dtype=float).reshape(-1)
+    return np.concatenate([np.asarray(robot, dtype=float),
+                           [max_range, task, tolerance, forced_speed, float(passed), max_steps, *goal, len(angles),
+                            half_beam], angles, np.asarray(waypoints, dtype=float).ravel()])
+
+
 def idle_arguments() -> tuple:
     """The navigator of :func:`lean_arguments` without a compiled navigator (kind, then unused
     params, tables, state, memory, layer params and state)."""
@@ -146,6 +160,35 @@ def settle(setup, scene_array, k, state, ranges, status, n, imperfect):
 
 
 @jit
+def limit(setup, steering, speed):
+    """The command robot takes of (α, V): clipped to its limits (:func:`~fuzzynav.kernels.motion.clip`),
+    the speed replaced by a path's constant speed (thesis §V.2) when the task has one."""
+    steering, speed = clip(steering, speed, setup)
+    if setup[FORCED_SPEED] == setup[FORCED_SPEED]:
+        speed = setup[FORCED_SPEED]
+    return steering, speed
+
+
+@jit
+def move(setup, scene_array, k, robots, n, steering, speed, imperfect):
+    """Robot ``n`` of ``robots`` (a :class:`~fuzzynav.kernels.records.Robots`) driven one step Δt
+    by its command (α, V) of :func:`limit`, ``k`` the step count after it: the kinematics (eq IV.2, or the exact arc; with ``imperfect``, through the actuators
+    and with slip), the command applied written in its state, the step counted, then
+    :func:`settle` — the one transition every stepping loop uses (:func:`step`,
+    :func:`fuzzynav.kernels.worlds.step`)."""
+    state, ranges, status = robots.state, robots.ranges, robots.status
+    row = state[n]
+    if imperfect is None:
+        row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
+    else:
+        steering, speed = real.actuate(imperfect, n, steering, speed, k, setup)
+        row[X], row[Y], row[THETA] = real.move(imperfect, n, row[X], row[Y], row[THETA], steering, speed, setup)
+    row[STEERING], row[SPEED] = steering, speed
+    status[n, STEPS] += 1
+    settle(setup, scene_array, k, state, ranges, status, n, imperfect)
+
+
+@jit
 def reset(setup, scene_array, state, ranges, status, imperfect):
     """Stop tests and sensing of every robot at step 0; returns how many still run."""
     running = 0
@@ -198,20 +241,11 @@ def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
                                                        Layers(layer_params, layer_state[n]), robot, seen, setup[0],
                                                        (k - 1) * setup[0])
             row[BEHAVIOUR] = code
-        steering, speed = clip(steering, speed, setup)
-        if setup[FORCED_SPEED] == setup[FORCED_SPEED]:
-            speed = setup[FORCED_SPEED]
+        steering, speed = limit(setup, steering, speed)
         if not moves:  # another plant moves the robot (fuzzynav.sim.plants): decide and clip only
             row[STEERING], row[SPEED] = steering, speed
             continue
-        if imperfect is None:
-            row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
-        else:
-            steering, speed = real.actuate(imperfect, n, steering, speed, k, setup)
-            row[X], row[Y], row[THETA] = real.move(imperfect, n, row[X], row[Y], row[THETA], steering, speed, setup)
-        row[STEERING], row[SPEED] = steering, speed
-        status[n, STEPS] += 1
-        settle(setup, scene_array, k, state, ranges, status, n, imperfect)
+        move(setup, scene_array, k, robots, n, steering, speed, imperfect)
         running += status[n, OUTCOME] == RUNNING
     return running
 
@@ -227,14 +261,3 @@ def settle_moved(setup, scene_array, k, state, ranges, status, moved):
             settle(setup, scene_array, k, state, ranges, status, n, None)
         running += status[n, OUTCOME] == RUNNING
     return running
-
-
-@jit
-def task_update_rows(setups, bounds, index, positions, active, done, target):
-    """:func:`task_update` of every ``active`` robot n with its own set-up array
-    ``setups[bounds[n, 0]:bounds[n, 1]]`` (several robots' arrays concatenated), at ``positions``
-    (N, 2): ``done``, the waypoint ``index`` and ``target`` (N, 2) are updated in place."""
-    for n in range(positions.shape[0]):
-        if active[n]:
-            done[n], index[n], target[n, 0], target[n, 1] = task_update(
-                setups[bounds[n, 0]:bounds[n, 1]], index[n], positions[n, 0], positions[n, 1])

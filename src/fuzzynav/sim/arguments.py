@@ -14,6 +14,7 @@ start poses at most ``validation.MAX_ROBOTS``.
 from __future__ import annotations
 
 from fuzzynav import validation
+from fuzzynav.control.hooks import BringsSensors
 from fuzzynav.errors import InputError
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
@@ -87,3 +88,13 @@ def check_seed(seed) -> int | None:
 def check_robots(n) -> int:
     """``n``: the number of robots, in [1, ``MAX_ROBOTS``]."""
     return validation.count(n, field="n", hi=validation.MAX_ROBOTS)
+
+
+def default_ring(scenario: Scenario, controller) -> SensorRing:
+    """The ring of the scenario's ``sensors`` key, else the controller's own (``sensors``
+    attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
+    if scenario.sensors is not None:
+        return named_ring(scenario.sensors)
+    first = controller if is_controller(controller) else next(iter(controller))
+    ring = first.sensors if isinstance(first, BringsSensors) else None
+    return ring if isinstance(ring, SensorRing) else SensorRing()

@@ -51,6 +51,23 @@ def check_commands(steering, speed, n: int, controller: str, step: int):
     return steering, speed
 
 
+def controller_commands(controllers, batch: bool, obs, controller: str, step: int):
+    """``(steering (N,), speed (N,), behaviours)`` the Python ``controllers`` return for the
+    robots of ``obs`` (a :class:`~fuzzynav.control.base.BatchObservation`): ``act_batch`` of the
+    one controller when ``batch``, else ``act`` of each running robot's own (one controller for
+    one robot); possibly non-finite (the caller stops those robots)."""
+    n = len(obs.active)
+    if batch:
+        out = controllers[0].act_batch(obs)
+        steering, speed = check_commands(out[0], out[1], n, controller, step)
+        return steering, speed, list(out[2]) if len(out) > 2 else [""] * n
+    steering, speed, labels = np.zeros(n), np.zeros(n), [""] * n
+    for i in np.flatnonzero(obs.active):
+        command = controllers[0 if n == 1 else i].act(obs.single(i))
+        steering[i], speed[i], labels[i] = command_values(command, controller, step)
+    return steering, speed, labels
+
+
 def invalid_states(state, step: int, history=None) -> dict[int, tuple[int, str]]:
     """After a compiled navigator's steps (it decides inside the compiled call, so its commands
     are found in the state; the simulator looks every few steps): ``{robot: (steps, reason)}``

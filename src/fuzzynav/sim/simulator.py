@@ -16,9 +16,10 @@
 5. sense: range rings, nearest obstacle (D_ro, θ_o), the task's target; the
    :class:`BatchObservation` is built when asked for.
 
-Moving obstacles (:mod:`fuzzynav.world.moving`) are placed at their step's offsets by the same
-compiled call, before the robots move (the offsets are computed for blocks of steps at once);
-a collision records who moved into whom (:mod:`fuzzynav.sim.fault`).
+Moving obstacles (:mod:`fuzzynav.sim.movers`) are placed at their step's offsets by the same
+compiled call, before the robots move; a collision records who moved into whom (:mod:`fuzzynav.sim.fault`).
+Steps 3–5 are the transition every stepping loop shares (:func:`fuzzynav.kernels.step.move`; the
+training and Gymnasium environments step by it too, :class:`fuzzynav.world.fleet.Fleet`).
 
 The plant (``plant``, :mod:`fuzzynav.sim.plants`) moves the robots and reads their sensors: the
 kinematic model inside the compiled step by default; another plant (``mujoco``) gets the clipped
@@ -40,45 +41,34 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
-from fuzzynav.control.hooks import BringsSensors, CompiledAct, MapAware, SizedForRobot
-from fuzzynav.kernels import imperfect, layers, step as step_kernel, traffic
-from fuzzynav.kernels.records import Robots, Traffic
+from fuzzynav.control.hooks import CompiledAct, MapAware, SizedForRobot
+from fuzzynav.kernels import imperfect, layers, step as step_kernel
+from fuzzynav.kernels.records import Robots
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.imperfections import with_ring_noise
-from fuzzynav.robot.sensors import SensorRing, named_ring
+from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import arguments
+from fuzzynav.sim.arguments import default_ring
 from fuzzynav.sim.commands import (
     INVALID_COMMAND,
-    check_commands,
     check_starts,
-    command_values,
+    controller_commands,
     invalid_reason,
     invalid_states,
 )
 from fuzzynav.sim.fault import collision_by
+from fuzzynav.sim.movers import MovingObstacles
 from fuzzynav.sim.plants import DEFAULT_PLANT, make_plant
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
-from fuzzynav.world import moving
 from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
 # every _CHECK_EVERY steps and at the end (each check costs about half a compiled step)
 _CHECK_EVERY = 32
-_OFFSET_BLOCK = 1024  # steps of moving-obstacle offsets computed at once
-_STILL = np.zeros((0, 2))  # the offsets of a static world's (no) moving obstacles
 OUTCOME_NAMES = {REACHED: "reached", COLLISION: "collision", TIMEOUT: "timeout", INVALID_COMMAND: "invalid_command"}
-
-
-def default_ring(scenario: Scenario, controller) -> SensorRing:
-    """The ring of the scenario's ``sensors`` key, else the controller's own (``sensors``
-    attribute: the lidar of the gap-aware navigators), else the thesis' seven rays."""
-    if scenario.sensors is not None:
-        return named_ring(scenario.sensors)
-    first = controller if arguments.is_controller(controller) else next(iter(controller))
-    return (first.sensors if isinstance(first, BringsSensors) else None) or SensorRing()
 
 
 class BatchSimulator:
@@ -127,7 +117,7 @@ class BatchSimulator:
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self.imperfections = with_ring_noise(scenario.imperfections, self.sensors.noise_std)
-        self._set_traffic(scenario.world)
+        self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
         self._compiled = copies[0].compiled if compiled else None
@@ -154,10 +144,8 @@ class BatchSimulator:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position(0.0)
         self._fault = np.full(self.n, "robot", dtype=object)
         self._invalid: list[str | None] = [None] * self.n  # why a robot stopped on a non-finite command
-        if self._movers.shape[0]:
-            self._scene[:] = self._base
-            traffic.place(self._base, self._movers, self._offsets(0), self._scene)
-        self._running = step_kernel.reset(self._setup, self._scene, self._state, self._ranges, self._status,
+        self._traffic.reset()
+        self._running = step_kernel.reset(self._setup, self._traffic.scene, self._state, self._ranges, self._status,
                                           self._imperfect)
         if not self.plant.in_kernel:
             self.plant.reset(self._state, self._ranges, self.active)
@@ -166,28 +154,6 @@ class BatchSimulator:
         self._observation = None
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
         self._record_state()
-
-    def _set_traffic(self, world) -> None:
-        """The moving obstacles of ``world``: their rows, a scene of its own that the compiled
-        step writes them into, and the map from kernel column to moving obstacle."""
-        self._base, self._movers = world.scene, world.movers
-        self._scene = world.scene.copy() if len(self._movers) else world.scene
-        self._mover_of_column = np.full(len(world.order), -1)
-        index = {obstacle: m for m, obstacle in enumerate(world.moving)}
-        for column, obstacle in enumerate(world.order[:-1]):
-            self._mover_of_column[column] = index.get(int(obstacle), -1)
-        self._block = (0, np.zeros((0, len(self._movers), 2)))  # (first step, offsets of the steps from it)
-
-    def _offsets(self, k: int) -> np.ndarray:
-        """Offsets ``(M, 2)`` of the moving obstacles at step ``k`` (``(0, 2)`` in a static world)."""
-        start, block = self._block
-        if not 0 <= k - start < len(block):
-            if not len(self._movers):
-                return _STILL
-            start = k - k % _OFFSET_BLOCK
-            block = moving.offsets(self.scenario.world, np.arange(start, start + _OFFSET_BLOCK) * self.params.dt)
-            self._block = (start, block)
-        return block[k - start]
 
     @property
     def pose(self) -> np.ndarray:
@@ -257,15 +223,7 @@ class BatchSimulator:
 
     def _act(self, obs: BatchObservation):
         """Commands of the Python controllers, written into the state of the running robots."""
-        if self.batch:
-            out = self.controllers[0].act_batch(obs)
-            steering, speed = check_commands(out[0], out[1], self.n, self.controller_name, self.k)
-            labels = list(out[2]) if len(out) > 2 else [""] * self.n
-        else:
-            steering, speed, labels = np.zeros(self.n), np.zeros(self.n), [""] * self.n
-            for i in np.flatnonzero(obs.active):
-                command = self.controllers[0 if self.n == 1 else i].act(obs.single(i))
-                steering[i], speed[i], labels[i] = command_values(command, self.controller_name, self.k)
+        steering, speed, labels = controller_commands(self.controllers, self.batch, obs, self.controller_name, self.k)
         finite = np.isfinite(steering) & np.isfinite(speed)
         for i in np.flatnonzero(obs.active & ~finite):  # stopped before the command reaches the robot
             self._stop(int(i), self.k, invalid_reason(f"step {self.k}", steering[i], speed[i]))
@@ -281,20 +239,20 @@ class BatchSimulator:
     def step(self) -> None:
         """One step of every running robot (the new observation is :attr:`observation`)."""
         labels = None if self._compiled is not None else self._act(self.observation)
-        moving = self._movers.shape[0]
+        moving = self._traffic.count
         if moving:
-            before, offsets_before, running_before = self._state[:, :2].copy(), self._offsets(self.k), self._running
+            before, offsets_before, running_before = self._state[:, :2].copy(), self._traffic.offsets(self.k), self._running
         if self._moving_target:
             self._setup[step_kernel.GOAL_X:step_kernel.GOAL_Y + 1] = self.task.position((self.k + 1) * self.params.dt)
         self.k += 1
         try:
-            offsets = self._offsets(self.k)
+            world = self._traffic.at(self.k)
             if self.plant.in_kernel:
-                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
-                                                 Traffic(self._base, self._movers, offsets, self._scene), self.k,
-                                                 Robots(self._state, self._ranges, self._status, True), self._imperfect)
+                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, world,
+                                                 self.k, Robots(self._state, self._ranges, self._status, True),
+                                                 self._imperfect)
             else:
-                self._plant_step(offsets)
+                self._plant_step(world)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it
             live = np.flatnonzero(self.active)
             broken = [i for i in live if not np.isfinite(self._state[i, step_kernel.X:step_kernel.SPEED + 1]).all()]
@@ -304,8 +262,8 @@ class BatchSimulator:
         if moving and self._running < running_before:  # someone stopped: a collision this step?
             hit = (self._status[:, step_kernel.OUTCOME] == COLLISION) & (self._status[:, step_kernel.STEPS] == self.k)
             if hit.any():
-                self._fault[hit] = collision_by(self._state[hit], before[hit], offsets - offsets_before,
-                                                self._mover_of_column, self.params.radius)
+                self._fault[hit] = collision_by(self._state[hit], before[hit], world.offsets - offsets_before,
+                                                self._traffic.mover_of_column, self.params.radius)
         if self._layer_params[layers.GROW]:  # the navigator makes room (the parameter array stays the same)
             self._navigator = self._compiled(self.n, self.sensors.angles)
         if self.record:
@@ -323,13 +281,12 @@ class BatchSimulator:
         self._invalid[i] = reason
         self._running = int(np.count_nonzero(self._status[:, step_kernel.OUTCOME] == RUNNING))
 
-    def _plant_step(self, offsets) -> None:
+    def _plant_step(self, world) -> None:
         """The step of a plant outside the compiled step: act and clip (compiled), the plant
         moves the running robots, then the stop tests and sensing (compiled) and the plant's
         readings; the robot's imperfections around the plant (:mod:`fuzzynav.kernels.imperfect`)."""
         moved, real = self.active.copy(), self._imperfect
-        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup,
-                         Traffic(self._base, self._movers, offsets, self._scene), self.k,
+        step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, world, self.k,
                          Robots(self._state, self._ranges, self._status, False), real)
         if real is not None:
             imperfect.plant_commands(real, self.k, self._state, moved, self._setup, step_kernel.STEERING,
@@ -338,7 +295,7 @@ class BatchSimulator:
         self.plant.move(self._state, moved)
         if real is not None:
             imperfect.plant_moved(real, before, self._state, moved)
-        self._running = step_kernel.settle_moved(self._setup, self._scene, self.k, self._state, self._ranges,
+        self._running = step_kernel.settle_moved(self._setup, world.scene, self.k, self._state, self._ranges,
                                                  self._status, moved)
         self.plant.sense(self._state, self._ranges, self.active)
         if real is not None:
@@ -349,7 +306,7 @@ class BatchSimulator:
             self._history["state"].append(self._state.copy())
             self._history["ranges"].append(self._ranges.copy())
             self._history["waypoint"].append(self._status[:, step_kernel.WAYPOINT].copy())
-            self._history["obstacles"].append(self._offsets(self.k))
+            self._history["obstacles"].append(self._traffic.offsets(self.k))
 
     def run(self) -> BatchSimulator:
         """Step until every robot has finished; returns ``self`` (see :meth:`outcomes`, :meth:`trace`)."""
@@ -402,7 +359,7 @@ class BatchSimulator:
             robot_radius=self.params.radius,
             collision_by=self.collisions_by()[i],
             invalid_command=self._invalid[i],
-            obstacle_offsets=(np.array(self._history["obstacles"][: k + 1]) if len(self._movers) else None),
+            obstacle_offsets=(np.array(self._history["obstacles"][: k + 1]) if self._traffic.count else None),
         )
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.world.fleet import task_fields
 from fuzzynav.world.scenario import Scenario
 
 TASK_CODES = {"goal": 0, "path": 1, "target": 2}  # fuzzynav.kernels.step.GOAL, PATH, TARGET
@@ -75,13 +76,12 @@ class TaskState:
         """The kernels' set-up array (:data:`fuzzynav.kernels.step.SETUP_FIELDS`): ``robot``
         (:meth:`TricycleParams.array`), the sensors, this task at time ``t``, then the sensor
         ``angles`` (of half beam width ``half_beam``) and the path's waypoints."""
-        forced = self.forced_speed
-        passed = self.kind == "path" and self.scenario.path.switching == "passed"
-        waypoints = self.path if self.kind == "path" else np.zeros((0, 2))
-        angles = np.asarray(angles, dtype=float).reshape(-1)
-        return np.concatenate([robot, [max_range, TASK_CODES[self.kind], self.tolerance, np.nan if forced is None else forced,
-                                       float(passed), max_steps, *self.position(t), len(angles), half_beam],
-                               angles, np.asarray(waypoints, dtype=float).ravel()])
+        from fuzzynav.kernels.step import setup_array
+
+        fields = (task_fields(path=self.scenario.path) if self.kind == "path"
+                  else task_fields(goal=self.position(t), tolerance=self.tolerance, task=TASK_CODES[self.kind]))
+        return setup_array(robot, max_range=max_range, max_steps=max_steps, angles=angles, half_beam=half_beam,
+                           **fields)
 
     def update(self, positions: np.ndarray, t: float, active: np.ndarray) -> np.ndarray:
         """Advance to time ``t`` with robot positions ``(N, 2)``; returns ``(N,)`` done flags. Path

@@ -1,8 +1,8 @@
-"""B robot episodes stepped together with NumPy: the training environment of chapter VI.
+"""B robot episodes stepped together: the training environment of chapter VI.
 
-Built directly on :mod:`fuzzynav.robot` (tricycle kinematics eq IV.2, the seven-sensor ring)
-and :mod:`fuzzynav.world` (collisions, ray casting), without the per-step bookkeeping of the
-simulator. It follows the protocol of :func:`fuzzynav.learn.checkpoint.train_loop`::
+The robots move by the simulator's own step (a :class:`~fuzzynav.world.fleet.Fleet`: the
+command clipped, tricycle kinematics eq IV.2, the stop tests in the simulator's order, the range
+ring), without the simulator's per-step bookkeeping. It follows the protocol of :func:`fuzzynav.learn.checkpoint.train_loop`::
 
     env.reset(rng) -> obs
     env.step(action, rng) -> obs, reward, terminated, truncated, info
@@ -21,7 +21,8 @@ Three plug-ins make one environment per task:
 
 An episode ends (``terminated``) on a collision — the footprint disc touching an obstacle or the
 workspace boundary ("the walls of the workspace", eq VI.2) — or when the goal is within
-``tolerance``; it is ``truncated`` after ``max_steps`` decisions. A decision lasts
+``tolerance``, tested first at the start (a robot drawn in collision or at its goal ends at its
+first decision without moving, as the simulator ends it at step 0); it is ``truncated`` after ``max_steps`` decisions. A decision lasts
 ``decision_steps`` steps Δt (default 1): a longer decision period makes the effect of one choice
 on the next state — hence the gap between the candidates' qualities — larger. Success (``info["success"]``) is reaching
 the goal in goal tasks, and lasting ``max_steps`` without collision in tasks without a goal.
@@ -39,6 +40,7 @@ import numpy as np
 from fuzzynav.control.learned import as_column, goal_inputs, side_distances
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
+from fuzzynav.world.fleet import Fleet
 from fuzzynav.world.world import World
 
 
@@ -77,21 +79,28 @@ class RobotEnv:
         self.start_speed = float(start_speed)
         self.timeout_reward = float(timeout_reward)
         self.state: RobotState | None = None
+        self.fleet = Fleet(self.batch, params, sensors)
 
-    def _state(self, world, pose, speed, steering, target) -> RobotState:
+    def _state(self, world, target) -> RobotState:
+        fleet = self.fleet
+        pose = fleet.pose
         ranges = sides = goal = None
         if self.sensors is not None:
-            ranges = self.sensors.read(world, pose)
+            ranges = fleet.ranges.copy()
             sides = self.sides(ranges)
         if target is not None:
             goal = goal_inputs(pose, target)
-        return RobotState(world, pose, speed, steering, target, ranges, goal, sides)
+        return RobotState(world, pose, fleet.speed, fleet.steering, target, ranges, goal, sides)
 
     def reset(self, rng: np.random.Generator):
         """New episodes: the layout's world, starts and goals; zero steering, speed ``start_speed``."""
         world, pose, target = self.layout.sample(rng, self.batch)
-        zeros = np.zeros(self.batch)
-        self.state = self._state(world, pose, np.full(self.batch, self.start_speed), zeros, target)
+        fleet = self.fleet
+        rows = range(self.batch)
+        setups = [fleet.setup() if target is None else fleet.setup(goal=target[n], tolerance=self.tolerance)
+                  for n in rows]
+        fleet.start(rows, [world] * self.batch, pose, setups, speed=self.start_speed)
+        self.state = self._state(world, target)
         self.k = 0
         self.done = np.zeros(self.batch, dtype=bool)
         return self.observe(self.state)
@@ -107,24 +116,16 @@ class RobotEnv:
         """
         from dataclasses import replace
 
-        import fuzzynav.kernels.motion as motion  # numba, imported when first needed
-
         before = self.state
         now = before
-        collided = np.zeros(self.batch, dtype=bool)
-        reached = np.zeros(self.batch, dtype=bool)
+        live = ~self.done
         driven = before.speed.copy()
         for _ in range(self.decision_steps):
-            live = ~(self.done | collided | reached)
             steering, speed = self.command(action, now)
-            pose, commands = np.empty((self.batch, 3)), np.empty((self.batch, 2))
-            motion.move_live(now.pose, as_column(steering, self.batch), as_column(speed, self.batch), live,
-                             self.params.array(), pose, commands)
-            now = self._state(now.world, pose, commands[:, 1], commands[:, 0], now.target)
-            driven = np.where(live, commands[:, 1], driven)
-            collided |= live & (now.world.clearance(pose[:, :2]) < self.params.radius)
-            if now.goal is not None:
-                reached |= live & ~collided & (now.goal[:, 0] <= self.tolerance)
+            moved = self.fleet.step(as_column(steering, self.batch), as_column(speed, self.batch), live)
+            now = self._state(now.world, now.target)
+            driven = np.where(moved, now.speed, driven)
+        collided, reached = live & self.fleet.collided, live & self.fleet.reached
         reward = self.reward(before, replace(now, speed=driven) if self.decision_steps > 1 else now, collided, reached)
         self.k += 1
         terminated = collided | reached
