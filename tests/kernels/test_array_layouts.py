@@ -41,6 +41,7 @@ def test_the_layer_positions_are_the_fields_of_the_layer_dataclasses_in_order():
     names = [field.name for record in layers.PARAMETERS for field in fields(record)]
     assert list(layers.PARAM._fields) == names and list(layers.PARAM) == list(range(len(names)))
     assert list(layers.STATE._fields) == [field.name for field in fields(layers.RobotState)]
+    assert set(layers.NEW_EPISODE) <= set(layers.STATE_NAMES)  # no value for a field that is not there
     assert len(set(names)) == len(names)  # no field in two layers
     assert layers.TABLES_AT == len(layers.PARAM) and layers.PLACES_AT == len(layers.STATE)
     # the blocks the kernels slice stay contiguous
@@ -73,7 +74,7 @@ def test_pack_writes_each_record_by_name_and_leaves_a_layer_not_given_off():
     assert layers.pack(RECOVERY)[layers.PARAM.guide] == 0.0
 
 
-def test_a_fresh_state_row_holds_the_state_dataclass_defaults_then_zeroed_blocks():
+def test_a_fresh_state_row_holds_a_new_episodes_values_then_zeroed_blocks():
     params = layers.pack(layers.Slots(places_slots=3, points_slots=4, cell_slots=8))
     state = layers.fresh_state(2, params)
     assert state.shape == (2, layers.PLACES_AT + 3 * 3 + 2 * 4 + 8)

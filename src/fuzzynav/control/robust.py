@@ -67,15 +67,16 @@ class RobustNavigator(BatchController):
     ``stop_wait``: seconds of safety stop before a recovery) and, given ``guidance`` (a
     :class:`fuzzynav.kernels.layers.Guidance`, e.g. :data:`fuzzynav.control.through_gaps.GUIDANCE`),
     the route guidance (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (a
-    :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the speed set by the room ahead
-    (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are its rule bases by role."""
+    :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
+    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are
+    its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None):
         self.navigator, self.name = navigator, name
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
-        supervisor = layers.Supervisor(recovery=float(recovery), escape=float(escape), stop_wait=float(stop_wait),
-                                       n_labels=len(navigator.labels))
+        supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
+                                       stop_wait=float(stop_wait), n_labels=len(navigator.labels))
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
         records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places))
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),

@@ -51,14 +51,15 @@ from fuzzynav.kernels.layers import Guidance, Pace
 
 # the route guidance and its car route (units and meaning: kernels.layers.Guidance); the car's
 # steering values span Fig IV.7's largest singleton
-GUIDANCE = Guidance(guide_cell=0.15, guide_ahead=1.5, guide_replan=1.0, guide_direct=3.0, guide_room=0.1,
-                    guide_narrow=0.05, guide_bare=0.0, guide_car=1.0, guide_car_room=0.0, guide_car_step=0.2,
-                    guide_car_node=0.1, guide_car_headings=72, guide_car_weight=3.0, guide_car_comfort=0.3,
-                    guide_car_turn=0.1, guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000,
-                    guide_car_reverse=2.0, guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7,
-                    guide_car_steering=ALPHA_MAX, guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8)
+GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.0, guide_direct=3.0,
+                    guide_room=0.1, guide_narrow=0.05, guide_bare=0.0,
+                    guide_car=1.0, guide_car_room=0.0, guide_car_step=0.2, guide_car_node=0.1,
+                    guide_car_headings=72, guide_car_weight=3.0, guide_car_comfort=0.3, guide_car_turn=0.1,
+                    guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000, guide_car_reverse=2.0,
+                    guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
+                    guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8)
 # the pace (units and meaning: kernels.layers.Pace)
-PACE = Pace(pace_room=0.05, pace_horizon=1.5, pace_goal=1.0)
+PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0)
 
 
 def _replaced(record, values: dict | None, field: str):

@@ -12,9 +12,9 @@ argument costs time at each call):
   :class:`Slots`, in that order (a layer not given is off: all its fields 0) —, then from
   :data:`TABLES_AT` the recovery's rule base (:func:`fuzzynav.kernels.ts0.pack`). :func:`pack`
   writes them;
-- ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (its defaults are a new
-  episode's), then the loop detector's ring buffer of sampled places (``places_slots`` × (t, x, y)),
-  the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
+- ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (a new episode's values:
+  :data:`NEW_EPISODE`), then the loop detector's ring buffer of sampled places (``places_slots`` ×
+  (t, x, y)), the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
   (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :func:`places_of`,
   :func:`points_of`, :func:`cells_of`.
 
@@ -40,7 +40,7 @@ from fuzzynav.jit import jit
 class Supervisor:
     """Which layers run (1.0: on) round the navigator (:mod:`fuzzynav.kernels.robust`)."""
 
-    on: float = 1.0
+    on: float
     """1: the layers run (0: a navigator without layers, :func:`none`)"""
     recovery: float
     """1: the recovery manoeuvre runs"""
@@ -139,7 +139,7 @@ class Guidance:
     are contiguous, in the order of :func:`fuzzynav.kernels.car_search.search`, and so are the
     grid route's rooms ``guide_room``, ``guide_narrow``, ``guide_bare`` (widest first)."""
 
-    guide: float = 1.0
+    guide: float
     """1: the layer runs"""
     guide_cell: float
     """m: the grid route's cell"""
@@ -199,7 +199,7 @@ class Guidance:
 class Pace:
     """The speed set by the room ahead (:mod:`fuzzynav.kernels.pace`)."""
 
-    pace: float = 1.0
+    pace: float
     """1: the layer runs"""
     pace_room: float
     """m: the room beyond the radius kept on the arc ahead"""
@@ -227,70 +227,76 @@ class Slots:
 
 @dataclass(frozen=True, kw_only=True)
 class RobotState:
-    """A robot's row of ``state``; the defaults are a new episode's (NaN: none yet)."""
+    """A robot's row of ``state`` (a new episode's values: :data:`NEW_EPISODE`)."""
 
-    stopped: float = 0.0
+    stopped: float
     """s: the time the navigator's safety stop has held the robot"""
-    count: float = 0.0
+    count: float
     """the obstacle points remembered"""
-    phase: float = 0.0
+    phase: float
     """the recovery's phase: :data:`NO_PHASE`, :data:`BACK`, :data:`TURN`"""
-    t_recovery: float = 0.0
+    t_recovery: float
     """s: when the recovery began"""
-    start_x: float = 0.0
+    start_x: float
     """m: the pose it began at"""
-    start_y: float = 0.0
+    start_y: float
     """m"""
-    back_steering: float = 0.0
+    back_steering: float
     """rad: the back-up command's steering"""
-    back_speed: float = 0.0
+    back_speed: float
     """m/s: its speed"""
-    heading: float = 0.0
+    heading: float
     """rad: the heading the turn began at"""
-    flip: float = 0.0
+    flip: float
     """1: the turn's steering is flipped"""
-    last_x: float = math.nan
+    last_x: float
     """m: the place of the last recovery"""
-    last_y: float = math.nan
+    last_y: float
     """m"""
-    best: float = math.inf
+    best: float
     """m: the loop detector's best goal distance"""
-    t_best: float = math.nan
+    t_best: float
     """s: when it was reached"""
-    first: float = 0.0
+    first: float
     """the first sampled place in the ring buffer"""
-    places: float = 0.0
+    places: float
     """the places kept"""
-    active: float = 0.0
+    active: float
     """1: boundary following is on"""
-    side: float = 0.0
+    side: float
     """its side (+1 left, −1 right)"""
-    failed: float = 0.0
+    failed: float
     """the side that failed last"""
-    hit: float = 0.0
+    hit: float
     """m: the hit distance"""
-    t_follow: float = 0.0
+    t_follow: float
     """s: when following began"""
-    route_x: float = math.nan
+    route_x: float
     """m: its route point"""
-    route_y: float = math.nan
+    route_y: float
     """m"""
-    planned: float = -math.inf
+    planned: float
     """s: when that route was planned"""
-    guide_x: float = math.nan
+    guide_x: float
     """m: the route guidance's route point (NaN: the target itself)"""
-    guide_y: float = math.nan
+    guide_y: float
     """m"""
-    guide_planned: float = -math.inf
+    guide_planned: float
     """s: when it was planned"""
-    guide_gear: float = 0.0
+    guide_gear: float
     """the car route's manoeuvre: −1 / +1 while the layer drives an arc, else 0"""
-    guide_kappa: float = 0.0
+    guide_kappa: float
     """1/m: that arc's curvature"""
-    guide_run: float = 0.0
+    guide_run: float
     """m: its length"""
-    guide_driven: float = 0.0
+    guide_driven: float
     """m: the distance driven on it"""
+
+
+# a new episode's state row: 0 but these (NaN: none yet)
+NEW_EPISODE = {"last_x": math.nan, "last_y": math.nan, "best": math.inf, "t_best": math.nan, "route_x": math.nan,
+               "route_y": math.nan, "planned": -math.inf, "guide_x": math.nan, "guide_y": math.nan,
+               "guide_planned": -math.inf}
 
 
 PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Slots)
@@ -303,7 +309,7 @@ TABLES_AT = len(PARAM_NAMES)
 PLACES_AT = len(STATE_NAMES)
 ON, GROW = PARAM.on, PARAM.grow  # read by the simulator's step (kernels.step) and the simulator
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
-_FRESH = np.array([getattr(RobotState(), name) for name in STATE_NAMES])
+_FRESH = np.array([NEW_EPISODE.get(name, 0.0) for name in STATE_NAMES])
 
 
 def put(params: np.ndarray, record) -> np.ndarray:
