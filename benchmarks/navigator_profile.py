@@ -32,7 +32,7 @@ from sim_core import COMMAND, start_poses, world_of_15  # noqa: E402
 from fuzzynav.control.batched import ConstantCommand  # noqa: E402
 from fuzzynav.control.five_behaviours import FiveBehaviourNavigator  # noqa: E402
 from fuzzynav.control.robust import RobustNavigator  # noqa: E402
-from fuzzynav.control.through_gaps import GUIDANCE, fuzzy_5b_gap_robust  # noqa: E402
+from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust  # noqa: E402
 from fuzzynav.robot.sensors import named_ring  # noqa: E402
 from fuzzynav.sim import BatchSimulator  # noqa: E402
 
@@ -49,7 +49,7 @@ def builds() -> dict:
         "sim+lidar": lambda: ConstantCommand(COMMAND[1], COMMAND[0]),
         "navigator": lambda: FiveBehaviourNavigator(gap=True),
         "layers": layers_only,
-        "grid route": lambda: fuzzy_5b_gap_robust(guidance={**GUIDANCE, "guide_car": 0.0}, paced=False),
+        "grid route": lambda: fuzzy_5b_gap_robust(guidance={"guide_car": 0.0}, paced=False),
         "car route": lambda: fuzzy_5b_gap_robust(paced=False),
         "pace": fuzzy_5b_gap_robust,
     }

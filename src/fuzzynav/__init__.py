@@ -54,7 +54,7 @@ _API: dict[str, str] = {
     "BatchSimulator": "fuzzynav.sim.simulator:BatchSimulator",
     "Trace": "fuzzynav.sim.trace:Trace",
     "metrics": "fuzzynav.sim.metrics:metrics",
-    "evaluate": "fuzzynav.experiments.evaluation:evaluate",
+    "evaluate": "fuzzynav.bench.evaluate:evaluate",
     "plot_episode": "fuzzynav.viz.trajectories:plot_episode",
     "plot_trajectory": "fuzzynav.viz.trajectories:plot_trajectory",
     "plot_commands": "fuzzynav.viz.trajectories:plot_commands",

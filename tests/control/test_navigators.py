@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
+from fuzzynav.bench.evaluate import evaluate
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import run_episode
 from fuzzynav.sim.simulator import BatchSimulator
 from fuzzynav.world.scenario import load_scenario

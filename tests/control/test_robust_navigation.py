@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
+from fuzzynav.catalog.controllers import CONTROLLERS, make_controller, spec_of
 from fuzzynav.control.recovery import recovery_system
 from fuzzynav.sim import run_episode
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
@@ -103,8 +103,6 @@ def _sized(radius, task):
     return scenario_from_dict(doc)
 
 
-TASKS = {"fuzzy-tracker": "path", "neural-tracker": "path", "anfis-tracker": "path", "pure-pursuit": "path",
-         "stanley": "path"}
 RANGE_NAVIGATORS = ("fuzzy-5b", "fuzzy-5b-rays", "fuzzy-2b", "fuzzy-5b-thesis", "fuzzy-2b-thesis")
 
 
@@ -112,7 +110,7 @@ RANGE_NAVIGATORS = ("fuzzy-5b", "fuzzy-5b-rays", "fuzzy-2b", "fuzzy-5b-thesis", 
 def test_a_small_and_a_large_robot_run_with_every_controller(name):
     controller = make_controller(name)
     for radius in (0.15, 0.5):
-        scenario = _sized(radius, TASKS.get(name, "goal"))
+        scenario = _sized(radius, "goal" if "goal" in spec_of(name).tasks else "path")  # a task its spec lists
         trace = run_episode(scenario, controller)
         assert trace.robot_radius == radius and trace.steps > 10
         if name in RANGE_NAVIGATORS:  # they keep the robot's own body clear of the obstacle

@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.control.through_gaps import GUIDANCE
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import guidance, layers
 from fuzzynav.kernels.records import Robot, Sightings
@@ -57,11 +56,11 @@ def test_fuzzy_5b_is_the_navigator_also_named_fuzzy_5b_gap_robust():
 def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:
     """The target fuzzy-5b-gap-robust's route guidance (its car route, or the grid route only)
     gives a robot at ``pose`` that has seen ``points``, the goal at (0, 10), at its first plan."""
-    params = make_controller("fuzzy-5b-gap-robust", guidance={**GUIDANCE, "guide_car": float(car)}).params
+    params = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car": float(car)}).params
     state = layers.fresh_state(1, params)[0]
     points = np.asarray(points, dtype=float)
     return np.array(guidance.aim(state, params, Sightings(points, len(points)), Robot(*pose, 0.0, 0.0, 10.0), 0.0,
-                                 params[layers.RADIUS]))
+                                 params[layers.PARAM.radius]))
 
 
 @pytest.mark.parametrize("car", [True, False])
@@ -81,7 +80,7 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
     params = make_controller("fuzzy-5b-gap-robust").params
     state = layers.fresh_state(1, params)[0]
     wall = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
-    radius = params[layers.RADIUS]
+    radius = params[layers.PARAM.radius]
     pose = (0.0, 0.0, np.pi / 2)
     robot = Robot(*pose, 0.0, 0.0, 10.0)
     first = guidance.aim(state, params, Sightings(wall, len(wall)), robot, 0.0, radius)
@@ -90,10 +89,10 @@ def test_route_guidance_keeps_its_route_point_until_it_plans_again():
 
 
 def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only():
-    assert make_controller("fuzzy-5b-rays").params[layers.GUIDE] == 0.0
-    assert make_controller("fuzzy-2b").params[layers.GUIDE] == 0.0
-    assert make_controller("fuzzy-5b").params[layers.GUIDE] == 1.0
-    assert make_controller("fuzzy-5b-gap-robust").params[layers.GUIDE] == 1.0
+    assert make_controller("fuzzy-5b-rays").params[layers.PARAM.guide] == 0.0
+    assert make_controller("fuzzy-2b").params[layers.PARAM.guide] == 0.0
+    assert make_controller("fuzzy-5b").params[layers.PARAM.guide] == 1.0
+    assert make_controller("fuzzy-5b-gap-robust").params[layers.PARAM.guide] == 1.0
     with pytest.raises(InputError, match="guide_lookahead"):
         make_controller("fuzzy-5b-gap-robust", guidance={"guide_lookahead": 2.0})
 

@@ -1,13 +1,13 @@
-"""``fuzzynav evaluate --model FILE``: a trained model over generated worlds (experiments/evaluation.py)."""
+"""``fuzzynav evaluate --model FILE``: a trained model over generated worlds (bench/evaluate.py)."""
 
 import json
 
 import pytest
 
+from fuzzynav.bench.evaluate import evaluate
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.cli import main
 from fuzzynav.errors import InputError
-from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_worlds
 

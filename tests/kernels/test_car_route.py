@@ -13,19 +13,19 @@ from fuzzynav.kernels import car_route, guidance, layers
 from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
-BODY = float(PARAMS[layers.RADIUS])
+BODY = float(PARAMS[layers.PARAM.radius])
 
 
 def _curvatures():
-    steering = PARAMS[layers.GUIDE_CAR_STEERING]
-    count = int(PARAMS[layers.GUIDE_CAR_STEERINGS])
-    return np.tan(np.linspace(-steering, steering, count)) / PARAMS[layers.WHEELBASE]
+    steering = PARAMS[layers.PARAM.guide_car_steering]
+    count = int(PARAMS[layers.PARAM.guide_car_steerings])
+    return np.tan(np.linspace(-steering, steering, count)) / PARAMS[layers.PARAM.wheelbase]
 
 
 def _numbers(reverse=True):
-    numbers = PARAMS[layers.GUIDE_CAR_ROOM:layers.GUIDE_CAR_GEAR + 1].copy()
+    numbers = PARAMS[layers.PARAM.guide_car_room:layers.PARAM.guide_car_gear + 1].copy()
     if not reverse:
-        numbers[layers.GUIDE_CAR_REVERSE - layers.GUIDE_CAR_ROOM] = 0.0
+        numbers[layers.PARAM.guide_car_reverse - layers.PARAM.guide_car_room] = 0.0
     return numbers
 
 
@@ -40,7 +40,7 @@ def chamber():
 
 def _plan(points, pose, goal, reverse=True):
     return car_route.plan(Sightings(points, len(points)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
-                          CarSearch(_curvatures(), _numbers(reverse), PARAMS[layers.GUIDE_CAR_CELL]))
+                          CarSearch(_curvatures(), _numbers(reverse), PARAMS[layers.PARAM.guide_car_cell]))
 
 
 def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
@@ -53,8 +53,8 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
     assert np.hypot(*(poses[-1, :2] - goal)) <= _numbers()[8]
     leg = car_route.first_leg(Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
-                              CarSearch(_curvatures(), _numbers(), PARAMS[layers.GUIDE_CAR_CELL]),
-                              PARAMS[layers.GUIDE_CAR_AHEAD], PARAMS[layers.GUIDE_CAR_TIGHT])
+                              CarSearch(_curvatures(), _numbers(), PARAMS[layers.PARAM.guide_car_cell]),
+                              PARAMS[layers.PARAM.guide_car_ahead], PARAMS[layers.PARAM.guide_car_tight])
     assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
 
 
@@ -65,7 +65,7 @@ def test_every_pose_of_the_plan_keeps_the_clearance_asked():
     assert found
     gaps = np.hypot(poses[:, None, 0] - posts[None, :, 0], poses[:, None, 1] - posts[None, :, 1]).min(axis=1)
     # the search tests cell centres on a 0.1 m grid: each pose is within half a cell diagonal of one
-    assert gaps.min() >= BODY + _numbers()[0] - PARAMS[layers.GUIDE_CAR_CELL] / math.sqrt(2)
+    assert gaps.min() >= BODY + _numbers()[0] - PARAMS[layers.PARAM.guide_car_cell] / math.sqrt(2)
     assert np.all(np.hypot(*np.diff(poses[:, :2], axis=0).T) < _numbers()[1] + 1e-9)
 
 
@@ -74,44 +74,45 @@ def test_a_route_point_that_newly_seen_points_block_is_planned_again():
     posts = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
     robot = Robot(0.0, 0.0, math.pi / 2, 0.0, 0.0, 10.0)
     first = guidance.aim(state, PARAMS, Sightings(posts, len(posts)), robot, 0.0, BODY)
-    point = state[[layers.GUIDE_X, layers.GUIDE_Y]].copy()
+    point = state[[layers.STATE.guide_x, layers.STATE.guide_y]].copy()
     assert np.isfinite(point).all()
     seen = np.vstack([posts, point + np.array([[0.0, 0.0], [0.1, 0.0], [-0.1, 0.0]])])
     assert guidance.aim(state, PARAMS, Sightings(seen, len(seen)), robot, 0.1, BODY) != first
-    assert state[layers.GUIDE_PLANNED] == pytest.approx(0.1)
+    assert state[layers.STATE.guide_planned] == pytest.approx(0.1)
     # a new route point clear of the blocked one, or (the plan now passing close to the new
     # points) an arc the layer drives itself
-    moved = np.hypot(*(state[[layers.GUIDE_X, layers.GUIDE_Y]] - point)) > BODY
-    assert moved or state[layers.GUIDE_GEAR] != 0.0
+    moved = np.hypot(*(state[[layers.STATE.guide_x, layers.STATE.guide_y]] - point)) > BODY
+    assert moved or state[layers.STATE.guide_gear] != 0.0
 
 
 def test_a_robot_that_cannot_reverse_gets_no_backward_arc():
     walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
     for reverse_speed, gear in ((0.5, -1.0), (0.0, 0.0)):
         params = PARAMS.copy()
-        params[layers.MAX_REVERSE_SPEED] = reverse_speed
+        params[layers.PARAM.max_reverse_speed] = reverse_speed
         state = layers.fresh_state(1, params)[0]
         guidance.aim(state, params, Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), 0.0, BODY)
-        assert state[layers.GUIDE_GEAR] == gear  # backs up if it can; else no arc is driven
+        assert state[layers.STATE.guide_gear] == gear  # backs up if it can; else no arc is driven
 
 
 def test_no_arc_is_kept_or_planned_while_the_recovery_drives_and_its_end_plans_again():
     walls, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, 6.0)  # the goal beyond the closed end
     state = layers.fresh_state(1, PARAMS)[0]
     guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), 0.0, BODY)
-    assert state[layers.GUIDE_GEAR] == -1.0  # a backward arc pending
-    state[layers.PHASE] = layers.BACK  # the recovery manoeuvre takes over and moves the robot
+    assert state[layers.STATE.guide_gear] == -1.0  # a backward arc pending
+    state[layers.STATE.phase] = layers.BACK  # the recovery manoeuvre takes over and moves the robot
     moved = (0.1, 1.0, math.pi / 2 + 0.3)
     for t in (0.1, 2.0):  # before and after guide_replan
         guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), t, BODY)
-        assert state[layers.GUIDE_GEAR] == 0.0 and state[layers.GUIDE_PLANNED] == -math.inf
-    state[layers.PHASE] = layers.NO_PHASE  # the recovery ends: planned again at once, from where the robot is
+        assert state[layers.STATE.guide_gear] == 0.0 and state[layers.STATE.guide_planned] == -math.inf
+    state[layers.STATE.phase] = layers.NO_PHASE  # the recovery ends: planned again at once, from where the robot is
     guidance.aim(state, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), 2.1, BODY)
     fresh = layers.fresh_state(1, PARAMS)[0]
     guidance.aim(fresh, PARAMS, Sightings(walls, len(walls)), Robot(*moved, 0.0, *goal), 2.1, BODY)
-    columns = [layers.GUIDE_PLANNED, layers.GUIDE_GEAR, layers.GUIDE_KAPPA, layers.GUIDE_RUN, layers.GUIDE_DRIVEN]
+    at = layers.STATE
+    columns = [at.guide_planned, at.guide_gear, at.guide_kappa, at.guide_run, at.guide_driven]
     np.testing.assert_array_equal(state[columns], fresh[columns])
-    assert state[layers.GUIDE_PLANNED] == pytest.approx(2.1)
+    assert state[layers.STATE.guide_planned] == pytest.approx(2.1)
 
 
 @pytest.mark.parametrize("starts", [True, False])
@@ -124,17 +125,18 @@ def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
     angles = np.ascontiguousarray(controller.sensors.angles, dtype=float)
     kind, params, tables, nav_state, memory, layer_params, rows = controller.compiled(1, angles)
     row = rows[0]
-    row[[layers.GUIDE_GEAR, layers.GUIDE_KAPPA, layers.GUIDE_RUN, layers.GUIDE_PLANNED]] = 1.0, 0.0, 5.0, 29.9
+    at = layers.STATE
+    row[[at.guide_gear, at.guide_kappa, at.guide_run, at.guide_planned]] = 1.0, 0.0, 5.0, 29.9
     if starts:  # the robot is back where it was 15 s ago, not nearer the goal for 30 s
         row[layers.PLACES_AT:layers.PLACES_AT + 3] = 15.0, 0.0, 0.0
-        row[[layers.PLACES_KEPT, layers.BEST, layers.T_BEST]] = 1.0, 10.0, 0.0
+        row[[layers.STATE.places, layers.STATE.best, layers.STATE.t_best]] = 1.0, 10.0, 0.0
     else:  # following a boundary for longer than its limit
-        row[[layers.ACTIVE, layers.SIDE, layers.T_FOLLOW]] = 1.0, 1.0, -100.0
+        row[[layers.STATE.active, layers.STATE.side, layers.STATE.t_follow]] = 1.0, 1.0, -100.0
     ranges = np.full(len(angles), controller.sensors.max_range)
     steering, speed, code = robust.act_one(Navigator(kind, params, tables), nav_state[0], memory[0],
                                            Layers(layer_params, row), Robot(0.0, 0.0, 0.0, 0.5, 10.0, 0.0),
                                            Reading(ranges, angles, controller.sensors.max_range, math.inf, 0.0), 0.05,
                                            30.0)
-    assert row[layers.ACTIVE] == (1.0 if starts else 0.0)
+    assert row[layers.STATE.active] == (1.0 if starts else 0.0)
     assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
-    assert row[layers.GUIDE_GEAR] == 0.0 and row[layers.GUIDE_PLANNED] == 30.0  # planned again at once
+    assert row[layers.STATE.guide_gear] == 0.0 and row[layers.STATE.guide_planned] == 30.0  # planned again at once

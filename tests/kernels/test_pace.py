@@ -49,8 +49,8 @@ def test_a_hit_inside_the_room_ahead_leaves_no_run_and_one_behind_is_ignored():
 
 def layer_params(horizon=1.0, top=4.0):
     params = np.zeros(layers.TABLES_AT)
-    params[[layers.WHEELBASE, layers.RADIUS, layers.PACE_ROOM]] = 0.5, 0.3, 0.05
-    params[[layers.PACE_HORIZON, layers.PACE_GOAL, layers.MAX_SPEED]] = horizon, 1.0, top
+    params[[layers.PARAM.wheelbase, layers.PARAM.radius, layers.PARAM.pace_room]] = 0.5, 0.3, 0.05
+    params[[layers.PARAM.pace_horizon, layers.PARAM.pace_goal, layers.PARAM.max_speed]] = horizon, 1.0, top
     return params
 
 

@@ -12,15 +12,14 @@ from pathlib import Path
 
 from fuzzynav.bench.measures import run_row, shortest_length
 from fuzzynav.bench.suites import Suite
-from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
+from fuzzynav.errors import InputError
 from fuzzynav.robot.imperfections import perturbed
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.world.scenario import Scenario
 
-_MODELS: dict[str, object] = {}  # model file -> loaded controller (copied for every episode)
-_SYSTEMS: dict[tuple, dict] = {}  # (controller, its (role, file) pairs) -> {role: replacement system}
+_MAKERS: dict[tuple, controller_maker] = {}  # (spec, its (role, file) pairs) -> its maker, kept by the worker
 MODEL_SUFFIXES = (".json", ".npz")
 
 
@@ -57,21 +56,42 @@ def is_model_file(spec: str) -> bool:
     return spec.endswith(MODEL_SUFFIXES)
 
 
+class controller_maker:  # noqa: N801 (a factory of controllers, called like a function)
+    """Fresh controllers, one a call, for an evaluation or a campaign: the registered
+    ``controller`` (its roles' rule bases replaced by ``systems``, its factory given ``options``),
+    or the controller stored in ``model`` (loaded once; each call a copy of it, so no episode
+    inherits another's state). Exactly one of the two; ``name`` is the controller's."""
+
+    def __init__(self, controller: str | None = None, *, model: str | Path | None = None,
+                 systems: dict | None = None, options: dict | None = None):
+        if (controller is None) == (model is None):
+            raise InputError("give exactly one of a controller name and a model file", field="controller")
+        if model is not None:
+            from fuzzynav.catalog.tasks import load_controller
+
+            self._loaded = load_controller(Path(model))
+            self.name = self._loaded.name
+        else:
+            self._loaded, self.name = None, str(controller)
+        self._systems, self._options = systems or {}, options or {}
+
+    def __call__(self):
+        if self._loaded is not None:
+            return copy.deepcopy(self._loaded)
+        return make_with_systems(self.name, self._systems, **self._options)
+
+
 def build_controller(spec: str, fis: tuple[tuple[str, str], ...] = ()):
     """A fresh controller for ``spec`` (registered name, or model file loaded once per process),
     with the replacements ``fis`` ((role, file) pairs, read once per process) of the roles it has."""
-    if not is_model_file(spec):
-        mine = tuple((role, path) for role, path in fis if role in ROLES.get(spec, {}))
-        if not mine:
-            return make_controller(spec)
-        if (spec, mine) not in _SYSTEMS:
-            _SYSTEMS[(spec, mine)] = {role: load_replacement(spec, role, path) for role, path in mine}
-        return make_with_systems(spec, _SYSTEMS[(spec, mine)])
-    if spec not in _MODELS:
-        from fuzzynav.catalog.tasks import load_controller
-
-        _MODELS[spec] = load_controller(Path(spec))
-    return copy.deepcopy(_MODELS[spec])
+    mine = () if is_model_file(spec) else tuple((role, path) for role, path in fis if role in ROLES.get(spec, {}))
+    if (spec, mine) not in _MAKERS:
+        if is_model_file(spec):
+            _MAKERS[(spec, mine)] = controller_maker(model=spec)
+        else:
+            systems = {role: load_replacement(spec, role, path) for role, path in mine}
+            _MAKERS[(spec, mine)] = controller_maker(spec, systems=systems)
+    return _MAKERS[(spec, mine)]()
 
 
 def run_cell(cell: Cell) -> list[dict]:

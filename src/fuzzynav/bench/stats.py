@@ -28,6 +28,11 @@ def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:
     return (max(0.0, (centre - half) / scale), min(1.0, (centre + half) / scale))
 
 
+def rate(outcomes: list[str], outcome: str) -> float:
+    """The share of ``outcomes`` (one a run) that are ``outcome``."""
+    return sum(found == outcome for found in outcomes) / len(outcomes)
+
+
 def _median(values) -> float | None:
     values = [v for v in values if v is not None]
     return statistics.median(values) if values else None
@@ -42,10 +47,11 @@ def summarise(rows: list[dict]) -> list[dict]:
     for (suite, controller), runs in groups.items():
         n = len(runs)
         record = {"suite": suite, "controller": controller, "runs": n}
+        outcomes = [run["outcome"] for run in runs]
         for outcome in OUTCOMES:
-            k = sum(run["outcome"] == outcome for run in runs)
+            k = outcomes.count(outcome)
             low, high = wilson(k, n)
-            record[outcome] = {"count": k, "rate": k / n, "ci95": [low, high]}
+            record[outcome] = {"count": k, "rate": rate(outcomes, outcome), "ci95": [low, high]}
         k = sum(run.get("collision_by") == "robot" for run in runs)
         record["collision_at_fault"] = {"count": k, "rate": k / n, "ci95": list(wilson(k, n))}
         reached = [run for run in runs if run["outcome"] == "reached"]

@@ -3,7 +3,7 @@
 Runs a built-in controller or a trained model file (``fuzzynav train``) over N seeded, solvable
 generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, collision and timeout
 rates, the mean time and the mean path length of the successful episodes
-(:func:`fuzzynav.experiments.evaluation.evaluate`). ``--json`` prints exactly one JSON object
+(:func:`fuzzynav.bench.evaluate.evaluate`). ``--json`` prints exactly one JSON object
 (with the per-world outcomes); otherwise a short table, with ``--progress`` one line per world on
 stderr. A progress bar shows on a terminal (not with ``--quiet`` or ``--json``).
 ``--save-failures DIR`` writes every world not reached as ``DIR/<world>.yaml`` with the plot of its
@@ -54,7 +54,7 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
 
 
 def run(args) -> int:
-    from fuzzynav.experiments.evaluation import evaluate
+    from fuzzynav.bench.evaluate import evaluate
     from fuzzynav.sim.plants import check_plant
 
     if args.worlds not in KINDS:

@@ -38,9 +38,9 @@ from __future__ import annotations
 
 import math
 
-# the loop detector: revisit (m), min_lap (s), patience (s), loop_gain (m), sample_every (s), horizon (s)
-LOOP = {"revisit": 1.5, "min_lap": 8.0, "patience": 20.0, "loop_gain": 0.5, "sample_every": 0.5, "horizon": 90.0}
-# boundary following: offset, search (rad), near, reach (m), leave_gain, free (m), follow_time (s),
-# room, tight, ahead (m), replan (s)
-FOLLOW = {"offset": math.radians(75.0), "search": math.radians(25.0), "near": 2.0, "reach": 3.0, "leave_gain": 0.5,
-          "free": 2.0, "follow_time": 40.0, "room": 0.7, "tight": 0.2, "ahead": 2.5, "replan": 1.0}
+from fuzzynav.kernels.layers import Follow, Loop
+
+# the loop detector and boundary following (their units and meaning: kernels.layers.Loop, Follow)
+LOOP = Loop(revisit=1.5, min_lap=8.0, patience=20.0, loop_gain=0.5, sample_every=0.5, horizon=90.0)
+FOLLOW = Follow(offset=math.radians(75.0), search=math.radians(25.0), near=2.0, reach=3.0, leave_gain=0.5, free=2.0,
+                follow_time=40.0, room=0.7, tight=0.2, ahead=2.5, replan=1.0)

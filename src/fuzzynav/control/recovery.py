@@ -35,12 +35,11 @@ from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.kernels.layers import Recovery
 
-# the manoeuvre: back at v_back (m/s) for up to back_distance (m), keeping margin (m); turn at v_turn
-# (m/s) up to turn_angle (rad) or until the rays within ±31° read lane (m) free; all within
-# recovery_time (s)
-RECOVERY = {"v_back": 0.3, "back_distance": 0.8, "margin": 0.05, "v_turn": 0.3, "turn_angle": math.pi / 3,
-            "lane": 1.5, "recovery_time": 6.0}
+# the manoeuvre's constants (their units and meaning: kernels.layers.Recovery)
+RECOVERY = Recovery(v_back=0.3, back_distance=0.8, margin=0.05, v_turn=0.3, turn_angle=math.pi / 3, lane=1.5,
+                    recovery_time=6.0)
 
 # Reverse steering, rows room (N: the right roomier, Z: alike, P: the left roomier), columns
 # the goal bearing (N: right, Z: ahead, P: left); cells are Fig IV.7's singletons. α > 0

@@ -64,25 +64,23 @@ class RobustNavigator(BatchController):
     """A compiled navigator (a :class:`~fuzzynav.control.batched.CompiledNavigator`, or anything
     with its ``compiled``, ``labels``, ``reset``, ``for_robot``) with the recovery and
     loop-escape layers (either can be switched off: ``recovery=False``, ``escape=False``;
-    ``stop_wait``: seconds of safety stop before a recovery) and, given ``guidance`` (the
-    ``guide_*`` values of :mod:`fuzzynav.kernels.layers`, e.g.
-    :data:`fuzzynav.control.through_gaps.GUIDANCE`), the route guidance
-    (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (the ``pace_*`` values, e.g.
-    :data:`fuzzynav.control.through_gaps.PACE`), the speed set by the room ahead
-    (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are its rule bases by role."""
+    ``stop_wait``: seconds of safety stop before a recovery) and, given ``guidance`` (a
+    :class:`fuzzynav.kernels.layers.Guidance`, e.g. :data:`fuzzynav.control.through_gaps.GUIDANCE`),
+    the route guidance (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (a
+    :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
+    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are
+    its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0, guidance: dict | None = None, pace: dict | None = None):
+                 stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None):
         self.navigator, self.name = navigator, name
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
-        values = {"on": 1.0, "recovery": float(recovery), "escape": float(escape), "stop_wait": float(stop_wait),
-                  "n_labels": len(navigator.labels), **RECOVERY, **LOOP, **FOLLOW}
-        if guidance is not None:
-            values.update(_switched("guide", guidance, "guidance"))
-        if pace is not None:
-            values.update(_switched("pace", pace, "pace"))
-        values["places_slots"] = int(LOOP["horizon"] / (LOOP["sample_every"] - 1e-9)) + 3  # never all in use
-        self.params = np.concatenate([[values.get(key, 0.0) for key in layers.PARAM_NAMES], _recovery_tables()])
+        supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
+                                       stop_wait=float(stop_wait), n_labels=len(navigator.labels))
+        places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
+        records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places))
+        self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
+                                      _recovery_tables()])
         self.for_robot(DEFAULT_PARAMS, navigator=False)
         self.reset()
 
@@ -111,8 +109,8 @@ class RobustNavigator(BatchController):
         (:class:`TricycleParams`)."""
         if navigator:
             self.navigator.for_robot(robot)
-        self.params[layers.RADIUS], self.params[layers.MAX_REVERSE_SPEED] = robot.radius, robot.max_reverse_speed
-        self.params[layers.WHEELBASE], self.params[layers.MAX_SPEED] = robot.wheelbase, robot.max_speed
+        layers.put(self.params, layers.Body(radius=robot.radius, max_reverse_speed=robot.max_reverse_speed,
+                                            wheelbase=robot.wheelbase, max_speed=robot.max_speed))
         return self
 
     def compiled(self, n: int, sensor_angles):
@@ -122,9 +120,10 @@ class RobustNavigator(BatchController):
         kind, params, tables, state, memory, *_ = self.navigator.compiled(n, sensor_angles)
         if self._rows is None or self._inner is not state:
             slots = FIRST_SLOTS * (len(np.atleast_1d(sensor_angles)) + 1)
-            self.params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = slots, _hash_size(slots), 0.0
+            self.params[[layers.PARAM.points_slots, layers.PARAM.cell_slots, layers.PARAM.grow]] = (
+                slots, _hash_size(slots), 0.0)
             self._inner, self._rows = state, layers.fresh_state(n, self.params)
-        elif self.params[layers.GROW]:
+        elif self.params[layers.PARAM.grow]:
             self._rows = _grown(self.params, self._rows)
         return kind, params, tables, state, memory, self.params, self._rows
 
@@ -167,15 +166,6 @@ class RobustNavigator(BatchController):
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
 
-def _switched(switch: str, values: dict, field: str) -> dict:
-    """The layers' values that switch a layer on (``switch``: ``guide``, the route guidance, or
-    ``pace``) with ``values`` (every ``<switch>_*`` parameter but the switch)."""
-    names = {name for name in layers.PARAM_NAMES if name.startswith(f"{switch}_")}
-    if set(values) != names:
-        raise InputError(f"{field} needs exactly {sorted(names)}, got {sorted(values)}", field=field)
-    return {switch: 1.0, **{name: float(value) for name, value in values.items()}}
-
-
 @functools.cache
 def _recovery_tables() -> np.ndarray:
     """The recovery's rule base packed for the kernels (built once; the kernels only read it)."""
@@ -193,9 +183,10 @@ def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """The layers' state ``rows`` with twice the obstacle point slots per robot (``params`` updated)."""
     from fuzzynav.kernels import robust
 
-    slots = int(params[layers.POINTS_SLOTS])
-    kept = layers.PLACES_AT + 3 * int(params[layers.PLACES_SLOTS]) + 2 * slots  # the state, places and points
-    params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = 2 * slots, _hash_size(2 * slots), 0.0
+    at = layers.PARAM
+    slots = int(params[at.points_slots])
+    kept = layers.PLACES_AT + 3 * int(params[at.places_slots]) + 2 * slots  # the state, places and points
+    params[[at.points_slots, at.cell_slots, at.grow]] = 2 * slots, _hash_size(2 * slots), 0.0
     wider = layers.fresh_state(len(rows), params)
     wider[:, :kept] = rows[:, :kept]
     robust.rehash_all(params, wider)

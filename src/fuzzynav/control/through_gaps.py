@@ -42,26 +42,34 @@ All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernel
 
 from __future__ import annotations
 
+from dataclasses import fields, replace
+
 from fuzzynav.control.robust import RobustNavigator
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
+from fuzzynav.kernels.layers import Guidance, Pace
 
-GUIDANCE = {"guide_cell": 0.15, "guide_ahead": 1.5, "guide_replan": 1.0, "guide_direct": 3.0,
-            "guide_room": 0.1, "guide_narrow": 0.05, "guide_bare": 0.0,  # m, m, s, m, m, m, m
-            # the car route (kernels.car_route): on; room kept (m); arc length (m), node cell (m),
-            # heading bins; clearance cost weight and comfort (m), full-lock cost, steering change
-            # cost (m); reach (m), node budget; backward arcs' cost factor, gear change cost (m);
-            # grid cell (m), steering values over ±limit (rad, Fig IV.7's largest singleton), look-ahead (m),
-            # clearance beyond the radius below which the layer drives the arcs (m), its forward speed (m/s)
-            "guide_car": 1.0, "guide_car_room": 0.0, "guide_car_step": 0.2, "guide_car_node": 0.1,
-            "guide_car_headings": 72, "guide_car_weight": 3.0, "guide_car_comfort": 0.3, "guide_car_turn": 0.1,
-            "guide_car_switch": 0.05, "guide_car_reach": 0.5, "guide_car_budget": 60000, "guide_car_reverse": 2.0,
-            "guide_car_gear": 1.0, "guide_car_cell": 0.1, "guide_car_steerings": 7, "guide_car_steering": ALPHA_MAX,
-            "guide_car_ahead": 1.0, "guide_car_tight": 0.5, "guide_car_speed": 0.8}
+# the route guidance and its car route (units and meaning: kernels.layers.Guidance); the car's
+# steering values span Fig IV.7's largest singleton
+GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.0, guide_direct=3.0,
+                    guide_room=0.1, guide_narrow=0.05, guide_bare=0.0,
+                    guide_car=1.0, guide_car_room=0.0, guide_car_step=0.2, guide_car_node=0.1,
+                    guide_car_headings=72, guide_car_weight=3.0, guide_car_comfort=0.3, guide_car_turn=0.1,
+                    guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000, guide_car_reverse=2.0,
+                    guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
+                    guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8)
+# the pace (units and meaning: kernels.layers.Pace)
+PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0)
 
 
-# the pace (kernels.pace): room kept beyond the radius on the arc ahead (m), seconds of travel left
-# before it, seconds to the target
-PACE = {"pace_room": 0.05, "pace_horizon": 1.5, "pace_goal": 1.0}
+def _replaced(record, values: dict | None, field: str):
+    """``record`` with the fields named in ``values`` (an option of the factory) replaced; an
+    unknown name is an :class:`~fuzzynav.errors.InputError` naming the option."""
+    names = {item.name for item in fields(record)} - {"guide", "pace"}
+    unknown = sorted(set(values or {}) - names)
+    if unknown:
+        raise InputError(f"{field} has no {unknown}; it takes {sorted(names)}", field=field)
+    return replace(record, **{name: float(value) for name, value in (values or {}).items()})
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
@@ -75,4 +83,5 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     navigator = FiveBehaviourNavigator(gap=True, **options)
     navigator.name = "fuzzy-5b-gap-robust"
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
-                           guidance={**GUIDANCE, **(guidance or {})}, pace={**PACE, **(pace or {})} if paced else None)
+                           guidance=_replaced(GUIDANCE, guidance, "guidance"),
+                           pace=_replaced(PACE, pace, "pace") if paced else None)

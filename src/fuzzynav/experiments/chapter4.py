@@ -32,8 +32,8 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from fuzzynav.bench.evaluate import evaluate
 from fuzzynav.experiments import routes
-from fuzzynav.experiments.evaluation import evaluate
 from fuzzynav.experiments.rule_bases import controller, systems_for
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure

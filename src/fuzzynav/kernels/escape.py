@@ -13,43 +13,13 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import route
-from fuzzynav.kernels.layers import (
-    ACTIVE,
-    AHEAD,
-    BEST,
-    FAILED,
-    FIRST,
-    FOLLOW_TIME,
-    FREE,
-    HIT,
-    HORIZON,
-    LEAVE_GAIN,
-    LOOP_GAIN,
-    MIN_LAP,
-    NEAR,
-    OFFSET,
-    PATIENCE,
-    PLACES_KEPT,
-    PLANNED,
-    REACH,
-    REPLAN,
-    REVISIT,
-    ROOM,
-    ROUTE_X,
-    ROUTE_Y,
-    SAMPLE_EVERY,
-    SEARCH,
-    SIDE,
-    T_BEST,
-    T_FOLLOW,
-    TIGHT,
-)
+from fuzzynav.kernels.layers import PARAM, STATE
 
 
 @jit
 def forget_places(state):
     """Forget the sampled places and the progress (after an escape starts or ends)."""
-    state[BEST], state[T_BEST], state[FIRST], state[PLACES_KEPT] = math.inf, math.nan, 0.0, 0.0
+    state[STATE.best], state[STATE.t_best], state[STATE.first], state[STATE.places] = math.inf, math.nan, 0.0, 0.0
 
 
 @jit
@@ -57,23 +27,24 @@ def circling(state, places, params, t, x, y, goal_distance):
     """Record this step; True when the robot circles: it is back within ``revisit`` of a place
     it passed at least ``min_lap`` ago (places are sampled every ``sample_every`` and kept for
     ``horizon``), and its best goal distance has not improved by ``loop_gain`` for ``patience``."""
-    if state[T_BEST] != state[T_BEST] or goal_distance < state[BEST] - params[LOOP_GAIN]:
-        state[BEST], state[T_BEST] = goal_distance, t
-    size, first, kept = places.shape[0], int(state[FIRST]), int(state[PLACES_KEPT])
-    if kept == 0 or t - places[(first + kept - 1) % size, 0] >= params[SAMPLE_EVERY] - 1e-9:
+    if state[STATE.t_best] != state[STATE.t_best] or goal_distance < state[STATE.best] - params[PARAM.loop_gain]:
+        state[STATE.best], state[STATE.t_best] = goal_distance, t
+    size, first, kept = places.shape[0], int(state[STATE.first]), int(state[STATE.places])
+    if kept == 0 or t - places[(first + kept - 1) % size, 0] >= params[PARAM.sample_every] - 1e-9:
         if kept == size:  # not with the slots the controller gives (see fuzzynav.control.robust)
             first, kept = (first + 1) % size, kept - 1
         at = (first + kept) % size
         places[at, 0], places[at, 1], places[at, 2] = t, x, y
         kept += 1
-    while kept and t - places[first, 0] > params[HORIZON]:
+    while kept and t - places[first, 0] > params[PARAM.horizon]:
         first, kept = (first + 1) % size, kept - 1
-    state[FIRST], state[PLACES_KEPT] = first, kept
-    if t - state[T_BEST] < params[PATIENCE]:
+    state[STATE.first], state[STATE.places] = first, kept
+    if t - state[STATE.t_best] < params[PARAM.patience]:
         return False
     for i in range(kept):
         at = (first + i) % size
-        if t - places[at, 0] >= params[MIN_LAP] and math.hypot(x - places[at, 1], y - places[at, 2]) < params[REVISIT]:
+        if (t - places[at, 0] >= params[PARAM.min_lap]
+                and math.hypot(x - places[at, 1], y - places[at, 2]) < params[PARAM.revisit]):
             return True
     return False
 
@@ -84,39 +55,39 @@ def start(state, t, goal_distance, obstacle_bearing):
     distance reached. The side followed is the nearest obstacle's (Bug: follow what was hit), or
     the other one after a following on that side ran out of time or looped (a loop while
     following ends it as failed)."""
-    if state[ACTIVE]:
-        state[FAILED] = state[SIDE]
+    if state[STATE.active]:
+        state[STATE.failed] = state[STATE.side]
     side = 1.0 if obstacle_bearing >= 0 else -1.0
-    state[ACTIVE], state[SIDE] = 1.0, -state[FAILED] if state[FAILED] != 0 else side
-    state[HIT], state[T_FOLLOW] = min(goal_distance, state[BEST]), t
-    state[ROUTE_X], state[ROUTE_Y], state[PLANNED] = math.nan, math.nan, -math.inf
+    state[STATE.active], state[STATE.side] = 1.0, -state[STATE.failed] if state[STATE.failed] != 0 else side
+    state[STATE.hit], state[STATE.t_follow] = min(goal_distance, state[STATE.best]), t
+    state[STATE.route_x], state[STATE.route_y], state[STATE.planned] = math.nan, math.nan, -math.inf
 
 
 @jit
 def stop(state, succeeded):
     """End the following (``succeeded``: by the leaving rule, not by time)."""
-    state[FAILED] = 0.0 if succeeded else state[SIDE]
-    state[ACTIVE] = 0.0
+    state[STATE.failed] = 0.0 if succeeded else state[STATE.side]
+    state[STATE.active] = 0.0
 
 
 @jit
 def timed_out(state, params, t):
     """True after ``follow_time`` of following."""
-    return t - state[T_FOLLOW] > params[FOLLOW_TIME]
+    return t - state[STATE.t_follow] > params[PARAM.follow_time]
 
 
 @jit
 def should_leave(state, params, distance, bearing, ranges, angles):
     """The leaving rule: the goal is ``leave_gain`` nearer than the hit distance and the ray
     nearest the goal direction (within the ring's ±90°) reads at least min(d, ``free``)."""
-    if distance > state[HIT] - params[LEAVE_GAIN] or abs(bearing) > math.pi / 2 + 1e-9:
+    if distance > state[STATE.hit] - params[PARAM.leave_gain] or abs(bearing) > math.pi / 2 + 1e-9:
         return False
     k, gap = 0, math.inf
     for i in range(angles.shape[0]):
         turn = (angles[i] - bearing + math.pi) % math.tau  # Python's and NumPy's remainder alike
         if abs(turn - math.pi) < gap:
             k, gap = i, abs(turn - math.pi)
-    return ranges[k] >= min(distance, params[FREE])
+    return ranges[k] >= min(distance, params[PARAM.free])
 
 
 @jit
@@ -130,17 +101,19 @@ def virtual_goal(state, params, seen, robot, t, d_o, ranges, radius):
     and ``offset`` to the followed side with an obstacle within ``near`` (D_ro or a reading),
     ``search`` without (a wide arc that finds the boundary again, not a tight circle)."""
     x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
-    stale = state[ROUTE_X] != state[ROUTE_X] or math.hypot(state[ROUTE_X] - x, state[ROUTE_Y] - y) < 1.0
-    if stale or t - state[PLANNED] >= params[REPLAN] - 1e-9:
-        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[ROOM], params[AHEAD])
+    stale = (state[STATE.route_x] != state[STATE.route_x]
+             or math.hypot(state[STATE.route_x] - x, state[STATE.route_y] - y) < 1.0)
+    if stale or t - state[STATE.planned] >= params[PARAM.replan] - 1e-9:
+        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[PARAM.room], params[PARAM.ahead])
         if not found:
-            found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[TIGHT], params[AHEAD])
-        state[ROUTE_X], state[ROUTE_Y] = (rx, ry) if found else (math.nan, math.nan)
-        state[PLANNED] = t
-    if state[ROUTE_X] == state[ROUTE_X]:
-        return state[ROUTE_X], state[ROUTE_Y]
+            found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[PARAM.tight], params[PARAM.ahead])
+        state[STATE.route_x], state[STATE.route_y] = (rx, ry) if found else (math.nan, math.nan)
+        state[STATE.planned] = t
+    if state[STATE.route_x] == state[STATE.route_x]:
+        return state[STATE.route_x], state[STATE.route_y]
     nearest = d_o
     for r in ranges:
         nearest = min(nearest, r)
-    heading = theta + state[SIDE] * (params[OFFSET] if nearest < params[NEAR] else params[SEARCH])
-    return x + params[REACH] * math.cos(heading), y + params[REACH] * math.sin(heading)
+    angle = params[PARAM.offset] if nearest < params[PARAM.near] else params[PARAM.search]
+    heading = theta + state[STATE.side] * angle
+    return x + params[PARAM.reach] * math.cos(heading), y + params[PARAM.reach] * math.sin(heading)

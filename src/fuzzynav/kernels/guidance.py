@@ -36,37 +36,7 @@ import numpy as np
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import car_route, recovery, route, sightings
-from fuzzynav.kernels.layers import (
-    GUIDE_AHEAD,
-    GUIDE_BARE,
-    GUIDE_CAR,
-    GUIDE_CAR_AHEAD,
-    GUIDE_CAR_CELL,
-    GUIDE_CAR_GEAR,
-    GUIDE_CAR_REVERSE,
-    GUIDE_CAR_ROOM,
-    GUIDE_CAR_SPEED,
-    GUIDE_CAR_STEERING,
-    GUIDE_CAR_STEERINGS,
-    GUIDE_CAR_TIGHT,
-    GUIDE_CELL,
-    GUIDE_DIRECT,
-    GUIDE_DRIVEN,
-    GUIDE_GEAR,
-    GUIDE_KAPPA,
-    GUIDE_NARROW,
-    GUIDE_PLANNED,
-    GUIDE_REPLAN,
-    GUIDE_ROOM,
-    GUIDE_RUN,
-    GUIDE_X,
-    GUIDE_Y,
-    MAX_REVERSE_SPEED,
-    NO_PHASE,
-    PHASE,
-    V_BACK,
-    WHEELBASE,
-)
+from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE
 from fuzzynav.kernels.records import CarSearch
 
 
@@ -91,12 +61,12 @@ def search_settings(params):
     """The car route's search settings (a :class:`~fuzzynav.kernels.records.CarSearch`) of the
     layers' ``params``: the steering values' curvatures, the search's numbers (forward arcs only
     for a robot that cannot reverse), the grid cell."""
-    steering = params[GUIDE_CAR_STEERING]
-    curvatures = np.tan(np.linspace(-steering, steering, int(params[GUIDE_CAR_STEERINGS]))) / params[WHEELBASE]
-    numbers = params[GUIDE_CAR_ROOM:GUIDE_CAR_GEAR + 1].copy()
-    if params[MAX_REVERSE_SPEED] <= 0:
-        numbers[GUIDE_CAR_REVERSE - GUIDE_CAR_ROOM] = 0.0
-    return CarSearch(curvatures, numbers, params[GUIDE_CAR_CELL])
+    steering = params[PARAM.guide_car_steering]
+    curvatures = np.tan(np.linspace(-steering, steering, int(params[PARAM.guide_car_steerings]))) / params[PARAM.wheelbase]
+    numbers = params[PARAM.guide_car_room:PARAM.guide_car_gear + 1].copy()
+    if params[PARAM.max_reverse_speed] <= 0:
+        numbers[PARAM.guide_car_reverse - PARAM.guide_car_room] = 0.0
+    return CarSearch(curvatures, numbers, params[PARAM.guide_car_cell])
 
 
 @jit
@@ -108,12 +78,13 @@ def car(state, params, seen, robot, radius):
     tx, ty = robot.tx, robot.ty
     search = search_settings(params)
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
-        seen, robot, radius + search.numbers[0], radius, search, params[GUIDE_CAR_AHEAD], params[GUIDE_CAR_TIGHT])
+        seen, robot, radius + search.numbers[0], radius, search, params[PARAM.guide_car_ahead], params[PARAM.guide_car_tight])
     if found and manoeuvre:
-        state[GUIDE_GEAR], state[GUIDE_KAPPA], state[GUIDE_RUN] = -1.0 if backwards else 1.0, kappa, run
-        state[GUIDE_DRIVEN] = 0.0
+        state[STATE.guide_gear] = -1.0 if backwards else 1.0
+        state[STATE.guide_kappa], state[STATE.guide_run] = kappa, run
+        state[STATE.guide_driven] = 0.0
     elif found and math.hypot(px - tx, py - ty) > 1e-9:
-        state[GUIDE_X], state[GUIDE_Y] = px, py
+        state[STATE.guide_x], state[STATE.guide_y] = px, py
     return found
 
 
@@ -121,7 +92,7 @@ def car(state, params, seen, robot, radius):
 def drop(state):
     """Another layer takes over (the recovery manoeuvre, or the loop escape's start or end): forget
     the arc pending, and plan again at the next chance, from the pose the robot then has."""
-    state[GUIDE_GEAR], state[GUIDE_PLANNED] = 0.0, -math.inf
+    state[STATE.guide_gear], state[STATE.guide_planned] = 0.0, -math.inf
 
 
 @jit
@@ -131,23 +102,24 @@ def plan(state, params, seen, robot, t, radius):
     :class:`~fuzzynav.kernels.records.Sightings`) blocks it; never while the recovery drives
     (module docstring)."""
     points, count, x, y, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.tx, robot.ty
-    if state[PHASE] != NO_PHASE:
+    if state[STATE.phase] != NO_PHASE:
         drop(state)
         return
-    blocked = state[GUIDE_X] == state[GUIDE_X] and sightings.clearance(points, count, state[GUIDE_X],
-                                                                        state[GUIDE_Y]) < radius
-    if (t - state[GUIDE_PLANNED] < params[GUIDE_REPLAN] - 1e-9 and not blocked) or state[GUIDE_GEAR] != 0.0:
+    gx, gy = state[STATE.guide_x], state[STATE.guide_y]
+    blocked = gx == gx and sightings.clearance(points, count, gx, gy) < radius
+    waiting = t - state[STATE.guide_planned] < params[PARAM.guide_replan] - 1e-9 and not blocked
+    if waiting or state[STATE.guide_gear] != 0.0:
         return
-    state[GUIDE_X], state[GUIDE_Y], state[GUIDE_PLANNED] = math.nan, math.nan, t
-    if line_free(points, count, x, y, tx, ty, radius + params[GUIDE_ROOM], params[GUIDE_DIRECT]):
+    state[STATE.guide_x], state[STATE.guide_y], state[STATE.guide_planned] = math.nan, math.nan, t
+    if line_free(points, count, x, y, tx, ty, radius + params[PARAM.guide_room], params[PARAM.guide_direct]):
         return
-    if params[GUIDE_CAR] != 0.0 and car(state, params, seen, robot, radius):
+    if params[PARAM.guide_car] != 0.0 and car(state, params, seen, robot, radius):
         return
-    for room in (GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE):
-        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[room], params[GUIDE_AHEAD],
-                                     params[GUIDE_CELL])
+    for room in (PARAM.guide_room, PARAM.guide_narrow, PARAM.guide_bare):
+        found, rx, ry = route.target(seen, x, y, tx, ty, radius + params[room], params[PARAM.guide_ahead],
+                                     params[PARAM.guide_cell])
         if found:
-            state[GUIDE_X], state[GUIDE_Y] = rx, ry
+            state[STATE.guide_x], state[STATE.guide_y] = rx, ry
             return
 
 
@@ -156,13 +128,15 @@ def manoeuvre(state, params, points, count, x, y, theta, dt):
     """(moving, α, V): this step of the car route's arc, if the layer is driving one (module
     docstring); when the arc is done or the step is not safe, the route is planned again at the
     next step."""
-    if state[GUIDE_GEAR] == 0.0:
+    if state[STATE.guide_gear] == 0.0:
         return False, 0.0, 0.0
-    speed = -min(params[V_BACK], params[MAX_REVERSE_SPEED]) if state[GUIDE_GEAR] < 0 else params[GUIDE_CAR_SPEED]
-    if state[GUIDE_DRIVEN] < state[GUIDE_RUN] - 1e-9 and recovery.safe(params, points, count, x, y, theta, speed, dt):
-        state[GUIDE_DRIVEN] += abs(speed) * dt
-        return True, math.atan(state[GUIDE_KAPPA] * params[WHEELBASE]), speed
-    state[GUIDE_GEAR], state[GUIDE_PLANNED] = 0.0, -math.inf
+    backwards = state[STATE.guide_gear] < 0
+    speed = -min(params[PARAM.v_back], params[PARAM.max_reverse_speed]) if backwards else params[PARAM.guide_car_speed]
+    if (state[STATE.guide_driven] < state[STATE.guide_run] - 1e-9
+            and recovery.safe(params, points, count, x, y, theta, speed, dt)):
+        state[STATE.guide_driven] += abs(speed) * dt
+        return True, math.atan(state[STATE.guide_kappa] * params[PARAM.wheelbase]), speed
+    state[STATE.guide_gear], state[STATE.guide_planned] = 0.0, -math.inf
     return False, 0.0, 0.0
 
 
@@ -174,9 +148,9 @@ def aim(state, params, seen, robot, t, radius):
     at the target's distance; the target itself without a route point."""
     x, y, tx, ty = robot.x, robot.y, robot.tx, robot.ty
     plan(state, params, seen, robot, t, radius)
-    if state[GUIDE_X] != state[GUIDE_X]:
+    if state[STATE.guide_x] != state[STATE.guide_x]:
         return tx, ty
-    ox, oy = state[GUIDE_X] - x, state[GUIDE_Y] - y
+    ox, oy = state[STATE.guide_x] - x, state[STATE.guide_y] - y
     length = math.hypot(ox, oy)
     if length < 1e-9:
         return tx, ty

@@ -1,115 +1,359 @@
-"""Array layout of the recovery and loop-escape layers of the default navigators, and of the
-route guidance that ``fuzzy-5b`` (the default) adds (the kernels: :mod:`~fuzzynav.kernels.recovery`,
-:mod:`~fuzzynav.kernels.escape`, :mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.robust`;
-the controller: :mod:`fuzzynav.control.robust`).
+"""Array layout of the recovery and loop-escape layers of the default navigators, of the route
+guidance and the pace that ``fuzzy-5b`` (the default) adds (the kernels:
+:mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`,
+:mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`;
+the controller: :mod:`fuzzynav.control.robust`), generated from one dataclass per layer.
 
 The layers travel as two float arrays (two arguments of the compiled step, whose every array
 argument costs time at each call):
 
-- ``params``: :data:`PARAM_NAMES` — switches, the robot's size, the constants, the sizes of the
-  per-robot blocks below and the ``grow`` flag (set by a step after which a robot could run out
-  of obstacle point slots: the controller's ``compiled()`` then makes them larger before the
-  next step) —, then from :data:`TABLES_AT` the recovery's rule base
-  (:func:`fuzzynav.kernels.ts0.pack`);
-- ``state`` (N, …), one row per robot: :data:`STATE_NAMES` (NaN: none yet), then the loop
-  detector's ring buffer of sampled places (``places_slots`` × (t, x, y)), the obstacle points
-  seen (``points_slots`` × (x, y)) and the hash set of their cells (``cell_slots``,
-  :mod:`fuzzynav.kernels.sightings`) — views of the row by :func:`places_of`, :func:`points_of`,
-  :func:`cells_of`.
+- ``params``: the fields of :data:`PARAMETERS` — :class:`Supervisor`, :class:`Body`,
+  :class:`Recovery`, :class:`Loop`, :class:`Follow`, :class:`Guidance`, :class:`Pace`,
+  :class:`Slots`, in that order (a layer not given is off: all its fields 0) —, then from
+  :data:`TABLES_AT` the recovery's rule base (:func:`fuzzynav.kernels.ts0.pack`). :func:`pack`
+  writes them;
+- ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (a new episode's values:
+  :data:`NEW_EPISODE`), then the loop detector's ring buffer of sampled places (``places_slots`` ×
+  (t, x, y)), the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
+  (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :func:`places_of`,
+  :func:`points_of`, :func:`cells_of`.
 
-A compiled navigator without layers passes :func:`none` (``params[ON]`` = 0).
+The kernels read a field by name at its position, ``params[PARAM.v_back]``, ``row[STATE.phase]``:
+:data:`PARAM` and :data:`STATE` are named tuples of those positions, which numba reads as
+compile-time constants. A field's docstring gives its unit. A compiled navigator without layers
+passes :func:`none` (``params[PARAM.on]`` = 0).
 """
 
 from __future__ import annotations
+
+import math
+from collections import namedtuple
+from dataclasses import dataclass, fields
+from typing import Any
 
 import numpy as np
 
 from fuzzynav.jit import jit
 
-PARAM_NAMES = (
-    "on", "recovery", "escape", "stop_wait", "radius", "max_reverse_speed", "n_labels",
-    # the recovery manoeuvre (kernels.recovery)
-    "v_back", "back_distance", "margin", "v_turn", "turn_angle", "lane", "recovery_time",
-    # the loop detector (kernels.escape)
-    "revisit", "min_lap", "patience", "loop_gain", "sample_every", "horizon",
-    # boundary following (kernels.escape)
-    "offset", "search", "near", "reach", "leave_gain", "free", "follow_time", "room", "tight", "ahead", "replan",
-    # the route guidance (kernels.guidance; off unless ``guide``): grid cell, look-ahead, re-plan
-    # period, straight-line reach, and the room kept, widest first (contiguous)
-    "guide", "guide_cell", "guide_ahead", "guide_replan", "guide_direct", "guide_room", "guide_narrow", "guide_bare",
-    # the car route of the guidance (kernels.car_route; off unless ``guide_car``): the room kept, then
-    # the search's numbers in the order of kernels.car_search.search (contiguous), its grid cell,
-    # steering values and limit, look-ahead; the robot's wheelbase
-    "guide_car", "guide_car_room", "guide_car_step", "guide_car_node", "guide_car_headings", "guide_car_weight",
-    "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reach", "guide_car_budget",
-    "guide_car_reverse", "guide_car_gear", "guide_car_cell", "guide_car_steerings", "guide_car_steering",
-    "guide_car_ahead", "guide_car_tight", "guide_car_speed", "wheelbase",
-    # the pace (kernels.pace; off unless ``pace``): room kept on the arc ahead (m), seconds of travel
-    # left before it, seconds to the target; the robot's top speed
-    "pace", "pace_room", "pace_horizon", "pace_goal", "max_speed",
-    # sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
-    "places_slots", "points_slots", "cell_slots", "grow",
-)
-(ON, RECOVERY, ESCAPE, STOP_WAIT, RADIUS, MAX_REVERSE_SPEED, N_LABELS,
- V_BACK, BACK_DISTANCE, MARGIN, V_TURN, TURN_ANGLE, LANE, RECOVERY_TIME,
- REVISIT, MIN_LAP, PATIENCE, LOOP_GAIN, SAMPLE_EVERY, HORIZON,
- OFFSET, SEARCH, NEAR, REACH, LEAVE_GAIN, FREE, FOLLOW_TIME, ROOM, TIGHT, AHEAD, REPLAN,
- GUIDE, GUIDE_CELL, GUIDE_AHEAD, GUIDE_REPLAN, GUIDE_DIRECT, GUIDE_ROOM, GUIDE_NARROW, GUIDE_BARE,
- GUIDE_CAR, GUIDE_CAR_ROOM, GUIDE_CAR_STEP, GUIDE_CAR_NODE, GUIDE_CAR_HEADINGS, GUIDE_CAR_WEIGHT,
- GUIDE_CAR_COMFORT, GUIDE_CAR_TURN, GUIDE_CAR_SWITCH, GUIDE_CAR_REACH, GUIDE_CAR_BUDGET,
- GUIDE_CAR_REVERSE, GUIDE_CAR_GEAR, GUIDE_CAR_CELL, GUIDE_CAR_STEERINGS, GUIDE_CAR_STEERING,
- GUIDE_CAR_AHEAD, GUIDE_CAR_TIGHT, GUIDE_CAR_SPEED, WHEELBASE, PACE, PACE_ROOM, PACE_HORIZON, PACE_GOAL, MAX_SPEED,
- PLACES_SLOTS, POINTS_SLOTS, CELL_SLOTS, GROW) = range(len(PARAM_NAMES))
+
+@dataclass(frozen=True, kw_only=True)
+class Supervisor:
+    """Which layers run (1.0: on) round the navigator (:mod:`fuzzynav.kernels.robust`)."""
+
+    on: float
+    """1: the layers run (0: a navigator without layers, :func:`none`)"""
+    recovery: float
+    """1: the recovery manoeuvre runs"""
+    escape: float
+    """1: the loop escape runs"""
+    stop_wait: float
+    """s: the safety stop holding the robot away from its goal this long starts a recovery"""
+    n_labels: float
+    """the count of the navigator's own behaviour labels (the layers' labels follow them)"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Body:
+    """The robot's size and limits the layers read (the scenario's ``robot:``, set by ``for_robot``)."""
+
+    radius: float
+    """m: the body's radius"""
+    max_reverse_speed: float
+    """m/s: the reverse speed limit (0: the robot cannot back up)"""
+    wheelbase: float
+    """m: the tricycle's wheelbase l (eq IV.1)"""
+    max_speed: float
+    """m/s: the top speed"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Recovery:
+    """The recovery manoeuvre (:mod:`fuzzynav.kernels.recovery`, :mod:`fuzzynav.control.recovery`)."""
+
+    v_back: float
+    """m/s: the backing speed"""
+    back_distance: float
+    """m: the longest back-up"""
+    margin: float
+    """m: the room kept from every remembered obstacle point"""
+    v_turn: float
+    """m/s: the speed of the turn at full lock"""
+    turn_angle: float
+    """rad: the turn ends after this change of heading (or with the lane free)"""
+    lane: float
+    """m: the rays within ±31° reading this much free end the turn"""
+    recovery_time: float
+    """s: the longest manoeuvre"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Loop:
+    """The loop detector of the loop escape (:mod:`fuzzynav.kernels.escape`, :mod:`fuzzynav.control.escape`)."""
+
+    revisit: float
+    """m: back this near a place passed before counts as a lap"""
+    min_lap: float
+    """s: the least time since that place for a lap"""
+    patience: float
+    """s: a lap counts as a loop when the goal distance has not improved for this long"""
+    loop_gain: float
+    """m: the improvement of the best goal distance that counts"""
+    sample_every: float
+    """s: the period of the places sampled"""
+    horizon: float
+    """s: the places kept (the most that long ago)"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Follow:
+    """Boundary following, the escape mode ``BF`` (:mod:`fuzzynav.kernels.escape`)."""
+
+    offset: float
+    """rad: the virtual goal's angle to the side of the heading, without a route"""
+    search: float
+    """rad: that angle while no obstacle is near"""
+    near: float
+    """m: an obstacle nearer than this is near"""
+    reach: float
+    """m: the virtual goal's distance ahead"""
+    leave_gain: float
+    """m: the goal nearer than the hit distance by this much ends the mode (with the way free)"""
+    free: float
+    """m: the range ray nearest the goal reading this much (or up to the goal) counts free"""
+    follow_time: float
+    """s: the longest following"""
+    room: float
+    """m: the room the route keeps from the obstacle points"""
+    tight: float
+    """m: the least room the route may keep where the wider one gives none"""
+    ahead: float
+    """m: the virtual goal's distance along the route"""
+    replan: float
+    """s: the period of the route's re-planning"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Guidance:
+    """The route guidance and its car route (:mod:`fuzzynav.kernels.guidance`,
+    :mod:`fuzzynav.kernels.car_route`); the search's numbers ``guide_car_room`` … ``guide_car_gear``
+    are contiguous, in the order of :func:`fuzzynav.kernels.car_search.search`, and so are the
+    grid route's rooms ``guide_room``, ``guide_narrow``, ``guide_bare`` (widest first)."""
+
+    guide: float
+    """1: the layer runs"""
+    guide_cell: float
+    """m: the grid route's cell"""
+    guide_ahead: float
+    """m: the route point's distance along the route"""
+    guide_replan: float
+    """s: the period of the planning"""
+    guide_direct: float
+    """m: a straight line to the target free for this long needs no route"""
+    guide_room: float
+    """m: the room beyond the radius the grid route keeps"""
+    guide_narrow: float
+    """m: that room where the first gives no route"""
+    guide_bare: float
+    """m: that room where neither gives one"""
+    guide_car: float
+    """1: the car route is tried before the grid route"""
+    guide_car_room: float
+    """m: the room beyond the radius the car route keeps"""
+    guide_car_step: float
+    """m: the length of an arc of the search"""
+    guide_car_node: float
+    """m: the cell of a search node"""
+    guide_car_headings: float
+    """the heading bins of a search node"""
+    guide_car_weight: float
+    """the weight of the clearance cost"""
+    guide_car_comfort: float
+    """m: clearance beyond which an arc costs no more"""
+    guide_car_turn: float
+    """the cost of an arc at full lock"""
+    guide_car_switch: float
+    """m: the cost of a change of steering"""
+    guide_car_reach: float
+    """m: the search ends this near the goal"""
+    guide_car_budget: float
+    """the search nodes before it gives up (then the grid route)"""
+    guide_car_reverse: float
+    """the cost factor of a backward arc (0: forward arcs only)"""
+    guide_car_gear: float
+    """m: the cost of a change of direction"""
+    guide_car_cell: float
+    """m: the clearance grid's cell"""
+    guide_car_steerings: float
+    """the steering values of the arcs, spread over ± ``guide_car_steering``"""
+    guide_car_steering: float
+    """rad: the largest steering of an arc"""
+    guide_car_ahead: float
+    """m: the route point's distance along the car route"""
+    guide_car_tight: float
+    """m: clearance beyond the radius below which the layer drives the arcs itself"""
+    guide_car_speed: float
+    """m/s: its forward speed then"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Pace:
+    """The speed set by the room ahead (:mod:`fuzzynav.kernels.pace`)."""
+
+    pace: float
+    """1: the layer runs"""
+    pace_room: float
+    """m: the room beyond the radius kept on the arc ahead"""
+    pace_horizon: float
+    """s: the travel left before that room"""
+    pace_goal: float
+    """s: the least time to the target"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class Slots:
+    """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
+    (set by a step after which a robot could run out of them: the controller's ``compiled()``
+    then makes them larger before the next step)."""
+
+    places_slots: float
+    """the loop detector's sampled places"""
+    points_slots: float = 0.0
+    """the obstacle points remembered"""
+    cell_slots: float = 0.0
+    """the hash set of their cells (a power of two)"""
+    grow: float = 0.0
+    """1: a step asks for more point slots"""
+
+
+@dataclass(frozen=True, kw_only=True)
+class RobotState:
+    """A robot's row of ``state`` (a new episode's values: :data:`NEW_EPISODE`)."""
+
+    stopped: float
+    """s: the time the navigator's safety stop has held the robot"""
+    count: float
+    """the obstacle points remembered"""
+    phase: float
+    """the recovery's phase: :data:`NO_PHASE`, :data:`BACK`, :data:`TURN`"""
+    t_recovery: float
+    """s: when the recovery began"""
+    start_x: float
+    """m: the pose it began at"""
+    start_y: float
+    """m"""
+    back_steering: float
+    """rad: the back-up command's steering"""
+    back_speed: float
+    """m/s: its speed"""
+    heading: float
+    """rad: the heading the turn began at"""
+    flip: float
+    """1: the turn's steering is flipped"""
+    last_x: float
+    """m: the place of the last recovery"""
+    last_y: float
+    """m"""
+    best: float
+    """m: the loop detector's best goal distance"""
+    t_best: float
+    """s: when it was reached"""
+    first: float
+    """the first sampled place in the ring buffer"""
+    places: float
+    """the places kept"""
+    active: float
+    """1: boundary following is on"""
+    side: float
+    """its side (+1 left, −1 right)"""
+    failed: float
+    """the side that failed last"""
+    hit: float
+    """m: the hit distance"""
+    t_follow: float
+    """s: when following began"""
+    route_x: float
+    """m: its route point"""
+    route_y: float
+    """m"""
+    planned: float
+    """s: when that route was planned"""
+    guide_x: float
+    """m: the route guidance's route point (NaN: the target itself)"""
+    guide_y: float
+    """m"""
+    guide_planned: float
+    """s: when it was planned"""
+    guide_gear: float
+    """the car route's manoeuvre: −1 / +1 while the layer drives an arc, else 0"""
+    guide_kappa: float
+    """1/m: that arc's curvature"""
+    guide_run: float
+    """m: its length"""
+    guide_driven: float
+    """m: the distance driven on it"""
+
+
+# a new episode's state row: 0 but these (NaN: none yet)
+NEW_EPISODE = {"last_x": math.nan, "last_y": math.nan, "best": math.inf, "t_best": math.nan, "route_x": math.nan,
+               "route_y": math.nan, "planned": -math.inf, "guide_x": math.nan, "guide_y": math.nan,
+               "guide_planned": -math.inf}
+
+
+PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Slots)
+PARAM_NAMES = tuple(field.name for record in PARAMETERS for field in fields(record))
+STATE_NAMES = tuple(field.name for field in fields(RobotState))
+# the positions by name (their fields are generated, so typed Any for the checker)
+PARAM: Any = namedtuple("ParamAt", PARAM_NAMES)(*range(len(PARAM_NAMES)))
+STATE: Any = namedtuple("StateAt", STATE_NAMES)(*range(len(STATE_NAMES)))
 TABLES_AT = len(PARAM_NAMES)
-STATE_NAMES = (
-    "stopped", "count",  # seconds the navigator has held the robot, obstacle points remembered
-    # recovery: phase, its start (time, pose), the back-up command, the heading the turn began at,
-    # whether the steering is flipped, the place of the last recovery
-    "phase", "t_recovery", "start_x", "start_y", "back_steering", "back_speed", "heading", "flip", "last_x", "last_y",
-    # loop detector: best goal distance and when, first sampled place in the ring buffer, places kept
-    "best", "t_best", "first", "places",
-    # boundary following: on, side, side that failed, hit distance, start, route point, when planned
-    "active", "side", "failed", "hit", "t_follow", "route_x", "route_y", "planned",
-    # route guidance: the route point given (NaN: the goal itself), when planned; the car route's
-    # manoeuvre (gear −1 / +1 while the layer drives it, else 0): its arc's curvature and length, the
-    # distance driven on it
-    "guide_x", "guide_y", "guide_planned", "guide_gear", "guide_kappa", "guide_run", "guide_driven",
-)
-(STOPPED, COUNT, PHASE, T_RECOVERY, START_X, START_Y, BACK_STEERING, BACK_SPEED, HEADING, FLIP, LAST_X, LAST_Y,
- BEST, T_BEST, FIRST, PLACES_KEPT, ACTIVE, SIDE, FAILED, HIT, T_FOLLOW, ROUTE_X, ROUTE_Y,
- PLANNED, GUIDE_X, GUIDE_Y, GUIDE_PLANNED, GUIDE_GEAR, GUIDE_KAPPA, GUIDE_RUN,
- GUIDE_DRIVEN) = range(len(STATE_NAMES))
 PLACES_AT = len(STATE_NAMES)
+ON, GROW = PARAM.on, PARAM.grow  # read by the simulator's step (kernels.step) and the simulator
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
+_FRESH = np.array([NEW_EPISODE.get(name, 0.0) for name in STATE_NAMES])
+
+
+def put(params: np.ndarray, record) -> np.ndarray:
+    """Write the fields of ``record`` (a layer's dataclass) into ``params`` at their positions."""
+    for field in fields(record):
+        params[getattr(PARAM, field.name)] = getattr(record, field.name)
+    return params
+
+
+def pack(*records) -> np.ndarray:
+    """``params`` without the tables: the fields of ``records`` (one per layer; a layer not
+    given is all 0, off)."""
+    params = np.zeros(TABLES_AT)
+    for record in records:
+        put(params, record)
+    return params
 
 
 @jit
 def places_of(params, row):
     """The loop detector's ring buffer (places_slots, 3) in a robot's ``state`` row."""
-    size = int(params[PLACES_SLOTS])
+    size = int(params[PARAM.places_slots])
     return row[PLACES_AT:PLACES_AT + 3 * size].reshape(size, 3)
 
 
 @jit
 def points_of(params, row):
     """The obstacle points (points_slots, 2) in a robot's ``state`` row."""
-    at, size = PLACES_AT + 3 * int(params[PLACES_SLOTS]), int(params[POINTS_SLOTS])
+    at, size = PLACES_AT + 3 * int(params[PARAM.places_slots]), int(params[PARAM.points_slots])
     return row[at:at + 2 * size].reshape(size, 2)
 
 
 @jit
 def cells_of(params, row):
     """The hash set of the points' cells (cell_slots,) in a robot's ``state`` row."""
-    at = PLACES_AT + 3 * int(params[PLACES_SLOTS]) + 2 * int(params[POINTS_SLOTS])
-    return row[at:at + int(params[CELL_SLOTS])]
+    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.points_slots])
+    return row[at:at + int(params[PARAM.cell_slots])]
 
 
 def fresh_state(n: int, params: np.ndarray) -> np.ndarray:
     """The ``state`` of ``n`` robots at the start of an episode, sized by ``params``."""
-    width = PLACES_AT + 3 * int(params[PLACES_SLOTS]) + 2 * int(params[POINTS_SLOTS]) + int(params[CELL_SLOTS])
-    state = np.zeros((n, width))
-    state[:, [LAST_X, LAST_Y, T_BEST, ROUTE_X, ROUTE_Y, GUIDE_X, GUIDE_Y]] = np.nan
-    state[:, BEST], state[:, [PLANNED, GUIDE_PLANNED]] = np.inf, -np.inf
+    blocks = 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.points_slots]) + int(params[PARAM.cell_slots])
+    state = np.zeros((n, PLACES_AT + blocks))
+    state[:, :PLACES_AT] = _FRESH
     return state
 
 

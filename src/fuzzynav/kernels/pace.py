@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels.layers import MAX_SPEED, PACE_GOAL, PACE_HORIZON, PACE_ROOM, RADIUS, WHEELBASE
+from fuzzynav.kernels.layers import PARAM
 
 
 @jit
@@ -59,5 +59,6 @@ def pace(ranges, angles, max_range, steering, params, distance):
     """The speed of the module docstring for the steering α, ``distance`` m from the target, with
     the layers' ``params`` (:mod:`fuzzynav.kernels.layers`: the room is the body's radius plus
     ``pace_room``)."""
-    run = free_run(ranges, angles, max_range, math.tan(steering) / params[WHEELBASE], params[RADIUS] + params[PACE_ROOM])
-    return min(params[MAX_SPEED], run / params[PACE_HORIZON], distance / params[PACE_GOAL])
+    run = free_run(ranges, angles, max_range, math.tan(steering) / params[PARAM.wheelbase],
+                   params[PARAM.radius] + params[PARAM.pace_room])
+    return min(params[PARAM.max_speed], run / params[PARAM.pace_horizon], distance / params[PARAM.pace_goal])

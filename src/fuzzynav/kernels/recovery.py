@@ -12,30 +12,7 @@ import math
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.jit import jit
 from fuzzynav.kernels import sightings, ts0
-from fuzzynav.kernels.layers import (
-    BACK,
-    BACK_DISTANCE,
-    BACK_SPEED,
-    BACK_STEERING,
-    FLIP,
-    HEADING,
-    LANE,
-    LAST_X,
-    LAST_Y,
-    MARGIN,
-    MAX_REVERSE_SPEED,
-    NO_PHASE,
-    PHASE,
-    RADIUS,
-    RECOVERY_TIME,
-    START_X,
-    START_Y,
-    T_RECOVERY,
-    TURN,
-    TURN_ANGLE,
-    V_BACK,
-    V_TURN,
-)
+from fuzzynav.kernels.layers import BACK, NO_PHASE, PARAM, STATE, TURN
 
 LANE_HALF = math.radians(31)  # the rays that must read the lane free to end the turn early
 
@@ -65,13 +42,15 @@ def start(state, params, tables, seen, pose, goal_bearing, cap, t):
     points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
     left, right = sightings.side_room(points, count, x, y, theta, cap)
     steering = ts0.evaluate(tables, 0, left - right, goal_bearing, 0.0)[0]
-    again = state[LAST_X] == state[LAST_X] and math.hypot(x - state[LAST_X], y - state[LAST_Y]) < 1.0
-    state[FLIP] = (1.0 - state[FLIP]) if again else 0.0
-    if state[FLIP]:
+    again = (state[STATE.last_x] == state[STATE.last_x]
+             and math.hypot(x - state[STATE.last_x], y - state[STATE.last_y]) < 1.0)
+    state[STATE.flip] = (1.0 - state[STATE.flip]) if again else 0.0
+    if state[STATE.flip]:
         steering = -steering if abs(steering) > 1e-9 else ALPHA_MAX * (1.0 if goal_bearing >= 0 else -1.0)
-    state[LAST_X], state[LAST_Y] = x, y
-    state[PHASE], state[START_X], state[START_Y], state[T_RECOVERY] = BACK, x, y, t
-    state[BACK_STEERING], state[BACK_SPEED] = steering, -min(params[V_BACK], params[MAX_REVERSE_SPEED])
+    state[STATE.last_x], state[STATE.last_y] = x, y
+    state[STATE.phase], state[STATE.start_x], state[STATE.start_y], state[STATE.t_recovery] = BACK, x, y, t
+    state[STATE.back_steering] = steering
+    state[STATE.back_speed] = -min(params[PARAM.v_back], params[PARAM.max_reverse_speed])
 
 
 @jit
@@ -79,29 +58,31 @@ def command(state, params, seen, pose, ranges, angles, dt, t):
     """(moving, α, V, phase) of this step of the manoeuvre at ``pose`` among the remembered points
     ``seen`` (:class:`~fuzzynav.kernels.records.Pose`, :class:`~fuzzynav.kernels.records.Sightings`);
     ``moving`` is False when it has ended (the navigator takes over). Backing ends after
-    ``back_distance`` or when the next step would not be safe; the turn at full lock the other way (only after an arc) ends after
+    ``back_distance`` or when the next step would not be safe; the turn at full lock the other way
+    (only after an arc) ends after
     ``turn_angle``, when the rays within ±31° read the lane free, or when not safe; the whole
     manoeuvre after ``recovery_time``."""
     points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
-    if t - state[T_RECOVERY] > params[RECOVERY_TIME]:
-        state[PHASE] = NO_PHASE
-    if state[PHASE] == BACK:
-        backed = math.hypot(x - state[START_X], y - state[START_Y])
-        if backed < params[BACK_DISTANCE] and safe(params, points, count, x, y, theta, state[BACK_SPEED], dt):
-            return True, state[BACK_STEERING], state[BACK_SPEED], BACK
-        state[PHASE] = TURN if abs(state[BACK_STEERING]) > ALPHA_MAX / 4 else NO_PHASE
-        state[HEADING] = theta
-    if state[PHASE] == TURN:
-        turned = abs(remainder(theta - state[HEADING], math.tau))
-        steering = -math.copysign(ALPHA_MAX, state[BACK_STEERING])
+    if t - state[STATE.t_recovery] > params[PARAM.recovery_time]:
+        state[STATE.phase] = NO_PHASE
+    if state[STATE.phase] == BACK:
+        backed = math.hypot(x - state[STATE.start_x], y - state[STATE.start_y])
+        if backed < params[PARAM.back_distance] and safe(params, points, count, x, y, theta,
+                                                          state[STATE.back_speed], dt):
+            return True, state[STATE.back_steering], state[STATE.back_speed], BACK
+        state[STATE.phase] = TURN if abs(state[STATE.back_steering]) > ALPHA_MAX / 4 else NO_PHASE
+        state[STATE.heading] = theta
+    if state[STATE.phase] == TURN:
+        turned = abs(remainder(theta - state[STATE.heading], math.tau))
+        steering = -math.copysign(ALPHA_MAX, state[STATE.back_steering])
         lane_free = True
         for i in range(angles.shape[0]):
-            if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[LANE]:
+            if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[PARAM.lane]:
                 lane_free = False
-        if turned < params[TURN_ANGLE] and not lane_free and safe(params, points, count, x, y, theta,
-                                                                   params[V_TURN], dt):
-            return True, steering, params[V_TURN], TURN
-        state[PHASE] = NO_PHASE
+        if turned < params[PARAM.turn_angle] and not lane_free and safe(params, points, count, x, y, theta,
+                                                                   params[PARAM.v_turn], dt):
+            return True, steering, params[PARAM.v_turn], TURN
+        state[STATE.phase] = NO_PHASE
     return False, 0.0, 0.0, NO_PHASE
 
 
@@ -112,4 +93,5 @@ def safe(params, points, count, x, y, theta, speed, dt):
     no nearer to them than now (and clear of them)."""
     now = sightings.clearance(points, count, x, y)
     after = sightings.clearance(points, count, x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta))
-    return after >= params[RADIUS] + params[MARGIN] or (after >= now and after > params[RADIUS] + 0.01)
+    radius = params[PARAM.radius]
+    return after >= radius + params[PARAM.margin] or (after >= now and after > radius + 0.01)

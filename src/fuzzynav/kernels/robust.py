@@ -15,27 +15,7 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import escape, guidance, navigators, pace, recovery, sightings
-from fuzzynav.kernels.layers import (
-    ACTIVE,
-    COUNT,
-    ESCAPE,
-    GROW,
-    GUIDE,
-    MAX_REVERSE_SPEED,
-    N_LABELS,
-    NO_PHASE,
-    ON,
-    PACE,
-    PHASE,
-    RADIUS,
-    RECOVERY,
-    STOP_WAIT,
-    STOPPED,
-    TABLES_AT,
-    cells_of,
-    places_of,
-    points_of,
-)
+from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE, TABLES_AT, cells_of, places_of, points_of
 from fuzzynav.kernels.motion import wrap
 from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
 
@@ -47,58 +27,58 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     :class:`~fuzzynav.kernels.records.Layers`: the layers' parameters and the robot's state row,
     :mod:`fuzzynav.kernels.layers`)."""
     p, state = layer.params, layer.state
-    if p[ON] == 0.0:
+    if p[PARAM.on] == 0.0:
         return navigators.act_one(navigator, cstate, memory, robot, seen, dt)
     x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
     ranges, angles, max_range, d_o, b_o = seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o
     points = points_of(p, state)
     pose = Pose(x, y, theta)
-    count = sightings.see(points, cells_of(p, state), int(state[COUNT]), pose, seen)
-    state[COUNT] = count
+    count = sightings.see(points, cells_of(p, state), int(state[STATE.count]), pose, seen)
+    state[STATE.count] = count
     remembered = Sightings(points, count)
     if count + ranges.shape[0] + 1 > points.shape[0]:  # the next step could fill the slots
-        p[GROW] = 1.0
+        p[PARAM.grow] = 1.0
     distance = math.hypot(tx - x, ty - y)
     bearing = wrap(math.atan2(ty - y, tx - x) - theta)
     aim_x, aim_y, following = tx, ty, False
-    if p[ESCAPE] != 0.0:
-        if state[ACTIVE] != 0.0 and (escape.should_leave(state, p, distance, bearing, ranges, angles)
+    if p[PARAM.escape] != 0.0:
+        if state[STATE.active] != 0.0 and (escape.should_leave(state, p, distance, bearing, ranges, angles)
                                      or escape.timed_out(state, p, t)):
             escape.stop(state, not escape.timed_out(state, p, t))
             escape.forget_places(state)
             guidance.drop(state)
         if escape.circling(state, places_of(p, state), p, t, x, y, distance) and (
-                p[RECOVERY] == 0.0 or state[PHASE] == NO_PHASE):
+                p[PARAM.recovery] == 0.0 or state[STATE.phase] == NO_PHASE):
             escape.start(state, t, distance, b_o)
             escape.forget_places(state)
             guidance.drop(state)
-        if state[ACTIVE] != 0.0:
+        if state[STATE.active] != 0.0:
             following = True
-            aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[RADIUS])
-    if p[GUIDE] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, remembered, Robot(x, y, theta, robot.v, aim_x, aim_y), t, p[RADIUS])
+            aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[PARAM.radius])
+    if p[PARAM.guide] != 0.0:
+        aim_x, aim_y = guidance.aim(state, p, remembered, Robot(x, y, theta, robot.v, aim_x, aim_y), t, p[PARAM.radius])
     steering, speed, code = navigators.act_one(navigator, cstate, memory, Robot(x, y, theta, robot.v, aim_x, aim_y),
                                                seen, dt)
-    if p[PACE] != 0.0 and speed > 0.0:
+    if p[PARAM.pace] != 0.0 and speed > 0.0:
         faster = pace.pace(ranges, angles, max_range, steering, p, distance)
         if faster > speed and navigators.safety_stop(navigator.params, memory, x, y, theta, faster, dt) > 0.0:
             speed = faster
-    labels = int(p[N_LABELS])
+    labels = int(p[PARAM.n_labels])
     if following:
         code = labels + 2
-    if p[GUIDE] != 0.0 and state[PHASE] == NO_PHASE:
+    if p[PARAM.guide] != 0.0 and state[STATE.phase] == NO_PHASE:
         moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt)
         if moving:
             return a, u, labels + (3 if u < 0 else 4)
-    if p[RECOVERY] == 0.0 or p[MAX_REVERSE_SPEED] <= 0:
+    if p[PARAM.recovery] == 0.0 or p[PARAM.max_reverse_speed] <= 0:
         return steering, speed, code
-    if state[PHASE] != NO_PHASE:
+    if state[STATE.phase] != NO_PHASE:
         moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
             return a, u, labels + phase - 1
-    state[STOPPED] = state[STOPPED] + dt if speed == 0.0 and distance > 0.5 else 0.0
-    if state[STOPPED] >= p[STOP_WAIT] - 1e-9:
-        state[STOPPED] = 0.0
+    state[STATE.stopped] = state[STATE.stopped] + dt if speed == 0.0 and distance > 0.5 else 0.0
+    if state[STATE.stopped] >= p[PARAM.stop_wait] - 1e-9:
+        state[STATE.stopped] = 0.0
         recovery.start(state, p, p[TABLES_AT:], remembered, pose, bearing, max_range, t)
         moving, a, u, phase = recovery.command(state, p, remembered, pose, ranges, angles, dt, t)
         if moving:
@@ -123,4 +103,4 @@ def rehash_all(params, state):
     """Fill every robot's hash set of cells again (after its point slots grew)."""
     for n in range(state.shape[0]):
         row = state[n]
-        sightings.rehash(points_of(params, row), int(row[COUNT]), cells_of(params, row))
+        sightings.rehash(points_of(params, row), int(row[STATE.count]), cells_of(params, row))

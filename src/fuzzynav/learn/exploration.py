@@ -27,6 +27,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.schedules import (
     SCHEDULES,
@@ -152,8 +153,7 @@ class Softmax(Policy):
     kind: ClassVar[str] = "softmax"
 
     def __post_init__(self):
-        if not self.offset > 0:
-            raise InputError(f"softmax offset must be > 0, got {self.offset}", field="offset")
+        validation.positive(self.offset, field="offset")
 
     def probabilities(self, q, t=0):
         q = np.asarray(q, dtype=float)
@@ -174,8 +174,7 @@ class Boltzmann(Policy):
     def probabilities(self, q, t=0):
         q = np.asarray(q, dtype=float)
         tau = float(self.tau(t))
-        if not tau > 0:
-            raise InputError(f"Boltzmann temperature must be > 0, got {tau}", field="tau")
+        validation.positive(tau, field="tau")
         p = np.exp((q - q.max(axis=-1, keepdims=True)) / tau)
         return p / p.sum(axis=-1, keepdims=True)
 

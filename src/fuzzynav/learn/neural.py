@@ -31,6 +31,7 @@ import numpy as np
 from sklearn.exceptions import ConvergenceWarning
 from sklearn.neural_network import MLPRegressor
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.estimator_checks import check_format
 
@@ -132,8 +133,7 @@ class NeuralInverseModel:
             raise InputError("the output layer must have one neuron", source=source, field=f"weights[{len(Ws) - 1}]")
         curve = document.get("loss_curve", [])
         iterations = document.get("iterations", 0)
-        if not isinstance(iterations, int) or isinstance(iterations, bool) or iterations < 0:
-            raise InputError(f"must be an integer >= 0, got {iterations!r}", source=source, field="iterations")
+        validation.integer(iterations, source, "iterations", lo=0)
         return cls(Ws, bs, [float(v) for v in _finite(curve, 1, "loss_curve", source)] if curve else [], iterations)
 
 
@@ -205,8 +205,7 @@ def generalized_learning_dataset(
     ``random_state``. Returns ``(errors (N, k), commands (N,))``: the inverse model's inputs and targets.
     """
     if commands is None:
-        if isinstance(n_samples, bool) or not isinstance(n_samples, numbers.Integral) or n_samples < 2:
-            raise InputError(f"must be an integer >= 2, got {n_samples!r}", field="n_samples")
+        validation.integer(n_samples, field="n_samples", lo=2)
         lo, hi = (float(v) for v in command_range)
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
             raise InputError(f"must be finite with lo < hi, got {command_range!r}", field="command_range")

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 
 THESIS_SENSOR_ANGLES = np.deg2rad([0.0, -30.0, 30.0, -60.0, 60.0, -90.0, 90.0])
@@ -53,12 +54,9 @@ class SensorRing:
         angles = np.asarray(self.angles, dtype=float).reshape(-1)
         if angles.size == 0 or not np.all(np.isfinite(angles)):
             raise InputError("needs at least one finite angle", field="sensors.angles")
-        if not np.isfinite(self.max_range) or self.max_range <= 0:
-            raise InputError(f"must be > 0, got {self.max_range!r}", field="sensors.max_range")
-        if not np.isfinite(self.noise_std) or self.noise_std < 0:
-            raise InputError(f"must be ≥ 0, got {self.noise_std!r}", field="sensors.noise_std")
-        if not np.isfinite(self.beam_width) or not 0.0 <= self.beam_width < np.pi:
-            raise InputError(f"must be in [0, π), got {self.beam_width!r}", field="sensors.beam_width")
+        validation.positive(self.max_range, field="sensors.max_range")
+        validation.number(self.noise_std, field="sensors.noise_std", lo=0.0)
+        validation.number(self.beam_width, field="sensors.beam_width", lo=0.0, hi=np.pi, hi_open=True)
         object.__setattr__(self, "angles", angles)
 
     @property

@@ -17,6 +17,7 @@ them.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -24,7 +25,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.jit import jit
 from fuzzynav.kernels import layers, step as step_kernel
 from fuzzynav.kernels.motion import RADIUS
-from fuzzynav.kernels.records import Robots, StepNavigator, Traffic
+from fuzzynav.kernels.records import Layers, Navigator, Robots, StepNavigator, Traffic
 
 OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE = range(6)  # columns of run_jobs' ``out``
 N_OUT = 6
@@ -33,9 +34,33 @@ INVALID = -2  # outcome of a job whose state became non-finite
 SLOTS = 64  # obstacle-point slots per sensor ray (+ 1) given to each job at first (the layers start at 16)
 
 
+class Population(NamedTuple):
+    """The navigator a generation tunes: its candidates' rule bases, and its constants per world."""
+
+    kind: int  # the navigator (a kernels.navigators code)
+    params: np.ndarray  # (W, P) its constants, sized for each world's robot and ring
+    tables: np.ndarray  # (C, T) each candidate's rule bases (kernels.ts0.pack)
+    memory_steps: int  # steps of its hit memory (kernels.guard)
+
+
+class Packed(NamedTuple):
+    """W worlds end to end: world ``w`` is ``setups[setup_at[w]:setup_at[w + 1]]`` (its step set-up,
+    :meth:`fuzzynav.sim.tasks.TaskState.setup`), ``scenes[scene_at[w]:scene_at[w + 1]]`` (its scene,
+    :mod:`fuzzynav.kernels.scene`) and ``starts[w]``."""
+
+    setups: np.ndarray
+    setup_at: np.ndarray  # (W + 1,) offsets
+    scenes: np.ndarray
+    scene_at: np.ndarray  # (W + 1,) offsets
+    starts: np.ndarray  # (W, 3) m, m, rad
+
+
 @jit
-def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, scene, start, out):
-    """Run one robot from ``start`` to the end of its episode; write its row of ``out``."""
+def _one(navigator, memory_steps, layer, setup, scene, start, out):
+    """Run one robot of ``navigator`` (:class:`~fuzzynav.kernels.records.Navigator`) with the
+    layers ``layer`` (:class:`~fuzzynav.kernels.records.Layers`: parameters and a fresh state
+    row) from ``start`` to the end of its episode; write its row of ``out``."""
+    kind, params, tables = navigator.kind, navigator.params, navigator.tables
     n_rays = int(setup[step_kernel.N_ANGLES])
     state = np.zeros((1, len(step_kernel.STATE_FIELDS)))
     state[0, :3] = start
@@ -44,9 +69,9 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
     cstate = np.zeros((1, 4), dtype=np.int64)
     cstate[0, 0] = -1
     memory = np.zeros((1, memory_steps, n_rays + 1, 3))
-    lp = layer_params.copy()
-    lstate = np.empty((1, layer_row.shape[0]))
-    lstate[0] = layer_row
+    lp = layer.params.copy()
+    lstate = np.empty((1, layer.state.shape[0]))
+    lstate[0] = layer.state
     radius = setup[RADIUS]
     gx, gy = setup[step_kernel.GOAL_X], setup[step_kernel.GOAL_Y]
     out[START_DISTANCE] = math.hypot(gx - start[0], gy - start[1])
@@ -61,7 +86,7 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
                                    Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status, True), None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
-        if lp[layers.GROW] != 0.0:
+        if lp[layers.PARAM.grow] != 0.0:
             out[OUTCOME] = OVERFLOW
             return
         if not (math.isfinite(state[0, step_kernel.X]) and math.isfinite(state[0, step_kernel.Y])):
@@ -75,16 +100,17 @@ def _one(kind, params, tables, memory_steps, layer_params, layer_row, setup, sce
 
 
 @jit
-def run_jobs(kind, params, tables, memory_steps, layer_params, layer_row, setups, setup_at, scenes, scene_at, starts,
-             job_candidate, job_world, out):
-    """Every job j: candidate ``job_candidate[j]`` (its ``tables`` row) on world ``job_world[j]``
-    (its ``params`` row, ``setups[setup_at[w]:setup_at[w + 1]]``, ``scenes[scene_at[w]:scene_at[w + 1]]``,
-    ``starts[w]``); ``out`` (J, :data:`N_OUT`) = outcome code, steps, least clearance of the body
-    (m), path length (m), distance left to the goal (m), start distance to the goal (m)."""
-    for j in range(job_candidate.shape[0]):
-        c, w = job_candidate[j], job_world[j]
-        _one(kind, params[w], tables[c], memory_steps, layer_params, layer_row,
-             setups[setup_at[w]:setup_at[w + 1]], scenes[scene_at[w]:scene_at[w + 1]], starts[w], out[j])
+def run_jobs(population, layer, worlds, jobs, out):
+    """Every job j = ``jobs[j]`` = (c, w): candidate c of ``population`` (:class:`Population`: its
+    ``tables`` row c, its ``params`` row w) on world w of ``worlds`` (:class:`Packed`), with the
+    layers ``layer`` (:class:`~fuzzynav.kernels.records.Layers`: parameters and a fresh state
+    row); ``out`` (J, :data:`N_OUT`) = outcome code, steps, least clearance of the body (m), path
+    length (m), distance left to the goal (m), start distance to the goal (m)."""
+    for j in range(jobs.shape[0]):
+        c, w = jobs[j, 0], jobs[j, 1]
+        _one(Navigator(population.kind, population.params[w], population.tables[c]), population.memory_steps,
+             layer, worlds.setups[worlds.setup_at[w]:worlds.setup_at[w + 1]],
+             worlds.scenes[worlds.scene_at[w]:worlds.scene_at[w + 1]], worlds.starts[w], out[j])
 
 
 class Worlds:
@@ -125,9 +151,8 @@ class Worlds:
         if len({len(p) for p in params}) != 1:
             raise InputError("the worlds' navigator parameters differ in size", field="--worlds")
         self.params = np.ascontiguousarray(params)
-        self.setups, self.setup_at = _concatenate(setups)
-        self.scenes, self.scene_at = _concatenate(scenes)
-        self.starts = np.ascontiguousarray([scenario.start for scenario in self.scenarios], dtype=float)
+        starts = np.ascontiguousarray([scenario.start for scenario in self.scenarios], dtype=float)
+        self.packed = Packed(*_concatenate(setups), *_concatenate(scenes), starts)
         self.n_rays = len(ring.angles)
         self.dt, self.max_time = np.asarray(self.dt), np.asarray(self.max_time)
 
@@ -137,9 +162,10 @@ class Worlds:
     def layer_row(self, slots: int) -> tuple[np.ndarray, np.ndarray]:
         """(layer params, a fresh layer state row) with ``slots`` obstacle-point slots per ray + 1."""
         params = self.layer_params.copy()
-        if params[layers.ON] != 0.0:
+        if params[layers.PARAM.on] != 0.0:
             points = slots * (self.n_rays + 1)
-            params[[layers.POINTS_SLOTS, layers.CELL_SLOTS, layers.GROW]] = points, 1 << (2 * points - 1).bit_length(), 0
+            at = layers.PARAM
+            params[[at.points_slots, at.cell_slots, at.grow]] = points, 1 << (2 * points - 1).bit_length(), 0
         return params, layers.fresh_state(1, params)[0]
 
     def run(self, tables: np.ndarray, jobs: np.ndarray) -> np.ndarray:
@@ -151,9 +177,8 @@ class Worlds:
         while len(todo):
             layer_params, row = self.layer_row(slots)
             part = np.zeros((len(todo), N_OUT))
-            run_jobs(self.kind, self.params, tables, self.memory_steps, layer_params, row, self.setups, self.setup_at,
-                     self.scenes, self.scene_at, self.starts, np.ascontiguousarray(jobs[todo, 0], dtype=np.int64),
-                     np.ascontiguousarray(jobs[todo, 1], dtype=np.int64), part)
+            run_jobs(Population(self.kind, self.params, tables, self.memory_steps), Layers(layer_params, row),
+                     self.packed, np.ascontiguousarray(jobs[todo], dtype=np.int64), part)
             out[todo] = part
             todo, slots = todo[part[:, OUTCOME] == OVERFLOW], 2 * slots
         return out

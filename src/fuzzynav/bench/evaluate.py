@@ -1,0 +1,103 @@
+"""One controller over generated worlds, summarised in memory (``fuzzynav evaluate``): success,
+collision and timeout rates.
+
+:func:`evaluate` runs one episode per world of :func:`fuzzynav.world.generate.generate_worlds`
+and summarises them: ``success_rate``, ``collision_rate``, ``timeout_rate``,
+``invalid_command_rate`` (fractions of the ``n`` worlds; the last counts episodes the simulator
+stopped on a NaN or infinite command, each with its ``invalid_command`` reason), ``mean_time_s``
+and ``mean_path_length_m`` over the successful episodes, plus the per-world outcomes. The
+controller is a registered name or a trained model file, built as a campaign builds its
+controllers (:func:`fuzzynav.bench.cells.controller_maker`); the rates are those of a campaign's
+summary (:func:`fuzzynav.bench.stats.rate`). With ``save_failures`` (a folder), each world not
+reached is written there as a scenario file with the plot of its episode (:func:`save_failure`),
+so ``fuzzynav run FILE`` reruns it.
+
+What it is beside a campaign (:mod:`fuzzynav.bench.campaign`): the same worlds, episodes and
+outcome rates, for one controller on one family and one seed, returned rather than written —
+no runs file, resume, workers, seeds, shortest paths (the path ratio, the BARN score) or
+confidence intervals; what it adds is a sensor ring chosen for every world, factory options
+and rule bases given as objects (the chapter IV experiments), and the failed worlds saved.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from fuzzynav import progress as progress_bars
+from fuzzynav.bench.cells import controller_maker
+from fuzzynav.bench.stats import rate
+from fuzzynav.robot.sensors import named_ring
+from fuzzynav.sim import metrics, run_episode
+from fuzzynav.sim.plants import DEFAULT_PLANT
+from fuzzynav.world.generate import generate_worlds
+
+
+def save_failure(folder: str | Path, scenario, trace, controllers: tuple[str, ...] = ()) -> Path:
+    """Write a failed world as ``folder/<world>.yaml`` (naming the built-in ``controllers``, for
+    ``fuzzynav demo --scenario FILE``) and the plot of the episode as ``folder/<world>.png``;
+    returns the scenario file."""
+    from fuzzynav.viz.trajectories import plot_episode
+    from fuzzynav.world.scenario_file import save_scenario
+
+    path = save_scenario(scenario, Path(folder) / f"{scenario.name}.yaml", controllers=controllers)
+    plot_episode(trace, scenario, path.with_suffix(".png"))
+    return path
+
+
+def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
+             progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
+             systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None,
+             options: dict | None = None, plant: str = DEFAULT_PLANT) -> dict:
+    """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given, and
+    the keyword ``options`` of its factory, e.g. ``layers=``) —
+    or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
+    sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
+    ``progress(i, outcome)`` is called after each world; ``plant`` moves the robot
+    (:mod:`fuzzynav.sim.plants`).
+
+    A model is loaded once and every episode runs a copy of it, as a registered controller is
+    built afresh per world (:class:`~fuzzynav.bench.cells.controller_maker`). A progress bar shows on a terminal
+    (:mod:`fuzzynav.progress`).
+    """
+    build = controller_maker(controller, model=model, systems=systems, options=options)
+    controller = build.name
+    ring = None if sensors is None else named_ring(sensors)
+    scenarios = generate_worlds(worlds, n, seed)
+    runs = []
+    bar = progress_bars.bar(total=len(scenarios), desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
+    for i, scenario in enumerate(scenarios):
+        trace = run_episode(scenario, build(), seed=seed, sensors=ring, plant=plant)
+        numbers = metrics(trace, scenario)
+        runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
+                                                    "min_clearance_m")})
+        if numbers["invalid_command"] is not None:
+            runs[-1]["invalid_command"] = numbers["invalid_command"]
+        if save_failures is not None and numbers["outcome"] != "reached":
+            named = () if model is not None else (controller,)
+            runs[-1]["saved"] = str(save_failure(save_failures, scenario, trace, named))
+        bar.update()
+        bar.set_postfix(reached=sum(r["outcome"] == "reached" for r in runs))
+        if progress is not None:
+            progress(i, runs[-1])
+    bar.close()
+    outcomes = [r["outcome"] for r in runs]
+    reached = np.array(outcomes) == "reached"
+    return {
+        "controller": controller,
+        "model": None if model is None else str(model),
+        "worlds": worlds,
+        "n": int(n),
+        "seed": int(seed),
+        "plant": plant,
+        "success_rate": rate(outcomes, "reached"),
+        "collision_rate": rate(outcomes, "collision"),
+        "timeout_rate": rate(outcomes, "timeout"),
+        "invalid_command_rate": rate(outcomes, "invalid_command"),
+        "mean_time_s": float(np.mean([r["time_s"] for r, ok in zip(runs, reached) if ok])) if reached.any() else None,
+        "mean_path_length_m": (float(np.mean([r["path_length_m"] for r, ok in zip(runs, reached) if ok]))
+                               if reached.any() else None),
+        "episodes": runs,
+    }
