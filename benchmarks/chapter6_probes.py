@@ -36,7 +36,7 @@ import numpy as np
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedWallFollower
 from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
-from fuzzynav.experiments.evaluation import evaluate_avoid, wall_course_scenario
+from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.tasks.common import STEERING3
 from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
@@ -68,7 +68,8 @@ def wall_bound(sensing: str, sweeps: int) -> dict:
     """Coordinate descent of the per-rule interpretations on the 100 evaluation courses."""
     handmade, _, alpha, speed = wall_parts()
     rng = np.random.default_rng(777)
-    courses = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+    drawn = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+    courses = [course for course in drawn if not starts_in_a_wall(course)]  # as evaluate_wall
 
     def collisions(choice):
         system = rule_table(handmade, [("alpha", alpha, choice[0]), ("v", speed, choice[1])], name="probe",
