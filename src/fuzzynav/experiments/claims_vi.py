@@ -64,11 +64,11 @@ def relative_over_seeds(key: str, runs: list[dict]) -> Check:
     exceeds the faster arm's. The value lists both arms per seed and their medians."""
     name, slow, fast = RELATIVE[key]
     arms = [(slow(numbers), fast(numbers)) for numbers in runs]
-    medians = [float(np.median([_episodes(*arm[k]) for arm in arms])) if arms else None for k in (0, 1)]
+    medians = [float(np.median([_episodes(*arm[k]) for arm in arms])) for k in (0, 1)] if arms else []
     return Check(f"{name}, median of {len(arms)} seeds",
                  {"slower": [arm[0][0] for arm in arms], "faster": [arm[1][0] for arm in arms],
                   "medians": medians},
-                 "the first's median exceeds the second's", bool(arms) and medians[0] > medians[1])
+                 "the first's median exceeds the second's", bool(medians) and medians[0] > medians[1])
 
 
 def _success(numbers, bound: float = 0.95) -> Check:
