@@ -14,8 +14,14 @@ starting from the hand-made choice: an optimistic bound of what any learner choo
 same interpretations, reading the same distances, can reach on those courses. Prints one line
 per tried variable, then the best table as JSON.
 
+``relative ID DIR…``: a relative claim of §VI.5.1.1 (``fig-VI-8``: FQL faster than tabular
+Q-learning; ``fig-VI-13``: 35 rules slower than 15; ``fig-VI-16``: traces faster) over the seeds
+whose ``fuzzynav reproduce ID --seed S --out DIR`` numbers are in the DIRs: the check of
+:func:`fuzzynav.experiments.claims_vi.relative_over_seeds` (medians), as JSON.
+
     python benchmarks/chapter6_probes.py avoid-rules avoid-4.json
     python benchmarks/chapter6_probes.py wall-bound rays --sweeps 2
+    python benchmarks/chapter6_probes.py relative fig-VI-13 out-0 out-1 out-2 out-3 out-4
 """
 
 from __future__ import annotations
@@ -23,12 +29,14 @@ from __future__ import annotations
 import argparse
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedWallFollower
-from fuzzynav.experiments.evaluation import evaluate_avoid, wall_course_scenario
+from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
+from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.tasks.common import STEERING3
 from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
@@ -60,7 +68,8 @@ def wall_bound(sensing: str, sweeps: int) -> dict:
     """Coordinate descent of the per-rule interpretations on the 100 evaluation courses."""
     handmade, _, alpha, speed = wall_parts()
     rng = np.random.default_rng(777)
-    courses = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+    drawn = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+    courses = [course for course in drawn if not starts_in_a_wall(course)]  # as evaluate_wall
 
     def collisions(choice):
         system = rule_table(handmade, [("alpha", alpha, choice[0]), ("v", speed, choice[1])], name="probe",
@@ -98,9 +107,15 @@ def main() -> None:
     wall = sub.add_parser("wall-bound")
     wall.add_argument("sensing", choices=("rays", "modules"))
     wall.add_argument("--sweeps", type=int, default=2)
+    relative = sub.add_parser("relative")
+    relative.add_argument("id", choices=sorted(RELATIVE))
+    relative.add_argument("dirs", nargs="+", help="the --out DIR of one reproduce run per seed")
     args = parser.parse_args()
     if args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
+    elif args.probe == "relative":
+        runs = [json.loads((Path(d) / args.id / f"{args.id}.json").read_text()) for d in args.dirs]
+        print(json.dumps(relative_over_seeds(args.id, runs).as_json()))
     else:
         print(json.dumps(wall_bound(args.sensing, args.sweeps)))
 

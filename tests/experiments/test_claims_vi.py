@@ -6,6 +6,7 @@ import pytest
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.experiments.chapter6 import rank_correlation
 from fuzzynav.experiments.claims import NOT_REPRODUCED, PARTLY, REPRODUCED
+from fuzzynav.experiments.claims_vi import relative_over_seeds
 
 
 def verdict(key, numbers):
@@ -39,6 +40,21 @@ def test_relative_claims_need_the_thesis_order():
     fixed = {"converged_at": {"steering": 200}, "episodes": {"steering": 1000}, "trajectories": ["reached"]}
     assert verdict("fig-VI-8", {**fixed, "q_learning": {"converged_at": 900, "episodes": 1500}})[0] == REPRODUCED
     assert verdict("fig-VI-8", {**fixed, "q_learning": {"converged_at": 100, "episodes": 1500}})[0] == PARTLY
+
+
+def test_relative_claims_over_seeds_compare_medians_not_the_best_seed():
+    def runs(pairs):  # fig-VI-13: (35 rules, 15 rules) episodes to converge per seed
+        return [goal_numbers(big, 3000, rules_15={"converged_at": small, "episodes": 2250}) for big, small in pairs]
+    slower = relative_over_seeds("fig-VI-13", runs([(900, 600), (1200, 700), (500, 650), (800, 500), (1000, 640)]))
+    assert slower.passed and slower.value["medians"] == [900.0, 640.0]
+    once = relative_over_seeds("fig-VI-13", runs([(323, 522), (135, 698), (955, 635), (400, 501), (300, 654)]))
+    assert not once.passed and once.value["slower"] == [323, 135, 955, 400, 300]  # slower on one seed of five
+    unconverged = relative_over_seeds("fig-VI-13", runs([(None, 600), (None, 700), (500, 650)]))
+    assert unconverged.passed and unconverged.value["medians"][0] == 3001  # not converged: budget + 1
+    fixed = {"converged_at": {"steering": 480}, "episodes": {"steering": 1000}, "trajectories": ["reached"]}
+    tabular = [{**fixed, "q_learning": {"converged_at": e, "episodes": 1500}} for e in (175, 222, 95)]
+    assert not relative_over_seeds("fig-VI-8", tabular).passed
+    assert not relative_over_seeds("fig-VI-16", []).passed  # no seed, no claim
 
 
 def avoid_numbers(**changes):
