@@ -87,26 +87,15 @@ def unit_interval(value, field: str) -> float:
 
 
 @dataclass(frozen=True)
-class VisitDecay:
-    """``max(floor, start · rate**visits)`` of each rule's own visits: an exploration rate ε that
-    decays with how often *that rule* was fired (its fuzzy visits Σ w summed over its candidates),
-    not with the episode, so that a rule met rarely keeps exploring its candidates as long as it
-    has been tried little, while the frequent rules settle early. Same form as
-    :class:`ExponentialDecay`, counted per rule (the "ε-greedy par exemple" of §VI.4 leaves ε's
-    schedule open)."""
+class VisitDecay(ExponentialDecay):
+    """:class:`ExponentialDecay` of each rule's own visits, ``max(floor, start · rate**visits)``:
+    an exploration rate ε that decays with how often *that rule* was fired (its fuzzy visits Σ w
+    summed over its candidates), not with the episode, so that a rule met rarely keeps exploring
+    its candidates as long as it has been tried little, while the frequent rules settle early
+    (the "ε-gloutonne par exemple" of §VI.4 leaves ε's schedule open)."""
 
-    start: float
-    rate: float
-    floor: float = 0.0
     kind: ClassVar[str] = "visit_exponential"
     per_visit: ClassVar[bool] = True
-
-    def __post_init__(self):
-        if not 0.0 < self.rate <= 1.0:
-            raise InputError(f"decay rate must be in (0, 1], got {self.rate}", field="rate")
-
-    def __call__(self, visits):
-        return np.maximum(self.floor, self.start * np.power(self.rate, np.asarray(visits, dtype=float)))
 
 
 Schedule = Constant | ExponentialDecay | InverseVisits | VisitDecay
