@@ -37,18 +37,3 @@ def test_fig_vi_29_hand_made_follower_hits_both_corners_and_the_learned_one_read
     assert numbers["evaluation"]["wall-follow"]["collisions"] >= 1
     assert numbers["sensing"] == "rays"
     assert len(numbers["rules"]) == 8
-
-
-def test_fig_vi_22_and_fig_vi_24_of_one_run_train_the_avoider_once(tmp_path, monkeypatch):
-    """Both figures show the same model (trained from the seed alone): one training per out
-    directory, seed and prior in a process; another seed or directory trains again."""
-    from fuzzynav.experiments import chapter6
-
-    trained = []
-    monkeypatch.setattr(chapter6, "_AVOID_RUNS", {})
-    monkeypatch.setattr(chapter6, "_train_avoid_model", lambda *key: trained.append(key) or key)
-    first = chapter6._avoid_model(tmp_path, False, 3)
-    assert chapter6._avoid_model(tmp_path, False, 3) is first and len(trained) == 1
-    chapter6._avoid_model(tmp_path, False, 4)
-    chapter6._avoid_model(tmp_path / "other", False, 3)
-    assert len(trained) == 3

@@ -10,7 +10,6 @@ from fuzzynav.learn.schedules import (
     Constant,
     ExponentialDecay,
     InverseVisits,
-    VisitDecay,
     as_schedule,
     schedule_from_dict,
     schedule_to_dict,
@@ -81,10 +80,7 @@ def test_schedules():
     # eq III.24: β = 1 / (1 + visits)
     assert InverseVisits()(np.array([0, 1, 3])).tolist() == pytest.approx([1.0, 0.5, 0.25])
     assert InverseVisits(power=0.5 + 1e-9, floor=0.2)(99) == pytest.approx(0.2)
-    assert VisitDecay(0.3, 0.5, 0.05)(np.array([0.0, 1.0, 50.0])).tolist() == pytest.approx([0.3, 0.15, 0.05])
-    assert VisitDecay.per_visit and not ExponentialDecay.per_visit
-    for schedule in (Constant(0.1), ExponentialDecay(0.5, 0.99, 0.01), InverseVisits(2.0, 0.8),
-                     VisitDecay(0.3, 0.99, 0.02)):
+    for schedule in (Constant(0.1), ExponentialDecay(0.5, 0.99, 0.01), InverseVisits(2.0, 0.8)):
         assert schedule_from_dict(schedule_to_dict(schedule)) == schedule
     assert as_schedule(0.2) == Constant(0.2)
     with pytest.raises(InputError, match="rate"):
@@ -97,22 +93,8 @@ def test_schedules():
         schedule_from_dict({"kind": "cosine"})
 
 
-def test_epsilon_per_row_from_each_rows_visits():
-    """ε of VisitDecay: every row explores by its own visit count — a row never visited at ε = 1
-    (uniform), a well-visited one at the floor (greedy but for ε / N); the episode clock is unused."""
-    policy = EpsilonGreedy(VisitDecay(1.0, 0.5, 0.0))
-    assert policy.per_visit and not EpsilonGreedy(0.1).per_visit and not Greedy().per_visit
-    q = np.broadcast_to(Q_ROW, (2, Q_ROW.size))
-    visits = np.array([0.0, 60.0])  # ε = 1 and ε = 2^-60 ≈ 0
-    np.testing.assert_allclose(policy.probabilities(q, visits), [[0.25] * 4, [0, 1, 0, 0]], atol=1e-12)
-    choices = policy.choose(q, np.random.default_rng(4), visits, batch=DRAWS)
-    assert choices.shape == (DRAWS, 2) and np.all(choices[:, 1] == 1)
-    assert_distribution(np.bincount(choices[:, 0], minlength=4), [0.25] * 4)
-
-
 def test_policy_round_trip_and_bad_parameters():
-    for policy in (Greedy(), EpsilonGreedy(ExponentialDecay(0.5, 0.99)), EpsilonGreedy(VisitDecay(0.3, 0.99, 0.02)),
-                   Softmax(0.5), Boltzmann(2.0)):
+    for policy in (Greedy(), EpsilonGreedy(ExponentialDecay(0.5, 0.99)), Softmax(0.5), Boltzmann(2.0)):
         copy = policy_from_dict(policy.to_dict())
         assert type(copy) is type(policy) and copy.to_dict() == policy.to_dict()
     with pytest.raises(InputError, match="offset"):

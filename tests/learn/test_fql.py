@@ -8,7 +8,7 @@ from fuzzynav.fuzzy import FuzzySystem, Singleton, Variable, strong_partition
 from fuzzynav.learn.checkpoint import train_loop
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner, extract_system
-from fuzzynav.learn.schedules import InverseVisits, VisitDecay
+from fuzzynav.learn.schedules import InverseVisits
 
 LABELS = ("NG", "NP", "Z", "PP", "PG")
 PEAKS = (-1.0, -0.5, 0.0, 0.5, 1.0)
@@ -93,26 +93,6 @@ def test_one_step_update_is_algorithm_VI_1():
     delta = 0.2 * (1.0 + 0.5 * v_star - q_sa)
     np.testing.assert_allclose(learner.q[0, 0], [[0.0, 1.0 + delta * 0.25], [3.0 + delta * 0.75, 0.0]])
     np.testing.assert_allclose(learner.visits[0, 0], [[0.0, 0.25], [0.75, 0.0]])
-
-
-@pytest.mark.parametrize("learners", [1, 4])
-def test_a_per_visit_epsilon_explores_each_rule_by_its_own_visits(learners):
-    """ε of VisitDecay is evaluated at each rule's fuzzy visits: after training at x = 1 only, the
-    rule PG (visited) acts greedily while NG (never fired) still chooses uniformly — whatever
-    the episode counter says."""
-    learner = FuzzyQLearner(line_premise(), MOVES, gamma=0.8, alpha=0.5, n_learners=learners,
-                            policy=EpsilonGreedy(VisitDecay(1.0, 0.5, 0.0)))
-    rng, at = np.random.default_rng(5), lambda x: np.full((4, 1), x)
-    learner.begin(at(1.0), rng)
-    for _ in range(80):
-        learner.step(np.full(4, -1.0), at(1.0), np.zeros(4, bool), rng)
-    learner.q[..., 4, :] = [-1.0, 0.0, -1.0]  # PG's greedy conclusion: stay (0)
-    learner.episode = 0
-    assert learner.visits[..., 4, :].sum() >= 80 and learner.visits[..., 0, :].sum() == 0
-    pg = np.concatenate([learner.begin(at(1.0), rng)[:, 0] for _ in range(200)])
-    ng = np.concatenate([learner.begin(at(-1.0), rng)[:, 0] for _ in range(200)])
-    assert np.all(pg == 0.0)
-    assert sorted(np.unique(ng)) == sorted(MOVES) and np.abs(np.mean(ng == 0.25) - 1 / 3) < 0.06
 
 
 def test_shared_learner_from_parallel_episodes():

@@ -12,7 +12,7 @@ from fuzzynav.cli import main
 from fuzzynav.experiments.chapter6 import initial_avoider
 from fuzzynav.experiments.evaluation import evaluate_avoid
 from fuzzynav.learn.envs import GridPremise
-from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
+from fuzzynav.learn.schedules import InverseVisits
 from fuzzynav.learn.tasks import common, fql_avoid
 from fuzzynav.learn.tasks.common import TrainRequest
 
@@ -23,13 +23,8 @@ def test_one_robot_zero_q_and_best_quality_unless_parallel_is_asked(tmp_path):
     assert common.extraction_tolerance(1, 0.05) == 0.0 and common.extraction_tolerance(50, 0.05) == 0.05
     learner = common.fql_learner(GridPremise(fql_avoid.avoid_template()), np.zeros((16, 3)), batch=1)
     assert np.all(learner.q == 0.0) and isinstance(learner.alpha, InverseVisits) and learner.alpha.floor == 0.01
-    assert learner.policy.epsilon == ExponentialDecay(*common.THESIS["epsilon"])  # the tasks' ε: per episode
     steering = next(fql_avoid.fql_avoid_phases(tmp_path / "a.json", 10, batch=1, prior="none"))
     assert steering.env.batch == 1 and tuple(steering.learner.prior[0]) == (1,) * 16  # Z: nothing chosen
-    # the avoider's own ε: each rule's from its visits, so that its rare rules keep exploring
-    assert steering.learner.policy.epsilon == fql_avoid.AVOID_EPSILON and steering.learner.policy.per_visit
-    parallel = next(fql_avoid.fql_avoid_phases(tmp_path / "b.json", 20, batch=10, prior="none"))
-    assert not parallel.learner.policy.per_visit  # the batch learner keeps its per-batch schedule
 
 
 def test_the_initial_tables_of_the_priors():

@@ -264,21 +264,9 @@ class _EpisodeRecorder:
         return out
 
 
-_AVOID_RUNS: dict = {}  # (out_dir, quick, seed, prior) → _avoid_model's result, trained once per process
-
-
 def _avoid_model(out_dir, quick, seed, prior: str = "none"):
     """Train fql-avoid under the thesis' protocol from ``prior``; returns the request, the
-    learned navigator, the train summary and the paths of training episodes 1 and 20.
-    fig-VI-22 and fig-VI-24 of one ``reproduce`` run share the model (the same training would
-    give the same one: it depends on the seed only)."""
-    key = (str(Path(out_dir).resolve()), bool(quick), int(seed), prior)
-    if key not in _AVOID_RUNS:
-        _AVOID_RUNS[key] = _train_avoid_model(out_dir, quick, seed, prior)
-    return _AVOID_RUNS[key]
-
-
-def _train_avoid_model(out_dir, quick, seed, prior: str):
+    learned navigator, the train summary and the paths of training episodes 1 and 20."""
     request = _request(out_dir, f"fql-avoid-{prior}", 400 if quick else None, seed, prior=prior)
     recorders = {}
 

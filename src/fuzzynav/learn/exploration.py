@@ -81,11 +81,6 @@ class Policy(ABC):
 
     kind: ClassVar[str] = "policy"
 
-    @property
-    def per_visit(self) -> bool:
-        """Whether ``t`` is each row's visit count rather than the episode index (False here)."""
-        return False
-
     @abstractmethod
     def probabilities(self, q: np.ndarray, t: float = 0) -> np.ndarray:
         """Probability of each action, same shape as ``q``."""
@@ -132,28 +127,20 @@ class EpsilonGreedy(Policy):
     def __post_init__(self):
         self.epsilon = as_schedule(self.epsilon, "epsilon")
 
-    @property
-    def per_visit(self) -> bool:
-        """True when ε is a function of each row's visits (:class:`~.schedules.VisitDecay`): ``t``
-        is then an array of visit counts, one per row of ``q``, and each row has its own ε."""
-        return self.epsilon.per_visit
-
     def probabilities(self, q, t=0):
         q = np.asarray(q, dtype=float)
-        eps = np.asarray(self.epsilon(t), dtype=float)[..., None]
+        eps = float(self.epsilon(t))
         return eps / q.shape[-1] + (1.0 - eps) * Greedy().probabilities(q)
 
     def choose(self, q, rng, t=0, batch=None):
-        """One uniform u per choice: explore when u < ε, then ⌊u / ε · N⌋ is the random action
-        (ε a number, or one per row of ``q`` when it counts visits)."""
+        """One uniform u per choice: explore when u < ε, then ⌊u / ε · N⌋ is the random action."""
         q = np.asarray(q, dtype=float)
-        eps = np.asarray(self.epsilon(t), dtype=float)
+        eps = float(self.epsilon(t))
         greedy = greedy_choice(q, rng, batch)
-        if not np.any(eps > 0.0):
+        if eps <= 0.0:
             return greedy
         u = rng.random(_shape(q, batch))
-        scale = q.shape[-1] / np.where(eps > 0.0, eps, 1.0)  # rows with ε = 0 never explore (u < ε is false)
-        random_action = np.minimum(u * scale, q.shape[-1] - 1).astype(int)
+        random_action = np.minimum((u * (q.shape[-1] / eps)).astype(int), q.shape[-1] - 1)
         return np.where(u < eps, random_action, greedy)
 
 

@@ -80,9 +80,7 @@ class FuzzyQLearner:
 
     ``alpha`` is β (number or schedule; :class:`~fuzzynav.learn.schedules.InverseVisits` counts
     fuzzy visits Σ w_i per candidate), ``policy`` the per-rule exploration policy (default
-    ε-greedy, ε = 0.1) evaluated at the learner's ``episode`` counter — or, for a per-visit ε
-    (:class:`~fuzzynav.learn.schedules.VisitDecay`), at each rule's fuzzy visits summed over its
-    candidates, so that every rule explores by how often it was fired —, ``prior`` the index of each
+    ε-greedy, ε = 0.1) evaluated at the learner's ``episode`` counter, ``prior`` the index of each
     rule's a-priori conclusion, shape (R,) or (H, R).
     """
 
@@ -172,20 +170,14 @@ class FuzzyQLearner:
         """A = Σ_i w_i a[i, j_i] (VI.10) from the shares (B, H, R, N); returns (B, H·D)."""
         return np.einsum("bhrn,hrnd->bhd", shares, self.candidates).reshape(shares.shape[0], -1)
 
-    def _clock(self):
-        """What the policy's schedule is evaluated at: the episode counter, or each rule's fuzzy
-        visits (summed over its candidates, shape (L, H, R)) for a per-rule schedule."""
-        return self.visits.sum(axis=-1) if self.policy.per_visit else self.episode
-
     def _choose(self, w, rng) -> np.ndarray:
         self._check_batch(w.shape[0])
-        t = self._clock()
         if self.n_learners == 1:  # one table shared by every row: choose on it without copying
-            j = self.policy.choose(self.q[0], rng, t if np.ndim(t) == 0 else t[0], batch=w.shape[0])
+            j = self.policy.choose(self.q[0], rng, self.episode, batch=w.shape[0])
             self._shares_now = self._shares(w, j)
             self._quality = np.einsum("bhrn,hrn->bh", self._shares_now, self.q[0])  # Q(s, A), VI.11
         else:
-            j = self.policy.choose(self.q, rng, t)
+            j = self.policy.choose(self.q, rng, self.episode)
             self._shares_now = self._shares(w, j)
             self._quality = np.einsum("bhrn,bhrn->bh", self._shares_now, self.q)
         return self._infer(self._shares_now)

@@ -86,20 +86,8 @@ def unit_interval(value, field: str) -> float:
     return value
 
 
-@dataclass(frozen=True)
-class VisitDecay(ExponentialDecay):
-    """:class:`ExponentialDecay` of each rule's own visits, ``max(floor, start · rate**visits)``:
-    an exploration rate ε that decays with how often *that rule* was fired (its fuzzy visits Σ w
-    summed over its candidates), not with the episode, so that a rule met rarely keeps exploring
-    its candidates as long as it has been tried little, while the frequent rules settle early
-    (the "ε-gloutonne par exemple" of §VI.4 leaves ε's schedule open)."""
-
-    kind: ClassVar[str] = "visit_exponential"
-    per_visit: ClassVar[bool] = True
-
-
-Schedule = Constant | ExponentialDecay | InverseVisits | VisitDecay
-SCHEDULES = {cls.kind: cls for cls in (Constant, ExponentialDecay, InverseVisits, VisitDecay)}
+Schedule = Constant | ExponentialDecay | InverseVisits
+SCHEDULES = {cls.kind: cls for cls in (Constant, ExponentialDecay, InverseVisits)}
 
 
 def as_schedule(value, field: str = "schedule") -> Schedule:

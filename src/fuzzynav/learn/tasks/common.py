@@ -331,18 +331,16 @@ def extraction_tolerance(batch: int, parallel_tolerance: float) -> float:
     return THESIS["tolerance"] if thesis_protocol(batch) else parallel_tolerance
 
 
-def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None,
-                epsilon=None) -> FuzzyQLearner:
+def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
     """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
 
     Thesis protocol (``batch`` 1, :data:`THESIS`): β = 1 / (1 + visits) (eq III.24) down to
-    0.01, ε = 0.3 · 0.9967^episode down to 0.02, or the task's own ε schedule ``epsilon`` (e.g.
-    the avoider's per-rule :class:`~fuzzynav.learn.schedules.VisitDecay`). Batch learner: β = 1 /
-    (1 + visits) floored so the B parallel corrections stay small (``alpha`` replaces it when
-    given), ε decaying 0.3 → 0.02 (× 0.85 per batch)."""
+    0.01, ε = 0.3 · 0.9967^episode down to 0.02. Batch learner: β = 1 / (1 + visits) floored so
+    the B parallel corrections stay small (``alpha`` replaces it when given), ε decaying
+    0.3 → 0.02 (× 0.85 per batch)."""
     if thesis_protocol(batch):
         alpha = InverseVisits(1.0, 1.0, THESIS["rate_floor"])
-        policy = EpsilonGreedy(epsilon or ExponentialDecay(*THESIS["epsilon"]))
+        policy = EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
     else:
         alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
         policy = EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02))

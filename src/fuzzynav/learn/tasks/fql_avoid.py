@@ -25,7 +25,7 @@ from fuzzynav.fuzzy.variable import Variable
 from fuzzynav.learn.envs import GridPremise, RandomObstacles, RobotEnv
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.rewards import AvoidSpeedReward, AvoidSteeringReward
-from fuzzynav.learn.schedules import ExponentialDecay, VisitDecay
+from fuzzynav.learn.schedules import ExponentialDecay
 from fuzzynav.learn.tasks import common
 from fuzzynav.robot.sensors import SensorRing
 
@@ -46,14 +46,6 @@ def avoid_rate() -> ExponentialDecay:
     return ExponentialDecay(AVOID_RATE_START, AVOID_RATE_DECAY, AVOID_RATE / common.BATCH)
 
 
-# Exploration of the avoider under the thesis' protocol (one robot): ε-greedy per rule, as every task
-# ("ε-gloutonne par exemple", §VI.4, which gives no values), but each rule's ε decays with that rule's own
-# fuzzy visits, 0.3 · 0.99^visits down to 0.02, instead of with the episode. The tight spots (front and
-# both sides near: rules PPP, PLP) fire on a few hundredths of the decisions; under the per-episode ε
-# their candidates were tried almost only greedily once ε reached its floor (~episode 900), so a turn
-# judged bad on its first few samples was never tried again and their qualities stayed within noise of
-# each other (docs/results/chapter-vi.md). A frequent rule reaches the floor after ~270 visits.
-AVOID_EPSILON = VisitDecay(0.3, 0.99, 0.02)
 AVOID_DECISION = 3  # steps Δt per learning decision (0.3 s)
 AVOID_TOLERANCE = 0.05  # extraction tolerance: the avoider's quality gaps at the noise level are a few
 # hundredths (docs/training.md, "Obstacle avoidance")
@@ -203,7 +195,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
     steering_prior, speed_prior = initial_tables(prior, open_side)
     tolerance = prior_tolerance(prior, batch)
     steer = common.fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
-                        prior=steering_prior, alpha=avoid_rate(), epsilon=AVOID_EPSILON)
+                        prior=steering_prior, alpha=avoid_rate())
     n_steer = common.steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, observe, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
@@ -217,7 +209,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
         return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
     speed = common.fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=speed_prior,
-                        alpha=avoid_rate(), epsilon=AVOID_EPSILON)
+                        alpha=avoid_rate())
     env = RobotEnv(layout, observe, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)
