@@ -33,6 +33,7 @@ import numpy as np
 
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.catalog.tasks import load_controller, trainer
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io import load, save
 from fuzzynav.learn.tasks.common import TrainRequest
 from fuzzynav.sim import metrics, run_episode
@@ -45,8 +46,11 @@ TASKS = {
               "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
     "goal": {"target": "goal-seeking:gsb", "fql": "fql-goal", "train": "empty-train", "holdout": "empty-holdout",
              "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
+    "wall": {"target": "wall-follow:wall", "fql": "fql-wall", "train": "walls-train", "holdout": "walls-holdout",
+             "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
 }
 EMPTY_WORLDS, EMPTY_SEEDS = 40, {"empty-train": 0, "empty-holdout": 1000}
+WALL_SEEDS = {"walls-train": 0, "walls-holdout": 1000}
 
 
 def empty_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
@@ -67,6 +71,27 @@ def empty_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
     return folder
 
 
+def wall_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
+    """``n`` random wall courses (:func:`~fuzzynav.experiments.evaluation.wall_course_scenario`:
+    the layout of the FQL wall follower's training, 30 s each) written as scenario files; a
+    course whose start the scenario checks refuse (the body touching a wall) is drawn again."""
+    from fuzzynav.experiments.evaluation import wall_course_scenario
+    from fuzzynav.world.scenario_file import open_scenario
+
+    folder.mkdir(parents=True, exist_ok=True)
+    rng = np.random.default_rng(seed)
+    for i in range(n):
+        path = folder / f"walls-{seed}-{i:03d}.yaml"
+        while True:
+            save_scenario(wall_course_scenario(rng, path.stem), path)
+            try:
+                open_scenario(path)
+                break
+            except InputError:
+                continue
+    return folder
+
+
 def held_out(scenarios, build) -> dict:
     """Success, collisions, mean time to the goal of a controller built by ``build()`` on ``scenarios``."""
     runs = [metrics(run_episode(s, build(), seed=0), s) for s in scenarios]
@@ -75,11 +100,29 @@ def held_out(scenarios, build) -> dict:
             "mean_time_s": float(np.mean(reached)) if reached else None}
 
 
+def held_out_wall(scenarios, system) -> dict:
+    """A wall-follower rule base (Table VI.2's inputs and outputs) on ``scenarios`` by the tuner's
+    compiled loop (the simulator's own step, checked against it in the tests): lasted share,
+    collisions and the wall measures of :func:`fuzzynav.tune.fitness.summary`."""
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.tune.fitness import Fitness
+
+    fitness = Fitness(make_controller("wall-follow"), "wall", None, scenarios, wall=True)
+    jobs = np.column_stack([np.zeros(len(scenarios), dtype=np.int64), np.arange(len(scenarios))])
+    numbers = fitness.summary(fitness.worlds.run(fitness.tables(system)[None], jobs))
+    return {"success": numbers["success_rate"], **numbers}
+
+
 def _suite(spec: str, work: Path) -> tuple[str, list]:
     """(the SUITE argument, its scenarios) of a task's worlds (the empty ones written under ``work``)."""
     from fuzzynav.bench.suites import parse_suite
 
-    text = str(empty_worlds(work / spec, EMPTY_SEEDS[spec])) if spec in EMPTY_SEEDS else spec
+    if spec in EMPTY_SEEDS:
+        text = str(empty_worlds(work / spec, EMPTY_SEEDS[spec]))
+    elif spec in WALL_SEEDS:
+        text = str(wall_worlds(work / spec, WALL_SEEDS[spec]))
+    else:
+        text = spec
     suite = parse_suite(text)
     return text, [suite.scenario(i, 0) for i in range(suite.size)]
 
@@ -90,7 +133,13 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
     controller, role = task["target"].split(":")
     worlds, _ = _suite(task["train"], out)
     holdout_spec, holdout = _suite(task["holdout"], out)
-    rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, {}))]}
+    wall = name == "wall"
+    if wall:
+        from fuzzynav.catalog.roles import default_system
+
+        rows = {"hand-made": [held_out_wall(holdout, default_system(controller, role))]}
+    else:
+        rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, {}))]}
     for method, what in task["methods"].items():
         rows[method] = []
         for seed in seeds:
@@ -103,7 +152,9 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
             systems = systems_from_options(controller, [f"{role}={path}"])
             start_cost = result["start"]["training"]["cost"]
             beaten = next((n for n, cost in result["curve"] if cost < start_cost), None)
-            rows[method].append({"seed": seed, **held_out(holdout, lambda systems=systems: make_with_systems(controller, systems)),
+            tested = held_out_wall(holdout, systems[role]) if wall else held_out(
+                holdout, lambda systems=systems: make_with_systems(controller, systems))
+            rows[method].append({"seed": seed, **tested,
                                  "episodes_to_beat_start": beaten, "wall_s": seconds, "file": str(path),
                                  "training": result["tuned"]["training"]})
     rows["fql"] = []
@@ -114,7 +165,11 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
                                                     resume=False, checkpoint_every=None, curve=None, progress=False))
         seconds = time.perf_counter() - started
         model = load_controller(path)
-        rows["fql"].append({"seed": seed, **held_out(holdout, lambda model=model: model), "wall_s": seconds, "file": str(path),
+        if wall and model.sensing != "rays":
+            raise InputError("the wall comparison runs followers reading the single rays", source=str(path),
+                             field="sensing")
+        tested = held_out_wall(holdout, model.system) if wall else held_out(holdout, lambda model=model: model)
+        rows["fql"].append({"seed": seed, **tested, "wall_s": seconds, "file": str(path),
                             "episodes_to_beat_start": None,
                             "converged_at": {k: v.get("converged_at") for k, v in trained.items() if isinstance(v, dict)}})
     return {"target": task["target"], "fql": task["fql"], "train": task["train"], "holdout": task["holdout"],
@@ -133,6 +188,10 @@ def _tables(controller: str, role: str, rows: dict) -> dict:
 
 
 def _grid(system) -> list[str]:
+    """Two inputs: the grid; more (the wall follower's three distances): one line per rule."""
+    if len(system.inputs) != 2:
+        return [" ".join(f"{v}={t}" for v, t in rule.premises) + " -> " + "/".join(t for _, t in rule.conclusions)
+                for rule in system.rules]
     first, second = system.inputs[0], system.inputs[1]
     cells = {tuple(t for _, t in rule.premises): "/".join(t for _, t in rule.conclusions) for rule in system.rules}
     lines = [f"{second.name:>8s} | " + " ".join(f"{label:>6s}" for label in first.labels)]
