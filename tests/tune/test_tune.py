@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.cli import main
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io import load
 from fuzzynav.fuzzy.io.files import dumps, loads
 from fuzzynav.fuzzy.systems import get_system
@@ -167,3 +168,18 @@ def test_a_damaged_checkpoint_is_a_one_line_error(tmp_path, capsys):
                  "--resume", "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "oab.yaml.tune.npz" in err, err
+
+
+def test_a_wall_follower_is_tuned_on_wall_courses_by_its_wall_cost(tmp_path):
+    from fuzzynav.experiments.tuning import wall_worlds
+
+    train, held = wall_worlds(tmp_path / "train", 0, 3), wall_worlds(tmp_path / "held", 1000, 2)
+    result = tune(TuneRequest(target="wall-follow:wall", worlds=str(train), holdout=str(held), population=3,
+                              budget=3 * 3 * 3, seed=0))
+    start, tuned = result["start"]["training"], result["tuned"]["training"]
+    assert result["task"] == "wall" and tuned["cost"] <= start["cost"]
+    assert start["mean_time_s"] is None and 0.0 <= start["too_close_share"] <= 1.0 and start["mean_speed_mps"] > 0
+    assert set(result["tuned"]["holdout"]) >= {"success_rate", "collisions", "off_band_m"}
+    with pytest.raises(InputError, match="no goal"):
+        session.check(TuneRequest(target="wall-follow:wall", worlds=str(train), method="nsga2",
+                                  objectives=("success", "time")))

@@ -24,9 +24,9 @@ Every controller — the hand-made start, each tuned system (``--fis ROLE=FILE``
 (:func:`fuzzynav.sim.run_episode`), not by the tuner's compiled loop. Reported per method and
 seed: held-out success, collisions and mean time to the goal, the episodes spent before beating
 the start on the training worlds (tuners: the first generation whose best training cost is below
-the start's; FQL: its phases' ``converged_at``), and the rule tables side by side. Wall following
-is not compared: ``fuzzynav tune`` scores goal and path episodes, and the wall follower has no goal
-(its FQL task measures the distance kept to a wall).
+the start's; FQL: its phases' ``converged_at``), and the rule tables side by side. ``wall`` — wall following: ``wall-follow:wall`` (Table VI.2) on 40
+wall courses by the wall cost of :mod:`fuzzynav.tune.fitness`, FQL trains ``fql-wall``; held out
+on 40 other courses by :func:`held_out_wall`.
 """
 
 from __future__ import annotations
@@ -39,6 +39,7 @@ import numpy as np
 
 from fuzzynav.catalog.roles import default_system, make_with_systems, systems_from_options
 from fuzzynav.catalog.tasks import load_controller, trainer
+from fuzzynav.errors import InputError
 from fuzzynav.experiments import rule_bases
 from fuzzynav.fuzzy.io import load, save
 from fuzzynav.learn.tasks.common import TrainRequest
@@ -52,8 +53,11 @@ TASKS = {
               "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
     "goal": {"target": "goal-seeking:gsb", "fql": "fql-goal", "train": "empty-train", "holdout": "empty-holdout",
              "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
+    "wall": {"target": "wall-follow:wall", "fql": "fql-wall", "train": "walls-train", "holdout": "walls-holdout",
+             "methods": {"ga": "both", "pso": "both", "aco": "rules"}},
 }
 EMPTY_WORLDS, EMPTY_SEEDS = 40, {"empty-train": 0, "empty-holdout": 1000}
+WALL_SEEDS = {"walls-train": 0, "walls-holdout": 1000}
 
 
 def empty_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
@@ -74,6 +78,27 @@ def empty_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
     return folder
 
 
+def wall_worlds(folder: Path, seed: int, n: int = EMPTY_WORLDS) -> Path:
+    """``n`` random wall courses (:func:`~fuzzynav.experiments.evaluation.wall_course_scenario`:
+    the layout of the FQL wall follower's training, 30 s each) written as scenario files; a
+    course whose start the scenario checks refuse (the body touching a wall) is drawn again."""
+    from fuzzynav.experiments.evaluation import wall_course_scenario
+    from fuzzynav.world.scenario_file import open_scenario
+
+    folder.mkdir(parents=True, exist_ok=True)
+    rng = np.random.default_rng(seed)
+    for i in range(n):
+        path = folder / f"walls-{seed}-{i:03d}.yaml"
+        while True:
+            save_scenario(wall_course_scenario(rng, path.stem), path)
+            try:
+                open_scenario(path)
+                break
+            except InputError:
+                continue
+    return folder
+
+
 def held_out(scenarios, build) -> dict:
     """Success, collisions, mean time to the goal of a controller built by ``build()`` on ``scenarios``."""
     runs = [metrics(run_episode(s, build(), seed=0), s) for s in scenarios]
@@ -82,11 +107,29 @@ def held_out(scenarios, build) -> dict:
             "mean_time_s": float(np.mean(reached)) if reached else None}
 
 
+def held_out_wall(scenarios, system) -> dict:
+    """A wall-follower rule base (Table VI.2's inputs and outputs) on ``scenarios`` by the tuner's
+    compiled loop (the simulator's own step, checked against it in the tests): lasted share,
+    collisions and the wall measures of :func:`fuzzynav.tune.fitness.summary`."""
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.tune.fitness import Fitness
+
+    fitness = Fitness(make_controller("wall-follow"), "wall", None, scenarios, wall=True)
+    jobs = np.column_stack([np.zeros(len(scenarios), dtype=np.int64), np.arange(len(scenarios))])
+    numbers = fitness.summary(fitness.worlds.run(fitness.tables(system)[None], jobs))
+    return {"success": numbers["success_rate"], **numbers}
+
+
 def _suite(spec: str, work: Path) -> tuple[str, list]:
     """(the SUITE argument, its scenarios) of a task's worlds (the empty ones written under ``work``)."""
     from fuzzynav.bench.suites import parse_suite
 
-    text = str(empty_worlds(work / spec, EMPTY_SEEDS[spec])) if spec in EMPTY_SEEDS else spec
+    if spec in EMPTY_SEEDS:
+        text = str(empty_worlds(work / spec, EMPTY_SEEDS[spec]))
+    elif spec in WALL_SEEDS:
+        text = str(wall_worlds(work / spec, WALL_SEEDS[spec]))
+    else:
+        text = spec
     suite = parse_suite(text)
     return text, [suite.scenario(i, 0) for i in range(suite.size)]
 
@@ -105,7 +148,11 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
     replaced, start = starts(controller, role)
     worlds, _ = _suite(task["train"], out)
     holdout_spec, holdout = _suite(task["holdout"], out)
-    rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, replaced))]}
+    wall = name == "wall"
+    if wall:
+        rows = {"hand-made": [held_out_wall(holdout, start)]}
+    else:
+        rows = {"hand-made": [held_out(holdout, lambda: make_with_systems(controller, replaced))]}
     for method, what in task["methods"].items():
         rows[method] = []
         for seed in seeds:
@@ -119,7 +166,9 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
             systems = {**replaced, **systems_from_options(controller, [f"{role}={path}"])}
             start_cost = result["start"]["training"]["cost"]
             beaten = next((n for n, cost in result["curve"] if cost < start_cost), None)
-            rows[method].append({"seed": seed, **held_out(holdout, lambda systems=systems: make_with_systems(controller, systems)),
+            tested = held_out_wall(holdout, systems[role]) if wall else held_out(
+                holdout, lambda systems=systems: make_with_systems(controller, systems))
+            rows[method].append({"seed": seed, **tested,
                                  "episodes_to_beat_start": beaten, "wall_s": seconds, "file": str(path),
                                  "training": result["tuned"]["training"]})
     rows["fql"] = []
@@ -130,7 +179,11 @@ def run_task(name: str, seeds, episodes: int, out: Path) -> dict:
                                                     resume=False, checkpoint_every=None, curve=None, progress=False))
         seconds = time.perf_counter() - started
         model = load_controller(path)
-        rows["fql"].append({"seed": seed, **held_out(holdout, lambda model=model: model), "wall_s": seconds, "file": str(path),
+        if wall and model.sensing != "rays":
+            raise InputError("the wall comparison runs followers reading the single rays", source=str(path),
+                             field="sensing")
+        tested = held_out_wall(holdout, model.system) if wall else held_out(holdout, lambda model=model: model)
+        rows["fql"].append({"seed": seed, **tested, "wall_s": seconds, "file": str(path),
                             "episodes_to_beat_start": None,
                             "converged_at": {k: v.get("converged_at") for k, v in trained.items() if isinstance(v, dict)}})
     return {"target": task["target"], "fql": task["fql"], "train": task["train"], "holdout": task["holdout"],
@@ -147,6 +200,10 @@ def _tables(start, rows: dict) -> dict:
 
 
 def _grid(system) -> list[str]:
+    """Two inputs: the grid; more (the wall follower's three distances): one line per rule."""
+    if len(system.inputs) != 2:
+        return [" ".join(f"{v}={t}" for v, t in rule.premises) + " -> " + "/".join(t for _, t in rule.conclusions)
+                for rule in system.rules]
     first, second = system.inputs[0], system.inputs[1]
     cells = {tuple(t for _, t in rule.premises): "/".join(t for _, t in rule.conclusions) for rule in system.rules}
     lines = [f"{second.name:>8s} | " + " ".join(f"{label:>6s}" for label in first.labels)]

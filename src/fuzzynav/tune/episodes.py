@@ -22,13 +22,14 @@ from typing import NamedTuple
 import numpy as np
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S
 from fuzzynav.jit import jit
 from fuzzynav.kernels import layers, step as step_kernel
 from fuzzynav.kernels.motion import RADIUS
 from fuzzynav.kernels.records import Layers, Navigator, Robots, StepNavigator, Traffic
 
-OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE = range(6)  # columns of run_jobs' ``out``
-N_OUT = 6
+OUTCOME, STEPS, CLEARANCE, PATH, REMAINING, START_DISTANCE, TOO_CLOSE, OFF_BAND = range(8)  # columns of ``out``
+N_OUT = 8
 OVERFLOW = -1  # outcome of a job whose layer state ran out of obstacle-point slots
 INVALID = -2  # outcome of a job whose state became non-finite
 SLOTS = 64  # obstacle-point slots per sensor ray (+ 1) given to each job at first (the layers start at 16)
@@ -78,14 +79,18 @@ def _one(navigator, memory_steps, layer, setup, scene, start, out):
     still, no_offsets = np.zeros((0, 4), dtype=np.int64), np.zeros((0, 2))  # tuning worlds stand still
     running = step_kernel.reset(setup, scene, state, ranges, status, None)
     clearance = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
-    path, k = 0.0, 0
+    path, k, too_close, off_band = 0.0, 0, 0, 0.0
     while running:
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
         running = step_kernel.step(params, lp, StepNavigator(kind, tables, cstate, memory, lstate), setup,
                                    Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status, True), None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
-        clearance = min(clearance, min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius)
+        gap = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
+        clearance = min(clearance, gap)
+        if gap < WALL_D_M:
+            too_close += 1
+        off_band += min(1.0, max(WALL_D_M - gap, gap - WALL_D_S, 0.0))
         if lp[layers.PARAM.grow] != 0.0:
             out[OUTCOME] = OVERFLOW
             return
@@ -97,6 +102,8 @@ def _one(navigator, memory_steps, layer, setup, scene, start, out):
     out[CLEARANCE] = clearance
     out[PATH] = path
     out[REMAINING] = math.hypot(gx - state[0, step_kernel.X], gy - state[0, step_kernel.Y])
+    out[TOO_CLOSE] = too_close
+    out[OFF_BAND] = off_band
 
 
 @jit
@@ -105,7 +112,10 @@ def run_jobs(population, layer, worlds, jobs, out):
     ``tables`` row c, its ``params`` row w) on world w of ``worlds`` (:class:`Packed`), with the
     layers ``layer`` (:class:`~fuzzynav.kernels.records.Layers`: parameters and a fresh state
     row); ``out`` (J, :data:`N_OUT`) = outcome code, steps, least clearance of the body (m), path
-    length (m), distance left to the goal (m), start distance to the goal (m)."""
+    length (m), distance left to the goal (m), start distance to the goal (m), and for wall
+    following the steps whose body clearance is below d_m (eq VI.21's penalty) and the sum over
+    the steps of how far (m, at most 1 per step) the clearance lies outside [d_m, d_s] (the
+    thesis' wall distances, Fig VI.17)."""
     for j in range(jobs.shape[0]):
         c, w = jobs[j, 0], jobs[j, 1]
         _one(Navigator(population.kind, population.params[w], population.tables[c]), population.memory_steps,

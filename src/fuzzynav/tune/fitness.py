@@ -10,7 +10,18 @@ reached goal costs its time over the world's time limit (below 1), a timeout 10 
 the start distance still to go, a collision 20 plus that share: a timeout outweighs ten arrivals
 even at the time limit (about fifty at the times of the thesis' navigators, ~20 s of 120 s), and
 any timeout is better than a collision. The scalar fitness is the mean over
-the worlds; the objectives of NSGA-II (:data:`OBJECTIVES`) are the failure rate, the mean time
+the worlds.
+
+A wall follower has no goal (Table VI.2; its worlds are wall courses whose goal it ignores), so
+its episode cost (:func:`wall_cost`) is the wall-following score of eqs VI.21–VI.22 made a
+number: a collision costs 20 plus the share of the time limit it did not last (an early crash is
+worse); an episode lasted costs the share of its steps closer to an obstacle than d_m (eq VI.21's
+−1), plus the mean distance (m, at most 1 per step) the body kept outside the band [d_m, d_s]
+(closer than d_m, or further than d_s: no longer following), plus the shortfall of its mean speed
+below Table VI.2's slow speed P (a follower that stops would otherwise keep its distance for
+free). Every part is below 1, so any lasted episode beats any collision.
+
+The objectives of NSGA-II (:data:`OBJECTIVES`) are the failure rate, the mean time
 (the time limit for a failed episode) and minus the mean least clearance.
 """
 
@@ -20,9 +31,21 @@ import time
 
 import numpy as np
 
+from fuzzynav.fuzzy.systems_navigation import WALL_V1
 from fuzzynav.kernels import ts0
 from fuzzynav.kernels.step import COLLISION, REACHED, TIMEOUT
-from fuzzynav.tune.episodes import CLEARANCE, INVALID, OUTCOME, REMAINING, START_DISTANCE, STEPS, Worlds
+from fuzzynav.tune.episodes import (
+    CLEARANCE,
+    INVALID,
+    OFF_BAND,
+    OUTCOME,
+    PATH,
+    REMAINING,
+    START_DISTANCE,
+    STEPS,
+    TOO_CLOSE,
+    Worlds,
+)
 
 OBJECTIVES = ("success", "time", "clearance")
 TIMEOUT_COST, COLLISION_COST, INVALID_COST = 10.0, 20.0, 30.0
@@ -38,13 +61,23 @@ def episode_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.nd
     return np.where(outcome == INVALID, INVALID_COST, cost)
 
 
+def wall_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.ndarray:
+    """Cost of each wall-following episode row of ``out`` (module docstring)."""
+    outcome, steps = out[:, OUTCOME], np.maximum(out[:, STEPS], 1.0)
+    lasted = np.clip(out[:, STEPS] * dt / max_time, 0.0, 1.0)
+    slow = np.clip(1.0 - out[:, PATH] / (steps * dt * WALL_V1), 0.0, 1.0)
+    cost = out[:, TOO_CLOSE] / steps + out[:, OFF_BAND] / steps + slow
+    cost = np.where(outcome == COLLISION, COLLISION_COST + 1.0 - lasted, cost)
+    return np.where(outcome == INVALID, INVALID_COST, cost)
+
+
 class Fitness:
     """Scores gene vectors of ``space`` for ``controller``'s ``role`` on ``scenarios``; counts the
     candidates and episodes it simulated and the time it took (:attr:`evaluations`,
-    :attr:`episodes`, :attr:`seconds`)."""
+    :attr:`episodes`, :attr:`seconds`). ``wall``: score episodes as wall following (:func:`wall_cost`)."""
 
-    def __init__(self, controller, role: str, space, scenarios):
-        self.controller, self.role, self.space = controller, role, space
+    def __init__(self, controller, role: str, space, scenarios, wall: bool = False):
+        self.controller, self.role, self.space, self.wall = controller, role, space, wall
         self.worlds = Worlds(scenarios, controller)
         self.evaluations = self.episodes = 0
         self.seconds = 0.0
@@ -68,12 +101,21 @@ class Fitness:
         self.seconds += time.perf_counter() - started
         return out
 
+    def cost(self, rows: np.ndarray) -> np.ndarray:
+        """The episode costs of one candidate's rows ``(W, N_OUT)`` on these worlds."""
+        score = wall_cost if self.wall else episode_cost
+        return score(rows, self.worlds.dt, self.worlds.max_time)
+
+    def summary(self, rows: np.ndarray) -> dict:
+        """:func:`summary` of one candidate's rows, with its mean cost."""
+        return {**summary(rows, self.worlds.dt, self.wall), "cost": float(self.cost(rows).mean())}
+
     def objectives(self, population: np.ndarray) -> np.ndarray:
         """``(P, 1 + len(OBJECTIVES))``: the scalar cost, then failure rate, mean time (s, the time
         limit when not reached) and minus the mean least clearance (m), each to be minimised."""
         out = self.simulate(population)
         dt, max_time = self.worlds.dt, self.worlds.max_time
-        cost = np.stack([episode_cost(rows, dt, max_time) for rows in out]).mean(axis=1)
+        cost = np.stack([self.cost(rows) for rows in out]).mean(axis=1)
         reached = out[:, :, OUTCOME] == REACHED
         times = np.where(reached, out[:, :, STEPS] * dt, max_time)
         clearance = np.clip(out[:, :, CLEARANCE], -1.0, None)
@@ -85,10 +127,19 @@ class Fitness:
         return self.evaluations / self.seconds if self.seconds else 0.0
 
 
-def summary(out: np.ndarray, dt: np.ndarray) -> dict:
+def summary(out: np.ndarray, dt: np.ndarray, wall: bool = False) -> dict:
     """Success / collision / timeout rates, mean time to the goal and least clearance of one
-    candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports)."""
+    candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports). ``wall``: success
+    is lasting the episode without collision, and the wall-following measures are added: the
+    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m) and the mean speed (m/s)."""
     outcome = out[:, OUTCOME]
+    if wall:
+        steps = out[:, STEPS].sum()
+        return {"worlds": int(len(out)), "success_rate": float((outcome != COLLISION).mean()),
+                "collision_rate": float((outcome == COLLISION).mean()), "collisions": int((outcome == COLLISION).sum()),
+                "too_close_share": float(out[:, TOO_CLOSE].sum() / steps), "off_band_m": float(out[:, OFF_BAND].sum() / steps),
+                "mean_speed_mps": float(out[:, PATH].sum() / (out[:, STEPS] * dt).sum()),
+                "mean_time_s": None, "min_clearance_m": float(out[:, CLEARANCE].min())}
     reached = outcome == REACHED
     return {
         "worlds": int(len(out)),

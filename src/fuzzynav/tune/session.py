@@ -24,7 +24,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.tune.fitness import OBJECTIVES, Fitness, episode_cost, summary
+from fuzzynav.tune.fitness import OBJECTIVES, Fitness
 from fuzzynav.tune.optimisers import METHODS
 from fuzzynav.tune.space import WHAT
 
@@ -71,6 +71,7 @@ class TuneRequest:
 def check(request: TuneRequest):
     """Every option checked before any work; returns (controller, start system, suite, held-out suite)."""
     from fuzzynav.bench.suites import parse_suite
+    from fuzzynav.catalog.controllers import spec_of
     from fuzzynav.catalog.roles import default_system, make_with_systems, roles_of
     from fuzzynav.tune.space import SearchSpace
 
@@ -101,6 +102,9 @@ def check(request: TuneRequest):
             validation.choice(name, OBJECTIVES, field="--objectives")
         if len(set(request.objectives)) != len(request.objectives):
             raise InputError("an objective is named twice", field="--objectives")
+    if request.objectives and not spec_of(controller).goal_directed:
+        raise InputError(f"{controller} has no goal: its tuning minimises the wall-following cost, not "
+                         f"{', '.join(OBJECTIVES)}", field="--objectives")
     if request.method == "aco" and request.what != "rules":
         raise InputError("the ant colony walks rule conclusions only: use --what rules", field="--method")
     if request.out is not None:
@@ -161,6 +165,7 @@ def tune(request: TuneRequest) -> dict:
     """Run ``request``; returns the result (module docstring): the tuned system under ``system``,
     the start's and the result's training and held-out summaries, the learning curve, the speed."""
     from fuzzynav import progress
+    from fuzzynav.catalog.controllers import spec_of
     from fuzzynav.tune.optimisers import make_optimiser
     from fuzzynav.tune.space import SearchSpace
 
@@ -168,7 +173,8 @@ def tune(request: TuneRequest) -> dict:
     space = SearchSpace(system, request.what)
     path = checkpoint_path(request)
     stored = _load_checkpoint(path, request) if request.resume and path is not None and path.is_file() else []
-    fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)])
+    fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)],
+                      wall=not spec_of(request.controller).goal_directed)
     optimiser = make_optimiser(request.method, space, request.population, request.seed,
                                n_obj=len(_columns(request)))
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
@@ -210,7 +216,6 @@ def _result(request, space, fitness, controller, holdout, generations, best_x, c
                                              f"--what {request.what} --method {request.method} --budget "
                                              f"{request.budget} --worlds {request.worlds} --seed {request.seed}")
     both = fitness.simulate(np.stack([space.start, best_x]))
-    dt, limit = fitness.worlds.dt, fitness.worlds.max_time
     result = {
         "target": request.target, "what": request.what, "method": request.method, "budget": request.budget,
         "worlds": request.worlds, "seed": request.seed, "population": request.population,
@@ -218,8 +223,9 @@ def _result(request, space, fitness, controller, holdout, generations, best_x, c
         "episodes": int(sum(len(x) for x, _ in generations)) * len(fitness.worlds),
         "evaluations_per_s": fitness.rate, "episodes_per_s": fitness.rate * len(fitness.worlds),
         "simulation_s": fitness.seconds,
-        "start": {"training": {**summary(both[0], dt), "cost": float(episode_cost(both[0], dt, limit).mean())}},
-        "tuned": {"training": {**summary(both[1], dt), "cost": float(episode_cost(both[1], dt, limit).mean())}},
+        "task": "wall" if fitness.wall else "goal",
+        "start": {"training": fitness.summary(both[0])},
+        "tuned": {"training": fitness.summary(both[1])},
         "changed": bool(space.decode(best_x) != space.decode(space.start)),
         "curve": [[int(n), float(c)] for n, c in curve],
         "system": tuned,
@@ -230,11 +236,12 @@ def _result(request, space, fitness, controller, holdout, generations, best_x, c
             member["system"] = space.decode(member["genes"], description=f"{tuned.description}; Pareto front "
                                                                          f"member {k}: {member['objectives']}")
     if holdout is not None:
-        held = Fitness(controller, request.role, space, [holdout.scenario(i, 0) for i in range(holdout.size)])
+        held = Fitness(controller, request.role, space, [holdout.scenario(i, 0) for i in range(holdout.size)],
+                       fitness.wall)
         rows = held.simulate(np.stack([space.start, best_x]))
         result["holdout_worlds"] = holdout.name
-        result["start"]["holdout"] = summary(rows[0], held.worlds.dt)
-        result["tuned"]["holdout"] = summary(rows[1], held.worlds.dt)
+        result["start"]["holdout"] = held.summary(rows[0])
+        result["tuned"]["holdout"] = held.summary(rows[1])
     return result
 
 
