@@ -64,7 +64,7 @@ def test_one_robot_act_and_act_batch_decide_as_the_compiled_step(wrapper):
     scenario = _scenario("dense-0-007")  # backs out, turns and follows a boundary
     inside = BatchSimulator(scenario, make_controller("fuzzy-2b"), seed=0).run()
     outside = BatchSimulator(scenario, wrapper(make_controller("fuzzy-2b")), n=2, seed=0).run()
-    assert inside.controllers[0].params[layers.POINTS_SLOTS] > 128  # the obstacle point slots grew on the way
+    assert inside.controllers[0].params[layers.PARAM.points_slots] > 128  # the obstacle point slots grew on the way
     reference = inside.trace(0)
     for i in range(2):
         trace = outside.trace(i)

@@ -95,6 +95,8 @@ class RobotEnv:
     def reset(self, rng: np.random.Generator):
         """New episodes: the layout's world, starts and goals; zero steering, speed ``start_speed``."""
         world, pose, target = self.layout.sample(rng, self.batch)
+        if self.fleet.n != self.batch:  # the trainer shrank the batch (a smaller last batch)
+            self.fleet = Fleet(self.batch, self.params, self.sensors)
         fleet = self.fleet
         rows = range(self.batch)
         setups = [fleet.setup() if target is None else fleet.setup(goal=target[n], tolerance=self.tolerance)
