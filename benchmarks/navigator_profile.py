@@ -120,20 +120,20 @@ def plans(n: int, steps: int) -> dict:
     for _ in range(steps):
         if sim.done:
             break
-        before = controller.compiled(n, sim.sensors.angles)[-1][:, layers.GUIDE_PLANNED].copy()
+        before = controller.compiled(n, sim.sensors.angles)[-1][:, layers.STATE.guide_planned].copy()
         robot_steps += int(np.count_nonzero(sim.active))
         sim.step()
-        planned += int(np.count_nonzero(controller.compiled(n, sim.sensors.angles)[-1][:, layers.GUIDE_PLANNED] != before))
+        planned += int(np.count_nonzero(controller.compiled(n, sim.sensors.angles)[-1][:, layers.STATE.guide_planned] != before))
     params, rows = controller.params, controller.compiled(n, sim.sensors.angles)[-1]
-    search, radius = guidance.search_settings(params), float(params[layers.RADIUS])
+    search, radius = guidance.search_settings(params), float(params[layers.PARAM.radius])
     tx, ty = GOAL
     seconds, searched = {"clearance grid": 0.0, "heuristic": 0.0, "search": 0.0}, 0
     running = np.flatnonzero(sim.active)[:64]
     for i in running:
-        points, count = layers.points_of(params, rows[i]), int(rows[i, layers.COUNT])
+        points, count = layers.points_of(params, rows[i]), int(rows[i, layers.STATE.count])
         x, y, theta = sim.pose[i]
-        if guidance.line_free(points, count, x, y, tx, ty, radius + params[layers.GUIDE_ROOM],
-                              params[layers.GUIDE_DIRECT]):
+        if guidance.line_free(points, count, x, y, tx, ty, radius + params[layers.PARAM.guide_room],
+                              params[layers.PARAM.guide_direct]):
             continue
         seen, robot = Sightings(points, count), Robot(x, y, theta, 0.0, tx, ty)
         kept, low_x, low_y, nx, ny = car_route.frame(seen, robot, radius + search.numbers[0], radius, search.cell)
