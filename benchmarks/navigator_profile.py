@@ -136,18 +136,18 @@ def plans(n: int, steps: int) -> dict:
                               params[layers.PARAM.guide_direct]):
             continue
         seen, robot = Sightings(points, count), Robot(x, y, theta, 0.0, tx, ty)
-        kept, low_x, low_y, nx, ny = car_route.frame(seen, robot, radius + search.numbers[0], radius, search.cell)
-        comfort, setting = search.numbers[5], search.numbers.copy()
-        setting[0] = kept
+        room = params[layers.PARAM.guide_car_room]
+        kept, low_x, low_y, nx, ny = car_route.frame(seen, robot, radius + room, radius, search.cell)
+        comfort = search.comfort
         start, goal = np.array([x - low_x, y - low_y, theta % (2 * np.pi)]), np.array([tx - low_x, ty - low_y])
         row, col = int((ty - low_y) / search.cell), int((tx - low_x) / search.cell)
         for _ in range(3):
             t0 = time.process_time()
             grid = car_route.clearance_grid(points, count, low_x, low_y, nx, ny, search.cell, kept + comfort)
             t1 = time.process_time()
-            heuristic = car_route.cost_to_go(grid, search.cell, row, col, kept, search.numbers[4], comfort)
+            heuristic = car_route.cost_to_go(grid, search.cell, row, col, kept, search.weight, comfort)
             t2 = time.process_time()
-            car_search.search(grid, search.cell, heuristic, start, goal, search.curvatures, setting)
+            car_search.search(grid, heuristic, start, goal, kept, search)
             t3 = time.process_time()
             for name, spent in zip(seconds, (t1 - t0, t2 - t1, t3 - t2)):
                 seconds[name] += spent / 3

@@ -44,13 +44,6 @@ def test_the_layer_positions_are_the_fields_of_the_layer_dataclasses_in_order():
     assert set(layers.NEW_EPISODE) <= set(layers.STATE_NAMES)  # no value for a field that is not there
     assert len(set(names)) == len(names)  # no field in two layers
     assert layers.TABLES_AT == len(layers.PARAM) and layers.PLACES_AT == len(layers.STATE)
-    # the blocks the kernels slice stay contiguous
-    at = layers.PARAM
-    assert [at.guide_room, at.guide_narrow, at.guide_bare] == list(range(at.guide_room, at.guide_room + 3))
-    car = [at.guide_car_room, at.guide_car_step, at.guide_car_node, at.guide_car_headings, at.guide_car_weight,
-           at.guide_car_comfort, at.guide_car_turn, at.guide_car_switch, at.guide_car_reach, at.guide_car_budget,
-           at.guide_car_reverse, at.guide_car_gear]  # the order of kernels.car_search.search's numbers
-    assert car == list(range(at.guide_car_room, at.guide_car_gear + 1))
 
 
 @pytest.mark.parametrize("record", [*layers.PARAMETERS, layers.RobotState], ids=lambda record: record.__name__)

@@ -16,17 +16,27 @@ PARAMS = make_controller("fuzzy-5b-gap-robust").params
 BODY = float(PARAMS[layers.PARAM.radius])
 
 
-def _curvatures():
-    steering = PARAMS[layers.PARAM.guide_car_steering]
-    count = int(PARAMS[layers.PARAM.guide_car_steerings])
-    return np.tan(np.linspace(-steering, steering, count)) / PARAMS[layers.PARAM.wheelbase]
+SEARCH = guidance.search_settings(PARAMS)
+RADIUS = BODY + PARAMS[layers.PARAM.guide_car_room]  # the radius the car route keeps
 
 
-def _numbers(reverse=True):
-    numbers = PARAMS[layers.PARAM.guide_car_room:layers.PARAM.guide_car_gear + 1].copy()
-    if not reverse:
-        numbers[layers.PARAM.guide_car_reverse - layers.PARAM.guide_car_room] = 0.0
-    return numbers
+def test_the_search_settings_are_the_layer_parameters_of_their_names():
+    at = layers.PARAM
+    steering, count = PARAMS[at.guide_car_steering], int(PARAMS[at.guide_car_steerings])
+    assert np.array_equal(SEARCH.curvatures, np.tan(np.linspace(-steering, steering, count)) / PARAMS[at.wheelbase])
+    named = {"cell": at.guide_car_cell, "step": at.guide_car_step, "node_cell": at.guide_car_node,
+             "headings": at.guide_car_headings, "weight": at.guide_car_weight, "comfort": at.guide_car_comfort,
+             "turn_cost": at.guide_car_turn, "switch_cost": at.guide_car_switch, "reach": at.guide_car_reach,
+             "budget": at.guide_car_budget, "reverse": at.guide_car_reverse, "gear": at.guide_car_gear}
+    assert set(named) | {"curvatures"} == set(CarSearch._fields)
+    for field, index in named.items():
+        assert getattr(SEARCH, field) == PARAMS[index], field
+    assert SEARCH.reverse > 0
+    forward_only = PARAMS.copy()
+    forward_only[at.max_reverse_speed] = 0.0  # a robot that cannot reverse plans forward arcs only
+    forward = guidance.search_settings(forward_only)
+    assert forward.reverse == 0.0
+    assert forward._replace(curvatures=None, reverse=SEARCH.reverse) == SEARCH._replace(curvatures=None)
 
 
 def chamber():
@@ -39,8 +49,8 @@ def chamber():
 
 
 def _plan(points, pose, goal, reverse=True):
-    return car_route.plan(Sightings(points, len(points)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
-                          CarSearch(_curvatures(), _numbers(reverse), PARAMS[layers.PARAM.guide_car_cell]))
+    search = SEARCH if reverse else SEARCH._replace(reverse=0.0)
+    return car_route.plan(Sightings(points, len(points)), Robot(*pose, 0.0, *goal), RADIUS, BODY, search)
 
 
 def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
@@ -49,11 +59,10 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     assert not found  # forwards only, the car cannot leave
     found, poses, primitives = _plan(walls, pose, goal)
     assert found
-    backwards = primitives[1:] >= len(_curvatures())
+    backwards = primitives[1:] >= len(SEARCH.curvatures)
     assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
-    assert np.hypot(*(poses[-1, :2] - goal)) <= _numbers()[8]
-    leg = car_route.first_leg(Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), BODY + _numbers()[0], BODY,
-                              CarSearch(_curvatures(), _numbers(), PARAMS[layers.PARAM.guide_car_cell]),
+    assert np.hypot(*(poses[-1, :2] - goal)) <= SEARCH.reach
+    leg = car_route.first_leg(Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), RADIUS, BODY, SEARCH,
                               PARAMS[layers.PARAM.guide_car_ahead], PARAMS[layers.PARAM.guide_car_tight])
     assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
 
@@ -65,8 +74,8 @@ def test_every_pose_of_the_plan_keeps_the_clearance_asked():
     assert found
     gaps = np.hypot(poses[:, None, 0] - posts[None, :, 0], poses[:, None, 1] - posts[None, :, 1]).min(axis=1)
     # the search tests cell centres on a 0.1 m grid: each pose is within half a cell diagonal of one
-    assert gaps.min() >= BODY + _numbers()[0] - PARAMS[layers.PARAM.guide_car_cell] / math.sqrt(2)
-    assert np.all(np.hypot(*np.diff(poses[:, :2], axis=0).T) < _numbers()[1] + 1e-9)
+    assert gaps.min() >= RADIUS - SEARCH.cell / math.sqrt(2)
+    assert np.all(np.hypot(*np.diff(poses[:, :2], axis=0).T) < SEARCH.step + 1e-9)
 
 
 def test_a_route_point_that_newly_seen_points_block_is_planned_again():

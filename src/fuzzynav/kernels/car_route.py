@@ -104,23 +104,18 @@ def plan(seen, robot, radius, body, search):
     :class:`~fuzzynav.kernels.records.Robot`) from the pose (x, y, θ) to within ``reach`` of
     (tx, ty) round the points ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`), world
     frame, its first pose the start (primitive −1), each next one reached by the arc of
-    ``primitives`` (:func:`fuzzynav.kernels.car_search.search`, whose ``numbers`` those of
-    ``search``, a :class:`~fuzzynav.kernels.records.CarSearch`, are, but the radius: ``radius``, or
-    less as the module docstring says, never below ``body``); ``found`` False when the search
-    gives up."""
+    ``primitives`` (:func:`fuzzynav.kernels.car_search.search` with the settings ``search``, a
+    :class:`~fuzzynav.kernels.records.CarSearch`, keeping ``radius``, or less as the module
+    docstring says, never below ``body``); ``found`` False when the search gives up."""
     points, count, x, y, theta, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.theta, robot.tx, robot.ty
-    curvatures, numbers, cell = search.curvatures, search.numbers, search.cell
+    cell, comfort = search.cell, search.comfort
     radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
-    comfort = numbers[5]
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
-    heuristic = cost_to_go(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius, numbers[4],
+    heuristic = cost_to_go(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius, search.weight,
                            comfort)
-    setting = numbers.copy()
-    setting[0] = radius
     start = np.array([x - low_x, y - low_y, theta % (2.0 * math.pi)])
     goal = np.array([tx - low_x, ty - low_y])
-    xs, ys, ths, parents, primitives, end = car_search.search(clearance, cell, heuristic, start, goal, curvatures,
-                                                              setting)
+    xs, ys, ths, parents, primitives, end = car_search.search(clearance, heuristic, start, goal, radius, search)
     chain = [max(end, 0)]
     while parents[chain[-1]] >= 0:
         chain.append(parents[chain[-1]])
@@ -144,7 +139,7 @@ def first_leg(seen, robot, radius, body, search, ahead, tight):
     points, count, tx, ty, curvatures = seen.points, seen.count, robot.tx, robot.ty, search.curvatures
     if not found or len(poses) == 1:
         return found, False, False, tx, ty, 0.0, 0.0
-    kinds, step = len(curvatures), search.numbers[1]
+    kinds, step = len(curvatures), search.step
     backwards = primitives[1] >= kinds
     kappa = curvatures[primitives[1] % kinds]
     run, same, travelled, cusp, narrow = 0.0, True, 0.0, False, False

@@ -99,17 +99,18 @@ def grown(table, best, closed):
 
 
 @jit
-def search(clearance, cell, heuristic, start, goal, curvatures, numbers):
-    """Hybrid A* from the pose ``start`` to within ``reach`` of ``goal`` on the grid
-    ``clearance`` (ny, nx) of ``cell`` m whose lower-left corner is the origin; ``heuristic``
-    (ny, nx): the cost-to-go of each cell (inf: unreachable). ``numbers``: radius, step,
-    node_cell, headings, weight, comfort, turn_cost, switch_cost, reach, budget, reverse, gear
-    (:mod:`fuzzynav.world.hybrid_astar` tells their meaning; ``reverse`` 0: forward arcs only).
-    Primitive ``a`` is the arc of ``curvatures[a % K]``, driven backwards when ``a`` ≥ K.
-    Returns the node arrays (x, y, θ, parent, primitive) and the goal node (−1: none within the
-    budget of nodes)."""
-    radius, step, node_cell, headings, weight, comfort, turn_cost, switch_cost, reach, budget, reverse, gear = numbers
-    bins, budget, kinds = int(headings), int(budget), len(curvatures)
+def search(clearance, heuristic, start, goal, radius, settings):
+    """Hybrid A* from the pose ``start`` to within ``settings.reach`` of ``goal``, every sample of
+    every arc in a cell whose clearance is at least ``radius`` (m), on the grid ``clearance``
+    (ny, nx) of ``settings.cell`` m whose lower-left corner is the origin; ``heuristic`` (ny, nx):
+    the cost-to-go of each cell (inf: unreachable); ``settings``: a
+    :class:`~fuzzynav.kernels.records.CarSearch` (:mod:`fuzzynav.world.hybrid_astar` tells the
+    meaning of its fields; ``reverse`` 0: forward arcs only). Returns the node arrays (x, y, θ,
+    parent, primitive) and the goal node (−1: none within the budget of nodes)."""
+    curvatures, cell, step, node_cell = settings.curvatures, settings.cell, settings.step, settings.node_cell
+    weight, comfort, turn_cost, switch_cost = settings.weight, settings.comfort, settings.turn_cost, settings.switch_cost
+    reach, reverse, gear = settings.reach, settings.reverse, settings.gear
+    bins, budget, kinds = int(settings.headings), int(settings.budget), len(curvatures)
     primitives_per_node = 2 * kinds if reverse > 0 else kinds
     ny, nx = clearance.shape
     node_cols = int(nx * cell / node_cell) + 1

@@ -59,14 +59,17 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 @jit
 def search_settings(params):
     """The car route's search settings (a :class:`~fuzzynav.kernels.records.CarSearch`) of the
-    layers' ``params``: the steering values' curvatures, the search's numbers (forward arcs only
-    for a robot that cannot reverse), the grid cell."""
+    layers' ``params``: the curvatures of the steering values, the grid cell and the search's
+    ``guide_car_…`` settings (forward arcs only for a robot that cannot reverse)."""
     steering = params[PARAM.guide_car_steering]
     curvatures = np.tan(np.linspace(-steering, steering, int(params[PARAM.guide_car_steerings]))) / params[PARAM.wheelbase]
-    numbers = params[PARAM.guide_car_room:PARAM.guide_car_gear + 1].copy()
-    if params[PARAM.max_reverse_speed] <= 0:
-        numbers[PARAM.guide_car_reverse - PARAM.guide_car_room] = 0.0
-    return CarSearch(curvatures, numbers, params[PARAM.guide_car_cell])
+    reverse = params[PARAM.guide_car_reverse] if params[PARAM.max_reverse_speed] > 0 else 0.0
+    return CarSearch(curvatures=curvatures, cell=params[PARAM.guide_car_cell], step=params[PARAM.guide_car_step],
+                     node_cell=params[PARAM.guide_car_node], headings=int(params[PARAM.guide_car_headings]),
+                     weight=params[PARAM.guide_car_weight], comfort=params[PARAM.guide_car_comfort],
+                     turn_cost=params[PARAM.guide_car_turn], switch_cost=params[PARAM.guide_car_switch],
+                     reach=params[PARAM.guide_car_reach], budget=int(params[PARAM.guide_car_budget]),
+                     reverse=reverse, gear=params[PARAM.guide_car_gear])
 
 
 @jit
@@ -78,7 +81,8 @@ def car(state, params, seen, robot, radius):
     tx, ty = robot.tx, robot.ty
     search = search_settings(params)
     found, manoeuvre, backwards, px, py, kappa, run = car_route.first_leg(
-        seen, robot, radius + search.numbers[0], radius, search, params[PARAM.guide_car_ahead], params[PARAM.guide_car_tight])
+        seen, robot, radius + params[PARAM.guide_car_room], radius, search, params[PARAM.guide_car_ahead],
+        params[PARAM.guide_car_tight])
     if found and manoeuvre:
         state[STATE.guide_gear] = -1.0 if backwards else 1.0
         state[STATE.guide_kappa], state[STATE.guide_run] = kappa, run

@@ -135,9 +135,9 @@ class Follow:
 @dataclass(frozen=True, kw_only=True)
 class Guidance:
     """The route guidance and its car route (:mod:`fuzzynav.kernels.guidance`,
-    :mod:`fuzzynav.kernels.car_route`); the search's numbers ``guide_car_room`` … ``guide_car_gear``
-    are contiguous, in the order of :func:`fuzzynav.kernels.car_search.search`, and so are the
-    grid route's rooms ``guide_room``, ``guide_narrow``, ``guide_bare`` (widest first)."""
+    :mod:`fuzzynav.kernels.car_route`; :func:`fuzzynav.kernels.guidance.search_settings` gives the
+    car route's search its ``guide_car_…`` settings by name); the grid route tries the rooms
+    ``guide_room``, ``guide_narrow``, ``guide_bare`` in that order (widest first)."""
 
     guide: float
     """1: the layer runs"""

@@ -12,7 +12,8 @@ inside a kernel or in Python alike. A field's comment gives its unit.
 - :class:`Layers` — the recovery / loop-escape / guidance layers of one robot
   (:mod:`fuzzynav.kernels.layers`);
 - :class:`Sightings` — the obstacle points a robot remembers (:mod:`fuzzynav.kernels.sightings`);
-- :class:`CarSearch` — the car route's search settings (:mod:`fuzzynav.kernels.car_route`);
+- :class:`CarSearch` — the settings of the hybrid A* search (:mod:`fuzzynav.kernels.car_search`)
+  of the car route and of :mod:`fuzzynav.world.hybrid_astar`;
 - :class:`TurnRoom` — the turning-room guard's distances (:func:`fuzzynav.kernels.guard.turn_wanted`);
 - :class:`Thresholds` — the behaviour selection's distances (:func:`fuzzynav.kernels.guard.select`);
 - :class:`Shares` — the learned avoider's shares of a batch (:func:`fuzzynav.kernels.learned.drive`);
@@ -92,11 +93,22 @@ class Sightings(NamedTuple):
 
 
 class CarSearch(NamedTuple):
-    """The car route's search (:func:`fuzzynav.kernels.car_search.search`)."""
+    """The settings of the hybrid A* search for a car (:func:`fuzzynav.kernels.car_search.search`;
+    :mod:`fuzzynav.world.hybrid_astar` tells their meaning)."""
 
-    curvatures: np.ndarray  # (K,) 1/m, the arcs' curvatures
-    numbers: np.ndarray  # the search's numbers, in the order of car_search.search (radius first, m)
+    curvatures: np.ndarray  # (K,) 1/m: primitive a is the arc of curvatures[a % K], backwards when a >= K
     cell: float  # m, the clearance grid's cell
+    step: float  # m, the length of an arc
+    node_cell: float  # m, the cell of a search node
+    headings: int  # the heading bins of a search node
+    weight: float  # the weight of the clearance cost
+    comfort: float  # m, the clearance beyond which an arc costs no more
+    turn_cost: float  # the cost per metre of an arc at full lock
+    switch_cost: float  # m, the cost of a change of steering
+    reach: float  # m, the search ends this near the goal
+    budget: int  # the search nodes before it gives up
+    reverse: float  # the cost factor of a backward arc (0: forward arcs only)
+    gear: float  # m, the cost of a change of direction
 
 
 class TurnRoom(NamedTuple):

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fuzzynav.kernels import car_search
+from fuzzynav.kernels.records import CarSearch
 from fuzzynav.world.planning import cost_to_go, default_cell, occupancy
 from fuzzynav.world.world import World
 
@@ -61,18 +62,27 @@ class Car:
 class Search:
     """Search parameters (module docstring)."""
 
-    steerings: int = 7
-    step: float = 0.2
-    headings: int = 72
-    node_cell: float = 0.1
-    weight: float = 3.0
-    comfort: float = 0.4
-    turn_cost: float = 0.1
-    switch_cost: float = 0.05
-    reach: float = 0.5
-    budget: int = 200_000
-    reverse: float = 0.0
-    gear: float = 0.0
+    steerings: int = 7  # steering values in [−α_max, α_max], one arc each
+    step: float = 0.2  # m, the length of an arc
+    headings: int = 72  # heading bins of a search node
+    node_cell: float = 0.1  # m, the cell of a search node
+    weight: float = 3.0  # the weight of the clearance cost
+    comfort: float = 0.4  # m, the clearance beyond which an arc costs no more
+    turn_cost: float = 0.1  # the cost per metre of an arc at full lock
+    switch_cost: float = 0.05  # m, the cost of a change of steering
+    reach: float = 0.5  # m, the search ends this near the goal
+    budget: int = 200_000  # search nodes before it gives up
+    reverse: float = 0.0  # the cost factor of a backward arc (0: forward arcs only)
+    gear: float = 0.0  # m, the cost of a change of direction
+
+    def settings(self, car: Car, cell: float) -> CarSearch:
+        """The compiled search's settings for ``car`` on a clearance grid of ``cell`` m."""
+        steerings = np.linspace(-car.max_steering, car.max_steering, self.steerings)
+        return CarSearch(curvatures=np.tan(steerings) / car.wheelbase, cell=float(cell), step=float(self.step),
+                         node_cell=float(self.node_cell), headings=int(self.headings), weight=float(self.weight),
+                         comfort=float(self.comfort), turn_cost=float(self.turn_cost),
+                         switch_cost=float(self.switch_cost), reach=float(self.reach), budget=int(self.budget),
+                         reverse=float(self.reverse), gear=float(self.gear))
 
 
 @dataclass(frozen=True)
@@ -95,14 +105,12 @@ def hybrid_astar(world: World, start, goal, car: Car, search: Search = Search(),
     heuristic = cost_to_go(grid, goal, car.radius, weight=search.weight, comfort=search.comfort)
     if heuristic is None:
         return None
-    steerings = np.linspace(-car.max_steering, car.max_steering, search.steerings)
-    curvatures = np.tan(steerings) / car.wheelbase
-    numbers = np.array([car.radius, search.step, search.node_cell, search.headings, search.weight, search.comfort,
-                        search.turn_cost, search.switch_cost, search.reach, search.budget, search.reverse, search.gear],
-                       dtype=float)
-    xs, ys, ths, parents, primitives, end = car_search.search(grid.clearance, cell, heuristic,
-                                                    np.asarray(start, dtype=float)[:3],
-                                                    np.asarray(goal, dtype=float)[:2], curvatures, numbers)
+    settings = search.settings(car, cell)
+    curvatures = settings.curvatures
+    xs, ys, ths, parents, primitives, end = car_search.search(grid.clearance, heuristic,
+                                                              np.asarray(start, dtype=float)[:3],
+                                                              np.asarray(goal, dtype=float)[:2], float(car.radius),
+                                                              settings)
     if end < 0:
         return None
     chain = [int(end)]
