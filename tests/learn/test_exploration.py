@@ -83,10 +83,13 @@ def test_schedules():
     for schedule in (Constant(0.1), ExponentialDecay(0.5, 0.99, 0.01), InverseVisits(2.0, 0.8)):
         assert schedule_from_dict(schedule_to_dict(schedule)) == schedule
     assert as_schedule(0.2) == Constant(0.2)
-    with pytest.raises(InputError, match="rate"):
-        ExponentialDecay(1.0, 1.5)
-    with pytest.raises(InputError, match="power"):
-        InverseVisits(power=0.4)
+    for rate in (1.5, 0.0):  # in (0, 1]
+        with pytest.raises(InputError, match="rate"):
+            ExponentialDecay(1.0, rate)
+    assert ExponentialDecay(1.0, 1.0)(5) == 1.0
+    for power in (0.4, 0.5, 1.1):  # in (0.5, 1]
+        with pytest.raises(InputError, match="power"):
+            InverseVisits(power=power)
     with pytest.raises(InputError, match="alpha"):
         as_schedule("fast", "alpha")
     with pytest.raises(InputError, match="schedule kind"):

@@ -43,10 +43,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict, row_max
 from fuzzynav.learn.extraction import rule_table
-from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
+from fuzzynav.learn.schedules import as_schedule, schedule_to_dict
 from fuzzynav.learn.state import restore_state
 
 
@@ -96,8 +97,8 @@ class FuzzyQLearner:
         n_heads, n_rules, n_candidates, _ = self.candidates.shape
         if int(n_learners) != n_learners or n_learners < 1:
             raise InputError(f"must be a positive integer, got {n_learners!r}", field="n_learners")
-        self.gamma = unit_interval(gamma, "gamma")
-        self.lam = unit_interval(lam, "lam")
+        self.gamma = validation.number(gamma, field="gamma", lo=0.0, hi=1.0)
+        self.lam = validation.number(lam, field="lam", lo=0.0, hi=1.0)
         self.alpha = as_schedule(alpha, "alpha")
         self.policy = policy if policy is not None else EpsilonGreedy(0.1)
         self.normalise = bool(normalise)

@@ -22,6 +22,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 
 
@@ -48,8 +49,7 @@ class ExponentialDecay:
     per_visit: ClassVar[bool] = False
 
     def __post_init__(self):
-        if not 0.0 < self.rate <= 1.0:
-            raise InputError(f"decay rate must be in (0, 1], got {self.rate}", field="rate")
+        validation.number(self.rate, field="rate", lo=0.0, lo_open=True, hi=1.0)
 
     def __call__(self, t):
         return np.maximum(self.floor, self.start * np.power(self.rate, t))
@@ -70,20 +70,11 @@ class InverseVisits:
     per_visit: ClassVar[bool] = True
 
     def __post_init__(self):
-        if not 0.5 < self.power <= 1.0:
-            raise InputError(f"power must be in (0.5, 1], got {self.power}", field="power")
+        validation.number(self.power, field="power", lo=0.5, lo_open=True, hi=1.0)
 
     def __call__(self, visits):
         rate = self.scale / np.power(1.0 + np.asarray(visits, dtype=float), self.power)
         return np.maximum(self.floor, rate)
-
-
-def unit_interval(value, field: str) -> float:
-    """``value`` as a float in [0, 1] (discount γ, trace decay λ), else :class:`InputError`."""
-    value = float(value)
-    if not 0.0 <= value <= 1.0:
-        raise InputError(f"must be in [0, 1], got {value}", field=field)
-    return value
 
 
 Schedule = Constant | ExponentialDecay | InverseVisits

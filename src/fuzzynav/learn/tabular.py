@@ -30,9 +30,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict
-from fuzzynav.learn.schedules import as_schedule, schedule_to_dict, unit_interval
+from fuzzynav.learn.schedules import as_schedule, schedule_to_dict
 from fuzzynav.learn.state import restore_state
 from fuzzynav.world.geometry import wrap_angle
 
@@ -69,8 +70,8 @@ class TabularLearner:
             if int(value) != value or value < 1:
                 raise InputError(f"must be a positive integer, got {value!r}", field=name)
         self.method = method
-        self.gamma = unit_interval(gamma, "gamma")
-        self.lam = unit_interval(lam, "lam")
+        self.gamma = validation.number(gamma, field="gamma", lo=0.0, hi=1.0)
+        self.lam = validation.number(lam, field="lam", lo=0.0, hi=1.0)
         self.alpha = as_schedule(alpha, "alpha")
         self.policy = policy if policy is not None else EpsilonGreedy(0.1)
         self.q = np.full((int(n_tables), int(n_states), int(n_actions)), float(initial_q))
