@@ -15,7 +15,11 @@ DIVISORS = (5, 10, 20)  # π/5, π/10, π/20: Fig IV.7's PG, PM, PP
 
 
 def _is_pi(node: ast.AST) -> bool:
-    return (isinstance(node, ast.Attribute) and node.attr == "pi") or (isinstance(node, ast.Name) and node.id == "pi")
+    """``pi``, ``math.pi``, ``np.pi``, the aliases modules give it (``PI``, ``common.PI``), negated or not."""
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        node = node.operand
+    name = node.attr if isinstance(node, ast.Attribute) else node.id if isinstance(node, ast.Name) else ""
+    return name.lower() == "pi"
 
 
 def _definitions(tree: ast.AST) -> list[str]:
@@ -39,8 +43,14 @@ def test_the_steering_singletons_are_written_once():
             if found:
                 elsewhere[str(source.relative_to(PACKAGE))] = found
     assert elsewhere == {}, f"import them from fuzzynav.fuzzy.constants instead: {elsewhere}"
-    assert sorted(_definitions(ast.parse(HOME.read_text(encoding="utf-8")))) == ["math.pi / 10", "math.pi / 20",
-                                                                                  "math.pi / 5"]
+    assert sorted(_definitions(ast.parse(HOME.read_text(encoding="utf-8")))) == [
+        "-math.pi / 10", "-math.pi / 20", "math.pi / 10", "math.pi / 20", "math.pi / 5"]
+
+
+def test_an_alias_of_pi_is_caught():
+    for text in ("PI / 5", "-common.PI / 10", "np.pi / 20", "0.6283185"):
+        assert _definitions(ast.parse(text)), text
+    assert not _definitions(ast.parse("PI / 4 + math.pi / 2"))
 
 
 def test_the_constants_are_the_figures_values():

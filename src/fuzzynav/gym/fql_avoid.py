@@ -21,10 +21,11 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control.learned import LearnedAvoidanceNavigator, avoidance_inputs
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.fuzzy.systems_navigation import D_MAX
 from fuzzynav.gym.episodes import unscale_actions
 from fuzzynav.learn.envs import GridPremise
-from fuzzynav.learn.tasks.common import PI, fql_learner, grid_system, output_variable, steering_episodes
+from fuzzynav.learn.tasks.common import fql_learner, grid_system, output_variable, steering_episodes
 from fuzzynav.learn.tasks.fql_avoid import (
     AVOID_SPEED,
     AVOID_SPEED_SHARE,
@@ -52,7 +53,7 @@ class NavigatorAvoidance:
         self.tolerance = prior_tolerance(prior, batch)
         self.free = free_rules(self.open_side)
         template = grid_system(avoid_inputs(self.open_side),
-                               [output_variable("alpha", AVOID_STEERING, (-PI / 5, PI / 5))],
+                               [output_variable("alpha", AVOID_STEERING, (-ALPHA_MAX, ALPHA_MAX))],
                                [["Z"] * (self.free[-1] + 1)], "premise", "")
         self.premise = GridPremise(template)
         self.navigator = LearnedAvoidanceNavigator(template)  # drives training, as the fql-avoid task

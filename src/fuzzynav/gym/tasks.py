@@ -37,18 +37,17 @@ Rewards (``reward=``):
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav.fuzzy.constants import SPEED_SINGLETONS, STEERING_SINGLETONS
 from fuzzynav.fuzzy.systems_navigation import D_MAX, WALL_D_M, WALL_D_S
 from fuzzynav.learn import rewards
 
-PI = math.pi
-STEERING3 = (-PI / 5, 0.0, PI / 5)  # eq VI.12 / VI.18: NG, Z, PG
-STEERING5 = (-PI / 5, -PI / 10, 0.0, PI / 10, PI / 5)  # eq VI.15
-GOAL_SPEEDS = (1.0, 1.8, 3.0)  # eq VI.13: F, M, G of Fig IV.8
+STEERING3 = tuple(STEERING_SINGLETONS[label] for label in ("NG", "Z", "PG"))  # eq VI.12 / VI.18
+STEERING5 = tuple(STEERING_SINGLETONS[label] for label in ("NG", "NM", "Z", "PM", "PG"))  # eq VI.15
+GOAL_SPEEDS = tuple(SPEED_SINGLETONS[label] for label in ("F", "M", "G"))  # eq VI.13, of Fig IV.8
 AVOID_SPEEDS = (0.5, 1.0, 1.8)  # candidate speeds near obstacles (the avoider's F, M, G)
 REWARDS = ("thesis", "dense")
 DENSE_GOAL, DENSE_COLLISION, DENSE_STEP = 10.0, -10.0, -0.01

@@ -30,6 +30,7 @@ import numpy as np
 
 from fuzzynav.control.learned import check_speed, model_name
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.constants import STEERING_SINGLETONS
 from fuzzynav.fuzzy.coverage import check_covered
 from fuzzynav.fuzzy.io.document import from_document
 from fuzzynav.fuzzy.membership import Singleton
@@ -61,8 +62,8 @@ WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered
 # episode k the mean reinforcement is constant" (§VI.5.1, Fig VI.8: "à partir de l'épisode 180, la valeur
 # moyenne des renforcements est constante"), which these settings make a test the first window can fail
 
-STEERING3 = {"NG": -PI / 5, "Z": 0.0, "PG": PI / 5}  # eq VI.12
-STEERING5 = {"NG": -PI / 5, "NM": -PI / 10, "Z": 0.0, "PM": PI / 10, "PG": PI / 5}  # eq VI.15
+STEERING3 = {label: STEERING_SINGLETONS[label] for label in ("NG", "Z", "PG")}  # eq VI.12
+STEERING5 = {label: STEERING_SINGLETONS[label] for label in ("NG", "NM", "Z", "PM", "PG")}  # eq VI.15
 SPEED3 = {"S": 0.1, "L": 0.5, "F": 1.0, "M": 1.8, "G": 3.0}  # the candidate speeds' labels (m/s): F, M, G
 # of Fig IV.8 and, to stop (Table IV.1 concludes Z = 0 at the goal), a creeping S and a low L
 SPEED_CANDIDATES = (("S", "L", "F"), ("L", "F", "M"), ("F", "M", "G"))  # eq VI.13's V_i1..3 of a rule whose

@@ -17,6 +17,7 @@ import numpy as np
 
 from fuzzynav.control.learned import LearnedAvoidanceNavigator, avoidance_inputs
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Trapezoidal
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -109,7 +110,7 @@ def avoid_template(open_side: bool = AVOID_OPEN) -> FuzzySystem:
     """The avoider's premise: the rules of its whole input grid, the free rules included (every
     conclusion Z until learned)."""
     return common.grid_system(avoid_inputs(open_side),
-                              [common.output_variable("alpha", AVOID_STEERING, (-common.PI / 5, common.PI / 5))],
+                              [common.output_variable("alpha", AVOID_STEERING, (-ALPHA_MAX, ALPHA_MAX))],
                               [["Z"] * (free_rules(open_side)[-1] + 1)], "premise", "")
 
 
@@ -117,7 +118,7 @@ def avoid_system(steering_index, speed_index=None, open_side: bool = AVOID_OPEN)
     """The learned avoider: the rules of Fig VI.17 with an obstacle near (the free rules of
     :func:`free_rules` excluded), conclusions by candidate index (steering, and speed if given),
     built by the one extractor :func:`~fuzzynav.learn.extraction.rule_table`."""
-    outputs = [(common.output_variable("alpha", AVOID_STEERING, (-common.PI / 5, common.PI / 5)),
+    outputs = [(common.output_variable("alpha", AVOID_STEERING, (-ALPHA_MAX, ALPHA_MAX)),
                 _avoid_candidates(AVOID_STEERING, open_side), steering_index)]
     if speed_index is not None:
         outputs.append((common.output_variable("v", AVOID_SPEEDS, (0.0, 4.0)),

@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.control.learned import FuzzyGoalSeeker
+from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.fuzzy.io.document import to_document
 from fuzzynav.fuzzy.membership import Trapezoidal, Triangular
 from fuzzynav.fuzzy.partition import strong_partition
@@ -93,7 +94,7 @@ def goal_fql_phases(task: GoalFQL, out: Path, episodes: int, batch: int = 1):
     protocol); the speed phase is built from the trained steering."""
     tolerance = common.extraction_tolerance(batch, common.TOLERANCE)
     inputs = task.inputs()
-    alpha = common.output_variable("alpha", task.steering, (-common.PI / 5, common.PI / 5))
+    alpha = common.output_variable("alpha", task.steering, (-ALPHA_MAX, ALPHA_MAX))
     template = common.grid_system(inputs, [alpha], [[alpha.labels[0]] * math.prod(len(v.terms) for v in inputs)],
                            task.name, "premise")
     premise = GridPremise(template)
@@ -124,7 +125,7 @@ def speed_candidates(inputs) -> np.ndarray:
 def goal_system(task: GoalFQL, learners: dict, tolerance: float = common.TOLERANCE) -> FuzzySystem:
     """The extracted controller: every rule with its best conclusion(s), as a TS0 system
     (:func:`~fuzzynav.learn.fql.extract_system`)."""
-    outputs = {"steering": common.output_variable("alpha", task.steering, (-common.PI / 5, common.PI / 5)),
+    outputs = {"steering": common.output_variable("alpha", task.steering, (-ALPHA_MAX, ALPHA_MAX)),
                "speed": common.output_variable("v", common.SPEED3, (0.0, 4.0))}
     learned = [name for name in outputs if name in learners]
     rules = math.prod(len(v.terms) for v in task.inputs())

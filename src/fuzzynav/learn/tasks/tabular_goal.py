@@ -13,6 +13,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.learned import TabularGoalSeeker, model_name
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.constants import ALPHA_MAX, STEERING_SINGLETONS
 from fuzzynav.learn.envs import FixedGoal, RandomGoal, RobotEnv
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.rewards import GoalSteeringReward
@@ -20,7 +21,6 @@ from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.learn.tabular import TabularLearner, ZoneSectorDiscretiser
 from fuzzynav.learn.tasks.common import (
     GOAL_TOLERANCE,
-    PI,
     Phase,
     batch_size,
     checkpoint_path,
@@ -32,7 +32,7 @@ from fuzzynav.learn.tasks.common import (
     summarise,
 )
 
-Q_STEERING = (0.0, -PI / 5, PI / 5)  # forward (α1), right (α2), left (α3)
+Q_STEERING = (0.0, -ALPHA_MAX, ALPHA_MAX)  # forward (α1), right (α2), left (α3)
 Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
 
 
@@ -60,7 +60,7 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
     (docs/training.md, "Tabular goal seeking")."""
     batch = batch_size(fixed) if batch is None else batch
     disc = q_discretiser(n_states)
-    steering = Q_STEERING if n_actions == 3 else (0.0, -PI / 10, PI / 10, -PI / 5, PI / 5)
+    steering = Q_STEERING if n_actions == 3 else tuple(STEERING_SINGLETONS[label] for label in ("Z", "NM", "PM", "NG", "PG"))
     actions = np.asarray(steering)
     env = RobotEnv(FixedGoal() if fixed else RandomGoal(), lambda s: disc(s.goal[:, 0], s.goal[:, 1]),
                    lambda a, s: (actions[a], Q_SPEED), GoalSteeringReward(), batch=batch, max_steps=500,
