@@ -101,6 +101,13 @@ def edges(name: str, path: Path) -> set[tuple[str, str]]:
 GRAPH = {name: edges(name, path) for name, path in MODULES.items()}
 
 
+def test_the_layer_table_of_the_architecture_page_is_this_one():
+    page = (SRC.parent / "docs" / "ARCHITECTURE.md").read_text(encoding="utf-8")
+    rows = re.findall(r"^\| (\d+) \| ([^|]+) \|", page, flags=re.M)
+    documented = {name: int(layer) for layer, packages in rows for name in re.findall(r"`([\w.]+)`", packages)}
+    assert documented == LAYERS
+
+
 def test_every_module_has_a_layer():
     for name in MODULES:
         layer_of(name)
