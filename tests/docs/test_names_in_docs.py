@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from fuzzynav.catalog.controllers import CONTROLLERS
+from fuzzynav.catalog.experiments import EXPERIMENTS
 from fuzzynav.catalog.tasks import TASKS
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -18,7 +19,7 @@ PAGES = [ROOT / "CONTRIBUTING.md", ROOT / "docs" / "ARCHITECTURE.md"]
 SUBPACKAGES = sorted(p.name for p in PACKAGE.iterdir() if (p / "__init__.py").is_file())
 PATH = re.compile(r"(?<![\w/.<])(?:(?:tests|benchmarks|docs|src)/[\w/.-]+|\w+/[\w/]*\w\.(?:py|md))")
 DOTTED = re.compile(rf"^(?:fuzzynav|{'|'.join(SUBPACKAGES)})(?:\.\w+)+")
-ENTRY_POINT_GROUPS = {CONTROLLERS.group, TASKS.group}  # names of groups, not of modules
+ENTRY_POINT_GROUPS = {CONTROLLERS.group, TASKS.group, EXPERIMENTS.group}  # names of groups, not of modules
 NOT_IMPORTED = {"fuzzynav.__main__"}  # importing it runs the command line
 
 

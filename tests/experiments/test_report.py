@@ -9,7 +9,9 @@ import pytest
 
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.cli import main
+from fuzzynav.errors import InputError
 from fuzzynav.experiments.claims import NOT_REPRODUCED, PARTLY, REPRODUCED, Check, Claim, verdict_of
+from fuzzynav.lookup import Registry
 
 
 class Page(HTMLParser):
@@ -114,7 +116,8 @@ def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp
     spec = registry.Experiment("fig-IX-1", fig_ix_1, "a figure of a chapter the thesis does not have", "§IX.1",
                                Claim("The answer is 42.", "The answer is 42.",
                                      lambda n: [Check("answer", n["answer"], "= 42", n["answer"] == 42)]))
-    monkeypatch.setattr(registry, "_REGISTRY", {})  # as in a fresh process: the plug-in registers first
+    fresh = Registry("experiment", "ID", registry.Experiment, group="fuzzynav.experiments")
+    monkeypatch.setattr(registry, "EXPERIMENTS", fresh)  # as in a fresh process: the plug-in registers first
     monkeypatch.setattr(registry, "_THESIS_MODULES", tuple(f"fuzzynav.experiments.claims_{c}" for c in ("iv", "v", "vi")))
     registry.register_experiment(spec)
     with pytest.raises(ValueError, match="already registered"):
@@ -125,6 +128,26 @@ def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp
     assert main(["reproduce", "fig-IX-1", "--seed", "1", "--out", str(tmp_path)]) == 0
     assert json.loads((tmp_path / "fig-IX-1" / "claim.json").read_text())["verdict"] == NOT_REPRODUCED
     assert "fig-IX-1" in read_page(tmp_path)[0].sections
+
+
+def test_an_experiment_from_an_installed_distribution(tmp_path, monkeypatch):
+    """The same from another distribution: its module and one entry point line, nothing of fuzzynav edited."""
+    from tests.catalog.plugins import installed
+
+    registry.specs()  # the thesis' own first, as any first use registers them
+    with installed(monkeypatch, tmp_path / "site", registry.EXPERIMENTS,
+                   {"figures": "tests.catalog.plugin_figure:EXPERIMENTS"}):
+        assert "fig-IX-2" in registry.available()
+        for seed, verdict in (("0", REPRODUCED), ("1", NOT_REPRODUCED)):  # its claim checks its numbers
+            assert main(["reproduce", "fig-IX-2", "--seed", seed, "--out", str(tmp_path / "out")]) == 0
+            assert json.loads((tmp_path / "out" / "fig-IX-2" / "claim.json").read_text())["verdict"] == verdict
+    assert "fig-IX-2" not in registry.available()
+    with pytest.raises(InputError, match="'fig-IV-12' is already registered"):
+        with installed(monkeypatch, tmp_path / "clash", registry.EXPERIMENTS, {"twin": "clashing_figure:EXPERIMENT"}):
+            (tmp_path / "clash" / "clashing_figure.py").write_text(
+                "from dataclasses import replace\nfrom fuzzynav.catalog.experiments import spec\n"
+                "EXPERIMENT = replace(spec('fig-IV-12'), run='tests.catalog.plugin_figure:fig_ix_2')\n")
+            registry.spec("fig-IV-12")
 
 
 def test_an_experiment_id_must_name_its_chapter():

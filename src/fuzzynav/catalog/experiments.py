@@ -9,8 +9,15 @@ runs; the full setting is what the thesis did.
 
 The thesis' experiments are declared chapter by chapter beside their claims
 (:mod:`fuzzynav.experiments.claims_iv`, ``claims_v``, ``claims_vi``); code outside the package adds
-its own with :func:`register_experiment`. Ids list in the thesis' order: by chapter, then by the
-number of the figure (``fig-V-7`` before ``fig-V-10``).
+its own with :func:`register_experiment`, and an installed distribution through the entry point
+group ``fuzzynav.experiments`` (an :class:`Experiment` or a list of them, read on first use, after
+the thesis' own)::
+
+    [project.entry-points."fuzzynav.experiments"]
+    my-figures = "my_package.figures:EXPERIMENTS"
+
+Ids list in the thesis' order: by chapter, then by the number of the figure (``fig-V-7`` before
+``fig-V-10``).
 """
 
 from __future__ import annotations
@@ -22,7 +29,7 @@ from dataclasses import dataclass
 from importlib import import_module
 from typing import Protocol
 
-from fuzzynav.lookup import unknown
+from fuzzynav.lookup import Registry
 
 
 class ClaimLike(Protocol):
@@ -56,6 +63,16 @@ class Experiment:
         if not _ID.match(self.id):
             raise ValueError(f"experiment id {self.id!r} is not of the form kind-CHAPTER[-NUMBER] (e.g. fig-VI-22)")
 
+    @property
+    def name(self) -> str:
+        """Its id: the name the registry knows it by."""
+        return self.id
+
+    @property
+    def aliases(self) -> tuple[str, ...]:
+        """None: an experiment answers to its id only."""
+        return ()
+
     def function(self) -> Callable:
         """The function that runs the experiment."""
         if callable(self.run):
@@ -78,20 +95,20 @@ def _roman(numeral: str) -> int:
     return sum(-v if v < after else v for v, after in zip(values, values[1:] + [0]))
 
 
-_REGISTRY: dict[str, Experiment] = {}
+EXPERIMENTS: Registry[Experiment] = Registry("experiment", "ID", Experiment, group="fuzzynav.experiments")
 _THESIS_MODULES: tuple[str, ...] = ("fuzzynav.experiments.claims_iv", "fuzzynav.experiments.claims_v", "fuzzynav.experiments.claims_vi",
                    "fuzzynav.experiments.claims_tuning")
 
 
 def register_experiment(spec: Experiment) -> None:
-    """Add ``spec`` to the experiments ``fuzzynav reproduce`` knows; an id registered twice is an error."""
-    if spec.id in _REGISTRY:
-        raise ValueError(f"experiment {spec.id!r} is already registered")
-    _REGISTRY[spec.id] = spec
+    """Add ``spec`` to the experiments ``fuzzynav reproduce`` knows; an id registered twice is a
+    ``ValueError``."""
+    EXPERIMENTS.register(spec)
 
 
 def _register_thesis() -> None:
-    """The thesis' own experiments, registered once, the first time the registry is read."""
+    """The thesis' own experiments, registered once, the first time the registry is read (before
+    the plug-ins, which the registry reads on first use)."""
     global _THESIS_MODULES
     modules, _THESIS_MODULES = _THESIS_MODULES, ()
     for name in modules:
@@ -102,7 +119,7 @@ def _register_thesis() -> None:
 def specs() -> dict[str, Experiment]:
     """Every registered experiment by id, in the thesis' order."""
     _register_thesis()
-    return {spec.id: spec for spec in sorted(_REGISTRY.values(), key=Experiment.order)}
+    return {spec.id: spec for spec in sorted(EXPERIMENTS.values(), key=Experiment.order)}
 
 
 def available() -> dict[str, str]:
@@ -112,10 +129,8 @@ def available() -> dict[str, str]:
 
 def spec(key: str) -> Experiment:
     """The experiment registered as ``key``; an unknown id is an :class:`~fuzzynav.errors.InputError`."""
-    table = specs()
-    if key not in table:
-        raise unknown(table, key, what="experiment", field="ID", listing="see 'fuzzynav reproduce --list'")
-    return table[key]
+    _register_thesis()
+    return EXPERIMENTS.find(key, listing="see 'fuzzynav reproduce --list'")
 
 
 def experiment(key: str) -> Callable:
