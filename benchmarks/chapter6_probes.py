@@ -21,7 +21,16 @@ whose ``fuzzynav reproduce ID --seed S --out DIR`` numbers are in the DIRs: the 
 
     python benchmarks/chapter6_probes.py avoid-rules avoid-4.json
     python benchmarks/chapter6_probes.py wall-bound rays --sweeps 2
+``table-vi-1 SEED``: Table VI.1's four tabular learners (§VI.2) trained as ``fuzzynav reproduce
+table-VI-1`` trains them, but with another exploration and learning-rate schedule, to see whether
+the thesis' trend (more state–action pairs, more episodes) hides behind the package's schedule:
+``--schedule fql`` is fuzzy Q-learning's (:data:`fuzzynav.learn.tasks.common.THESIS`: ε per
+episode, β = 1/(1 + visits) floored); ``--schedule per-state`` lets each state's ε decay with that
+state's own visits, ε_s = max(0.02, 0.3 · 0.99^visits_s), the same β — exploration that lasts
+longer in a table of more states. Prints one JSON line per size, then Spearman's ρ.
+
     python benchmarks/chapter6_probes.py relative fig-VI-13 out-0 out-1 out-2 out-3 out-4
+    python benchmarks/chapter6_probes.py table-vi-1 0 --schedule per-state --episodes 3000 --out probe/
 """
 
 from __future__ import annotations
@@ -35,10 +44,15 @@ import numpy as np
 
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedWallFollower
+from fuzzynav.experiments.chapter6 import rank_correlation
 from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
 from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
+from fuzzynav.learn.exploration import EpsilonGreedy, greedy_choice
 from fuzzynav.learn.extraction import rule_table
-from fuzzynav.learn.tasks.common import STEERING3
+from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
+from fuzzynav.learn.tabular import TabularLearner
+from fuzzynav.learn.tasks import tabular_goal
+from fuzzynav.learn.tasks.common import STEERING3, THESIS, Phase, TrainRequest, checkpoint_path, run_phases
 from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
 from fuzzynav.learn.tasks.fql_wall import wall_parts
 from fuzzynav.sim import BatchSimulator
@@ -98,6 +112,40 @@ def wall_bound(sensing: str, sweeps: int) -> dict:
             "alpha": choice[0].tolist(), "v": choice[1].tolist()}
 
 
+class PerStateEpsilon(TabularLearner):
+    """A tabular learner whose ε-greedy exploration decays with the visits of the state it acts
+    in (ε_s = max(floor, ε0 · decay^visits_s)) instead of with the episode."""
+
+    start, decay, floor = 0.3, 0.99, 0.02
+
+    def act(self, s, rng):
+        s = np.asarray(s, dtype=int)
+        q = self.q[0, s]
+        epsilon = np.maximum(self.floor, self.start * self.decay ** self.visits[0, s].sum(axis=-1))
+        u = rng.random(s.size)
+        explore = np.minimum((u / epsilon * q.shape[-1]).astype(int), q.shape[-1] - 1)
+        return np.where(u < epsilon, explore, greedy_choice(q, rng))
+
+
+def table_vi_1(seed: int, schedule: str, episodes: int, out: Path) -> dict:
+    """Table VI.1's four sizes under ``schedule`` (module docstring), one robot, ``episodes`` each."""
+    rows = []
+    for n_states, n_actions in ((9, 3), (11, 3), (13, 3), (19, 5)):
+        model = out / f"table-vi-1-{schedule}-{n_states}x{n_actions}-{seed}.json"
+        request = TrainRequest(out=model, task="q-goal", episodes=episodes, seed=seed, progress=False)
+        env, _, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, batch=1)
+        kind = PerStateEpsilon if schedule == "per-state" else TabularLearner
+        learner = kind(disc.n_states, len(steering), gamma=THESIS["gamma"],
+                       alpha=InverseVisits(1.0, 1.0, THESIS["rate_floor"]),
+                       policy=EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"])))
+        result, _ = run_phases([Phase("steering", env, learner, episodes, checkpoint_path(model, "steering"))], request)
+        converged = result["steering"]["converged_at"]
+        rows.append({"states": n_states, "actions": n_actions, "episodes": episodes,
+                     "episodes_to_converge": converged if converged <= episodes else None})
+        print(json.dumps({"seed": seed, "schedule": schedule, **rows[-1]}), flush=True)
+    return {"seed": seed, "schedule": schedule, "rank_correlation": rank_correlation(rows)}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="probe", required=True)
@@ -110,8 +158,16 @@ def main() -> None:
     relative = sub.add_parser("relative")
     relative.add_argument("id", choices=sorted(RELATIVE))
     relative.add_argument("dirs", nargs="+", help="the --out DIR of one reproduce run per seed")
+    table = sub.add_parser("table-vi-1")
+    table.add_argument("seed", type=int)
+    table.add_argument("--schedule", choices=("fql", "per-state"), default="per-state")
+    table.add_argument("--episodes", type=int, default=3000, help="single episodes per size")
+    table.add_argument("--out", default=".", help="folder of the models and checkpoints")
     args = parser.parse_args()
-    if args.probe == "avoid-rules":
+    if args.probe == "table-vi-1":
+        Path(args.out).mkdir(parents=True, exist_ok=True)
+        print(json.dumps(table_vi_1(args.seed, args.schedule, args.episodes, Path(args.out))))
+    elif args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
     elif args.probe == "relative":
         runs = [json.loads((Path(d) / args.id / f"{args.id}.json").read_text()) for d in args.dirs]
