@@ -87,6 +87,9 @@ def test_navigator_learns_the_latency_in_whole_steps_of_its_robot():
     assert navigator.params[PARAM.delay] == round(0.26 / dt) > 0
     BatchSimulator(scenario("fig-IV-22a"), navigator, seed=0)
     assert navigator.params[PARAM.delay] == 0
+    sparse = make_controller("fuzzy-2b")  # seven rays: a scan too sparse to move (docs/results/robustness.md)
+    BatchSimulator(scenario("fig-IV-22a", (("robot.actuation.latency", 0.3),)), sparse, seed=0)
+    assert sparse.params[PARAM.delay] == 0
 
 
 def test_prediction_rolls_the_queued_commands_through_the_kinematics():

@@ -55,14 +55,12 @@ register_controller(ControllerSpec(
     "this package; Fiorini & Shiller 1998", GOAL, "lidar"))
 register_controller(ControllerSpec(
     "fuzzy-5b-rays", "fuzzynav.control.robust:fuzzy_5b",
-    "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors, "
-    "compensating the actuation latency (version 1 did not): version 1 of fuzzy-5b",
-    "thesis §IV.7; Lumelsky & Stepanov 1987; Smith 1957", GOAL, "rays", roles=FIVE, version=2))
+    "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors: "
+    "version 1 of fuzzy-5b", "thesis §IV.7; Lumelsky & Stepanov 1987", GOAL, "rays", roles=FIVE))
 register_controller(ControllerSpec(
     "fuzzy-2b", "fuzzynav.control.robust:fuzzy_2b",
-    "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors, "
-    "compensating the actuation latency (version 1 did not)",
-    "thesis Table IV.2, Fig IV.9; Lumelsky & Stepanov 1987; Smith 1957", GOAL, "rays", roles=TWO, version=2))
+    "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors",
+    "thesis Table IV.2, Fig IV.9; Lumelsky & Stepanov 1987", GOAL, "rays", roles=TWO))
 register_controller(ControllerSpec(
     "fuzzy-2b-thesis", "fuzzynav.control.robust:fuzzy_2b_thesis",
     "goal seeking + obstacle avoidance by distance and angle of the nearest obstacle, switched, as published",

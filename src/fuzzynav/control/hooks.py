@@ -14,7 +14,7 @@ controller implements one by defining its member, without deriving from it:
 - :class:`KnowsLatency` — ``for_latency(seconds)``: told the robot's actuation latency (the
   scenario's ``robot.actuation.latency``, 0 without one; on a real robot, the figure its
   configuration gives) before the episodes, to decide for the pose where its commands will act
-  (the default navigators, :mod:`fuzzynav.kernels.latency`);
+  (the default ``fuzzy-5b``, :mod:`fuzzynav.kernels.latency`);
 - :class:`BringsSensors` — ``sensors``: the sensor ring it reads by default
   (:class:`~fuzzynav.robot.sensors.SensorRing`, ``None``: the thesis' seven rays); a scenario's
   ``sensors`` key, or ``--sensors``, overrides it;

@@ -69,12 +69,15 @@ class RobustNavigator(BatchController):
     :class:`fuzzynav.kernels.layers.Guidance`, e.g. :data:`fuzzynav.control.through_gaps.GUIDANCE`),
     the route guidance (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (a
     :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
-    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are
-    its rule bases by role."""
+    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); with ``compensate=True``, the
+    decision at the pose where the command will act once told the robot's actuation latency
+    (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); ``systems``
+    of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None):
-        self.navigator, self.name = navigator, name
+                 stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
+                 compensate: bool = False):
+        self.navigator, self.name, self.compensate = navigator, name, compensate
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
@@ -119,8 +122,8 @@ class RobustNavigator(BatchController):
     def for_latency(self, latency: float) -> RobustNavigator:
         """Compensate an actuation latency of ``latency`` seconds (the scenario's
         ``robot.actuation.latency``; 0: none), in whole steps of the robot's Δt as the robot's
-        queue holds them (:mod:`fuzzynav.kernels.latency`)."""
-        self._latency = float(latency)
+        queue holds them (:mod:`fuzzynav.kernels.latency`); ignored without ``compensate``."""
+        self._latency = float(latency) if self.compensate else 0.0
         delay = float(round(self._latency / self.params[layers.PARAM.plant_dt]))
         if delay != self.params[layers.PARAM.delay]:
             self.params[layers.PARAM.delay] = delay

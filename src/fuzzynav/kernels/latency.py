@@ -1,4 +1,4 @@
-"""Latency compensation of the default navigators, compiled: a Smith predictor (Smith 1957,
+"""Latency compensation of the default navigator (``fuzzy-5b``), compiled: a Smith predictor (Smith 1957,
 "Closer control of loops with dead time") on the robot's own motion.
 
 A robot whose commands reach the wheels ``delay`` steps late (the scenario's
