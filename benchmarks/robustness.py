@@ -35,10 +35,12 @@ LABELS = {"robot.sensor_noise.range_sigma": "range noise σ (m)", "robot.actuati
           "robot.actuation.slip": "slip (fraction)", "robot.odometry.drift": "odometry drift (m/m)"}
 
 
-def conditions(quick: bool) -> list[tuple[str, tuple]]:
-    """(name, perturbations) of every condition: none, each key at each level, the combined set."""
+def conditions(quick: bool, keys=tuple(SWEEPS)) -> list[tuple[str, tuple]]:
+    """(name, perturbations) of every condition: none, each of ``keys`` at each level, the combined set."""
     out = [("none", ())]
     for key, levels in SWEEPS.items():
+        if key not in keys:
+            continue
         for level in levels[1:] if quick else levels:
             out.append((f"{key}={level:g}", ((key, level),)))
     out.append(("combined", COMBINED))
@@ -124,14 +126,20 @@ def main() -> None:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--quick", action="store_true", help="two levels per key (the middle and the largest)")
     parser.add_argument("--tables-only", action="store_true", help="no runs: the table and plots of the runs done")
+    parser.add_argument("--keys", default=",".join(SWEEPS),
+                        help="comma-separated keys to sweep (default: all; none and combined always run)")
     args = parser.parse_args()
+    keys = [k.strip() for k in args.keys.split(",") if k.strip()]
+    unknown = [k for k in keys if k not in SWEEPS]
+    if unknown:
+        parser.error(f"--keys: unknown {', '.join(unknown)}; known: {', '.join(SWEEPS)}")
     from fuzzynav.bench.suites import parse_suite
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     navigators = [n.strip() for n in args.navigators.split(",") if n.strip()]
     suites = [parse_suite(spec) for spec in args.suites]
-    chosen = conditions(args.quick)
+    chosen = conditions(args.quick, keys)
     done_file = out / "runs.jsonl"
     rows = [json.loads(line) for line in done_file.read_text().splitlines() if line.strip()] \
         if done_file.exists() else []

@@ -28,6 +28,11 @@ def trace_hash(scenario: str, controller: str) -> str:
     from fuzzynav.world.scenario import load_scenario
 
     trace = run_episode(load_scenario(scenario), make_controller(controller, **OPTIONS.get(controller, {})), seed=0)
+    return trace_digest(trace)
+
+
+def trace_digest(trace) -> str:
+    """SHA-256 of a trace's outcome, poses, commands and ranges."""
     digest = hashlib.sha256(trace.outcome.encode())
     for array in (trace.pose, trace.steering, trace.speed, trace.ranges, trace.target):
         digest.update(np.ascontiguousarray(array, dtype=float).tobytes())

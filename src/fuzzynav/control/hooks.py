@@ -11,6 +11,10 @@ controller implements one by defining its member, without deriving from it:
   navigator (``astar-pp``), and its spec says ``needs_map=True``;
 - :class:`SizedForRobot` — ``for_robot(params)``: told the robot's size and limits
   (:class:`~fuzzynav.robot.tricycle.TricycleParams`) before the episodes, to size its clearances;
+- :class:`KnowsLatency` — ``for_latency(seconds)``: told the robot's actuation latency (the
+  scenario's ``robot.actuation.latency``, 0 without one; on a real robot, the figure its
+  configuration gives) before the episodes, to decide for the pose where its commands will act
+  (the default ``fuzzy-5b``, :mod:`fuzzynav.kernels.latency`);
 - :class:`BringsSensors` — ``sensors``: the sensor ring it reads by default
   (:class:`~fuzzynav.robot.sensors.SensorRing`, ``None``: the thesis' seven rays); a scenario's
   ``sensors`` key, or ``--sensors``, overrides it;
@@ -38,6 +42,12 @@ class MapAware(Protocol):
 class SizedForRobot(Protocol):
     def for_robot(self, params) -> None:
         """Size what depends on the robot (its radius, wheelbase, limits) for ``params``."""
+
+
+@runtime_checkable
+class KnowsLatency(Protocol):
+    def for_latency(self, latency: float) -> object:
+        """Compensate an actuation latency of ``latency`` seconds (0: none)."""
 
 
 @runtime_checkable

@@ -54,6 +54,7 @@ from fuzzynav.control.escape import FOLLOW, LOOP
 from fuzzynav.control.recovery import RECOVERY, recovery_system
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import layers
+from fuzzynav.kernels.motion import ROBOT_FIELDS
 from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
@@ -68,12 +69,15 @@ class RobustNavigator(BatchController):
     :class:`fuzzynav.kernels.layers.Guidance`, e.g. :data:`fuzzynav.control.through_gaps.GUIDANCE`),
     the route guidance (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (a
     :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
-    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); ``systems`` of the navigator are
-    its rule bases by role."""
+    speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); with ``compensate=True``, the
+    decision at the pose where the command will act once told the robot's actuation latency
+    (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); ``systems``
+    of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None):
-        self.navigator, self.name = navigator, name
+                 stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
+                 compensate: bool = False):
+        self.navigator, self.name, self.compensate = navigator, name, compensate
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
@@ -81,6 +85,7 @@ class RobustNavigator(BatchController):
         records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places))
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])
+        self._latency = 0.0
         self.for_robot(DEFAULT_PARAMS, navigator=False)
         self.reset()
 
@@ -111,6 +116,18 @@ class RobustNavigator(BatchController):
             self.navigator.for_robot(robot)
         layers.put(self.params, layers.Body(radius=robot.radius, max_reverse_speed=robot.max_reverse_speed,
                                             wheelbase=robot.wheelbase, max_speed=robot.max_speed))
+        self.params[layers.PARAM.plant_dt:layers.PARAM.plant_dt + len(ROBOT_FIELDS)] = robot.array()
+        return self.for_latency(self._latency)
+
+    def for_latency(self, latency: float) -> RobustNavigator:
+        """Compensate an actuation latency of ``latency`` seconds (the scenario's
+        ``robot.actuation.latency``; 0: none), in whole steps of the robot's Δt as the robot's
+        queue holds them (:mod:`fuzzynav.kernels.latency`); ignored without ``compensate``."""
+        self._latency = float(latency) if self.compensate else 0.0
+        delay = float(round(self._latency / self.params[layers.PARAM.plant_dt]))
+        if delay != self.params[layers.PARAM.delay]:
+            self.params[layers.PARAM.delay] = delay
+            self._rows = None  # the state rows hold the queue: new ones at the next compiled()
         return self
 
     def compiled(self, n: int, sensor_angles):
@@ -185,7 +202,7 @@ def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
     at = layers.PARAM
     slots = int(params[at.points_slots])
-    kept = layers.PLACES_AT + 3 * int(params[at.places_slots]) + 2 * slots  # the state, places and points
+    kept = layers.PLACES_AT + 3 * int(params[at.places_slots]) + 2 * (int(params[at.delay]) + slots)  # up to the cells
     params[[at.points_slots, at.cell_slots, at.grow]] = 2 * slots, _hash_size(2 * slots), 0.0
     wider = layers.fresh_state(len(rows), params)
     wider[:, :kept] = rows[:, :kept]

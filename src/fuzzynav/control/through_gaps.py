@@ -84,4 +84,4 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     navigator.name = "fuzzy-5b-gap-robust"
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
-                           pace=_replaced(PACE, pace, "pace") if paced else None)
+                           pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True)

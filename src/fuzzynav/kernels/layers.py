@@ -9,12 +9,13 @@ argument costs time at each call):
 
 - ``params``: the fields of :data:`PARAMETERS` — :class:`Supervisor`, :class:`Body`,
   :class:`Recovery`, :class:`Loop`, :class:`Follow`, :class:`Guidance`, :class:`Pace`,
-  :class:`Slots`, in that order (a layer not given is off: all its fields 0) —, then from
+  :class:`Latency`, :class:`Slots`, in that order (a layer not given is off: all its fields 0) —, then from
   :data:`TABLES_AT` the recovery's rule base (:func:`fuzzynav.kernels.ts0.pack`). :func:`pack`
   writes them;
 - ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (a new episode's values:
   :data:`NEW_EPISODE`), then the loop detector's ring buffer of sampled places (``places_slots`` ×
-  (t, x, y)), the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
+  (t, x, y)), the commands sent and not yet applied (``delay`` × (α, V), the latency
+  compensation's), the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
   (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :func:`places_of`,
   :func:`points_of`, :func:`cells_of`.
 
@@ -210,6 +211,29 @@ class Pace:
 
 
 @dataclass(frozen=True, kw_only=True)
+class Latency:
+    """The latency the navigator compensates (:mod:`fuzzynav.kernels.latency`): the robot's array
+    (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`, in that order) and the delay."""
+
+    plant_dt: float
+    """s: the step Δt"""
+    plant_wheelbase: float
+    """m: the wheelbase l"""
+    plant_radius: float
+    """m: the body's radius"""
+    plant_max_steering: float
+    """rad: the steering limit"""
+    plant_lowest_speed: float
+    """m/s: the lowest speed (negative: reverse)"""
+    plant_max_speed: float
+    """m/s: the top speed"""
+    plant_arc: float
+    """1: the exact arc, 0: Euler (eq IV.1–IV.2)"""
+    delay: float = 0.0
+    """steps: round(latency / Δt), the commands on their way to the wheels (0: none), the queue's slots"""
+
+
+@dataclass(frozen=True, kw_only=True)
 class Slots:
     """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
     (set by a step after which a robot could run out of them: the controller's ``compiled()``
@@ -291,6 +315,8 @@ class RobotState:
     """m: its length"""
     guide_driven: float
     """m: the distance driven on it"""
+    sent: float
+    """the commands sent (the latency queue's next slot is ``sent % delay``)"""
 
 
 # a new episode's state row: 0 but these (NaN: none yet)
@@ -299,7 +325,7 @@ NEW_EPISODE = {"last_x": math.nan, "last_y": math.nan, "best": math.inf, "t_best
                "guide_planned": -math.inf}
 
 
-PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Slots)
+PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Latency, Slots)
 PARAM_NAMES = tuple(field.name for record in PARAMETERS for field in fields(record))
 STATE_NAMES = tuple(field.name for field in fields(RobotState))
 # the positions by name (their fields are generated, so typed Any for the checker)
@@ -336,22 +362,32 @@ def places_of(params, row):
 
 
 @jit
+def queue_of(params, row):
+    """The commands sent and not yet applied (delay, 2: α, V) in a robot's ``state`` row."""
+    at, size = PLACES_AT + 3 * int(params[PARAM.places_slots]), int(params[PARAM.delay])
+    return row[at:at + 2 * size].reshape(size, 2)
+
+
+@jit
 def points_of(params, row):
-    """The obstacle points (points_slots, 2) in a robot's ``state`` row."""
-    at, size = PLACES_AT + 3 * int(params[PARAM.places_slots]), int(params[PARAM.points_slots])
+    """The obstacle points (points_slots, 2) in a robot's ``state`` row (after the queue)."""
+    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay])
+    size = int(params[PARAM.points_slots])
     return row[at:at + 2 * size].reshape(size, 2)
 
 
 @jit
 def cells_of(params, row):
     """The hash set of the points' cells (cell_slots,) in a robot's ``state`` row."""
-    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.points_slots])
-    return row[at:at + int(params[PARAM.cell_slots])]
+    size = int(params[PARAM.cell_slots])
+    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay] + params[PARAM.points_slots])
+    return row[at:at + size]
 
 
 def fresh_state(n: int, params: np.ndarray) -> np.ndarray:
     """The ``state`` of ``n`` robots at the start of an episode, sized by ``params``."""
-    blocks = 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.points_slots]) + int(params[PARAM.cell_slots])
+    blocks = (3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay])
+              + 2 * int(params[PARAM.points_slots]) + int(params[PARAM.cell_slots]))
     state = np.zeros((n, PLACES_AT + blocks))
     state[:, :PLACES_AT] = _FRESH
     return state

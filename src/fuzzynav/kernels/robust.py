@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels import escape, guidance, navigators, pace, recovery, sightings
+from fuzzynav.kernels import escape, guidance, latency, navigators, pace, recovery, sightings
 from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE, TABLES_AT, cells_of, places_of, points_of
 from fuzzynav.kernels.motion import wrap
 from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
@@ -25,16 +25,33 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     """(α, V, behaviour code) of one robot at time ``t`` (the arguments of
     :func:`fuzzynav.kernels.navigators.act_one`, plus ``layer``, a
     :class:`~fuzzynav.kernels.records.Layers`: the layers' parameters and the robot's state row,
-    :mod:`fuzzynav.kernels.layers`)."""
+    :mod:`fuzzynav.kernels.layers`). The obstacle points seen are remembered where they are seen;
+    with an actuation delay (``params[PARAM.delay]`` steps) the decision is taken at the pose
+    where the command will act, on the scan moved there (:mod:`fuzzynav.kernels.latency`), and
+    the command is remembered as sent."""
     p, state = layer.params, layer.state
     if p[PARAM.on] == 0.0:
         return navigators.act_one(navigator, cstate, memory, robot, seen, dt)
+    count = sightings.see(points_of(p, state), cells_of(p, state), int(state[STATE.count]),
+                          Pose(robot.x, robot.y, robot.theta), seen)
+    state[STATE.count] = count
+    if p[PARAM.delay] == 0.0:
+        return decide(navigator, cstate, memory, layer, robot, seen, dt, t)
+    later, moved = latency.ahead(p, state, robot, seen)
+    steering, speed, code = decide(navigator, cstate, memory, layer, later, moved, dt, t)
+    latency.sent(p, state, steering, speed)
+    return steering, speed, code
+
+
+@jit
+def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
+    """:func:`act_one` of a robot at ``robot``'s pose reading ``seen``, once what it sees is remembered."""
+    p, state = layer.params, layer.state
     x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
     ranges, angles, max_range, d_o, b_o = seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o
     points = points_of(p, state)
     pose = Pose(x, y, theta)
-    count = sightings.see(points, cells_of(p, state), int(state[STATE.count]), pose, seen)
-    state[STATE.count] = count
+    count = int(state[STATE.count])
     remembered = Sightings(points, count)
     if count + ranges.shape[0] + 1 > points.shape[0]:  # the next step could fill the slots
         p[PARAM.grow] = 1.0

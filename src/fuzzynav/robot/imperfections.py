@@ -21,6 +21,11 @@ robot:
   robot's frame drawn once per episode (a systematic odometry error, Borenstein & Feng 1996,
   UMBmark); the heading stays true. Collisions and the task are judged on the true pose.
 
+The default navigator ``fuzzy-5b`` is told the latency (the simulator calls its
+``for_latency``, :class:`fuzzynav.control.hooks.KnowsLatency`, with this key; a real robot's
+configuration gives the same figure) and decides where its command will act
+(:mod:`fuzzynav.kernels.latency`).
+
 Every draw comes from the episode's seed (:class:`fuzzynav.sim.simulator.BatchSimulator`), in the
 compiled step (:mod:`fuzzynav.kernels.imperfect`); with every key off the step is unchanged.
 """

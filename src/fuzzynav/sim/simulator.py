@@ -41,7 +41,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
-from fuzzynav.control.hooks import CompiledAct, MapAware, SizedForRobot
+from fuzzynav.control.hooks import CompiledAct, KnowsLatency, MapAware, SizedForRobot
 from fuzzynav.kernels import imperfect, layers, step as step_kernel
 from fuzzynav.kernels.records import Robots
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -117,6 +117,9 @@ class BatchSimulator:
         self._setup = self.task.setup(self.params.array(), self.sensors.max_range, self.max_steps,
                                       self.sensors.angles, 0.0, 0.5 * self.sensors.beam_width)
         self.imperfections = with_ring_noise(scenario.imperfections, self.sensors.noise_std)
+        for each in copies:  # told the robot's actuation latency (RobustNavigator.for_latency)
+            if isinstance(each, KnowsLatency):
+                each.for_latency(self.imperfections.latency)
         self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
