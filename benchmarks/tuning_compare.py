@@ -1,10 +1,13 @@
 """GA, PSO and ant colony against fuzzy Q-learning, same episodes, every seed (the experiment
-``cmp-VI-tuning`` of :mod:`fuzzynav.experiments.tuning`, with the number of seeds and episodes
-chosen here), printing the table and the rule grids of docs/tuning.md::
+``cmp-VI-tuning`` of :mod:`fuzzynav.experiments.tuning`, with the seeds and episodes chosen here),
+printing the tables and the rule grids of docs/tuning.md::
 
     python benchmarks/tuning_compare.py --tasks avoid goal --seeds 5 --episodes 3000 --out tuning_compare
+    python benchmarks/tuning_compare.py --tasks wall --first-seed 2 --seeds 1 --episodes 1000 --out wall-2
+    python benchmarks/tuning_compare.py --table wall-0.json wall-1.json ...   # one table of several runs
 
-writes ``OUT.json`` (every seed's numbers; the tuned files and FQL models in ``OUT/``).
+writes ``OUT.json`` (every seed's numbers; the tuned files and FQL models in ``OUT/``). ``--table``
+prints the tables of earlier ``OUT.json`` files, their seeds side by side (the hand-made row once).
 """
 
 from __future__ import annotations
@@ -18,33 +21,81 @@ import numpy as np
 from fuzzynav.experiments.tuning import TASKS, cmp_vi_tuning
 
 
+def _per_seed(values, fmt: str) -> str:
+    """``mean; v0, v1, …`` of ``values`` (None shown as '-', left out of the mean)."""
+    known = [v for v in values if v is not None]
+    mean = format(float(np.mean(known)), fmt) if known else "-"
+    return f"{mean}; " + ", ".join("-" if v is None else format(v, fmt) for v in values)
+
+
+def _goal_table(name: str, task: dict) -> list[str]:
+    lines = ["| task | method | held-out success: mean; per seed | collisions per seed | mean time to goal, s: "
+             "mean; per seed | episodes to beat the start (FQL: to converge, steering/speed) | wall s per seed |",
+             "|---|---|---|---|---|---|---|"]
+    for method, seeds in task["rows"].items():
+        beaten = [s.get("episodes_to_beat_start") or "/".join(str(v) for v in s.get("converged_at", {}).values())
+                  or None for s in seeds]
+        lines.append(f"| {name} | {method} | {_per_seed([s['success'] for s in seeds], '.3f')} | "
+                     f"{', '.join(str(s['collisions']) for s in seeds)} | "
+                     f"{_per_seed([s['mean_time_s'] for s in seeds], '.2f')} | "
+                     f"{', '.join('-' if b is None else str(b) for b in beaten)} | "
+                     f"{', '.join(format(s['wall_s'], '.0f') for s in seeds if 'wall_s' in s) or '-'} |")
+    return lines
+
+
+def _wall_table(name: str, task: dict) -> list[str]:
+    """Wall following has no goal: lasted (the time limit without collision), collisions and the
+    wall measures of :func:`fuzzynav.tune.fitness.summary`, per seed."""
+    lines = ["| task | method | lasted: mean; per seed | collisions per seed | closer than d_m: mean; per seed | "
+             "outside band, m: mean; per seed | speed, m/s: mean; per seed | wall s per seed |",
+             "|---|---|---|---|---|---|---|---|"]
+    for method, seeds in task["rows"].items():
+        lines.append(f"| {name} | {method} | {_per_seed([s['success'] for s in seeds], '.3f')} | "
+                     f"{', '.join(str(s['collisions']) for s in seeds)} | "
+                     f"{_per_seed([s['too_close_share'] for s in seeds], '.3f')} | "
+                     f"{_per_seed([s['off_band_m'] for s in seeds], '.3f')} | "
+                     f"{_per_seed([s['mean_speed_mps'] for s in seeds], '.2f')} | "
+                     f"{', '.join(format(s['wall_s'], '.0f') for s in seeds if 'wall_s' in s) or '-'} |")
+    return lines
+
+
 def table(results: dict) -> str:
-    lines = ["| task | method | held-out success (mean; per seed) | collisions (per seed) | mean time to goal, s | "
-             "episodes to beat the start (FQL: to converge, steering/speed) | wall s |", "|---|---|---|---|---|---|---|"]
-    for name, task in results.items():
-        for method, seeds in task["rows"].items():
-            success = [s["success"] for s in seeds]
-            times = [s["mean_time_s"] for s in seeds if s["mean_time_s"] is not None]
-            beaten = [s.get("episodes_to_beat_start") or "/".join(str(v) for v in s.get("converged_at", {}).values())
-                      or None for s in seeds]
-            lines.append(f"| {name} | {method} | {np.mean(success):.3f}; {', '.join(f'{v:.3f}' for v in success)} | "
-                         f"{', '.join(str(s['collisions']) for s in seeds)} | "
-                         f"{np.mean(times):.2f}; {', '.join(f'{t:.2f}' for t in times)} | "
-                         f"{', '.join('-' if b is None else str(b) for b in beaten)} | "
-                         f"{', '.join(format(s['wall_s'], '.0f') for s in seeds if 'wall_s' in s)} |")
-    return "\n".join(lines)
+    """One markdown table per task of ``results`` (``cmp_vi_tuning(...)["tasks"]``)."""
+    return "\n\n".join("\n".join((_wall_table if name == "wall" else _goal_table)(name, task))
+                       for name, task in results.items())
+
+
+def merged(files) -> dict:
+    """The tasks of several ``OUT.json`` files as one: each method's seeds in file order, the
+    hand-made row (the same in every run) once, the rule grids of the first file."""
+    results: dict = {}
+    for path in files:
+        for name, task in json.loads(Path(path).read_text()).items():
+            if name not in results:
+                results[name] = {**task, "rows": {method: list(seeds) for method, seeds in task["rows"].items()}}
+                continue
+            for method, seeds in task["rows"].items():
+                if method != "hand-made":
+                    results[name]["rows"].setdefault(method, []).extend(seeds)
+    return results
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--tasks", nargs="+", default=list(TASKS), choices=list(TASKS))
-    parser.add_argument("--seeds", type=int, default=5)
+    parser.add_argument("--seeds", type=int, default=5, help="how many seeds (default 5)")
+    parser.add_argument("--first-seed", type=int, default=0, help="the first seed (default 0)")
     parser.add_argument("--episodes", type=int, default=3000)
     parser.add_argument("--out", default="tuning_compare")
+    parser.add_argument("--table", nargs="+", metavar="JSON", help="print the tables of earlier OUT.json files")
     args = parser.parse_args()
-    if args.seeds < 1 or args.episodes < 1:
-        parser.error("--seeds and --episodes must be >= 1")
-    results = cmp_vi_tuning(args.out, tasks=args.tasks, seeds=args.seeds, episodes=args.episodes)["tasks"]
+    if args.table:
+        print(table(merged(args.table)))
+        return
+    if args.seeds < 1 or args.episodes < 1 or args.first_seed < 0:
+        parser.error("--seeds and --episodes must be >= 1, --first-seed >= 0")
+    results = cmp_vi_tuning(args.out, tasks=args.tasks, seed=args.first_seed, seeds=args.seeds,
+                            episodes=args.episodes)["tasks"]
     Path(f"{args.out}.json").write_text(json.dumps(results, indent=1, default=str))
     print(table(results))
     for name, task in results.items():

@@ -109,6 +109,7 @@ NOT_RUN_HERE = {
     # smallest runs (the arguments given) of 20-45 s on an idle 2-core machine:
     "gym_vector.py": "--robots 2 --steps 5 --rounds 1: 25 s (every task's environments built twice)",
     "tune_speed.py": "--worlds mixed:1 --population 2: 22 s (the tuner's compiled call is compiled first)",
+    "tune_holdout.py": "--suites mixed:1: 20 s (the tuner's compiled call is compiled first)",
     "rl_bench.py": "--tasks q-goal --seeds 1 --episodes 50: 20 s (a training and its evaluation)",
     "rl_compare.py": "--algos fql --tasks goal --seeds 1 --steps 200 --checkpoints 100 200: 43 s",
 }

@@ -1,6 +1,6 @@
 """``cmp-VI-tuning``: a short comparison runs every tuner and FQL on held-out worlds and its claim
-turns the numbers into checks (one success and one collision check per method); a rule base
-replaced by ``reproduce --fis`` is the hand-made start it compares with."""
+turns the numbers into checks (one success and one collision check per method), for goal seeking
+and wall following; a rule base replaced by ``reproduce --fis`` is the hand-made start it compares with."""
 
 import pytest
 
@@ -41,3 +41,31 @@ def test_a_short_comparison_gives_every_method_its_held_out_numbers_and_checks(t
     verdict, checks = spec("cmp-VI-tuning").claim.evaluate(numbers)
     assert len(checks) == 2 * 4 and all(check.source == "package" for check in checks)
     assert verdict in ("reproduced", "partly", "not reproduced")
+
+
+def _wall_numbers(fql_collisions):
+    seed = {"success": 0.6, "collisions": 16}
+    rows = {"hand-made": [{"success": 0.5, "collisions": 20}], "ga": [seed, seed],
+            "fql": [{"success": 0.7, "collisions": fql_collisions}, {"success": 0.7, "collisions": 12}]}
+    return {"tasks": {"wall": {"rows": rows}}}
+
+
+def test_the_claim_fails_a_method_that_collides_more_than_the_hand_made_wall_follower():
+    claim = spec("cmp-VI-tuning").claim
+    verdict, checks = claim.evaluate(_wall_numbers(fql_collisions=12))
+    assert verdict == "reproduced" and len(checks) == 4
+    verdict, checks = claim.evaluate(_wall_numbers(fql_collisions=30))  # FQL: (30 + 12) / 2 = 21 > 20
+    assert verdict == "partly"
+    assert [c.name for c in checks if not c.passed] == ["wall, fql: held-out collisions (mean per seed)"]
+
+
+@pytest.mark.slow
+def test_a_short_wall_comparison_checks_lasting_and_collisions_against_table_vi_2(tmp_path):
+    numbers = cmp_vi_tuning(tmp_path, tasks=("wall",), seeds=1, episodes=400)
+    rows = numbers["tasks"]["wall"]["rows"]
+    assert set(rows) == {"hand-made", "ga", "pso", "aco", "fql"}
+    for seeds in rows.values():
+        assert 0.0 <= seeds[0]["success"] <= 1.0 and 0 <= seeds[0]["collisions"] <= 40
+        assert 0.0 <= seeds[0]["too_close_share"] <= 1.0 and seeds[0]["mean_time_s"] is None
+    verdict, checks = spec("cmp-VI-tuning").claim.evaluate(numbers)
+    assert len(checks) == 2 * 4 and verdict in ("reproduced", "partly", "not reproduced")

@@ -70,6 +70,30 @@ def test_nsga2_gives_a_front_of_non_dominated_files(tmp_path, capsys):
         assert load(member["file"]).input_names == ["dro", "theta_o"]
 
 
+def _validation_choice_is_the_lowest_cost(result, start_system):
+    chosen = result["validation"]
+    costs = [chosen["start"]["cost"]] + [c["cost"] for c in chosen["candidates"]]
+    assert len(chosen["candidates"]) == session.VALIDATED and chosen["worlds"] == "mixed:4:500"
+    assert result["episodes"] <= SMALL["budget"] + 16
+    if chosen["kept"] == "start":
+        assert min(costs) == costs[0] and not result["changed"] and result["system"].rules == start_system.rules
+    else:
+        k = int(chosen["kept"].split()[-1])
+        assert costs[k] == min(costs) < costs[0] and result["changed"]
+    return chosen
+
+
+def test_the_result_is_chosen_on_validation_worlds_the_start_unless_beaten():
+    request = TuneRequest(target="fuzzy-2b:oab", validation="auto", **{**SMALL, "budget": 48 + 16})
+    start = session.check(request)[1]
+    _validation_choice_is_the_lowest_cost(tune(request), start)
+    text = dumps(get_system("obstacle-avoidance"), "yaml")
+    zeroed = loads(re.sub(r"alpha IS \w+", "alpha IS Z", text), "yaml")  # never steers away: collides
+    result = tune(TuneRequest(target="fuzzy-2b:oab", validation="auto", what="rules", systems={"oab": zeroed},
+                              **{**SMALL, "budget": 48 + 16}))
+    assert _validation_choice_is_the_lowest_cost(result, zeroed)["kept"] != "start"
+
+
 def test_a_killed_run_resumed_ends_as_an_uninterrupted_one(tmp_path, monkeypatch):
     whole = tune(TuneRequest(target="fuzzy-2b:oab", method="ga", out=str(tmp_path / "whole.yaml"), **SMALL))
     calls = []
@@ -149,6 +173,8 @@ BAD = [
     (["fuzzy-2b:oab", "--method", "nsga2"], "two or more"),
     (["fuzzy-2b:oab", "--out", "tuned.docx"], "--out"),
     (["fuzzy-2b:oab", "--worlds", "forest:3"], "SUITE"),
+    (["fuzzy-2b:oab", "--validation", "forest:3"], "--validation"),
+    (["fuzzy-2b:oab", "--population", "4", "--budget", "20"], "+ 16 validation episodes"),
 ]
 
 

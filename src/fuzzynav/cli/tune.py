@@ -33,6 +33,10 @@ fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 10
                         help="training worlds: folder of scenario files or FAMILY[:COUNT[:SEED]] (as bench reads them)")
     parser.add_argument("--holdout", metavar="SUITE",
                         help="held-out worlds (default for a family: the same family and count, world seed + 1000)")
+    parser.add_argument("--validation", default="auto", metavar="SUITE",
+                        help="worlds the result is chosen on: the start or one of the 3 best candidates, whichever "
+                             "does best there (default for a family: the same family and count, world seed + 500; "
+                             "'none' for none); their episodes count in --budget")
     parser.add_argument("--what", default="both", help="mf (breakpoints), rules (conclusions) or both (default)")
     parser.add_argument("--method", default="ga", help="ga (default), pso, de, cmaes, nsga2 or aco (--what rules)")
     parser.add_argument("--objectives", metavar="A,B", help="nsga2's objectives among success, time, clearance")
@@ -57,7 +61,7 @@ def run(args) -> int:
         raise InputError("is a directory; give the file to write", source=args.out, field="--out")
     request = TuneRequest(target=args.target, worlds=args.worlds, what=args.what, method=args.method,
                           budget=args.budget, seed=args.seed, population=args.population, objectives=objectives,
-                          holdout=args.holdout, out=args.out, resume=args.resume, curve=args.curve,
+                          holdout=args.holdout, validation=args.validation, out=args.out, resume=args.resume, curve=args.curve,
                           progress=not (args.quiet or args.json))
     check(request)
     with progress.quiet(not request.progress):
@@ -77,6 +81,13 @@ def run(args) -> int:
         if part in result["start"]:
             print(f"  {part:8s} start: {_line(result['start'][part])}")
             print(f"  {part:8s} tuned: {_line(result['tuned'][part])}")
+    if "validation" in result:
+        chosen = result["validation"]
+        print(f"  validation ({chosen['worlds']}) start: {_line(chosen['start'])}")
+        for k, numbers in enumerate(chosen["candidates"], 1):
+            print(f"  validation candidate {k}: {_line(numbers)}")
+        print(f"  kept the {chosen['kept']}" + (": no candidate beat it on the validation worlds"
+                                                if chosen["kept"] == "start" else ""))
     for path in written:
         print(f"  wrote {path}")
     return 0

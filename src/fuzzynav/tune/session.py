@@ -4,7 +4,13 @@
 :func:`tune` runs generations of ask → simulate (:class:`~fuzzynav.tune.fitness.Fitness`) →
 tell until the budget is spent, keeping the best candidate ever
 evaluated (the start is evaluated first, so the result is never worse than the start on the
-training worlds). After each generation the checkpoint (``.npz``: the options and every
+training worlds). With validation worlds (``validation``; for a generated family by default its
+worlds with seed + :data:`VALIDATION_OFFSET`), the last episodes of the budget run the start and
+the :data:`VALIDATED` best distinct candidates on them, and the result is the one of lowest
+validation cost — the start when none beats it: model selection on worlds the search never saw
+(early stopping by a validation set; Hastie, Tibshirani & Friedman, *The Elements of Statistical
+Learning*, 2009, §7.2), since a candidate that fixes the training worlds' few failures often
+fails others (docs/tuning.md measures it). After each generation the checkpoint (``.npz``: the options and every
 population with its objective values) is rewritten atomically; ``resume`` replays the stored
 generations through a new optimiser — same seed, same populations, same values, no
 simulation — checks that each replayed population is the one stored, and goes on, so a killed
@@ -30,6 +36,8 @@ from fuzzynav.tune.space import WHAT
 
 MAX_BUDGET = 10_000_000
 HOLDOUT_OFFSET = 1000  # a generated family's held-out worlds: world seed + this (worlds never tuned on)
+VALIDATION_OFFSET = 500  # its validation worlds: world seed + this (chosen on, never searched on)
+VALIDATED = 3  # best distinct candidates run on the validation worlds beside the start
 
 
 @dataclass(frozen=True)
@@ -45,6 +53,9 @@ class TuneRequest:
     population: int = 10
     objectives: tuple[str, ...] = ()
     holdout: str | None = None  # default: the family's worlds with seed + HOLDOUT_OFFSET
+    # validation worlds: None (none), "auto" (a family's worlds with seed + VALIDATION_OFFSET; none
+    # for a folder) or a SUITE; their episodes are part of the budget
+    validation: str | None = None
     out: str | None = None
     resume: bool = False
     curve: str | None = None
@@ -63,7 +74,7 @@ class TuneRequest:
 
     def replayed(self) -> dict:
         """The options a checkpoint must share with the run resuming it."""
-        keys = ("target", "worlds", "what", "method", "seed", "population", "objectives")
+        keys = ("target", "worlds", "what", "method", "seed", "population", "objectives", "validation")
         return {key: list(value) if isinstance(value, tuple) else value
                 for key, value in ((key, getattr(self, key)) for key in keys)}
 
@@ -118,12 +129,29 @@ def check(request: TuneRequest):
         raise InputError("--resume needs --out (the checkpoint lives beside it)", field="--resume")
     SearchSpace(system, request.what)  # a system with nothing to tune fails here
     suite = parse_suite(request.worlds)
-    if request.budget < request.population * suite.size:
+    chooser = validation_suite(request, suite)
+    reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
+    if request.budget < request.population * suite.size + reserve:
         raise InputError(f"{request.budget} episodes do not cover one generation: {request.population} candidates × "
-                         f"{suite.size} worlds = {request.population * suite.size} episodes at least", field="--budget")
+                         f"{suite.size} worlds{f' + {reserve} validation episodes' if reserve else ''} = "
+                         f"{request.population * suite.size + reserve} episodes at least", field="--budget")
     holdout = parse_suite(request.holdout) if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
     return make_with_systems(controller, dict(request.systems)), system, suite, holdout
+
+
+def validation_suite(request: TuneRequest, suite):
+    """The validation worlds of ``request`` (training ``suite``), or None (:class:`TuneRequest`)."""
+    from fuzzynav.bench.suites import parse_suite
+
+    if request.validation in (None, "none"):
+        return None
+    if request.validation == "auto":
+        return parse_suite(f"{suite.family}:{suite.count}:{suite.seed + VALIDATION_OFFSET}") if suite.family else None
+    try:
+        return parse_suite(request.validation)
+    except InputError as error:
+        raise InputError(error.problem, source=error.source, field="--validation") from None
 
 
 def checkpoint_path(request: TuneRequest) -> Path | None:
@@ -170,6 +198,7 @@ def tune(request: TuneRequest) -> dict:
     from fuzzynav.tune.space import SearchSpace
 
     controller, system, suite, holdout = check(request)
+    chooser = validation_suite(request, suite)
     space = SearchSpace(system, request.what)
     path = checkpoint_path(request)
     stored = _load_checkpoint(path, request) if request.resume and path is not None and path.is_file() else []
@@ -178,13 +207,14 @@ def tune(request: TuneRequest) -> dict:
     optimiser = make_optimiser(request.method, space, request.population, request.seed,
                                n_obj=len(_columns(request)))
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
+    reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
     best_x, best = space.start, math.inf
     curve = []  # (episodes, best cost so far)
     with progress.bar(total=request.budget, desc=f"tune {request.target} ({request.method})", unit="episode") as bar:
-        while spent + n_worlds <= request.budget:
+        while spent + n_worlds <= request.budget - reserve:
             population = optimiser.ask()
             asked = len(population)
-            population = population[:(request.budget - spent) // n_worlds]
+            population = population[:(request.budget - reserve - spent) // n_worlds]
             values = np.zeros((0, 1 + len(OBJECTIVES)))
             if len(generations) < len(stored):  # replayed: the stored values, none simulated
                 x, values = stored[len(generations)]
@@ -207,7 +237,40 @@ def tune(request: TuneRequest) -> dict:
                 _save_checkpoint(path, request, generations)
             bar.update(len(population) * n_worlds)
             bar.set_postfix(best=f"{best:.4f}")
-    return _result(request, space, fitness, controller, holdout, generations, best_x, curve)
+        chosen = None
+        if chooser is not None:
+            chosen = _validate(request, space, controller, chooser, generations, fitness.wall)
+            best_x = chosen["genes"]
+            bar.update(chosen["episodes"])
+    result = _result(request, space, fitness, controller, holdout, generations, best_x, curve)
+    if chosen is not None:
+        result["validation"] = {key: value for key, value in chosen.items() if key != "genes"}
+        result["evaluations"] += chosen["evaluations"]
+        result["episodes"] += chosen["episodes"]
+    return result
+
+
+def _validate(request, space, controller, suite, generations, wall: bool) -> dict:
+    """The start and the :data:`VALIDATED` best distinct candidates of ``generations`` (by
+    training cost) on the ``validation`` worlds; the lowest validation cost wins, the start on a tie."""
+    x = np.concatenate([g for g, _ in generations])
+    cost = np.concatenate([v[:, 0] for _, v in generations])
+    start = space.start
+    picked: list[np.ndarray] = []
+    for i in np.argsort(cost, kind="stable"):
+        if len(picked) == VALIDATED:
+            break
+        if not any(np.array_equal(x[i], p) for p in [start, *picked]):
+            picked.append(x[i])
+    candidates = [start, *picked]
+    held = Fitness(controller, request.role, space,
+                   [suite.scenario(i, 0) for i in range(suite.size)], wall)
+    rows = held.simulate(np.stack(candidates))
+    summaries = [held.summary(r) for r in rows]
+    k = int(np.argmin([s["cost"] for s in summaries]))  # argmin: the first (the start) on a tie
+    return {"worlds": suite.name, "start": summaries[0], "candidates": summaries[1:],
+            "kept": "start" if k == 0 else f"candidate {k}", "genes": candidates[k],
+            "evaluations": held.evaluations, "episodes": held.episodes}
 
 
 def _result(request, space, fitness, controller, holdout, generations, best_x, curve) -> dict:
