@@ -43,20 +43,27 @@ def test_a_short_comparison_gives_every_method_its_held_out_numbers_and_checks(t
     assert verdict in ("reproduced", "partly", "not reproduced")
 
 
-def _wall_numbers(fql_collisions):
-    seed = {"success": 0.6, "collisions": 16}
-    rows = {"hand-made": [{"success": 0.5, "collisions": 20}], "ga": [seed, seed],
-            "fql": [{"success": 0.7, "collisions": fql_collisions}, {"success": 0.7, "collisions": 12}]}
+def _wall_numbers(fql_collisions, ga_speed=0.6):
+    seed = {"success": 0.6, "collisions": 16, "mean_speed_mps": ga_speed}
+    rows = {"hand-made": [{"success": 0.5, "collisions": 20, "mean_speed_mps": 0.66}], "ga": [seed, seed],
+            "fql": [{"success": 0.7, "collisions": fql_collisions, "mean_speed_mps": 0.5},
+                    {"success": 0.7, "collisions": 12, "mean_speed_mps": 0.5}]}
     return {"tasks": {"wall": {"rows": rows}}}
 
 
 def test_the_claim_fails_a_method_that_collides_more_than_the_hand_made_wall_follower():
     claim = spec("cmp-VI-tuning").claim
     verdict, checks = claim.evaluate(_wall_numbers(fql_collisions=12))
-    assert verdict == "reproduced" and len(checks) == 4
+    assert verdict == "reproduced" and len(checks) == 6
     verdict, checks = claim.evaluate(_wall_numbers(fql_collisions=30))  # FQL: (30 + 12) / 2 = 21 > 20
     assert verdict == "partly"
     assert [c.name for c in checks if not c.passed] == ["wall, fql: held-out collisions (mean per seed)"]
+
+
+def test_the_claim_fails_a_wall_follower_that_lasts_by_creeping():
+    verdict, checks = spec("cmp-VI-tuning").claim.evaluate(_wall_numbers(fql_collisions=12, ga_speed=0.07))
+    assert verdict == "partly"
+    assert [c.name for c in checks if not c.passed] == ["wall, ga: held-out mean speed, m/s (mean of 2 seeds)"]
 
 
 @pytest.mark.slow
@@ -68,4 +75,4 @@ def test_a_short_wall_comparison_checks_lasting_and_collisions_against_table_vi_
         assert 0.0 <= seeds[0]["success"] <= 1.0 and 0 <= seeds[0]["collisions"] <= 40
         assert 0.0 <= seeds[0]["too_close_share"] <= 1.0 and seeds[0]["mean_time_s"] is None
     verdict, checks = spec("cmp-VI-tuning").claim.evaluate(numbers)
-    assert len(checks) == 2 * 4 and verdict in ("reproduced", "partly", "not reproduced")
+    assert len(checks) == 3 * 4 and verdict in ("reproduced", "partly", "not reproduced")
