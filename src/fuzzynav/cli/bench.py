@@ -2,6 +2,9 @@
 [--backend local|ray] [--perturb KEY=VALUE] [--plant kinematic|mujoco] [--out DIR] [--resume]`` — a benchmark campaign
 (:mod:`fuzzynav.bench`).
 
+Run every controller on every world of the suites (x seeds), write runs.csv as runs finish, then
+rates with 95 % Wilson intervals, medians, plots and index.html.
+
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
 family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap, dynamic, dynabarn). Controllers are registered
 names (``fuzzynav run --help`` lists them) or trained model files (``.json``/``.npz``, labelled by
@@ -25,16 +28,14 @@ from fuzzynav.cli import arguments
 from fuzzynav.cli.run import PLANT_HELP
 from fuzzynav.errors import InputError
 
+EXAMPLES = """
+fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
+fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench"""
+
 
 def register(subparsers) -> None:
-    parser = arguments.command(subparsers, "bench", run,
-                               help="run navigators against each other on suites of worlds",
-                               description="Run every controller on every world of the suites (x seeds), write "
-                                           "runs.csv as runs finish, then rates with 95 % Wilson intervals, medians, "
-                                           "plots and index.html.",
-                               example="""
-fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
-fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench""")
+    parser = arguments.command(subparsers, "bench", run, help="run navigators against each other on suites of worlds",
+                               description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap, "
                              f"COUNT 1 to {validation.MAX_WORLDS:,}, SEED 0 to 2**63-1")

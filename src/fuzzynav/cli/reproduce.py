@@ -1,6 +1,9 @@
 """``fuzzynav reproduce ID…|all --out DIR [--quick] [--fis ROLE=FILE]`` — reproduce the thesis'
 figures and tables, optionally with a rule base replaced (:mod:`fuzzynav.experiments.rule_bases`).
 
+Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and <ID>.json numbers,
+DIR/index.html the thesis' claim beside our figure for each.
+
 Each experiment writes into ``DIR/<id>/`` (PNG figures and ``<id>.json``, the numbers it
 measured, and ``claim.json``, the claim's checks and verdict); ``DIR/index.html`` puts the thesis'
 claim beside our figure and numbers for every experiment in DIR, with its checks, its verdict
@@ -18,17 +21,15 @@ from fuzzynav.catalog import experiments as registry
 from fuzzynav.catalog.roles import parse_option
 from fuzzynav.cli import arguments
 
-
-def register(subparsers) -> None:
-    parser = arguments.command(subparsers, "reproduce", run,
-                               help="reproduce a figure or table of the thesis",
-                               description="Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and "
-                                           "<ID>.json numbers, DIR/index.html the thesis' claim beside our figure for "
-                                           "each.",
-                               example="""
+EXAMPLES = """
 fuzzynav reproduce --list
 fuzzynav reproduce fig-V-28 fig-IV-23 --out figures/
-fuzzynav reproduce all --quick --out figures/""")
+fuzzynav reproduce all --quick --out figures/"""
+
+
+def register(subparsers) -> None:
+    parser = arguments.command(subparsers, "reproduce", run, help="reproduce a figure or table of the thesis",
+                               description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
     parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")

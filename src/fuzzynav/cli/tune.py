@@ -1,10 +1,13 @@
 """``fuzzynav tune CONTROLLER:ROLE --worlds SUITE [--what mf|rules|both] [--method ga|pso|aco|de|cmaes|nsga2]
-[--objectives success,time,clearance] [--budget EVALS] [--seed S] [--out tuned.yaml] [--resume] [--curve PNG]``.
+[--objectives success,time,clearance] [--budget EVALS] [--seed S] [--out tuned.yaml] [--resume] [--curve PNG]``
+(:mod:`fuzzynav.tune`).
 
-Optimises the fuzzy system of one role of a controller (:mod:`fuzzynav.tune`) on training
-worlds, then tests the start and the result on held-out worlds; writes the tuned system (``.yaml``,
-``.json``, ``.fll`` or ``.fis``), which ``run``, ``bench``, ``evaluate`` and ``reproduce`` take as
-``--fis ROLE=FILE``. Every option is checked before any simulation.
+Optimise a role's membership breakpoints and/or rule conclusions on training worlds (every
+candidate of a generation on every world in one compiled call), then test it on held-out worlds.
+
+Both the start and the result are tested on the held-out worlds; the tuned system is written as
+``.yaml``, ``.json``, ``.fll`` or ``.fis``, which ``run``, ``bench``, ``evaluate`` and ``reproduce``
+take as ``--fis ROLE=FILE``. Every option is checked before any simulation.
 """
 
 from __future__ import annotations
@@ -17,16 +20,15 @@ from fuzzynav import progress
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
+EXAMPLES = """
+fuzzynav tune fuzzy-2b:oab --method ga --budget 3000 --worlds mixed:40 --seed 0 --out oab.yaml --curve oab.png
+fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 100 --seed 1000"""
+
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "tune", run,
                                help="tune a controller's fuzzy system by GA, PSO, DE, CMA-ES, NSGA-II or ant colony",
-                               description="Optimise a role's membership breakpoints and/or rule conclusions on "
-                                           "training worlds (every candidate of a generation on every world in one "
-                                           "compiled call), then test it on held-out worlds.",
-                               example="""
-fuzzynav tune fuzzy-2b:oab --method ga --budget 3000 --worlds mixed:40 --seed 0 --out oab.yaml --curve oab.png
-fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 100 --seed 1000""")
+                               description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("target", metavar="CONTROLLER:ROLE",
                         help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:foa")
     parser.add_argument("--worlds", required=True, metavar="SUITE",

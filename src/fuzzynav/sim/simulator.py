@@ -62,6 +62,7 @@ from fuzzynav.sim.movers import MovingObstacles
 from fuzzynav.sim.plants import DEFAULT_PLANT, make_plant
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world.columns import Column
 from fuzzynav.world.limits import MAX_TIME
 from fuzzynav.world.scenario import Scenario
 
@@ -158,30 +159,14 @@ class BatchSimulator:
         self._history = {key: [] for key in ("state", "ranges", "waypoint", "behaviour", "obstacles")}
         self._record_state()
 
-    @property
-    def pose(self) -> np.ndarray:
-        """``(N, 3)`` current poses (a view: copy to keep)."""
-        return self._state[:, step_kernel.X:step_kernel.THETA + 1]
-
-    @property
-    def steering(self) -> np.ndarray:
-        """``(N,)`` steering applied at the last step (a view)."""
-        return self._state[:, step_kernel.STEERING]
-
-    @property
-    def speed(self) -> np.ndarray:
-        """``(N,)`` speed applied at the last step, 0 once finished (a view)."""
-        return self._state[:, step_kernel.SPEED]
-
-    @property
-    def status(self) -> np.ndarray:
-        """``(N,)`` outcome codes: RUNNING, REACHED, COLLISION, TIMEOUT, INVALID_COMMAND."""
-        return self._status[:, step_kernel.OUTCOME]
-
-    @property
-    def steps(self) -> np.ndarray:
-        """``(N,)`` steps each robot has taken."""
-        return self._status[:, step_kernel.STEPS]
+    # views of the stepping core's arrays (copy to keep)
+    pose = Column("_state", slice(step_kernel.X, step_kernel.THETA + 1),
+                  "``(N, 3)`` current poses (a view: copy to keep).")
+    steering = Column("_state", step_kernel.STEERING, "``(N,)`` steering applied at the last step (a view).")
+    speed = Column("_state", step_kernel.SPEED, "``(N,)`` speed applied at the last step, 0 once finished (a view).")
+    status = Column("_status", step_kernel.OUTCOME,
+                    "``(N,)`` outcome codes: RUNNING, REACHED, COLLISION, TIMEOUT, INVALID_COMMAND.")
+    steps = Column("_status", step_kernel.STEPS, "``(N,)`` steps each robot has taken.")
 
     @property
     def active(self) -> np.ndarray:

@@ -30,6 +30,7 @@ from fuzzynav.kernels import step as core
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import moving as motion
+from fuzzynav.world.columns import Column
 
 
 class Fleet:
@@ -107,47 +108,24 @@ class Fleet:
                 lo, hi = self.scene_bounds[row]
                 traffic.place(world.scene, world.movers, self.obstacle_offsets(row, ahead), self.scenes[lo:hi])
 
-    # -- what the adapters read ---------------------------------------------------------------
-    @property
-    def pose(self) -> np.ndarray:
-        """``(n, 3)`` poses (a copy)."""
-        return self.state[:, core.X:core.THETA + 1].copy()
-
-    @property
-    def steering(self) -> np.ndarray:
-        """``(n,)`` steering applied at each robot's last step (a copy)."""
-        return self.state[:, core.STEERING].copy()
-
-    @property
-    def speed(self) -> np.ndarray:
-        """``(n,)`` speed applied at the last step, 0 standing still (a copy)."""
-        return self.state[:, core.SPEED].copy()
-
-    @property
-    def target(self) -> np.ndarray:
-        """``(n, 2)`` the point each robot aims at: its goal or its path's current waypoint (a copy)."""
-        return self.state[:, core.TARGET_X:core.TARGET_Y + 1].copy()
-
-    @property
-    def waypoint(self) -> np.ndarray:
-        """``(n,)`` index of each path's current waypoint (a copy)."""
-        return self.status[:, core.WAYPOINT].copy()
-
-    @property
-    def steps(self) -> np.ndarray:
-        """``(n,)`` steps Δt of each robot's episode so far (a copy)."""
-        return self.status[:, core.STEPS].copy()
+    # -- what the adapters read (copies, but the outcome codes) -------------------------------
+    pose = Column("state", slice(core.X, core.THETA + 1), "``(n, 3)`` poses (a copy).", copy=True)
+    steering = Column("state", core.STEERING, "``(n,)`` steering applied at each robot's last step (a copy).",
+                      copy=True)
+    speed = Column("state", core.SPEED, "``(n,)`` speed applied at the last step, 0 standing still (a copy).",
+                   copy=True)
+    target = Column("state", slice(core.TARGET_X, core.TARGET_Y + 1), "``(n, 2)`` the point each robot aims at: "
+                    "its goal or its path's current waypoint (a copy).", copy=True)
+    waypoint = Column("status", core.WAYPOINT, "``(n,)`` index of each path's current waypoint (a copy).", copy=True)
+    steps = Column("status", core.STEPS, "``(n,)`` steps Δt of each robot's episode so far (a copy).", copy=True)
+    outcome = Column("status", core.OUTCOME, "``(n,)`` outcome codes of :mod:`fuzzynav.kernels.step` (RUNNING, "
+                     "REACHED, COLLISION, TIMEOUT).")
 
     @property
     def clearance(self) -> np.ndarray:
         """``(n,)`` signed distance of each robot's centre to its world's obstacles or boundary,
         as its last stop test measured it."""
         return np.minimum(self.state[:, core.OBSTACLE_DISTANCE], self.state[:, core.BOUNDARY])
-
-    @property
-    def outcome(self) -> np.ndarray:
-        """``(n,)`` outcome codes of :mod:`fuzzynav.kernels.step` (RUNNING, REACHED, COLLISION, TIMEOUT)."""
-        return self.status[:, core.OUTCOME]
 
     @property
     def running(self) -> np.ndarray:
