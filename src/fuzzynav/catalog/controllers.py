@@ -109,11 +109,21 @@ register_controller(ControllerSpec(
     "dwa", "fuzzynav.control.classic.dwa:make", "Dynamic Window Approach on the 7 range sensors",
     "Fox, Burgard & Thrun 1997", GOAL, "rays"))
 register_controller(ControllerSpec(
+    "dwa-tracks", "fuzzynav.control.classic.dwa:make_tracked",
+    "dwa on a lidar, each arc checked against the moving obstacles tracked over successive scans, moved along "
+    "their predicted tracks over the arc's time (the tracker of fuzzy-5b-yield-tracks)",
+    "Fox, Burgard & Thrun 1997; Fiorini & Shiller 1998", GOAL, "lidar"))
+register_controller(ControllerSpec(
     "apf", "fuzzynav.control.classic.apf:make", "artificial potential field on the 7 range sensors",
     "Khatib 1986", GOAL, "rays"))
 register_controller(ControllerSpec(
     "vfh", "fuzzynav.control.classic.vfh:make", "VFH+ on the 7 range sensors", "Ulrich & Borenstein 1998",
     GOAL, "rays"))
+register_controller(ControllerSpec(
+    "vfh-tracks", "fuzzynav.control.classic.vfh:make_tracked",
+    "vfh on a lidar, its histogram also holding the moving obstacles tracked over successive scans at their "
+    "predicted places over the next 1.5 s (the tracker of fuzzy-5b-yield-tracks)",
+    "Borenstein & Koren 1991; Ulrich & Borenstein 1998", GOAL, "lidar"))
 register_controller(ControllerSpec(
     "astar-pp", "fuzzynav.control.classic.astar_pp:make",
     "MAP-AWARE reference: hybrid A* on the inflated map + pure pursuit (knows the whole map)",

@@ -15,6 +15,11 @@ position p + w t (w: the track's velocity less the robot's) comes within the sum
 the collision-cone test of velocity obstacles (P. Fiorini, Z. Shiller, "Motion planning in
 dynamic environments using velocity obstacles", IJRR 17(7), 1998), solved in closed form; a
 track whose relative motion misses the robot has none (inf).
+
+:class:`ScanTracker` feeds one robot's observations to its tracks, for the navigators that decide
+one robot at a time and plan against the predicted positions (``dwa-tracks``, ``vfh-tracks``:
+:mod:`fuzzynav.control.classic.local_map`); ``fuzzy-5b-yield-tracks`` feeds a batch of them
+itself (:mod:`fuzzynav.control.yielding`), through the same :func:`moved_echoes`.
 """
 
 from __future__ import annotations
@@ -109,6 +114,51 @@ class SightingTracks:
         return best, bearing
 
 
+def moved_echoes(points, tracked, before, valid, dt: float, mover_speed: float) -> np.ndarray:
+    """Which of this scan's echoes (``points`` (B, 2), world frame; only the ``tracked`` (B,) ones
+    are tested) moved faster than ``mover_speed`` since the scan before (``before`` (B, 2),
+    ``valid`` (B,)), ``dt`` s earlier: how far each lies off that scan's outline (:func:`off_outline`)."""
+    moved = np.zeros(len(points), dtype=bool)
+    if tracked.any():
+        off, _ = off_outline(points[tracked], before, valid)
+        moved[tracked] = off / dt > mover_speed
+    return moved
+
+
+class ScanTracker:
+    """The moving obstacles one robot tracks from its successive scans (module docstring): its
+    echoes within ``track_range`` m that moved faster than ``mover_speed`` m/s feed its
+    :class:`SightingTracks`."""
+
+    def __init__(self, mover_speed: float = 0.3, track_range: float = 6.0):
+        self.mover_speed, self.track_range = float(mover_speed), float(track_range)
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget every track (a new episode)."""
+        self.tracks = SightingTracks()
+        self._previous: tuple[np.ndarray, np.ndarray] | None = None
+
+    def observe(self, obs) -> np.ndarray:
+        """Feed the scan of one robot's observation ``obs`` (pose, ranges, sensor angles, time);
+        returns which beams' echoes moved, (B,) bool (none at the first scan)."""
+        pose, ranges = np.asarray(obs.pose, dtype=float), np.asarray(obs.ranges, dtype=float)
+        heading = pose[2] + np.asarray(obs.sensor_angles, dtype=float)
+        points = pose[:2] + ranges[:, None] * np.column_stack([np.cos(heading), np.sin(heading)])
+        valid = ranges < obs.max_range - 1e-6
+        previous, self._previous = self._previous, (points, valid)
+        if previous is None or previous[0].shape != points.shape:
+            return np.zeros(len(ranges), dtype=bool)
+        tracked = ranges < min(obs.max_range - 1e-6, self.track_range)
+        moved = moved_echoes(points, tracked, previous[0], previous[1], obs.dt, self.mover_speed)
+        self.tracks.update(float(obs.t), points, moved, pose[:2])
+        return moved
+
+    def confirmed(self) -> list[Track]:
+        """The tracks believed now (:attr:`Track.confirmed`)."""
+        return [track for track in self.tracks.tracks if track.confirmed]
+
+
 def _first_contact(p: np.ndarray, w: np.ndarray, reach: float) -> float:
     """Smallest t ≥ 0 with |p + w t| ≤ ``reach`` (0 when already within; inf when never)."""
     c = float(p @ p) - reach * reach
@@ -119,3 +169,21 @@ def _first_contact(p: np.ndarray, w: np.ndarray, reach: float) -> float:
     if a <= 1e-12 or b >= 0 or disc < 0:
         return np.inf
     return (-b - np.sqrt(disc)) / (2 * a)
+
+
+def off_outline(points, before, valid, bridge: float = 0.3):
+    """(distance (P,), nearest point (P, 2)) of the scan ``points`` (P, 2) to the outline of the
+    scan before (``before`` (S, 2), ``valid`` (S,)): segments between neighbouring valid beams
+    less than ``bridge`` m apart (distance inf when there is none) — how far each echo moved, a
+    surface that stands still being on it."""
+    a, b = before[:-1], before[1:]
+    joined = valid[:-1] & valid[1:] & (np.hypot(*(b - a).T) < bridge)
+    a, e = a[joined], (b - a)[joined]
+    if not len(a):
+        return np.full(len(points), np.inf), np.array(points, dtype=float)
+    u = np.clip(np.einsum("pk,sk->ps", points, e) - np.einsum("sk,sk->s", a, e)[None], 0.0, None)
+    u = np.minimum(u / np.maximum(np.einsum("sk,sk->s", e, e), 1e-12)[None], 1.0)
+    foot = a[None] + u[..., None] * e[None]  # (P, S, 2) nearest point of each segment
+    dist = np.hypot(*(points[:, None] - foot).transpose(2, 0, 1))
+    s = np.argmin(dist, axis=1)
+    return dist[np.arange(len(points)), s], foot[np.arange(len(points)), s]

@@ -4,8 +4,9 @@ obstacles, Conclusion générale; docs/dynamic.md).
 
 The layer reads only the range sensors and the pose the robot believes. Each scan within
 ``horizon`` m becomes points in the world frame; a point of a standing surface lies on the outline
-of the scan before (segments between neighbouring beams), a point of a moving obstacle lies off
-it by what the obstacle moved. A point that moved faster than ``mover_speed`` and whose gap to
+of the scan before (segments between neighbouring beams:
+:func:`~fuzzynav.control.sighting_tracks.off_outline`), a point of a moving obstacle lies off it
+by what the obstacle moved. A point that moved faster than ``mover_speed`` and whose gap to
 the robot shrank gives a time to collision gap / closing speed (the closing-speed cue of Fiorini &
 Shiller's velocity obstacles, 1998, read from two range scans). The smallest one gives the layer's
 two inputs: ``ttc`` (s: short, medium, long) and the threat's bearing ``side`` = |φ| (front,
@@ -33,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control.base import BatchController
-from fuzzynav.control.sighting_tracks import SightingTracks
+from fuzzynav.control.sighting_tracks import SightingTracks, moved_echoes, off_outline
 from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust
 from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partition
 
@@ -105,9 +106,7 @@ class YieldingNavigator(BatchController):
         tracked = ranges < min(obs.max_range - 1e-6, self.track_range)
         for i in range(n):
             if self.tracks and tracked[i].any():
-                moved = np.zeros(len(ranges[i]), dtype=bool)
-                off, _ = _off_outline(points[i][tracked[i]], previous[1][i], previous[2][i])
-                moved[tracked[i]] = off / obs.dt > self.mover_speed
+                moved = moved_echoes(points[i], tracked[i], previous[1][i], previous[2][i], obs.dt, self.mover_speed)
                 self._tracks[i].update(self._time, points[i], moved, pose[i, :2])
                 ttc[i], bearing[i] = self._tracks[i].time_to_collision(self._time, pose[i], float(obs.speed[i]),
                                                                        self.radius)
@@ -154,30 +153,12 @@ def make_tracked(**options) -> YieldingNavigator:
     return navigator
 
 
-def _off_outline(points, before, valid, bridge: float = 0.3):
-    """(distance (P,), nearest point (P, 2)) of the scan ``points`` (P, 2) to the outline of the
-    scan before (``before`` (S, 2), ``valid`` (S,)): segments between neighbouring valid beams
-    less than ``bridge`` m apart (distance inf when there is none) — how far each echo moved, a
-    surface that stands still being on it."""
-    a, b = before[:-1], before[1:]
-    joined = valid[:-1] & valid[1:] & (np.hypot(*(b - a).T) < bridge)
-    a, e = a[joined], (b - a)[joined]
-    if not len(a):
-        return np.full(len(points), np.inf), np.array(points, dtype=float)
-    u = np.clip(np.einsum("pk,sk->ps", points, e) - np.einsum("sk,sk->s", a, e)[None], 0.0, None)
-    u = np.minimum(u / np.maximum(np.einsum("sk,sk->s", e, e), 1e-12)[None], 1.0)
-    foot = a[None] + u[..., None] * e[None]  # (P, S, 2) nearest point of each segment
-    dist = np.hypot(*(points[:, None] - foot).transpose(2, 0, 1))
-    s = np.argmin(dist, axis=1)
-    return dist[np.arange(len(points)), s], foot[np.arange(len(points)), s]
-
-
 def _closing(points, here, before, valid, there, dt: float, mover_speed: float):
     """(gap (P,), closing speed (P,)) of the scan ``points`` (P, 2) seen from ``here`` that moved
-    since the scan before (``before``, ``valid``, seen from ``there``; :func:`_off_outline`): a
+    since the scan before (``before``, ``valid``, seen from ``there``; :func:`off_outline`): a
     point that moved faster than ``mover_speed`` and came closer gets its gap and the speed it
     closed it at (gap inf elsewhere)."""
-    dist, was = _off_outline(points, before, valid)
+    dist, was = off_outline(points, before, valid)
     if not np.isfinite(dist).any():
         return np.full(len(points), np.inf), np.ones(len(points))
     gap = np.hypot(*(points - here).T)

@@ -22,6 +22,14 @@ tan α / l (eq IV.1). At every step:
 
 With no admissible pair the robot brakes (V = 0) steering along the freest arc: with no reverse
 gear it stays there until the episode ends — the classic local minimum of reactive methods.
+
+``dwa-tracks`` (``tracks=True``) reads the lidar and predicts the moving obstacles as
+``fuzzy-5b-yield-tracks`` does (:class:`~fuzzynav.control.classic.local_map.TrackedMap`: tracks
+from successive scans, constant velocity): dist(α, V) of step 2 is also cut where the arc, driven
+at V, meets a tracked obstacle moved along its track to the time the robot gets there (within
+``prediction`` s), so admissibility and the clearance term weigh where the obstacles will be, not
+where they were — the time-parameterised collision check of velocity obstacles (P. Fiorini,
+Z. Shiller, IJRR 17(7), 1998) on Fox et al.'s arcs.
 """
 
 from __future__ import annotations
@@ -31,14 +39,16 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, LocalMap, arcs, free_length
+from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap, arcs, free_length, moving_free_length
+from fuzzynav.robot.sensors import named_ring
 from fuzzynav.validation import positive
 
 
 class DynamicWindow(Controller):
     """DWA (module docstring). Options: robot ``radius``/``wheelbase``/``max_steering``/``max_speed``,
     ``acceleration``, ``braking`` (m/s²), ``margin``, ``horizon`` (m), ``lookahead`` (s), weights
-    ``heading``, ``clearance``, ``velocity``, sample counts ``n_steering``, ``n_speeds``."""
+    ``heading``, ``clearance``, ``velocity``, sample counts ``n_steering``, ``n_speeds``; ``tracks``:
+    plan against the predicted tracks of moving obstacles, on the lidar, ``prediction`` s ahead."""
 
     name = "dwa"
 
@@ -46,7 +56,8 @@ class DynamicWindow(Controller):
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  acceleration: float = 2.0, braking: float = 2.0, margin: float = 0.1, horizon: float = 3.0,
                  lookahead: float = 1.0, heading: float = 1.0, clearance: float = 1.0, velocity: float = 0.2,
-                 n_steering: int = 15, n_speeds: int = 5, memory: int = 10):
+                 n_steering: int = 15, n_speeds: int = 5, memory: int = 10, tracks: bool = False,
+                 prediction: float = 3.0):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.acceleration, self.braking = positive(acceleration, field="acceleration"), positive(braking, field="braking")
         self.margin, self.horizon = float(margin), positive(horizon, field="horizon")
@@ -54,7 +65,9 @@ class DynamicWindow(Controller):
         self.weights = np.array([float(heading), float(clearance), float(velocity)])
         self.steering = np.linspace(-max_steering, max_steering, int(n_steering))
         self.n_speeds = int(n_speeds)
-        self.map = LocalMap(memory)
+        self.map = TrackedMap(memory) if tracks else LocalMap(memory)
+        self.sensors = named_ring("lidar") if tracks else None  # None: the thesis' seven rays
+        self.prediction = positive(prediction, field="prediction")
 
     def reset(self, rng=None) -> None:
         self.map.reset()
@@ -67,13 +80,17 @@ class DynamicWindow(Controller):
         # so the arcs leading away stay admissible
         nearest = float(np.hypot(points[:, 0], points[:, 1]).min()) if len(points) else math.inf
         contact = max(body.radius + 0.02, min(body.radius + self.margin, nearest - 0.05))
-        dist = free_length(curvature, points, contact, self.horizon)
         reach = self.acceleration * obs.dt
         speeds = np.linspace(max(0.0, obs.speed - reach), min(body.max_speed, obs.speed + reach), self.n_speeds)
+        dist = np.broadcast_to(free_length(curvature, points, contact, self.horizon)[:, None], (len(curvature), len(speeds)))
+        if isinstance(self.map, TrackedMap):
+            tracked = self.map
+            dist = np.minimum(dist, moving_free_length(curvature, speeds, lambda times: tracked.predicted(obs, times),
+                                                       contact, self.horizon, self.prediction))
         a, v = np.meshgrid(np.arange(len(self.steering)), speeds, indexing="ij")
-        admissible = (v <= np.sqrt(2.0 * self.braking * dist[a])) & (v > 0)
+        admissible = (v <= np.sqrt(2.0 * self.braking * dist)) & (v > 0)
         if not admissible.any():
-            return Command(float(self.steering[int(np.argmax(dist))]), 0.0, "DWA-stop")
+            return Command(float(self.steering[int(np.argmax(dist.max(axis=1)))]), 0.0, "DWA-stop")
         # heading term: the goal's angle seen from the pose reached after `lookahead` seconds
         travelled = np.maximum(v * self.lookahead, 0.3)
         end = arcs(curvature, np.unique(travelled))  # (A, U, 2)
@@ -85,7 +102,7 @@ class DynamicWindow(Controller):
                          -s * (obs.target[0] - obs.pose[0]) + c * (obs.target[1] - obs.pose[1])])
         to_goal = np.arctan2(goal[1] - end_xy[..., 1], goal[0] - end_xy[..., 0])
         heading = 1.0 - np.abs(np.angle(np.exp(1j * (to_goal - end_theta)))) / math.pi
-        terms = np.stack([heading, np.broadcast_to(dist[:, None], v.shape), v / body.max_speed])
+        terms = np.stack([heading, dist, v / body.max_speed])
         top = np.where(admissible, terms, 0.0).reshape(3, -1).max(axis=1)
         score = np.tensordot(self.weights / np.maximum(top, 1e-9), terms, axes=1)
         best = np.unravel_index(np.argmax(np.where(admissible, score, -np.inf)), v.shape)
@@ -95,3 +112,10 @@ class DynamicWindow(Controller):
 def make(**options) -> DynamicWindow:
     """Factory of ``dwa`` (options: see :class:`DynamicWindow`)."""
     return DynamicWindow(**options)
+
+
+def make_tracked(**options) -> DynamicWindow:
+    """Factory of ``dwa-tracks``: ``dwa`` with ``tracks=True`` (module docstring)."""
+    navigator = DynamicWindow(**{"tracks": True, **options})
+    navigator.name = "dwa-tracks"
+    return navigator

@@ -19,6 +19,16 @@ robots*, ICRA 1998) on the tricycle's remembered range hits, in the robot frame.
    with h_c the primary histogram in the chosen direction (§6 slows down in dense regions).
 
 No free direction left: the robot stops (no reverse gear) and the episode times out.
+
+``vfh-tracks`` (``tracks=True``, after the VFH of J. Borenstein, Y. Koren, *The vector field
+histogram — fast obstacle avoidance for mobile robots*, IEEE Trans. Robotics and Automation 7(3),
+1991, which VFH+ refines) reads the lidar and predicts the moving obstacles as
+``fuzzy-5b-yield-tracks`` does (:class:`~fuzzynav.control.classic.local_map.TrackedMap`: tracks
+from successive scans, constant velocity): the primary histogram of step 1 also holds each
+tracked obstacle at its predicted centres over the next ``prediction`` s (every
+``prediction_step`` s), its enlargement angle grown by the obstacle's radius — the sectors it
+will sweep are blocked or costly before it gets there. The masked histogram (step 3) keeps the
+echoes of this step: where the robot can turn is a matter of what stands round it now.
 """
 
 from __future__ import annotations
@@ -28,21 +38,24 @@ import math
 import numpy as np
 
 from fuzzynav.control.base import Command, Controller
-from fuzzynav.control.classic.local_map import Body, LocalMap
+from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap
+from fuzzynav.robot.sensors import named_ring
 from fuzzynav.validation import positive
 
 
 class VectorFieldHistogram(Controller):
     """VFH+ (module docstring). Options: robot ``radius``/``wheelbase``/``max_steering``/``max_speed``,
     ``sector`` (°), ``window``, ``safety``, ``lookahead`` (m), ``tau_low``/``tau_high``, ``s_max``
-    (sectors), ``h_m``, ``memory`` (steps)."""
+    (sectors), ``h_m``, ``memory`` (steps); ``tracks``: add the predicted tracks of moving obstacles, on
+    the lidar, over ``prediction`` s every ``prediction_step`` s."""
 
     name = "vfh"
 
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  sector: float = 5.0, window: float = 3.0, safety: float = 0.15, lookahead: float = 1.0,
-                 tau_low: float = 0.4, tau_high: float = 0.8, s_max: int = 16, h_m: float = 3.0, memory: int = 10):
+                 tau_low: float = 0.4, tau_high: float = 0.8, s_max: int = 16, h_m: float = 3.0, memory: int = 10,
+                 tracks: bool = False, prediction: float = 1.5, prediction_step: float = 0.25):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.n = int(round(360.0 / positive(sector, field="sector")))
         self.width = 2 * math.pi / self.n
@@ -50,7 +63,10 @@ class VectorFieldHistogram(Controller):
         self.lookahead, self.h_m = positive(lookahead, field="lookahead"), positive(h_m, field="h_m")
         self.tau_low, self.tau_high, self.s_max = float(tau_low), float(tau_high), int(s_max)
         self.directions = np.angle(np.exp(1j * np.arange(self.n) * self.width))  # sector k ↦ k·width, wrapped
-        self.map = LocalMap(memory)
+        self.map = TrackedMap(memory) if tracks else LocalMap(memory)
+        self.sensors = named_ring("lidar") if tracks else None  # None: the thesis' seven rays
+        self.ahead = np.arange(0.0, positive(prediction, field="prediction") + 1e-9,
+                               positive(prediction_step, field="prediction_step"))
         self.reset()
 
     def reset(self, rng=None) -> None:
@@ -58,11 +74,12 @@ class VectorFieldHistogram(Controller):
         self._binary = np.zeros(self.n, dtype=bool)
         self._previous = 0.0  # last chosen direction, world frame
 
-    def _primary(self, points) -> np.ndarray:
+    def _primary(self, points, grown=0.0) -> np.ndarray:
+        """Step 1 over ``points`` (P, 2), each enlarged by the body and ``grown`` (m, scalar or (P,))."""
         d = np.hypot(points[:, 0], points[:, 1])
         keep = d < self.window
         d, beta = d[keep], np.arctan2(points[keep, 1], points[keep, 0])
-        enlarged = self.body.radius + self.safety
+        enlarged = self.body.radius + self.safety + np.broadcast_to(grown, keep.shape)[keep]
         gamma = np.arcsin(np.clip(enlarged / np.maximum(d, 1e-6), 0.0, 1.0))
         magnitude = 1.0 - (d / self.window) ** 2
         offset = np.abs(np.angle(np.exp(1j * (self.directions[None, :] - beta[:, None]))))
@@ -110,6 +127,10 @@ class VectorFieldHistogram(Controller):
     def act(self, obs) -> Command:
         points = self.map.points(obs)
         primary = self._primary(points) if len(points) else np.zeros(self.n)
+        if isinstance(self.map, TrackedMap):
+            where, radii = self.map.predicted(obs, self.ahead)  # (M, T, 2), (M,)
+            if len(radii):
+                primary = primary + self._primary(where.reshape(-1, 2), np.repeat(radii, len(self.ahead)))
         binary = np.where(primary > self.tau_high, True, np.where(primary < self.tau_low, False, self._binary))
         self._binary = binary
         blocked = self._masked(points, binary) if len(points) else np.zeros(self.n, dtype=bool)
@@ -134,3 +155,10 @@ class VectorFieldHistogram(Controller):
 def make(**options) -> VectorFieldHistogram:
     """Factory of ``vfh`` (options: see :class:`VectorFieldHistogram`)."""
     return VectorFieldHistogram(**options)
+
+
+def make_tracked(**options) -> VectorFieldHistogram:
+    """Factory of ``vfh-tracks``: ``vfh`` with ``tracks=True`` (module docstring)."""
+    navigator = VectorFieldHistogram(**{"tracks": True, **options})
+    navigator.name = "vfh-tracks"
+    return navigator
