@@ -187,3 +187,16 @@ def off_outline(points, before, valid, bridge: float = 0.3):
     dist = np.hypot(*(points[:, None] - foot).transpose(2, 0, 1))
     s = np.argmin(dist, axis=1)
     return dist[np.arange(len(points)), s], foot[np.arange(len(points)), s]
+
+
+def tracked_variant(navigator_class, name: str):
+    """The factory of the named variant of ``navigator_class`` that predicts moving obstacles from
+    their tracks (``tracks=True``): ``dwa-tracks``, ``vfh-tracks``, ``fuzzy-5b-yield-tracks``."""
+
+    def make(**options):
+        navigator = navigator_class(**{"tracks": True, **options})
+        navigator.name = name
+        return navigator
+
+    make.__doc__ = f"Factory of ``{name}``: the navigator with ``tracks=True``."
+    return make

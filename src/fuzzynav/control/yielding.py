@@ -34,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control.base import BatchController
-from fuzzynav.control.sighting_tracks import SightingTracks, moved_echoes, off_outline
+from fuzzynav.control.sighting_tracks import SightingTracks, moved_echoes, off_outline, tracked_variant
 from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust
 from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partition
 
@@ -146,11 +146,7 @@ def make(**options) -> YieldingNavigator:
     return YieldingNavigator(**options)
 
 
-def make_tracked(**options) -> YieldingNavigator:
-    """``fuzzy-5b-yield-tracks``: ``fuzzy-5b-yield`` with ``tracks=True`` (module docstring)."""
-    navigator = YieldingNavigator(**{"tracks": True, **options})
-    navigator.name = "fuzzy-5b-yield-tracks"
-    return navigator
+make_tracked = tracked_variant(YieldingNavigator, "fuzzy-5b-yield-tracks")
 
 
 def _closing(points, here, before, valid, there, dt: float, mover_speed: float):

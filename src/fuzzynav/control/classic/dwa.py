@@ -40,6 +40,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap, arcs, free_length, moving_free_length
+from fuzzynav.control.sighting_tracks import tracked_variant
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.validation import positive
 
@@ -114,8 +115,4 @@ def make(**options) -> DynamicWindow:
     return DynamicWindow(**options)
 
 
-def make_tracked(**options) -> DynamicWindow:
-    """Factory of ``dwa-tracks``: ``dwa`` with ``tracks=True`` (module docstring)."""
-    navigator = DynamicWindow(**{"tracks": True, **options})
-    navigator.name = "dwa-tracks"
-    return navigator
+make_tracked = tracked_variant(DynamicWindow, "dwa-tracks")

@@ -39,6 +39,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap
+from fuzzynav.control.sighting_tracks import tracked_variant
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.validation import positive
 
@@ -157,8 +158,4 @@ def make(**options) -> VectorFieldHistogram:
     return VectorFieldHistogram(**options)
 
 
-def make_tracked(**options) -> VectorFieldHistogram:
-    """Factory of ``vfh-tracks``: ``vfh`` with ``tracks=True`` (module docstring)."""
-    navigator = VectorFieldHistogram(**{"tracks": True, **options})
-    navigator.name = "vfh-tracks"
-    return navigator
+make_tracked = tracked_variant(VectorFieldHistogram, "vfh-tracks")
