@@ -15,6 +15,9 @@ controller implements one by defining its member, without deriving from it:
   scenario's ``robot.actuation.latency``, 0 without one; on a real robot, the figure its
   configuration gives) before the episodes, to decide for the pose where its commands will act
   (the default ``fuzzy-5b``, :mod:`fuzzynav.kernels.latency`);
+- :class:`KnowsTraffic` — ``for_traffic(moving)``: told whether the scenario's obstacles move
+  (its ``motion`` keys), to forget where they were (the default ``fuzzy-5b``,
+  :mod:`fuzzynav.kernels.clearing`);
 - :class:`BringsSensors` — ``sensors``: the sensor ring it reads by default
   (:class:`~fuzzynav.robot.sensors.SensorRing`, ``None``: the thesis' seven rays); a scenario's
   ``sensors`` key, or ``--sensors``, overrides it;
@@ -48,6 +51,12 @@ class SizedForRobot(Protocol):
 class KnowsLatency(Protocol):
     def for_latency(self, latency: float) -> object:
         """Compensate an actuation latency of ``latency`` seconds (0: none)."""
+
+
+@runtime_checkable
+class KnowsTraffic(Protocol):
+    def for_traffic(self, moving: bool) -> object:
+        """Told whether the scenario has moving obstacles."""
 
 
 @runtime_checkable

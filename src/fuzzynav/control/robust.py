@@ -71,13 +71,14 @@ class RobustNavigator(BatchController):
     :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
     speed set by the room ahead (:mod:`fuzzynav.kernels.pace`); with ``compensate=True``, the
     decision at the pose where the command will act once told the robot's actuation latency
-    (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); ``systems``
-    of the navigator are its rule bases by role."""
+    (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); with
+    ``forget_moving=True``, in a scenario with moving obstacles, the points its scans contradict
+    forgotten (:meth:`for_traffic`); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
-                 compensate: bool = False):
-        self.navigator, self.name, self.compensate = navigator, name, compensate
+                 compensate: bool = False, forget_moving: bool = False):
+        self.navigator, self.name, self.compensate, self.forget_moving = navigator, name, compensate, forget_moving
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
@@ -128,6 +129,13 @@ class RobustNavigator(BatchController):
         if delay != self.params[layers.PARAM.delay]:
             self.params[layers.PARAM.delay] = delay
             self._rows = None  # the state rows hold the queue: new ones at the next compiled()
+        return self
+
+    def for_traffic(self, moving: bool) -> RobustNavigator:
+        """Told whether the scenario's obstacles move: with ``forget_moving``, the scans then clear
+        the remembered points they contradict (:mod:`fuzzynav.kernels.clearing`); a static
+        scenario's decisions are unchanged."""
+        self.params[layers.PARAM.forget] = float(bool(moving) and self.forget_moving)
         return self
 
     def compiled(self, n: int, sensor_angles):

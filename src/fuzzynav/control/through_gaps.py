@@ -73,15 +73,18 @@ def _replaced(record, values: dict | None, field: str):
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
-                        paced: bool = True, pace: dict | None = None, **options) -> RobustNavigator:
+                        paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
+                        **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
     values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
-    can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did)."""
+    can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did;
+    ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did)."""
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
 
     navigator = FiveBehaviourNavigator(gap=True, **options)
     navigator.name = "fuzzy-5b-gap-robust"
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
-                           pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True)
+                           pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True,
+                           forget_moving=forget_moving)

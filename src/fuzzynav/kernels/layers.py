@@ -51,6 +51,8 @@ class Supervisor:
     """s: the safety stop holding the robot away from its goal this long starts a recovery"""
     n_labels: float
     """the count of the navigator's own behaviour labels (the layers' labels follow them)"""
+    forget: float = 0.0
+    """1: the scans clear the remembered points they contradict (moving obstacles: kernels.clearing)"""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -212,8 +214,7 @@ class Pace:
 
 @dataclass(frozen=True, kw_only=True)
 class Latency:
-    """The latency the navigator compensates (:mod:`fuzzynav.kernels.latency`): the robot's array
-    (:data:`fuzzynav.kernels.motion.ROBOT_FIELDS`, in that order) and the delay."""
+    """The latency compensated (:mod:`~fuzzynav.kernels.latency`): the robot's array (ROBOT_FIELDS), the delay."""
 
     plant_dt: float
     """s: the step Δt"""

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels import escape, guidance, latency, navigators, pace, recovery, sightings
+from fuzzynav.kernels import clearing, escape, guidance, latency, navigators, pace, recovery, sightings
 from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE, TABLES_AT, cells_of, places_of, points_of
 from fuzzynav.kernels.motion import wrap
 from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
@@ -32,8 +32,10 @@ def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
     p, state = layer.params, layer.state
     if p[PARAM.on] == 0.0:
         return navigators.act_one(navigator, cstate, memory, robot, seen, dt)
-    count = sightings.see(points_of(p, state), cells_of(p, state), int(state[STATE.count]),
-                          Pose(robot.x, robot.y, robot.theta), seen)
+    here, count = Pose(robot.x, robot.y, robot.theta), int(state[STATE.count])
+    if p[PARAM.forget] != 0.0:  # moving obstacles: forget where they were (kernels.clearing)
+        count = clearing.clear(points_of(p, state), cells_of(p, state), count, here, seen)
+    count = sightings.see(points_of(p, state), cells_of(p, state), count, here, seen)
     state[STATE.count] = count
     if p[PARAM.delay] == 0.0:
         return decide(navigator, cstate, memory, layer, robot, seen, dt, t)

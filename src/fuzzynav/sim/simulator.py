@@ -41,7 +41,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
-from fuzzynav.control.hooks import CompiledAct, KnowsLatency, MapAware, SizedForRobot
+from fuzzynav.control.hooks import CompiledAct, KnowsLatency, KnowsTraffic, MapAware, SizedForRobot
 from fuzzynav.kernels import imperfect, layers, step as step_kernel
 from fuzzynav.kernels.records import Robots
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -121,6 +121,8 @@ class BatchSimulator:
         for each in copies:  # told the robot's actuation latency (RobustNavigator.for_latency)
             if isinstance(each, KnowsLatency):
                 each.for_latency(self.imperfections.latency)
+            if isinstance(each, KnowsTraffic):  # told whether obstacles move (RobustNavigator.for_traffic)
+                each.for_traffic(bool(scenario.world.moving))
         self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
