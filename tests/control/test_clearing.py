@@ -83,3 +83,13 @@ def test_a_patrol_across_the_way_no_longer_leaves_a_wall_of_ghosts_to_drive_roun
     assert remembering.outcome == forgetting.outcome == "reached"
     assert remembering.time > 15.0
     assert forgetting.time < 10.0
+
+
+def test_the_tracked_yield_variant_runs_round_the_default_and_the_plain_one_round_version_2():
+    """``fuzzy-5b-yield-tracks`` (version 2) wraps the default ``fuzzy-5b``, paced and forgetting;
+    ``fuzzy-5b-yield`` keeps ``fuzzy-5b`` at the thesis' speeds, remembering every point."""
+    tracked, plain = make_controller("fuzzy-5b-yield-tracks"), make_controller("fuzzy-5b-yield")
+    assert tracked.for_traffic(True).inner.params[PARAM.forget] == 1.0
+    assert tracked.inner.params[PARAM.pace] == 1.0
+    assert plain.for_traffic(True).inner.params[PARAM.forget] == 0.0
+    assert plain.inner.params[PARAM.pace] == 0.0

@@ -51,8 +51,9 @@ register_controller(ControllerSpec(
 register_controller(ControllerSpec(
     "fuzzy-5b-yield-tracks", "fuzzynav.control.yielding:make_tracked",
     "fuzzy-5b-yield that also tracks moving obstacles over successive scans and predicts them out of view "
-    "(time to collision by velocity obstacles, for threats abeam and behind)",
-    "this package; Fiorini & Shiller 1998", GOAL, "lidar"))
+    "(time to collision by velocity obstacles, for threats abeam and behind), round the default fuzzy-5b; "
+    "version 1 ran round fuzzy-5b at the thesis' speeds, remembering moving obstacles wherever seen",
+    "this package; Fiorini & Shiller 1998", GOAL, "lidar", version=2))
 register_controller(ControllerSpec(
     "fuzzy-5b-rays", "fuzzynav.control.robust:fuzzy_5b",
     "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors: "

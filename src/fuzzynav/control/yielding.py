@@ -25,8 +25,10 @@ after the last one, and the first time the relative motion enters the collision 
 Shiller's velocity obstacles, IJRR 1998) is a second time to collision. It counts for threats
 more than ``tracked_beyond`` (60°) off the heading — abeam, and behind in the lidar's blind
 sector where the two-scan cue sees nothing; ahead the two-scan cue decides (tracks ahead too,
-alone, did worse on the worlds the rules were set on). On worlds it was not designed on it gets
-no more through than ``fuzzy-5b-yield`` (docs/dynamic.md), so it is a variant, not the default.
+alone, did worse on the worlds the rules were set on). Its version 2 (:func:`make_tracked`) runs
+round the default ``fuzzy-5b`` itself — paced, forgetting where moving obstacles were
+(:mod:`fuzzynav.kernels.clearing`) — where version 1 ran round ``fuzzy-5b`` at the thesis'
+speeds, remembering them; the measurements are in docs/dynamic.md.
 """
 
 from __future__ import annotations
@@ -71,7 +73,7 @@ class YieldingNavigator(BatchController):
 
     def __init__(self, inner=None, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
                  close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0):
-        self.inner = inner if inner is not None else fuzzy_5b_gap_robust(paced=False)
+        self.inner = inner if inner is not None else fuzzy_5b_gap_robust(paced=False, forget_moving=False)
         self.sensors = getattr(self.inner, "sensors", None)
         self.labels = getattr(self.inner, "labels", ())
         self.system, self.mover_speed, self.max_speed, self.horizon = yield_system(), mover_speed, max_speed, horizon
@@ -88,6 +90,12 @@ class YieldingNavigator(BatchController):
             self.inner.for_robot(robot)
         self.max_speed = min(self.max_speed, robot.max_speed)
         self.radius = robot.radius
+        return self
+
+    def for_traffic(self, moving: bool) -> YieldingNavigator:
+        """Tell the inner navigator whether the scenario's obstacles move (its ``for_traffic``, if any)."""
+        if callable(getattr(self.inner, "for_traffic", None)):
+            self.inner.for_traffic(moving)
         return self
 
     def threats(self, obs) -> tuple[np.ndarray, np.ndarray]:
@@ -146,7 +154,12 @@ def make(**options) -> YieldingNavigator:
     return YieldingNavigator(**options)
 
 
-make_tracked = tracked_variant(YieldingNavigator, "fuzzy-5b-yield-tracks")
+def _round_the_default(**options) -> YieldingNavigator:
+    """The layer round the default ``fuzzy-5b`` (paced, forgetting where moving obstacles were)."""
+    return YieldingNavigator(**{"inner": fuzzy_5b_gap_robust(), **options})
+
+
+make_tracked = tracked_variant(_round_the_default, "fuzzy-5b-yield-tracks")
 
 
 def _closing(points, here, before, valid, there, dt: float, mover_speed: float):
