@@ -93,3 +93,16 @@ def test_the_tracked_yield_variant_runs_round_the_default_and_the_plain_one_roun
     assert tracked.inner.params[PARAM.pace] == 1.0
     assert plain.for_traffic(True).inner.params[PARAM.forget] == 0.0
     assert plain.inner.params[PARAM.pace] == 0.0
+
+
+def test_a_held_out_dynamic_world_that_version_4_failed_is_now_passed():
+    """``dynamic`` seed 11, world 2: remembering every mover where it was seen, the car route
+    drove its own arcs between their past places until a mover ran into the robot; forgetting
+    them, ``fuzzy-5b`` reaches the goal."""
+    from fuzzynav.world.generate import generate_world
+
+    scenario = generate_world("dynamic", 11, 2)
+    before = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False), seed=0)
+    assert before.outcome == "collision"
+    assert {"CAR-FWD", "CAR-BACK"} & set(before.behaviour[-10:])
+    assert run_episode(scenario, make_controller("fuzzy-5b"), seed=0).outcome == "reached"
