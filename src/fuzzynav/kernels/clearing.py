@@ -32,9 +32,12 @@ BEYOND = 0.15  # m: the echo must lie this much farther than the point to clear 
 
 
 @jit
-def contradicted(px, py, x, y, theta, ranges, angles, max_range, d_o):
-    """Does the scan read at (x, y, θ) (``ranges`` along ``angles``, sorted ascending, relative
-    to the heading; D_ro = ``d_o``, ``inf``: none) show that nothing stands at (px, py) now (module docstring)?"""
+def contradicted(px, py, pose, seen):
+    """Does the scan ``seen`` (a :class:`~fuzzynav.kernels.records.Reading`: ``ranges`` along
+    ``angles``, sorted ascending, relative to the heading; D_ro = ``d_o``, ``inf``: none) read at
+    ``pose`` show that nothing stands at (px, py) now (module docstring)?"""
+    x, y, theta = pose.x, pose.y, pose.theta
+    ranges, angles, max_range, d_o = seen.ranges, seen.angles, seen.max_range, seen.d_o
     d = math.hypot(px - x, py - y)
     if math.isfinite(d_o) and d < d_o - BEYOND:
         return True
@@ -55,11 +58,9 @@ def clear(points, cells, count, pose, seen):
     :class:`~fuzzynav.kernels.records.Reading`) read at ``pose`` (a
     :class:`~fuzzynav.kernels.records.Pose`) contradicts, keeping the others in their order and
     their hash set ``cells`` in step; returns the new count."""
-    x, y, theta = pose.x, pose.y, pose.theta
     kept = 0
     for i in range(count):
-        if not contradicted(points[i, 0], points[i, 1], x, y, theta, seen.ranges, seen.angles, seen.max_range,
-                            seen.d_o):
+        if not contradicted(points[i, 0], points[i, 1], pose, seen):
             points[kept, 0], points[kept, 1] = points[i, 0], points[i, 1]
             kept += 1
     if kept < count:
