@@ -6,7 +6,7 @@ Run every controller on every world of the suites (x seeds), write runs.csv as r
 rates with 95 % Wilson intervals, medians, plots and index.html.
 
 SUITE is a folder of scenario files (e.g. written by ``fuzzynav import barn``) or a generated
-family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap, dynamic, dynabarn). Controllers are registered
+family ``FAMILY[:COUNT[:SEED]]`` (circles, mixed, dense, utrap, dynamic, dynabarn, office, maze, forest). Controllers are registered
 names (``fuzzynav run --help`` lists them) or trained model files (``.json``/``.npz``, labelled by
 their file name without the suffix). ``--fis ROLE=FILE`` replaces that rule base in every
 controller of the campaign that has the role (as ``fuzzynav run --fis`` does). ``--perturb
@@ -37,7 +37,7 @@ def register(subparsers) -> None:
     parser = arguments.command(subparsers, "bench", run, help="run navigators against each other on suites of worlds",
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("suites", nargs="+", metavar="SUITE",
-                        help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap, "
+                        help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap|dynamic|dynabarn|office|maze|forest, "
                              f"COUNT 1 to {validation.MAX_WORLDS:,}, SEED 0 to 2**63-1")
     parser.add_argument("--controllers", required=True, metavar="A,B,C",
                         help="comma-separated controller names or model files (.json/.npz)")

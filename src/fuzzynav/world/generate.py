@@ -1,6 +1,6 @@
 """Seeded random worlds for benchmarking navigators (``fuzzynav evaluate``).
 
-Four families on the thesis' 20 m × 20 m workspace:
+Families on the thesis' 20 m × 20 m workspace:
 
 - ``"circles"`` — 8 to 14 discs of radius 0.4–1.4 m, the obstacles of Table IV.2 / Fig IV.15;
 - ``"mixed"`` — 8 to 12 obstacles drawn among circles, convex polygons, walls (thick segments,
@@ -15,15 +15,25 @@ Four families on the thesis' 20 m × 20 m workspace:
   which ever comes within 1 m of the start or the goal; solvability is tested on the standing ones;
 - ``"dynabarn"`` — DynaBARN's set-up (:mod:`fuzzynav.world.dynabarn`): 2 to 5 cylinders crossing
   a walled 20 m arena on polynomial tracks, its fixed start, goal and 100 s limit (the other
-  families' start, goal and solvability rules do not apply to it).
+  families' start, goal and solvability rules do not apply to it);
+- ``"office"`` — rooms along one or two corridors, joined by doors 0.9–1.5 m wide
+  (:mod:`fuzzynav.world.office`), start and goal in two rooms;
+- ``"maze"`` — a braided grid maze of 6 to 8 cells a side over the whole world
+  (:mod:`fuzzynav.world.maze`), start and goal at two cells' centres;
+- ``"forest"`` — thin posts (radius 0.05–0.15 m) over the whole world, a Poisson-disc sample at
+  least 1.1–1.8 m apart (:mod:`fuzzynav.world.forest`).
 
 Start and goal are at least 10 m apart, ≥ 2.5 m from the boundary walls and ≥ 1.5 m from every
-obstacle; the start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
+obstacle (in ``office`` and ``maze``: the centres of two rooms or cells at least 10 m apart); the
+start heading is uniform. Only **solvable** worlds are returned: on an occupancy grid of 0.2 m cells, the cells
 where the robot's footprint disc plus a margin fits (clearance ≥ ``robot_radius + margin``) must
 connect the start to the goal. The default margin is the tightest turning radius
 l / tan(π/5) = 0.69 m: a tricycle that cannot reverse needs passages where it can turn around
 (width ≥ 2 (0.3 + 0.69) ≈ 2 m), not merely passages it fits through (4-connected flood fill, :func:`scipy.ndimage.label`); otherwise the
-draw is rejected and redrawn. World ``i`` of ``generate_worlds(kind, n, seed)`` depends only on
+draw is rejected and redrawn. Doors and posts leave less room than that: ``office`` and ``forest``
+check their own margin of centimetres (with reverse, the car can follow any path of its
+footprint that keeps some clearance: :mod:`fuzzynav.world.office`); ``maze`` keeps the turning
+margin (its corridors are sized for it). World ``i`` of ``generate_worlds(kind, n, seed)`` depends only on
 ``(kind, seed, i)`` (one child :class:`numpy.random.SeedSequence` per world), so the first 10 of
 100 worlds are the 10 worlds of ``n = 10``.
 """
@@ -36,12 +46,12 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-from fuzzynav.world import dynabarn, traffic
+from fuzzynav.world import dynabarn, forest, maze, office, traffic
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
 from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
 
-KINDS = ("circles", "mixed", "dense", "utrap", "dynamic", "dynabarn")  # append only: the index seeds each family
+KINDS = ("circles", "mixed", "dense", "utrap", "dynamic", "dynabarn", "office", "maze", "forest")  # append only: the index seeds each family
 WIDTH = HEIGHT = 20.0
 MIN_START_GOAL = 10.0  # m between start and goal
 POINT_CLEARANCE = 1.5  # m of free space around start and goal
@@ -69,6 +79,9 @@ def _u_trap(rng, start, goal) -> list[dict]:
 _MAKERS = {"circles": ("circle",), "mixed": ("circle", "polygon", "wall", "ellipse"),
            "dense": ("circle", "polygon", "wall", "ellipse"), "utrap": ("circle",), "dynamic": ("circle", "polygon")}
 _COUNTS = {"circles": (8, 14), "mixed": (8, 12), "dense": (14, 20), "utrap": (2, 5), "dynamic": (3, 6)}
+# the families whose module draws the whole world, start and goal (a scenario document)
+_PLANS = {"office": office.office_document, "maze": maze.maze_document}
+_MARGINS = {"office": office.MARGIN, "forest": forest.MARGIN}  # solvability margins other than TURNING_MARGIN
 
 
 def _clear_of(shapes: list[dict], start, goal) -> bool:
@@ -99,14 +112,23 @@ def connected(world: World, start, goal, radius: float) -> bool:
 
 
 def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", max_time: float = 120.0,
-                 robot_radius: float = DEFAULT_PARAMS.radius, margin: float = TURNING_MARGIN) -> Scenario:
-    """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``."""
+                 robot_radius: float = DEFAULT_PARAMS.radius, margin: float | None = None) -> Scenario:
+    """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``;
+    ``margin`` (m) replaces the family's solvability margin."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="kind")
     if kind == "dynabarn":
         return scenario_from_dict(dynabarn.dynabarn_document(rng, name), source=name)
-    makers = _MAKERS[kind]
-    lo, hi = _COUNTS[kind]
+    room = robot_radius + (_MARGINS.get(kind, TURNING_MARGIN) if margin is None else margin)
+    if kind in _PLANS:
+        for _ in range(MAX_DRAWS):
+            scenario = scenario_from_dict(_PLANS[kind](rng, name, size=WIDTH, min_start_goal=MIN_START_GOAL,
+                                                       max_time=max_time), source=name)
+            if connected(scenario.world, scenario.start[:2], scenario.goal.position, room):
+                return scenario
+        raise RuntimeError(f"no solvable {kind} world in {MAX_DRAWS} draws")  # pragma: no cover - never seen
+    makers = _MAKERS.get(kind, ())
+    lo, hi = _COUNTS.get(kind, (0, 0))  # forest: its posts only
     for _ in range(MAX_DRAWS):
         while True:
             start, goal = rng.uniform(BORDER, WIDTH - BORDER, (2, 2))
@@ -115,6 +137,8 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
         obstacles = _u_trap(rng, start, goal) if kind == "utrap" else []
         if obstacles and not _clear_of(obstacles, start, goal):
             continue
+        if kind == "forest":
+            obstacles = forest.forest_entries(rng, WIDTH, HEIGHT, (start, goal), POINT_CLEARANCE)
         for _ in range(int(rng.integers(lo, hi + 1))):
             shape = SHAPES[makers[int(rng.integers(len(makers)))]].random(rng)
             if _clear_of([shape], start, goal):
@@ -140,7 +164,7 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
             if not traffic.keeps_clear(world, (scenario.start[:2], scenario.goal.position), max_time):
                 continue
             world = World(world.width, world.height, world.obstacles[:standing])
-        if connected(world, scenario.start[:2], scenario.goal.position, robot_radius + margin):
+        if connected(world, scenario.start[:2], scenario.goal.position, room):
             return scenario
     raise RuntimeError(f"no solvable {kind} world in {MAX_DRAWS} draws")  # pragma: no cover - never seen
 
