@@ -18,7 +18,8 @@ per tried variable, then the best table as JSON.
 collision, the time, whether the start leaves the robot any clear constant-steering forward arc
 (:func:`clear_arc`: full lock either way down to straight ahead; none clear means the start can
 be survived only by a manoeuvre or by stopping), and the corner nearest the collision (distance;
-its wedge angle when the robot is inside it, i.e. an inner corner of the followed wall). Prints
+its wedge angle when the robot is inside it, i.e. an inner corner of the followed wall), and
+whether the robot hit the workspace's boundary, having left the course. Prints
 one JSON line per collision, then the counts.
 
 ``relative ID DIR…``: a relative claim of §VI.5.1.1 (``fig-VI-8``: FQL faster than tabular
@@ -134,15 +135,19 @@ def wall_collisions(model: str) -> dict:
     for k, course in evaluation_courses():
         trace = run_episode(course, follower, max_time=30.0)
         if trace.outcome == "collision":
-            distance, wedge = nearest_corner(course.world, trace.pose[-1, :2])
+            x, y = trace.pose[-1, :2]
+            distance, wedge = nearest_corner(course.world, (x, y))
+            border = min(x, y, course.world.width - x, course.world.height - y)
             rows.append({"course": k, "t": round(float(trace.t[-1]), 1), "clear_arc": clear_arc(course.world, course.start),
-                         "corner_m": round(distance, 2), "wedge_deg": round(wedge)})
+                         "corner_m": round(distance, 2), "wedge_deg": round(wedge),
+                         "boundary": bool(border < 1.5 * DEFAULT_PARAMS.radius)})
             print(json.dumps(rows[-1]), flush=True)
     inner = [r for r in rows if r["wedge_deg"] > 0 and r["corner_m"] < 3.0]
     return {"model": model, "collisions": len(rows), "no_clear_arc": sum(not r["clear_arc"] for r in rows),
             "first_3_s": sum(r["t"] < 3.0 for r in rows), "inside_an_inner_corner_within_3_m": len(inner),
             "of_which_first_3_s": sum(r["t"] < 3.0 for r in inner),
             "inner_wedges_deg": sorted(r["wedge_deg"] for r in inner),
+            "workspace_boundary": sum(r["boundary"] for r in rows),
             "starts_without_clear_arc": sum(not clear_arc(c.world, c.start) for _, c in evaluation_courses())}
 
 
