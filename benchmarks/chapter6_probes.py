@@ -14,6 +14,14 @@ starting from the hand-made choice: an optimistic bound of what any learner choo
 same interpretations, reading the same distances, can reach on those courses. Prints one line
 per tried variable, then the best table as JSON.
 
+``wall-collisions MODEL|wall-follow``: where a wall follower collides on those 96 courses — per
+collision, the time, whether the start leaves the robot any clear constant-steering forward arc
+(:func:`clear_arc`: full lock either way down to straight ahead; none clear means the start can
+be survived only by a manoeuvre or by stopping), and the corner nearest the collision (distance;
+its wedge angle when the robot is inside it, i.e. an inner corner of the followed wall), and
+whether the robot hit the workspace's boundary, having left the course. Prints
+one JSON line per collision, then the counts.
+
 ``relative ID DIR…``: a relative claim of §VI.5.1.1 (``fig-VI-8``: FQL faster than tabular
 Q-learning; ``fig-VI-13``: 35 rules slower than 15; ``fig-VI-16``: traces faster) over the seeds
 whose ``fuzzynav reproduce ID --seed S --out DIR`` numbers are in the DIRs: the check of
@@ -21,6 +29,7 @@ whose ``fuzzynav reproduce ID --seed S --out DIR`` numbers are in the DIRs: the 
 
     python benchmarks/chapter6_probes.py avoid-rules avoid-4.json
     python benchmarks/chapter6_probes.py wall-bound rays --sweeps 2
+    python benchmarks/chapter6_probes.py wall-collisions wall-4.json
 ``table-vi-1 SEED``: Table VI.1's four tabular learners (§VI.2) trained as ``fuzzynav reproduce
 table-VI-1`` trains them, but with another exploration and learning-rate schedule, to see whether
 the thesis' trend (more state–action pairs, more episodes) hides behind the package's schedule:
@@ -47,6 +56,7 @@ from fuzzynav.control.learned import LearnedWallFollower
 from fuzzynav.experiments.chapter6 import rank_correlation
 from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
 from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
+from fuzzynav.experiments.rule_bases import controller as named_controller
 from fuzzynav.learn.exploration import EpsilonGreedy, greedy_choice
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
@@ -55,7 +65,8 @@ from fuzzynav.learn.tasks import tabular_goal
 from fuzzynav.learn.tasks.common import STEERING3, THESIS, Phase, TrainRequest, checkpoint_path, run_phases
 from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
 from fuzzynav.learn.tasks.fql_wall import wall_parts
-from fuzzynav.sim import BatchSimulator
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.sim import BatchSimulator, run_episode
 from fuzzynav.storage import save_document
 
 RUNS = 100
@@ -78,12 +89,72 @@ def avoid_rules(model: str, scratch: str) -> None:
               evaluate_avoid(load_controller(scratch), RUNS), flush=True)
 
 
+def evaluation_courses() -> list:
+    """(index, scenario) of evaluate_wall's courses (seed 777) whose start is collision-free."""
+    rng = np.random.default_rng(777)
+    drawn = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
+    return [(k, course) for k, course in enumerate(drawn) if not starts_in_a_wall(course)]
+
+
+def clear_arc(world, pose, params=DEFAULT_PARAMS) -> bool:
+    """Is some constant steering |α| ≤ max_steering (41 values) a forward path that keeps the
+    footprint clear: a whole circle of radius l / tan α, or 12 m straight ahead?"""
+    x, y, theta = pose
+    for alpha in np.linspace(-params.max_steering, params.max_steering, 41):
+        if abs(alpha) < 1e-9:
+            s = np.linspace(0.0, 12.0, 400)
+            points = np.column_stack([x + s * np.cos(theta), y + s * np.sin(theta)])
+        else:
+            radius = params.wheelbase / np.tan(alpha)
+            phi = theta + np.linspace(0.0, 2 * np.pi, 400) * np.sign(radius)
+            points = np.column_stack([x - radius * np.sin(theta) + radius * np.sin(phi),
+                                      y + radius * np.cos(theta) - radius * np.cos(phi)])
+        if world.clearance(points).min() >= params.radius:
+            return True
+    return False
+
+
+def nearest_corner(world, point) -> tuple[float, float]:
+    """(distance, wedge) of the course's joint nearest ``point``: the wedge angle (degrees) between
+    the two walls when ``point`` lies inside it, negative (minus the reflex angle) outside."""
+    best = (np.inf, 0.0)
+    for a, b in zip(world.obstacles[:-1], world.obstacles[1:]):
+        u, v, q = a.start - b.start, b.end - b.start, np.asarray(point) - b.start
+        wedge = np.degrees(np.arccos(np.clip(u @ v / np.hypot(*u) / np.hypot(*v), -1.0, 1.0)))
+        cross = lambda p, r: p[0] * r[1] - p[1] * r[0]
+        inside = cross(u, q) * cross(u, v) > 0 and cross(q, v) * cross(u, v) > 0
+        if np.hypot(*q) < best[0]:
+            best = (float(np.hypot(*q)), float(wedge if inside else wedge - 360.0))
+    return best
+
+
+def wall_collisions(model: str) -> dict:
+    """Where ``model`` (a model file, or ``wall-follow``: Table VI.2) collides (module docstring)."""
+    follower = named_controller("wall-follow") if model == "wall-follow" else load_controller(model)
+    rows = []
+    for k, course in evaluation_courses():
+        trace = run_episode(course, follower, max_time=30.0)
+        if trace.outcome == "collision":
+            x, y = trace.pose[-1, :2]
+            distance, wedge = nearest_corner(course.world, (x, y))
+            border = min(x, y, course.world.width - x, course.world.height - y)
+            rows.append({"course": k, "t": round(float(trace.t[-1]), 1), "clear_arc": clear_arc(course.world, course.start),
+                         "corner_m": round(distance, 2), "wedge_deg": round(wedge),
+                         "boundary": bool(border < 1.5 * DEFAULT_PARAMS.radius)})
+            print(json.dumps(rows[-1]), flush=True)
+    inner = [r for r in rows if r["wedge_deg"] > 0 and r["corner_m"] < 3.0]
+    return {"model": model, "collisions": len(rows), "no_clear_arc": sum(not r["clear_arc"] for r in rows),
+            "first_3_s": sum(r["t"] < 3.0 for r in rows), "inside_an_inner_corner_within_3_m": len(inner),
+            "of_which_first_3_s": sum(r["t"] < 3.0 for r in inner),
+            "inner_wedges_deg": sorted(r["wedge_deg"] for r in inner),
+            "workspace_boundary": sum(r["boundary"] for r in rows),
+            "starts_without_clear_arc": sum(not clear_arc(c.world, c.start) for _, c in evaluation_courses())}
+
+
 def wall_bound(sensing: str, sweeps: int) -> dict:
     """Coordinate descent of the per-rule interpretations on the 100 evaluation courses."""
     handmade, _, alpha, speed = wall_parts()
-    rng = np.random.default_rng(777)
-    drawn = [wall_course_scenario(rng, f"wall-course-{k}") for k in range(RUNS)]
-    courses = [course for course in drawn if not starts_in_a_wall(course)]  # as evaluate_wall
+    courses = [course for _, course in evaluation_courses()]
 
     def collisions(choice):
         system = rule_table(handmade, [("alpha", alpha, choice[0]), ("v", speed, choice[1])], name="probe",
@@ -155,6 +226,8 @@ def main() -> None:
     wall = sub.add_parser("wall-bound")
     wall.add_argument("sensing", choices=("rays", "modules"))
     wall.add_argument("--sweeps", type=int, default=2)
+    collisions = sub.add_parser("wall-collisions")
+    collisions.add_argument("model", help="an fql-wall model file, or wall-follow (Table VI.2)")
     relative = sub.add_parser("relative")
     relative.add_argument("id", choices=sorted(RELATIVE))
     relative.add_argument("dirs", nargs="+", help="the --out DIR of one reproduce run per seed")
@@ -169,6 +242,8 @@ def main() -> None:
         print(json.dumps(table_vi_1(args.seed, args.schedule, args.episodes, Path(args.out))))
     elif args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
+    elif args.probe == "wall-collisions":
+        print(json.dumps(wall_collisions(args.model)))
     elif args.probe == "relative":
         runs = [json.loads((Path(d) / args.id / f"{args.id}.json").read_text()) for d in args.dirs]
         print(json.dumps(relative_over_seeds(args.id, runs).as_json()))

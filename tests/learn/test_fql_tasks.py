@@ -1,5 +1,5 @@
 """The chapter VI sensor tasks of learn/tasks/: the avoider's openness input (16 rules),
-the turning-room guard of the learned navigator, and the wall follower's rewards read on the modules."""
+the turning-room guard of the learned navigator, and the wall follower rewarded on the distances it reads."""
 
 import math
 
@@ -79,19 +79,26 @@ def test_a_model_file_says_whether_its_navigator_is_guarded(tmp_path):
         load_controller(path)
 
 
-def test_wall_follower_reads_its_rays_and_is_rewarded_on_the_modules(tmp_path):
-    steering = next(fql_wall.fql_wall_phases(tmp_path / "wall.json", 100, batch=2))
+@pytest.mark.parametrize("sensing", ["rays", "modules"])
+def test_wall_follower_is_rewarded_on_the_distances_it_reads(tmp_path, sensing):
+    """Eqs VI.21–VI.22's d_i are the follower's own three distances (§VI.5.3.1)."""
+    steering = next(fql_wall.fql_wall_phases(tmp_path / "wall.json", 100, batch=2, sensing=sensing))
     env = steering.env
     far = np.full((1, 7), 4.0)
     tip = far.copy()
     tip[0, 1] = 0.5  # a corner tip at −30° (C2), between the single rays (Fig VI.28)
+    wall = far.copy()
+    wall[0, 6] = 0.5  # a wall on the left, on the +90° ray
 
     def state(ranges):
         return RobotState(World(), np.zeros((1, 3)), np.ones(1), np.zeros(1), ranges=ranges, sides=env.sides(ranges))
 
-    assert env.observe(state(tip)).tolist() == [[4.0, 4.0, 4.0]]  # the follower's rays miss it
     no = np.zeros(1, dtype=bool)
-    assert env.reward(state(far), state(tip), no, no).tolist() == [-1.0]  # eq VI.21: some d_i < d_m
+    seen = sensing == "modules"  # the right and front modules' nearest sensors see the tip, the single rays miss it
+    assert env.observe(state(tip)).tolist() == [[0.5, 0.5, 4.0] if seen else [4.0, 4.0, 4.0]]
+    assert env.reward(state(far), state(tip), no, no).tolist() == [-1.0 if seen else 0.0]  # eq VI.21
+    assert env.observe(state(wall)).tolist() == [[4.0, 4.0, 0.5]]  # (d_d, d_f, d_g)
+    assert env.reward(state(far), state(wall), no, no).tolist() == [-1.0]  # some d_i < d_m
     assert env.reward(state(far), state(far), no, no).tolist() == [0.0]
 
 

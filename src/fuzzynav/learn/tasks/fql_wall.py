@@ -48,7 +48,6 @@ WALL_COLUMNS = [1, 0, 2]  # (d_d, d_f, d_g) = (right, front, left) of the env's 
 
 
 WALL_SENSING = "rays"  # the hand-made follower's single rays (control.learned.SENSING)
-WALL_REWARD_SENSING = "modules"  # the d_i of the rewards VI.21-VI.22: nearest of each module's three sensors
 
 
 def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing: str = WALL_SENSING):
@@ -59,16 +58,15 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing
 
     ``sensing`` is how the learner reads d_d, d_f, d_g (:data:`fuzzynav.control.learned.SENSING`):
     by default the single rays at −90°, 0°, +90° of the hand-made follower, so that what learning
-    changes is the interpretations only. The rewards' d_i (eqs VI.21–VI.22) are the nearest
-    reading of each module's three sensors (:data:`WALL_REWARD_SENSING`): the critic sees the
-    corner tip between the rays that the follower does not (Fig VI.28), so the near-corner states
-    that end in the collision are punished before it (docs/training.md, "Wall following").
+    changes is the interpretations only. The rewards' d_i (eqs VI.21–VI.22, "i = 1…3") are the
+    same three distances the follower reads ("les valeurs de distances dans les trois directions
+    du robot (dd, dg et df)", §VI.5.3.1).
     """
     handmade, premise, alpha, speed = wall_parts()
-    layout, sensors, sides, inputs = WallCourse(), SensorRing(), SENSING[WALL_REWARD_SENSING], SENSING[sensing]
+    layout, sensors, sides = WallCourse(), SensorRing(), SENSING[sensing]
 
     def observe(s):
-        return inputs(s.ranges)[:, WALL_COLUMNS]
+        return sides(s.ranges)[:, WALL_COLUMNS]
 
     tolerance = common.extraction_tolerance(batch, WALL_TOLERANCE)
     steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
