@@ -58,6 +58,7 @@ from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
+ROUTE_SLOTS = 100  # poses of the car route kept for reuse (arcs of guide_car_step: 20 m at 0.2 m)
 
 
 class RobustNavigator(BatchController):
@@ -78,7 +79,7 @@ class RobustNavigator(BatchController):
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
-        records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places))
+        records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places, route_slots=ROUTE_SLOTS if guidance else 0))
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])
         self.for_robot(DEFAULT_PARAMS, navigator=False)
@@ -185,7 +186,7 @@ def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
     at = layers.PARAM
     slots = int(params[at.points_slots])
-    kept = layers.PLACES_AT + 3 * int(params[at.places_slots]) + 2 * slots  # the state, places and points
+    kept = layers.points_at(params) + 2 * slots  # the state, places, route and points
     params[[at.points_slots, at.cell_slots, at.grow]] = 2 * slots, _hash_size(2 * slots), 0.0
     wider = layers.fresh_state(len(rows), params)
     wider[:, :kept] = rows[:, :kept]
