@@ -219,9 +219,8 @@ class Pace:
 
 @dataclass(frozen=True, kw_only=True)
 class Slots:
-    """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
-    (set by a step after which a robot could run out of them: the controller's ``compiled()``
-    then makes them larger before the next step)."""
+    """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots (set
+    by a step after which a robot could run out: the controller's ``compiled()`` then adds some)."""
 
     places_slots: float
     """the loop detector's sampled places"""
