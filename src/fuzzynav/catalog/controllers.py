@@ -39,10 +39,11 @@ register_controller(ControllerSpec(
     "fuzzy-5b", "fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
     "the default navigator: the five behaviours on a lidar, steering through the gap that fits the body, "
     "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
-    "and loop escape, its speed set by the room ahead on its arc; version 1 of this name is fuzzy-5b-rays, "
-    "version 2 drove at the thesis' speeds (paced=False)",
+    "and loop escape, its speed set by the room ahead on its arc, its car route reused while valid; version 1 of "
+    "this name is fuzzy-5b-rays, version 2 drove at the thesis' speeds (paced=False), version 3 searched its car "
+    "route at every plan (guidance={'guide_car_reuse': 0})",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997", GOAL, "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",),
-    version=3))
+    version=4))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "
