@@ -38,7 +38,7 @@ def scenario(world_file: Path, scale: float, max_speed: float | None = None):
 
 
 def run_world(barn: Path, index: int, scale: float, controller: str, sensors: str | None,
-              max_speed: float | None = None) -> dict:
+              max_speed: float | None = None, options: dict | None = None) -> dict:
     """One run: outcome, time (s) and BARN score of world ``index``."""
     from fuzzynav.bench.measures import barn_score
     from fuzzynav.catalog.controllers import make_controller
@@ -46,7 +46,7 @@ def run_world(barn: Path, index: int, scale: float, controller: str, sensors: st
     from fuzzynav.sim.simulator import BatchSimulator
     from fuzzynav.world.barn import optimal_path_length
 
-    sim = BatchSimulator(scenario(barn / f"world_{index}.world", scale, max_speed), make_controller(controller),
+    sim = BatchSimulator(scenario(barn / f"world_{index}.world", scale, max_speed), make_controller(controller, **(options or {})),
                          sensors=None if sensors is None else named_ring(sensors), seed=0, record=False).run()
     outcome, seconds = sim.outcomes()[0], float(sim.steps[0]) * sim.params.dt
     score = barn_score(outcome == "reached", seconds, scale * optimal_path_length(barn / f"path_{index}.npy"))
@@ -78,11 +78,14 @@ def main(argv=None) -> None:
     parser.add_argument("--max-speed", type=float, default=None,
                         help="the robot's top speed in m/s (default: the scenario's 4; BARN's Jackal: 2)")
     parser.add_argument("--out", type=Path, help="write the rows and the summary as JSON here")
+    parser.add_argument("--options", type=json.loads, default=None, metavar="JSON",
+                        help="the controller's options, e.g. '{\"guidance\": {\"guide_car_reuse\": 0}}'")
     args = parser.parse_args(argv)
     started = time.perf_counter()
-    rows = [run_world(args.barn, i, args.scale, args.controller, args.sensors, args.max_speed) for i in world_range(args.worlds)]
+    rows = [run_world(args.barn, i, args.scale, args.controller, args.sensors, args.max_speed, args.options)
+            for i in world_range(args.worlds)]
     result = {"controller": args.controller, "sensors": args.sensors, "scale": args.scale, "worlds": args.worlds,
-              "max_speed": args.max_speed,
+              "max_speed": args.max_speed, "options": args.options,
               "summary": summary(rows), "seconds": round(time.perf_counter() - started, 1), "runs": rows}
     print(json.dumps({k: v for k, v in result.items() if k != "runs"}))
     if args.out:

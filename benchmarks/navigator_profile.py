@@ -6,8 +6,9 @@ sees the same machine load): the simulator with the 271-beam lidar under a const
 (``sim+lidar``), then the inner navigator ``fuzzy-5b-gap`` (sector readings, gap finding, the
 five behaviours, the hit memory: ``navigator``), then the recovery and loop-escape layers with
 their obstacle-point memory (``layers``), then the route guidance on the grid route alone
-(``grid route``), then with the car route by hybrid A* (``car route``), then the whole
-``fuzzy-5b`` with its pace (``pace``). Each part's cost is the difference of two builds' mean time
+(``grid route``), then with the car route by hybrid A* searched at every plan (``car route``),
+then with its pace (``pace``), then the whole ``fuzzy-5b``, which reuses a car route while it
+stays valid (``plan reuse``: a negative part is a saving). Each part's cost is the difference of two builds' mean time
 per running robot-step (µs); the builds drive differently from the layer they add on (the pace
 above all: quicker, the robots reach clutter and plan sooner), so the split is an estimate, not
 an exact account. :func:`plans` then counts how often ``fuzzy-5b`` plans and splits one car
@@ -37,6 +38,7 @@ from fuzzynav.robot.sensors import named_ring  # noqa: E402
 from fuzzynav.sim import BatchSimulator  # noqa: E402
 
 CHUNKS = 5
+SEARCHED = {"guide_car_reuse": 0.0}  # the car route searched at every plan, as before plans were reused
 GOAL = (19.0, 19.0)  # the goal of world_of_15
 
 
@@ -50,8 +52,9 @@ def builds() -> dict:
         "navigator": lambda: FiveBehaviourNavigator(gap=True),
         "layers": layers_only,
         "grid route": lambda: fuzzy_5b_gap_robust(guidance={"guide_car": 0.0}, paced=False),
-        "car route": lambda: fuzzy_5b_gap_robust(paced=False),
-        "pace": fuzzy_5b_gap_robust,
+        "car route": lambda: fuzzy_5b_gap_robust(paced=False, guidance=SEARCHED),
+        "pace": lambda: fuzzy_5b_gap_robust(guidance=SEARCHED),
+        "plan reuse": fuzzy_5b_gap_robust,
     }
 
 
@@ -101,8 +104,9 @@ def profile(n: int, steps: int) -> dict:
 
 
 def plans(n: int, steps: int) -> dict:
-    """How often ``fuzzy-5b``'s robots plan, and what a car route plan costs, by part: ``n`` robots
-    drive ``steps`` steps (a route planned again shows as a new ``guide_planned`` time); then, for
+    """How often ``fuzzy-5b``'s robots plan and search a car route, with the route searched at every
+    plan and reused: ``n`` robots drive ``steps`` steps (a route planned again shows as a new
+    ``guide_planned`` time, a search as a new ``guide_made``); then, for
     each robot still running (at most 64) whose straight line to the goal is not free, the plan it
     would make there is made again part by part (CPU time of 3 repeats): the clearance grid, the Dijkstra
     heuristic, the hybrid A* search (``fuzzynav.kernels.car_route.plan``)."""
@@ -111,26 +115,32 @@ def plans(n: int, steps: int) -> dict:
     import numpy as np
 
     from fuzzynav.catalog.controllers import make_controller
-    from fuzzynav.kernels import car_route, car_search, guidance, layers
+    from fuzzynav.kernels import car_route, car_search, guidance, layers, row_blocks
     from fuzzynav.kernels.records import Robot, Sightings
 
-    controller = make_controller("fuzzy-5b")
-    run = Run(controller, n)
-    sim, planned, robot_steps = run.sim, 0, 0
-    for _ in range(steps):
-        if sim.done:
-            break
-        before = controller.compiled(n, sim.sensors.angles)[-1][:, layers.STATE.guide_planned].copy()
-        robot_steps += int(np.count_nonzero(sim.active))
-        sim.step()
-        planned += int(np.count_nonzero(controller.compiled(n, sim.sensors.angles)[-1][:, layers.STATE.guide_planned] != before))
+    counts = {}
+    for name, options in (("searched every plan", SEARCHED), ("reused", {})):
+        controller = make_controller("fuzzy-5b", guidance=options)
+        run = Run(controller, n)
+        sim, planned, searches, robot_steps = run.sim, 0, 0, 0
+        columns = [layers.STATE.guide_planned, layers.STATE.guide_made]
+        for _ in range(steps):
+            if sim.done:
+                break
+            before = controller.compiled(n, sim.sensors.angles)[-1][:, columns].copy()
+            robot_steps += int(np.count_nonzero(sim.active))
+            sim.step()
+            changed = controller.compiled(n, sim.sensors.angles)[-1][:, columns] != before
+            planned, searches = planned + int(np.count_nonzero(changed[:, 0])), searches + int(np.count_nonzero(changed[:, 1]))
+        counts[name] = {"plans_per_robot_step": round(planned / max(robot_steps, 1), 4),
+                        "car_searches_per_robot_step": round(searches / max(robot_steps, 1), 4)}
     params, rows = controller.params, controller.compiled(n, sim.sensors.angles)[-1]
     search, radius = guidance.search_settings(params), float(params[layers.PARAM.radius])
     tx, ty = GOAL
     seconds, searched = {"clearance grid": 0.0, "heuristic": 0.0, "search": 0.0}, 0
     running = np.flatnonzero(sim.active)[:64]
     for i in running:
-        points, count = layers.points_of(params, rows[i]), int(rows[i, layers.STATE.count])
+        points, count = row_blocks.points_of(params, rows[i]), int(rows[i, layers.STATE.count])
         x, y, theta = sim.pose[i]
         if guidance.line_free(points, count, x, y, tx, ty, radius + params[layers.PARAM.guide_room],
                               params[layers.PARAM.guide_direct]):
@@ -153,8 +163,7 @@ def plans(n: int, steps: int) -> dict:
                 seconds[name] += spent / 3
         searched += 1
     total = sum(seconds.values())
-    return {"plans_per_robot_step": round(planned / max(robot_steps, 1), 4),
-            "robots_needing_the_search": f"{searched} of {len(running)}",
+    return {**counts, "robots_needing_the_search": f"{searched} of {len(running)}",
             "ms_per_search_plan": round(1e3 * total / max(searched, 1), 2),
             "plan_share": {name: round(value / total, 3) if total else None for name, value in seconds.items()}}
 

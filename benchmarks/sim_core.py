@@ -204,6 +204,9 @@ def main(argv=None) -> None:
                         help="Python of a virtual environment with ir-sim installed (default: $IRSIM_PYTHON)")
     parser.add_argument("--setup-peers", action="store_true", help="create the IR-SIM environment if needed, use it")
     parser.add_argument("--peers-dir", type=Path, default=PEERS_DIR, help=f"where --setup-peers puts it ({PEERS_DIR})")
+    parser.add_argument("--also", metavar="JSON", action="append", default=[],
+                        help="the same controller built with these options too, timed beside it in the same run "
+                             "(e.g. '{\"guidance\": {\"guide_car_reuse\": 0}}'); repeatable")
     args = parser.parse_args(argv)
     irsim_python = setup_irsim(args.peers_dir) if args.setup_peers else args.irsim_python
     scenario = world_of_15()
@@ -211,6 +214,9 @@ def main(argv=None) -> None:
     controllers = {"constant": lambda: ConstantCommand(COMMAND[1], COMMAND[0])}
     if args.controller:
         controllers[args.controller] = lambda: make_controller(args.controller)
+        for text in args.also:
+            options = json.loads(text)
+            controllers[f"{args.controller} {text}"] = lambda options=options: make_controller(args.controller, **options)
     peers = {}
     if irsim_python:
         for name, beams, field in PEERS:

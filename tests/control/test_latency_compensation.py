@@ -97,9 +97,10 @@ def test_prediction_rolls_the_queued_commands_through_the_kinematics():
     the scan moved there reads a wall ahead nearer by the distance driven towards it."""
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.kernels import latency
-    from fuzzynav.kernels.layers import PARAM, STATE, fresh_state, queue_of
+    from fuzzynav.kernels.layers import PARAM, STATE, fresh_state
     from fuzzynav.kernels.motion import advance
     from fuzzynav.kernels.records import Reading, Robot
+    from fuzzynav.kernels.row_blocks import queue_of
     from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
     navigator = make_controller("fuzzy-5b").for_latency(0.3)

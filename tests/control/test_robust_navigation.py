@@ -73,11 +73,11 @@ def test_without_reverse_gear_there_is_no_recovery():
 
 
 def test_loop_detector_fires_on_a_circle_not_on_a_straight_run():
-    from fuzzynav.kernels import escape, layers
+    from fuzzynav.kernels import escape, layers, row_blocks
 
     params = make_controller("fuzzy-5b-rays").params
     state = layers.fresh_state(1, params)[0]
-    places = layers.places_of(params, state)
+    places = row_blocks.places_of(params, state)
     fired = [escape.circling(state, places, params, 0.1 * k, 5 + math.cos(0.05 * k), 5 + math.sin(0.05 * k), 10.0)
              for k in range(600)]
     assert any(fired) and not any(fired[:200])  # after the patience, back where it was

@@ -14,7 +14,7 @@ from fuzzynav.control.escape import FOLLOW, LOOP
 from fuzzynav.control.recovery import RECOVERY
 from fuzzynav.control.through_gaps import GUIDANCE, PACE
 from fuzzynav.errors import InputError
-from fuzzynav.kernels import layers, motion, step
+from fuzzynav.kernels import layers, motion, row_blocks, step
 
 LAYOUTS = [  # (module, the names of the array's fields)
     (step, step.STATE_FIELDS),
@@ -68,9 +68,10 @@ def test_pack_writes_each_record_by_name_and_leaves_a_layer_not_given_off():
 
 
 def test_a_fresh_state_row_holds_a_new_episodes_values_then_zeroed_blocks():
-    params = layers.pack(layers.Slots(places_slots=3, points_slots=4, cell_slots=8))
+    params = layers.pack(layers.Slots(places_slots=3, route_slots=5, points_slots=4, cell_slots=8))
     state = layers.fresh_state(2, params)
-    assert state.shape == (2, layers.PLACES_AT + 3 * 3 + 2 * 4 + 8)
+    assert state.shape == (2, layers.PLACES_AT + 3 * 3 + 4 * 5 + 2 * 4 + 8)
+    assert row_blocks.route_of(params, state[0]).shape == (5, 4) and row_blocks.points_of(params, state[0]).shape == (4, 2)
     np.testing.assert_array_equal(state[:, layers.PLACES_AT:], 0.0)
     assert math.isnan(state[1, layers.STATE.guide_x]) and state[0, layers.STATE.best] == math.inf
     assert state[0, layers.STATE.planned] == -math.inf and state[0, layers.STATE.phase] == layers.NO_PHASE

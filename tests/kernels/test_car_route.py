@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.kernels import car_route, guidance, layers
+from fuzzynav.kernels import car_route, guidance, layers, row_blocks
 from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
@@ -62,9 +62,11 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     backwards = primitives[1:] >= len(SEARCH.curvatures)
     assert backwards.any() and not backwards.all()  # a K-turn: backward and forward legs
     assert np.hypot(*(poses[-1, :2] - goal)) <= SEARCH.reach
-    leg = car_route.first_leg(Sightings(walls, len(walls)), Robot(*pose, 0.0, *goal), RADIUS, BODY, SEARCH,
-                              PARAMS[layers.PARAM.guide_car_ahead], PARAMS[layers.PARAM.guide_car_tight])
-    assert leg[0] and leg[1]  # found, and a manoeuvre the layer drives
+    route = np.column_stack([poses, primitives])
+    leg = car_route.leg(route, 0, len(route), Sightings(walls, len(walls)),
+                        SEARCH, BODY,
+                        PARAMS[layers.PARAM.guide_car_ahead], PARAMS[layers.PARAM.guide_car_tight])
+    assert leg[0]  # a manoeuvre the layer drives
 
 
 def test_every_pose_of_the_plan_keeps_the_clearance_asked():
@@ -149,3 +151,40 @@ def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
     assert row[layers.STATE.active] == (1.0 if starts else 0.0)
     assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
     assert row[layers.STATE.guide_gear] == 0.0 and row[layers.STATE.guide_planned] == 30.0  # planned again at once
+
+
+def test_a_kept_route_is_reused_until_a_newly_seen_point_lies_on_it_or_it_grows_old():
+    at, age = layers.STATE, PARAMS[layers.PARAM.guide_car_reuse]
+    assert age > 0.0  # the default reuses its car route
+    state = layers.fresh_state(1, PARAMS)[0]
+    posts = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])  # a wall to go round on its right
+    guidance.aim(state, PARAMS, Sightings(posts, len(posts)), Robot(0.0, 0.0, math.pi / 2, 0.0, 0.0, 10.0), 0.0, BODY)
+    assert state[at.guide_made] == 0.0 and state[at.guide_poses] > 10
+    route = row_blocks.route_of(PARAMS, state)[:int(state[at.guide_poses])].copy()
+    on = Robot(route[3, 0], route[3, 1], route[3, 2], 0.0, 0.0, 10.0)  # the robot drove along it
+    guidance.aim(state, PARAMS, Sightings(posts, len(posts)), on, 1.0, BODY)
+    assert state[at.guide_planned] == 1.0 and state[at.guide_made] == 0.0  # planned again, not searched again
+    assert state[at.guide_at] >= 3 and state[at.guide_gear] == 0.0
+    # nothing new, but the route older than guide_car_reuse: searched again
+    old = state.copy()
+    guidance.aim(old, PARAMS, Sightings(posts, len(posts)), on, age + 0.5, BODY)
+    assert old[at.guide_made] == age + 0.5
+    # a post newly seen on the rest of the route: the route is dropped and searched again, round it
+    post = route[8, :2]
+    seen = np.vstack([posts, post])
+    guidance.aim(state, PARAMS, Sightings(seen, len(seen)), on, 2.0, BODY)
+    assert state[at.guide_made] == 2.0
+    fresh = row_blocks.route_of(PARAMS, state)[:int(state[at.guide_poses])]
+    assert np.hypot(*(fresh[:, :2] - post).T).min() >= BODY - PARAMS[layers.PARAM.guide_car_cell] / math.sqrt(2)
+
+
+def test_a_robot_off_the_kept_route_or_with_another_target_searches_again():
+    at = layers.STATE
+    posts = np.array([(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)])
+    for moved in (Robot(-1.0, 0.0, math.pi / 2, 0.0, 0.0, 10.0), Robot(0.0, 0.0, math.pi / 2, 0.0, 1.0, 10.0),
+                  Robot(0.0, 0.0, 0.0, 0.0, 0.0, 10.0)):  # strayed, another target, turned away
+        state = layers.fresh_state(1, PARAMS)[0]
+        guidance.aim(state, PARAMS, Sightings(posts, len(posts)), Robot(0.0, 0.0, math.pi / 2, 0.0, 0.0, 10.0), 0.0,
+                     BODY)
+        guidance.aim(state, PARAMS, Sightings(posts, len(posts)), moved, 1.0, BODY)
+        assert state[at.guide_made] == 1.0, moved

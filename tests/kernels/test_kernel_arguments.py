@@ -67,7 +67,7 @@ def kernel_widths() -> dict[str, int]:
 def test_the_kernels_are_found():
     widths = kernel_widths()
     assert len(widths) > 100
-    assert widths["kernels/step.py:settle"] == 8 and widths["kernels/layers.py:places_of"] == 2
+    assert widths["kernels/step.py:settle"] == 8 and widths["kernels/row_blocks.py:places_of"] == 2
     assert widths["tune/episodes.py:run_jobs"] == 5 and widths["fuzzy/engine/centroid_rows.py:applies"] == 4
 
 

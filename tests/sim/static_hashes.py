@@ -18,7 +18,8 @@ RUNS = (
     ("example-goal", "dwa"), ("fig-IV-22a", "vfh"), ("example-path", "fuzzy-tracker"),
     ("example-target", "pure-pursuit"),
 )
-OPTIONS = {"fuzzy-5b": {"paced": False}}  # the default as it was recorded: without the pace, which came later
+# the default as it was recorded: without the pace and the plan reuse, which came later
+OPTIONS = {"fuzzy-5b": {"paced": False, "guidance": {"guide_car_reuse": 0.0}}}
 
 
 def trace_hash(scenario: str, controller: str) -> str:

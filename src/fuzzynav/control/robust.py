@@ -53,12 +53,13 @@ from fuzzynav.control.batched import readings
 from fuzzynav.control.escape import FOLLOW, LOOP
 from fuzzynav.control.recovery import RECOVERY, recovery_system
 from fuzzynav.errors import InputError
-from fuzzynav.kernels import layers
+from fuzzynav.kernels import layers, row_blocks
 from fuzzynav.kernels.motion import ROBOT_FIELDS
 from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
+ROUTE_SLOTS = 100  # poses of the car route kept for reuse (arcs of guide_car_step: 20 m at 0.2 m)
 
 
 class RobustNavigator(BatchController):
@@ -83,7 +84,8 @@ class RobustNavigator(BatchController):
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
-        records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, layers.Slots(places_slots=places))
+        slots = layers.Slots(places_slots=places, route_slots=ROUTE_SLOTS if guidance else 0)
+        records = (supervisor, RECOVERY, LOOP, FOLLOW, guidance, pace, slots)
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])
         self._latency = 0.0
@@ -210,7 +212,7 @@ def _grown(params: np.ndarray, rows: np.ndarray) -> np.ndarray:
 
     at = layers.PARAM
     slots = int(params[at.points_slots])
-    kept = layers.PLACES_AT + 3 * int(params[at.places_slots]) + 2 * (int(params[at.delay]) + slots)  # up to the cells
+    kept = row_blocks.points_at(params) + 2 * slots  # the state, places, queue, route and points
     params[[at.points_slots, at.cell_slots, at.grow]] = 2 * slots, _hash_size(2 * slots), 0.0
     wider = layers.fresh_state(len(rows), params)
     wider[:, :kept] = rows[:, :kept]

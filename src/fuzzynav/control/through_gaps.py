@@ -57,7 +57,8 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_headings=72, guide_car_weight=3.0, guide_car_comfort=0.3, guide_car_turn=0.1,
                     guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000, guide_car_reverse=2.0,
                     guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
-                    guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8)
+                    guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8,
+                    guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5)
 # the pace (units and meaning: kernels.layers.Pace)
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0)
 

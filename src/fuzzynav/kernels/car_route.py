@@ -17,9 +17,10 @@ free (the freespace assumption of D*, A. Stentz, ICRA 1994):
    clearance less ``SLACK`` when that is smaller (a robot already close to a post may still
    drive away from it), never less than the body's.
 
-:func:`plan` returns the plan's poses, :func:`first_leg` what the guidance needs of it: its first leg's gear, whether
-it is part of a manoeuvre (a K-turn), the point ``ahead`` m along it (or its end, the first
-cusp), the curvature of its first arc and how far the plan keeps that arc.
+:func:`plan` returns the plan's poses, :func:`leg` what the guidance needs of it from any of its
+poses on (the guidance keeps a plan and reuses it): the leg's gear, whether it is part of a
+manoeuvre (a K-turn), the point ``ahead`` m along it (or its end, the first cusp), the curvature
+of its first arc and how far the plan keeps that arc.
 """
 
 from __future__ import annotations
@@ -84,11 +85,18 @@ def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
 
 
 @jit
+def kept(seen, robot, radius, body):
+    """The radius :func:`plan` keeps (module docstring, 3.): ``radius``, or the robot's present
+    clearance from the points ``seen`` less ``SLACK`` when that is smaller, never below ``body``."""
+    return max(body, min(radius, sightings.clearance(seen.points, seen.count, robot.x, robot.y) - SLACK))
+
+
+@jit
 def frame(seen, robot, radius, body, cell):
-    """(radius kept, low x, low y, nx, ny) of :func:`plan`'s search: the radius of the module
-    docstring (3.) and the grid (1.) of ``cell`` m round the robot, its target and the points ``seen``."""
+    """(radius kept, low x, low y, nx, ny) of :func:`plan`'s search: the radius of :func:`kept`
+    and the grid (1.) of ``cell`` m round the robot, its target and the points ``seen``."""
     points, count, x, y, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.tx, robot.ty
-    radius = max(body, min(radius, sightings.clearance(points, count, x, y) - SLACK))
+    radius = kept(seen, robot, radius, body)
     low_x, low_y, high_x, high_y = min(x, tx), min(y, ty), max(x, tx), max(y, ty)
     for p in range(count):
         low_x, low_y = min(low_x, points[p, 0]), min(low_y, points[p, 1])
@@ -128,30 +136,30 @@ def plan(seen, robot, radius, body, search):
 
 
 @jit
-def first_leg(seen, robot, radius, body, search, ahead, tight):
-    """(found, manoeuvre, backwards, px, py, kappa, run) of the :func:`plan` (the same
-    arguments): ``found`` False when the search gives up; else ``backwards`` tells the first
-    leg's gear and ``manoeuvre`` whether it is part of a K-turn (backward, or forward to a cusp
-    less than ``ahead`` m away); (px, py) is the point ``ahead`` m along the first leg or its
-    end (the target when the robot is within reach), and ``kappa`` the curvature of the first
-    arc, which the plan keeps for ``run`` m."""
-    found, poses, primitives = plan(seen, robot, radius, body, search)
-    points, count, tx, ty, curvatures = seen.points, seen.count, robot.tx, robot.ty, search.curvatures
-    if not found or len(poses) == 1:
-        return found, False, False, tx, ty, 0.0, 0.0
+def leg(route, start, end, seen, search, body, ahead, tight):
+    """(manoeuvre, backwards, px, py, kappa, run) of the plan ``route`` (poses x, y, θ and the
+    primitive reaching each, a row each, as :func:`plan` gives them) from its pose ``start`` to
+    its pose ``end`` − 1, given at least two: ``backwards`` tells the first leg's gear and
+    ``manoeuvre`` whether it is part of a K-turn (backward, or forward to a cusp less than
+    ``ahead`` m away) or passes within ``body`` + ``tight`` of a point ``seen``; (px, py) is the
+    point ``ahead`` m along the first leg or its end, and ``kappa`` the curvature of the first
+    arc, which the plan keeps for ``run`` m (``search``: the :class:`~fuzzynav.kernels.records.CarSearch`
+    of the plan)."""
+    points, count, curvatures = seen.points, seen.count, search.curvatures
     kinds, step = len(curvatures), search.step
-    backwards = primitives[1] >= kinds
-    kappa = curvatures[primitives[1] % kinds]
+    first = int(route[start + 1, 3])
+    backwards = first >= kinds
+    kappa = curvatures[first % kinds]
     run, same, travelled, cusp, narrow = 0.0, True, 0.0, False, False
-    px, py = poses[1, 0], poses[1, 1]
-    for k in range(1, len(poses)):
-        if (primitives[k] >= kinds) != backwards:
+    px, py = route[start + 1, 0], route[start + 1, 1]
+    for k in range(start + 1, end):
+        if (route[k, 3] >= kinds) != backwards:
             cusp = True
             break
-        same = same and primitives[k] == primitives[1]
+        same = same and int(route[k, 3]) == first
         if same:
             run += step
         if travelled < ahead:
-            px, py, travelled = poses[k, 0], poses[k, 1], travelled + step
+            px, py, travelled = route[k, 0], route[k, 1], travelled + step
             narrow = narrow or sightings.clearance(points, count, px, py) < body + tight
-    return True, backwards or (cusp and travelled < ahead) or narrow, backwards, px, py, kappa, run
+    return backwards or (cusp and travelled < ahead) or narrow, backwards, px, py, kappa, run

@@ -5,7 +5,7 @@ A robot whose commands reach the wheels ``delay`` steps late (the scenario's
 ``robot.actuation.latency``, :mod:`fuzzynav.robot.imperfections`) applies the command decided
 now only after it has driven on the ``delay`` commands already on their way. The navigator
 remembers the commands it sent (a queue of ``delay`` slots in its layers' state row,
-:func:`fuzzynav.kernels.layers.queue_of`, zeros at the start as the robot's own queue), rolls them
+:func:`fuzzynav.kernels.row_blocks.queue_of`, zeros at the start as the robot's own queue), rolls them
 forward from the pose it is given through the stepping core's kinematics
 (:func:`fuzzynav.kernels.motion.advance`, the model :func:`fuzzynav.kernels.step.move` drives
 the robot with; the slip, rate limits and drift are not predicted) and decides at the predicted
@@ -19,9 +19,10 @@ import math
 import numpy as np
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels.layers import PARAM, STATE, queue_of
+from fuzzynav.kernels.layers import PARAM, STATE
 from fuzzynav.kernels.motion import ROBOT_FIELDS, advance, clip, wrap
 from fuzzynav.kernels.records import Reading, Robot
+from fuzzynav.kernels.row_blocks import queue_of
 
 
 @jit

@@ -15,9 +15,9 @@ argument costs time at each call):
 - ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (a new episode's values:
   :data:`NEW_EPISODE`), then the loop detector's ring buffer of sampled places (``places_slots`` ×
   (t, x, y)), the commands sent and not yet applied (``delay`` × (α, V), the latency
-  compensation's), the obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
-  (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :func:`places_of`,
-  :func:`points_of`, :func:`cells_of`.
+  compensation's), the car route kept for reuse (``route_slots`` × (x, y, θ, primitive)), the
+  obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
+  (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :mod:`fuzzynav.kernels.row_blocks`.
 
 The kernels read a field by name at its position, ``params[PARAM.v_back]``, ``row[STATE.phase]``:
 :data:`PARAM` and :data:`STATE` are named tuples of those positions, which numba reads as
@@ -33,8 +33,6 @@ from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
-
-from fuzzynav.jit import jit
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -196,6 +194,14 @@ class Guidance:
     """m: clearance beyond the radius below which the layer drives the arcs itself"""
     guide_car_speed: float
     """m/s: its forward speed then"""
+    guide_car_reuse: float = 0.0
+    """s: the longest a car route is kept and reused instead of searched again (0: searched at every plan)"""
+    guide_car_keep: float = 0.0
+    """m: room beyond the route's radius that a newly seen point must keep from the rest of a reused route"""
+    guide_car_stray: float = 0.0
+    """m: the robot's farthest from a reused route"""
+    guide_car_swerve: float = 0.0
+    """rad: its heading's farthest from the route's there"""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -236,12 +242,13 @@ class Latency:
 
 @dataclass(frozen=True, kw_only=True)
 class Slots:
-    """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots
-    (set by a step after which a robot could run out of them: the controller's ``compiled()``
-    then makes them larger before the next step)."""
+    """The sizes of the per-robot blocks of ``state``, and the flag asking for more point slots (set
+    by a step after which a robot could run out: the controller's ``compiled()`` then adds some)."""
 
     places_slots: float
     """the loop detector's sampled places"""
+    route_slots: float = 0.0
+    """the poses of the car route kept for reuse"""
     points_slots: float = 0.0
     """the obstacle points remembered"""
     cell_slots: float = 0.0
@@ -318,6 +325,22 @@ class RobotState:
     """m: the distance driven on it"""
     sent: float
     """the commands sent (the latency queue's next slot is ``sent % delay``)"""
+    guide_poses: float
+    """the poses of the car route kept (0: none)"""
+    guide_at: float
+    """the kept pose the robot was nearest at the last plan"""
+    guide_tx: float
+    """m: the target the kept route leads to"""
+    guide_ty: float
+    """m"""
+    guide_seen: float
+    """the remembered points the kept route has been checked against"""
+    guide_made: float
+    """s: when the kept route was searched"""
+    guide_keep: float
+    """m: the radius it keeps from the points"""
+    guide_whole: float
+    """1: the kept poses reach the route's end (0: the route was longer than the slots)"""
 
 
 # a new episode's state row: 0 but these (NaN: none yet)
@@ -355,39 +378,10 @@ def pack(*records) -> np.ndarray:
     return params
 
 
-@jit
-def places_of(params, row):
-    """The loop detector's ring buffer (places_slots, 3) in a robot's ``state`` row."""
-    size = int(params[PARAM.places_slots])
-    return row[PLACES_AT:PLACES_AT + 3 * size].reshape(size, 3)
-
-
-@jit
-def queue_of(params, row):
-    """The commands sent and not yet applied (delay, 2: α, V) in a robot's ``state`` row."""
-    at, size = PLACES_AT + 3 * int(params[PARAM.places_slots]), int(params[PARAM.delay])
-    return row[at:at + 2 * size].reshape(size, 2)
-
-
-@jit
-def points_of(params, row):
-    """The obstacle points (points_slots, 2) in a robot's ``state`` row (after the queue)."""
-    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay])
-    size = int(params[PARAM.points_slots])
-    return row[at:at + 2 * size].reshape(size, 2)
-
-
-@jit
-def cells_of(params, row):
-    """The hash set of the points' cells (cell_slots,) in a robot's ``state`` row."""
-    size = int(params[PARAM.cell_slots])
-    at = PLACES_AT + 3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay] + params[PARAM.points_slots])
-    return row[at:at + size]
-
-
 def fresh_state(n: int, params: np.ndarray) -> np.ndarray:
-    """The ``state`` of ``n`` robots at the start of an episode, sized by ``params``."""
-    blocks = (3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay])
+    """The ``state`` of ``n`` robots at the start of an episode, sized by ``params``
+    (:mod:`fuzzynav.kernels.row_blocks`: the blocks after the fields)."""
+    blocks = (3 * int(params[PARAM.places_slots]) + 2 * int(params[PARAM.delay]) + 4 * int(params[PARAM.route_slots])
               + 2 * int(params[PARAM.points_slots]) + int(params[PARAM.cell_slots]))
     state = np.zeros((n, PLACES_AT + blocks))
     state[:, :PLACES_AT] = _FRESH

@@ -15,9 +15,10 @@ import math
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import clearing, escape, guidance, latency, navigators, pace, recovery, sightings
-from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE, TABLES_AT, cells_of, places_of, points_of
+from fuzzynav.kernels.layers import NO_PHASE, PARAM, STATE, TABLES_AT
 from fuzzynav.kernels.motion import wrap
 from fuzzynav.kernels.records import Layers, Pose, Robot, Sightings
+from fuzzynav.kernels.row_blocks import cells_of, places_of, points_of
 
 
 @jit
