@@ -4,7 +4,7 @@ import numpy as np
 
 from fuzzynav.kernels.step import COLLISION, REACHED, TIMEOUT
 from fuzzynav.tune.episodes import N_OUT, OFF_BAND, OUTCOME, PATH, REMAINING, START_DISTANCE, STEPS, TOO_CLOSE
-from fuzzynav.tune.fitness import COLLISION_COST, episode_cost, wall_cost
+from fuzzynav.tune.fitness import COLLISION_COST, TIMEOUT_COST, episode_cost, wall_cost
 
 
 def _row(outcome, steps, remaining=0.0):
@@ -39,3 +39,14 @@ def test_wall_cost_ranks_distance_kept_then_any_lasted_episode_above_any_collisi
     cost = wall_cost(rows, np.full(7, 0.1), np.full(7, 30.0))
     assert list(np.argsort(cost)) == [0, 1, 2, 3, 4, 5, 6]
     assert cost[0] == 0.0 and cost[4] < COLLISION_COST <= cost[5]
+
+
+def test_a_creeping_wall_follower_costs_more_than_any_follower_at_speed_and_less_than_a_collision():
+    """A follower that lasts at a tenth of Table VI.2's slow speed P, inside the band, costs more
+    than one at speed that is too close or off the band the whole time, and less than a collision."""
+    rows = np.array([_wall_row(TIMEOUT, 300, path=0.2 * 300 * 0.1 * 0.6),
+                     _wall_row(TIMEOUT, 300, too_close=300, off_band=300.0, path=0.6 * 300 * 0.1 * 0.6),
+                     _wall_row(COLLISION, 299)])
+    slow_but_following, fast, crash = wall_cost(rows, np.full(3, 0.1), np.full(3, 30.0))
+    assert slow_but_following >= TIMEOUT_COST > fast
+    assert slow_but_following < COLLISION_COST <= crash

@@ -19,7 +19,10 @@ worse); an episode lasted costs the share of its steps closer to an obstacle tha
 −1), plus the mean distance (m, at most 1 per step) the body kept outside the band [d_m, d_s]
 (closer than d_m, or further than d_s: no longer following), plus the shortfall of its mean speed
 below Table VI.2's slow speed P (a follower that stops would otherwise keep its distance for
-free). Every part is below 1, so any lasted episode beats any collision.
+free). Every part is below 1. A follower that lasts below half of P (:data:`CREEP`) has not
+followed the wall: it pays :data:`TIMEOUT_COST` more, as a goal seeker's timeout does, so creeping
+along the wall can no longer buy the absence of collisions on a few courses; any lasted episode
+still beats any collision.
 
 The objectives of NSGA-II (:data:`OBJECTIVES`) are the failure rate, the mean time
 (the time limit for a failed episode) and minus the mean least clearance.
@@ -49,6 +52,7 @@ from fuzzynav.tune.episodes import (
 
 OBJECTIVES = ("success", "time", "clearance")
 TIMEOUT_COST, COLLISION_COST, INVALID_COST = 10.0, 20.0, 30.0
+CREEP = 0.5  # share of Table VI.2's slow speed P below which a lasted wall episode has not followed
 
 
 def episode_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.ndarray:
@@ -67,6 +71,7 @@ def wall_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.ndarr
     lasted = np.clip(out[:, STEPS] * dt / max_time, 0.0, 1.0)
     slow = np.clip(1.0 - out[:, PATH] / (steps * dt * WALL_V1), 0.0, 1.0)
     cost = out[:, TOO_CLOSE] / steps + out[:, OFF_BAND] / steps + slow
+    cost = np.where(slow > 1.0 - CREEP, TIMEOUT_COST + cost, cost)
     cost = np.where(outcome == COLLISION, COLLISION_COST + 1.0 - lasted, cost)
     return np.where(outcome == INVALID, INVALID_COST, cost)
 
