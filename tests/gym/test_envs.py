@@ -133,7 +133,7 @@ def test_worlds_from_a_named_scenario_a_family_and_a_layout():
 
 @pytest.mark.parametrize("options, field", [
     ({"task": "fly"}, "task"), ({"reward": "sparse"}, "reward"), ({"actions": "both"}, "actions"),
-    ({"max_steps": 0}, "max_steps"), ({"worlds": "forest"}, "worlds"), ({"scenario": "no-such-world"}, "SCENARIO"),
+    ({"max_steps": 0}, "max_steps"), ({"worlds": "swamp"}, "worlds"), ({"scenario": "no-such-world"}, "SCENARIO"),
 ])
 def test_bad_options_are_input_errors_naming_the_field(options, field):
     options = {"task": "goal", **options}
