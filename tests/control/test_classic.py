@@ -7,7 +7,7 @@ from fuzzynav.catalog.controllers import available, make_controller
 from fuzzynav.control.classic.astar_pp import PLANNERS, AStarPurePursuit
 from fuzzynav.errors import InputError
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.world.dead_ends import dead_end
+from fuzzynav.world.dead_ends import dead_end, dead_ends
 from fuzzynav.world.generate import generate_world
 from fuzzynav.world.scenario import scenario_from_dict
 from tests.world.test_hybrid_astar import bay
@@ -96,6 +96,21 @@ def test_astar_pp_backs_out_of_a_dead_end_it_starts_facing(width):
     assert (navigator.gear < 0).any() and any(label.endswith("-back") for label in trace.behaviour.tolist())
     assert trace.pose[20, 0] < trace.pose[0, 0]  # backing away from the closed end first
     assert metrics(trace, scenario)["min_clearance_m"] > 0
+
+
+@pytest.mark.parametrize("index", [7, 13, 20, 33])
+def test_astar_pp_plans_again_where_its_tracker_leaves_the_plan(index):
+    """Dead ends the tracker could not hold to the prepared plan (a full-lock U-turn cut wide:
+    worlds 13 and 33; off the path after a cusp: 7 and 20) and hit a wall on: it now plans again
+    from where it is, with backward arcs, and gets out to the goal."""
+    scenario = dead_ends(index + 1, 0)[index]
+    navigator = AStarPurePursuit()
+    trace = run_episode(scenario, navigator, seed=0)
+    assert trace.outcome == "reached" and navigator.replans >= 1
+    assert any(label.endswith("-back") for label in trace.behaviour.tolist())
+    assert metrics(trace, scenario)["min_clearance_m"] > 0
+    navigator.reset()  # a new episode starts from the prepared plan again
+    assert navigator.replans == 0 and navigator.path is navigator._prepared[0]
 
 
 def test_astar_pp_keeps_forward_plans_where_they_exist():

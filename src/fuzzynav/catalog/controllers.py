@@ -129,8 +129,9 @@ register_controller(ControllerSpec(
     "Borenstein & Koren 1991; Ulrich & Borenstein 1998", GOAL, "lidar"))
 register_controller(ControllerSpec(
     "astar-pp", "fuzzynav.control.classic.astar_pp:make",
-    "MAP-AWARE reference: hybrid A* on the inflated map + pure pursuit (knows the whole map)",
-    "Dolgov et al. 2008; Coulter 1992", GOAL, needs_map=True))
+    "MAP-AWARE reference: hybrid A* on the inflated map (backward arcs where no forward path exists) + pure "
+    "pursuit, planning again from its pose when it leaves the plan (knows the whole map); version 1 planned once",
+    "Dolgov et al. 2008; Coulter 1992; Kuwata et al. 2009", GOAL, needs_map=True, version=2))
 
 
 def available() -> dict[str, str]:

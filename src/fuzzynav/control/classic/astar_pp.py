@@ -34,6 +34,15 @@ Grand Challenge*, J. Field Robotics 2006) with the path's curvature fed forward:
 gear · (heading error) − atan(k · cross-track offset / (V + 0.1)), at most ``reverse_speed``
 backwards, slowing into a cusp; its arc is checked as above (behind the robot when backing). The
 last leg, forward to the goal, is driven by pure pursuit as a forward path is.
+
+When the tracker cannot hold the plan — no checked arc is clear, or the robot is more than
+``ASTRAY`` from its projection on the path (a full-lock turn cut wide, a leg begun off the path
+after a cusp) — hybrid A* plans again from the robot's pose with backward arcs (the ``BACKING``
+tries above, which leave the tracker a share of the steering), and the new path is tracked from
+its start; at most ``REPLANS`` times an episode (replanning in the loop, as the local planners of
+Kuwata et al., *Real-time motion planning with applications to autonomous urban driving*, IEEE
+Trans. Control Syst. Technol. 17(5), 2009). Where hybrid A* finds nothing from there, the plan
+is kept. A new episode (:meth:`reset`) starts from the prepared plan.
 """
 
 from __future__ import annotations
@@ -61,6 +70,8 @@ STANLEY_GAIN = 1.0  # 1/s: the cross-track gain of the Stanley law on paths with
 BACKING = {"reverse": 2.0, "gear": 5.0}  # hybrid A*'s backward arcs, when no forward path exists: few cusps
 BACKING_ROOM = 0.1  # m more room tried first with backward arcs (the legs are tracked less closely)
 BACKING_LOCK = 0.8  # share of the steering limit planned with backward arcs (the tracker keeps the rest)
+REPLANS = 4  # replans from the robot's pose per episode at most
+ASTRAY = 0.2  # m from the path beyond which the tracker plans again
 
 
 def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
@@ -76,19 +87,22 @@ def _plan(scenario, body: Body, inflation: float, search: Search, hybrid: bool):
     return _PLANS[key]
 
 
-def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bool = True):
+def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bool = True, start=None,
+              careful: bool = False):
     """Uncached (planner, points, curvature, gear, heading) of :func:`_plan`: hybrid A* (unless ``hybrid``
     is False) with forward arcs, then with backward arcs too, else grid A*; each on the map
     inflated by the body + ``inflation``, then by the body + 2 cm (with backward arcs, first by
-    ``BACKING_ROOM`` more, and planned at ``BACKING_LOCK`` of the steering limit)."""
+    ``BACKING_ROOM`` more, and planned at ``BACKING_LOCK`` of the steering limit); from the
+    pose ``start`` (default: the scenario's). ``careful``: the tries with backward arcs only (a replan)."""
     goal = scenario.goal.position
+    start = scenario.start if start is None else np.asarray(start, dtype=float)
     reach = Search(**{**search.__dict__, "reach": min(search.reach, scenario.goal.tolerance)})
     radii = (body.radius + inflation, body.radius + 0.02)
     backing = Search(**{**reach.__dict__, **BACKING})
-    tries = [(reach, radius, body.max_steering) for radius in radii]
+    tries = [] if careful else [(reach, radius, body.max_steering) for radius in radii]
     tries += [(backing, radius, BACKING_LOCK * body.max_steering) for radius in (radii[0] + BACKING_ROOM, *radii)]
     for setting, radius, lock in tries if hybrid else ():
-        plan = hybrid_astar(scenario.world, scenario.start, goal, Car(radius, body.wheelbase, lock), setting)
+        plan = hybrid_astar(scenario.world, start, goal, Car(radius, body.wheelbase, lock), setting)
         if plan is not None:
             tail = _densify(np.array([plan.poses[-1, :2], goal]), SPACING)[1:]  # on to the goal itself
             points, curvature = np.vstack([plan.poses[:, :2], tail]), np.append(plan.curvature, np.zeros(len(tail)))
@@ -98,7 +112,7 @@ def plan_path(scenario, body: Body, inflation: float, search: Search, hybrid: bo
             return ("hybrid-A*", points, curvature, np.append(plan.gear, np.ones(len(tail))),
                     np.append(plan.poses[:, 2], np.full(len(tail), last)))
     for radius in radii:
-        path = shortest_path(scenario.world, scenario.start, goal, radius, weight=search.weight,
+        path = shortest_path(scenario.world, start, goal, radius, weight=search.weight,
                              comfort=search.comfort)
         if path is not None:
             points = _densify(path, SPACING)
@@ -140,21 +154,30 @@ class AStarPurePursuit(Controller):
         self.reverse_speed = positive(reverse_speed, field="reverse_speed")
         self.hybrid = planner == "hybrid"
         self.steering = np.linspace(-max_steering, max_steering, 15)
-        self.world = None
+        self.world = self.scenario = None
         self.planner, self.path, self.curvature, self.gear, self.heading = "none", None, None, None, None
-        self._index = self._end = 0
+        self._prepared: tuple = (None, None, None, None)
+        self._index = self._end = self.replans = 0
 
     def prepare(self, scenario) -> None:
         """Plan on ``scenario``'s map (goal tasks; other tasks are not planned for)."""
-        self.world = scenario.world
+        self.world, self.scenario = scenario.world, scenario
         self.planner, self.path, self.curvature, self.gear, self.heading = "none", None, None, None, None
         if scenario.goal is not None:
             self.planner, self.path, self.curvature, self.gear, self.heading = _plan(
                 scenario, self.body, self.inflation, self.search, self.hybrid)
             PLANNERS[self.planner] += 1
+        self._prepared = (self.path, self.curvature, self.gear, self.heading)
         self.reset()
 
     def reset(self, rng=None) -> None:
+        """Back to the prepared plan (an episode's replans are forgotten)."""
+        self.path, self.curvature, self.gear, self.heading = self._prepared
+        self.replans = 0
+        self._follow()
+
+    def _follow(self) -> None:
+        """Track the present path from its start."""
         self._index = 0
         self._end = self._leg_end(0)
 
@@ -168,6 +191,29 @@ class AStarPurePursuit(Controller):
     def act(self, obs) -> Command:
         if self.path is None:
             return Command(0.0, 0.0, "A*-no-path")
+        command = self._track(obs)
+        if self.replans < REPLANS and self.hybrid and (command.behaviour.endswith("-check") or self._astray(obs)):
+            if self._replan(obs.pose):
+                return self._track(obs)
+        return command
+
+    def _astray(self, obs) -> bool:
+        """Is the robot farther than ``ASTRAY`` from its projection on the path?"""
+        return math.hypot(*(self.path[self._index] - np.asarray(obs.pose[:2], dtype=float))) > ASTRAY
+
+    def _replan(self, pose) -> bool:
+        """Plan again from ``pose`` with backward arcs (module docstring); False, the plan kept, without a hybrid A* path."""
+        planner, path, curvature, gear, heading = plan_path(self.scenario, self.body, self.inflation, self.search,
+                                                            start=np.asarray(pose, dtype=float), careful=True)
+        if planner != "hybrid-A*":
+            return False
+        self.path, self.curvature, self.gear, self.heading = path, curvature, gear, heading
+        self.replans += 1
+        self._follow()
+        return True
+
+    def _track(self, obs) -> Command:
+        """The tracker's command on the present path (module docstring)."""
         xy = np.asarray(obs.pose[:2], dtype=float)
         if self.heading is not None:
             self._next_leg(xy)
