@@ -38,7 +38,13 @@ episode, β = 1/(1 + visits) floored); ``--schedule per-state`` lets each state'
 state's own visits, ε_s = max(0.02, 0.3 · 0.99^visits_s), the same β — exploration that lasts
 longer in a table of more states. Prints one JSON line per size, then Spearman's ρ.
 
+``fixed-start SEED``: Fig VI.1's tabular learner from the fixed start (13 states × 3, 1,500
+single episodes) with fuzzy Q-learning's schedule (``--schedule fql``, the default: what
+``fuzzynav reproduce fig-VI-8`` now trains beside FQL) or ``per-state``. Prints its episodes to
+converge as JSON.
+
     python benchmarks/chapter6_probes.py relative fig-VI-13 out-0 out-1 out-2 out-3 out-4
+    python benchmarks/chapter6_probes.py fixed-start 0 --out probe/
     python benchmarks/chapter6_probes.py table-vi-1 0 --schedule per-state --episodes 3000 --out probe/
 """
 
@@ -57,9 +63,8 @@ from fuzzynav.experiments.chapter6 import rank_correlation
 from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
 from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
 from fuzzynav.experiments.rule_bases import controller as named_controller
-from fuzzynav.learn.exploration import EpsilonGreedy, greedy_choice
+from fuzzynav.learn.exploration import greedy_choice
 from fuzzynav.learn.extraction import rule_table
-from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.learn.tabular import TabularLearner
 from fuzzynav.learn.tasks import tabular_goal
 from fuzzynav.learn.tasks.common import STEERING3, THESIS, Phase, TrainRequest, checkpoint_path, run_phases
@@ -203,18 +208,32 @@ def table_vi_1(seed: int, schedule: str, episodes: int, out: Path) -> dict:
     rows = []
     for n_states, n_actions in ((9, 3), (11, 3), (13, 3), (19, 5)):
         model = out / f"table-vi-1-{schedule}-{n_states}x{n_actions}-{seed}.json"
-        request = TrainRequest(out=model, task="q-goal", episodes=episodes, seed=seed, progress=False)
-        env, _, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, batch=1)
-        kind = PerStateEpsilon if schedule == "per-state" else TabularLearner
-        learner = kind(disc.n_states, len(steering), gamma=THESIS["gamma"],
-                       alpha=InverseVisits(1.0, 1.0, THESIS["rate_floor"]),
-                       policy=EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"])))
-        result, _ = run_phases([Phase("steering", env, learner, episodes, checkpoint_path(model, "steering"))], request)
-        converged = result["steering"]["converged_at"]
         rows.append({"states": n_states, "actions": n_actions, "episodes": episodes,
-                     "episodes_to_converge": converged if converged <= episodes else None})
+                     "episodes_to_converge": _tabular_run(model, seed, schedule, episodes, n_states, n_actions)})
         print(json.dumps({"seed": seed, "schedule": schedule, **rows[-1]}), flush=True)
     return {"seed": seed, "schedule": schedule, "rank_correlation": rank_correlation(rows)}
+
+
+def _tabular_run(model: Path, seed: int, schedule: str, episodes: int, n_states: int = 13, n_actions: int = 3,
+                 fixed: bool = False) -> int | None:
+    """Episodes to converge of one tabular learner (one robot) under ``schedule``; None: not within
+    ``episodes``."""
+    request = TrainRequest(out=model, task="q-goal", episodes=episodes, seed=seed, progress=False)
+    env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed, batch=1, schedule="fql")
+    if schedule == "per-state":
+        learner = PerStateEpsilon(disc.n_states, len(steering), gamma=THESIS["gamma"], alpha=learner.alpha,
+                                  policy=learner.policy)
+    result, _ = run_phases([Phase("steering", env, learner, episodes, checkpoint_path(model, "steering"))], request)
+    converged = result["steering"]["converged_at"]
+    return converged if converged <= episodes else None
+
+
+def fixed_start(seed: int, schedule: str, episodes: int, out: Path) -> dict:
+    """Fig VI.1's tabular learner (13 states × 3, the fixed start of ``fuzzynav reproduce fig-VI-8``)
+    under ``schedule`` instead of its own."""
+    model = out / f"fixed-start-{schedule}-{seed}.json"
+    return {"seed": seed, "schedule": schedule, "episodes": episodes,
+            "episodes_to_converge": _tabular_run(model, seed, schedule, episodes, fixed=True)}
 
 
 def main() -> None:
@@ -236,10 +255,16 @@ def main() -> None:
     table.add_argument("--schedule", choices=("fql", "per-state"), default="per-state")
     table.add_argument("--episodes", type=int, default=3000, help="single episodes per size")
     table.add_argument("--out", default=".", help="folder of the models and checkpoints")
+    fixed = sub.add_parser("fixed-start")
+    fixed.add_argument("seed", type=int)
+    fixed.add_argument("--schedule", choices=("fql", "per-state"), default="fql")
+    fixed.add_argument("--episodes", type=int, default=1500, help="single episodes (fig-VI-8's tabular budget)")
+    fixed.add_argument("--out", default=".", help="folder of the model and checkpoint")
     args = parser.parse_args()
-    if args.probe == "table-vi-1":
+    if args.probe in ("table-vi-1", "fixed-start"):
         Path(args.out).mkdir(parents=True, exist_ok=True)
-        print(json.dumps(table_vi_1(args.seed, args.schedule, args.episodes, Path(args.out))))
+        probe = table_vi_1 if args.probe == "table-vi-1" else fixed_start
+        print(json.dumps(probe(args.seed, args.schedule, args.episodes, Path(args.out))))
     elif args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
     elif args.probe == "wall-collisions":

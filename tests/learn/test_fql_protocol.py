@@ -9,11 +9,12 @@ import pytest
 
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.cli import main
+from fuzzynav.errors import InputError
 from fuzzynav.experiments.chapter6 import initial_avoider
 from fuzzynav.experiments.evaluation import evaluate_avoid
 from fuzzynav.learn.envs import GridPremise
 from fuzzynav.learn.schedules import InverseVisits
-from fuzzynav.learn.tasks import common, fql_avoid
+from fuzzynav.learn.tasks import common, fql_avoid, tabular_goal
 from fuzzynav.learn.tasks.common import TrainRequest
 
 
@@ -71,3 +72,18 @@ def test_parallel_is_the_batch_learner_and_its_model_says_so(tmp_path):
     assert training["protocol"] == "parallel" and training["robots_per_batch"] == 10
     checkpoint = json.loads(common.checkpoint_path(out, "steering").read_text())
     assert checkpoint["extra"]["batch"] == 10 and len(checkpoint["curve"]["success"]) == 3  # 30 episodes: 3 batches
+
+
+def test_fig_vi_8s_tabular_learner_explores_and_learns_as_fql_does():
+    """Fig VI.8 against Fig VI.1: with ``schedule="fql"`` the tabular learner's ε and β are FQL's
+    under the thesis' protocol, not its own faster-decaying ones; a bad schedule is refused."""
+    alpha, policy = common.thesis_schedules()
+    _, tabular, _, _ = tabular_goal.q_goal_parts(fixed=True, batch=1, schedule="fql")
+    _, own, _, _ = tabular_goal.q_goal_parts(fixed=True, batch=1)
+    episodes = np.array([0, 100, 500, 2000])
+    assert np.array_equal(tabular.policy.epsilon(episodes), policy.epsilon(episodes))
+    assert tabular.alpha == alpha
+    assert not np.array_equal(own.policy.epsilon(episodes), policy.epsilon(episodes))
+    assert own.alpha != alpha
+    with pytest.raises(InputError, match="schedule"):
+        tabular_goal.q_goal_parts(schedule="fast")

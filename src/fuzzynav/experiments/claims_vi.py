@@ -41,7 +41,7 @@ def _slower(name: str, slow: tuple, fast: tuple) -> Check:
 # The relative claims of §VI.5.1.1: per id, its name and the (converged_at, budget) of the arm the
 # thesis says is slower, then of the faster one, read from the id's numbers.
 RELATIVE = {
-    "fig-VI-8": ("tabular Q-learning (Fig VI.1) slower than FQL from the same start",
+    "fig-VI-8": ("tabular Q-learning (Fig VI.1) slower than FQL from the same start, same ε and β",
                  lambda n: (n["q_learning"]["converged_at"], n["q_learning"]["episodes"]),
                  lambda n: (n["converged_at"]["steering"], n["episodes"]["steering"])),
     "fig-VI-13": ("35 rules × 5 slower than 15 rules × 3 (steering)",

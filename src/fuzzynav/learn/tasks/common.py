@@ -332,6 +332,11 @@ def extraction_tolerance(batch: int, parallel_tolerance: float) -> float:
     return THESIS["tolerance"] if thesis_protocol(batch) else parallel_tolerance
 
 
+def thesis_schedules() -> tuple[InverseVisits, EpsilonGreedy]:
+    """(β, ε-greedy policy) of the thesis' protocol (:data:`THESIS`), for every learner that follows it."""
+    return InverseVisits(1.0, 1.0, THESIS["rate_floor"]), EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
+
+
 def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
     """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
 
@@ -340,8 +345,7 @@ def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior
     the B parallel corrections stay small (``alpha`` replaces it when given), ε decaying
     0.3 → 0.02 (× 0.85 per batch)."""
     if thesis_protocol(batch):
-        alpha = InverseVisits(1.0, 1.0, THESIS["rate_floor"])
-        policy = EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
+        alpha, policy = thesis_schedules()
     else:
         alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
         policy = EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02))

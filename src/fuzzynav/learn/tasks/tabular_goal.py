@@ -30,6 +30,7 @@ from fuzzynav.learn.tasks.common import (
     robots,
     run_phases,
     summarise,
+    thesis_schedules,
 )
 
 Q_STEERING = (0.0, -ALPHA_MAX, ALPHA_MAX)  # forward (α1), right (α2), left (α3)
@@ -48,7 +49,8 @@ def q_discretiser(n_states: int = 13) -> ZoneSectorDiscretiser:
     return ZoneSectorDiscretiser([1.0, 4.0], sectors[n_states], merge_inner=True)
 
 
-def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int | None = None):
+def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, batch: int | None = None,
+                 schedule: str = "own"):
     """(env, learner, discretiser, steering values) of tabular goal seeking (§VI.2, Table VI.1).
 
     ``batch`` robots per batch (1: the thesis' one robot; default the parallel learner's
@@ -57,7 +59,11 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
     whatever ``batch``) with random starts; from the fixed start of Fig VI.1
     to 0 (:data:`FIXED_EPSILON_FLOOR`, "greedy in the limit"): there the episodes differ only by
     exploration, and a floor of 0.02 keeps the greedy route flipping between near-equal routes
-    (docs/training.md, "Tabular goal seeking")."""
+    (docs/training.md, "Tabular goal seeking"). ``schedule="fql"``: fuzzy Q-learning's ε and β of
+    the thesis' protocol (:data:`~fuzzynav.learn.tasks.common.THESIS`) instead, so that a
+    comparison with FQL (Fig VI.8 against Fig VI.1) differs in the representation only."""
+    if schedule not in ("own", "fql"):
+        raise InputError(f"a tabular schedule is 'own' or 'fql', got {schedule!r}", field="schedule")
     batch = batch_size(fixed) if batch is None else batch
     disc = q_discretiser(n_states)
     steering = Q_STEERING if n_actions == 3 else tuple(STEERING_SINGLETONS[label] for label in ("Z", "NM", "PM", "NG", "PG"))
@@ -65,9 +71,13 @@ def q_goal_parts(n_states: int = 13, n_actions: int = 3, fixed: bool = False, ba
     env = RobotEnv(FixedGoal() if fixed else RandomGoal(), lambda s: disc(s.goal[:, 0], s.goal[:, 1]),
                    lambda a, s: (actions[a], Q_SPEED), GoalSteeringReward(), batch=batch, max_steps=500,
                    tolerance=GOAL_TOLERANCE)
-    learner = TabularLearner(disc.n_states, len(steering), gamma=0.9, alpha=InverseVisits(1.0, 0.8, 0.01),
-                             policy=EpsilonGreedy(ExponentialDecay(0.3, 0.9 ** (batch / batch_size(fixed)),
-                                                                   FIXED_EPSILON_FLOOR if fixed else 0.02)))
+    if schedule == "fql":
+        alpha, policy = thesis_schedules()
+    else:
+        alpha = InverseVisits(1.0, 0.8, 0.01)
+        policy = EpsilonGreedy(ExponentialDecay(0.3, 0.9 ** (batch / batch_size(fixed)),
+                                                FIXED_EPSILON_FLOOR if fixed else 0.02))
+    learner = TabularLearner(disc.n_states, len(steering), gamma=0.9, alpha=alpha, policy=policy)
     return env, learner, disc, steering
 
 
