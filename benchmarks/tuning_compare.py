@@ -4,6 +4,7 @@ printing the tables and the rule grids of docs/tuning.md::
 
     python benchmarks/tuning_compare.py --tasks avoid goal --seeds 5 --episodes 3000 --out tuning_compare
     python benchmarks/tuning_compare.py --tasks wall --first-seed 2 --seeds 1 --episodes 1000 --out wall-2
+    python benchmarks/tuning_compare.py --tasks wall --first-seed 2 --seeds 1 --methods fql --out wall-fql-2
     python benchmarks/tuning_compare.py --table wall-0.json wall-1.json ...   # one table of several runs
 
 writes ``OUT.json`` (every seed's numbers; the tuned files and FQL models in ``OUT/``). ``--table``
@@ -18,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav.experiments.tuning import TASKS, cmp_vi_tuning
+from fuzzynav.experiments.tuning import METHODS, TASKS, cmp_vi_tuning
 
 
 def _per_seed(values, fmt: str) -> str:
@@ -86,6 +87,8 @@ def main() -> None:
     parser.add_argument("--seeds", type=int, default=5, help="how many seeds (default 5)")
     parser.add_argument("--first-seed", type=int, default=0, help="the first seed (default 0)")
     parser.add_argument("--episodes", type=int, default=3000)
+    parser.add_argument("--methods", nargs="+", default=list(METHODS), choices=list(METHODS),
+                        help="the methods to run (default all; the hand-made row always)")
     parser.add_argument("--out", default="tuning_compare")
     parser.add_argument("--table", nargs="+", metavar="JSON", help="print the tables of earlier OUT.json files")
     args = parser.parse_args()
@@ -95,7 +98,7 @@ def main() -> None:
     if args.seeds < 1 or args.episodes < 1 or args.first_seed < 0:
         parser.error("--seeds and --episodes must be >= 1, --first-seed >= 0")
     results = cmp_vi_tuning(args.out, tasks=args.tasks, seed=args.first_seed, seeds=args.seeds,
-                            episodes=args.episodes)["tasks"]
+                            episodes=args.episodes, methods=args.methods)["tasks"]
     Path(f"{args.out}.json").write_text(json.dumps(results, indent=1, default=str))
     print(table(results))
     for name, task in results.items():
