@@ -110,18 +110,19 @@ def held_out(scenarios, build) -> dict:
 
 def held_out_wall(scenarios, system) -> dict:
     """A wall-follower rule base (Table VI.2's inputs and outputs) on ``scenarios`` by the tuner's
-    compiled loop (the simulator's own step, checked against it in the tests): lasted share,
-    collisions and the wall measures of :func:`fuzzynav.tune.fitness.summary`."""
+    compiled loop (the simulator's own step, checked against it in the tests): success — the
+    share followed (lasted without collision at a mean speed of at least half of P) — the share
+    lasted, collisions and the wall measures of :func:`fuzzynav.tune.fitness.summary`."""
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.tune.fitness import Fitness
 
     fitness = Fitness(make_controller("wall-follow"), "wall", None, scenarios, wall=True)
     jobs = np.column_stack([np.zeros(len(scenarios), dtype=np.int64), np.arange(len(scenarios))])
     numbers = fitness.summary(fitness.worlds.run(fitness.tables(system)[None], jobs))
-    return {"success": numbers["success_rate"], **numbers}
+    return {"success": numbers["followed_rate"], "lasted": numbers["success_rate"], **numbers}
 
 
-def _suite(spec: str, work: Path) -> tuple[str, list]:
+def task_suite(spec: str, work: Path) -> tuple[str, list]:
     """(the SUITE argument, its scenarios) of a task's worlds (the empty ones written under ``work``)."""
     from fuzzynav.bench.suites import parse_suite
 
@@ -148,8 +149,8 @@ def run_task(name: str, seeds, episodes: int, out: Path, methods=METHODS) -> dic
     task = TASKS[name]
     controller, role = task["target"].split(":")
     replaced, start = starts(controller, role)
-    worlds, _ = _suite(task["train"], out)
-    holdout_spec, holdout = _suite(task["holdout"], out)
+    worlds, _ = task_suite(task["train"], out)
+    holdout_spec, holdout = task_suite(task["holdout"], out)
     wall = name == "wall"
     if wall:
         rows = {"hand-made": [held_out_wall(holdout, start)]}

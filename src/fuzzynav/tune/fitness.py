@@ -139,11 +139,16 @@ def summary(out: np.ndarray, dt: np.ndarray, wall: bool = False) -> dict:
     """Success / collision / timeout rates, mean time to the goal and least clearance of one
     candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports). ``wall``: success
     is lasting the episode without collision, and the wall-following measures are added: the
-    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m) and the mean speed (m/s)."""
+    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m), the mean speed (m/s)
+    and the share followed: lasted at a mean speed of at least :data:`CREEP` × P (a lasted episode
+    below it is the failure :func:`wall_cost` prices as a collision)."""
     outcome = out[:, OUTCOME]
     if wall:
         steps = out[:, STEPS].sum()
+        speed = out[:, PATH] / (np.maximum(out[:, STEPS], 1.0) * dt)
+        followed = (outcome != COLLISION) & (outcome != INVALID) & (speed >= CREEP * WALL_V1)
         return {"worlds": int(len(out)), "success_rate": float((outcome != COLLISION).mean()),
+                "followed_rate": float(followed.mean()),
                 "collision_rate": float((outcome == COLLISION).mean()), "collisions": int((outcome == COLLISION).sum()),
                 "too_close_share": float(out[:, TOO_CLOSE].sum() / steps), "off_band_m": float(out[:, OFF_BAND].sum() / steps),
                 "mean_speed_mps": float(out[:, PATH].sum() / (out[:, STEPS] * dt).sum()),
