@@ -5,7 +5,7 @@ import pytest
 
 from fuzzynav.kernels.step import COLLISION, REACHED, TIMEOUT
 from fuzzynav.tune.episodes import N_OUT, OFF_BAND, OUTCOME, PATH, REMAINING, START_DISTANCE, STEPS, TOO_CLOSE
-from fuzzynav.tune.fitness import COLLISION_COST, TIMEOUT_COST, episode_cost, wall_cost
+from fuzzynav.tune.fitness import COLLISION_COST, TIMEOUT_COST, episode_cost, summary, wall_cost
 
 
 def _row(outcome, steps, remaining=0.0):
@@ -55,3 +55,12 @@ def test_a_creeping_wall_follower_fails_as_a_collision_does():
     creep, fast, crash_at_a_fifth, stopped, crash_at_once = wall_cost(rows, np.full(5, 0.1), np.full(5, 30.0))
     assert fast < TIMEOUT_COST < COLLISION_COST <= creep
     assert creep == pytest.approx(crash_at_a_fifth) and stopped == pytest.approx(crash_at_once)
+
+
+def test_a_course_crept_along_is_lasted_but_not_followed():
+    """The wall summary's share followed leaves out a course lasted below half of P (the failure
+    the cost prices as a collision); the share lasted counts it."""
+    rows = np.array([_wall_row(TIMEOUT, 300, path=0.6 * 300 * 0.1), _wall_row(TIMEOUT, 300, path=0.1 * 300 * 0.1),
+                     _wall_row(COLLISION, 100)])
+    numbers = summary(rows, np.full(3, 0.1), wall=True)
+    assert numbers["success_rate"] == pytest.approx(2 / 3) and numbers["followed_rate"] == pytest.approx(1 / 3)
