@@ -43,9 +43,9 @@ def test_a_short_comparison_gives_every_method_its_held_out_numbers_and_checks(t
     assert verdict in ("reproduced", "partly", "not reproduced")
 
 
-def _wall_numbers(fql_collisions, ga_speed=0.6):
-    seed = {"success": 0.6, "collisions": 16, "mean_speed_mps": ga_speed}
-    rows = {"hand-made": [{"success": 0.5, "collisions": 20, "mean_speed_mps": 0.66}], "ga": [seed, seed],
+def _wall_numbers(fql_collisions, ga_speeds=(0.6, 0.6)):
+    rows = {"hand-made": [{"success": 0.5, "collisions": 20, "mean_speed_mps": 0.66}],
+            "ga": [{"success": 0.6, "collisions": 16, "mean_speed_mps": speed} for speed in ga_speeds],
             "fql": [{"success": 0.7, "collisions": fql_collisions, "mean_speed_mps": 0.5},
                     {"success": 0.7, "collisions": 12, "mean_speed_mps": 0.5}]}
     return {"tasks": {"wall": {"rows": rows}}}
@@ -61,9 +61,22 @@ def test_the_claim_fails_a_method_that_collides_more_than_the_hand_made_wall_fol
 
 
 def test_the_claim_fails_a_wall_follower_that_lasts_by_creeping():
-    verdict, checks = spec("cmp-VI-tuning").claim.evaluate(_wall_numbers(fql_collisions=12, ga_speed=0.07))
+    verdict, checks = spec("cmp-VI-tuning").claim.evaluate(_wall_numbers(fql_collisions=12, ga_speeds=(0.07, 0.07)))
     assert verdict == "partly"
-    assert [c.name for c in checks if not c.passed] == ["wall, ga: held-out mean speed, m/s (mean of 2 seeds)"]
+    assert [c.name for c in checks if not c.passed] == ["wall, ga: held-out mean speed, m/s (slowest of 2 seeds)"]
+
+
+def test_the_claim_fails_a_wall_follower_that_creeps_on_one_seed_only():
+    """ACO's seeds of the 1,000-episode table (0.54, 0.07, 0.54, 0.54, 0.65 m/s) average 0.47 m/s,
+    above half of the hand-made 0.66; the creeping seed still fails the method."""
+    claim = spec("cmp-VI-tuning").claim
+    speeds = (0.54, 0.07, 0.54, 0.54, 0.65)
+    assert sum(speeds) / len(speeds) >= 0.5 * 0.66
+    verdict, checks = claim.evaluate(_wall_numbers(fql_collisions=12, ga_speeds=speeds))
+    assert verdict == "partly"
+    failed = [c for c in checks if not c.passed]
+    assert [c.name for c in failed] == ["wall, ga: held-out mean speed, m/s (slowest of 5 seeds)"]
+    assert failed[0].value == 0.07
 
 
 @pytest.mark.slow

@@ -1,10 +1,11 @@
 """The cost of an episode ranks success first, then time, and a collision below any timeout."""
 
 import numpy as np
+import pytest
 
 from fuzzynav.kernels.step import COLLISION, REACHED, TIMEOUT
 from fuzzynav.tune.episodes import N_OUT, OFF_BAND, OUTCOME, PATH, REMAINING, START_DISTANCE, STEPS, TOO_CLOSE
-from fuzzynav.tune.fitness import COLLISION_COST, TIMEOUT_COST, episode_cost, wall_cost
+from fuzzynav.tune.fitness import COLLISION_COST, TIMEOUT_COST, episode_cost, summary, wall_cost
 
 
 def _row(outcome, steps, remaining=0.0):
@@ -28,25 +29,38 @@ def _wall_row(outcome, steps, too_close=0, off_band=0.0, path=None):
     return row
 
 
-def test_wall_cost_ranks_distance_kept_then_any_lasted_episode_above_any_collision():
+def test_wall_cost_ranks_distance_kept_then_any_followed_episode_above_any_failure():
     """Eq VI.21's ranking made a number: a follower that lasts in the band [d_m, d_s] at 1 m/s beats
-    one too close a tenth of the time, which beats one drifting away, a stopped one pays, and
-    every collision (the earlier, the worse) costs more than any lasted episode."""
+    one too close a tenth of the time, which beats one drifting away, one slowed to just above half
+    of P pays its shortfall, and every collision (the earlier, the worse) costs more than any
+    episode that followed the wall."""
+    slow = 0.31 * 300 * 0.1  # 0.31 m/s: above half of P (0.6 m/s)
     rows = np.array([_wall_row(TIMEOUT, 300), _wall_row(TIMEOUT, 300, too_close=30, off_band=3.0),
-                     _wall_row(TIMEOUT, 300, off_band=150.0), _wall_row(TIMEOUT, 300, path=0.0),
-                     _wall_row(TIMEOUT, 300, too_close=300, off_band=300.0, path=0.0),
+                     _wall_row(TIMEOUT, 300, off_band=120.0), _wall_row(TIMEOUT, 300, path=slow),
+                     _wall_row(TIMEOUT, 300, too_close=300, off_band=300.0, path=slow),
                      _wall_row(COLLISION, 250), _wall_row(COLLISION, 20)])
     cost = wall_cost(rows, np.full(7, 0.1), np.full(7, 30.0))
     assert list(np.argsort(cost)) == [0, 1, 2, 3, 4, 5, 6]
     assert cost[0] == 0.0 and cost[4] < COLLISION_COST <= cost[5]
 
 
-def test_a_creeping_wall_follower_costs_more_than_any_follower_at_speed_and_less_than_a_collision():
-    """A follower that lasts at a tenth of Table VI.2's slow speed P, inside the band, costs more
-    than one at speed that is too close or off the band the whole time, and less than a collision."""
+def test_a_creeping_wall_follower_fails_as_a_collision_does():
+    """A follower that lasts below half of Table VI.2's slow speed P, inside the band, has not
+    followed the wall: it costs more than one at speed that is too close or off the band the whole
+    time, as much as a crash after the same share of the course, and a follower that stops as the
+    earliest crash — so creeping can never buy the absence of collisions."""
     rows = np.array([_wall_row(TIMEOUT, 300, path=0.2 * 300 * 0.1 * 0.6),
                      _wall_row(TIMEOUT, 300, too_close=300, off_band=300.0, path=0.6 * 300 * 0.1 * 0.6),
-                     _wall_row(COLLISION, 299)])
-    slow_but_following, fast, crash = wall_cost(rows, np.full(3, 0.1), np.full(3, 30.0))
-    assert slow_but_following >= TIMEOUT_COST > fast
-    assert slow_but_following < COLLISION_COST <= crash
+                     _wall_row(COLLISION, 60), _wall_row(TIMEOUT, 300, path=0.0), _wall_row(COLLISION, 0)])
+    creep, fast, crash_at_a_fifth, stopped, crash_at_once = wall_cost(rows, np.full(5, 0.1), np.full(5, 30.0))
+    assert fast < TIMEOUT_COST < COLLISION_COST <= creep
+    assert creep == pytest.approx(crash_at_a_fifth) and stopped == pytest.approx(crash_at_once)
+
+
+def test_a_course_crept_along_is_lasted_but_not_followed():
+    """The wall summary's share followed leaves out a course lasted below half of P (the failure
+    the cost prices as a collision); the share lasted counts it."""
+    rows = np.array([_wall_row(TIMEOUT, 300, path=0.6 * 300 * 0.1), _wall_row(TIMEOUT, 300, path=0.1 * 300 * 0.1),
+                     _wall_row(COLLISION, 100)])
+    numbers = summary(rows, np.full(3, 0.1), wall=True)
+    assert numbers["success_rate"] == pytest.approx(2 / 3) and numbers["followed_rate"] == pytest.approx(1 / 3)

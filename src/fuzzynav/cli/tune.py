@@ -97,7 +97,8 @@ def run(args) -> int:
 
 def _line(numbers: dict) -> str:
     if "off_band_m" in numbers:  # wall following
-        return (f"lasted {100 * numbers['success_rate']:5.1f} %, collisions {numbers['collisions']}, closer than d_m "
+        return (f"lasted {100 * numbers['success_rate']:5.1f} % (at >= P/2: {100 * numbers['followed_rate']:5.1f} %), "
+                f"collisions {numbers['collisions']}, closer than d_m "
                 f"{100 * numbers['too_close_share']:4.1f} % of steps, outside [d_m, d_s] {numbers['off_band_m']:.2f} m, "
                 f"speed {numbers['mean_speed_mps']:.2f} m/s over {numbers['worlds']} worlds")
     time = numbers["mean_time_s"]

@@ -4,10 +4,12 @@ The thesis gives no number to reproduce here: it proposes comparing its methods 
 algorithms and optimising fuzzy controllers by ant colonies. The checks are this package's
 targets (``source="package"``): on held-out worlds, every tuner and fuzzy Q-learning, averaged
 over the seeds, succeed at least as often as the hand-made system they start from (or, for FQL,
-replace) and collide no more often. For wall following, success is lasting the episode without a
-collision (:func:`fuzzynav.tune.fitness.summary`), and a follower must also keep at least
-:data:`WALL_SPEED_SHARE` of the hand-made one's mean speed: lasting by creeping along the wall is
-not following it.
+replace) and collide no more often. For wall following, success is following: lasting the
+episode without a collision at a mean speed of at least half of P
+(:func:`fuzzynav.experiments.tuning.held_out_wall`), and a follower must also keep at least
+:data:`WALL_SPEED_SHARE` of the hand-made one's mean speed on every seed (the slowest seed is
+checked, not the mean, which one creeping seed among fast ones would pass): lasting by creeping
+along the wall is not following it.
 """
 
 from __future__ import annotations
@@ -33,10 +35,10 @@ def _no_worse_than_hand_made(numbers) -> list[Check]:
             checks.append(Check(f"{name}, {method}: held-out collisions (mean per seed)", collisions,
                                 f"≤ hand-made {base['collisions']}", collisions <= base["collisions"], "package"))
             if name == "wall":
-                speed = sum(s["mean_speed_mps"] for s in seeds) / len(seeds)
+                speed = min(s["mean_speed_mps"] for s in seeds)
                 floor = WALL_SPEED_SHARE * base["mean_speed_mps"]
-                checks.append(Check(f"{name}, {method}: held-out mean speed, m/s (mean of {len(seeds)} seeds)", speed,
-                                    f"≥ {WALL_SPEED_SHARE:g} × hand-made {base['mean_speed_mps']:.2f}",
+                checks.append(Check(f"{name}, {method}: held-out mean speed, m/s (slowest of {len(seeds)} seeds)",
+                                    speed, f"≥ {WALL_SPEED_SHARE:g} × hand-made {base['mean_speed_mps']:.2f}",
                                     speed >= floor, "package"))
     return checks
 
@@ -50,7 +52,8 @@ EXPERIMENTS = [
                      "With the same episodes, tuning Table IV.1 (goal seeking), Table IV.2 (obstacle avoidance) "
                      "and Table VI.2 (wall following) by GA, PSO and ACO, and training FQL, each does at least as "
                      "well as the hand-made table on held-out worlds (success — for wall following, lasting the "
-                     "episode without collision — and collisions; mean over the seeds); a wall follower also keeps "
-                     "at least half the hand-made one's mean speed.",
+                     "episode without collision at least at half of P — and collisions; mean over the seeds); a wall "
+                     "follower also keeps "
+                     "at least half the hand-made one's mean speed on every seed.",
                      _no_worse_than_hand_made)),
 ]

@@ -20,9 +20,12 @@ worse); an episode lasted costs the share of its steps closer to an obstacle tha
 (closer than d_m, or further than d_s: no longer following), plus the shortfall of its mean speed
 below Table VI.2's slow speed P (a follower that stops would otherwise keep its distance for
 free). Every part is below 1. A follower that lasts below half of P (:data:`CREEP`) has not
-followed the wall: it pays :data:`TIMEOUT_COST` more, as a goal seeker's timeout does, so creeping
-along the wall can no longer buy the absence of collisions on a few courses; any lasted episode
-still beats any collision.
+followed the wall — the task of §VI.5.3 is following it without collision at a useful speed — so
+it has failed as a collision has: it costs :data:`COLLISION_COST` plus the share of the course it
+did not cover (its shortfall below P, above 1 − CREEP), as a collision costs it plus the share of
+the time it did not last. Creeping then ranks with an early crash and can never buy the absence of
+collisions (priced at a timeout's cost, half a collision's, an ant colony traded 19 collisions of
+Table VI.2 for 33 creeping courses); every episode that followed beats every failed one.
 
 The objectives of NSGA-II (:data:`OBJECTIVES`) are the failure rate, the mean time
 (the time limit for a failed episode) and minus the mean least clearance.
@@ -71,7 +74,7 @@ def wall_cost(out: np.ndarray, dt: np.ndarray, max_time: np.ndarray) -> np.ndarr
     lasted = np.clip(out[:, STEPS] * dt / max_time, 0.0, 1.0)
     slow = np.clip(1.0 - out[:, PATH] / (steps * dt * WALL_V1), 0.0, 1.0)
     cost = out[:, TOO_CLOSE] / steps + out[:, OFF_BAND] / steps + slow
-    cost = np.where(slow > 1.0 - CREEP, TIMEOUT_COST + cost, cost)
+    cost = np.where(slow > 1.0 - CREEP, COLLISION_COST + slow, cost)
     cost = np.where(outcome == COLLISION, COLLISION_COST + 1.0 - lasted, cost)
     return np.where(outcome == INVALID, INVALID_COST, cost)
 
@@ -136,11 +139,16 @@ def summary(out: np.ndarray, dt: np.ndarray, wall: bool = False) -> dict:
     """Success / collision / timeout rates, mean time to the goal and least clearance of one
     candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports). ``wall``: success
     is lasting the episode without collision, and the wall-following measures are added: the
-    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m) and the mean speed (m/s)."""
+    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m), the mean speed (m/s)
+    and the share followed: lasted at a mean speed of at least :data:`CREEP` × P (a lasted episode
+    below it is the failure :func:`wall_cost` prices as a collision)."""
     outcome = out[:, OUTCOME]
     if wall:
         steps = out[:, STEPS].sum()
+        speed = out[:, PATH] / (np.maximum(out[:, STEPS], 1.0) * dt)
+        followed = (outcome != COLLISION) & (outcome != INVALID) & (speed >= CREEP * WALL_V1)
         return {"worlds": int(len(out)), "success_rate": float((outcome != COLLISION).mean()),
+                "followed_rate": float(followed.mean()),
                 "collision_rate": float((outcome == COLLISION).mean()), "collisions": int((outcome == COLLISION).sum()),
                 "too_close_share": float(out[:, TOO_CLOSE].sum() / steps), "off_band_m": float(out[:, OFF_BAND].sum() / steps),
                 "mean_speed_mps": float(out[:, PATH].sum() / (out[:, STEPS] * dt).sum()),
