@@ -95,6 +95,22 @@ def test_one_step_update_is_algorithm_VI_1():
     np.testing.assert_allclose(learner.visits[0, 0], [[0.0, 0.25], [0.75, 0.0]])
 
 
+@pytest.mark.parametrize("terminal_bootstrap", [False, True])
+def test_a_terminal_step_is_bootstrapped_only_when_asked(terminal_bootstrap):
+    """Algorithm VI.1 computes V*(s') at every step, the one into the terminal set F included
+    (steps vi–viii come before "jusqu'à s_t ∈ F"); by default a terminal transition is not bootstrapped."""
+    learner = FuzzyQLearner(TwoRules(), [[-1.0, 1.0], [-2.0, 2.0]], gamma=0.5, alpha=1.0,
+                            policy=EpsilonGreedy(0.0), terminal_bootstrap=terminal_bootstrap)
+    learner.q[0] = [[[-2.0, -2.0], [-2.0, -2.0]]]
+    rng = np.random.default_rng(0)
+    learner.begin(np.array([[1.0]]), rng)  # rule 0 alone, candidate 0 (a tie: the first)
+    learner.step(np.array([-4.0]), np.array([[1.0]]), np.array([True]), rng)  # a collision, s' valued −2
+    target = -4.0 + (0.5 * -2.0 if terminal_bootstrap else 0.0)
+    assert learner.q[0, 0, 0, 0] == pytest.approx(target)
+    copy = FuzzyQLearner.from_dict(learner.to_dict(), TwoRules())
+    assert copy.terminal_bootstrap is terminal_bootstrap
+
+
 def test_shared_learner_from_parallel_episodes():
     learner = make(rows=16, learners=1)
     train_loop(LineEnv(16), learner, 40, np.random.default_rng(2))

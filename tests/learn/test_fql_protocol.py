@@ -26,6 +26,10 @@ def test_one_robot_zero_q_and_best_quality_unless_parallel_is_asked(tmp_path):
     assert np.all(learner.q == 0.0) and isinstance(learner.alpha, InverseVisits) and learner.alpha.floor == 0.01
     steering = next(fql_avoid.fql_avoid_phases(tmp_path / "a.json", 10, batch=1, prior="none"))
     assert steering.env.batch == 1 and tuple(steering.learner.prior[0]) == (1,) * 16  # Z: nothing chosen
+    # the avoider values the state a collision reaches, as Algorithm VI.1 writes it; the batch learner does not
+    assert steering.learner.terminal_bootstrap
+    parallel = next(fql_avoid.fql_avoid_phases(tmp_path / "p.json", 10, batch=10, prior="none"))
+    assert not parallel.learner.terminal_bootstrap
 
 
 def test_the_initial_tables_of_the_priors():

@@ -10,7 +10,9 @@ start). At each step, for a batch of B episodes at once:
 3. inferred action A(s) = Σ_i w_i a[i, j_i] (VI.10) and its quality Q(s, A) = Σ_i w_i q[i, j_i]
    (VI.11);
 4. after the move: V*(s') = Σ_i w_i(s') max_j q[i, j] and ΔQ = β [r + γ V*(s') − Q(s, A)]
-   (no bootstrap on a terminal transition);
+   (by default no bootstrap on a terminal transition; with ``terminal_bootstrap`` the new state
+   s' is valued at every step, the terminal one included, as Algorithm VI.1 writes it: steps vi–vii
+   compute V*(s') before the loop's test "jusqu'à s_t ∈ F");
 5. q[i, j_i] += ΔQ · w_i(s) (Algorithm VI.1 step viii writes q[i, j] += ΔQ[i, j]; the share of the
    correction given to each rule is its firing strength, as in Jouffe's FQL [JOU98, GLO00] —
    Q(s, A) is linear in q with gradient w_i, so this is the gradient step).
@@ -82,14 +84,15 @@ class FuzzyQLearner:
     ``alpha`` is β (number or schedule; :class:`~fuzzynav.learn.schedules.InverseVisits` counts
     fuzzy visits Σ w_i per candidate), ``policy`` the per-rule exploration policy (default
     ε-greedy, ε = 0.1) evaluated at the learner's ``episode`` counter, ``prior`` the index of each
-    rule's a-priori conclusion, shape (R,) or (H, R).
+    rule's a-priori conclusion, shape (R,) or (H, R); ``terminal_bootstrap`` values the state a
+    terminal transition reaches like any other (step 4 of the module docstring).
     """
 
     kind = "fuzzy-q-learner"
 
     def __init__(self, premise, candidates, *, n_rules: int | None = None, gamma: float = 0.9,
                  alpha=0.1, policy: Policy | None = None, lam: float = 0.0, n_learners: int = 1,
-                 prior=None, normalise: bool = True, initial_q: float = 0.0):
+                 prior=None, normalise: bool = True, initial_q: float = 0.0, terminal_bootstrap: bool = False):
         if n_rules is None:
             n_rules = _n_rules(premise)
         self.premise = premise
@@ -102,6 +105,7 @@ class FuzzyQLearner:
         self.alpha = as_schedule(alpha, "alpha")
         self.policy = policy if policy is not None else EpsilonGreedy(0.1)
         self.normalise = bool(normalise)
+        self.terminal_bootstrap = bool(terminal_bootstrap)
         if prior is None:
             prior = np.full((n_heads, n_rules), n_candidates // 2)
         self.prior = np.broadcast_to(np.asarray(prior, dtype=int), (n_heads, n_rules)).copy()
@@ -194,7 +198,8 @@ class FuzzyQLearner:
         w_next = self.strengths(X_next)
         batch = w_next.shape[0]
         live = np.ones(batch) if active is None else np.asarray(active, dtype=float)
-        bootstrap = self.gamma * (1.0 - np.asarray(terminated, dtype=float))
+        ends = np.zeros(batch) if self.terminal_bootstrap else np.asarray(terminated, dtype=float)
+        bootstrap = self.gamma * (1.0 - ends)
         best = row_max(self.q)
         v_star = (np.einsum("br,hr->bh", w_next, best[0]) if self.n_learners == 1
                   else np.einsum("br,bhr->bh", w_next, best))
@@ -269,6 +274,7 @@ class FuzzyQLearner:
             "alpha": schedule_to_dict(self.alpha),
             "policy": self.policy.to_dict(),
             "normalise": self.normalise,
+            "terminal_bootstrap": self.terminal_bootstrap,
             "prior": self.prior.tolist(),
             "n_learners": self.n_learners,
             "episode": self.episode,
@@ -286,7 +292,8 @@ class FuzzyQLearner:
             learner = cls(premise, document["candidates"], gamma=document["gamma"],
                           alpha=document["alpha"], policy=policy_from_dict(document["policy"]),
                           lam=document["lam"], n_learners=document["n_learners"],
-                          prior=document["prior"], normalise=document["normalise"])
+                          prior=document["prior"], normalise=document["normalise"],
+                          terminal_bootstrap=document.get("terminal_bootstrap", False))
         except KeyError as error:
             raise InputError("missing field", field=str(error.args[0])) from None
         restore_state(learner, document)
