@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.kernels import car_route, guidance, layers, row_blocks
+from fuzzynav.kernels import car_route, car_search, guidance, layers, row_blocks
 from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
@@ -67,6 +67,35 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
                         SEARCH, BODY,
                         PARAMS[layers.PARAM.guide_car_ahead], PARAMS[layers.PARAM.guide_car_tight])
     assert leg[0]  # a manoeuvre the layer drives
+
+
+def _search_both_ways(points, pose, goal):
+    """The search on the whole cost-to-go grid and on the wavefront settled on demand, and that wavefront."""
+    seen, robot = Sightings(points, len(points)), Robot(*pose, 0.0, *goal)
+    radius, low_x, low_y, nx, ny = car_route.frame(seen, robot, RADIUS, BODY, SEARCH.cell)
+    grid = car_route.clearance_grid(points, len(points), low_x, low_y, nx, ny, SEARCH.cell, radius + SEARCH.comfort)
+    row, col = int((goal[1] - low_y) / SEARCH.cell), int((goal[0] - low_x) / SEARCH.cell)
+    whole = car_route.cost_to_go(grid, SEARCH.cell, row, col, radius, SEARCH.weight, SEARCH.comfort)
+    start, end = np.array([pose[0] - low_x, pose[1] - low_y, pose[2] % (2 * math.pi)]), np.array(goal) - (low_x, low_y)
+    front = car_search.wavefront(grid, SEARCH.cell, row, col, radius, SEARCH.weight, SEARCH.comfort)
+    on_demand = car_search.search(grid, front.cost.reshape(ny, nx), start, end, radius, SEARCH, front)
+    return car_search.search(grid, whole, start, end, radius, SEARCH), on_demand, front, whole
+
+
+@pytest.mark.parametrize("case", ["chamber", "posts"])
+def test_the_wavefront_settled_on_demand_gives_the_search_of_the_whole_cost_to_go(case):
+    if case == "chamber":
+        points, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, -4.0)
+    else:
+        points = np.random.default_rng(3).uniform([-3.0, 1.0], [3.0, 7.0], size=(25, 2))
+        pose, goal = (0.0, 0.0, math.pi / 2), (0.0, 9.0)
+    whole_search, on_demand, front, whole = _search_both_ways(points, pose, goal)
+    assert on_demand[-1] >= 0 and on_demand[-1] == whole_search[-1]
+    for a, b in zip(whole_search[:-1], on_demand[:-1]):
+        assert np.array_equal(a, b)
+    settled = front.done.reshape(whole.shape)
+    assert 0 < settled.sum() < np.isfinite(whole).sum()  # part of the grid settled, each cell as in the whole
+    assert np.array_equal(front.cost.reshape(whole.shape)[settled], whole[settled])
 
 
 def test_every_pose_of_the_plan_keeps_the_clearance_asked():

@@ -12,7 +12,8 @@ free (the freespace assumption of D*, A. Stentz, ICRA 1994):
    (capped at the radius plus ``comfort``).
 2. Heuristic: the cost-to-go of each cell to the target's, by Dijkstra over 8 neighbours on
    the cells that keep the radius, each move's length times ``1 + weight · max(0, comfort −
-   (clearance − radius))`` — the search's own clearance cost, without the heading.
+   (clearance − radius))`` — the search's own clearance cost, without the heading
+   (:func:`fuzzynav.kernels.car_search.wavefront`), settled only as far as the search looks it up.
 3. The search keeps the radius given (the body's plus a margin), or the robot's present
    clearance less ``SLACK`` when that is smaller (a robot already close to a post may still
    drive away from it), never less than the body's.
@@ -34,7 +35,6 @@ from fuzzynav.kernels import car_search, sightings
 
 MARGIN = 1.5  # m of grid round the robot, the target and the points
 SLACK = 0.02  # m: the plan keeps the robot's present clearance less this, when below the radius asked
-NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))
 
 
 @jit
@@ -49,39 +49,21 @@ def clearance_grid(points, count, low_x, low_y, nx, ny, cell, cap):
         for j in range(max(cj - reach, 0), min(cj + reach, ny - 1) + 1):
             dy = (j + 0.5) * cell - py
             for i in range(max(ci - reach, 0), min(ci + reach, nx - 1) + 1):
-                d = math.hypot((i + 0.5) * cell - px, dy)
-                if d < grid[j, i]:
-                    grid[j, i] = d
+                dx, near = (i + 0.5) * cell - px, grid[j, i]
+                if dx * dx + dy * dy < near * near * (1.0 + 1e-9):  # else math.hypot ≥ the value there
+                    d = math.hypot(dx, dy)
+                    if d < near:
+                        grid[j, i] = d
     return grid
 
 
 @jit
 def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
-    """(ny, nx): the heuristic of the module docstring (inf where the target cannot be reached)."""
-    ny, nx = clearance.shape
-    cost = np.full(ny * nx, np.inf)
-    done = np.zeros(ny * nx, dtype=np.bool_)
-    heap_f, heap_n = np.empty(8 * ny * nx + 1), np.empty(8 * ny * nx + 1, np.int64)
-    goal = goal_row * nx + goal_col
-    cost[goal] = 0.0
-    size = car_search.push(heap_f, heap_n, 0, 0.0, goal)
-    while size > 0:
-        here, size = car_search.pop(heap_f, heap_n, size)
-        if done[here]:
-            continue
-        done[here] = True
-        row, col = here // nx, here % nx
-        for dr, dc in NEIGHBOURS:
-            r, c = row + dr, col + dc
-            if r < 0 or c < 0 or r >= ny or c >= nx or clearance[r, c] < radius:
-                continue
-            there = r * nx + c
-            step = cell * (1.4142135623730951 if dr != 0 and dc != 0 else 1.0)
-            total = cost[here] + step * (1.0 + weight * max(0.0, comfort - (clearance[r, c] - radius)))
-            if total < cost[there]:
-                cost[there] = total
-                size = car_search.push(heap_f, heap_n, size, total, there)
-    return cost.reshape(ny, nx)
+    """(ny, nx): the heuristic of the module docstring over the whole grid (inf where the target
+    cannot be reached); :func:`plan` settles only the cells its search looks up."""
+    front = car_search.wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort)
+    car_search.settle(front, -1)
+    return front.cost.reshape(clearance.shape)
 
 
 @jit
@@ -119,11 +101,12 @@ def plan(seen, robot, radius, body, search):
     cell, comfort = search.cell, search.comfort
     radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
-    heuristic = cost_to_go(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius, search.weight,
-                           comfort)
+    front = car_search.wavefront(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius,
+                                 search.weight, comfort)
     start = np.array([x - low_x, y - low_y, theta % (2.0 * math.pi)])
     goal = np.array([tx - low_x, ty - low_y])
-    xs, ys, ths, parents, primitives, end = car_search.search(clearance, heuristic, start, goal, radius, search)
+    xs, ys, ths, parents, primitives, end = car_search.search(clearance, front.cost.reshape(ny, nx), start, goal, radius,
+                                                              search, front)
     chain = [max(end, 0)]
     while parents[chain[-1]] >= 0:
         chain.append(parents[chain[-1]])

@@ -9,6 +9,12 @@ With ``reverse`` > 0 every arc is also driven backwards, at ``reverse`` times it
 ``gear`` per change of direction — the forward and backward arcs of the shortest car paths of
 J. A. Reeds and L. A. Shepp, *Optimal paths for a car that goes both forwards and backwards*,
 Pacific J. Math. 145(2), 1990 — so a plan may hold the cusps of a K-turn.
+
+The heuristic is a grid of costs-to-go (Dolgov et al.'s obstacle-aware, heading-blind
+heuristic), given whole, or as a :func:`wavefront` that the search runs only as far as the cells
+it looks up (:func:`settle`): Dijkstra settles cells in the order of their cost, so a cell's cost
+is the same whether the wavefront stops there or runs over the whole grid, and the search needs
+only the cells no farther from the goal than those its arcs reach — about half of the grid.
 """
 
 from __future__ import annotations
@@ -18,6 +24,7 @@ import math
 import numpy as np
 
 from fuzzynav.jit import jit
+from fuzzynav.kernels.records import Wavefront
 
 FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
 
@@ -98,12 +105,59 @@ def grown(table, best, closed):
     return keys, costs, shut
 
 
+NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))
+
+
 @jit
-def search(clearance, heuristic, start, goal, radius, settings):
+def wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort):
+    """A :class:`~fuzzynav.kernels.records.Wavefront` from the goal's cell over ``clearance``
+    (ny, nx) of ``cell`` m, nothing settled yet: by Dijkstra over 8 neighbours on the cells that
+    keep ``radius``, each move's length times ``1 + weight · max(0, comfort − (clearance −
+    radius))`` (the search's own clearance cost, without the heading)."""
+    ny, nx = clearance.shape
+    cost = np.full(ny * nx, np.inf)
+    heap_f, heap_n = np.empty(8 * ny * nx + 1), np.empty(8 * ny * nx + 1, np.int64)
+    goal = goal_row * nx + goal_col
+    cost[goal] = 0.0
+    size = np.full(1, push(heap_f, heap_n, 0, 0.0, goal), np.int64)
+    return Wavefront(clearance, cell, radius, weight, comfort, cost, np.zeros(ny * nx, dtype=np.bool_), heap_f,
+                     heap_n, size)
+
+
+@jit
+def settle(front, target):
+    """Run the wavefront ``front`` until cell ``target`` (row · nx + column) is settled, its cost
+    final (inf: no way to the goal), or, with ``target`` < 0, over the whole grid."""
+    clearance, cell, radius, weight, comfort = front.clearance, front.cell, front.radius, front.weight, front.comfort
+    cost, done, heap_f, heap_n = front.cost, front.done, front.heap_f, front.heap_n
+    ny, nx = clearance.shape
+    size = front.size[0]
+    while size > 0 and (target < 0 or not done[target]):
+        here, size = pop(heap_f, heap_n, size)
+        if done[here]:
+            continue
+        done[here] = True
+        row, col = here // nx, here % nx
+        for dr, dc in NEIGHBOURS:
+            r, c = row + dr, col + dc
+            if r < 0 or c < 0 or r >= ny or c >= nx or clearance[r, c] < radius:
+                continue
+            there = r * nx + c
+            step = cell * (1.4142135623730951 if dr != 0 and dc != 0 else 1.0)
+            total = cost[here] + step * (1.0 + weight * max(0.0, comfort - (clearance[r, c] - radius)))
+            if total < cost[there]:
+                cost[there] = total
+                size = push(heap_f, heap_n, size, total, there)
+    front.size[0] = size
+
+
+@jit
+def search(clearance, heuristic, start, goal, radius, settings, front=None):
     """Hybrid A* from the pose ``start`` to within ``settings.reach`` of ``goal``, every sample of
     every arc in a cell whose clearance is at least ``radius`` (m), on the grid ``clearance``
     (ny, nx) of ``settings.cell`` m whose lower-left corner is the origin; ``heuristic`` (ny, nx):
-    the cost-to-go of each cell (inf: unreachable); ``settings``: a
+    the cost-to-go of each cell (inf: unreachable), or the costs of the :func:`wavefront`
+    ``front`` (reshaped), which the search then settles as far as it looks; ``settings``: a
     :class:`~fuzzynav.kernels.records.CarSearch` (:mod:`fuzzynav.world.hybrid_astar` tells the
     meaning of its fields; ``reverse`` 0: forward arcs only). Returns the node arrays (x, y, θ,
     parent, primitive) and the goal node (−1: none within the budget of nodes)."""
@@ -156,7 +210,10 @@ def search(clearance, heuristic, start, goal, radius, settings):
             if not end_sampled:
                 px, py, pth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length)
             pth = pth % (2.0 * math.pi)
-            h = heuristic[int(math.floor(py / cell)), int(math.floor(px / cell))]
+            row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
+            if front is not None and not front.done[row * nx + col]:
+                settle(front, row * nx + col)
+            h = heuristic[row, col]
             if not math.isfinite(h):
                 continue
             cost = step * (penalty / samples + turn_cost * abs(kappa) / kmax)

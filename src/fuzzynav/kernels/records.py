@@ -14,6 +14,7 @@ inside a kernel or in Python alike. A field's comment gives its unit.
 - :class:`Sightings` — the obstacle points a robot remembers (:mod:`fuzzynav.kernels.sightings`);
 - :class:`CarSearch` — the settings of the hybrid A* search (:mod:`fuzzynav.kernels.car_search`)
   of the car route and of :mod:`fuzzynav.world.hybrid_astar`;
+- :class:`Wavefront` — the car route's cost-to-go, settled on demand (:func:`fuzzynav.kernels.car_search.wavefront`);
 - :class:`TurnRoom` — the turning-room guard's distances (:func:`fuzzynav.kernels.guard.turn_wanted`);
 - :class:`Thresholds` — the behaviour selection's distances (:func:`fuzzynav.kernels.guard.select`);
 - :class:`Shares` — the learned avoider's shares of a batch (:func:`fuzzynav.kernels.learned.drive`);
@@ -109,6 +110,22 @@ class CarSearch(NamedTuple):
     budget: int  # the search nodes before it gives up
     reverse: float  # the cost factor of a backward arc (0: forward arcs only)
     gear: float  # m, the cost of a change of direction
+
+
+class Wavefront(NamedTuple):
+    """A Dijkstra wavefront from the goal over a clearance grid, run as far as asked
+    (:func:`fuzzynav.kernels.car_search.settle`)."""
+
+    clearance: np.ndarray  # (ny, nx) m, each cell's clearance
+    cell: float  # m, the grid's cell
+    radius: float  # m, a cell of less clearance is blocked
+    weight: float  # the weight of the clearance cost
+    comfort: float  # m, the clearance beyond which a move costs no more
+    cost: np.ndarray  # (ny · nx,) the cost-to-go of each cell (final where ``done``)
+    done: np.ndarray  # (ny · nx,) bool: settled
+    heap_f: np.ndarray  # the open cells' keys (a binary heap)
+    heap_n: np.ndarray  # their cells
+    size: np.ndarray  # (1,) int: the heap's entries
 
 
 class TurnRoom(NamedTuple):

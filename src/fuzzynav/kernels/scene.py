@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from fuzzynav.jit import jit
 from fuzzynav.kernels.layout import (
     AT_CIRCLES,
@@ -232,3 +234,33 @@ def nearest_worlds(scenes, bounds, points, out):
     ``scenes[bounds[n, 0]:bounds[n, 1]]`` (several worlds' arrays concatenated) into ``out`` (N, 5)."""
     for n in range(points.shape[0]):
         nearest_one(scenes[bounds[n, 0]:bounds[n, 1]], points[n, 0], points[n, 1], out[n])
+
+
+@jit
+def joined(scene, xs, ys, radius, start, goal):
+    """Do the grid cells ``start`` and ``goal`` (row, column) lie in one 4-connected region of the
+    free cells — those whose centre (``xs[column]``, ``ys[row]``) keeps ``radius`` from every
+    obstacle and the boundary? A flood fill from ``start`` that measures a cell's clearance
+    (:func:`nearest_one`) only when it reaches it, and stops at ``goal``."""
+    ny, nx = ys.shape[0], xs.shape[0]
+    seen = np.zeros(ny * nx, dtype=np.bool_)  # reached, or found blocked
+    queue = np.empty(ny * nx, dtype=np.int64)
+    out = np.empty(5)
+    first, target = start[0] * nx + start[1], goal[0] * nx + goal[1]
+    head = tail = 0
+    queue[tail], tail, seen[first] = first, tail + 1, True
+    while head < tail:
+        here = queue[head]
+        head += 1
+        row, col = here // nx, here % nx
+        nearest_one(scene, xs[col], ys[row], out)
+        if not min(out[0], out[4]) >= radius:
+            continue
+        if here == target:
+            return True
+        for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+            r, c = row + dr, col + dc
+            if 0 <= r < ny and 0 <= c < nx and not seen[r * nx + c]:
+                seen[r * nx + c] = True
+                queue[tail], tail = r * nx + c, tail + 1
+    return False

@@ -29,7 +29,7 @@ start heading is uniform. Only **solvable** worlds are returned: on an occupancy
 where the robot's footprint disc plus a margin fits (clearance ≥ ``robot_radius + margin``) must
 connect the start to the goal. The default margin is the tightest turning radius
 l / tan(π/5) = 0.69 m: a tricycle that cannot reverse needs passages where it can turn around
-(width ≥ 2 (0.3 + 0.69) ≈ 2 m), not merely passages it fits through (4-connected flood fill, :func:`scipy.ndimage.label`); otherwise the
+(width ≥ 2 (0.3 + 0.69) ≈ 2 m), not merely passages it fits through (4-connected flood fill); otherwise the
 draw is rejected and redrawn. Doors and posts leave less room than that: ``office`` and ``forest``
 check their own margin of centimetres (with reverse, the car can follow any path of its
 footprint that keeps some clearance: :mod:`fuzzynav.world.office`); ``maze`` keeps the turning
@@ -90,25 +90,16 @@ def _clear_of(shapes: list[dict], start, goal) -> bool:
     return bool((World(WIDTH, HEIGHT, tuple(shapes)).nearest_obstacle(np.array([start, goal]))[0] >= POINT_CLEARANCE).all())
 
 
-def free_space(world: World, radius: float) -> tuple[np.ndarray, np.ndarray]:
-    """Occupancy grid of ``world``: ``(free (ny, nx) bool, centres (ny, nx, 2))``, a cell free
-    when a disc of ``radius`` around its centre touches neither an obstacle nor the boundary."""
-    xs = np.arange(GRID / 2, world.width, GRID)
-    ys = np.arange(GRID / 2, world.height, GRID)
-    centres = np.stack(np.meshgrid(xs, ys), axis=-1)
-    free = world.clearance(centres.reshape(-1, 2)).reshape(centres.shape[:2]) >= radius
-    return free, centres
-
-
 def connected(world: World, start, goal, radius: float) -> bool:
-    """True when ``start`` and ``goal`` lie in one connected region of :func:`free_space`."""
-    from scipy import ndimage  # imported when first needed (not at start-up)
+    """True when ``start`` and ``goal`` lie in one 4-connected region of the free cells of the
+    occupancy grid (cells of ``GRID`` m; free when a disc of ``radius`` round the centre touches
+    neither an obstacle nor the boundary): a flood fill from the start that measures only the
+    cells it reaches (:func:`fuzzynav.kernels.scene.joined`)."""
+    from fuzzynav.kernels import scene
 
-    free, _ = free_space(world, radius)
-    labels, _ = ndimage.label(free)
-    cell = lambda p: (min(int(p[1] / GRID), labels.shape[0] - 1), min(int(p[0] / GRID), labels.shape[1] - 1))
-    a, b = labels[cell(start)], labels[cell(goal)]
-    return bool(a) and a == b
+    xs, ys = np.arange(GRID / 2, world.width, GRID), np.arange(GRID / 2, world.height, GRID)
+    cell = lambda p: (min(int(p[1] / GRID), len(ys) - 1), min(int(p[0] / GRID), len(xs) - 1))
+    return bool(scene.joined(world.scene, xs, ys, float(radius), cell(start), cell(goal)))
 
 
 def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", max_time: float = 120.0,

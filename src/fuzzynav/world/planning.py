@@ -24,8 +24,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import sparse
-from scipy.sparse import csgraph
 
 from fuzzynav.world.world import World
 
@@ -108,6 +106,8 @@ def _graph(grid: Grid, radius: float, weight: float, comfort: float):
         rows.append(ids[a][ok])
         cols.append(ids[b][ok])
         costs.append(length * 0.5 * (penalty[a][ok] + penalty[b][ok]))
+    from scipy import sparse  # imported when first needed (not at start-up)
+
     n = ny * nx
     return sparse.coo_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))),
                              shape=(n, n)).tocsr()
@@ -166,6 +166,8 @@ def shortest_path(world: World, start, goal, radius: float, *, cell: float | Non
         return None
     nx = grid.free.shape[1]
     source, target = a[0] * nx + a[1], b[0] * nx + b[1]
+    from scipy.sparse import csgraph  # imported when first needed (not at start-up)
+
     graph = _graph(grid, radius, weight, comfort)
     distance, previous = csgraph.dijkstra(graph, directed=False, indices=source, return_predecessors=True)
     if not np.isfinite(distance[target]):
@@ -187,6 +189,8 @@ def cost_to_go(grid: Grid, goal, radius: float, *, weight: float = 0.0, comfort:
     target = _nearest_free(grid, np.asarray(goal, dtype=float)[:2])
     if target is None:
         return None
+    from scipy.sparse import csgraph  # imported when first needed (not at start-up)
+
     nx = grid.free.shape[1]
     distance = csgraph.dijkstra(_graph(grid, radius, weight, comfort), directed=False,
                                 indices=target[0] * nx + target[1])
