@@ -109,3 +109,21 @@ def test_the_pace_drives_faster_through_posts_without_contact():
     assert fast.steps < 0.7 * slow.steps
     assert fast.speed.max() > slow.speed.max()
     assert world.world.clearance(fast.pose[:, :2]).min() > world.robot.radius
+
+
+def test_the_car_routes_forward_arcs_are_paced_where_clear():
+    """The pace on the car route's forward arcs (``pace_car``): in a maze the layer's ``CAR-FWD``
+    steps go above ``guide_car_speed`` (never below it), the goal is reached sooner than with the
+    arcs at that fixed speed (``pace_car`` 0, version 5), with no collision."""
+    from fuzzynav.world.generate import generate_world
+
+    world = generate_world("maze", 0, 0)
+    fixed = run_episode(world, make_controller("fuzzy-5b", pace={"pace_car": 0}), seed=0)
+    paced = run_episode(world, make_controller("fuzzy-5b"), seed=0)
+    floor = make_controller("fuzzy-5b").params[layers.PARAM.guide_car_speed]
+    assert fixed.reached and paced.reached and not paced.collision
+    assert np.all(fixed.speed[fixed.behaviour == "CAR-FWD"] == pytest.approx(floor))
+    arcs = paced.speed[paced.behaviour == "CAR-FWD"]
+    assert arcs.size and arcs.min() >= floor - 1e-9 and arcs.max() > 1.5 * floor
+    assert paced.steps < 0.9 * fixed.steps
+    assert world.world.clearance(paced.pose[:, :2]).min() > world.robot.radius

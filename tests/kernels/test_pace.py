@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.kernels import layers
-from fuzzynav.kernels.pace import free_run, pace
+from fuzzynav.kernels.pace import car_pace, free_run, pace
 
 ANGLES = np.radians(np.linspace(-135.0, 135.0, 271))
 MAX_RANGE = 5.0
@@ -61,3 +61,19 @@ def test_pace_is_the_slowest_of_top_speed_room_and_target():
     assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(horizon=2.0), 9.0) == pytest.approx(1.0)
     assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(), 0.5) == pytest.approx(0.5)
     assert pace(ranges, ANGLES, MAX_RANGE, 0.0, layer_params(horizon=0.1, top=1.5), 9.0) == pytest.approx(1.5)
+
+
+def test_the_car_routes_forward_arc_is_paced_on_its_curvature_and_nothing_else_is():
+    params = layer_params()
+    params[[layers.PARAM.pace, layers.PARAM.pace_car]] = 1.0, 1.0
+    state = np.zeros(len(layers.STATE_NAMES))
+    state[[layers.STATE.guide_gear, layers.STATE.guide_kappa]] = 1.0, 0.8
+    ranges = np.full(ANGLES.size, MAX_RANGE)
+    ranges[150] = 1.2
+    on_arc = pace(ranges, ANGLES, MAX_RANGE, math.atan(0.8 * 0.5), params, 9.0)
+    assert car_pace(ranges, ANGLES, MAX_RANGE, params, state, 9.0) == pytest.approx(on_arc)
+    assert on_arc != pytest.approx(pace(ranges, ANGLES, MAX_RANGE, 0.0, params, 9.0))  # the arc's, not straight on
+    state[layers.STATE.guide_gear] = -1.0  # backing: not paced
+    assert car_pace(ranges, ANGLES, MAX_RANGE, params, state, 9.0) == 0.0
+    state[layers.STATE.guide_gear], params[layers.PARAM.pace_car] = 1.0, 0.0  # pace_car off (version 5)
+    assert car_pace(ranges, ANGLES, MAX_RANGE, params, state, 9.0) == 0.0

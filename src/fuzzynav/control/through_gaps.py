@@ -31,7 +31,9 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   layers' manoeuvres), its speed is raised to the one that leaves ``pace_horizon`` s of travel on
   the arc of its steering before the body comes within ``pace_room`` m of a lidar hit (at most
   the robot's top speed and the target's distance per ``pace_goal`` s), when the safety stop's
-  test passes at that speed; the thesis' speeds (Table IV.1, VRB) stay the floor.
+  test passes at that speed; the thesis' speeds (Table IV.1, VRB) stay the floor. With ``pace_car``
+  the car route's forward arcs are paced alike (on the arc's curvature, ``guide_car_speed`` the
+  floor, the recovery's safety test passing at the speed, never past the arc's end).
 - :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
   (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
   escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
@@ -60,7 +62,7 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8,
                     guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5)
 # the pace (units and meaning: kernels.layers.Pace)
-PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0)
+PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
 
 def _replaced(record, values: dict | None, field: str):

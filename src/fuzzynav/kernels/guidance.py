@@ -21,9 +21,9 @@ the plan's next ``guide_car_ahead`` m keep ``guide_car_tight`` m more than the r
 remembered point and hold no cusp, the route point is that far along it and the navigator
 drives. Elsewhere — in a passage barely wider than the body, or in a K-turn — the layer drives
 the plan's first arc itself (:func:`manoeuvre`: backward at the recovery's backing speed,
-forward at ``guide_car_speed``, while the recovery's safety test passes) and plans again at its
-end. A route point that a newly seen point blocks (nearer than the body's radius) is planned
-again at once.
+forward at ``guide_car_speed`` or the pace on its arc, :func:`fuzzynav.kernels.pace.car_pace`,
+while the recovery's safety test passes) and plans again at its end. A route point that a newly
+seen point blocks (nearer than the body's radius) is planned again at once.
 
 The car route's poses are kept (``route_slots`` of them, in the robot's state row) and a plan
 reuses them instead of searching again while they stay valid (:func:`reused`): searched less
@@ -229,15 +229,21 @@ def plan(state, params, seen, robot, t, radius):
 
 
 @jit
-def manoeuvre(state, params, points, count, x, y, theta, dt):
+def manoeuvre(state, params, points, count, x, y, theta, dt, quick):
     """(moving, α, V): this step of the car route's arc, if the layer is driving one (module
     docstring); when the arc is done or the step is not safe, the route is planned again at the
-    next step."""
+    next step. A forward arc is driven at ``quick`` (the pace on its arc,
+    :func:`fuzzynav.kernels.pace.car_pace`) where that is above ``guide_car_speed`` and the step
+    is safe at it, at most the speed that ends the arc in this step."""
     if state[STATE.guide_gear] == 0.0:
         return False, 0.0, 0.0
     backwards = state[STATE.guide_gear] < 0
     speed = -min(params[PARAM.v_back], params[PARAM.max_reverse_speed]) if backwards else params[PARAM.guide_car_speed]
     unfinished = state[STATE.guide_driven] < state[STATE.guide_run] - 1e-9
+    if unfinished and not backwards and quick > speed:
+        faster = min(quick, max(speed, (state[STATE.guide_run] - state[STATE.guide_driven]) / dt))
+        if recovery.safe(params, points, count, x, y, theta, faster, dt):
+            speed = faster
     if unfinished and recovery.safe(params, points, count, x, y, theta, speed, dt):
         state[STATE.guide_driven] += abs(speed) * dt
         return True, math.atan(state[STATE.guide_kappa] * params[PARAM.wheelbase]), speed

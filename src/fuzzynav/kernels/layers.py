@@ -216,6 +216,8 @@ class Pace:
     """s: the travel left before that room"""
     pace_goal: float
     """s: the least time to the target"""
+    pace_car: float
+    """1: the car route's forward arcs (``CAR-FWD``) paced too, at least ``guide_car_speed``"""
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels.layers import PARAM
+from fuzzynav.kernels.layers import PARAM, STATE
 
 
 @jit
@@ -62,3 +62,14 @@ def pace(ranges, angles, max_range, steering, params, distance):
     run = free_run(ranges, angles, max_range, math.tan(steering) / params[PARAM.wheelbase],
                    params[PARAM.radius] + params[PARAM.pace_room])
     return min(params[PARAM.max_speed], run / params[PARAM.pace_horizon], distance / params[PARAM.pace_goal])
+
+
+@jit
+def car_pace(ranges, angles, max_range, params, state, distance):
+    """The speed of :func:`pace` on the forward arc of the car route the layer drives
+    (:func:`fuzzynav.kernels.guidance.manoeuvre`, curvature ``state[STATE.guide_kappa]``); 0 (no
+    raise) when ``pace_car`` is off or no forward arc is driven."""
+    if params[PARAM.pace] == 0.0 or params[PARAM.pace_car] == 0.0 or state[STATE.guide_gear] <= 0.0:
+        return 0.0
+    return pace(ranges, angles, max_range, math.atan(state[STATE.guide_kappa] * params[PARAM.wheelbase]), params,
+                distance)
