@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.control.yielding import _closing, yield_system
+from fuzzynav.control.yield_layer import _closing, yield_system
 from fuzzynav.sim.simulator import run_episode
 from fuzzynav.world.generate import generate_world
 
