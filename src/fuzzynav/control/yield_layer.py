@@ -75,7 +75,9 @@ class YieldLayer:
 
     def reset(self) -> None:
         """Forget the scan before and the tracks (a new episode)."""
-        self._previous, self._tracks, self._time = None, None, 0.0
+        self._previous: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        self._tracks: list[SightingTracks] = []
+        self._time = 0.0
 
     def for_robot(self, robot) -> None:
         """Ask for no more than the robot's top speed; its radius for the collision cone."""
