@@ -78,8 +78,8 @@ def test_a_patrol_across_the_way_no_longer_leaves_a_wall_of_ghosts_to_drive_roun
     past places across the way (about 17 s to the goal); forgetting them, the robot gets through
     once the disc has passed (under 10 s)."""
     scenario = scenario_from_dict(patrol(1.0))
-    remembering = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False), seed=0)
-    forgetting = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    remembering = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False, yield_in_traffic=False), seed=0)
+    forgetting = run_episode(scenario, fuzzy_5b_gap_robust(yield_in_traffic=False), seed=0)  # version 6
     assert remembering.outcome == forgetting.outcome == "reached"
     assert remembering.time > 15.0
     assert forgetting.time < 10.0
@@ -102,7 +102,8 @@ def test_a_held_out_dynamic_world_that_version_4_failed_is_now_passed():
     from fuzzynav.world.generate import generate_world
 
     scenario = generate_world("dynamic", 11, 2)
-    before = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False), seed=0)
+    before = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False, yield_in_traffic=False), seed=0)
     assert before.outcome == "collision"
     assert {"CAR-FWD", "CAR-BACK"} & set(before.behaviour[-10:])
-    assert run_episode(scenario, make_controller("fuzzy-5b"), seed=0).outcome == "reached"
+    no_yield = fuzzy_5b_gap_robust(yield_in_traffic=False)  # the clearing alone, without version 7's yield layer
+    assert run_episode(scenario, no_yield, seed=0).outcome == "reached"

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.control.yielding import _closing, yield_system
+from fuzzynav.control.yield_layer import _closing, yield_system
 from fuzzynav.sim.simulator import run_episode
 from fuzzynav.world.generate import generate_world
 
@@ -45,7 +45,8 @@ def test_the_rule_base_waits_for_long_times_and_acts_on_short_ones():
 @pytest.mark.parametrize("index", [1, 3])
 def test_it_gets_through_where_fuzzy_5b_is_run_into(index):
     scenario = generate_world("dynamic", 1, index)
-    plain = run_episode(scenario, make_controller("fuzzy-5b", paced=False), seed=0)  # the thesis' speeds
+    plain = run_episode(scenario, make_controller("fuzzy-5b", paced=False, yield_in_traffic=False),
+                        seed=0)  # the thesis' speeds, no yield layer
     assert plain.outcome == "collision" and plain.collision_by == "obstacle"
     trace = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
     assert trace.outcome == "reached"

@@ -41,12 +41,15 @@ register_controller(ControllerSpec(
     "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
     "and loop escape, its speed set by the room ahead on its arc (on the car route's forward arcs too), deciding "
     "where its command will act when the robot's actuation is late, its car route reused while valid, forgetting "
-    "where moving obstacles were; version 1 of this name is fuzzy-5b-rays, version 2 drove at the thesis' speeds "
+    "where moving obstacles were and, among them, yielding to what its tracks predict would run into it (the layer "
+    "of fuzzy-5b-yield-tracks); version 1 of this name is fuzzy-5b-rays, version 2 drove at the thesis' speeds "
     "(paced=False), version 3 did not compensate the latency, version 4 searched its car route at every plan "
-    "(guidance={'guide_car_reuse': 0}) and remembered moving obstacles wherever seen, version 5 drove the car route's forward arcs at a fixed 0.8 m/s "
-    "(pace={'pace_car': 0})",
-    "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989", GOAL,
-    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=6))
+    "(guidance={'guide_car_reuse': 0}) and remembered moving obstacles wherever seen, version 5 drove the car "
+    "route's forward arcs at a fixed 0.8 m/s (pace={'pace_car': 0}), version 6 had no yield layer "
+    "(yield_in_traffic=False)",
+    "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
+    "Fiorini & Shiller 1998", GOAL,
+    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=7))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "

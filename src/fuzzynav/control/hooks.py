@@ -24,7 +24,9 @@ controller implements one by defining its member, without deriving from it:
 - :class:`CompiledAct` — ``compiled(n, sensor_angles)``: the arguments of its decision inside
   the compiled step (:func:`fuzzynav.kernels.step.step`) for ``n`` robots, so that sensing,
   deciding and stepping are one compiled call (the thesis navigators,
-  :class:`~fuzzynav.control.batched.CompiledNavigator`);
+  :class:`~fuzzynav.control.batched.CompiledNavigator`); one whose ``in_step`` is False once told
+  the scenario (the default ``fuzzy-5b`` among moving obstacles, whose yield layer is Python) is
+  called through ``act_batch`` instead;
 - :class:`HasRoles` — ``roles``: the names of its replaceable rule bases in the order it reads
   them; its factory then takes ``systems={role: FuzzySystem}`` (``--fis ROLE=FILE``) and its spec
   lists the same roles (:mod:`fuzzynav.catalog.roles`).

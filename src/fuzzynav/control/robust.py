@@ -74,12 +74,16 @@ class RobustNavigator(BatchController):
     decision at the pose where the command will act once told the robot's actuation latency
     (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); with
     ``forget_moving=True``, in a scenario with moving obstacles, the points its scans contradict
-    forgotten (:meth:`for_traffic`); ``systems`` of the navigator are its rule bases by role."""
+    forgotten (:meth:`for_traffic`); given ``traffic`` (a
+    :class:`~fuzzynav.control.yield_layer.YieldLayer`), in a scenario with moving obstacles only,
+    that layer adjusts each command after the compiled decision (then made in Python, one call a
+    step: :attr:`in_step` is False); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
-                 compensate: bool = False, forget_moving: bool = False):
+                 compensate: bool = False, forget_moving: bool = False, traffic=None):
         self.navigator, self.name, self.compensate, self.forget_moving = navigator, name, compensate, forget_moving
+        self.traffic, self._yielding = traffic, False
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
@@ -96,6 +100,8 @@ class RobustNavigator(BatchController):
         """Forget the layers' state and the navigator's (a new episode)."""
         self.navigator.reset(rng)
         self._rows = None
+        if self.traffic is not None:
+            self.traffic.reset()
 
     @property
     def systems(self) -> dict:
@@ -117,6 +123,8 @@ class RobustNavigator(BatchController):
         (:class:`TricycleParams`)."""
         if navigator:
             self.navigator.for_robot(robot)
+        if self.traffic is not None:
+            self.traffic.for_robot(robot)
         layers.put(self.params, layers.Body(radius=robot.radius, max_reverse_speed=robot.max_reverse_speed,
                                             wheelbase=robot.wheelbase, max_speed=robot.max_speed))
         self.params[layers.PARAM.plant_dt:layers.PARAM.plant_dt + len(ROBOT_FIELDS)] = robot.array()
@@ -136,9 +144,16 @@ class RobustNavigator(BatchController):
     def for_traffic(self, moving: bool) -> RobustNavigator:
         """Told whether the scenario's obstacles move: with ``forget_moving``, the scans then clear
         the remembered points they contradict (:mod:`fuzzynav.kernels.clearing`); a static
-        scenario's decisions are unchanged."""
+        scenario's decisions are unchanged; with a ``traffic`` layer, it runs among moving obstacles."""
         self.params[layers.PARAM.forget] = float(bool(moving) and self.forget_moving)
+        self._yielding = bool(moving) and self.traffic is not None
         return self
+
+    @property
+    def in_step(self) -> bool:
+        """Can the simulator decide inside its compiled step (:class:`~fuzzynav.control.hooks.CompiledAct`)?
+        Not while the ``traffic`` layer runs: it is Python, called after the compiled decision."""
+        return not self._yielding
 
     def compiled(self, n: int, sensor_angles):
         """The arguments of :func:`fuzzynav.kernels.step.step` for ``n`` robots with this ring:
@@ -167,10 +182,14 @@ class RobustNavigator(BatchController):
         kind, params, tables, state, memory, layer_params, rows = arguments
         robust.act(Navigator(kind, params, tables), state, memory, Layers(layer_params, rows),
                    readings(obs, obs.ranges, obs.sensor_angles, active, n), float(obs.dt), float(obs.t), out)
-        return out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
+        command = out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
+        return self.traffic(obs, *command) if self._yielding else command
 
     def act(self, obs) -> Command:
-        """One robot: the compiled decision, called directly (no batch of one is built)."""
+        """One robot: the compiled decision, called directly (no batch of one is built; among
+        moving obstacles with a ``traffic`` layer, through :meth:`act_batch`)."""
+        if self._yielding:
+            return super().act(obs)
         if obs.ranges is None or obs.target is None:
             raise InputError("this controller needs range sensors and a target", field="sensors")
         from fuzzynav.kernels import robust

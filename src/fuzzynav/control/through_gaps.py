@@ -34,12 +34,18 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   test passes at that speed; the thesis' speeds (Table IV.1, VRB) stay the floor. With ``pace_car``
   the car route's forward arcs are paced alike (on the arc's curvature, ``guide_car_speed`` the
   floor, the recovery's safety test passing at the speed, never past the arc's end).
+- Among moving obstacles only (the simulator says so: ``for_traffic``), the yield / evade layer
+  with tracked obstacles (:mod:`fuzzynav.control.yield_layer`, that of ``fuzzy-5b-yield-tracks``)
+  adjusts the command: it predicts the obstacles from successive scans and speeds the robot out of
+  the way of, or slows and swerves from, what would run into it.
 - :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
   (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
   escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
   while it follows a boundary.
 
-All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernels.robust`).
+All three layers run inside the simulator's compiled step (:mod:`fuzzynav.kernels.robust`); the
+yield layer, among moving obstacles only, runs in Python after it, so a static scenario's run is
+the compiled step's alone, unchanged.
 """
 
 from __future__ import annotations
@@ -47,6 +53,7 @@ from __future__ import annotations
 from dataclasses import fields, replace
 
 from fuzzynav.control.robust import RobustNavigator
+from fuzzynav.control.yield_layer import YieldLayer
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.kernels.layers import Guidance, Pace
@@ -77,12 +84,13 @@ def _replaced(record, values: dict | None, field: str):
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
-                        **options) -> RobustNavigator:
+                        yield_in_traffic: bool = True, **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
     values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
     can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did;
-    ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did)."""
+    ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did;
+    ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did)."""
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
 
     navigator = FiveBehaviourNavigator(gap=True, **options)
@@ -90,4 +98,5 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape,
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
                            pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True,
-                           forget_moving=forget_moving)
+                           forget_moving=forget_moving,
+                           traffic=YieldLayer(tracks=True) if yield_in_traffic else None)

@@ -125,7 +125,8 @@ class BatchSimulator:
                 each.for_traffic(bool(scenario.world.moving))
         self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
-        compiled = len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
+        compiled = (len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
+                    and getattr(copies[0], "in_step", True))  # False: a layer of it runs in Python now
         self._compiled = copies[0].compiled if compiled else None
         self.reset()
 
