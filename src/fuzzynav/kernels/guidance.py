@@ -229,14 +229,15 @@ def plan(state, params, seen, robot, t, radius):
 
 
 @jit
-def manoeuvre(state, params, points, count, x, y, theta, dt, quick):
+def manoeuvre(state, params, seen, x, y, theta, dt, quick):
     """(moving, α, V): this step of the car route's arc, if the layer is driving one (module
-    docstring); when the arc is done or the step is not safe, the route is planned again at the
-    next step. A forward arc is driven at ``quick`` (the pace on its arc,
+    docstring; ``seen`` the remembered points, a :class:`~fuzzynav.kernels.records.Sightings`);
+    when the arc is done or the step is not safe, the route is planned again at the next step. A forward arc is driven at ``quick`` (the pace on its arc,
     :func:`fuzzynav.kernels.pace.car_pace`) where that is above ``guide_car_speed`` and the step
     is safe at it, at most the speed that ends the arc in this step."""
     if state[STATE.guide_gear] == 0.0:
         return False, 0.0, 0.0
+    points, count = seen.points, seen.count
     backwards = state[STATE.guide_gear] < 0
     speed = -min(params[PARAM.v_back], params[PARAM.max_reverse_speed]) if backwards else params[PARAM.guide_car_speed]
     unfinished = state[STATE.guide_driven] < state[STATE.guide_run] - 1e-9

@@ -88,7 +88,7 @@ def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
         code = labels + 2
     if p[PARAM.guide] != 0.0 and state[STATE.phase] == NO_PHASE:
         quick = pace.car_pace(ranges, angles, max_range, p, state, distance)
-        moving, a, u = guidance.manoeuvre(state, p, points, count, x, y, theta, dt, quick)
+        moving, a, u = guidance.manoeuvre(state, p, remembered, x, y, theta, dt, quick)
         if moving:
             return a, u, labels + (3 if u < 0 else 4)
     if p[PARAM.recovery] == 0.0 or p[PARAM.max_reverse_speed] <= 0:
