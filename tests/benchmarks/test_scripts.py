@@ -82,6 +82,7 @@ def test_anfis_bench_reports_peers_it_cannot_run(monkeypatch):
 # arguments, text its output must hold). The peers a script compares with are found only through
 # its flags or environment variables; without them it says what it did not run.
 SMALLEST = [
+    ("default_cost.py", ("--parts", "--n", "2", "--robots", "1", "--steps", "10"), '"benchmark": "default_cost"'),
     ("astar_backing.py", ("--n", "1", "--json"), '"benchmark": "astar_backing"'),
     ("astar_planners.py", ("mixed:1", "--episodes", "--json"), '"plan_median_s"'),
     ("bench_overhead.py", ("--worlds", "1", "--repeats", "1", "--controllers", "goal-seeking", "--json"), '"cpu_ratio"'),
