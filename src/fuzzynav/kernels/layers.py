@@ -85,6 +85,8 @@ class Recovery:
     """m: the rays within ±31° reading this much free end the turn"""
     recovery_time: float
     """s: the longest manoeuvre"""
+    barrier: float = 0.0
+    """share of the body's gap to the nearest point a step within ``margin`` may close (0: none)"""
 
 
 @dataclass(frozen=True, kw_only=True)

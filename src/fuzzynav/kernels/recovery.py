@@ -62,13 +62,12 @@ def command(state, params, seen, pose, ranges, angles, dt, t):
     (only after an arc) ends after
     ``turn_angle``, when the rays within ±31° read the lane free, or when not safe; the whole
     manoeuvre after ``recovery_time``."""
-    points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
+    x, y, theta = pose.x, pose.y, pose.theta
     if t - state[STATE.t_recovery] > params[PARAM.recovery_time]:
         state[STATE.phase] = NO_PHASE
     if state[STATE.phase] == BACK:
         backed = math.hypot(x - state[STATE.start_x], y - state[STATE.start_y])
-        if backed < params[PARAM.back_distance] and safe(params, points, count, x, y, theta,
-                                                          state[STATE.back_speed], dt):
+        if backed < params[PARAM.back_distance] and may_step(params, seen, pose, state[STATE.back_speed], dt):
             return True, state[STATE.back_steering], state[STATE.back_speed], BACK
         state[STATE.phase] = TURN if abs(state[STATE.back_steering]) > ALPHA_MAX / 4 else NO_PHASE
         state[STATE.heading] = theta
@@ -79,8 +78,8 @@ def command(state, params, seen, pose, ranges, angles, dt, t):
         for i in range(angles.shape[0]):
             if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[PARAM.lane]:
                 lane_free = False
-        if turned < params[PARAM.turn_angle] and not lane_free and safe(params, points, count, x, y, theta,
-                                                                   params[PARAM.v_turn], dt):
+        if turned < params[PARAM.turn_angle] and not lane_free and may_step(params, seen, pose,
+                                                                       params[PARAM.v_turn], dt):
             return True, steering, params[PARAM.v_turn], TURN
         state[STATE.phase] = NO_PHASE
     return False, 0.0, 0.0, NO_PHASE
@@ -95,3 +94,21 @@ def safe(params, points, count, x, y, theta, speed, dt):
     after = sightings.clearance(points, count, x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta))
     radius = params[PARAM.radius]
     return after >= radius + params[PARAM.margin] or (after >= now and after > radius + 0.01)
+
+
+@jit
+def may_step(params, seen, pose, speed, dt):
+    """:func:`safe` at ``pose`` among ``seen``, or, with ``barrier`` γ > 0, a step that closes at
+    most the share γ of the body's gap h = clearance − radius to the nearest remembered point,
+    h(after) ≥ (1 − γ) h(now) > 0: the discrete-time control barrier function condition
+    (A. Agrawal, K. Sreenath, "Discrete control barrier functions for safety-critical control of
+    discrete systems with application to bipedal robot navigation", RSS 2017). The gap never
+    closes, yet a body wedged between two points within ``margin`` (each step nearer to one of
+    them) may still back out on its arc, which the present heading alone never allows."""
+    points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
+    if safe(params, points, count, x, y, theta, speed, dt):
+        return True
+    gamma, radius = params[PARAM.barrier], params[PARAM.radius]
+    now = sightings.clearance(points, count, x, y) - radius
+    after = sightings.clearance(points, count, x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta)) - radius
+    return gamma > 0.0 and now > 0.0 and after >= (1.0 - gamma) * now
