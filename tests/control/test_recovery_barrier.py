@@ -31,3 +31,12 @@ def test_the_barrier_backs_out_of_the_wedge_where_the_default_stands_still():
     assert freed.outcome == "reached" and freed.t[-1] < 20.0
     backing = [k for k, b in enumerate(freed.behaviour) if b == "REC-BACK"]
     assert len(backing) > 5 and all(freed.speed[k] < 0 for k in backing)  # backed on, not one step
+
+
+@pytest.mark.parametrize("bad", [-0.1, 1.0, "half"])
+def test_a_barrier_outside_0_to_1_is_refused_naming_the_option(bad):
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.errors import InputError
+
+    with pytest.raises(InputError, match="barrier"):
+        make_controller("fuzzy-5b", barrier=bad)

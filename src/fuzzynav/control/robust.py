@@ -49,6 +49,7 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.base import BatchController, Command
 from fuzzynav.control.batched import readings
 from fuzzynav.control.escape import FOLLOW, LOOP
@@ -91,7 +92,7 @@ class RobustNavigator(BatchController):
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
         slots = layers.Slots(places_slots=places, route_slots=ROUTE_SLOTS if guidance else 0)
-        records = (supervisor, dataclasses.replace(RECOVERY, barrier=float(barrier)), LOOP, FOLLOW, guidance, pace, slots)
+        records = (supervisor, dataclasses.replace(RECOVERY, barrier=validation.number(barrier, "fuzzy-5b options", "barrier", lo=0.0, hi=1.0, hi_open=True)), LOOP, FOLLOW, guidance, pace, slots)
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])
         self._latency = 0.0
