@@ -37,3 +37,13 @@ def test_the_maker_builds_a_fresh_controller_each_call_and_wants_one_source():
 
 def test_rate_is_the_share_of_an_outcome():
     assert rate(["reached", "collision", "reached", "timeout"], "reached") == 0.5
+
+
+def test_evaluate_gives_the_same_result_whatever_the_workers():
+    """Every world is drawn and run alone in a worker; the episodes come back in world order."""
+    one = evaluate("fuzzy-2b", "mixed", 5, seed=4, workers=1)
+    calls = []
+    three = evaluate("fuzzy-2b", "mixed", 5, seed=4, workers=3, progress=lambda i, run: calls.append(i))
+    assert three == one
+    assert [run["scenario"] for run in three["episodes"]] == [f"mixed-4-{i:03d}" for i in range(5)]
+    assert sorted(calls) == list(range(5))

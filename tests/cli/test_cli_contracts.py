@@ -39,6 +39,12 @@ def test_negative_seed_is_a_usage_error(capsys, tmp_path, monkeypatch, argv):
     assert "Traceback" not in err and not list(tmp_path.iterdir())
 
 
+def test_evaluate_workers_out_of_range_is_a_usage_error(capsys):
+    status, err = run_cli(capsys, "evaluate", "--worlds", "circles", "--n", "1", "--workers", "0")
+    assert status == 2
+    assert "--workers: must be an integer in [1, 1024], got 0" in err and "Traceback" not in err
+
+
 def test_corrupt_npz_model_is_input_error(capsys, tmp_path):
     model = tmp_path / "model.npz"
     model.write_bytes(b"PK\x03\x04 not really a zip archive")

@@ -13,9 +13,12 @@ files do not depend on the backend or on the order in which cells finished.
 
 from __future__ import annotations
 
+import multiprocessing
 import os
+import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from typing import Any
 
 from fuzzynav.bench.cells import Cell, run_cell
 from fuzzynav.errors import InputError
@@ -23,25 +26,35 @@ from fuzzynav.errors import InputError
 BACKENDS = ("local", "ray")
 
 
-def _local(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None]) -> None:
+def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[[int, Any], None], *,
+             initializer: Callable | None = None, initargs: tuple = ()) -> None:
+    """Run ``task(item)`` for every item, in this process (``workers`` = 1) or in a pool of
+    ``workers`` processes whose ``initializer(*initargs)`` runs once each; ``on_result(index,
+    result)`` per finished item, in the order they finish. A bounded window of items is in flight,
+    so memory stays flat on long runs. On Linux the workers are forked: they start with this
+    process' imports and loaded kernels."""
     if workers == 1:
-        for cell in cells:
-            on_rows(run_cell(cell))
+        if initializer is not None:
+            initializer(*initargs)
+        for index, item in enumerate(items):
+            on_result(index, task(item))
         return
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        pending = set()
-        queue = iter(cells)
-        for cell in queue:  # keep a bounded window in flight: memory stays flat on long campaigns
-            pending.add(pool.submit(run_cell, cell))
+    context = multiprocessing.get_context("fork") if sys.platform == "linux" else None
+    with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=initializer,
+                             initargs=initargs) as pool:
+        queue = enumerate(items)
+        pending = {}
+        for index, item in queue:
+            pending[pool.submit(task, item)] = index
             if len(pending) >= 4 * workers:
                 break
         while pending:
-            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:
-                on_rows(future.result())
+                on_result(pending.pop(future), future.result())
                 following = next(queue, None)
                 if following is not None:
-                    pending.add(pool.submit(run_cell, following))
+                    pending[pool.submit(task, following[1])] = following[0]
 
 
 def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None], address: str | None) -> None:
@@ -69,7 +82,7 @@ def execute(cells: Sequence[Cell], on_rows: Callable[[list[dict]], None], *, bac
             workers: int = 1, address: str | None = None) -> None:
     """Run every cell on ``backend`` with ``workers`` processes; ``on_rows(rows)`` per finished cell."""
     if backend == "local":
-        _local(cells, workers, on_rows)
+        pool_map(run_cell, cells, workers, lambda _, rows: on_rows(rows))
     elif backend == "ray":
         _ray(cells, workers, on_rows, address)
     else:

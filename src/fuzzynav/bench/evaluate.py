@@ -14,7 +14,7 @@ so ``fuzzynav run FILE`` reruns it.
 
 What it is beside a campaign (:mod:`fuzzynav.bench.campaign`): the same worlds, episodes and
 outcome rates, for one controller on one family and one seed, returned rather than written —
-no runs file, resume, workers, seeds, shortest paths (the path ratio, the BARN score) or
+no runs file, resume, seeds, shortest paths (the path ratio, the BARN score) or
 confidence intervals; what it adds is a sensor ring chosen for every world, factory options
 and rule bases given as objects (the chapter IV experiments), and the failed worlds saved.
 """
@@ -27,12 +27,13 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav import progress as progress_bars
+from fuzzynav.bench.backends import pool_map
 from fuzzynav.bench.cells import controller_maker
 from fuzzynav.bench.stats import rate
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.plants import DEFAULT_PLANT
-from fuzzynav.world.generate import generate_worlds
+from fuzzynav.world.generate import check_family, generate_world
 
 
 def save_failure(folder: str | Path, scenario, trace, controllers: tuple[str, ...] = ()) -> Path:
@@ -47,16 +48,41 @@ def save_failure(folder: str | Path, scenario, trace, controllers: tuple[str, ..
     return path
 
 
+_JOB: dict = {}
+"""What every world of the current :func:`evaluate` shares (set in each worker by :func:`_share`)."""
+
+
+def _share(job: dict) -> None:
+    _JOB.clear()
+    _JOB.update(job)
+
+
+def _world(index: int) -> dict:
+    """One episode of the shared job on its world ``index`` (drawn here, so the workers share the
+    drawing too): its outcome numbers (and the saved failure)."""
+    scenario = generate_world(_JOB["worlds"], _JOB["seed"], index)
+    trace = run_episode(scenario, _JOB["build"](), seed=_JOB["seed"], sensors=_JOB["ring"], plant=_JOB["plant"])
+    numbers = metrics(trace, scenario)
+    run = {key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m", "min_clearance_m")}
+    if numbers["invalid_command"] is not None:
+        run["invalid_command"] = numbers["invalid_command"]
+    if _JOB["save_failures"] is not None and numbers["outcome"] != "reached":
+        run["saved"] = str(save_failure(_JOB["save_failures"], scenario, trace, _JOB["named"]))
+    return run
+
+
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
              systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None,
-             options: dict | None = None, plant: str = DEFAULT_PLANT) -> dict:
+             options: dict | None = None, plant: str = DEFAULT_PLANT, workers: int = 1) -> dict:
     """Run the registered ``controller`` (with its fuzzy ``systems`` replaced by role, if given, and
     the keyword ``options`` of its factory, e.g. ``layers=``) —
     or the one stored in the ``model`` file — on ``n`` seeded worlds of family ``worlds``, with the
     sensor ring named ``sensors`` (default: the controller's, :func:`fuzzynav.sim.simulator.default_ring`);
-    ``progress(i, outcome)`` is called after each world; ``plant`` moves the robot
-    (:mod:`fuzzynav.sim.plants`).
+    ``progress(i, outcome)`` is called after each world (in the order they finish); ``plant`` moves
+    the robot (:mod:`fuzzynav.sim.plants`); ``workers`` processes share the worlds
+    (:func:`fuzzynav.bench.backends.pool_map`): every episode is seeded alone, so the result does
+    not depend on ``workers``.
 
     A model is loaded once and every episode runs a copy of it, as a registered controller is
     built afresh per world (:class:`~fuzzynav.bench.cells.controller_maker`). A progress bar shows on a terminal
@@ -64,24 +90,23 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
     """
     build = controller_maker(controller, model=model, systems=systems, options=options)
     controller = build.name
-    ring = None if sensors is None else named_ring(sensors)
-    scenarios = generate_worlds(worlds, n, seed)
-    runs = []
-    bar = progress_bars.bar(total=len(scenarios), desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
-    for i, scenario in enumerate(scenarios):
-        trace = run_episode(scenario, build(), seed=seed, sensors=ring, plant=plant)
-        numbers = metrics(trace, scenario)
-        runs.append({key: numbers[key] for key in ("scenario", "outcome", "time_s", "path_length_m",
-                                                    "min_clearance_m")})
-        if numbers["invalid_command"] is not None:
-            runs[-1]["invalid_command"] = numbers["invalid_command"]
-        if save_failures is not None and numbers["outcome"] != "reached":
-            named = () if model is not None else (controller,)
-            runs[-1]["saved"] = str(save_failure(save_failures, scenario, trace, named))
+    n, seed = check_family(worlds, n, seed)
+    job = {"build": build, "worlds": worlds, "seed": seed, "ring": None if sensors is None else named_ring(sensors), "plant": plant,
+           "save_failures": save_failures, "named": () if model is not None else (controller,)}
+    runs: list = [None] * n
+    reached_so_far = 0
+    bar = progress_bars.bar(total=n, desc=f"{controller} on {worlds} worlds", unit="world", leave=False)
+
+    def finished(i: int, run: dict) -> None:
+        nonlocal reached_so_far
+        runs[i] = run
+        reached_so_far += run["outcome"] == "reached"
         bar.update()
-        bar.set_postfix(reached=sum(r["outcome"] == "reached" for r in runs))
+        bar.set_postfix(reached=reached_so_far)
         if progress is not None:
-            progress(i, runs[-1])
+            progress(i, run)
+
+    pool_map(_world, range(n), max(1, min(workers, n)), finished, initializer=_share, initargs=(job,))
     bar.close()
     outcomes = [r["outcome"] for r in runs]
     reached = np.array(outcomes) == "reached"

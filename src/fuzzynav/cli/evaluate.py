@@ -1,4 +1,4 @@
-"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--sensors RING] [--json]``.
+"""``fuzzynav evaluate --controller NAME | --model FILE --worlds circles|mixed [--n 100] [--seed 0] [--sensors RING] [--workers N] [--json]``.
 
 Runs a built-in controller or a trained model file (``fuzzynav train``) over N seeded, solvable
 generated worlds (:mod:`fuzzynav.world.generate`) and reports the success, collision and timeout
@@ -6,13 +6,15 @@ rates, the mean time and the mean path length of the successful episodes
 (:func:`fuzzynav.bench.evaluate.evaluate`). ``--json`` prints exactly one JSON object
 (with the per-world outcomes); otherwise a short table, with ``--progress`` one line per world on
 stderr. A progress bar shows on a terminal (not with ``--quiet`` or ``--json``).
-``--save-failures DIR`` writes every world not reached as ``DIR/<world>.yaml`` with the plot of its
+The worlds are shared among ``--workers`` processes (default: one per core); every episode is
+seeded alone, so the numbers do not depend on it. ``--save-failures DIR`` writes every world not reached as ``DIR/<world>.yaml`` with the plot of its
 episode, ``DIR/<world>.png``: ``fuzzynav run DIR/<world>.yaml --controller NAME`` reruns it.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -46,6 +48,9 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
+    parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
+                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the number of cores); "
+                             "the result does not depend on it")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -81,7 +86,7 @@ def run(args) -> int:
     with progress_bars.quiet(args.quiet or args.json or args.progress):
         result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
                           model=args.model, systems=systems, save_failures=args.save_failures,
-                          sensors=args.sensors, plant=args.plant)
+                          sensors=args.sensors, plant=args.plant, workers=args.workers or os.cpu_count() or 1)
     if args.json:
         print(json.dumps(result))
         return 0

@@ -174,12 +174,18 @@ def generate_world(kind: str, seed: int, i: int, **options) -> Scenario:
     return random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
 
 
-def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenario]:
-    """``n`` solvable worlds of family ``kind``; world ``i`` depends only on ``(kind, seed, i)``."""
+def check_family(kind: str, n: int, seed: int) -> tuple[int, int]:
+    """``(n, seed)`` of a request for ``n`` worlds of family ``kind``, checked (an
+    :class:`~fuzzynav.errors.InputError` names the option at fault)."""
     if kind not in KINDS:
         raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
-    n = validation.count(n, field="--n", hi=validation.MAX_WORLDS)
-    seed = validation.seed(seed, field="--seed")
+    return validation.count(n, field="--n", hi=validation.MAX_WORLDS), validation.seed(seed, field="--seed")
+
+
+def generate_worlds(kind: str, n: int, seed: int = 0, **options) -> list[Scenario]:
+    """``n`` solvable worlds of family ``kind``; world ``i`` depends only on ``(kind, seed, i)``
+    (:func:`generate_world`)."""
+    n, seed = check_family(kind, n, seed)
     return [generate_world(kind, seed, i, **options) for i in range(n)]
 
 
