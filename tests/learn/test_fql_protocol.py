@@ -14,7 +14,7 @@ from fuzzynav.experiments.chapter6 import initial_avoider
 from fuzzynav.experiments.evaluation import evaluate_avoid
 from fuzzynav.learn.envs import GridPremise
 from fuzzynav.learn.schedules import InverseVisits
-from fuzzynav.learn.tasks import common, fql_avoid, tabular_goal
+from fuzzynav.learn.tasks import common, fql_avoid, fql_wall, tabular_goal
 from fuzzynav.learn.tasks.common import TrainRequest
 
 
@@ -30,6 +30,10 @@ def test_one_robot_zero_q_and_best_quality_unless_parallel_is_asked(tmp_path):
     assert steering.learner.terminal_bootstrap
     parallel = next(fql_avoid.fql_avoid_phases(tmp_path / "p.json", 10, batch=10, prior="none"))
     assert not parallel.learner.terminal_bootstrap
+    # so does the wall follower, in both phases
+    steering, speed = fql_wall.fql_wall_phases(tmp_path / "w.json", 10, batch=1)
+    assert steering.learner.terminal_bootstrap and speed.learner.terminal_bootstrap
+    assert not next(fql_wall.fql_wall_phases(tmp_path / "wp.json", 10, batch=10)).learner.terminal_bootstrap
 
 
 def test_the_initial_tables_of_the_priors():

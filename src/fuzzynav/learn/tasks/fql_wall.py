@@ -54,7 +54,8 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing
     """Steering (eq VI.21) then speed (eq VI.22) interpretations, from the hand-made follower:
     the a-priori knowledge the thesis injects here ("le contrôleur précédent est optimisé",
     §VI.5.3.2) is that rule base, each rule's prior being its label's own value (every q still
-    starts at 0). ``batch`` robots per batch (1: the thesis' protocol).
+    starts at 0). ``batch`` robots per batch (1: the thesis' protocol, in which a collision's
+    step is bootstrapped as Algorithm VI.1 writes it: −2 + γ V*(s'), §VI.4).
 
     ``sensing`` is how the learner reads d_d, d_f, d_g (:data:`fuzzynav.control.learned.SENSING`):
     by default the single rays at −90°, 0°, +90° of the hand-made follower, so that what learning
@@ -69,14 +70,18 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing
         return sides(s.ranges)[:, WALL_COLUMNS]
 
     tolerance = common.extraction_tolerance(batch, WALL_TOLERANCE)
-    steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    # Algorithm VI.1 values the state a collision reaches like any other (as the avoider does)
+    bootstrap = common.thesis_protocol(batch)
+    steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch,
+                               terminal_bootstrap=bootstrap)
     n_steer = common.steering_episodes(episodes, common.SPEED_SHARE)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield common.Phase("steering", env, steer, n_steer, common.checkpoint_path(out, "steering"),
                        common.WORLD_CONVERGENCE)
-    fast = common.fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
+    fast = common.fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch,
+                              terminal_bootstrap=bootstrap)
     env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), tolerance)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
