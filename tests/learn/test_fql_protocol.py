@@ -14,7 +14,7 @@ from fuzzynav.experiments.chapter6 import initial_avoider
 from fuzzynav.experiments.evaluation import evaluate_avoid
 from fuzzynav.learn.envs import GridPremise
 from fuzzynav.learn.schedules import InverseVisits
-from fuzzynav.learn.tasks import common, fql_avoid, fql_wall, tabular_goal
+from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
 from fuzzynav.learn.tasks.common import TrainRequest
 
 
@@ -34,6 +34,10 @@ def test_one_robot_zero_q_and_best_quality_unless_parallel_is_asked(tmp_path):
     steering, speed = fql_wall.fql_wall_phases(tmp_path / "w.json", 10, batch=1)
     assert steering.learner.terminal_bootstrap and speed.learner.terminal_bootstrap
     assert not next(fql_wall.fql_wall_phases(tmp_path / "wp.json", 10, batch=10)).learner.terminal_bootstrap
+    # and the goal seekers (every FQL task of the thesis' protocol: common.fql_learner)
+    task = fql_goal.GOAL_TASKS["fql-goal"]
+    assert all(phase.learner.terminal_bootstrap for phase in fql_goal.goal_fql_phases(task, tmp_path / "g.json", 10))
+    assert not next(fql_goal.goal_fql_phases(task, tmp_path / "gp.json", 10, batch=10)).learner.terminal_bootstrap
 
 
 def test_the_initial_tables_of_the_priors():

@@ -25,7 +25,7 @@ from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.fuzzy.systems_navigation import D_MAX
 from fuzzynav.gym.episodes import unscale_actions
 from fuzzynav.learn.envs import GridPremise
-from fuzzynav.learn.tasks.common import fql_learner, grid_system, output_variable, steering_episodes, thesis_protocol
+from fuzzynav.learn.tasks.common import fql_learner, grid_system, output_variable, steering_episodes
 from fuzzynav.learn.tasks.fql_avoid import (
     AVOID_SPEED,
     AVOID_SPEED_SHARE,
@@ -60,9 +60,8 @@ class NavigatorAvoidance:
         self.batch = batch
         self.switch_at = steering_episodes(max(int(total_steps), 2), AVOID_SPEED_SHARE)  # steps of phase 1
         self.columns = [list(head_names).index(h) for h in HEADS]
-        self.bootstrap = thesis_protocol(batch)  # a collision valued as the task values it (fql_avoid_phases)
         self.steer = fql_learner(self.premise, _avoid_candidates(AVOID_STEERING, self.open_side), 0.0, batch,
-                                 prior=self.initial[0], alpha=avoid_rate(), terminal_bootstrap=self.bootstrap)
+                                 prior=self.initial[0], alpha=avoid_rate())
         self.speed = None  # the speed learner, from the switch on
         self.steering_rules = None  # the extracted steering, frozen at the switch
         self.episodes_at_switch = 0
@@ -110,7 +109,7 @@ class NavigatorAvoidance:
         if self.speed is None and steps >= self.switch_at:
             self.steering_rules = self.steer.greedy_indices(self.tolerance)
             self.speed = fql_learner(self.premise, _avoid_candidates(AVOID_SPEEDS, self.open_side), 0.0, self.batch,
-                                     prior=self.initial[1], alpha=avoid_rate(), terminal_bootstrap=self.bootstrap)
+                                     prior=self.initial[1], alpha=avoid_rate())
             self.episodes_at_switch = episodes
             values = self.speed.begin(seen[0], rng)
         return self._act(seen, values)

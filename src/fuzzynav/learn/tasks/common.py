@@ -337,14 +337,15 @@ def thesis_schedules() -> tuple[InverseVisits, EpsilonGreedy]:
     return InverseVisits(1.0, 1.0, THESIS["rate_floor"]), EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
 
 
-def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None,
-                terminal_bootstrap: bool = False) -> FuzzyQLearner:
+def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
     """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
 
     Thesis protocol (``batch`` 1, :data:`THESIS`): β = 1 / (1 + visits) (eq III.24) down to
-    0.01, ε = 0.3 · 0.9967^episode down to 0.02. Batch learner: β = 1 / (1 + visits) floored so
-    the B parallel corrections stay small (``alpha`` replaces it when given), ε decaying
-    0.3 → 0.02 (× 0.85 per batch). ``terminal_bootstrap``: :class:`~fuzzynav.learn.fql.FuzzyQLearner`'s."""
+    0.01, ε = 0.3 · 0.9967^episode down to 0.02, and the step that ends an episode bootstrapped
+    like any other (Algorithm VI.1 computes V*(s') and updates q before its test "jusqu'à
+    s_t ∈ F", §VI.4: :class:`~fuzzynav.learn.fql.FuzzyQLearner`'s ``terminal_bootstrap``). Batch
+    learner: β = 1 / (1 + visits) floored so the B parallel corrections stay small (``alpha``
+    replaces it when given), ε decaying 0.3 → 0.02 (× 0.85 per batch), no bootstrap at the end."""
     if thesis_protocol(batch):
         alpha, policy = thesis_schedules()
     else:
@@ -352,7 +353,7 @@ def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior
         policy = EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02))
     return FuzzyQLearner(premise, candidates, gamma=THESIS["gamma"], alpha=alpha, policy=policy, lam=lam,
                          normalise=False, prior=prior, initial_q=THESIS["initial_q"],
-                         terminal_bootstrap=terminal_bootstrap)
+                         terminal_bootstrap=thesis_protocol(batch))
 
 
 def protocol_record(batch: int, prior: str) -> dict:

@@ -195,11 +195,8 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
 
     steering_prior, speed_prior = initial_tables(prior, open_side)
     tolerance = prior_tolerance(prior, batch)
-    # Algorithm VI.1 values every new state s', the one a collision reaches included (V*(s') is computed
-    # before the test "jusqu'à s_t ∈ F"): a collision costs −4 + γ V*(s'), not −4 (docs/results/chapter-vi.md)
-    bootstrap = common.thesis_protocol(batch)
     steer = common.fql_learner(premise, _avoid_candidates(AVOID_STEERING, open_side), 0.0, batch,
-                        prior=steering_prior, alpha=avoid_rate(), terminal_bootstrap=bootstrap)
+                        prior=steering_prior, alpha=avoid_rate())
     n_steer = common.steering_episodes(episodes, AVOID_SPEED_SHARE)
     env = RobotEnv(layout, observe, steer_command, AvoidSteeringReward(D_MAX), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
@@ -213,7 +210,7 @@ def fql_avoid_phases(out: Path, episodes: int, batch: int = AVOID_BATCH, open_si
         return navigate(s, steer.action(observe(s), steering_rules)[:, 0], lambda free: a[:, 0])
 
     speed = common.fql_learner(premise, _avoid_candidates(AVOID_SPEEDS, open_side), 0.0, batch, prior=speed_prior,
-                        alpha=avoid_rate(), terminal_bootstrap=bootstrap)
+                        alpha=avoid_rate())
     env = RobotEnv(layout, observe, speed_command, AvoidSpeedReward(D_MAX, low=1.0), batch=batch,
                    max_steps=AVOID_MAX_STEPS // AVOID_DECISION, tolerance=common.GOAL_TOLERANCE, sensors=sensors,
                    decision_steps=AVOID_DECISION)

@@ -70,18 +70,14 @@ def fql_wall_phases(out: Path, episodes: int, batch: int = common.BATCH, sensing
         return sides(s.ranges)[:, WALL_COLUMNS]
 
     tolerance = common.extraction_tolerance(batch, WALL_TOLERANCE)
-    # Algorithm VI.1 values the state a collision reaches like any other (as the avoider does)
-    bootstrap = common.thesis_protocol(batch)
-    steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch,
-                               terminal_bootstrap=bootstrap)
+    steer = common.fql_learner(premise, alpha, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     n_steer = common.steering_episodes(episodes, common.SPEED_SHARE)
     env = RobotEnv(layout, observe, lambda a, s: (a[:, 0], handmade.evaluate(observe(s))[:, 1]),
                    WallSteeringReward(WALL_D_M), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
     yield common.Phase("steering", env, steer, n_steer, common.checkpoint_path(out, "steering"),
                        common.WORLD_CONVERGENCE)
-    fast = common.fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch,
-                              terminal_bootstrap=bootstrap)
+    fast = common.fql_learner(premise, speed, 0.0, batch, prior=1, alpha=AVOID_RATE / batch)
     env = RobotEnv(layout, observe, lambda a, s: (steer.greedy_action(observe(s), tolerance)[:, 0], a[:, 0]),
                    WallSpeedReward(WALL_D_S), batch=batch, max_steps=WALL_MAX_STEPS // WALL_DECISION,
                    sensors=sensors, decision_steps=WALL_DECISION, sides=sides)
