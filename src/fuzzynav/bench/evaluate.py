@@ -106,8 +106,11 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
         if progress is not None:
             progress(i, run)
 
-    pool_map(_world, range(n), max(1, min(workers, n)), finished, initializer=_share, initargs=(job,))
-    bar.close()
+    try:
+        pool_map(_world, range(n), max(1, min(workers, n)), finished, initializer=_share, initargs=(job,))
+    finally:
+        _JOB.clear()  # in one process the job was shared here: do not keep its controller alive
+        bar.close()
     outcomes = [r["outcome"] for r in runs]
     reached = np.array(outcomes) == "reached"
     return {
