@@ -4,7 +4,8 @@
 import numpy as np
 import pytest
 
-from fuzzynav.control.sighting_tracks import CONFIRM, MEMORY, SightingTracks, _first_contact, clusters
+from fuzzynav.control.sighting_tracks import CONFIRM, MEMORY, SightingTracks, clusters
+from fuzzynav.kernels.scan_tracks import first_contact
 
 DT = 0.1
 
@@ -63,4 +64,4 @@ def test_standing_echoes_make_no_track():
     ((3.0, 4.0), (-0.6, -0.8), 2.0, 3.0),       # straight at it at 1 m/s from 5 m
 ])
 def test_first_contact_is_the_collision_cone_in_closed_form(p, w, reach, expected):
-    assert _first_contact(np.array(p), np.array(w), reach) == pytest.approx(expected)
+    assert first_contact(*p, *w, reach) == pytest.approx(expected)

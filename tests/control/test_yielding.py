@@ -5,7 +5,9 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.control.yield_layer import _closing, yield_system
+from fuzzynav.control.yield_layer import yield_system
+from fuzzynav.kernels import scan_tracks, threats
+from fuzzynav.kernels.records import Scans, ThreatSettings
 from fuzzynav.sim.simulator import run_episode
 from fuzzynav.world.generate import generate_world
 
@@ -21,17 +23,28 @@ def scan(centre, radius, origin, angles):
     return origin + t[:, None] * d, hit & (t > 0)
 
 
+def _ttc(now, seen, robot_now, before, valid, robot_before, angles):
+    """The compiled two-scan cue (no tracks) of one robot at ``robot_now`` heading along x."""
+    ranges = np.where(seen, np.hypot(*(now - robot_now).T), 8.0)
+    pose = np.array([[*robot_now, 0.0]])
+    settings = ThreatSettings(t=0.1, dt=0.1, max_range=8.0, mover_speed=0.3, horizon=3.0, track_range=6.0,
+                              tracked_beyond=np.pi / 3, radius=0.3, tracks=False)
+    previous = Scans(before[None].copy(), valid[None].copy(), robot_before[None].copy())
+    ttc, bearing, _ = threats.threats(pose, np.array([0.8]), ranges[None], angles, np.ones(1, dtype=bool), previous,
+                                      scan_tracks.empty(1), settings)
+    return ttc[0], bearing[0]
+
+
 def test_a_standing_surface_is_no_threat_and_an_approaching_one_is():
     angles = np.deg2rad(np.arange(-30.0, 31.0, 1.0))
     robot_before, robot_now = np.array([0.0, 0.0]), np.array([0.08, 0.0])  # driving at 0.8 m/s
     before, valid = scan([2.5, 0.0], 0.4, robot_before, angles)
     now, seen = scan([2.5, 0.0], 0.4, robot_now, angles)
-    gap, _ = _closing(now[seen], robot_now, before, valid, robot_before, 0.1, 0.3)
-    assert np.isinf(gap).all()
+    assert _ttc(now, seen, robot_now, before, valid, robot_before, angles)[0] == np.inf
     now, seen = scan([2.4, 0.0], 0.4, robot_now, angles)  # the disc came 0.1 m closer: 1 m/s towards the robot
-    gap, closing = _closing(now[seen], robot_now, before, valid, robot_before, 0.1, 0.3)
-    j = np.argmin(gap / closing)
-    assert gap[j] == pytest.approx(2.4 - 0.4 - 0.08, abs=1e-6) and closing[j] == pytest.approx(1.8, abs=1e-6)
+    ttc, bearing = _ttc(now, seen, robot_now, before, valid, robot_before, angles)
+    # gap 2.4 − 0.4 − 0.08 m closed at 1.8 m/s, straight ahead
+    assert ttc == pytest.approx((2.4 - 0.4 - 0.08) / 1.8, abs=1e-6) and bearing == 0.0
 
 
 def test_the_rule_base_waits_for_long_times_and_acts_on_short_ones():

@@ -1,117 +1,74 @@
 """Moving obstacles tracked from successive range scans, and their time to collision under a
-constant-velocity prediction — what ``fuzzy-5b-yield`` reads (docs/dynamic.md).
+constant-velocity prediction, for one robot — what ``dwa-tracks`` and ``vfh-tracks`` read
+(:mod:`fuzzynav.control.classic.local_map`; docs/dynamic.md). The tracker itself is compiled
+(:mod:`fuzzynav.kernels.scan_tracks`, whose docstring gives the method: clusters of moved echoes,
+gated association, velocity fitted over ``WINDOW`` sightings, the collision cone of Fiorini &
+Shiller's velocity obstacles); the yield layer runs it for a batch of robots
+(:mod:`fuzzynav.kernels.threats`).
 
-Each step, the beams whose echo lies off the previous scan's outline (it moved) are grouped into
-clusters (neighbouring beams less than ``JOIN`` m apart); a cluster's centre is its mean point
-pushed away from the robot by half its extent (a disc seen from one side). A cluster extends the
-track whose predicted centre lies within ``GATE`` m of it, or starts a new one. A track's
-velocity is the least-squares slope of its last ``WINDOW`` sightings, so a 0.1 s step's noise is
-averaged over up to a second; a track is confirmed after ``CONFIRM`` sightings, and kept — its
-centre predicted at constant velocity — ``MEMORY`` s after its last one, so an obstacle that
-walks into the lidar's blind sector behind the robot is still avoided.
-
-The time to collision of a confirmed track is the first time t ≥ 0 at which the relative
-position p + w t (w: the track's velocity less the robot's) comes within the sum of the radii:
-the collision-cone test of velocity obstacles (P. Fiorini, Z. Shiller, "Motion planning in
-dynamic environments using velocity obstacles", IJRR 17(7), 1998), solved in closed form; a
-track whose relative motion misses the robot has none (inf).
-
-:class:`ScanTracker` feeds one robot's observations to its tracks, for the navigators that decide
-one robot at a time and plan against the predicted positions (``dwa-tracks``, ``vfh-tracks``:
-:mod:`fuzzynav.control.classic.local_map`); ``fuzzy-5b-yield-tracks`` feeds a batch of them
-itself (:mod:`fuzzynav.control.yielding`), through the same :func:`moved_echoes`.
+:class:`ScanTracker` feeds one robot's observations to its :class:`SightingTracks`, the
+tracks of one robot seen as :class:`Track` records.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-JOIN = 0.6  # m: neighbouring moved echoes closer than this belong to one obstacle
-GATE = 1.0  # m: a cluster extends a track whose predicted centre is this close
-WINDOW = 8  # sightings in a track's velocity fit
-CONFIRM = 5  # sightings before a track is believed
-MIN_SPEED = 0.4  # m/s: a slower track is taken for noise of the outline test
-MEMORY = 2.0  # s: a track unseen this long is forgotten
-MARGIN = 0.2  # m added to the sum of the radii
+from fuzzynav.kernels import outline, scan_tracks
+from fuzzynav.kernels.records import Tracks
+from fuzzynav.kernels.scan_tracks import CONFIRM, JOIN, MARGIN, MEMORY, MIN_SPEED, WINDOW
+
+__all__ = ["CONFIRM", "JOIN", "MARGIN", "MEMORY", "MIN_SPEED", "WINDOW", "ScanTracker", "SightingTracks", "Track",
+           "clusters", "moved_echoes", "off_outline", "tracked_variant"]
 
 
 def clusters(points: np.ndarray, moved: np.ndarray, here: np.ndarray) -> list[tuple[np.ndarray, float]]:
     """(centre, radius) of each group of neighbouring moved echoes (``points`` (B, 2) in beam
-    order, ``moved`` (B,) bool) seen from ``here``."""
-    found: list[tuple[np.ndarray, float]] = []
-    index = np.flatnonzero(moved)
-    if not len(index):
-        return found
-    breaks = np.flatnonzero(np.hypot(*np.diff(points[index], axis=0).T) > JOIN) + 1
-    for group in np.split(index, breaks):
-        if len(group) < 2:
-            continue
-        seen = points[group]
-        radius = max(0.2, 0.5 * float(np.hypot(*(seen[-1] - seen[0]))))
-        middle = seen.mean(axis=0)
-        away = middle - here
-        centre = middle + 0.5 * radius * away / max(float(np.hypot(*away)), 1e-9)
-        found.append((centre, radius))
-    return found
+    order, ``moved`` (B,) bool) seen from ``here`` (:func:`fuzzynav.kernels.scan_tracks.clusters`)."""
+    centres, radii = scan_tracks.clusters(np.asarray(points, dtype=float), np.asarray(moved, dtype=bool),
+                                          np.asarray(here, dtype=float))
+    return [(centre, float(radius)) for centre, radius in zip(centres, radii)]
 
 
 class Track:
-    """One moving obstacle: its sightings (time, centre), its radius and velocity."""
+    """One tracked moving obstacle as it stands now (a copy): its sightings (``times``,
+    ``centres``, oldest first), ``radius``, ``velocity`` and whether it is ``confirmed``."""
 
-    def __init__(self, t: float, centre: np.ndarray, radius: float):
-        self.times, self.centres, self.radius = [t], [centre], radius
-        self.velocity = np.zeros(2)
+    def __init__(self, tracks: Tracks, i: int, k: int):
+        one = slice(i, i + 1), slice(k, k + 1)
+        self._one = Tracks(tracks.times[one].copy(), tracks.centres[one].copy(), tracks.sightings[one].copy(),
+                           tracks.radius[one].copy(), tracks.velocity[one].copy(), np.ones(1, np.int64))
+        n = int(tracks.sightings[i, k])
+        self.times, self.centres = self._one.times[0, 0, :n], self._one.centres[0, 0, :n]
+        self.radius, self.velocity = float(tracks.radius[i, k]), self._one.velocity[0, 0]
+        self.confirmed = bool(scan_tracks.confirmed(tracks, i, k))
 
     def predict(self, t: float) -> np.ndarray:
-        return self.centres[-1] + self.velocity * (t - self.times[-1])
-
-    def add(self, t: float, centre: np.ndarray, radius: float) -> None:
-        self.times, self.centres = (self.times + [t])[-WINDOW:], (self.centres + [centre])[-WINDOW:]
-        self.radius = max(self.radius, radius)
-        times = np.asarray(self.times) - self.times[0]
-        if len(times) >= 2 and np.ptp(times) > 0:
-            self.velocity = np.polyfit(times, np.asarray(self.centres), 1)[0]
-
-    @property
-    def confirmed(self) -> bool:
-        return len(self.times) >= CONFIRM and float(np.hypot(*self.velocity)) >= MIN_SPEED
+        """Its centre at time ``t``, at constant velocity."""
+        return np.array(scan_tracks.predict(self._one, 0, 0, float(t)))
 
 
 class SightingTracks:
-    """The tracks of one robot (module docstring)."""
+    """The tracks of one robot (:mod:`fuzzynav.kernels.scan_tracks`)."""
 
     def __init__(self):
-        self.tracks: list[Track] = []
+        self.state = scan_tracks.empty(1)
+
+    @property
+    def tracks(self) -> list[Track]:
+        """Its tracks now, oldest first."""
+        return [Track(self.state, 0, k) for k in range(int(self.state.count[0]))]
 
     def update(self, t: float, points: np.ndarray, moved: np.ndarray, here: np.ndarray) -> None:
         """Add the step's moved echoes (``points`` (B, 2) in beam order, ``moved`` (B,)) at time ``t``."""
-        free = list(self.tracks)
-        for centre, radius in clusters(points, moved, here):
-            if free:
-                gaps = [float(np.hypot(*(track.predict(t) - centre))) for track in free]
-                k = int(np.argmin(gaps))
-                if gaps[k] <= GATE:
-                    free.pop(k).add(t, centre, radius)
-                    continue
-            self.tracks.append(Track(t, centre, radius))
-        self.tracks = [track for track in self.tracks if t - track.times[-1] <= MEMORY]
+        scan_tracks.update(self.state, 0, float(t), np.asarray(points, dtype=float), np.asarray(moved, dtype=bool),
+                           np.asarray(here, dtype=float))
 
     def time_to_collision(self, t: float, pose: np.ndarray, speed: float, robot_radius: float) -> tuple[float, float]:
         """(time to collision (s, inf: none), bearing of that obstacle from the heading (rad))
         of the confirmed tracks against the robot at ``pose`` driving straight on at ``speed``."""
-        best, bearing = np.inf, 0.0
-        own = speed * np.array([np.cos(pose[2]), np.sin(pose[2])])
-        for track in self.tracks:
-            if not track.confirmed:
-                continue
-            p = track.predict(t) - pose[:2]
-            w = track.velocity - own
-            reach = robot_radius + track.radius + MARGIN
-            when = _first_contact(p, w, reach)
-            if when < best:
-                best = when
-                bearing = float(np.angle(np.exp(1j * (np.arctan2(p[1], p[0]) - pose[2]))))
-        return best, bearing
+        return scan_tracks.time_to_collision(self.state, 0, float(t), np.asarray(pose, dtype=float), float(speed),
+                                             float(robot_radius))
 
 
 def moved_echoes(points, tracked, before, valid, dt: float, mover_speed: float) -> np.ndarray:
@@ -159,34 +116,13 @@ class ScanTracker:
         return [track for track in self.tracks.tracks if track.confirmed]
 
 
-def _first_contact(p: np.ndarray, w: np.ndarray, reach: float) -> float:
-    """Smallest t ≥ 0 with |p + w t| ≤ ``reach`` (0 when already within; inf when never)."""
-    c = float(p @ p) - reach * reach
-    if c <= 0:
-        return 0.0
-    a, b = float(w @ w), 2.0 * float(p @ w)
-    disc = b * b - 4 * a * c
-    if a <= 1e-12 or b >= 0 or disc < 0:
-        return np.inf
-    return (-b - np.sqrt(disc)) / (2 * a)
-
-
-def off_outline(points, before, valid, bridge: float = 0.3):
+def off_outline(points, before, valid, bridge: float = outline.BRIDGE):
     """(distance (P,), nearest point (P, 2)) of the scan ``points`` (P, 2) to the outline of the
     scan before (``before`` (S, 2), ``valid`` (S,)): segments between neighbouring valid beams
     less than ``bridge`` m apart (distance inf when there is none) — how far each echo moved, a
-    surface that stands still being on it."""
-    a, b = before[:-1], before[1:]
-    joined = valid[:-1] & valid[1:] & (np.hypot(*(b - a).T) < bridge)
-    a, e = a[joined], (b - a)[joined]
-    if not len(a):
-        return np.full(len(points), np.inf), np.array(points, dtype=float)
-    u = np.clip(np.einsum("pk,sk->ps", points, e) - np.einsum("sk,sk->s", a, e)[None], 0.0, None)
-    u = np.minimum(u / np.maximum(np.einsum("sk,sk->s", e, e), 1e-12)[None], 1.0)
-    foot = a[None] + u[..., None] * e[None]  # (P, S, 2) nearest point of each segment
-    dist = np.hypot(*(points[:, None] - foot).transpose(2, 0, 1))
-    s = np.argmin(dist, axis=1)
-    return dist[np.arange(len(points)), s], foot[np.arange(len(points)), s]
+    surface that stands still being on it (compiled: :func:`fuzzynav.kernels.outline.off_outline`)."""
+    return outline.off_outline(np.ascontiguousarray(points, dtype=float), np.ascontiguousarray(before, dtype=float),
+                               np.ascontiguousarray(valid, dtype=bool), float(bridge))
 
 
 def tracked_variant(navigator_class, name: str):

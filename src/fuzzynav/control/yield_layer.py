@@ -7,7 +7,7 @@ dynamic obstacles (Conclusion générale; docs/dynamic.md).
 The layer reads only the range sensors and the pose the robot believes. Each scan within
 ``horizon`` m becomes points in the world frame; a point of a standing surface lies on the outline
 of the scan before (segments between neighbouring beams:
-:func:`~fuzzynav.control.sighting_tracks.off_outline`), a point of a moving obstacle lies off it
+:func:`~fuzzynav.kernels.outline.off_outline`), a point of a moving obstacle lies off it
 by what the obstacle moved. A point that moved faster than ``mover_speed`` and whose gap to
 the robot shrank gives a time to collision gap / closing speed (the closing-speed cue of Fiorini &
 Shiller's velocity obstacles, 1998, read from two range scans). The smallest one gives the layer's
@@ -22,7 +22,7 @@ the heading comes down to ``close`` m: there the navigator keeps the body off wh
 Beyond the horizon of the rules (``ttc`` long) the navigator drives alone.
 
 With ``tracks=True`` the layer also tracks the obstacles over successive scans
-(:mod:`fuzzynav.control.sighting_tracks`): their velocity fitted over up to 8 sightings, their
+(:mod:`fuzzynav.kernels.scan_tracks`): their velocity fitted over up to 8 sightings, their
 centre predicted at constant velocity for 2 s after the last one, and the first time the relative
 motion enters the collision cone (Fiorini & Shiller's velocity obstacles, IJRR 1998) is a second
 time to collision. It counts for threats more than ``tracked_beyond`` (60°) off the heading —
@@ -34,8 +34,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from fuzzynav.control.sighting_tracks import SightingTracks, moved_echoes, off_outline
 from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partition
+from fuzzynav.kernels import scan_tracks, threats
+from fuzzynav.kernels.records import Scans, ThreatSettings
 
 TTC_PEAKS = (1.0, 2.5, 4.5)  # s: short, medium, long
 SIDE_PEAKS = tuple(np.deg2rad((0.0, 45.0, 90.0, 150.0)))  # front, diagonal, abeam, behind
@@ -75,8 +76,8 @@ class YieldLayer:
 
     def reset(self) -> None:
         """Forget the scan before and the tracks (a new episode)."""
-        self._previous: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
-        self._tracks: list[SightingTracks] = []
+        self._previous: Scans | None = None
+        self._tracks = scan_tracks.empty(0)
         self._time = 0.0
 
     def for_robot(self, robot) -> None:
@@ -85,36 +86,20 @@ class YieldLayer:
         self.radius = robot.radius
 
     def threats(self, obs) -> tuple[np.ndarray, np.ndarray]:
-        """(time to collision (N,), inf when nothing comes; bearing φ of that beam (N,))."""
+        """(time to collision (N,), inf when nothing comes; bearing φ of that threat (N,)):
+        :func:`fuzzynav.kernels.threats.threats` against the scan before."""
         pose, ranges = np.asarray(obs.pose, dtype=float), np.asarray(obs.ranges, dtype=float)
-        heading = pose[:, 2:3] + np.asarray(obs.sensor_angles, dtype=float)[None]
-        points = pose[:, None, :2] + ranges[..., None] * np.stack([np.cos(heading), np.sin(heading)], axis=-1)
-        seen = ranges < min(obs.max_range - 1e-6, self.horizon)
-        previous, self._previous = self._previous, (pose[:, :2].copy(), points, ranges < obs.max_range - 1e-6)
-        n = len(ranges)
-        ttc, bearing = np.full(n, np.inf), np.zeros(n)
+        angles = np.asarray(obs.sensor_angles, dtype=float)
+        previous, n = self._previous, len(ranges)
         self._time += obs.dt
-        if previous is None or previous[1].shape != points.shape:
-            self._tracks = [SightingTracks() for _ in range(n)]
-            return ttc, bearing
-        tracked = ranges < min(obs.max_range - 1e-6, self.track_range)
-        for i in range(n):
-            if self.tracks and tracked[i].any():
-                moved = moved_echoes(points[i], tracked[i], previous[1][i], previous[2][i], obs.dt, self.mover_speed)
-                self._tracks[i].update(self._time, points[i], moved, pose[i, :2])
-                ttc[i], bearing[i] = self._tracks[i].time_to_collision(self._time, pose[i], float(obs.speed[i]),
-                                                                       self.radius)
-                if abs(bearing[i]) < self.tracked_beyond:
-                    ttc[i] = np.inf  # ahead, the closing speed read off the scans decides
-            if not seen[i].any():
-                continue
-            gap, closing = _closing(points[i][seen[i]], pose[i, :2], previous[1][i], previous[2][i], previous[0][i],
-                                    obs.dt, self.mover_speed)
-            if np.isfinite(gap).any():
-                times = gap / closing
-                j = int(np.argmin(times))
-                if times[j] < ttc[i]:
-                    ttc[i], bearing[i] = times[j], np.asarray(obs.sensor_angles)[np.flatnonzero(seen[i])[j]]
+        if previous is None or previous.points.shape[:2] != ranges.shape:  # a first scan: nothing moved yet
+            self._tracks = scan_tracks.empty(n)
+            previous = Scans(np.zeros((*ranges.shape, 2)), np.zeros(ranges.shape, dtype=bool), pose[:, :2].copy())
+        settings = ThreatSettings(self._time, float(obs.dt), float(obs.max_range), self.mover_speed, self.horizon,
+                                  self.track_range, self.tracked_beyond, self.radius, self.tracks)
+        ttc, bearing, points = threats.threats(pose, np.asarray(obs.speed, dtype=float), ranges, angles,
+                                               np.asarray(obs.active, dtype=bool), previous, self._tracks, settings)
+        self._previous = Scans(points, ranges < obs.max_range - 1e-6, pose[:, :2].copy())
         return ttc, bearing
 
     def __call__(self, obs, steering, speed, labels):
@@ -135,16 +120,3 @@ class YieldLayer:
         labels[near] = np.where(authority > 0.5, "YIELD", labels[near])
         return steering, speed, labels
 
-
-def _closing(points, here, before, valid, there, dt: float, mover_speed: float):
-    """(gap (P,), closing speed (P,)) of the scan ``points`` (P, 2) seen from ``here`` that moved
-    since the scan before (``before``, ``valid``, seen from ``there``; :func:`off_outline`): a
-    point that moved faster than ``mover_speed`` and came closer gets its gap and the speed it
-    closed it at (gap inf elsewhere)."""
-    dist, was = off_outline(points, before, valid)
-    if not np.isfinite(dist).any():
-        return np.full(len(points), np.inf), np.ones(len(points))
-    gap = np.hypot(*(points - here).T)
-    closing = (np.hypot(*(was - there).T) - gap) / dt
-    moving = (dist / dt > mover_speed) & (closing > mover_speed)
-    return np.where(moving, gap, np.inf), np.where(moving, closing, 1.0)

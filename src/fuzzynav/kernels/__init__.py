@@ -17,7 +17,10 @@ and a batch alike (one robot is a batch of one; the loops over robots are inside
   :mod:`~fuzzynav.kernels.route`) layers and the route guidance of the default ``fuzzy-5b``
   (:mod:`~fuzzynav.kernels.guidance`), on the obstacle points seen
   (:mod:`~fuzzynav.kernels.sightings`), arrays laid out in :mod:`~fuzzynav.kernels.layers`;
-- :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense.
+- :mod:`~fuzzynav.kernels.step` — the simulator's step: clip, move, stop tests, sense;
+- :mod:`~fuzzynav.kernels.threats` — the yield layer's times to collision with moving obstacles,
+  from the echoes that moved off the scan before (:mod:`~fuzzynav.kernels.outline`) and the
+  obstacles tracked over the scans (:mod:`~fuzzynav.kernels.scan_tracks`).
 
 Every kernel is a module-level function over arrays (no closures), compiled on first use and
 cached on disk (:func:`fuzzynav.jit.jit`). ``NUMBA_DISABLE_JIT=1`` runs the very

@@ -19,7 +19,10 @@ inside a kernel or in Python alike. A field's comment gives its unit.
 - :class:`Thresholds` — the behaviour selection's distances (:func:`fuzzynav.kernels.guard.select`);
 - :class:`Shares` — the learned avoider's shares of a batch (:func:`fuzzynav.kernels.learned.drive`);
 - :class:`StepNavigator`, :class:`Traffic`, :class:`Robots` — the arguments of the simulator's step
-  (:func:`fuzzynav.kernels.step.step`).
+  (:func:`fuzzynav.kernels.step.step`);
+- :class:`Tracks`, :class:`Scans`, :class:`ThreatSettings` — the moving obstacles a batch of
+  robots tracks, its scan before and the yield layer's settings (:mod:`fuzzynav.kernels.scan_tracks`,
+  :mod:`fuzzynav.kernels.threats`).
 """
 
 from __future__ import annotations
@@ -182,3 +185,37 @@ class Robots(NamedTuple):
     ranges: np.ndarray  # (N, S) m
     status: np.ndarray  # (N, 3) ints: outcome, steps taken, waypoint index
     moves: bool  # False: the step only acts and clips; another plant moves them (sim.plants)
+
+
+class Tracks(NamedTuple):
+    """The moving obstacles N robots track (:mod:`fuzzynav.kernels.scan_tracks`): robot i's are
+    its slots 0 … count[i] − 1, oldest first; a track's sightings are oldest first."""
+
+    times: np.ndarray  # (N, T, W) s, each track's last sightings
+    centres: np.ndarray  # (N, T, W, 2) m, where it was seen then
+    sightings: np.ndarray  # (N, T) ints: how many of its W rows hold
+    radius: np.ndarray  # (N, T) m
+    velocity: np.ndarray  # (N, T, 2) m/s, fitted over its sightings
+    count: np.ndarray  # (N,) ints: tracks in use
+
+
+class Scans(NamedTuple):
+    """One range scan of N robots in the world frame (:mod:`fuzzynav.kernels.threats`)."""
+
+    points: np.ndarray  # (N, B, 2) m, each beam's echo (or its reach)
+    valid: np.ndarray  # (N, B) bool: an echo, not the reach
+    here: np.ndarray  # (N, 2) m, where each robot was
+
+
+class ThreatSettings(NamedTuple):
+    """The yield layer's settings and the step's time (:func:`fuzzynav.kernels.threats.threats`)."""
+
+    t: float  # s, this step's time
+    dt: float  # s, since the scan before
+    max_range: float  # m, the lidar's reach
+    mover_speed: float  # m/s: an echo that moved slower stands still
+    horizon: float  # m: the two-scan cue reads echoes this near
+    track_range: float  # m: the tracker reads echoes this near
+    tracked_beyond: float  # rad: a track counts this far off the heading and farther
+    radius: float  # m, the robot's
+    tracks: bool  # track the moving obstacles
