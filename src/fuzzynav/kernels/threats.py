@@ -27,10 +27,13 @@ from fuzzynav.kernels.outline import BRIDGE, off_outline
 
 
 @jit
-def scan_points(poses, ranges, angles):
-    """(N, B, 2): each beam's echo (or its reach) in the world frame."""
-    points = np.empty((ranges.shape[0], ranges.shape[1], 2))
+def scan_points(poses, ranges, angles, active):
+    """(N, B, 2): each beam's echo (or its reach) in the world frame, for the ``active`` (N,)
+    robots (zeros for the others)."""
+    points = np.zeros((ranges.shape[0], ranges.shape[1], 2))
     for i in range(ranges.shape[0]):
+        if not active[i]:
+            continue
         for j in range(ranges.shape[1]):
             heading = poses[i, 2] + angles[j]
             points[i, j, 0] = poses[i, 0] + ranges[i, j] * math.cos(heading)
@@ -47,7 +50,7 @@ def threats(poses, speeds, ranges, angles, active, before, tracks, settings):
     ``active`` (N,) robots only."""
     s = settings
     n, beams = ranges.shape
-    points = scan_points(poses, ranges, angles)
+    points = scan_points(poses, ranges, angles, active)
     ttc, bearing = np.full(n, np.inf), np.zeros(n)
     seen_within = min(s.max_range - 1e-6, s.horizon)
     tracked_within = min(s.max_range - 1e-6, s.track_range) if s.tracks else -1.0
