@@ -69,7 +69,8 @@ class RobustNavigator(BatchController):
     with its ``compiled``, ``labels``, ``reset``, ``for_robot``) with the recovery and
     loop-escape layers (either can be switched off: ``recovery=False``, ``escape=False``;
     ``stop_wait``: seconds of safety stop before a recovery; ``barrier``: the recovery's
-    :attr:`~fuzzynav.kernels.layers.Recovery.barrier`, :func:`fuzzynav.kernels.recovery.may_step`) and, given ``guidance`` (a
+    :attr:`~fuzzynav.kernels.layers.Recovery.barrier`, :func:`fuzzynav.kernels.recovery.may_step`;
+    ``barrier_within``: :attr:`~fuzzynav.kernels.layers.Recovery.barrier_within`) and, given ``guidance`` (a
     :class:`fuzzynav.kernels.layers.Guidance`, e.g. :data:`fuzzynav.control.through_gaps.GUIDANCE`),
     the route guidance (:mod:`fuzzynav.kernels.guidance`) and, given ``pace`` (a
     :class:`fuzzynav.kernels.layers.Pace`, e.g. :data:`fuzzynav.control.through_gaps.PACE`), the
@@ -83,7 +84,7 @@ class RobustNavigator(BatchController):
     step: :attr:`in_step` is False); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
-                 stop_wait: float = 1.0, barrier: float = 0.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
+                 stop_wait: float = 1.0, barrier: float = 0.0, barrier_within: float = 0.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
                  compensate: bool = False, forget_moving: bool = False, traffic=None):
         self.navigator, self.name, self.compensate, self.forget_moving = navigator, name, compensate, forget_moving
         self.traffic, self._yielding = traffic, False
@@ -92,7 +93,10 @@ class RobustNavigator(BatchController):
                                        stop_wait=float(stop_wait), n_labels=len(navigator.labels))
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
         slots = layers.Slots(places_slots=places, route_slots=ROUTE_SLOTS if guidance else 0)
-        records = (supervisor, dataclasses.replace(RECOVERY, barrier=validation.number(barrier, "fuzzy-5b options", "barrier", lo=0.0, hi=1.0, hi_open=True)), LOOP, FOLLOW, guidance, pace, slots)
+        recovering = dataclasses.replace(
+            RECOVERY, barrier=validation.number(barrier, "fuzzy-5b options", "barrier", lo=0.0, hi=1.0, hi_open=True),
+            barrier_within=validation.number(barrier_within, "fuzzy-5b options", "barrier_within", lo=0.0))
+        records = (supervisor, recovering, LOOP, FOLLOW, guidance, pace, slots)
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])
         self._latency = 0.0

@@ -84,20 +84,24 @@ def _replaced(record, values: dict | None, field: str):
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
-                        yield_in_traffic: bool = True, barrier: float = 0.0, **options) -> RobustNavigator:
+                        yield_in_traffic: bool = True, barrier: float = 0.5, barrier_within: float = 0.05,
+                        **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
     values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
     can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did;
     ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did;
     ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did;
-    ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap,
-    :func:`fuzzynav.kernels.recovery.may_step`: off, measured on BARN but not made the default)."""
+    ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
+    (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
+    back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as
+    version 7 did)."""
     from fuzzynav.control.five_behaviours import FiveBehaviourNavigator
 
     navigator = FiveBehaviourNavigator(gap=True, **options)
     navigator.name = "fuzzy-5b-gap-robust"
     return RobustNavigator(navigator, navigator.name, recovery=recovery, escape=escape, barrier=barrier,
+                           barrier_within=barrier_within,
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
                            pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True,
                            forget_moving=forget_moving,

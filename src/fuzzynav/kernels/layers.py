@@ -87,6 +87,8 @@ class Recovery:
     """s: the longest manoeuvre"""
     barrier: float = 0.0
     """share of the body's gap to the nearest point a step within ``margin`` may close (0: none)"""
+    barrier_within: float = 0.0
+    """m: the barrier holds only while a back-up has covered less than this, not in the turn (0: throughout)"""
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -67,7 +67,9 @@ def command(state, params, seen, pose, ranges, angles, dt, t):
         state[STATE.phase] = NO_PHASE
     if state[STATE.phase] == BACK:
         backed = math.hypot(x - state[STATE.start_x], y - state[STATE.start_y])
-        if backed < params[PARAM.back_distance] and may_step(params, seen, pose, state[STATE.back_speed], dt):
+        within = params[PARAM.barrier_within]
+        gamma = params[PARAM.barrier] if within == 0.0 or backed < within else 0.0
+        if backed < params[PARAM.back_distance] and may_step(params, seen, pose, state[STATE.back_speed], dt, gamma):
             return True, state[STATE.back_steering], state[STATE.back_speed], BACK
         state[STATE.phase] = TURN if abs(state[STATE.back_steering]) > ALPHA_MAX / 4 else NO_PHASE
         state[STATE.heading] = theta
@@ -78,8 +80,9 @@ def command(state, params, seen, pose, ranges, angles, dt, t):
         for i in range(angles.shape[0]):
             if abs(angles[i]) <= LANE_HALF and not ranges[i] >= params[PARAM.lane]:
                 lane_free = False
+        gamma = params[PARAM.barrier] if params[PARAM.barrier_within] == 0.0 else 0.0
         if turned < params[PARAM.turn_angle] and not lane_free and may_step(params, seen, pose,
-                                                                       params[PARAM.v_turn], dt):
+                                                                       params[PARAM.v_turn], dt, gamma):
             return True, steering, params[PARAM.v_turn], TURN
         state[STATE.phase] = NO_PHASE
     return False, 0.0, 0.0, NO_PHASE
@@ -97,18 +100,20 @@ def safe(params, points, count, x, y, theta, speed, dt):
 
 
 @jit
-def may_step(params, seen, pose, speed, dt):
-    """:func:`safe` at ``pose`` among ``seen``, or, with ``barrier`` γ > 0, a step that closes at
+def may_step(params, seen, pose, speed, dt, gamma):
+    """:func:`safe` at ``pose`` among ``seen``, or, with the barrier γ > 0, a step that closes at
     most the share γ of the body's gap h = clearance − radius to the nearest remembered point,
     h(after) ≥ (1 − γ) h(now) > 0: the discrete-time control barrier function condition
     (A. Agrawal, K. Sreenath, "Discrete control barrier functions for safety-critical control of
     discrete systems with application to bipedal robot navigation", RSS 2017). The gap never
     closes, yet a body wedged between two points within ``margin`` (each step nearer to one of
-    them) may still back out on its arc, which the present heading alone never allows."""
+    them) may still back out on its arc, which the present heading alone never allows. γ is
+    :attr:`~fuzzynav.kernels.layers.Recovery.barrier`, or 0 where
+    :attr:`~fuzzynav.kernels.layers.Recovery.barrier_within` says it no longer holds."""
     points, count, x, y, theta = seen.points, seen.count, pose.x, pose.y, pose.theta
     if safe(params, points, count, x, y, theta, speed, dt):
         return True
-    gamma, radius = params[PARAM.barrier], params[PARAM.radius]
+    radius = params[PARAM.radius]
     now = sightings.clearance(points, count, x, y) - radius
     after = sightings.clearance(points, count, x + speed * dt * math.cos(theta), y + speed * dt * math.sin(theta)) - radius
     return gamma > 0.0 and now > 0.0 and after >= (1.0 - gamma) * now
