@@ -37,7 +37,8 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
 - Among moving obstacles only (the simulator says so: ``for_traffic``), the yield / evade layer
   with tracked obstacles (:mod:`fuzzynav.control.yield_layer`, that of ``fuzzy-5b-yield-tracks``)
   adjusts the command: it predicts the obstacles from successive scans and speeds the robot out of
-  the way of, or slows and swerves from, what would run into it.
+  the way of, or slows and swerves from, what would run into it; when the command it leaves would
+  still meet a predicted track, a sampled evasive command replaces it (:mod:`fuzzynav.kernels.evasion`).
 - :class:`~fuzzynav.control.robust.RobustNavigator` around both adds the reversing recovery
   (``REC-BACK``, ``REC-TURN``) that leaves a pocket the car cannot leave forwards, and the loop
   escape (``BF``) when the robot circles anyway; the guidance aims at the escape's virtual goal
@@ -84,14 +85,16 @@ def _replaced(record, values: dict | None, field: str):
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
-                        yield_in_traffic: bool = True, barrier: float = 0.5, barrier_within: float = 0.05,
-                        **options) -> RobustNavigator:
+                        yield_in_traffic: bool = True, evade: bool = True, barrier: float = 0.5,
+                        barrier_within: float = 0.05, **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
     values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
     can be switched off: ``paced=False`` drives at the thesis' speeds, as version 2 did;
     ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did;
-    ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did;
+    ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did; ``evade=False``
+    runs it without the last check of its command against the tracks' predicted motion
+    (:mod:`fuzzynav.kernels.evasion`), as version 8 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as
@@ -105,4 +108,4 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
                            pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True,
                            forget_moving=forget_moving,
-                           traffic=YieldLayer(tracks=True) if yield_in_traffic else None)
+                           traffic=YieldLayer(tracks=True, evade=evade) if yield_in_traffic else None)

@@ -28,6 +28,10 @@ motion enters the collision cone (Fiorini & Shiller's velocity obstacles, IJRR 1
 time to collision. It counts for threats more than ``tracked_beyond`` (60°) off the heading —
 abeam, and behind in the lidar's blind sector where the two-scan cue sees nothing; ahead the
 two-scan cue decides (tracks ahead too, alone, did worse on the worlds the rules were set on).
+
+With ``evade=True`` (and ``tracks``), the command the rules leave is checked against the tracks'
+predicted motion last, and replaced by a sampled evasive one when it would run into one
+(:mod:`fuzzynav.kernels.evasion`; label ``EVADE``).
 """
 
 from __future__ import annotations
@@ -35,8 +39,9 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partition
-from fuzzynav.kernels import scan_tracks, threats
+from fuzzynav.kernels import evasion, scan_tracks, threats
 from fuzzynav.kernels.records import Scans, ThreatSettings
+from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 
 TTC_PEAKS = (1.0, 2.5, 4.5)  # s: short, medium, long
 SIDE_PEAKS = tuple(np.deg2rad((0.0, 45.0, 90.0, 150.0)))  # front, diagonal, abeam, behind
@@ -68,9 +73,11 @@ class YieldLayer:
     before and the tracks (:meth:`reset` for a new episode)."""
 
     def __init__(self, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
-                 close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0):
+                 close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0,
+                 evade: bool = False):
         self.system, self.mover_speed, self.max_speed, self.horizon = yield_system(), mover_speed, max_speed, horizon
         self.close, self.tracks, self.track_range, self.radius = close, bool(tracks), track_range, 0.3
+        self.evade, self.robot = bool(evade) and bool(tracks), DEFAULT_PARAMS
         self.tracked_beyond = np.deg2rad(tracked_beyond)
         self.reset()
 
@@ -83,7 +90,7 @@ class YieldLayer:
     def for_robot(self, robot) -> None:
         """Ask for no more than the robot's top speed; its radius for the collision cone."""
         self.max_speed = min(self.max_speed, robot.max_speed)
-        self.radius = robot.radius
+        self.radius, self.robot = robot.radius, robot
 
     def threats(self, obs) -> tuple[np.ndarray, np.ndarray]:
         """(time to collision (N,), inf when nothing comes; bearing φ of that threat (N,)):
@@ -107,9 +114,17 @@ class YieldLayer:
         (its robots' ``YIELD`` where the layer has the larger say)."""
         ttc, bearing = self.threats(obs)
         near = np.isfinite(ttc)
-        if not near.any():
+        if not near.any() and not (self.evade and self._tracks.count.any()):
             return steering, speed, labels
         steering, speed, labels = np.array(steering, dtype=float), np.array(speed, dtype=float), np.array(labels, dtype=object)
+        if near.any():
+            self._rules(obs, near, ttc, bearing, steering, speed, labels)
+        if self.evade:
+            self._evade(obs, steering, speed, labels)
+        return steering, speed, labels
+
+    def _rules(self, obs, near, ttc, bearing, steering, speed, labels) -> None:
+        """The rule base's say over the robots with a threat (``near``), in place."""
         out = self.system.evaluate(np.column_stack([np.minimum(ttc[near], 10.0), np.abs(bearing[near])]))
         ahead = np.abs(np.asarray(obs.sensor_angles)) <= np.pi / 4
         room = np.asarray(obs.ranges)[near][:, ahead].min(axis=1)  # the navigator keeps the body off what is close ahead
@@ -118,5 +133,9 @@ class YieldLayer:
         speed[near] = (1 - authority) * speed[near] + authority * wanted
         steering[near] = steering[near] - authority * dodge * np.sign(bearing[near])
         labels[near] = np.where(authority > 0.5, "YIELD", labels[near])
-        return steering, speed, labels
 
+    def _evade(self, obs, steering, speed, labels) -> None:
+        """Replace, in place, the commands that would run into a predicted track (:func:`evasion.evade`)."""
+        evaded = evasion.evade(np.asarray(obs.pose, dtype=float), steering, speed, np.asarray(obs.active, dtype=bool),
+                               self._tracks, self._previous, self.robot.array(), self._time)
+        labels[evaded] = "EVADE"
