@@ -44,12 +44,12 @@ def evade(command, tracks, echoes=None):
 
 def gaps(command, tracks, echoes=None):
     """(gap to the tracks, gap to the echoes) of ``command`` held from the origin."""
-    path = np.empty((int(round(evasion.HORIZON / evasion.STEP)), 2))
-    evasion.rollout(np.zeros(3), command[0], command[1], DEFAULT_PARAMS.wheelbase, path)
+    path = np.empty((int(round(evasion.HORIZON / DEFAULT_PARAMS.dt)), 2))
+    evasion.rollout(np.zeros(3), command[0], command[1], ROBOT, path)
     centres, velocities, radii = np.empty((4, 2)), np.empty((4, 2)), np.empty(4)
     m = evasion.tracks_now(tracks, 0, T, False, centres, velocities, radii)
     points = np.zeros((1, 2)) if echoes is None else np.asarray(echoes, dtype=float)
-    return (evasion.track_gap(path, centres, velocities, radii, m, DEFAULT_PARAMS.radius),
+    return (evasion.track_gap(path, DEFAULT_PARAMS.dt, centres, velocities, radii, m, DEFAULT_PARAMS.radius),
             evasion.standing_gap(path, points, 0 if echoes is None else len(points), DEFAULT_PARAMS.radius))
 
 

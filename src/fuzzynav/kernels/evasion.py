@@ -6,7 +6,7 @@ Conclusion générale).
 
 The rules of the layer answer the time to collision and the side of the nearest threat; they do
 not know whether their answer clears it. This step checks it: the robot's command held for
-``HORIZON`` s (the tricycle's kinematics, eq IV.2, in steps of ``STEP``) against every confirmed
+``HORIZON`` s (the tricycle's kinematics, eq IV.1–IV.2, in steps of its Δt) against every confirmed
 track, each predicted at constant velocity (:mod:`fuzzynav.kernels.scan_tracks`). When that path
 comes within ``TRIGGER`` m of a track (beyond the radii), a fan of commands (``STEERINGS`` ×
 ``SPEEDS``, reverse included, and the command itself first) is rolled out the same way and
@@ -30,10 +30,9 @@ import numpy as np
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import scan_tracks
-from fuzzynav.kernels.motion import LOWEST_SPEED, MAX_SPEED, MAX_STEERING, RADIUS, WHEELBASE
+from fuzzynav.kernels.motion import DT, LOWEST_SPEED, MAX_SPEED, MAX_STEERING, RADIUS, advance, clip
 
-HORIZON = 2.0  # s of the rollouts
-STEP = 0.1  # s between their poses
+HORIZON = 2.0  # s of the rollouts (in steps of the robot's Δt)
 TRIGGER = 0.15  # m: the robot's own command is replaced when it comes this close to a track (beyond the radii)
 MARGIN = 0.15  # m an evasive command keeps from a track (beyond the radii)
 STANDING_MARGIN = 0.1  # m it keeps from a standing echo
@@ -46,24 +45,24 @@ FAN = 1 + len(SPEEDS) * len(STEERINGS)  # the command itself, then the grid
 
 
 @jit
-def rollout(pose, steering, speed, wheelbase, path):
-    """Fill ``path`` (K, 2) with the robot's positions every ``STEP`` s from ``pose`` (x, y, θ)
-    holding (``steering``, ``speed``): eq IV.2."""
+def rollout(pose, steering, speed, robot, path):
+    """Fill ``path`` (K, 2) with the positions, one step Δt apart, of the robot (parameters
+    ``robot``) from ``pose`` (x, y, θ) holding (``steering``, ``speed``): its own kinematics
+    (:func:`fuzzynav.kernels.motion.advance`, eq IV.1–IV.2)."""
     x, y, theta = pose[0], pose[1], pose[2]
-    turn = math.tan(steering) / wheelbase
     for k in range(path.shape[0]):
-        x, y = x + STEP * speed * math.cos(theta), y + STEP * speed * math.sin(theta)
-        theta += STEP * speed * turn
+        x, y, theta = advance(x, y, theta, steering, speed, robot)
         path[k, 0], path[k, 1] = x, y
 
 
 @jit
-def track_gap(path, centres, velocities, radii, m, body):
-    """Smallest gap between ``path`` (K, 2) and the first ``m`` tracks (now at ``centres``,
-    moving at ``velocities``, of ``radii``) at the same times, for a body of radius ``body``."""
+def track_gap(path, dt, centres, velocities, radii, m, body):
+    """Smallest gap between ``path`` (K, 2; ``dt`` s apart) and the first ``m`` tracks (now at
+    ``centres``, moving at ``velocities``, of ``radii``) at the same times, for a body of radius
+    ``body``."""
     best = np.inf
     for k in range(path.shape[0]):
-        later = STEP * (k + 1)
+        later = dt * (k + 1)
         for j in range(m):
             gap = math.hypot(path[k, 0] - centres[j, 0] - velocities[j, 0] * later,
                              path[k, 1] - centres[j, 1] - velocities[j, 1] * later) - radii[j] - body
@@ -114,14 +113,13 @@ def standing_echoes(pose, points, valid, centres, radii, m, out):
 
 @jit
 def fan_command(c, steering, speed, robot):
-    """Command ``c`` of the fan: the robot's own (``steering`` clipped to the limit, ``speed``)
-    for ``c`` = 0, else the grid's (``STEERINGS`` × ``SPEEDS`` of the ``robot``'s limits)."""
-    limit = robot[MAX_STEERING]
+    """Command ``c`` of the fan within the ``robot``'s limits: its own (``steering``, ``speed``)
+    for ``c`` = 0, else the grid's (``STEERINGS`` × ``SPEEDS`` of those limits)."""
     if c == 0:
-        return min(max(steering, -limit), limit), min(max(speed, robot[LOWEST_SPEED]), robot[MAX_SPEED])
+        return clip(steering, speed, robot)
     share = SPEEDS[(c - 1) % len(SPEEDS)]
     wanted = share * robot[MAX_SPEED] if share >= 0 else -share * min(robot[LOWEST_SPEED], 0.0)
-    return STEERINGS[(c - 1) // len(SPEEDS)] * limit, min(max(wanted, robot[LOWEST_SPEED]), robot[MAX_SPEED])
+    return clip(STEERINGS[(c - 1) // len(SPEEDS)] * robot[MAX_STEERING], wanted, robot)
 
 
 @jit
@@ -133,7 +131,8 @@ def evade(poses, steering, speed, active, tracks, scans, robot, t):
     evaded (N,) bool."""
     n, capacity = poses.shape[0], tracks.radius.shape[1]
     evaded = np.zeros(n, dtype=np.bool_)
-    path = np.empty((int(round(HORIZON / STEP)), 2))
+    dt = robot[DT]
+    path = np.empty((max(1, int(round(HORIZON / dt))), 2))
     centres, velocities, radii = np.empty((capacity, 2)), np.empty((capacity, 2)), np.empty(capacity)
     standing = np.empty((scans.points.shape[1], 2))
     body, limit, top = robot[RADIUS], robot[MAX_STEERING], robot[MAX_SPEED]
@@ -144,8 +143,8 @@ def evade(poses, steering, speed, active, tracks, scans, robot, t):
         if m == 0:
             continue
         own_steering, own_speed = fan_command(0, steering[i], speed[i], robot)
-        rollout(poses[i], own_steering, own_speed, robot[WHEELBASE], path)
-        if track_gap(path, centres, velocities, radii, m, body) >= TRIGGER:
+        rollout(poses[i], own_steering, own_speed, robot, path)
+        if track_gap(path, dt, centres, velocities, radii, m, body) >= TRIGGER:
             continue
         m = tracks_now(tracks, i, t, True, centres, velocities, radii)
         p = standing_echoes(poses[i], scans.points[i], scans.valid[i], centres, radii, m, standing)
@@ -153,8 +152,8 @@ def evade(poses, steering, speed, active, tracks, scans, robot, t):
         free, free_room, any_, any_room = -1, -np.inf, -1, -np.inf
         for c in range(FAN):
             alpha, v = fan_command(c, steering[i], speed[i], robot)
-            rollout(poses[i], alpha, v, robot[WHEELBASE], path)
-            moving = track_gap(path, centres, velocities, radii, m, body) - MARGIN
+            rollout(poses[i], alpha, v, robot, path)
+            moving = track_gap(path, dt, centres, velocities, radii, m, body) - MARGIN
             still = standing_gap(path, standing, p, body) - STANDING_MARGIN
             room = min(moving, still)
             if moving >= 0 and still >= 0:
