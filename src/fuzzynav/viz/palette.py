@@ -26,6 +26,8 @@ _CODES: dict[str, tuple[str, str]] = {
     "CAR-FWD": ("#1b9e77", "car route (hybrid A* on what was seen), driving its arc where it is tight"),
     "GAP+VRB": ("#e377c2", "through the gap that fits the body (Table IV.1 towards it) + VRB"),
     "GAP": ("#e377c2", "through the gap that fits the body (Table IV.1 towards it)"),
+    "YIELD": ("#ff9896", "yield / evade rules on the time to collision with a moving obstacle"),
+    "EVADE": ("#c5b0d5", "evasive command sampled against the moving obstacles' predicted tracks"),
 }
 # label -> (colour, legend text): the codes, then the labels that are words already
 BEHAVIOURS: dict[str, tuple[str, str]] = {
