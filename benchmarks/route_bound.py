@@ -1,6 +1,6 @@
 """How long a route can a navigator that does not know the map hope for? An idealised bound for
-the floor-plan families (issue 32's target: `fuzzy-5b`'s median time ≤ 1.5× the map-aware
-`astar-pp`'s).
+the floor-plan families, beside the map-aware `astar-pp` (docs/results/default-navigator.md,
+*How much of the gap is exploration?*).
 
 An idealised robot without a map — a point in the configuration space (cells of ``--cell`` m, the
 obstacles grown by the body's radius and ``--margin``), turning on the spot, with the default

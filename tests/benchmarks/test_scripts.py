@@ -94,6 +94,7 @@ SMALLEST = [
     ("sim_core.py", ("--json",), '"irsim": null'),
     ("physics_plant.py", ("cost", "fig-IV-22a"), "fig-IV-22a mujoco: reached"),
     ("robustness.py", ("mixed:1", "--navigators", "goal-seeking", "--quick", "--out", "{tmp}/sweep"), "| combined |"),
+    ("route_bound.py", ("--family", "forest", "--seed", "0", "--n", "2"), "forest seed 0, 2 worlds: exploration factor"),
 ]
 # Scripts whose smallest run is too long for the suite (their --help still runs above: the argument
 # parsing and every import) or that need a peer Python: why, and what checks them instead.
