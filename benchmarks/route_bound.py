@@ -27,98 +27,78 @@ import statistics
 import sys
 
 import numpy as np
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import dijkstra
 
 from fuzzynav.robot.sensors import LIDAR_ANGLES
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.generate import generate_world
+from fuzzynav.world.planning import Grid, cost_to_go
 
-MOVES = [(dx, dy, math.hypot(dx, dy)) for dx in (-1, 0, 1) for dy in (-1, 0, 1) if dx or dy]
-
-
-class Grid:
-    """The cells of a world, their 8-connected edges and the shortest distances to one cell."""
-
-    def __init__(self, width: float, height: float, cell: float):
-        self.cell, self.nx, self.ny = cell, int(round(width / cell)), int(round(height / cell))
-        ix, iy = np.meshgrid(np.arange(self.nx), np.arange(self.ny), indexing="ij")
-        self.centres = np.column_stack([(ix.ravel() + 0.5) * cell, (iy.ravel() + 0.5) * cell])
-        tails, heads, weights = [], [], []
-        for dx, dy, w in MOVES:
-            ok = (ix + dx >= 0) & (ix + dx < self.nx) & (iy + dy >= 0) & (iy + dy < self.ny)
-            tails.append((ix * self.ny + iy)[ok])
-            heads.append(((ix + dx) * self.ny + iy + dy)[ok])
-            weights.append(np.full(ok.sum(), w * cell))
-        self.tails, self.heads, self.weights = (np.concatenate(v) for v in (tails, heads, weights))
-
-    def index(self, point) -> int:
-        return int(min(int(point[0] / self.cell), self.nx - 1) * self.ny + min(int(point[1] / self.cell), self.ny - 1))
-
-    def distances(self, blocked: np.ndarray, goal: int) -> np.ndarray:
-        """Shortest 8-connected distance of every cell to ``goal`` avoiding ``blocked`` cells."""
-        keep = ~blocked[self.tails] & ~blocked[self.heads]
-        n = self.nx * self.ny
-        graph = csr_matrix((self.weights[keep], (self.tails[keep], self.heads[keep])), shape=(n, n))
-        return dijkstra(graph, directed=False, indices=goal)
-
-    def around(self, points: np.ndarray, grow: float) -> np.ndarray:
-        """The cells whose centres lie within ``grow`` of any of ``points`` (P, 2)."""
-        reach = int(math.ceil(grow / self.cell)) + 1
-        offsets = np.array([(dx, dy) for dx in range(-reach, reach + 1) for dy in range(-reach, reach + 1)])
-        base = np.floor(points / self.cell).astype(int)
-        cells = (base[:, None, :] + offsets[None]).reshape(-1, 2)
-        inside = (cells[:, 0] >= 0) & (cells[:, 0] < self.nx) & (cells[:, 1] >= 0) & (cells[:, 1] < self.ny)
-        near = np.linalg.norm((cells + 0.5) * self.cell - np.repeat(points, len(offsets), axis=0), axis=1) < grow
-        return np.unique(cells[inside & near, 0] * self.ny + cells[inside & near, 1])
-
-    def neighbours(self, k: int):
-        ix, iy = divmod(k, self.ny)
-        for dx, dy, w in MOVES:
-            if 0 <= ix + dx < self.nx and 0 <= iy + dy < self.ny:
-                yield (ix + dx) * self.ny + iy + dy, w * self.cell
+MOVES = [(dr, dc, math.hypot(dr, dc)) for dr in (-1, 0, 1) for dc in (-1, 0, 1) if dr or dc]
 
 
-def route(grid: Grid, dist: np.ndarray, start: int) -> list[int]:
-    """The cells from ``start`` down the distances to the goal."""
-    cells, k = [start], start
-    while dist[k] > 0 and len(cells) < grid.nx * grid.ny:
-        k = min(grid.neighbours(k), key=lambda nw: nw[1] + dist[nw[0]])[0]
-        cells.append(k)
+def cells_near(shape, cell: float, points: np.ndarray, grow: float) -> tuple[np.ndarray, np.ndarray]:
+    """(rows, columns) of the cells of a grid of ``shape`` whose centres lie within ``grow`` of
+    any of ``points`` (P, 2)."""
+    reach = int(math.ceil(grow / cell)) + 1
+    offsets = np.array([(dr, dc) for dr in range(-reach, reach + 1) for dc in range(-reach, reach + 1)])
+    base = np.floor(points[:, ::-1] / cell).astype(int)  # (row, column) = (y, x) / cell
+    cells = (base[:, None, :] + offsets[None]).reshape(-1, 2)
+    inside = (cells >= 0).all(axis=1) & (cells[:, 0] < shape[0]) & (cells[:, 1] < shape[1])
+    near = np.linalg.norm((cells[:, ::-1] + 0.5) * cell - np.repeat(points, len(offsets), axis=0), axis=1) < grow
+    return tuple(np.unique(cells[inside & near], axis=0).T)
+
+
+def route(cost: np.ndarray, free: np.ndarray, start: tuple[int, int], cell: float) -> list[tuple[int, int]]:
+    """The cells from ``start`` down ``cost`` (the cost to go over the ``free`` cells, the moves of
+    :func:`fuzzynav.world.planning.cost_to_go`: no corner cutting) to the goal."""
+    cells, (r, c) = [start], start
+    ny, nx = cost.shape
+    while cost[r, c] > 0 and len(cells) < cost.size:
+        steps = [(cost[r + dr, c + dc] + w * cell, (r + dr, c + dc)) for dr, dc, w in MOVES
+                 if 0 <= r + dr < ny and 0 <= c + dc < nx and free[r + dr, c + dc]
+                 and (not (dr and dc) or (free[r + dr, c] and free[r, c + dc]))]
+        r, c = min(steps)[1]
+        cells.append((r, c))
     return cells
 
 
 def explore(scenario, cell: float, margin: float, reach: float) -> tuple[float, float]:
     """(path of the idealised robot without a map, shortest grid route on the whole map), m."""
     world = scenario.world
-    grid = Grid(world.width, world.height, cell)
     grow = DEFAULT_PARAMS.radius + margin
-    truly = world.clearance(grid.centres) < grow
-    start, goal = grid.index(scenario.start[:2]), grid.index(scenario.goal.position)
-    truly[[start, goal]] = False
-    full = grid.distances(truly, goal)[start]
-    seen = np.zeros(len(truly), dtype=bool)
-    here, heading, travelled = start, float(scenario.start[2]), 0.0
-    plan: list[int] = []
-    for _ in range(20 * (grid.nx + grid.ny)):
-        if here == goal:
+    ny, nx = int(round(world.height / cell)), int(round(world.width / cell))
+    rows, cols = np.mgrid[0:ny, 0:nx]
+    centres = np.column_stack([(cols.ravel() + 0.5) * cell, (rows.ravel() + 0.5) * cell])
+    truly = (world.clearance(centres) >= grow).reshape(ny, nx)
+    flat = np.zeros((ny, nx))
+    goal = np.asarray(scenario.goal.position, dtype=float)
+    whole = Grid(truly, flat, cell)
+    here = whole.index(scenario.start[:2])
+    full = cost_to_go(whole, goal, 0.0)[here]
+    known = np.ones((ny, nx), dtype=bool)  # unseen cells are free
+    heading, travelled, plan = float(scenario.start[2]), 0.0, []
+    for _ in range(20 * (nx + ny)):
+        position = whole.centre([here[0]], [here[1]])[0]
+        if np.hypot(*(position - goal)) < cell:
             return travelled, full
-        position = grid.centres[here]
         ranges = world.ranges(np.array([[*position, heading]]), LIDAR_ANGLES, reach)[0]
         hits = ranges < reach - 1e-6
         angles = heading + LIDAR_ANGLES[hits]
-        new = position + ranges[hits, None] * np.column_stack([np.cos(angles), np.sin(angles)])
-        now = grid.around(new, grow)
-        fresh = now[~seen[now]]
-        seen[fresh] = True
-        seen[[here, goal]] = False
-        if not plan or np.isin(plan, fresh).any():
-            dist = grid.distances(seen, goal)
-            if not np.isfinite(dist[here]):
+        seen = position + ranges[hits, None] * np.column_stack([np.cos(angles), np.sin(angles)])
+        near = cells_near(known.shape, cell, seen, grow) if len(seen) else (np.array([], int), np.array([], int))
+        fresh = known[near]
+        known[near] = False
+        known[here] = True
+        cut = {(int(r), int(c)) for r, c, f in zip(*near, fresh) if f} & set(plan)
+        if not plan or cut:
+            cost = cost_to_go(Grid(known, flat, cell), goal, 0.0)
+            if cost is None or not np.isfinite(cost[here]):
                 return math.nan, full
-            plan = route(grid, dist, here)[1:]
+            plan = route(cost, known, here, cell)[1:]
+            if not plan:
+                return travelled, full
         step = plan.pop(0)
-        delta = grid.centres[step] - position
+        delta = whole.centre([step[0]], [step[1]])[0] - position
         travelled += float(np.hypot(*delta))
         heading, here = math.atan2(delta[1], delta[0]), step
     return math.nan, full
