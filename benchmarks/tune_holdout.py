@@ -5,10 +5,14 @@ tuned files, world by world (docs/tuning.md, *The acceptance run*)::
     python benchmarks/tune_holdout.py --neighbours 30 --suites mixed:100:1000 mixed:100:3000
     python benchmarks/tune_holdout.py --neighbours 30 --spread 0.03 --repick 0.03 --suites mixed:100:3000
     python benchmarks/tune_holdout.py --files oab.yaml --suites mixed:40 mixed:100:1000
+    python benchmarks/tune_holdout.py --files oab-0.yaml oab-1.yaml --suites mixed:1000:1000 mixed:1000:7000 --paired
 
 prints, per suite, the success of the start, the mean success of the neighbours, the share of them
 that reach every goal and how many of them fail each world; then each file's success, mean time and
-failed worlds.
+failed worlds. ``--paired`` compares each file with the start world by world instead of listing the
+failed worlds (for pools too large to list): the worlds only it reaches, those only the start
+reaches (a difference in success is sampling noise unless it is large against their sum: McNemar's
+test), and both mean times over the worlds both reach.
 """
 
 from __future__ import annotations
@@ -23,7 +27,7 @@ from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import default_system
 from fuzzynav.fuzzy.io import load
 from fuzzynav.kernels.step import REACHED
-from fuzzynav.tune.episodes import OUTCOME
+from fuzzynav.tune.episodes import OUTCOME, STEPS
 from fuzzynav.tune.fitness import Fitness
 from fuzzynav.tune.space import SearchSpace
 
@@ -38,6 +42,7 @@ def main() -> None:
     parser.add_argument("--repick", type=float, default=space_module.REPICK)
     parser.add_argument("--seed", type=int, default=7)
     parser.add_argument("--files", nargs="*", default=[])
+    parser.add_argument("--paired", action="store_true")
     args = parser.parse_args()
     controller, role = args.target.split(":")
     space = SearchSpace(default_system(controller, role), args.what)
@@ -47,7 +52,8 @@ def main() -> None:
     for spec in args.suites:
         suite = parse_suite(spec)
         fitness = Fitness(make_controller(controller), role, space, [suite.scenario(i, 0) for i in range(suite.size)])
-        reached = fitness.simulate(genes)[:, :, OUTCOME] == REACHED
+        rows = fitness.simulate(genes)
+        reached = rows[:, :, OUTCOME] == REACHED
         print(f"{spec}: start {reached[0].mean():.3f}", end="")
         if args.neighbours:
             print(f"; {args.neighbours} neighbours ({args.what}, spread {args.spread}, repick {args.repick}): mean "
@@ -60,7 +66,20 @@ def main() -> None:
                                      np.column_stack([np.zeros(suite.size, dtype=np.int64), np.arange(suite.size)]))
             numbers = fitness.summary(out)
             print(f"  {path}: success {numbers['success_rate']:.3f}, collisions {numbers['collisions']}, mean time "
-                  f"{numbers['mean_time_s']:.2f} s, failed {[i for i in range(suite.size) if out[i, OUTCOME] != REACHED]}")
+                  f"{numbers['mean_time_s']:.2f} s, ", end="")
+            if args.paired:
+                print(_paired(out, rows[0], fitness.worlds.dt))
+            else:
+                print(f"failed {[i for i in range(suite.size) if out[i, OUTCOME] != REACHED]}")
+
+
+def _paired(rows: np.ndarray, start: np.ndarray, dt: np.ndarray) -> str:
+    """A file's episodes against the start's on the same worlds: discordant arrivals, paired times."""
+    mine, theirs = rows[:, OUTCOME] == REACHED, start[:, OUTCOME] == REACHED
+    both = mine & theirs
+    return (f"reached by it alone {int((mine & ~theirs).sum())}, by the start alone {int((theirs & ~mine).sum())}; "
+            f"mean time where both reach {(rows[both, STEPS] * dt[both]).mean():.2f} s against the start's "
+            f"{(start[both, STEPS] * dt[both]).mean():.2f} s")
 
 
 if __name__ == "__main__":
