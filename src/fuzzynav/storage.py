@@ -172,7 +172,8 @@ def read_document(path) -> dict:
             if not error.problem.startswith(("invalid JSON", "cannot read file")):
                 raise  # valid JSON past a limit: the error names the field
             where = f", {error.field}" if error.field else ""
-            raise InputError(f"cannot read model file: not a valid JSON document ({error.problem}{where})",
+            what = "neither an .npz archive (no zip header) nor" if path.suffix.lower() == ".npz" else "not"
+            raise InputError(f"cannot read model file: {what} a valid JSON document ({error.problem}{where})",
                              source=str(path)) from None
     if not isinstance(document, dict) or "kind" not in document:
         raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")

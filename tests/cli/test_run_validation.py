@@ -86,6 +86,11 @@ def test_binary_file(tmp_path, capsys):
     assert "cannot read file" in capsys.readouterr().err
 
 
+def test_a_folder_is_not_a_scenario_file(tmp_path, capsys):
+    assert main(["run", str(tmp_path), "--controller", "fuzzy-5b"]) == 2
+    assert f"{tmp_path}: SCENARIO: is a directory" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("argv, expected", [
     (["run", "no-such-scenario", "--controller", "x"], "SCENARIO: no such scenario file or built-in scenario"),
     (["run", "example-gaol", "--controller", "x"], "did you mean example-goal"),

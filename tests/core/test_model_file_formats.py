@@ -70,6 +70,8 @@ def test_unreadable_model_names_the_file_without_numpy_hints(capsys, tmp_path, c
     assert status == 2
     assert f"{path}: cannot read model file" in err
     assert "pickle" not in err and "Traceback" not in err
+    if content == b"not a model at all":  # an .npz that is not one is not called a JSON document alone
+        assert ("neither an .npz archive" in err) == (name == "m.npz")
 
 
 def test_an_archive_of_python_objects_is_refused_without_numpy_hints(capsys, tmp_path):

@@ -275,7 +275,9 @@ API = [
 
 COUNTS = [
     Case("bench-count-1e11", argv=("bench", "circles:99999999999", "--controllers", "goal-seeking", "--out", "{d}/o"),
-         expect="COUNT must be a whole number from 0 to 100,000"),
+         expect="COUNT must be a whole number from 1 to 100,000"),
+    Case("bench-count-0", argv=("bench", "circles:0", "--controllers", "goal-seeking", "--out", "{d}/o"),
+         expect="COUNT must be a whole number from 1 to 100,000"),
     Case("bench-seeds-1e12", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--seeds", "1000000000000",
                                    "--out", "{d}/o"), expect="--seeds: must be an integer in [1, 10000]"),
     Case("bench-campaign-too-large", argv=("bench", "circles:100000", "--controllers", "goal-seeking,dwa",

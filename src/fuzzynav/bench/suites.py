@@ -67,9 +67,9 @@ class Suite:
         return self.references.get(Path(self.files[index]).stem, {})
 
 
-def _count(text: str, field_name: str, spec: str, hi: int) -> int:
-    if not re.fullmatch(r"\d{1,30}", text) or int(text) > hi:
-        raise InputError(f"{field_name} must be a whole number from 0 to {hi:,} in {validation.shown(spec)}",
+def _count(text: str, field_name: str, spec: str, lo: int, hi: int) -> int:
+    if not re.fullmatch(r"\d{1,30}", text) or not lo <= int(text) <= hi:
+        raise InputError(f"{field_name} must be a whole number from {lo} to {hi:,} in {validation.shown(spec)}",
                          field="SUITE")
     return int(text)
 
@@ -105,8 +105,6 @@ def parse_suite(spec: str) -> Suite:
                          "written FAMILY[:COUNT[:SEED]]", field="SUITE")
     if len(rest) > 2:
         raise InputError(f"too many ':' in {spec!r} (FAMILY[:COUNT[:SEED]])", field="SUITE")
-    count = _count(rest[0], "COUNT", spec, validation.MAX_WORLDS) if rest else DEFAULT_COUNT
-    if count < 1:
-        raise InputError(f"COUNT must be >= 1 in {spec!r}", field="SUITE")
-    seed = _count(rest[1], "SEED", spec, validation.MAX_SEED) if len(rest) > 1 else 0
+    count = _count(rest[0], "COUNT", spec, 1, validation.MAX_WORLDS) if rest else DEFAULT_COUNT
+    seed = _count(rest[1], "SEED", spec, 0, validation.MAX_SEED) if len(rest) > 1 else 0
     return Suite(name=f"{family}:{count}:{seed}", family=family, count=count, seed=seed)

@@ -73,7 +73,9 @@ def markdown_table(rows: list[dict]) -> str:
 def run(args) -> int:
     from fuzzynav.cli.warmup import announce, warm_up
 
-    print(f"fuzzynav demo: the built-in thesis scenarios with their controllers, into {args.out}/", flush=True)
+    what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
+    print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
+          f"into {args.out}/", flush=True)
     announce()
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode

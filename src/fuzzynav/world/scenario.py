@@ -345,6 +345,9 @@ def load_scenario(path_or_name) -> Scenario:
     path = validation.file_path(path_or_name, field="scenario")
     if not path.is_file():
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
+        if path.is_dir() and not builtin.is_file():
+            raise InputError("is a directory; give one scenario file (`fuzzynav bench FOLDER` runs a folder)",
+                             source=str(path_or_name), field="SCENARIO")
         if not builtin.is_file():
             names = sorted(f.stem for f in BUILTIN_DIR.glob("*.yaml"))
             close = difflib.get_close_matches(str(path_or_name), names, n=3)
