@@ -88,3 +88,19 @@ def test_save_document_refuses_an_unknown_extension(tmp_path):
     with pytest.raises(InputError, match="must end in .json or .npz"):
         storage.save_document(tmp_path / "m.yaml", {"kind": "x"})
     assert not list(tmp_path.iterdir())
+
+
+def test_a_tracker_model_is_refused_where_the_task_is_a_goal(capsys, tmp_path):
+    from fuzzynav.learn.tasks.trackers import default_document
+
+    path = tmp_path / "anfis.json"
+    storage.save_document(path, default_document("anfis-tracker"))
+    for argv in (["run", "example-goal", "--model", str(path)],
+                 ["evaluate", "--model", str(path), "--worlds", "mixed", "--n", "1"],
+                 ["bench", "mixed:1", "--controllers", str(path), "--out", str(tmp_path / "campaign")]):
+        status, out, err = run_cli(capsys, *argv)
+        assert status == 2 and out == "", argv
+        assert f"{path}: --model: this anfis-tracker model cannot do a goal task (it does: path, target)" in err
+    assert not (tmp_path / "campaign").exists()
+    status, out, _ = run_cli(capsys, "run", "path-n", "--model", str(path), "--json")
+    assert status == 0 and json.loads(out)["outcome"] == "reached"

@@ -60,7 +60,8 @@ class controller_maker:  # noqa: N801 (a factory of controllers, called like a f
     """Fresh controllers, one a call, for an evaluation or a campaign: the registered
     ``controller`` (its roles' rule bases replaced by ``systems``, its factory given ``options``),
     or the controller stored in ``model`` (loaded once; each call a copy of it, so no episode
-    inherits another's state). Exactly one of the two; ``name`` is the controller's."""
+    inherits another's state; refused unless its kind drives goal tasks, as every evaluation and
+    campaign world is one). Exactly one of the two; ``name`` is the controller's."""
 
     def __init__(self, controller: str | None = None, *, model: str | Path | None = None,
                  systems: dict | None = None, options: dict | None = None):
@@ -69,7 +70,7 @@ class controller_maker:  # noqa: N801 (a factory of controllers, called like a f
         if model is not None:
             from fuzzynav.catalog.tasks import load_controller
 
-            self._loaded = load_controller(Path(model))
+            self._loaded = load_controller(Path(model), "goal")
             self.name = self._loaded.name
         else:
             self._loaded, self.name = None, str(controller)

@@ -104,7 +104,8 @@ class TaskSpec:
     :class:`~fuzzynav.learn.tasks.common.TrainRequest` and returning a dict of results (at least
     ``model``, the path written); the model file it writes carries ``kind``, and ``loader``
     (``"module:function"``, default: ``load_model`` of the trainer's module) builds the controller
-    back from a model document of that kind.
+    back from a model document of that kind; ``tasks`` are the scenario tasks such a model drives
+    (a model run on another is refused, as a built-in controller is).
     """
 
     name: str
@@ -113,6 +114,7 @@ class TaskSpec:
     description: str
     loader: str = ""
     aliases: tuple[str, ...] = ()
+    tasks: tuple[str, ...] = ("goal",)  # the scenario tasks its model drives (goal, path, target)
 
     def __post_init__(self):
         _check_name(self.name, "task name")

@@ -40,14 +40,18 @@ def register_task(spec: TaskSpec) -> TaskSpec:
     return TASKS.register(spec)
 
 
-def _thesis_task(name: str, module: str, kind: str, description: str) -> None:
+def _thesis_task(name: str, module: str, kind: str, description: str, tasks: tuple[str, ...] = ("goal",)) -> None:
     """Register the task ``name`` of ``fuzzynav.learn.tasks.<module>``: its function is ``train_``
     + its name (``fql-goal-35`` -> ``train_fql_goal_35``)."""
-    register_task(TaskSpec(name, f"fuzzynav.learn.tasks.{module}:train_{name.replace('-', '_')}", kind, description))
+    register_task(TaskSpec(name, f"fuzzynav.learn.tasks.{module}:train_{name.replace('-', '_')}", kind, description,
+                           tasks=tasks))
 
 
-_thesis_task("neural-tracker", "trackers", "neural-tracker", "MLP tracker by generalized learning (§V.3.2, Fig V.15)")
-_thesis_task("anfis-tracker", "trackers", "anfis-tracker", "ANFIS tracker, 1 input, 5 bell MFs (§V.3.5, Fig V.23)")
+TRACKING = ("path", "target")  # the trackers' scenario tasks, as the built-in trackers' (catalog.controllers)
+_thesis_task("neural-tracker", "trackers", "neural-tracker", "MLP tracker by generalized learning (§V.3.2, Fig V.15)",
+             TRACKING)
+_thesis_task("anfis-tracker", "trackers", "anfis-tracker", "ANFIS tracker, 1 input, 5 bell MFs (§V.3.5, Fig V.23)",
+             TRACKING)
 _thesis_task("q-goal", "tabular_goal", "q-goal", "tabular Q-learning goal seeking, 13 states x 3 actions (§VI.2)")
 _thesis_task("fql-goal", "fql_goal", "fql-goal", "FQL goal seeking, 15 rules x 3, steering then speed (§VI.5.1)")
 _thesis_task("fql-goal-35", "fql_goal", "fql-goal", "FQL goal seeking, 35 rules x 5 (Figs VI.13-VI.14)")
@@ -73,12 +77,17 @@ def trainer(task: str):
     return load(TASKS.find(task).trainer)
 
 
-def load_controller(path):
-    """Build the controller stored in a model file (JSON or NPZ), whatever its kind."""
+def load_controller(path, task: str | None = None):
+    """Build the controller stored in a model file (JSON or NPZ), whatever its kind; with a
+    scenario ``task`` (goal, path, target), refuse a model whose kind does not drive it."""
     document = read_document(validation.file_path(path, field="model"))
     kind = document["kind"]
     loaders = model_loaders()
     if kind not in loaders:
         raise InputError(f"unknown model kind {kind!r}; known: {', '.join(sorted(loaders)) or 'none'}",
                          source=str(path), field="kind")
+    tasks = {spec.kind: spec.tasks for spec in TASKS.values()}.get(kind)  # None: a loader without a task spec
+    if task is not None and tasks is not None and task not in tasks:
+        raise InputError(f"this {kind} model cannot do a {task} task (it does: {', '.join(tasks)})",
+                         source=str(path), field="--model")
     return load(loaders[kind])(document, Path(path))

@@ -98,7 +98,7 @@ def run(args) -> int:
     if args.model:
         from fuzzynav.catalog.tasks import load_controller
 
-        controller = load_controller(args.model)
+        controller = load_controller(args.model, scenario.task)
     else:
         check_task(args.controller, scenario.task)
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
