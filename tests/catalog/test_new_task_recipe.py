@@ -36,6 +36,17 @@ def test_a_task_name_or_a_kind_read_by_another_loader_is_refused():
     assert "toy-2" not in tasks.TASKS
 
 
+def test_the_tasks_a_model_kind_drives_are_checked_and_one_per_kind():
+    with pytest.raises(ValueError, match="tasks must be some of goal, path, target"):
+        TaskSpec("toy-3", "tests.catalog.toy_task:train_toy", "toy-3", "a toy", tasks=("fly",))
+    with pytest.raises(ValueError, match="tasks must be some of"):
+        TaskSpec("toy-3", "tests.catalog.toy_task:train_toy", "toy-3", "a toy", tasks="goal")
+    tracker = TaskSpec("toy-4", "fuzzynav.learn.tasks.trackers:train_toy", "anfis-tracker", "a toy", tasks=("goal",))
+    with pytest.raises(ValueError, match="model kind 'anfis-tracker' drives path, target tasks"):
+        tasks.register_task(tracker)
+    assert "toy-4" not in tasks.TASKS
+
+
 def _train_and_run(capsys, tmp_path):
     out = tmp_path / "toy.npz"
     assert main(["train", "toy", "--episodes", "100", "--quiet", "--out", str(out)]) == 0

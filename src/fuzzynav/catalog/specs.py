@@ -34,6 +34,11 @@ def _check_name(name: str, what: str) -> None:
         raise ValueError(f"{what} {name!r} is not a name (lower-case letters, digits and dashes)")
 
 
+def _check_tasks(tasks, owner: str) -> None:
+    if isinstance(tasks, str) or not tasks or any(task not in TASK_KINDS for task in tasks):
+        raise ValueError(f"{owner}: tasks must be some of {', '.join(TASK_KINDS)}, got {tasks!r}")
+
+
 def _check_target(target: str, what: str) -> None:
     if not isinstance(target, str) or not _TARGET.match(target):
         raise ValueError(f"{what} must be 'module:attribute', got {target!r}")
@@ -78,9 +83,7 @@ class ControllerSpec:
             _check_name(alias, f"controller {self.name}: alias")
         if not self.description or not self.citation:
             raise ValueError(f"controller {self.name}: give a description and a citation")
-        if not self.tasks or any(task not in TASK_KINDS for task in self.tasks):
-            raise ValueError(f"controller {self.name}: tasks must be some of {', '.join(TASK_KINDS)}, "
-                             f"got {self.tasks!r}")
+        _check_tasks(self.tasks, f"controller {self.name}")
         if self.sensors not in SENSES:
             raise ValueError(f"controller {self.name}: sensors must be one of {', '.join(SENSES)}, "
                              f"got {self.sensors!r}")
@@ -125,3 +128,5 @@ class TaskSpec:
         if not self.loader:
             object.__setattr__(self, "loader", self.trainer.split(":")[0] + ":load_model")
         _check_target(self.loader, f"task {self.name}: loader")
+        _check_tasks(self.tasks, f"task {self.name}")
+        object.__setattr__(self, "tasks", tuple(self.tasks))

@@ -23,11 +23,15 @@ from fuzzynav.storage import read_document
 
 
 def _one_loader_per_kind(spec: TaskSpec, registered: list[TaskSpec]) -> None:
-    """A model kind is read by one loader: a new task of a known kind must name the same one."""
+    """A model kind is read by one loader and drives one set of scenario tasks: a new task of a
+    known kind must name the same ones."""
     for other in registered:
         if other.kind == spec.kind and other.loader != spec.loader:
             raise ValueError(f"model kind {spec.kind!r} is already read by {other.loader} (task {other.name}), "
                              f"not {spec.loader}")
+        if other.kind == spec.kind and other.tasks != spec.tasks:
+            raise ValueError(f"model kind {spec.kind!r} drives {', '.join(other.tasks)} tasks (task {other.name}), "
+                             f"not {', '.join(spec.tasks)}")
 
 
 TASKS: Registry[TaskSpec] = Registry("training task", "TASK", TaskSpec, group="fuzzynav.tasks",
