@@ -86,6 +86,14 @@ def atomic_write(path, write) -> None:
     remove_stale_temporaries(path, older_than=started - 1.0)
 
 
+def file_name_part(text: str) -> str:
+    """``text`` (a scenario's or controller's name) made safe as part of one file name: every
+    character but letters, digits, ``.``, ``_`` and ``-`` becomes ``_``, and a leading ``.`` too,
+    so a name such as ``../../x`` cannot place a file outside its folder."""
+    safe = "".join(c if (c.isascii() and c.isalnum()) or c in "._-" else "_" for c in str(text))
+    return ("_" + safe[1:] if safe.startswith(".") else safe) or "_"
+
+
 def write_text_atomic(path, text: str) -> None:
     """Write ``text`` (UTF-8) to ``path`` atomically."""
     data = text.encode("utf-8")

@@ -51,6 +51,15 @@ def test_make_vec_gives_the_batched_environment_and_its_spaces():
     assert vec.metadata["autoreset_mode"] == gymnasium.vector.AutoresetMode.NEXT_STEP
 
 
+
+def test_a_step_before_any_reset_is_refused_with_what_to_do():
+    vec = FuzzynavVectorEnv(2)
+    with pytest.raises(RuntimeError, match=r"call reset\(\) before step\(\)"):
+        vec.step(np.zeros((2, 2)))
+    vec.reset(seed=0)
+    vec.step(np.zeros((2, 2), dtype=np.float32))
+
+
 def test_reset_on_given_scenarios():
     vec = FuzzynavVectorEnv(2, "avoid")
     vec.reset(seed=0, options={"scenarios": ["fig-IV-22a", "fig-IV-22b"]})

@@ -19,6 +19,7 @@ GYM_IDS = ("fuzzynav/GoalSeeking-v0", "fuzzynav/ObstacleAvoidance-v0", "fuzzynav
 
 PRELUDE = """
 import json
+from pathlib import Path
 import numpy as np
 import gymnasium
 import fuzzynav
@@ -75,6 +76,32 @@ def locked_bench(d):
     with campaign_lock(d / "out"):
         code = main(["bench", "circles:1", "--controllers", "goal-seeking", "--out", str(d / "out"), "--quiet"])
     raise SystemExit(code)
+
+def barn_world(d, name="world_1"):
+    # the BARN world of tests/data/barn (MIT licence) copied as d/NAME.world; its path file is the case's
+    import shutil
+    import tests
+    target = d / f"{name}.world"
+    target.parent.mkdir(parents=True, exist_ok=True)
+    shutil.copy(Path(tests.__file__).parent / "data" / "barn" / "world_0.world", target)
+    return target
+
+def import_barn(d, *worlds):
+    from fuzzynav.cli import main
+    raise SystemExit(main(["import", "barn", *map(str, worlds), "--out", str(d / "o")]))
+
+def tuned_then_resumed(d, tamper):
+    # a tiny tuning run, its checkpoint's arrays edited by tamper(dict of arrays), then --resume
+    from fuzzynav.cli import main
+    args = ["tune", "goal-seeking:gsb", "--worlds", "circles:2", "--budget", "8", "--population", "2",
+            "--validation", "none", "--out", str(d / "a.yaml"), "--quiet"]
+    assert main(args) == 0
+    path = d / "a.yaml.tune.npz"
+    with np.load(path) as data:
+        arrays = dict(data)
+    tamper(arrays)
+    np.savez(path, **arrays)
+    raise SystemExit(main(args[:5] + ["12"] + args[6:] + ["--resume"]))
 
 def ascii_terminal(argv):
     # the command line with stdout and stderr encoded as ASCII; prints what it wrote
@@ -397,4 +424,65 @@ ASCII = [
          expect="robot.max_steering: must be below \\u03c0/2"),
 ]
 
-CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII]
+_NO_V = ("from fuzzynav.fuzzy.io.document import to_document\n"
+         "doc = to_document(fuzzynav.thesis_system('goal-seeking'))\n"
+         "doc['rules'] = [r.split(' AND v IS')[0] for r in doc['rules']]\n"
+         "(d / 'nov.json').write_text(json.dumps(doc))\n"
+         "fuzzynav.load_fuzzy_system(d / 'nov.json')")
+_DEMO_TRAVERSAL = ("from fuzzynav.cli import main\n"
+                   "assert main(['demo', '--scenario', str(d / 's.yaml'), '--controllers', 'goal-seeking', "
+                   "'--out', str(d / 'a' / 'b' / 'out')]) == 0\n"
+                   "plots = list(d.rglob('*.png'))\n"
+                   "assert len(plots) == 1 and (d / 'a' / 'b' / 'out') == plots[0].parent, plots")
+
+NAMES_AND_IMPORTS = [
+    Case("run-generated-name-huge-seed", argv=("run", "circles-" + "9" * 5000 + "-000", "--controller", "goal-seeking"),
+         expect="its SEED must be a whole number"),
+    Case("run-generated-name-seed-2-64", argv=("run", "circles-18446744073709551616-000", "--controller", "goal-seeking"),
+         expect="circles-18446744073709551616-000: its SEED must be"),
+    Case("run-generated-name-index-too-large", argv=("run", "circles-0-999999", "--controller", "goal-seeking"),
+         expect="its world index must be a whole number from 0 to 99,999"),
+    Case("import-barn-path-of-strings",
+         python="w = barn_world(d); np.save(d / 'path_1.npy', np.array([['a', 'b']])); import_barn(d, w)",
+         expect="path_1.npy: must hold grid cells as numbers"),
+    Case("import-barn-path-with-nan",
+         python="w = barn_world(d); np.save(d / 'path_1.npy', np.array([[1.0, np.nan]])); import_barn(d, w)",
+         expect="path_1.npy: grid cells must be finite numbers"),
+    Case("import-barn-path-writes-nothing-on-error",
+         python="w = barn_world(d); np.save(d / 'path_1.npy', np.array([[1j, 2j]]))\n"
+                "try:\n    import_barn(d, w)\nexcept SystemExit as done:\n"
+                "    assert not list((d / 'o').glob('*')), list((d / 'o').glob('*'))\n    raise",
+         expect="must hold grid cells as numbers, got dtype complex128"),
+    Case("import-barn-reference-file-a-list",
+         python="(d / 'o').mkdir(); (d / 'o' / 'benchmark.json').write_text(json.dumps({'scenarios': []}))\n"
+                "import_barn(d, barn_world(d, 'world_0'))", expect="benchmark.json: scenarios: must be a mapping"),
+    Case("import-barn-same-name-twice",
+         python="import_barn(d, barn_world(d / 'a', 'world_0'), barn_world(d / 'b', 'world_0'))",
+         expect="world_0: given twice"),
+    Case("demo-scenario-name-leaves-no-file-outside-out",
+         {"s.yaml": "name: ../../escaped\nworld: {width: 10, height: 10}\nrobot: {x: 1, y: 1}\n"
+                    "goal: {x: 8, y: 8}\nmax_time: 2\n"},
+         python=_DEMO_TRAVERSAL, status=0),
+    Case("fis-zero-rules", {"zero.fis": _fis().split("[Rules]")[0] + "[Rules]\n"}, _eval("zero.fis"),
+         expect="a fuzzy system needs at least one rule"),
+    Case("fuzzy-json-output-no-rule-concludes", python=_NO_V, expect="outputs.v: no rule concludes on this output"),
+    Case("api-save-fuzzy-system-a-name", python="fuzzynav.save_fuzzy_system('goal-seeking', d / 'x.fll')",
+         expect="system: must be a FuzzySystem or an Engine"),
+    Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
+         expect="options: must be a mapping"),
+    Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",
+         expect="did you mean 'scenario'"),
+    Case("gym-vector-reset-options-a-list",
+         python="gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mode='vector_entry_point')"
+                ".reset(options=[1])", expect="options: must be a mapping"),
+    Case("tune-checkpoint-options-a-list",
+         python="tuned_then_resumed(d, lambda a: a.update(options=np.array('[1, 2]')))",
+         expect="a.yaml.tune.npz: options: must be a mapping"),
+    Case("tune-checkpoint-values-cut",
+         python="tuned_then_resumed(d, lambda a: a.update(f=a['f'][:, :3]))", expect="f: must be a float array of"),
+    Case("tune-checkpoint-sizes-too-many",
+         python="tuned_then_resumed(d, lambda a: a.update(sizes=np.array([2, 2, 200])))",
+         expect="sizes: the generations' sizes must add up"),
+]
+
+CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS]

@@ -79,7 +79,7 @@ def run(args) -> int:
     announce()
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode
-    from fuzzynav.storage import write_text_atomic
+    from fuzzynav.storage import file_name_part, write_text_atomic
     from fuzzynav.world.scenario_file import open_scenario
 
     runs = demo_runs(args.scenario, args.controllers)
@@ -97,7 +97,7 @@ def run(args) -> int:
         if not args.no_plots:
             from fuzzynav.viz.trajectories import plot_episode
 
-            plot_episode(trace, scenario, args.out / f"{name}--{controller_name}.png")
+            plot_episode(trace, scenario, args.out / f"{file_name_part(name)}--{file_name_part(controller_name)}.png")
         print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} in {row['time_s']:.1f} s",
               flush=True)
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))

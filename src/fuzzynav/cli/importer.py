@@ -54,18 +54,26 @@ def run(args) -> int:
             references = json.loads(reference_file.read_text(encoding="utf-8"))["scenarios"]
         except (ValueError, KeyError, TypeError):
             raise InputError("unreadable reference file", source=str(reference_file)) from None
+        if not isinstance(references, dict):
+            raise InputError("must be a mapping of world names", source=str(reference_file), field="scenarios")
+    read = {}  # every world is read and checked before any file is written
     for name in args.worlds:
         path = Path(name)
+        if path.stem in read:
+            raise InputError(f"given twice ({read[path.stem][0]} and {path}): both would be written to "
+                             f"{out / path.stem}.yaml", source=path.stem)
         document = barn_scenario(read_posts(path), path.stem, args.scale)
         scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
-        write_text_atomic(out / f"{path.stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
         if path_file is None:
             print(f"fuzzynav import: {path}: no path_N.npy found, no BARN score for it", file=sys.stderr)
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
-        references[path.stem] = entry
+        read[path.stem] = (path, document, entry)
+    for stem, (_, document, entry) in read.items():
+        write_text_atomic(out / f"{stem}.yaml", yaml.safe_dump(document, sort_keys=False))
+        references[stem] = entry
     write_text_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
     print(f"{len(args.worlds)} BARN worlds -> {out}", file=sys.stderr)
     return 0

@@ -98,6 +98,11 @@ class FuzzySystem(VariableNames):
         self.check_unique_names()
         if not self.rules:
             raise InputError("a fuzzy system needs at least one rule", field="rules")
+        concluded = {variable for rule in self.rules for variable, _ in rule.conclusions}
+        for var in self.outputs:
+            if var.name not in concluded:
+                raise InputError("no rule concludes on this output (it would always answer 0)",
+                                 field=f"outputs.{var.name}")
         for var in self.inputs:
             for label, mf in var.terms.items():
                 if isinstance(mf, Linear):

@@ -54,7 +54,7 @@ class FuzzynavEnv(gymnasium.Env):
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         """A new episode (``options={"scenario": …}``: on that scenario, a name, file or object)."""
         super().reset(seed=None if seed is None else validation.seed(seed, field="seed"))
-        scenario = (options or {}).get("scenario")
+        scenario = validation.known_keys({} if options is None else options, ("scenario",), field="options").get("scenario")
         self.episodes.start([0], [self.np_random], None if scenario is None else [scenario])
         self._live[0] = True
         if self.render_mode == "human":

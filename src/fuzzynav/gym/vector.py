@@ -44,6 +44,7 @@ class FuzzynavVectorEnv(VectorEnv):
         self.render_mode = None
         self._rngs = [seeding.np_random()[0] for _ in range(self.num_envs)]
         self._ended = np.zeros(self.num_envs, dtype=bool)
+        self._started = False
 
     def reset(self, *, seed: int | list | None = None, options: dict | None = None):
         """New episodes everywhere; ``seed`` an int (sub-env i gets ``seed + i``) or a list;
@@ -60,12 +61,16 @@ class FuzzynavVectorEnv(VectorEnv):
         for i, s in enumerate(seeds):
             if s is not None:
                 self._rngs[i] = seeding.np_random(s)[0]
-        scenarios = (options or {}).get("scenarios")
+        scenarios = validation.known_keys({} if options is None else options, ("scenarios",),
+                                         field="options").get("scenarios")
         self.episodes.start(range(self.num_envs), self._rngs, scenarios)
         self._ended[:] = False
+        self._started = True
         return self.episodes.observe(), {}
 
     def step(self, actions):
+        if not self._started:
+            raise RuntimeError("call reset() before step()")
         ended = self._ended.copy()
         rewards, terminated, truncated, info = self.episodes.step(actions, ~ended)
         if ended.any():

@@ -159,8 +159,9 @@ def checkpoint_path(request: TuneRequest) -> Path | None:
     return None if request.out is None else Path(f"{request.out}.tune.npz")
 
 
-def _load_checkpoint(path: Path, request: TuneRequest) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The stored generations [(population, values)], after checking the options match."""
+def _load_checkpoint(path: Path, request: TuneRequest, dimension: int) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The stored generations [(population, values)], after checking the options match and the
+    arrays fit together (``dimension``: the searched parameters, the columns of a population)."""
     validation.check_npz(path)
     with np.load(path, allow_pickle=False) as data:
         try:
@@ -168,6 +169,15 @@ def _load_checkpoint(path: Path, request: TuneRequest) -> list[tuple[np.ndarray,
             sizes, x, f = data["sizes"], data["x"], data["f"]
         except (KeyError, ValueError) as error:
             raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
+    validation.mapping(options, str(path), "options")
+    for name, array, columns in (("x", x, dimension), ("f", f, 1 + len(OBJECTIVES))):
+        if array.ndim != 2 or array.shape[1] != columns or array.dtype.kind != "f":
+            raise InputError(f"must be a float array of {columns} columns, got {array.dtype} of shape {array.shape}",
+                             source=str(path), field=name)
+    if sizes.ndim != 1 or sizes.dtype.kind not in "iu" or np.any(sizes < 0) or int(sizes.sum()) != len(x) \
+            or len(f) != len(x):
+        raise InputError(f"the generations' sizes must add up to the {len(x)} rows of x and f", source=str(path),
+                         field="sizes")
     for key, value in request.replayed().items():
         if options.get(key) != value:
             raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
@@ -201,7 +211,8 @@ def tune(request: TuneRequest) -> dict:
     chooser = validation_suite(request, suite)
     space = SearchSpace(system, request.what)
     path = checkpoint_path(request)
-    stored = _load_checkpoint(path, request) if request.resume and path is not None and path.is_file() else []
+    resumed = request.resume and path is not None and path.is_file()
+    stored = _load_checkpoint(path, request, len(space.start)) if resumed else []
     fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)],
                       wall=not spec_of(request.controller).goal_directed)
     optimiser = make_optimiser(request.method, space, request.population, request.seed,

@@ -65,6 +65,9 @@ def read_posts(path: Path) -> np.ndarray:
     return np.array(posts)
 
 
+MAX_CELL = 1e6  # |grid cell| of a path file (BARN's grid is 30 × 30 cells)
+
+
 def optimal_path_length(path_file: Path) -> float:
     """Length (m) of BARN's optimal path of ``path_N.npy`` with the start and the goal added (run.py)."""
     try:
@@ -73,6 +76,10 @@ def optimal_path_length(path_file: Path) -> float:
         raise InputError(f"unreadable path file ({error})", source=str(path_file)) from None
     if cells.ndim != 2 or cells.shape[1] != 2 or len(cells) == 0:
         raise InputError(f"must be an (n, 2) array of grid cells, got shape {cells.shape}", source=str(path_file))
+    if cells.dtype.kind not in "iuf":
+        raise InputError(f"must hold grid cells as numbers, got dtype {cells.dtype}", source=str(path_file))
+    if not np.all(np.isfinite(cells)) or np.abs(cells).max() > MAX_CELL:
+        raise InputError(f"grid cells must be finite numbers within ±{MAX_CELL:g}", source=str(path_file))
     half = POST_SPACING / 2
     points = np.column_stack([cells[:, 0] * POST_SPACING - half - 30 * POST_SPACING,
                               cells[:, 1] * POST_SPACING + half + 5.0])

@@ -193,6 +193,12 @@ def generated_world(name: str) -> Scenario | None:
     """World ``i`` of ``generate_worlds(kind, n, seed)`` from its name ``<kind>-<seed>-<i>`` (as
     ``fuzzynav evaluate`` names them), or ``None`` when ``name`` is not such a name."""
     parts = name.rsplit("-", 2)
-    if len(parts) != 3 or parts[0] not in KINDS or not (parts[1].isdigit() and parts[2].isdigit()):
+    if len(parts) != 3 or parts[0] not in KINDS or not all(p.isascii() and p.isdigit() for p in parts[1:]):
         return None
+    shown = name if len(name) <= 80 else f"{name[:60]}…"
+    if len(parts[1]) > 20 or int(parts[1]) > validation.MAX_SEED:
+        raise InputError(f"its SEED must be a whole number from 0 to {validation.MAX_SEED:,}", source=shown)
+    if len(parts[2]) > 6 or int(parts[2]) >= validation.MAX_WORLDS:
+        raise InputError(f"its world index must be a whole number from 0 to {validation.MAX_WORLDS - 1:,}",
+                         source=shown)
     return generate_world(parts[0], int(parts[1]), int(parts[2]))

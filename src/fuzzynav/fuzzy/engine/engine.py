@@ -93,6 +93,8 @@ class Engine(VariableNames):
                     if isinstance(mf, Function) and mf.variables:
                         raise InputError("a Function term of an integral output may use only x",
                                          field=f"{var.name}.{label}")
+        if not self.rules:
+            raise InputError("a fuzzy system needs at least one rule", field="rules")
         for b, block in enumerate(self.blocks):
             where = f"RuleBlock {block.name or b + 1}"
             for key, table in (("conjunction", TNORMS), ("implication", TNORMS), ("disjunction", SNORMS)):

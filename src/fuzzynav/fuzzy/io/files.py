@@ -71,7 +71,10 @@ def loads(text: str, fmt: str, source: str | None = None) -> FuzzySystem | Engin
 
 def save(system: FuzzySystem | Engine, path, fmt: str | None = None) -> Path:
     """Write ``system`` to ``path`` (format from the suffix unless ``fmt``), atomically."""
-    path = Path(path)
+    if not isinstance(system, (FuzzySystem, Engine)):
+        raise InputError(f"must be a FuzzySystem or an Engine (e.g. fuzzynav.get_system(NAME)), got "
+                         f"{type(system).__name__} {validation.shown(system)}", field="system")
+    path = validation.file_path(path, field="path")
     text = dumps(system, fmt or format_of(path))
     write_text_atomic(path, text)
     return path
