@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import difflib
+import io
 import json
 import math
 import operator
@@ -373,7 +374,8 @@ def csv_table(content: str, source=None) -> tuple[list[str], list[tuple[int, dic
     been removed (:func:`decode`); a column name given twice is refused (``csv.DictReader``
     would silently keep the last column) and names are stripped of surrounding blanks."""
     try:
-        lines = [(number, cells) for number, cells in enumerate(csv.reader(content.splitlines()), start=1) if cells]
+        reader = csv.reader(io.StringIO(content, newline=""))
+        lines = [(reader.line_num, cells) for cells in reader if cells]
     except csv.Error as error:
         fail(f"unreadable CSV ({error})", source)
     if not lines:
@@ -382,5 +384,8 @@ def csv_table(content: str, source=None) -> tuple[list[str], list[tuple[int, dic
     repeated = sorted({name for name in header if header.count(name) > 1})
     if repeated:
         fail(f"column(s) {', '.join(map(repr, repeated))} appear more than once", source, "header")
+    for number, cells in lines[1:]:
+        if len(cells) > len(header):
+            fail(f"{len(cells)} values for {len(header)} columns", source, f"line {number}")
     return header, [(number, {name: cells[j] if j < len(cells) else None for j, name in enumerate(header)})
                     for number, cells in lines[1:]]

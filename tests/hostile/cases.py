@@ -463,11 +463,46 @@ NAMES_AND_IMPORTS = [
          {"s.yaml": "name: ../../escaped\nworld: {width: 10, height: 10}\nrobot: {x: 1, y: 1}\n"
                     "goal: {x: 8, y: 8}\nmax_time: 2\n"},
          python=_DEMO_TRAVERSAL, status=0),
-    Case("fis-zero-rules", {"zero.fis": _fis().split("[Rules]")[0] + "[Rules]\n"}, _eval("zero.fis"),
-         expect="a fuzzy system needs at least one rule"),
+    Case("fis-zero-rules", {"zero.fis": _fis().replace("NumRules=2", "NumRules=0").split("[Rules]")[0] + "[Rules]\n"},
+         _eval("zero.fis"), expect="a fuzzy system needs at least one rule"),
+    Case("fis-num-rules-disagrees", {"n.fis": _fis().replace("NumRules=2", "NumRules=3")}, _eval("n.fis"),
+         expect="line 6 (NumRules): says 3, the file holds 2"),
+    Case("fis-num-inputs-disagrees", {"n.fis": _fis().replace("NumInputs=1", "NumInputs=99999999999999999999")},
+         _eval("n.fis"), expect="(NumInputs): says 99999999999999999999, the file holds 1"),
+    Case("fis-unknown-type", {"t.fis": _fis().replace("Type='mamdani'", "Type='tsk'")}, _eval("t.fis"),
+         expect="line 3 (Type): must be one of mamdani, sugeno, tsukamoto, got 'tsk'"),
+    Case("fis-sugeno-with-a-mamdani-defuzzifier", python=(
+        "from fuzzynav.cli import main\n"
+        "assert main(['fis', 'convert', 'goal-seeking', '--to', 'fis', '-o', str(d / 'gs.fis')]) == 0\n"
+        "text = (d / 'gs.fis').read_text().replace(\"DefuzzMethod='wtsum'\", \"DefuzzMethod='mom'\")\n"
+        "(d / 'mom.fis').write_text(text)\n"
+        "fuzzynav.load_fuzzy_system(d / 'mom.fis')"), expect="(DefuzzMethod): a sugeno system takes wtaver or wtsum"),
+    Case("fuzzy-json-triangle-of-two", python=(
+        "from fuzzynav.fuzzy.io.document import to_document\n"
+        "doc = to_document(fuzzynav.thesis_system('goal-seeking'))\n"
+        "doc['inputs'][0]['terms']['P']['params'] = [0.1, 3.5]\n"
+        "(d / 'tri.json').write_text(json.dumps(doc))\n"
+        "fuzzynav.load_fuzzy_system(d / 'tri.json')"),
+        expect="inputs[0].terms.P: a triangle takes 3 parameters (a, b, c), got 2"),
     Case("fuzzy-json-output-no-rule-concludes", python=_NO_V, expect="outputs.v: no rule concludes on this output"),
     Case("api-save-fuzzy-system-a-name", python="fuzzynav.save_fuzzy_system('goal-seeking', d / 'x.fll')",
          expect="system: must be a FuzzySystem or an Engine"),
+    Case("csv-more-values-than-columns", {"in.csv": "drg,theta\n1,0,5\n"},
+         ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"), expect="in.csv: line 2: 3 values for 2 columns"),
+    Case("csv-quoted-newline-is-no-number", {"in.csv": 'drg,theta\n1,"0\n5"\n'},
+         ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"), expect="non-numeric value"),
+    Case("fis-convert-suffix-against-to", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", "{d}/x.json"),
+         expect="-o: the file's suffix says json, --to says fll"),
+    Case("fis-convert-into-a-folder", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", "{d}/out/"),
+         expect="is a folder; give a file name"),
+    Case("anfis-model-range-reversed", python=(
+        "from fuzzynav.cli import main\n"
+        "assert main(['train', 'anfis-tracker', '--episodes', '2', '--out', str(d / 'a.json')]) == 0\n"
+        "doc = json.loads((d / 'a.json').read_text())\n"
+        "doc['model']['input_range'] = [[0.2, -0.2]]\n"
+        "(d / 'b.json').write_text(json.dumps(doc))\n"
+        "raise SystemExit(main(['fis', 'eval', str(d / 'b.json'), '--input', 'theta_er=0']))"),
+        expect="input_range[0]: must be [lo, hi] with lo ≤ hi, got [0.2, -0.2]"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",

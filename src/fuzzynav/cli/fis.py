@@ -34,6 +34,7 @@ from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.export_c import FIXED_FORMATS
 from fuzzynav.fuzzy.fll_terms import term_to_fll
 from fuzzynav.fuzzy.io import FORMATS, dumps, load
+from fuzzynav.fuzzy.io.files import format_of
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
 from fuzzynav.storage import read_document, savefig_atomic, write_text_atomic
@@ -244,6 +245,15 @@ def _eval(args) -> int:
 
 
 def _convert(args) -> int:
+    if args.output and args.output != "-":
+        if args.output.endswith(("/", "\\")) or Path(args.output).is_dir():
+            raise InputError(f"{args.output} is a folder; give a file name", field="-o")
+        try:
+            said = format_of(args.output)
+        except InputError:  # a suffix of no fuzzy format (e.g. .txt): the text goes there as asked
+            said = args.to
+        if said != args.to:
+            raise InputError(f"the file's suffix says {said}, --to says {args.to}", field="-o")
     _write(dumps(resolve(args.system), args.to), args.output)
     return 0
 

@@ -56,7 +56,7 @@ def run(args) -> int:
             raise InputError("unreadable reference file", source=str(reference_file)) from None
         if not isinstance(references, dict):
             raise InputError("must be a mapping of world names", source=str(reference_file), field="scenarios")
-    read = {}  # every world is read and checked before any file is written
+    read: dict[str, tuple] = {}  # every world is read and checked before any file is written
     for name in args.worlds:
         path = Path(name)
         if path.stem in read:

@@ -13,6 +13,7 @@ exactly. Linear consequents of first-order Takagi–Sugeno rules are :class:`Lin
 
 from __future__ import annotations
 
+import inspect
 import math
 from abc import ABC, abstractmethod
 
@@ -268,4 +269,10 @@ def make(kind: str, params) -> MembershipFunction:
     params = [float(p) for p in params]
     if cls is Linear:
         return Linear(params[:-1], params[-1]) if params else Linear((), 0.0)
+    names = list(inspect.signature(cls).parameters)
+    try:
+        inspect.signature(cls).bind(*params)
+    except TypeError:
+        raise ValueError(f"a {kind} takes {len(names)} parameter{'s' * (len(names) != 1)} ({', '.join(names)}), "
+                         f"got {len(params)}") from None
     return cls(*params)

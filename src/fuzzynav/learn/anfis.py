@@ -350,6 +350,10 @@ class ANFIS(RegressorMixin, BaseEstimator):
         model.consequents_ = validation.finite_array(document.get("consequents"), source, "consequents", shape=(len(model.rules_), width))
         model.input_range_ = validation.finite_array(document.get("input_range"), source, "input_range", shape=(n, 2))
         model.output_range_ = validation.finite_array(document.get("output_range"), source, "output_range", shape=(2,))
+        for where, (lo, hi) in [*((f"input_range[{i}]", r) for i, r in enumerate(model.input_range_)),
+                                ("output_range", model.output_range_)]:
+            if lo > hi:
+                raise InputError(f"must be [lo, hi] with lo ≤ hi, got [{lo:g}, {hi:g}]", source=source, field=where)
         model.premises_ = premises
         model.n_features_in_ = n
         model.best_epoch_ = int(document.get("best_epoch", -1))

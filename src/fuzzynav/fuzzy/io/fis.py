@@ -43,6 +43,9 @@ _TNORMS = {"min": "Minimum", "prod": "AlgebraicProduct", "bounded_difference": "
 _SNORMS = {"max": "Maximum", "probor": "AlgebraicSum", "bounded_sum": "BoundedSum", "drastic_sum": "DrasticSum",
            "einstein_sum": "EinsteinSum", "hamacher_sum": "HamacherSum", "nilpotent_maximum": "NilpotentMaximum",
            "normalized_sum": "NormalizedSum", "sum": "UnboundedSum"}
+_TYPES = ("mamdani", "sugeno", "tsukamoto")
+_SUGENO_DEFUZZ = ("wtaver", "wtsum")  # MATLAB: a Sugeno system's output is a weighted average or sum
+_COUNTS = ("NumInputs", "NumOutputs", "NumRules")
 _DEFUZZ = {"centroid": "Centroid", "bisector": "Bisector", "mom": "MeanOfMaximum", "lom": "LargestOfMaximum",
            "som": "SmallestOfMaximum", "wtaver": "WeightedAverage", "wtsum": "WeightedSum"}
 _HEDGE_CODES = {0.01: ("seldom",), 0.05: ("somewhat",), 0.2: ("very",), 0.3: ("extremely",), 0.4: ("very", "very"),
@@ -186,11 +189,31 @@ def _system_options(section: dict, lines: _Lines) -> dict:
             if value and value not in table:
                 raise lines.error(f"unknown {key} {value!r} (known: {', '.join(table)})", line, key)
             options[key] = table.get(value)
-        elif key in ("Name", "Type"):
+        elif key == "Type":
+            if value.lower() not in _TYPES:
+                raise lines.error(f"must be one of {', '.join(_TYPES)}, got {value!r}", line, key)
+            options[key], options["Type line"] = value, line
+        elif key == "Name":
             options[key] = value
-        elif key not in ("Version", "NumInputs", "NumOutputs", "NumRules"):
+        elif key in _COUNTS:
+            options[key] = (value, line)
+        elif key != "Version":
             raise lines.error(f"unknown key {key!r} in [System]", line, key)
+    defuzz = next((v for k, v, _ in section["items"] if k == "DefuzzMethod"), None)
+    allowed = _SUGENO_DEFUZZ if options.get("Type", "mamdani").lower() == "sugeno" else None
+    if defuzz is not None and allowed is not None and _text(defuzz) not in allowed:
+        raise lines.error(f"a sugeno system takes {' or '.join(allowed)}, got {_text(defuzz)!r}",
+                          options.get("Type line"), "DefuzzMethod")
     return options
+
+
+def _check_counts(options: dict, counts: dict, lines: _Lines) -> None:
+    """The [System] header's NumInputs, NumOutputs and NumRules, where given, match the sections."""
+    for key, found in counts.items():
+        if key in options:
+            value, line = options[key]
+            if value != str(found):
+                raise lines.error(f"says {value}, the file holds {found}", line, key)
 
 
 def from_fis_engine(text: str, source: str | None = None, semantics: str = "matlab") -> Engine:
@@ -231,6 +254,7 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
             rule, connective = _rule(value, in_vars, out_vars, lines, line)
             rules.append(rule)
             connectives.add(connective)
+    _check_counts(options, {"NumInputs": len(inputs), "NumOutputs": len(outputs), "NumRules": len(rules)}, lines)
     block = model.RuleBlock(rules, conjunction=options.get("AndMethod"), disjunction=options.get("OrMethod"),
                             implication=options.get("ImpMethod"))
     try:
