@@ -81,6 +81,10 @@ def atomic_write(path, write) -> None:
         if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
         if isinstance(error, OSError):
+            blocking = next((p for p in path.parents if p.is_file()), None)
+            if blocking is not None:
+                raise InputError(f"{blocking} is a file, not a folder: cannot write {path.name} in it",
+                                 source=str(path)) from None
             raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
         raise
     remove_stale_temporaries(path, older_than=started - 1.0)

@@ -153,6 +153,17 @@ def spec_of(name: str) -> ControllerSpec:
     return CONTROLLERS.find(name)
 
 
+def scenario_controllers(scenario, source: str) -> tuple[str, ...]:
+    """A scenario's own ``controllers`` list, each name known (an unknown one is an
+    :class:`InputError` naming the scenario file ``source`` and its place in the list)."""
+    for i, name in enumerate(scenario.controllers):
+        try:
+            spec_of(name)
+        except InputError as error:
+            raise InputError(error.problem, source=source, field=f"controllers[{i}]") from None
+    return scenario.controllers
+
+
 def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (or under the alias ``name``); a controller
     with aliases carries the name asked for, which its traces and metrics show."""

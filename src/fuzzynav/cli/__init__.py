@@ -78,7 +78,10 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as error:
         # a file named on the command line cannot be read or written (missing folder, permission, ...)
         where = f"{error.filename}: " if error.filename else ""
-        print(f"fuzzynav {args.command}: error: {where}{error.strerror or error}", file=sys.stderr)
+        problem = error.strerror or error
+        if isinstance(error, FileExistsError) and error.filename and os.path.isfile(error.filename):
+            problem = "is a file, not a folder (give a new or an existing folder)"
+        print(f"fuzzynav {args.command}: error: {where}{problem}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

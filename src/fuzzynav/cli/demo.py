@@ -43,6 +43,7 @@ fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-
 def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:
     """The (scenario, controller) pairs of the built-in scenarios (all, or those named — built-in
     names or scenario files), with each scenario's own controllers or the ``controllers`` given."""
+    from fuzzynav.catalog.controllers import scenario_controllers
     from fuzzynav.errors import InputError
     from fuzzynav.world.scenario import list_scenarios
     from fuzzynav.world.scenario_file import open_scenario
@@ -50,7 +51,7 @@ def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:
     runs = []
     for name in names or list_scenarios():
         scenario = open_scenario(name)
-        chosen = controllers or scenario.controllers
+        chosen = controllers or scenario_controllers(scenario, name)
         if not chosen and names:  # a built-in scenario without controllers is left out of the full demo
             raise InputError(f"scenario {scenario.name!r} names no controllers (no 'controllers' key): "
                              "give them with --controllers, e.g. --controllers fuzzy-5b,fuzzy-2b", field="--controllers")

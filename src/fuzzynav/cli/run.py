@@ -15,7 +15,7 @@ import math
 import sys
 
 from fuzzynav import validation
-from fuzzynav.catalog.controllers import available, check_task
+from fuzzynav.catalog.controllers import available, check_task, scenario_controllers
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
@@ -30,13 +30,14 @@ PLANT_HELP = ("what moves the robot and reads its sensors: kinematic (the thesis
 DEFAULT_CONTROLLER = "fuzzy-5b"  # the default navigator (docs/guide/controllers.md)
 
 
-def default_controller(scenario) -> str:
+def default_controller(scenario, source: str) -> str:
     """The controller run when none is named: :data:`DEFAULT_CONTROLLER` on a goal task, else the
-    first of the scenario's own ``controllers`` (a tracker for a path, a pursuer for a target)."""
+    first of the scenario's own ``controllers`` (a tracker for a path, a pursuer for a target;
+    ``source``: the scenario as the user named it, for an error)."""
     if scenario.task == "goal":
         return DEFAULT_CONTROLLER
     if scenario.controllers:
-        return scenario.controllers[0]
+        return scenario_controllers(scenario, source)[0]
     raise InputError(f"scenario {scenario.name!r} is a {scenario.task} task and lists no controllers: name one, "
                      "e.g. --controller fuzzy-tracker", field="--controller")
 
@@ -94,7 +95,7 @@ def run(args) -> int:
     check_plant(args.plant)
     scenario = open_scenario(args.scenario)
     if args.model is None and args.controller is None:
-        args.controller = default_controller(scenario)
+        args.controller = default_controller(scenario, args.scenario)
     if args.model:
         from fuzzynav.catalog.tasks import load_controller
 
