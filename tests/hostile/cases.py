@@ -513,6 +513,14 @@ NAMES_AND_IMPORTS = [
          expect="f: is a file, not a folder"),
     Case("worlds-generate-out-is-a-file", {"f": "x"}, ("worlds", "generate", "mixed", "--n", "1", "--out", "{d}/f"),
          expect="f is a file, not a folder: cannot write mixed-0-000.yaml in it"),
+    Case("q-goal-model-steering-of-50-rad", python=(
+        "from fuzzynav.cli import main\n"
+        "assert main(['train', 'q-goal', '--episodes', '4', '--out', str(d / 'q.json')]) == 0\n"
+        "doc = json.loads((d / 'q.json').read_text())\n"
+        "doc['steering'] = [0.0, -50.0, 50.0]\n"
+        "(d / 'x.json').write_text(json.dumps(doc))\n"
+        "raise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.json')]))"),
+        expect="x.json: steering: steering angles must lie in (-π/2, π/2) rad"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",

@@ -182,6 +182,9 @@ class TabularGoalSeeker(BatchController):
         self.state_of = state_of
         self.greedy = np.asarray(greedy, dtype=int)
         self.steering = validation.finite_array(steering, field="steering", ndim=1, empty=False)
+        if np.abs(self.steering).max() >= np.pi / 2:  # as a robot's max_steering (robot.tricycle)
+            raise InputError(f"steering angles must lie in (-π/2, π/2) rad, got {self.steering.tolist()}",
+                             field="steering")
         if self.greedy.size == 0 or self.greedy.min() < 0 or self.greedy.max() >= self.steering.size:
             raise InputError("greedy actions outside the action set", field="greedy")
         self.speed = check_speed(speed, "speed")
