@@ -521,6 +521,11 @@ NAMES_AND_IMPORTS = [
         "(d / 'x.json').write_text(json.dumps(doc))\n"
         "raise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.json')]))"),
         expect="x.json: steering: steering angles must lie in (-π/2, π/2) rad"),
+    Case("train-curve-into-a-folder",
+         argv=("train", "q-goal", "--episodes", "4", "--out", "{d}/q.json", "--curve", "{d}"),
+         expect="is a folder; give the figure's file name"),
+    Case("run-rays-without-a-plot", argv=("run", "fig-IV-23", "--controller", "goal-seeking", "--rays"),
+         expect="--rays: draws the sensor rays on the --plot figure"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",

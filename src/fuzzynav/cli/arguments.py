@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import re
 from collections.abc import Callable
+from pathlib import Path
 
 from fuzzynav import validation
 
@@ -92,6 +93,8 @@ def figure_path(text: str) -> str:
     """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG)."""
     from matplotlib.backend_bases import FigureCanvasBase
 
+    if Path(text).is_dir():
+        raise argparse.ArgumentTypeError(f"{text!r} is a folder; give the figure's file name")
     suffix = text.rpartition(".")[2].lower() if "." in text.rpartition("/")[2] else ""
     supported = FigureCanvasBase.get_supported_filetypes()
     if suffix and suffix not in supported:

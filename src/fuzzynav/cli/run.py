@@ -88,6 +88,8 @@ def run(args) -> int:
         validation.positive(args.max_time, field="--max-time")
     if args.fis and args.model:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
+    if args.rays and not args.plot:
+        raise InputError("draws the sensor rays on the --plot figure: give --plot FILE too", field="--rays")
     if not 64 <= args.size <= 4000:
         raise InputError(f"must be between 64 and 4000 pixels, got {args.size}", field="--size")
     if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
