@@ -526,6 +526,14 @@ NAMES_AND_IMPORTS = [
          expect="is a folder; give the figure's file name"),
     Case("run-rays-without-a-plot", argv=("run", "fig-IV-23", "--controller", "goal-seeking", "--rays"),
          expect="--rays: draws the sensor rays on the --plot figure"),
+    Case("neural-tracker-model-of-two-inputs", python=(
+        "from fuzzynav.cli import main\n"
+        "assert main(['train', 'neural-tracker', '--episodes', '2', '--out', str(d / 'n.json')]) == 0\n"
+        "doc = json.loads((d / 'n.json').read_text())\n"
+        "doc['model']['weights'][0].append(doc['model']['weights'][0][0])\n"
+        "(d / 'x.json').write_text(json.dumps(doc))\n"
+        "raise SystemExit(main(['run', 'fig-V-28', '--model', str(d / 'x.json')]))"),
+        expect="x.json: model: a tracker's model reads one input (θ_er), this one reads 2"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",

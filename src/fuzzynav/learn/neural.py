@@ -59,16 +59,16 @@ class NeuralInverseModel:
         self._compile_scalar()
 
     @property
-    def n_features_in(self) -> int:
+    def n_features_in_(self) -> int:
         return int(self.weights[0].shape[0])
 
     def predict(self, X) -> np.ndarray:
         """Commands (N,) for observed errors ``X`` (N, n_features) or (N,) — vectorised NumPy."""
         X = np.asarray(X, dtype=float)
-        if X.ndim == 1 and self.n_features_in == 1:
+        if X.ndim == 1 and self.n_features_in_ == 1:
             X = X[:, None]
-        if X.ndim != 2 or X.shape[1] != self.n_features_in:
-            raise InputError(f"expected shape (N, {self.n_features_in}), got {X.shape}", field="X")
+        if X.ndim != 2 or X.shape[1] != self.n_features_in_:
+            raise InputError(f"expected shape (N, {self.n_features_in_}), got {X.shape}", field="X")
         h = X
         for W, b in zip(self.weights[:-1], self.biases[:-1]):
             h = np.tanh(h @ W + b)
@@ -76,7 +76,7 @@ class NeuralInverseModel:
 
     def _compile_scalar(self) -> None:
         """Contiguous copies for :meth:`predict_one`: first-layer row, hidden layers, output column."""
-        self._first = np.ascontiguousarray(self.weights[0][0]) if self.n_features_in == 1 else None
+        self._first = np.ascontiguousarray(self.weights[0][0]) if self.n_features_in_ == 1 else None
         self._hidden = [(np.ascontiguousarray(W.T), b) for W, b in zip(self.weights[1:-1], self.biases[1:-1])]
         self._out = (np.ascontiguousarray(self.weights[-1][:, 0]), float(self.biases[-1][0]))
 
@@ -89,8 +89,8 @@ class NeuralInverseModel:
             h = np.tanh(self._first * float(x) + self.biases[0])
         else:
             xs = np.asarray(x, dtype=float).ravel()
-            if xs.shape != (self.n_features_in,):
-                raise InputError(f"expected {self.n_features_in} input value(s), got {xs.size}", field="x")
+            if xs.shape != (self.n_features_in_,):
+                raise InputError(f"expected {self.n_features_in_} input value(s), got {xs.size}", field="x")
             h = np.tanh(xs @ self.weights[0] + self.biases[0])
         for WT, b in self._hidden:
             h = np.tanh(WT.dot(h) + b)

@@ -123,6 +123,9 @@ def _document(kind: str, model, data: TrackerData, seed: int, seconds: float) ->
 
 
 def _tracker(kind: str, model, document: dict, source: str | None = None, **options) -> ModelTracker:
+    if model.n_features_in_ != 1:
+        raise InputError(f"a tracker's model reads one input (θ_er), this one reads {model.n_features_in_}",
+                         source=source, field="model")
     lo, hi = document["input_range"]
     options = {"speed": document.get("speed", DEFAULT_SPEED),
                "corner_radius": document.get("corner_radius", DEFAULT_CORNER_RADIUS),
