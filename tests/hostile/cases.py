@@ -534,6 +534,11 @@ NAMES_AND_IMPORTS = [
         "(d / 'x.json').write_text(json.dumps(doc))\n"
         "raise SystemExit(main(['run', 'fig-V-28', '--model', str(d / 'x.json')]))"),
         expect="x.json: model: a tracker's model reads one input (θ_er), this one reads 2"),
+    Case("fuzzy-json-version-true", python=(
+        "from fuzzynav.fuzzy.io.document import to_document\n"
+        "doc = {**to_document(fuzzynav.thesis_system('goal-seeking')), 'version': True}\n"
+        "(d / 'v.json').write_text(json.dumps(doc))\n"
+        "fuzzynav.load_fuzzy_system(d / 'v.json')"), expect="version: unsupported version True"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",

@@ -16,7 +16,7 @@ def check_format(document, fmt: str, version: int, what: str, source: str | None
     """A fitted-model document of format ``fmt`` and ``version`` (``what``: "an ANFIS", "an MLP")."""
     if not isinstance(document, dict) or document.get("format") != fmt:
         raise InputError(f"not {what} document (format must be {fmt!r})", source=source, field="format")
-    if document.get("version") != version:
+    if document.get("version") != version or isinstance(document.get("version"), bool):
         raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
 
 

@@ -191,7 +191,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
         raise InputError("a fuzzy system file holds a mapping", source=source)
     if doc.get("format", FORMAT) != FORMAT:
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
-    if doc.get("version", VERSION) != VERSION:
+    if doc.get("version", VERSION) != VERSION or isinstance(doc.get("version"), bool):
         raise InputError(f"unsupported version {doc.get('version')!r}", source=source, field="version")
     _check_keys(doc, _TOP_KEYS, source, "", strict=False)
     if "inputs" not in doc and isinstance(doc.get("kind"), str):
