@@ -103,6 +103,24 @@ def tuned_then_resumed(d, tamper):
     np.savez(path, **arrays)
     raise SystemExit(main(args[:5] + ["12"] + args[6:] + ["--resume"]))
 
+def edited_system(d, edit):
+    # the goal-seeking system as a JSON document, edited by edit(document), loaded back
+    from fuzzynav.fuzzy.io.document import to_document
+    document = to_document(fuzzynav.thesis_system("goal-seeking"))
+    edit(document)
+    (d / "edited.json").write_text(json.dumps(document))
+    fuzzynav.load_fuzzy_system(d / "edited.json")
+
+def edited_model(d, train, edit, run):
+    # a model trained by `fuzzynav train TRAIN... --out d/m.json`, edited by edit(document) into
+    # d/x.json, then `fuzzynav RUN... x.json`
+    from fuzzynav.cli import main
+    assert main(["train", *train, "--out", str(d / "m.json")]) == 0
+    document = json.loads((d / "m.json").read_text())
+    edit(document)
+    (d / "x.json").write_text(json.dumps(document))
+    raise SystemExit(main([*run, str(d / "x.json")]))
+
 def ascii_terminal(argv):
     # the command line with stdout and stderr encoded as ASCII; prints what it wrote
     import io, sys
@@ -424,11 +442,6 @@ ASCII = [
          expect="robot.max_steering: must be below \\u03c0/2"),
 ]
 
-_NO_V = ("from fuzzynav.fuzzy.io.document import to_document\n"
-         "doc = to_document(fuzzynav.thesis_system('goal-seeking'))\n"
-         "doc['rules'] = [r.split(' AND v IS')[0] for r in doc['rules']]\n"
-         "(d / 'nov.json').write_text(json.dumps(doc))\n"
-         "fuzzynav.load_fuzzy_system(d / 'nov.json')")
 _DEMO_TRAVERSAL = ("from fuzzynav.cli import main\n"
                    "assert main(['demo', '--scenario', str(d / 's.yaml'), '--controllers', 'goal-seeking', "
                    "'--out', str(d / 'a' / 'b' / 'out')]) == 0\n"
@@ -477,14 +490,12 @@ NAMES_AND_IMPORTS = [
         "text = (d / 'gs.fis').read_text().replace(\"DefuzzMethod='wtsum'\", \"DefuzzMethod='mom'\")\n"
         "(d / 'mom.fis').write_text(text)\n"
         "fuzzynav.load_fuzzy_system(d / 'mom.fis')"), expect="(DefuzzMethod): a sugeno system takes wtaver or wtsum"),
-    Case("fuzzy-json-triangle-of-two", python=(
-        "from fuzzynav.fuzzy.io.document import to_document\n"
-        "doc = to_document(fuzzynav.thesis_system('goal-seeking'))\n"
-        "doc['inputs'][0]['terms']['P']['params'] = [0.1, 3.5]\n"
-        "(d / 'tri.json').write_text(json.dumps(doc))\n"
-        "fuzzynav.load_fuzzy_system(d / 'tri.json')"),
-        expect="inputs[0].terms.P: a triangle takes 3 parameters (a, b, c), got 2"),
-    Case("fuzzy-json-output-no-rule-concludes", python=_NO_V, expect="outputs.v: no rule concludes on this output"),
+    Case("fuzzy-json-triangle-of-two",
+         python="edited_system(d, lambda doc: doc['inputs'][0]['terms']['P'].update(params=[0.1, 3.5]))",
+         expect="inputs[0].terms.P: a triangle takes 3 parameters (a, b, c), got 2"),
+    Case("fuzzy-json-output-no-rule-concludes",
+         python="edited_system(d, lambda doc: doc.update(rules=[r.split(' AND v IS')[0] for r in doc['rules']]))",
+         expect="outputs.v: no rule concludes on this output"),
     Case("api-save-fuzzy-system-a-name", python="fuzzynav.save_fuzzy_system('goal-seeking', d / 'x.fll')",
          expect="system: must be a FuzzySystem or an Engine"),
     Case("csv-more-values-than-columns", {"in.csv": "drg,theta\n1,0,5\n"},
@@ -495,14 +506,10 @@ NAMES_AND_IMPORTS = [
          expect="-o: the file's suffix says json, --to says fll"),
     Case("fis-convert-into-a-folder", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", "{d}/out/"),
          expect="is a folder; give a file name"),
-    Case("anfis-model-range-reversed", python=(
-        "from fuzzynav.cli import main\n"
-        "assert main(['train', 'anfis-tracker', '--episodes', '2', '--out', str(d / 'a.json')]) == 0\n"
-        "doc = json.loads((d / 'a.json').read_text())\n"
-        "doc['model']['input_range'] = [[0.2, -0.2]]\n"
-        "(d / 'b.json').write_text(json.dumps(doc))\n"
-        "raise SystemExit(main(['fis', 'eval', str(d / 'b.json'), '--input', 'theta_er=0']))"),
-        expect="input_range[0]: must be [lo, hi] with lo ≤ hi, got [0.2, -0.2]"),
+    Case("anfis-model-range-reversed",
+         python="edited_model(d, ['anfis-tracker', '--episodes', '2'], "
+                "lambda doc: doc['model'].update(input_range=[[0.2, -0.2]]), ['fis', 'eval', '--input', 'theta_er=0'])",
+         expect="input_range[0]: must be [lo, hi] with lo ≤ hi, got [0.2, -0.2]"),
     Case("run-scenario-lists-an-unknown-controller",
          {"p.yaml": "robot: {x: 1, y: 1}\npath: [[2, 2], [8, 8]]\ncontrollers: [nope]\n"}, ("run", "{d}/p.yaml"),
          expect="p.yaml: controllers[0]: unknown controller 'nope'"),
@@ -513,32 +520,22 @@ NAMES_AND_IMPORTS = [
          expect="f: is a file, not a folder"),
     Case("worlds-generate-out-is-a-file", {"f": "x"}, ("worlds", "generate", "mixed", "--n", "1", "--out", "{d}/f"),
          expect="f is a file, not a folder: cannot write mixed-0-000.yaml in it"),
-    Case("q-goal-model-steering-of-50-rad", python=(
-        "from fuzzynav.cli import main\n"
-        "assert main(['train', 'q-goal', '--episodes', '4', '--out', str(d / 'q.json')]) == 0\n"
-        "doc = json.loads((d / 'q.json').read_text())\n"
-        "doc['steering'] = [0.0, -50.0, 50.0]\n"
-        "(d / 'x.json').write_text(json.dumps(doc))\n"
-        "raise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.json')]))"),
-        expect="x.json: steering: steering angles must lie in (-π/2, π/2) rad"),
+    Case("q-goal-model-steering-of-50-rad",
+         python="edited_model(d, ['q-goal', '--episodes', '4'], lambda doc: doc.update(steering=[0.0, -50.0, 50.0]), "
+                "['run', 'fig-IV-23', '--model'])",
+         expect="x.json: steering: steering angles must lie in (-π/2, π/2) rad"),
     Case("train-curve-into-a-folder",
          argv=("train", "q-goal", "--episodes", "4", "--out", "{d}/q.json", "--curve", "{d}"),
          expect="is a folder; give the figure's file name"),
     Case("run-rays-without-a-plot", argv=("run", "fig-IV-23", "--controller", "goal-seeking", "--rays"),
          expect="--rays: draws the sensor rays on the --plot figure"),
-    Case("neural-tracker-model-of-two-inputs", python=(
-        "from fuzzynav.cli import main\n"
-        "assert main(['train', 'neural-tracker', '--episodes', '2', '--out', str(d / 'n.json')]) == 0\n"
-        "doc = json.loads((d / 'n.json').read_text())\n"
-        "doc['model']['weights'][0].append(doc['model']['weights'][0][0])\n"
-        "(d / 'x.json').write_text(json.dumps(doc))\n"
-        "raise SystemExit(main(['run', 'fig-V-28', '--model', str(d / 'x.json')]))"),
-        expect="x.json: model: a tracker's model reads one input (θ_er), this one reads 2"),
-    Case("fuzzy-json-version-true", python=(
-        "from fuzzynav.fuzzy.io.document import to_document\n"
-        "doc = {**to_document(fuzzynav.thesis_system('goal-seeking')), 'version': True}\n"
-        "(d / 'v.json').write_text(json.dumps(doc))\n"
-        "fuzzynav.load_fuzzy_system(d / 'v.json')"), expect="version: unsupported version True"),
+    Case("neural-tracker-model-of-two-inputs",
+         python="edited_model(d, ['neural-tracker', '--episodes', '2'], "
+                "lambda doc: doc['model']['weights'][0].append(doc['model']['weights'][0][0]), "
+                "['run', 'fig-V-28', '--model'])",
+         expect="x.json: model: a tracker's model reads one input (θ_er), this one reads 2"),
+    Case("fuzzy-json-version-true", python="edited_system(d, lambda doc: doc.update(version=True))",
+         expect="version: unsupported version True"),
     Case("gym-reset-options-a-list", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options=[1, 2])",
          expect="options: must be a mapping"),
     Case("gym-reset-options-typo", python="gymnasium.make('fuzzynav/GoalSeeking-v0').reset(options={'scenari': 'x'})",
