@@ -11,6 +11,7 @@ exit 2 / an ``InputError`` whose message holds ``expect``, or (``status=0``) suc
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 from tests.validation.hostile_cases import Case
 
@@ -80,10 +81,9 @@ def locked_bench(d):
 def barn_world(d, name="world_1"):
     # the BARN world of tests/data/barn (MIT licence) copied as d/NAME.world; its path file is the case's
     import shutil
-    import tests
     target = d / f"{name}.world"
     target.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copy(Path(tests.__file__).parent / "data" / "barn" / "world_0.world", target)
+    shutil.copy(BARN_WORLD, target)
     return target
 
 def import_barn(d, *worlds):
@@ -136,6 +136,9 @@ def ascii_terminal(argv):
     print(text, file=sys.stderr if code else sys.stdout)
     raise SystemExit(code)
 """
+# the BARN world the import cases copy (tests/data/barn, MIT licence), by absolute path so that the
+# prelude also runs in a subprocess whose folder is the case's (tests/validation/hostile_subprocesses.py)
+PRELUDE += f"BARN_WORLD = {str(Path(__file__).resolve().parent.parent / 'data' / 'barn' / 'world_0.world')!r}\n"
 
 _FLL = """Engine: t
 InputVariable: x
