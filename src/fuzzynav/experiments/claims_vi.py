@@ -5,7 +5,7 @@ Every run follows the thesis' protocol (one robot, episodes one by one, q = 0 at
 conclusion of best quality; :data:`fuzzynav.learn.tasks.common.THESIS`). A check marked
 ``thesis`` states what the French text says (its numbers are approximate readings of curves:
 "à partir de l'épisode 250"); ``package`` checks are targets the thesis does not give (success
-rates over 100 random worlds, a fifth of the hand-made follower's collisions). A run that did
+rates over 100 or 300 random worlds, a fifth of the hand-made follower's collisions). A run that did
 not converge within its budget reports ``None`` and fails the checks that need convergence.
 """
 
@@ -210,7 +210,7 @@ EXPERIMENTS = [
           "(episodes 1 and 20), converges from about episode 250 (steering) and 2,000 (speed); the conclusions of "
           "best quality then avoid obstacles and follow walls to reach a goal (Fig VI.21).",
           "From q = 0: a collision in the first 20 training episodes, steering converges, the learned navigator "
-          "follows a wall to its goal, differs from and beats its initial table, and reaches ≥ 90 % of 100 random "
+          "follows a wall to its goal, differs from and beats its initial table, and reaches ≥ 90 % of 300 random "
           "obstacle worlds with no collision.", _fig_vi_22),
     _spec("fig-VI-24", "chapter IV navigator vs FQL navigator on a world where both must avoid",
           "§VI.5.2.1, Figs VI.23–VI.24",
