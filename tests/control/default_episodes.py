@@ -1,7 +1,7 @@
 """Episodes of the default ``fuzzy-5b`` recorded before its kernels were made cheaper
 (tests/control/test_default_same.py checks today's drive them alike; today's run without the
-pace and without reusing the car route, which came later and change the decisions:
-``paced=False``, ``guide_car_reuse`` 0). Record again, from a
+pace, without reusing the car route and without planning the next arc as one ends, which came
+later and change the decisions: ``paced=False``, ``guide_car_reuse`` 0, ``guide_car_chain`` 0). Record again, from a
 checkout whose decisions are the reference: ``PYTHONPATH=<checkout>/src python -m tests.control.default_episodes``."""
 
 import hashlib
@@ -13,15 +13,15 @@ WORLDS = [("mixed", i) for i in range(4)] + [("dense", i) for i in range(2)]  # 
 
 
 def run_all() -> dict:
-    """{world: [outcome, steps, hash of the behaviour labels, final pose]} of ``fuzzy-5b`` without the pace
-    and the car route's reuse."""
+    """{world: [outcome, steps, hash of the behaviour labels, final pose]} of ``fuzzy-5b`` without the pace,
+    the car route's reuse and the chained arcs."""
     from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import run_episode
     from fuzzynav.world.generate import generate_world
 
     out = {}
     for kind, i in WORLDS:
-        controller = make_controller("fuzzy-5b", paced=False, guidance={"guide_car_reuse": 0.0})
+        controller = make_controller("fuzzy-5b", paced=False, guidance={"guide_car_reuse": 0.0, "guide_car_chain": 0.0})
         trace = run_episode(generate_world(kind, 0, i), controller, seed=0)
         labels = "|".join(trace.behaviour.tolist()).encode()
         out[f"{kind}-{i}"] = [trace.outcome, int(trace.steps), hashlib.sha256(labels).hexdigest()[:16],

@@ -127,3 +127,26 @@ def test_the_car_routes_forward_arcs_are_paced_where_clear():
     assert arcs.size and arcs.min() >= floor - 1e-9 and arcs.max() > 1.5 * floor
     assert paced.steps < 0.9 * fixed.steps
     assert world.world.clearance(paced.pose[:, :2]).min() > world.robot.radius
+
+
+def back_ups(trace) -> int:
+    """How many runs of ``CAR-BACK`` steps the trace holds (each a back-up the layer drove)."""
+    backing = trace.behaviour == "CAR-BACK"
+    return int(np.count_nonzero(backing[1:] & ~backing[:-1]) + backing[0])
+
+
+def test_a_back_up_of_the_car_route_is_followed_by_the_next_plan_not_undone():
+    """``guide_car_chain``: when a backward arc of the car route ends, the route is planned again in
+    the same step, so the next arc starts at once. Without it (version 9) the navigator drove that
+    step, at the pace's speed on its full-lock steering, forward over the 0.21 m just backed, and
+    the next plan backed again: on Fig IV.23 about twenty back-ups in place before the loop escape
+    took the robot out. With it, the route's forward arc follows the first back-up."""
+    from fuzzynav.world.scenario import load_scenario
+
+    scenario = load_scenario("fig-IV-23")
+    undone = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_chain": 0}), seed=0)
+    chained = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    assert undone.reached and chained.reached and not chained.collision
+    assert back_ups(undone) >= 15 and back_ups(chained) <= 2
+    assert chained.steps < 0.6 * undone.steps
+    assert scenario.world.clearance(chained.pose[:, :2]).min() > scenario.robot.radius

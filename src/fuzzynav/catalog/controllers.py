@@ -41,19 +41,13 @@ register_controller(ControllerSpec(
     "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
     "and loop escape, its speed set by the room ahead on its arc (on the car route's forward arcs too), deciding "
     "where its command will act when the robot's actuation is late, its car route reused while valid, forgetting "
-    "where moving obstacles were and, among them, yielding to what its tracks predict would run into it (the layer "
-    "of fuzzy-5b-yield-tracks) and, when the command left would still run into a predicted track, taking the "
-    "closest of a sampled fan of commands that keeps clear of the tracks and of what stands, its back-up out of a "
-    "wedge allowed to close part of the gap to the nearest "
-    "point (a discrete control barrier function); version 1 of this name is fuzzy-5b-rays, version 2 drove at the thesis' speeds "
-    "(paced=False), version 3 did not compensate the latency, version 4 searched its car route at every plan "
-    "(guidance={'guide_car_reuse': 0}) and remembered moving obstacles wherever seen, version 5 drove the car "
-    "route's forward arcs at a fixed 0.8 m/s (pace={'pace_car': 0}), version 6 had no yield layer "
-    "(yield_in_traffic=False), version 7 backed only on safe steps (barrier=0), version 8 did not check its "
-    "command against the tracks' predicted motion (evade=False)",
+    "where moving obstacles were and, among them, yielding to and evading what its tracks predict would run into "
+    "it, its back-up out of a wedge allowed to close part of the gap to the nearest point, and its route planned "
+    "on as soon as a back-up of it ends; its earlier versions and the options that give them: "
+    "docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
-    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=9))
+    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=10))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "

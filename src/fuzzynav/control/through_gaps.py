@@ -25,8 +25,9 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   follows its point ``guide_car_ahead`` m ahead; where it passes closer (a passage barely wider
   than the body) or turns back at a cusp, the layer drives its arcs (``CAR-FWD`` at
   ``guide_car_speed``, ``CAR-BACK`` at the recovery's backing speed, each step checked against
-  the remembered points) and plans again after each. The grid route is the fallback when the
-  search gives up within ``guide_car_budget`` nodes.
+  the remembered points) and plans again after each — after a back-up in the same step
+  (``guide_car_chain``), so that the navigator does not drive forward over what was just backed.
+  The grid route is the fallback when the search gives up within ``guide_car_budget`` nodes.
 - The pace (:mod:`fuzzynav.kernels.pace`, ``pace_*``): where the navigator drives (not the
   layers' manoeuvres), its speed is raised to the one that leaves ``pace_horizon`` s of travel on
   the arc of its steering before the body comes within ``pace_room`` m of a lidar hit (at most
@@ -68,7 +69,8 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000, guide_car_reverse=2.0,
                     guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
                     guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8,
-                    guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5)
+                    guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5,
+                    guide_car_chain=1.0)
 # the pace (units and meaning: kernels.layers.Pace)
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
@@ -94,7 +96,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     ``forget_moving=False`` keeps every point seen among moving obstacles, as version 4 did;
     ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did; ``evade=False``
     runs it without the last check of its command against the tracks' predicted motion
-    (:mod:`fuzzynav.kernels.evasion`), as version 8 did;
+    (:mod:`fuzzynav.kernels.evasion`), as version 8 did; ``guidance={"guide_car_chain": 0}`` lets the
+    navigator drive the step after a back-up of the car route, as version 9 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as

@@ -22,8 +22,10 @@ remembered point and hold no cusp, the route point is that far along it and the 
 drives. Elsewhere — in a passage barely wider than the body, or in a K-turn — the layer drives
 the plan's first arc itself (:func:`manoeuvre`: backward at the recovery's backing speed,
 forward at ``guide_car_speed`` or the pace on its arc, :func:`fuzzynav.kernels.pace.car_pace`,
-while the recovery's safety test passes) and plans again at its end. A route point that a newly
-seen point blocks (nearer than the body's radius) is planned again at once.
+while the recovery's safety test passes) and plans again at its end (with ``guide_car_chain``,
+:mod:`fuzzynav.kernels.robust` plans at once when a backward arc ends, so the next arc starts in
+the same step). A route point that a newly seen point blocks (nearer than the body's radius) is
+planned again at once.
 
 The car route's poses are kept (``route_slots`` of them, in the robot's state row) and a plan
 reuses them instead of searching again while they stay valid (:func:`reused`): searched less

@@ -4,8 +4,7 @@ guidance and the pace that ``fuzzy-5b`` (the default) adds (the kernels:
 :mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`;
 the controller: :mod:`fuzzynav.control.robust`), generated from one dataclass per layer.
 
-The layers travel as two float arrays (two arguments of the compiled step, whose every array
-argument costs time at each call):
+The layers travel as two float arrays (two arguments of the compiled step; each costs time at a call):
 
 - ``params``: the fields of :data:`PARAMETERS` — :class:`Supervisor`, :class:`Body`,
   :class:`Recovery`, :class:`Loop`, :class:`Follow`, :class:`Guidance`, :class:`Pace`,
@@ -206,6 +205,8 @@ class Guidance:
     """m: the robot's farthest from a reused route"""
     guide_car_swerve: float = 0.0
     """rad: its heading's farthest from the route's there"""
+    guide_car_chain: float = 0.0
+    """1: a backward arc of the layer ends with the next plan in the same step (0: the navigator drives that step)"""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -353,7 +354,6 @@ class RobotState:
 NEW_EPISODE = {"last_x": math.nan, "last_y": math.nan, "best": math.inf, "t_best": math.nan, "route_x": math.nan,
                "route_y": math.nan, "planned": -math.inf, "guide_x": math.nan, "guide_y": math.nan,
                "guide_planned": -math.inf}
-
 
 PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Latency, Slots)
 PARAM_NAMES = tuple(field.name for record in PARAMETERS for field in fields(record))

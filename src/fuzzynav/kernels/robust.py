@@ -75,8 +75,9 @@ def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
         if state[STATE.active] != 0.0:
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[PARAM.radius])
+    heading_for = Robot(x, y, theta, robot.v, aim_x, aim_y)
     if p[PARAM.guide] != 0.0:
-        aim_x, aim_y = guidance.aim(state, p, remembered, Robot(x, y, theta, robot.v, aim_x, aim_y), t, p[PARAM.radius])
+        aim_x, aim_y = guidance.aim(state, p, remembered, heading_for, t, p[PARAM.radius])
     steering, speed, code = navigators.act_one(navigator, cstate, memory, Robot(x, y, theta, robot.v, aim_x, aim_y),
                                                seen, dt)
     if p[PARAM.pace] != 0.0 and speed > 0.0:
@@ -88,7 +89,12 @@ def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
         code = labels + 2
     if p[PARAM.guide] != 0.0 and state[STATE.phase] == NO_PHASE:
         quick = pace.car_pace(ranges, angles, max_range, p, state, distance)
+        backing = state[STATE.guide_gear] < 0.0
         moving, a, u = guidance.manoeuvre(state, p, remembered, x, y, theta, dt, quick)
+        if not moving and backing and p[PARAM.guide_car_chain] != 0.0:  # the back-up is over: plan on now
+            guidance.plan(state, p, remembered, heading_for, t, p[PARAM.radius])
+            moving, a, u = guidance.manoeuvre(state, p, remembered, x, y, theta, dt,
+                                              pace.car_pace(ranges, angles, max_range, p, state, distance))
         if moving:
             return a, u, labels + (3 if u < 0 else 4)
     if p[PARAM.recovery] == 0.0 or p[PARAM.max_reverse_speed] <= 0:
