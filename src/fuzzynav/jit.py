@@ -26,10 +26,8 @@ from numba.core import event
 PACKAGE = Path(__file__).resolve().parent
 STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
 CACHE_SUFFIXES = (".nbi", ".nbc")
-# CPU seconds a cold cache costs the demo, rounded up (measured: docs/results/first-run.md)
-COLD_COMPILE_SECONDS = 40
-COMPILE_NOTICE = (f"fuzzynav: compiling the simulator's kernels, first run only — about {COLD_COMPILE_SECONDS} s "
-                  "of CPU (later runs load them from the cache)")
+COMPILE_NOTICE = ("fuzzynav: compiling kernels not yet in the cache (once: later runs load them; a first run "
+                  "can spend a minute of CPU here, docs/results/first-run.md)")
 
 
 def _kernel_sources(package: Path) -> list[Path]:
@@ -105,7 +103,8 @@ class CompileNotice(event.Listener):
         module = getattr(getattr(dispatcher, "py_func", None), "__module__", "") or ""
         if not self.said and module.startswith("fuzzynav"):
             self.said = True
-            print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+            sys.stderr.write(COMPILE_NOTICE + "\n")  # one write: worker processes do not glue lines
+            sys.stderr.flush()
 
     def on_end(self, compile_event) -> None:
         """Nothing to do when a compilation ends."""

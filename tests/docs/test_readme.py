@@ -49,7 +49,7 @@ def test_the_tour_runs_top_to_bottom(tmp_path):
     for made in ("u.png", "u.gif", "my-world.yaml", "outputs.csv", "tracking.fll", "anfis.json", "anfis.fll",
                  "fql.npz", "fql.png", "figures/index.html", "figures/fig-V-28/fig-V-28.png",
                  "worlds/mixed-0-002.yaml", "my-demo/metrics.md"):
-        assert (folder / made).is_file(), made
+        assert (folder / "tour" / made).is_file(), made
 
 
 def test_the_api_example_runs_and_saves_a_plot(tmp_path):

@@ -31,7 +31,7 @@ def test_an_unknown_plant_is_refused_naming_the_choices(name):
 
 def test_without_mujoco_the_package_runs_and_the_mujoco_plant_names_its_extra(monkeypatch, capsys):
     monkeypatch.setitem(sys.modules, "mujoco", None)
-    with pytest.raises(InputError, match=r"fuzzynav\[physics\]"):
+    with pytest.raises(InputError, match=r"\.\[physics\]"):
         check_plant("mujoco")
     for command in (["run", "fig-IV-22a", "--plant", "mujoco"],
                     ["evaluate", "--worlds", "mixed", "--n", "1", "--plant", "mujoco"],

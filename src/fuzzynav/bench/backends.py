@@ -61,7 +61,7 @@ def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], No
     try:
         import ray
     except ImportError:
-        raise InputError("the ray backend needs Ray: pip install 'fuzzynav[cluster]'", field="--backend") from None
+        raise InputError("the ray backend needs Ray: pip install -e '.[cluster]' in the clone", field="--backend") from None
     address = address or os.environ.get("RAY_ADDRESS")
     started = not ray.is_initialized()
     if started:

@@ -54,7 +54,7 @@ def _thesis_task(name: str, module: str, kind: str, description: str, tasks: tup
 TRACKING = ("path", "target")  # the trackers' scenario tasks, as the built-in trackers' (catalog.controllers)
 _thesis_task("neural-tracker", "trackers", "neural-tracker", "MLP tracker by generalized learning (§V.3.2, Fig V.15)",
              TRACKING)
-_thesis_task("anfis-tracker", "trackers", "anfis-tracker", "ANFIS tracker, 1 input, 5 bell MFs (§V.3.5, Fig V.23)",
+_thesis_task("anfis-tracker", "trackers", "anfis-tracker", "ANFIS tracker, 1 input, 5 Gaussian MFs (§V.3.5, Fig V.23)",
              TRACKING)
 _thesis_task("q-goal", "tabular_goal", "q-goal", "tabular Q-learning goal seeking, 13 states x 3 actions (§VI.2)")
 _thesis_task("fql-goal", "fql_goal", "fql-goal", "FQL goal seeking, 15 rules x 3, steering then speed (§VI.5.1)")

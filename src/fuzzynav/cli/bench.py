@@ -56,7 +56,7 @@ def register(subparsers) -> None:
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
                         help=f"parallel workers, 1 to {validation.MAX_WORKERS} (default: the number of cores)")
     parser.add_argument("--backend", choices=("local", "ray"), default="local",
-                        help="local process pool (default) or Ray tasks (pip install 'fuzzynav[cluster]')")
+                        help="local process pool (default) or Ray tasks (pip install -e '.[cluster]' in the clone)")
     parser.add_argument("--ray-address", metavar="ADDR", default=None,
                         help="Ray cluster to join (default: $RAY_ADDRESS, else a local instance)")
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)

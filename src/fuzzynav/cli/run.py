@@ -20,8 +20,8 @@ from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
-                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-5b, fuzzy-5b-gap-robust, "
-                "fuzzy-5b-gap and fuzzy-2b-gap, thesis for the others)")
+                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-5b and its other name "
+                "fuzzy-5b-gap-robust, fuzzy-5b-gap and fuzzy-2b-gap, thesis for the others)")
 
 
 PLANT_HELP = ("what moves the robot and reads its sensors: kinematic (the thesis' model, default) or mujoco (a "

@@ -29,7 +29,7 @@ def _needs(module: str):
     try:
         return __import__(module)
     except ImportError:
-        raise InputError(f"needs the {module} package: pip install 'fuzzynav[tune]'", field="--method") from None
+        raise InputError(f"needs the {module} package: pip install -e '.[tune]' in the clone", field="--method") from None
 
 
 class PymooOptimiser:

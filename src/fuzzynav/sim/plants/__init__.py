@@ -72,7 +72,7 @@ def check_plant(name) -> str:
             importlib.import_module(module)
         except ImportError:
             raise InputError(f"the {name} plant needs the optional extra '{extra}': "
-                             f"pip install 'fuzzynav[{extra}]'", field="--plant") from None
+                             f"pip install -e '.[{extra}]' in the clone", field="--plant") from None
     return name
 
 
