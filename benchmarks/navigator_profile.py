@@ -16,6 +16,7 @@ route plan into its parts (CPU time), which the builds cannot separate. World:
 ``benchmarks/sim_core.py``'s 15 mixed obstacles, goal (19, 19); an episode that ends starts again. Run:
 
     python benchmarks/navigator_profile.py [--robots 1 64 1024] [--steps 400] [--json]
+    python benchmarks/navigator_profile.py --singles --robots 64 --steps 300   # batch against one at a time
 """
 
 from __future__ import annotations
@@ -168,12 +169,50 @@ def plans(n: int, steps: int) -> dict:
             "plan_share": {name: round(value / total, 3) if total else None for name, value in seconds.items()}}
 
 
+def against_singles(n: int, steps: int) -> dict:
+    """Wall µs per running robot-step of ``fuzzy-5b`` driving ``n`` robots in one batch, and of the
+    same robots (same starts, same ``steps``) run one at a time: whether batching itself costs."""
+    import time
+
+    import numpy as np
+
+    from fuzzynav.catalog.controllers import make_controller
+
+    scenario = world_of_15()
+    starts = start_poses(scenario, n)
+
+    def run(poses) -> tuple[float, int]:
+        sim = BatchSimulator(scenario, make_controller("fuzzy-5b"), starts=poses, record=False,
+                             sensors=named_ring("lidar"))
+        robot_steps, began = 0, time.perf_counter()
+        for _ in range(steps):
+            if sim.done:
+                break
+            robot_steps += int(np.count_nonzero(sim.active))
+            sim.step()
+        return time.perf_counter() - began, robot_steps
+
+    run(starts[:1])  # compiled before the clock
+    batch_wall, batch_steps = run(starts)
+    singles = [run(starts[i:i + 1]) for i in range(n)]
+    singles_wall, singles_steps = sum(w for w, _ in singles), sum(k for _, k in singles)
+    return {"robots": n, "steps": steps, "robot_steps": batch_steps,
+            "batch_us_per_robot_step": round(1e6 * batch_wall / max(batch_steps, 1), 1),
+            "singles_us_per_robot_step": round(1e6 * singles_wall / max(singles_steps, 1), 1)}
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--robots", type=int, nargs="+", default=[1, 64, 1024])
     parser.add_argument("--steps", type=int, default=400, help="steps per timed chunk (one robot; batches: /n·64)")
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
+    parser.add_argument("--singles", action="store_true",
+                        help="instead: each batch against its robots run one at a time (against_singles)")
     args = parser.parse_args(argv)
+    if args.singles:
+        print(json.dumps({"benchmark": "navigator_profile", "singles": [against_singles(n, args.steps)
+                                                                      for n in args.robots]}))
+        return
     report = {"benchmark": "navigator_profile", "controller": "fuzzy-5b", "chunks": CHUNKS, "robots": {}}
     for n in args.robots:
         steps = args.steps if n == 1 else max(5, args.steps * 64 // (n * 4))
