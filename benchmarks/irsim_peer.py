@@ -22,6 +22,7 @@ import math
 import sys
 import tempfile
 import time
+from pathlib import Path
 
 import yaml
 
@@ -80,7 +81,10 @@ def main() -> None:
     job = json.loads(sys.stdin.readline())
     with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as handle:
         yaml.safe_dump(world_yaml(job), handle)
-    env = irsim.make(handle.name, headless=True, log_level="ERROR")
+    try:
+        env = irsim.make(handle.name, headless=True, log_level="ERROR")
+    finally:
+        Path(handle.name).unlink()  # IR-SIM has read the world; no file left behind
     action = np.array([[job["command"][0]], [job["command"][1]]])
     for _ in range(3):
         env.step(action)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import io
 import json
+import shutil
 import tempfile
 from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
@@ -28,7 +29,12 @@ from fuzzynav.world.scenario import BUILTIN_DIR, read_yaml, scenario_from_dict
 
 from .strategies import FUZZ, documents, mutated, mutated_text
 
-WORK = Path(tempfile.mkdtemp(prefix="fuzzynav-fuzz-"))
+WORK = Path(tempfile.mkdtemp(prefix="fuzzynav-fuzz-"))  # module-wide: hypothesis runs many examples per test
+
+
+def teardown_module():
+    """Remove the files the examples wrote (pytest calls this once the module's tests are done)."""
+    shutil.rmtree(WORK, ignore_errors=True)
 GOAL_SEEKING = get_system("goal-seeking")
 SCENARIOS = [read_yaml(BUILTIN_DIR / f"{name}.yaml") for name in ("example-goal",)] + [
     {"robot": {"x": 2, "y": 2}, "path": [[3, 3], [9, 3], [9, 9]], "path_tolerance": 0.5, "speed": 1.0,
