@@ -150,3 +150,35 @@ def test_a_back_up_of_the_car_route_is_followed_by_the_next_plan_not_undone():
     assert back_ups(undone) >= 15 and back_ups(chained) <= 2
     assert chained.steps < 0.6 * undone.steps
     assert scenario.world.clearance(chained.pose[:, :2]).min() > scenario.robot.radius
+
+
+def test_the_car_route_ends_inside_the_goals_tolerance():
+    """Version 11: the car route's search ends within ``GOAL_SHARE`` of the goal's tolerance
+    (``for_goal``, told by the simulator), never beyond ``guide_car_reach``. Version 10's ended
+    0.5 m from the goal whatever the tolerance. In ``office-0-033`` (tolerance 0.3 m) its route
+    took the robot past the goal 0.43 m off, declared the route done, and left the goal beside and
+    then behind a car that cannot turn that tightly forwards: back-ups and the loop escape's
+    boundary following until the time limit."""
+    from fuzzynav.world.scenario_file import open_scenario
+
+    scenario = open_scenario("office-0-033")
+    goal = scenario.goal.position
+    beside = run_episode(scenario, make_controller("fuzzy-5b", goal_share=0), seed=0)
+    inside = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    assert beside.outcome == "timeout" and inside.reached and not inside.collision
+    assert np.hypot(*(beside.pose[:, :2] - goal).T).min() < 0.5  # it passed within the old reach
+    assert inside.time < 0.3 * beside.time
+    assert scenario.world.clearance(inside.pose[:, :2]).min() > scenario.robot.radius
+
+
+def test_the_goals_tolerance_bounds_the_car_routes_reach_and_nothing_else():
+    controller = make_controller("fuzzy-5b")
+    reach = layers.PARAM.guide_car_reach
+    controller.for_goal(0.3)
+    assert controller.params[reach] == pytest.approx(0.24)
+    controller.for_goal(1.0)  # BARN's tolerance: the search's own 0.5 m is inside it
+    assert controller.params[reach] == pytest.approx(0.5)
+    assert make_controller("fuzzy-5b", goal_share=0).for_goal(0.3).params[reach] == pytest.approx(0.5)
+    assert make_controller("fuzzy-5b-rays").for_goal(0.3).params[reach] == 0.0  # no car route, nothing to end
+    with pytest.raises(InputError, match="goal_share"):
+        make_controller("fuzzy-5b", goal_share=1.5)

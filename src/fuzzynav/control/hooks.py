@@ -18,6 +18,9 @@ controller implements one by defining its member, without deriving from it:
 - :class:`KnowsTraffic` — ``for_traffic(moving)``: told whether the scenario's obstacles move
   (its ``motion`` keys), to forget where they were (the default ``fuzzy-5b``,
   :mod:`fuzzynav.kernels.clearing`);
+- :class:`KnowsGoal` — ``for_goal(tolerance)``: told how near the goal counts as reached (a
+  goal task's ``goal.tolerance``), so that what it plans to stop at lies inside it (the default
+  ``fuzzy-5b``'s car route, :meth:`~fuzzynav.control.robust.RobustNavigator.for_goal`);
 - :class:`BringsSensors` — ``sensors``: the sensor ring it reads by default
   (:class:`~fuzzynav.robot.sensors.SensorRing`, ``None``: the thesis' seven rays); a scenario's
   ``sensors`` key, or ``--sensors``, overrides it;
@@ -59,6 +62,12 @@ class KnowsLatency(Protocol):
 class KnowsTraffic(Protocol):
     def for_traffic(self, moving: bool) -> object:
         """Told whether the scenario has moving obstacles."""
+
+
+@runtime_checkable
+class KnowsGoal(Protocol):
+    def for_goal(self, tolerance: float) -> object:
+        """Told the goal's tolerance (m)."""
 
 
 @runtime_checkable

@@ -78,15 +78,18 @@ class RobustNavigator(BatchController):
     decision at the pose where the command will act once told the robot's actuation latency
     (:meth:`for_latency`, :mod:`fuzzynav.kernels.latency`; for a dense scan, a lidar); with
     ``forget_moving=True``, in a scenario with moving obstacles, the points its scans contradict
-    forgotten (:meth:`for_traffic`); given ``traffic`` (a
+    forgotten (:meth:`for_traffic`); with ``goal_share`` > 0, the car route's search ending
+    within that share of the goal's tolerance (:meth:`for_goal`); given ``traffic`` (a
     :class:`~fuzzynav.control.yield_layer.YieldLayer`), in a scenario with moving obstacles only,
     that layer adjusts each command after the compiled decision (then made in Python, one call a
     step: :attr:`in_step` is False); ``systems`` of the navigator are its rule bases by role."""
 
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, barrier: float = 0.0, barrier_within: float = 0.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
-                 compensate: bool = False, forget_moving: bool = False, traffic=None):
+                 compensate: bool = False, forget_moving: bool = False, traffic=None, goal_share: float = 0.0):
         self.navigator, self.name, self.compensate, self.forget_moving = navigator, name, compensate, forget_moving
+        self.goal_share = validation.number(goal_share, "fuzzy-5b options", "goal_share", lo=0.0, hi=1.0)
+        self._reach = guidance.guide_car_reach if guidance else 0.0
         self.traffic, self._yielding = traffic, False
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
         supervisor = layers.Supervisor(on=1.0, recovery=float(recovery), escape=float(escape),
@@ -146,6 +149,16 @@ class RobustNavigator(BatchController):
         if delay != self.params[layers.PARAM.delay]:
             self.params[layers.PARAM.delay] = delay
             self._rows = None  # the state rows hold the queue: new ones at the next compiled()
+        return self
+
+    def for_goal(self, tolerance: float) -> RobustNavigator:
+        """Told the goal's tolerance (the scenario's ``goal.tolerance``): with ``goal_share`` > 0
+        the car route's search ends within ``goal_share`` × ``tolerance`` of the goal
+        (``guide_car_reach`` at most), inside the disc where the task is done. A route that ends
+        outside it (0.5 m against a 0.3 m tolerance) leaves the robot beside its goal and hands it
+        to the navigator, which cannot turn that tightly forwards."""
+        if self.goal_share > 0.0 and self._reach > 0.0:
+            self.params[layers.PARAM.guide_car_reach] = min(self._reach, self.goal_share * float(tolerance))
         return self
 
     def for_traffic(self, moving: bool) -> RobustNavigator:

@@ -28,6 +28,9 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   the remembered points) and plans again after each — after a back-up in the same step
   (``guide_car_chain``), so that the navigator does not drive forward over what was just backed.
   The grid route is the fallback when the search gives up within ``guide_car_budget`` nodes.
+  Its search ends ``guide_car_reach`` m from the goal, or within :data:`GOAL_SHARE` of the goal's
+  tolerance where that is nearer (told by the simulator: ``for_goal``), so that where the route
+  ends the goal is reached, not passed 0.4 m off to one side.
 - The pace (:mod:`fuzzynav.kernels.pace`, ``pace_*``): where the navigator drives (not the
   layers' manoeuvres), its speed is raised to the one that leaves ``pace_horizon`` s of travel on
   the arc of its steering before the body comes within ``pace_room`` m of a lidar hit (at most
@@ -71,6 +74,7 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8,
                     guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5,
                     guide_car_chain=1.0)
+GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance (RobustNavigator.for_goal)
 # the pace (units and meaning: kernels.layers.Pace)
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
@@ -88,7 +92,7 @@ def _replaced(record, values: dict | None, field: str):
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
                         yield_in_traffic: bool = True, evade: bool = True, barrier: float = 0.5,
-                        barrier_within: float = 0.05, **options) -> RobustNavigator:
+                        barrier_within: float = 0.05, goal_share: float = GOAL_SHARE, **options) -> RobustNavigator:
     """``fuzzy-5b`` (and ``fuzzy-5b-gap-robust``): ``fuzzy-5b-gap`` (``options`` go to it), route-guided
     (``guidance``: values replacing those of :data:`GUIDANCE`), paced by the room ahead (``pace``:
     values replacing those of :data:`PACE`), with recovery and loop escape (either, and the pace,
@@ -97,7 +101,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     ``yield_in_traffic=False`` runs no yield layer among them, as version 6 did; ``evade=False``
     runs it without the last check of its command against the tracks' predicted motion
     (:mod:`fuzzynav.kernels.evasion`), as version 8 did; ``guidance={"guide_car_chain": 0}`` lets the
-    navigator drive the step after a back-up of the car route, as version 9 did;
+    navigator drive the step after a back-up of the car route, as version 9 did; ``goal_share=0``
+    ends the car route ``guide_car_reach`` m from the goal whatever its tolerance, as version 10 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as
@@ -110,5 +115,5 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
                            barrier_within=barrier_within,
                            guidance=_replaced(GUIDANCE, guidance, "guidance"),
                            pace=_replaced(PACE, pace, "pace") if paced else None, compensate=True,
-                           forget_moving=forget_moving,
+                           forget_moving=forget_moving, goal_share=goal_share,
                            traffic=YieldLayer(tracks=True, evade=evade) if yield_in_traffic else None)

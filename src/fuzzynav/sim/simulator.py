@@ -41,7 +41,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
-from fuzzynav.control.hooks import CompiledAct, KnowsLatency, KnowsTraffic, MapAware, SizedForRobot
+from fuzzynav.control.hooks import CompiledAct, KnowsGoal, KnowsLatency, KnowsTraffic, MapAware, SizedForRobot
 from fuzzynav.kernels import imperfect, layers, step as step_kernel
 from fuzzynav.kernels.records import Robots
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -123,6 +123,8 @@ class BatchSimulator:
                 each.for_latency(self.imperfections.latency)
             if isinstance(each, KnowsTraffic):  # told whether obstacles move (RobustNavigator.for_traffic)
                 each.for_traffic(bool(scenario.world.moving))
+            if isinstance(each, KnowsGoal) and scenario.goal is not None:  # RobustNavigator.for_goal
+                each.for_goal(scenario.goal.tolerance)
         self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = (len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)

@@ -135,6 +135,9 @@ class Worlds:
         if not self.scenarios:
             raise InputError("no worlds to tune on", field="--worlds")
         params, setups, scenes, self.dt, self.max_time = [], [], [], [], []
+        tolerances = [scenario.goal.tolerance for scenario in self.scenarios if scenario.goal is not None]
+        if tolerances and callable(getattr(controller, "for_goal", None)):  # one layer row for all: the tightest
+            controller.for_goal(min(tolerances))
         for scenario in self.scenarios:
             ring = default_ring(scenario, controller)
             if ring.noise_std > 0:
