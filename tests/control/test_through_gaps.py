@@ -53,11 +53,13 @@ def test_fuzzy_5b_is_the_navigator_also_named_fuzzy_5b_gap_robust():
     assert (a.controller, b.controller) == ("fuzzy-5b", "fuzzy-5b-gap-robust")  # each run named as asked
 
 
-def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True) -> np.ndarray:
+def _aim(points, pose=(0.0, 0.0, np.pi / 2), car=True, tight=0.5, state=None) -> np.ndarray:
     """The target fuzzy-5b-gap-robust's route guidance (its car route, or the grid route only)
-    gives a robot at ``pose`` that has seen ``points``, the goal at (0, 10), at its first plan."""
-    params = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car": float(car)}).params
-    state = layers.fresh_state(1, params)[0]
+    gives a robot at ``pose`` that has seen ``points``, the goal at (0, 10), at its first plan
+    (the layer driving the car route's arcs where they pass within ``tight`` m beyond the radius;
+    ``state``: the state row it plans in, if given)."""
+    params = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car": float(car), "guide_car_tight": tight}).params
+    state = layers.fresh_state(1, params)[0] if state is None else state
     points = np.asarray(points, dtype=float)
     return np.array(guidance.aim(state, params, Sightings(points, len(points)), Robot(*pose, 0.0, 0.0, 10.0), 0.0,
                                  params[layers.PARAM.radius]))
@@ -69,6 +71,20 @@ def test_route_guidance_leads_round_a_wall_of_posts_on_the_side_of_its_opening(s
     given = _aim([(side * x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)], car=car)  # open beyond x = ±1
     assert np.hypot(*given) == pytest.approx(10.0)  # the goal's distance kept
     assert side * given[0] > 1.0  # towards the opening, not straight at the goal
+
+
+def test_the_default_drives_the_car_route_itself_where_it_passes_within_2_m_of_what_was_seen():
+    """Version 12 (``guide_car_tight`` 2.0): round the wall of posts the layer drives the route's
+    first arc itself (the navigator is given the goal meanwhile); with 0.5 m (version 11) the
+    route passes far enough from the posts for the navigator to drive towards its point."""
+    wall = [(x, 2.0) for x in np.arange(-4.0, 1.01, 0.1)]
+    default = make_controller("fuzzy-5b")
+    state = layers.fresh_state(1, default.params)[0]
+    assert default.params[layers.PARAM.guide_car_tight] == 2.0
+    np.testing.assert_allclose(_aim(wall, tight=2.0, state=state), [0.0, 10.0])
+    assert state[layers.STATE.guide_gear] != 0.0  # an arc of the layer's to drive
+    state = layers.fresh_state(1, default.params)[0]
+    assert _aim(wall, tight=0.5, state=state)[0] > 1.0 and state[layers.STATE.guide_gear] == 0.0
 
 
 def test_route_guidance_gives_the_goal_where_the_straight_line_is_free():
@@ -144,8 +160,9 @@ def test_a_back_up_of_the_car_route_is_followed_by_the_next_plan_not_undone():
     from fuzzynav.world.scenario import load_scenario
 
     scenario = load_scenario("fig-IV-23")
-    undone = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_chain": 0}), seed=0)
-    chained = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    undone = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_chain": 0, "guide_car_tight": 0.5}),
+                         seed=0)
+    chained = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_tight": 0.5}), seed=0)
     assert undone.reached and chained.reached and not chained.collision
     assert back_ups(undone) >= 15 and back_ups(chained) <= 2
     assert chained.steps < 0.6 * undone.steps
@@ -163,8 +180,9 @@ def test_the_car_route_ends_inside_the_goals_tolerance():
 
     scenario = open_scenario("office-0-033")
     goal = scenario.goal.position
-    beside = run_episode(scenario, make_controller("fuzzy-5b", goal_share=0), seed=0)
-    inside = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    version_11 = {"guidance": {"guide_car_tight": 0.5}}
+    beside = run_episode(scenario, make_controller("fuzzy-5b", goal_share=0, **version_11), seed=0)
+    inside = run_episode(scenario, make_controller("fuzzy-5b", **version_11), seed=0)
     assert beside.outcome == "timeout" and inside.reached and not inside.collision
     assert np.hypot(*(beside.pose[:, :2] - goal).T).min() < 0.5  # it passed within the old reach
     assert inside.time < 0.3 * beside.time

@@ -21,9 +21,9 @@ as the default is ``fuzzy-5b-rays``, :mod:`fuzzynav.control.robust`).
   :mod:`fuzzynav.kernels.car_route`): hybrid A* (Dolgov et al. 2008) with forward and backward
   arcs at the navigator's full lock (Reeds & Shepp 1990), on the remembered points, from the
   robot's pose, so the route respects the 0.69 m turning radius and holds the K-turns a tight
-  chamber needs. Where it stays ``guide_car_tight`` m clear of what was seen, the navigator
-  follows its point ``guide_car_ahead`` m ahead; where it passes closer (a passage barely wider
-  than the body) or turns back at a cusp, the layer drives its arcs (``CAR-FWD`` at
+  chamber needs. Where it stays ``guide_car_tight`` m (2 m) clear of what was seen, the navigator
+  follows its point ``guide_car_ahead`` m ahead; where it passes closer (a corridor, a door, the
+  posts of a forest) or turns back at a cusp, the layer drives its arcs (``CAR-FWD`` at
   ``guide_car_speed``, ``CAR-BACK`` at the recovery's backing speed, each step checked against
   the remembered points) and plans again after each — after a back-up in the same step
   (``guide_car_chain``), so that the navigator does not drive forward over what was just backed.
@@ -71,7 +71,7 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_headings=72, guide_car_weight=3.0, guide_car_comfort=0.3, guide_car_turn=0.1,
                     guide_car_switch=0.05, guide_car_reach=0.5, guide_car_budget=60000, guide_car_reverse=2.0,
                     guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
-                    guide_car_ahead=1.0, guide_car_tight=0.5, guide_car_speed=0.8,
+                    guide_car_ahead=1.0, guide_car_tight=2.0, guide_car_speed=0.8,
                     guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5,
                     guide_car_chain=1.0)
 GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance (RobustNavigator.for_goal)
@@ -103,6 +103,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     (:mod:`fuzzynav.kernels.evasion`), as version 8 did; ``guidance={"guide_car_chain": 0}`` lets the
     navigator drive the step after a back-up of the car route, as version 9 did; ``goal_share=0``
     ends the car route ``guide_car_reach`` m from the goal whatever its tolerance, as version 10 did;
+    ``guidance={"guide_car_tight": 0.5}`` lets the navigator drive wherever the route keeps 0.5 m
+    beyond the radius, as version 11 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as
