@@ -51,3 +51,17 @@ def test_jobs_that_outgrow_their_point_slots_run_again_with_the_same_result(monk
     tight = compiled.run(tables, jobs)
     assert len(calls) > 1  # some job overflowed one slot and ran again
     np.testing.assert_array_equal(tight, roomy)
+
+
+def test_a_tuned_default_ends_its_car_route_inside_the_tightest_goal_tolerance():
+    """One layer row serves every tuning world, so ``fuzzy-5b``'s car route ends within 0.8 of the
+    smallest goal tolerance among them (:meth:`~fuzzynav.control.robust.RobustNavigator.for_goal`),
+    as the simulator makes it end in each world."""
+    from fuzzynav.kernels.layers import PARAM
+
+    suite = parse_suite("mixed:2")
+    worlds = [suite.scenario(i, 0) for i in range(suite.size)]
+    compiled = Worlds(worlds, make_controller("fuzzy-5b"))
+    tolerance = min(world.goal.tolerance for world in worlds)
+    assert tolerance == 0.3
+    assert compiled.layer_params[PARAM.guide_car_reach] == pytest.approx(0.8 * tolerance)
