@@ -200,3 +200,15 @@ def test_the_goals_tolerance_bounds_the_car_routes_reach_and_nothing_else():
     assert make_controller("fuzzy-5b-rays").for_goal(0.3).params[reach] == 0.0  # no car route, nothing to end
     with pytest.raises(InputError, match="goal_share"):
         make_controller("fuzzy-5b", goal_share=1.5)
+
+
+def test_a_scenario_without_a_goal_leaves_the_car_route_its_own_reach():
+    """The simulator tells every scenario's goal, none included, so the reach does not depend on
+    what the navigator ran before."""
+    from fuzzynav.sim import BatchSimulator
+    from fuzzynav.world.scenario import load_scenario
+
+    controller = make_controller("fuzzy-5b")
+    controller.for_goal(0.3)
+    BatchSimulator(load_scenario("example-path"), controller, seed=0)
+    assert controller.params[layers.PARAM.guide_car_reach] == pytest.approx(0.5)

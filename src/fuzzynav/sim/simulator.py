@@ -123,8 +123,8 @@ class BatchSimulator:
                 each.for_latency(self.imperfections.latency)
             if isinstance(each, KnowsTraffic):  # told whether obstacles move (RobustNavigator.for_traffic)
                 each.for_traffic(bool(scenario.world.moving))
-            if isinstance(each, KnowsGoal) and scenario.goal is not None:  # RobustNavigator.for_goal
-                each.for_goal(scenario.goal.tolerance)
+            if isinstance(each, KnowsGoal):  # RobustNavigator.for_goal (no goal: no bound, whatever ran before)
+                each.for_goal(scenario.goal.tolerance if scenario.goal is not None else math.inf)
         self._traffic = MovingObstacles(scenario.world, self.params.dt)
         self.plant = make_plant(plant, scenario, self.params, self.sensors, self.n)
         compiled = (len(copies) == 1 and self.batch and isinstance(copies[0], CompiledAct)
