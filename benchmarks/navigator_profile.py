@@ -17,6 +17,7 @@ route plan into its parts (CPU time), which the builds cannot separate. World:
 
     python benchmarks/navigator_profile.py [--robots 1 64 1024] [--steps 400] [--json]
     python benchmarks/navigator_profile.py --singles --robots 64 --steps 300   # batch against one at a time
+    python benchmarks/navigator_profile.py --searches --steps 6000              # what the car route searches cost
 """
 
 from __future__ import annotations
@@ -201,6 +202,37 @@ def against_singles(n: int, steps: int) -> dict:
             "singles_us_per_robot_step": round(1e6 * singles_wall / max(singles_steps, 1), 1)}
 
 
+def search_steps(steps: int) -> dict:
+    """One ``fuzzy-5b`` robot stepped ``steps`` times (finished episodes restarted), each step
+    timed alone and counted as a car route search (a new ``guide_made``), a plan without a search
+    (a new ``guide_planned``) or neither: a direct measure of what the searches cost in the
+    whole navigator, which the builds of :func:`profile` only estimate."""
+    import time
+
+    import numpy as np
+
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.kernels import layers
+
+    controller = make_controller("fuzzy-5b")
+    run = Run(controller, 1)
+    columns = [layers.STATE.guide_planned, layers.STATE.guide_made]
+    kinds = {"searched": [], "planned, no search": [], "neither": []}
+    for _ in range(steps):
+        if run.sim.done:
+            run.sim.reset()
+        before = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns].copy()
+        began = time.perf_counter()
+        run.sim.step()
+        spent = time.perf_counter() - began
+        changed = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns] != before
+        kinds["searched" if changed[1] else "planned, no search" if changed[0] else "neither"].append(spent)
+    total = sum(sum(times) for times in kinds.values())
+    return {"steps": steps, "us_per_step": round(1e6 * total / steps, 1),
+            "kinds": {name: {"steps": len(times), "mean_us": round(1e6 * float(np.mean(times)), 1) if times else None,
+                             "share_of_time": round(sum(times) / total, 3)} for name, times in kinds.items()}}
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--robots", type=int, nargs="+", default=[1, 64, 1024])
@@ -208,7 +240,12 @@ def main(argv=None) -> None:
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
     parser.add_argument("--singles", action="store_true",
                         help="instead: each batch against its robots run one at a time (against_singles)")
+    parser.add_argument("--searches", action="store_true",
+                        help="instead: one robot's steps timed one by one, split by car route searches (search_steps)")
     args = parser.parse_args(argv)
+    if args.searches:
+        print(json.dumps({"benchmark": "navigator_profile", "search_steps": search_steps(args.steps)}))
+        return
     if args.singles:
         print(json.dumps({"benchmark": "navigator_profile", "singles": [against_singles(n, args.steps)
                                                                       for n in args.robots]}))

@@ -72,33 +72,43 @@ def test_a_plan_out_of_a_chamber_too_narrow_to_turn_in_backs_up():
     assert leg[0]  # a manoeuvre the layer drives
 
 
-def _search_both_ways(points, pose, goal):
-    """The search on the whole cost-to-go grid and on the wavefront settled on demand, and that wavefront."""
+def _search_both_ways(points, pose, goal, directed=True):
+    """The search on the whole cost-to-go grid and on the wavefront settled on demand (an A* towards
+    the start, or Dijkstra), and that wavefront."""
     seen, robot = Sightings(points, len(points)), Robot(*pose, 0.0, *goal)
     radius, low_x, low_y, nx, ny = car_route.frame(seen, robot, RADIUS, BODY, SEARCH.cell)
     grid = car_route.clearance_grid(points, len(points), low_x, low_y, nx, ny, SEARCH.cell, radius + SEARCH.comfort)
     row, col = int((goal[1] - low_y) / SEARCH.cell), int((goal[0] - low_x) / SEARCH.cell)
     whole = car_route.cost_to_go(grid, SEARCH.cell, row, col, radius, SEARCH.weight, SEARCH.comfort)
     start, end = np.array([pose[0] - low_x, pose[1] - low_y, pose[2] % (2 * math.pi)]), np.array(goal) - (low_x, low_y)
-    front = car_search.wavefront(grid, SEARCH.cell, row, col, radius, SEARCH.weight, SEARCH.comfort)
+    toward = (int(start[1] / SEARCH.cell), int(start[0] / SEARCH.cell)) if directed else (-1, -1)
+    front = car_search.wavefront(grid, SEARCH.cell, row, col, radius, SEARCH.weight, SEARCH.comfort, toward)
     on_demand = car_search.search(grid, front.cost.reshape(ny, nx), start, end, radius, SEARCH, front)
     return car_search.search(grid, whole, start, end, radius, SEARCH), on_demand, front, whole
 
 
-@pytest.mark.parametrize("case", ["chamber", "posts"])
-def test_the_wavefront_settled_on_demand_gives_the_search_of_the_whole_cost_to_go(case):
+def _case(case):
     if case == "chamber":
-        points, pose, goal = chamber(), (0.0, 1.2, math.pi / 2), (0.0, -4.0)
-    else:
-        points = np.random.default_rng(3).uniform([-3.0, 1.0], [3.0, 7.0], size=(25, 2))
-        pose, goal = (0.0, 0.0, math.pi / 2), (0.0, 9.0)
-    whole_search, on_demand, front, whole = _search_both_ways(points, pose, goal)
+        return chamber(), (0.0, 1.2, math.pi / 2), (0.0, -4.0)
+    return np.random.default_rng(3).uniform([-3.0, 1.0], [3.0, 7.0], size=(25, 2)), (0.0, 0.0, math.pi / 2), (0.0, 9.0)
+
+
+@pytest.mark.parametrize("directed", [False, True], ids=["dijkstra", "a-star"])
+@pytest.mark.parametrize("case", ["chamber", "posts"])
+def test_the_wavefront_settled_on_demand_gives_the_search_of_the_whole_cost_to_go(case, directed):
+    whole_search, on_demand, front, whole = _search_both_ways(*_case(case), directed=directed)
     assert on_demand[-1] >= 0 and on_demand[-1] == whole_search[-1]
     for a, b in zip(whole_search[:-1], on_demand[:-1]):
         assert np.array_equal(a, b)
     settled = front.done.reshape(whole.shape)
     assert 0 < settled.sum() < np.isfinite(whole).sum()  # part of the grid settled, each cell as in the whole
     assert np.array_equal(front.cost.reshape(whole.shape)[settled], whole[settled])
+
+
+@pytest.mark.parametrize("case", ["chamber", "posts"])
+def test_the_wavefront_headed_for_the_start_settles_fewer_cells_than_dijkstra(case):
+    plain, directed = (_search_both_ways(*_case(case), directed=d)[2].done.sum() for d in (False, True))
+    assert directed < 0.8 * plain
 
 
 def test_every_pose_of_the_plan_keeps_the_clearance_asked():
@@ -220,3 +230,18 @@ def test_a_robot_off_the_kept_route_or_with_another_target_searches_again():
                      BODY)
         guidance.aim(state, POINTED, Sightings(posts, len(posts)), moved, 1.0, BODY)
         assert state[at.guide_made] == 1.0, moved
+
+
+def test_an_arc_never_costs_less_than_its_bound_before_its_points_are_tested():
+    """The search drops an arc when ``arc_cost`` with the least clearance factor (1) cannot beat the
+    node's best cost; that is safe only if a larger factor never gives a smaller cost."""
+    rng = np.random.default_rng(5)
+    kmax = float(np.abs(SEARCH.curvatures).max())
+    for _ in range(2000):
+        settings = SEARCH._replace(step=rng.uniform(0.05, 0.5), turn_cost=rng.uniform(0.0, 0.2),
+                                   reverse=rng.uniform(1.0, 3.0), switch_cost=rng.uniform(0.0, 0.1))
+        kappa = float(rng.choice(SEARCH.curvatures))
+        came_by, by, backwards = int(rng.integers(-1, 14)), int(rng.integers(0, 14)), bool(rng.integers(0, 2))
+        costs = [car_search.arc_cost(clear, kappa, kmax, backwards, came_by, by, settings)
+                 for clear in (1.0, 1.0 + rng.uniform(0.0, 1e-12), 1.0 + rng.uniform(0.0, 3.0))]
+        assert costs[0] <= costs[1] <= costs[2]

@@ -10,10 +10,11 @@ free (the freespace assumption of D*, A. Stentz, ICRA 1994):
 1. Grid: cells of ``cell`` m over the box holding the robot, the target and the points, plus
    ``MARGIN``; each cell's clearance is the distance from its centre to the nearest point
    (capped at the radius plus ``comfort``).
-2. Heuristic: the cost-to-go of each cell to the target's, by Dijkstra over 8 neighbours on
-   the cells that keep the radius, each move's length times ``1 + weight · max(0, comfort −
-   (clearance − radius))`` — the search's own clearance cost, without the heading
-   (:func:`fuzzynav.kernels.car_search.wavefront`), settled only as far as the search looks it up.
+2. Heuristic: the cost-to-go of each cell to the target's over 8 neighbours on the cells that
+   keep the radius, each move's length times ``1 + weight · max(0, comfort − (clearance −
+   radius))`` — the search's own clearance cost, without the heading — settled only as far as
+   the search looks it up, by an A* from the target towards the robot's cell
+   (:func:`fuzzynav.kernels.car_search.wavefront`; the costs Dijkstra gives).
 3. The search keeps the radius given (the body's plus a margin), or the robot's present
    clearance less ``SLACK`` when that is smaller (a robot already close to a post may still
    drive away from it), never less than the body's.
@@ -61,7 +62,7 @@ def clearance_grid(points, count, low_x, low_y, nx, ny, cell, cap):
 def cost_to_go(clearance, cell, goal_row, goal_col, radius, weight, comfort):
     """(ny, nx): the heuristic of the module docstring over the whole grid (inf where the target
     cannot be reached); :func:`plan` settles only the cells its search looks up."""
-    front = car_search.wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort)
+    front = car_search.wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort, (-1, -1))
     car_search.settle(front, -1)
     return front.cost.reshape(clearance.shape)
 
@@ -101,9 +102,10 @@ def plan(seen, robot, radius, body, search):
     cell, comfort = search.cell, search.comfort
     radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
-    front = car_search.wavefront(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius,
-                                 search.weight, comfort)
     start = np.array([x - low_x, y - low_y, theta % (2.0 * math.pi)])
+    front = car_search.wavefront(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius,
+                                 search.weight, comfort, (int(math.floor(start[1] / cell)),
+                                                          int(math.floor(start[0] / cell))))
     goal = np.array([tx - low_x, ty - low_y])
     xs, ys, ths, parents, primitives, end = car_search.search(clearance, front.cost.reshape(ny, nx), start, goal, radius,
                                                               search, front)

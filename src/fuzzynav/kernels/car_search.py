@@ -12,9 +12,14 @@ Pacific J. Math. 145(2), 1990 — so a plan may hold the cusps of a K-turn.
 
 The heuristic is a grid of costs-to-go (Dolgov et al.'s obstacle-aware, heading-blind
 heuristic), given whole, or as a :func:`wavefront` that the search runs only as far as the cells
-it looks up (:func:`settle`): Dijkstra settles cells in the order of their cost, so a cell's cost
-is the same whether the wavefront stops there or runs over the whole grid, and the search needs
-only the cells no farther from the goal than those its arcs reach — about half of the grid.
+it looks up (:func:`settle`). The wavefront is an A* from the goal towards the search's start
+cell (P. E. Hart, N. J. Nilsson, B. Raphael, IEEE Trans. SSC 4(2), 1968): it settles cells in the
+order of their cost plus the octile distance to that cell, a consistent estimate (every move
+costs at least its length), so each cell it settles has its final cost, the same as a Dijkstra
+over the whole grid gives; the estimate is shrunk by ``DIRECTED`` so that rounding cannot close a
+cell before a neighbour that would lower it. Dijkstra alone settles the disc of cells nearer the
+goal than the start; the A* keeps to the band between the goal and the start that the search's
+arcs look up (one target < 0: no direction, the plain Dijkstra of :func:`fuzzynav.kernels.car_route.cost_to_go`).
 """
 
 from __future__ import annotations
@@ -27,6 +32,8 @@ from fuzzynav.jit import jit
 from fuzzynav.kernels.records import Wavefront
 
 FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
+DIRECTED = 1.0 - 1e-9  # the wavefront's octile estimate is shrunk by this (module docstring)
+DIAGONAL = 1.4142135623730951  # a diagonal move's length in cells
 
 
 @jit
@@ -44,6 +51,22 @@ def arc_from(x, y, theta, cos_theta, sin_theta, kappa, s):
         return x + s * cos_theta, y + s * sin_theta, theta
     end = theta + kappa * s
     return x + (math.sin(end) - sin_theta) / kappa, y - (math.cos(end) - cos_theta) / kappa, end
+
+
+@jit
+def arc_cost(clear, kappa, kmax, backwards, came_by, by, settings):
+    """The cost of an arc of curvature ``kappa`` (``kmax`` the largest) whose points' mean
+    clearance factor is ``clear`` (≥ 1), driven ``backwards`` or not, by primitive ``by`` after
+    ``came_by`` (−1: the start), with the costs of ``settings`` (:func:`search`). Every operation
+    rounds monotonically, so a lower ``clear`` never gives a higher cost."""
+    cost = settings.step * (clear + settings.turn_cost * abs(kappa) / kmax)
+    if backwards:
+        cost *= settings.reverse
+    if came_by >= 0 and came_by != by:
+        cost += settings.switch_cost
+        if (came_by >= len(settings.curvatures)) != backwards:
+            cost += settings.gear
+    return cost
 
 
 @jit
@@ -109,19 +132,33 @@ NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -
 
 
 @jit
-def wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort):
+def octile(row, col, toward_row, toward_col, cell):
+    """The wavefront's estimate of the cost from cell (row, col) to (``toward_row``,
+    ``toward_col``): the length of the shortest 8-neighbour move chain between them on an empty
+    grid of ``cell`` m, shrunk by ``DIRECTED``; 0 without a direction (``toward_row`` < 0)."""
+    if toward_row < 0:
+        return 0.0
+    dr, dc = abs(row - toward_row), abs(col - toward_col)
+    return DIRECTED * cell * (max(dr, dc) + (DIAGONAL - 1.0) * min(dr, dc))
+
+
+@jit
+def wavefront(clearance, cell, goal_row, goal_col, radius, weight, comfort, toward):
     """A :class:`~fuzzynav.kernels.records.Wavefront` from the goal's cell over ``clearance``
-    (ny, nx) of ``cell`` m, nothing settled yet: by Dijkstra over 8 neighbours on the cells that
-    keep ``radius``, each move's length times ``1 + weight · max(0, comfort − (clearance −
-    radius))`` (the search's own clearance cost, without the heading)."""
+    (ny, nx) of ``cell`` m, nothing settled yet: by A* towards the cell ``toward`` (row, column)
+    (module docstring; a row < 0: Dijkstra) over 8 neighbours on the cells that keep ``radius``,
+    each move's length times ``1 + weight · max(0, comfort − (clearance − radius))`` (the
+    search's own clearance cost, without the heading)."""
+    toward_row, toward_col = toward
     ny, nx = clearance.shape
     cost = np.full(ny * nx, np.inf)
     heap_f, heap_n = np.empty(8 * ny * nx + 1), np.empty(8 * ny * nx + 1, np.int64)
     goal = goal_row * nx + goal_col
     cost[goal] = 0.0
-    size = np.full(1, push(heap_f, heap_n, 0, 0.0, goal), np.int64)
+    size = np.full(1, push(heap_f, heap_n, 0, octile(goal_row, goal_col, toward_row, toward_col, cell), goal),
+                   np.int64)
     return Wavefront(clearance, cell, radius, weight, comfort, cost, np.zeros(ny * nx, dtype=np.bool_), heap_f,
-                     heap_n, size)
+                     heap_n, size, toward_row, toward_col)
 
 
 @jit
@@ -130,6 +167,7 @@ def settle(front, target):
     final (inf: no way to the goal), or, with ``target`` < 0, over the whole grid."""
     clearance, cell, radius, weight, comfort = front.clearance, front.cell, front.radius, front.weight, front.comfort
     cost, done, heap_f, heap_n = front.cost, front.done, front.heap_f, front.heap_n
+    toward_row, toward_col = front.toward_row, front.toward_col
     ny, nx = clearance.shape
     size = front.size[0]
     while size > 0 and (target < 0 or not done[target]):
@@ -143,11 +181,11 @@ def settle(front, target):
             if r < 0 or c < 0 or r >= ny or c >= nx or clearance[r, c] < radius:
                 continue
             there = r * nx + c
-            step = cell * (1.4142135623730951 if dr != 0 and dc != 0 else 1.0)
+            step = cell * (DIAGONAL if dr != 0 and dc != 0 else 1.0)
             total = cost[here] + step * (1.0 + weight * max(0.0, comfort - (clearance[r, c] - radius)))
             if total < cost[there]:
                 cost[there] = total
-                size = push(heap_f, heap_n, size, total, there)
+                size = push(heap_f, heap_n, size, total + octile(r, c, toward_row, toward_col, cell), there)
     front.size[0] = size
 
 
@@ -162,8 +200,7 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
     meaning of its fields; ``reverse`` 0: forward arcs only). Returns the node arrays (x, y, θ,
     parent, primitive) and the goal node (−1: none within the budget of nodes)."""
     curvatures, cell, step, node_cell = settings.curvatures, settings.cell, settings.step, settings.node_cell
-    weight, comfort, turn_cost, switch_cost = settings.weight, settings.comfort, settings.turn_cost, settings.switch_cost
-    reach, reverse, gear = settings.reach, settings.reverse, settings.gear
+    weight, comfort, reach, reverse = settings.weight, settings.comfort, settings.reach, settings.reverse
     bins, budget, kinds = int(settings.headings), int(settings.budget), len(curvatures)
     primitives_per_node = 2 * kinds if reverse > 0 else kinds
     ny, nx = clearance.shape
@@ -196,10 +233,20 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
         for a in range(primitives_per_node):
             kappa, backwards = curvatures[a % kinds], a >= kinds
             length = -step if backwards else step
+            # the arc's end first: an arc into a closed node is dropped before its points are tested
+            ex, ey, eth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length)
+            eth = eth % (2.0 * math.pi)
+            key = ((int(ey / node_cell) * node_cols + int(ex / node_cell)) * bins
+                   + int(eth / (2.0 * math.pi) * bins) % bins)
+            at = slot(table, key)
+            if closed[at] or g + arc_cost(1.0, kappa, kmax, backwards, primitives[node], a, settings) >= best[at]:
+                continue  # the arc costs at least this (each of its points adds at least 1), so no better
             penalty, blocked = 0.0, False
-            px = py = pth = 0.0
             for j in range(1, samples + 1):
-                px, py, pth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length * j / samples)
+                if j == samples and end_sampled:  # the last sample is the end
+                    px, py = ex, ey
+                else:
+                    px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length * j / samples)
                 row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
                 if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < radius:
                     blocked = True
@@ -207,26 +254,14 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
                 penalty += 1.0 + weight * max(0.0, comfort - (clearance[row, col] - radius))
             if blocked:
                 continue
-            if not end_sampled:
-                px, py, pth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length)
-            pth = pth % (2.0 * math.pi)
-            row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
+            row, col = int(math.floor(ey / cell)), int(math.floor(ex / cell))
             if front is not None and not front.done[row * nx + col]:
                 settle(front, row * nx + col)
             h = heuristic[row, col]
             if not math.isfinite(h):
                 continue
-            cost = step * (penalty / samples + turn_cost * abs(kappa) / kmax)
-            if backwards:
-                cost *= reverse
-            if primitives[node] >= 0 and primitives[node] != a:
-                cost += switch_cost
-                if (primitives[node] >= kinds) != backwards:
-                    cost += gear
-            key = ((int(py / node_cell) * node_cols + int(px / node_cell)) * bins
-                   + int(pth / (2.0 * math.pi) * bins) % bins)
-            at = slot(table, key)
-            if closed[at] or g + cost >= best[at]:
+            cost = arc_cost(penalty / samples, kappa, kmax, backwards, primitives[node], a, settings)
+            if g + cost >= best[at]:
                 continue
             if count >= budget:
                 return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], -1
@@ -235,7 +270,7 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
             table[at], best[at] = key, g + cost
             if 2 * entries > table.shape[0]:
                 table, best, closed = grown(table, best, closed)
-            xs[count], ys[count], ths[count], gs[count] = px, py, pth, g + cost
+            xs[count], ys[count], ths[count], gs[count] = ex, ey, eth, g + cost
             parents[count], primitives[count], keys[count] = node, a, key
             size = push(heap_f, heap_n, size, g + cost + h, count)
             count += 1

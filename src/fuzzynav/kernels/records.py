@@ -116,8 +116,9 @@ class CarSearch(NamedTuple):
 
 
 class Wavefront(NamedTuple):
-    """A Dijkstra wavefront from the goal over a clearance grid, run as far as asked
-    (:func:`fuzzynav.kernels.car_search.settle`)."""
+    """A wavefront from the goal over a clearance grid, run as far as asked
+    (:func:`fuzzynav.kernels.car_search.settle`): an A* towards the search's start cell, or
+    Dijkstra without one."""
 
     clearance: np.ndarray  # (ny, nx) m, each cell's clearance
     cell: float  # m, the grid's cell
@@ -129,6 +130,8 @@ class Wavefront(NamedTuple):
     heap_f: np.ndarray  # the open cells' keys (a binary heap)
     heap_n: np.ndarray  # their cells
     size: np.ndarray  # (1,) int: the heap's entries
+    toward_row: int  # the cell the A* heads for (the search's start; < 0: none, Dijkstra)
+    toward_col: int
 
 
 class TurnRoom(NamedTuple):
