@@ -1,8 +1,9 @@
 """Episodes of the default ``fuzzy-5b`` recorded before its kernels were made cheaper
 (tests/control/test_default_same.py checks today's drive them alike; today's run without the
 pace, without reusing the car route, without planning the next arc as one ends and driving the
-car route's arcs only in tight places, as then: ``paced=False``, ``guide_car_reuse`` 0,
-``guide_car_chain`` 0, ``guide_car_tight`` 0.5 — what came later changes the decisions). Record again, from a
+car route's arcs only in tight places, and steering straight at a target the line to which is free, as
+then: ``paced=False``, ``guide_car_reuse`` 0, ``guide_car_chain`` 0, ``guide_car_tight`` 0.5, ``guide_off_heading``
+0 — what came later changes the decisions). Record again, from a
 checkout whose decisions are the reference: ``PYTHONPATH=<checkout>/src python -m tests.control.default_episodes``."""
 
 import hashlib
@@ -23,7 +24,7 @@ def run_all() -> dict:
     out = {}
     for kind, i in WORLDS:
         controller = make_controller("fuzzy-5b", paced=False, guidance={"guide_car_reuse": 0.0, "guide_car_chain": 0.0,
-                                                                         "guide_car_tight": 0.5})
+                                                                         "guide_car_tight": 0.5, "guide_off_heading": 0.0})
         trace = run_episode(generate_world(kind, 0, i), controller, seed=0)
         labels = "|".join(trace.behaviour.tolist()).encode()
         out[f"{kind}-{i}"] = [trace.outcome, int(trace.steps), hashlib.sha256(labels).hexdigest()[:16],

@@ -15,7 +15,7 @@ from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robo
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
 # the route point the navigator is given round a wall of posts: only where the layer leaves the
 # driving to the navigator, as it did before the default drove every arc within 2 m (version 12)
-POINTED = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car_tight": 0.5}).params
+POINTED = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car_tight": 0.5, "guide_off_heading": 0.0}).params
 BODY = float(PARAMS[layers.PARAM.radius])
 
 

@@ -19,9 +19,11 @@ RUNS = (
     ("example-target", "pure-pursuit"),
 )
 # the default as it was recorded: without the pace, the plan reuse, the chained arcs, the car
-# route ended inside the goal's tolerance and its arcs driven wherever it passes within 2 m, which came later
+# route ended inside the goal's tolerance, its arcs driven wherever it passes within 2 m and the
+# route to a target off the heading, which came later
 OPTIONS = {"fuzzy-5b": {"paced": False, "goal_share": 0.0,
-                        "guidance": {"guide_car_reuse": 0.0, "guide_car_chain": 0.0, "guide_car_tight": 0.5}}}
+                        "guidance": {"guide_car_reuse": 0.0, "guide_car_chain": 0.0, "guide_car_tight": 0.5,
+                                     "guide_off_heading": 0.0}}}
 
 
 def trace_hash(scenario: str, controller: str) -> str:

@@ -55,6 +55,7 @@ the compiled step's alone, unchanged.
 
 from __future__ import annotations
 
+import math
 from dataclasses import fields, replace
 
 from fuzzynav.control.robust import RobustNavigator
@@ -73,7 +74,7 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
                     guide_car_ahead=1.0, guide_car_tight=2.0, guide_car_speed=0.8,
                     guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5,
-                    guide_car_chain=1.0)
+                    guide_car_chain=1.0, guide_off_heading=math.pi / 6)
 GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance (RobustNavigator.for_goal)
 # the pace (units and meaning: kernels.layers.Pace)
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
@@ -104,7 +105,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     navigator drive the step after a back-up of the car route, as version 9 did; ``goal_share=0``
     ends the car route ``guide_car_reach`` m from the goal whatever its tolerance, as version 10 did;
     ``guidance={"guide_car_tight": 0.5}`` lets the navigator drive wherever the route keeps 0.5 m
-    beyond the radius, as version 11 did;
+    beyond the radius, as version 11 did; ``guidance={"guide_off_heading": 0}`` steers straight at
+    a target the line to which is free wherever it is, as version 12 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as

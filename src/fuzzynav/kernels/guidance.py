@@ -6,9 +6,10 @@ the freespace assumption of D*, Stentz 1994).
 Every ``guide_replan`` s the route point is planned again: none when the straight line to the
 target keeps the body's radius plus ``guide_room`` from every remembered point for
 ``guide_direct`` m (the grid route's 8-neighbour steps wander off the straight line in open
-space); else the point ``guide_ahead`` m along the route on a grid of ``guide_cell`` m keeping
-the radius plus ``guide_room``, else ``guide_narrow``, else ``guide_bare`` (none when no route
-keeps even that). Between plans the point is kept. The navigator is given a target in the
+space) and the target is within ``guide_off_heading`` of the heading (a target beside or behind
+the car gets a route, which turns it round on arcs it can drive); else the point ``guide_ahead``
+m along the route on a grid of ``guide_cell`` m keeping the radius plus ``guide_room``, else
+``guide_narrow``, else ``guide_bare`` (none when no route keeps even that). Between plans the point is kept. The navigator is given a target in the
 direction of the route point, at the target's distance (at least the point's), so its goal
 seeking and gap finding steer towards the passage the route takes while its behaviours keep the
 body off what the memory has not seen yet.
@@ -192,6 +193,16 @@ def reused(state, params, seen, robot, t, radius):
 
 
 @jit
+def off_heading(params, robot):
+    """Is the target of ``robot`` (a :class:`~fuzzynav.kernels.records.Robot`) farther off its
+    heading than ``guide_off_heading`` (0: never)? Then a route is planned even where the
+    straight line to it is free: the car route turns the car round on arcs it can drive, where
+    the navigator, steering at the target, swings wide (module docstring)."""
+    limit = params[PARAM.guide_off_heading]
+    return limit > 0.0 and abs(wrap(math.atan2(robot.ty - robot.y, robot.tx - robot.x) - robot.theta)) > limit
+
+
+@jit
 def drop(state):
     """Another layer takes over (the recovery manoeuvre, or the loop escape's start or end): forget
     the arc pending and the route kept, and plan again at the next chance, from the pose the robot then has."""
@@ -215,7 +226,8 @@ def plan(state, params, seen, robot, t, radius):
     if waiting or state[STATE.guide_gear] != 0.0:
         return
     state[STATE.guide_x], state[STATE.guide_y], state[STATE.guide_planned] = math.nan, math.nan, t
-    if line_free(points, count, x, y, tx, ty, radius + params[PARAM.guide_room], params[PARAM.guide_direct]):
+    if not off_heading(params, robot) and line_free(points, count, x, y, tx, ty, radius + params[PARAM.guide_room],
+                                                    params[PARAM.guide_direct]):
         forget(state)
         return
     if params[PARAM.guide_car] != 0.0 and (reused(state, params, seen, robot, t, radius)

@@ -18,10 +18,9 @@ The layers travel as two float arrays (two arguments of the compiled step; each 
   obstacle points seen (``points_slots`` × (x, y)) and the hash set of their cells
   (``cell_slots``, :mod:`fuzzynav.kernels.sightings`) — views of the row by :mod:`fuzzynav.kernels.row_blocks`.
 
-The kernels read a field by name at its position, ``params[PARAM.v_back]``, ``row[STATE.phase]``:
-:data:`PARAM` and :data:`STATE` are named tuples of those positions, which numba reads as
-compile-time constants. A field's docstring gives its unit. A compiled navigator without layers
-passes :func:`none` (``params[PARAM.on]`` = 0).
+The kernels read a field by name at its position, ``params[PARAM.v_back]``, ``row[STATE.phase]``: :data:`PARAM` and
+:data:`STATE` are named tuples of those positions, which numba reads as compile-time constants. A field's docstring
+gives its unit. A compiled navigator without layers passes :func:`none` (``params[PARAM.on]`` = 0).
 """
 
 from __future__ import annotations
@@ -152,7 +151,7 @@ class Guidance:
     guide_replan: float
     """s: the period of the planning"""
     guide_direct: float
-    """m: a straight line to the target free for this long needs no route"""
+    """m: a straight line to the target free for this long needs no route (:data:`guide_off_heading`)"""
     guide_room: float
     """m: the room beyond the radius the grid route keeps"""
     guide_narrow: float
@@ -207,6 +206,8 @@ class Guidance:
     """rad: its heading's farthest from the route's there"""
     guide_car_chain: float = 0.0
     """1: a backward arc of the layer ends with the next plan in the same step (0: the navigator drives that step)"""
+    guide_off_heading: float = 0.0
+    """rad: a target farther off the heading than this gets a route though the line to it is free (0: never)"""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -361,8 +362,7 @@ STATE_NAMES = tuple(field.name for field in fields(RobotState))
 # the positions by name (their fields are generated, so typed Any for the checker)
 PARAM: Any = namedtuple("ParamAt", PARAM_NAMES)(*range(len(PARAM_NAMES)))
 STATE: Any = namedtuple("StateAt", STATE_NAMES)(*range(len(STATE_NAMES)))
-TABLES_AT = len(PARAM_NAMES)
-PLACES_AT = len(STATE_NAMES)
+TABLES_AT, PLACES_AT = len(PARAM_NAMES), len(STATE_NAMES)
 ON, GROW = PARAM.on, PARAM.grow  # read by the simulator's step (kernels.step) and the simulator
 NO_PHASE, BACK, TURN = 0, 1, 2  # recovery phases; labels after the navigator's: REC-BACK, REC-TURN, BF
 _FRESH = np.array([NEW_EPISODE.get(name, 0.0) for name in STATE_NAMES])
