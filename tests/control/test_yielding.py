@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 from fuzzynav.catalog.controllers import make_controller
-from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust
 from fuzzynav.control.yield_layer import yield_system
 from fuzzynav.kernels import scan_tracks, threats
 from fuzzynav.kernels.records import Scans, ThreatSettings
@@ -55,25 +54,14 @@ def test_the_rule_base_waits_for_long_times_and_acts_on_short_ones():
     assert 0.0 < out[2, 0] < 1.0 and out[2, 1] < 1.0  # head-on: slow down and swerve, the navigator keeps a say
 
 
-# the default's start steering straight at the goal whatever its bearing, as up to its version 12
-# (these worlds were chosen with it)
-THEN = {"guidance": {"guide_off_heading": 0.0}}
-
-
-def inner_then(**options):
-    """The default round which the yield layers run, as up to its version 12 (``options``: more of its own)."""
-    return fuzzy_5b_gap_robust(yield_in_traffic=False, **THEN, **options)
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("index", [1, 3])
 def test_it_gets_through_where_fuzzy_5b_is_run_into(index):
     scenario = generate_world("dynamic", 1, index)
-    plain = run_episode(scenario, make_controller("fuzzy-5b", paced=False, yield_in_traffic=False, **THEN),
+    plain = run_episode(scenario, make_controller("fuzzy-5b", paced=False, yield_in_traffic=False),
                         seed=0)  # the thesis' speeds, no yield layer
     assert plain.outcome == "collision" and plain.collision_by == "obstacle"
-    trace = run_episode(scenario, make_controller("fuzzy-5b-yield", inner=inner_then(paced=False, forget_moving=False)),
-                        seed=0)
+    trace = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
     assert trace.outcome == "reached"
     assert "YIELD" in set(trace.behaviour)
 
@@ -83,8 +71,6 @@ def test_tracked_obstacles_keep_it_clear_of_what_comes_from_behind():
     """In this world fuzzy-5b-yield (the two-scan cue alone) is run into from behind, out of the
     lidar's view; fuzzy-5b-yield-tracks, predicting the tracked obstacle there, gets through."""
     scenario = generate_world("dynamic", 7, 69)
-    before = run_episode(scenario, make_controller("fuzzy-5b-yield", inner=inner_then(paced=False, forget_moving=False)),
-                         seed=0)
+    before = run_episode(scenario, make_controller("fuzzy-5b-yield"), seed=0)
     assert before.outcome == "collision" and before.collision_by == "obstacle"
-    tracked = make_controller("fuzzy-5b-yield-tracks", inner=inner_then())
-    assert run_episode(scenario, tracked, seed=0).outcome == "reached"
+    assert run_episode(scenario, make_controller("fuzzy-5b-yield-tracks"), seed=0).outcome == "reached"

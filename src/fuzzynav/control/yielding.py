@@ -20,6 +20,11 @@ from fuzzynav.control.sighting_tracks import tracked_variant
 from fuzzynav.control.through_gaps import fuzzy_5b_gap_robust
 from fuzzynav.control.yield_layer import YieldLayer
 
+# the layers run round the default as its version 12 started: steering straight at a goal it has a
+# free line to, wherever that goal lies (the route to a goal off the heading, version 13, was not
+# measured under these layers; docs/results/default-navigator.md, *Version 13*)
+STRAIGHT = {"guide_off_heading": 0.0}
+
 
 class YieldingNavigator(BatchController):
     """``inner`` (default ``fuzzy-5b`` at the thesis' speeds, ``paced=False``: the yield rules
@@ -30,7 +35,7 @@ class YieldingNavigator(BatchController):
 
     def __init__(self, inner=None, **options):
         self.inner = inner if inner is not None else fuzzy_5b_gap_robust(paced=False, forget_moving=False,
-                                                                          yield_in_traffic=False)
+                                                                          yield_in_traffic=False, guidance=STRAIGHT)
         self.sensors = getattr(self.inner, "sensors", None)
         self.labels = getattr(self.inner, "labels", ())
         self.layer = YieldLayer(**options)
@@ -63,7 +68,7 @@ def make(**options) -> YieldingNavigator:
 def _round_the_default(**options) -> YieldingNavigator:
     """The layer round the default ``fuzzy-5b`` (paced, forgetting where moving obstacles were),
     without the default's own layer among moving obstacles."""
-    return YieldingNavigator(**{"inner": fuzzy_5b_gap_robust(yield_in_traffic=False), **options})
+    return YieldingNavigator(**{"inner": fuzzy_5b_gap_robust(yield_in_traffic=False, guidance=STRAIGHT), **options})
 
 
 make_tracked = tracked_variant(_round_the_default, "fuzzy-5b-yield-tracks")
