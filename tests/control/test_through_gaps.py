@@ -141,6 +141,17 @@ def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only
         make_controller("fuzzy-5b-gap-robust", guidance={"guide_lookahead": 2.0})
 
 
+@pytest.mark.parametrize(("option", "value", "says"), [
+    ("guide_off_heading", -0.1, "must be >= 0"), ("guide_off_heading", 4.0, "must be <= 3.14"),
+    ("guide_off_heading", float("nan"), "must be finite"), ("guide_car_weight", -1.0, "must be >= 0"),
+    ("guide_car_step", "0.2", "must be a number"), ("pace_horizon", float("inf"), "must be finite"),
+])
+def test_a_bad_guidance_or_pace_value_is_a_clear_error_naming_the_option(option, value, says):
+    group = "pace" if option.startswith("pace") else "guidance"
+    with pytest.raises(InputError, match=f"{group}.{option}: {says}"):
+        make_controller("fuzzy-5b", **{group: {option: value}})
+
+
 def test_the_pace_drives_faster_through_posts_without_contact():
     """The pace (kernels.pace) where the way ahead is clear: the same world reached sooner than at
     the thesis' speeds (paced=False), above their top speed, with no collision."""

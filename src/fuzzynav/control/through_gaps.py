@@ -58,6 +58,7 @@ from __future__ import annotations
 import math
 from dataclasses import fields, replace
 
+from fuzzynav import validation
 from fuzzynav.control.robust import RobustNavigator
 from fuzzynav.control.yield_layer import YieldLayer
 from fuzzynav.errors import InputError
@@ -80,14 +81,22 @@ GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
 
+# the bounds of the settings the kernels' reasoning needs (any other must be a finite number): the
+# car route's wavefront is exact only for a clearance weight >= 0 (kernels.car_search)
+BOUNDS = {"guide_off_heading": {"lo": 0.0, "hi": math.pi}, "guide_car_weight": {"lo": 0.0}}
+
+
 def _replaced(record, values: dict | None, field: str):
     """``record`` with the fields named in ``values`` (an option of the factory) replaced; an
-    unknown name is an :class:`~fuzzynav.errors.InputError` naming the option."""
+    unknown name, or a value that is not a finite number within :data:`BOUNDS`, is an
+    :class:`~fuzzynav.errors.InputError` naming the option."""
     names = {item.name for item in fields(record)} - {"guide", "pace"}
     unknown = sorted(set(values or {}) - names)
     if unknown:
         raise InputError(f"{field} has no {unknown}; it takes {sorted(names)}", field=field)
-    return replace(record, **{name: float(value) for name, value in (values or {}).items()})
+    return replace(record, **{name: validation.number(value, "fuzzy-5b options", f"{field}.{name}",
+                                                      **BOUNDS.get(name, {}))
+                              for name, value in (values or {}).items()})
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,

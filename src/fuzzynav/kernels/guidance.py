@@ -6,8 +6,8 @@ the freespace assumption of D*, Stentz 1994).
 Every ``guide_replan`` s the route point is planned again: none when the straight line to the
 target keeps the body's radius plus ``guide_room`` from every remembered point for
 ``guide_direct`` m (the grid route's 8-neighbour steps wander off the straight line in open
-space) and the target is within ``guide_off_heading`` of the heading (a target beside or behind
-the car gets a route, which turns it round on arcs it can drive); else the point ``guide_ahead``
+space) and the target is within ``guide_off_heading`` of the heading (0: anywhere; a target
+beside or behind the car gets a route, which turns it round on arcs it can drive); else the point ``guide_ahead``
 m along the route on a grid of ``guide_cell`` m keeping the radius plus ``guide_room``, else
 ``guide_narrow``, else ``guide_bare`` (none when no route keeps even that). Between plans the point is kept. The navigator is given a target in the
 direction of the route point, at the target's distance (at least the point's), so its goal
