@@ -83,7 +83,8 @@ PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=
 
 # the bounds of the settings the kernels' reasoning needs (any other must be a finite number): the
 # car route's wavefront is exact only for a clearance weight >= 0 (kernels.car_search)
-BOUNDS = {"guide_off_heading": {"lo": 0.0, "hi": math.pi}, "guide_car_weight": {"lo": 0.0}}
+BOUNDS = {"guide_off_heading": (0.0, math.pi), "guide_car_weight": (0.0, validation.MAX_MAGNITUDE)}
+ANY = (-validation.MAX_MAGNITUDE, validation.MAX_MAGNITUDE)
 
 
 def _replaced(record, values: dict | None, field: str):
@@ -95,7 +96,7 @@ def _replaced(record, values: dict | None, field: str):
     if unknown:
         raise InputError(f"{field} has no {unknown}; it takes {sorted(names)}", field=field)
     return replace(record, **{name: validation.number(value, "fuzzy-5b options", f"{field}.{name}",
-                                                      **BOUNDS.get(name, {}))
+                                                      lo=BOUNDS.get(name, ANY)[0], hi=BOUNDS.get(name, ANY)[1])
                               for name, value in (values or {}).items()})
 
 
