@@ -137,7 +137,7 @@ def plans(n: int, steps: int) -> dict:
         counts[name] = {"plans_per_robot_step": round(planned / max(robot_steps, 1), 4),
                         "car_searches_per_robot_step": round(searches / max(robot_steps, 1), 4)}
     params, rows = controller.params, controller.compiled(n, sim.sensors.angles)[-1]
-    search, radius = guidance.search_settings(params), float(params[layers.PARAM.radius])
+    search, radius = guidance.search_settings(params, 0), float(params[layers.PARAM.radius])
     tx, ty = GOAL
     seconds, searched = {"clearance grid": 0.0, "heuristic": 0.0, "search": 0.0}, 0
     running = np.flatnonzero(sim.active)[:64]
@@ -204,9 +204,10 @@ def against_singles(n: int, steps: int) -> dict:
 
 def search_steps(steps: int) -> dict:
     """One ``fuzzy-5b`` robot stepped ``steps`` times (finished episodes restarted), each step
-    timed alone and counted as a car route search (a new ``guide_made``), a plan without a search
-    (a new ``guide_planned``) or neither: a direct measure of what the searches cost in the
-    whole navigator, which the builds of :func:`profile` only estimate."""
+    timed alone and counted as a car route search (``guide_made`` stamped with the step's time;
+    apart, the search of an episode's first step), a plan without a search (a new
+    ``guide_planned``) or neither: a direct measure of what the searches cost in the whole
+    navigator, which the builds of :func:`profile` only estimate."""
     import time
 
     import numpy as np
@@ -217,16 +218,19 @@ def search_steps(steps: int) -> dict:
     controller = make_controller("fuzzy-5b")
     run = Run(controller, 1)
     columns = [layers.STATE.guide_planned, layers.STATE.guide_made]
-    kinds = {"searched": [], "planned, no search": [], "neither": []}
+    kinds = {"searched at the start": [], "searched": [], "planned, no search": [], "neither": []}
     for _ in range(steps):
         if run.sim.done:
             run.sim.reset()
-        before = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns].copy()
+        before, now = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns].copy(), run.sim.k * run.sim.params.dt
         began = time.perf_counter()
         run.sim.step()
         spent = time.perf_counter() - began
-        changed = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns] != before
-        kinds["searched" if changed[1] else "planned, no search" if changed[0] else "neither"].append(spent)
+        after = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns]
+        # a search stamps guide_made with the step's time (the first step's search at t = 0 too)
+        kind = ("searched" if now > 0.0 else "searched at the start") if after[1] == now else (
+            "planned, no search" if after[0] != before[0] else "neither")
+        kinds[kind].append(spent)
     total = sum(sum(times) for times in kinds.values())
     return {"steps": steps, "us_per_step": round(1e6 * total / steps, 1),
             "kinds": {name: {"steps": len(times), "mean_us": round(1e6 * float(np.mean(times)), 1) if times else None,

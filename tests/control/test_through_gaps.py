@@ -144,6 +144,7 @@ def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only
 @pytest.mark.parametrize(("option", "value", "says"), [
     ("guide_off_heading", -0.1, "must be >= 0"), ("guide_off_heading", 4.0, "must be <= 3.14"),
     ("guide_off_heading", float("nan"), "must be finite"), ("guide_car_weight", -1.0, "must be >= 0"),
+    ("guide_car_shot", -5.0, "must be >= 0"),
     ("guide_car_step", "0.2", "must be a number"), ("pace_horizon", float("inf"), "must be finite"),
 ])
 def test_a_bad_guidance_or_pace_value_is_a_clear_error_naming_the_option(option, value, says):

@@ -10,7 +10,7 @@ import pytest
 
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels import car_route, car_search, guidance, layers, row_blocks
-from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, Sightings
+from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, SearchNodes, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
 # the route point the navigator is given round a wall of posts: only where the layer leaves the
@@ -19,7 +19,7 @@ POINTED = make_controller("fuzzy-5b-gap-robust", guidance={"guide_car_tight": 0.
 BODY = float(PARAMS[layers.PARAM.radius])
 
 
-SEARCH = guidance.search_settings(PARAMS)
+SEARCH = guidance.search_settings(PARAMS, 0)
 RADIUS = BODY + PARAMS[layers.PARAM.guide_car_room]  # the radius the car route keeps
 
 
@@ -31,13 +31,14 @@ def test_the_search_settings_are_the_layer_parameters_of_their_names():
              "headings": at.guide_car_headings, "weight": at.guide_car_weight, "comfort": at.guide_car_comfort,
              "turn_cost": at.guide_car_turn, "switch_cost": at.guide_car_switch, "reach": at.guide_car_reach,
              "budget": at.guide_car_budget, "reverse": at.guide_car_reverse, "gear": at.guide_car_gear}
-    assert set(named) | {"curvatures"} == set(CarSearch._fields)
+    assert set(named) | {"curvatures", "shot"} == set(CarSearch._fields)
     for field, index in named.items():
         assert getattr(SEARCH, field) == PARAMS[index], field
+    assert SEARCH.shot == 0 and guidance.search_settings(PARAMS, 7).shot == 7  # analytic expansions: off heading only
     assert SEARCH.reverse > 0
     forward_only = PARAMS.copy()
     forward_only[at.max_reverse_speed] = 0.0  # a robot that cannot reverse plans forward arcs only
-    forward = guidance.search_settings(forward_only)
+    forward = guidance.search_settings(forward_only, 0)
     assert forward.reverse == 0.0
     assert forward._replace(curvatures=None, reverse=SEARCH.reverse) == SEARCH._replace(curvatures=None)
 
@@ -245,3 +246,45 @@ def test_an_arc_never_costs_less_than_its_bound_before_its_points_are_tested():
         costs = [car_search.arc_cost(clear, kappa, kmax, backwards, came_by, by, settings)
                  for clear in (1.0, 1.0 + rng.uniform(0.0, 1e-12), 1.0 + rng.uniform(0.0, 3.0))]
         assert costs[0] <= costs[1] <= costs[2]
+
+
+def _facing_away(shot):
+    """The search of the first step of ``benchmarks/sim_core.py``'s robot: 148° off a goal 12.7 m
+    away, four lidar hits of an obstacle near the way, with analytic expansions every ``shot``
+    expanded nodes (0: none)."""
+    hits = np.array([[10.36, 15.55], [10.26, 15.61], [10.19, 15.66], [10.02, 16.0]])
+    seen, robot = Sightings(hits, len(hits)), Robot(6.765, 15.48, -2.303, 0.0, 19.0, 19.0)
+    radius, low_x, low_y, nx, ny = car_route.frame(seen, robot, RADIUS, BODY, SEARCH.cell)
+    grid = car_route.clearance_grid(hits, len(hits), low_x, low_y, nx, ny, SEARCH.cell, radius + SEARCH.comfort)
+    start = np.array([robot.x - low_x, robot.y - low_y, robot.theta % (2 * math.pi)])
+    goal = np.array([robot.tx - low_x, robot.ty - low_y])
+    front = car_search.wavefront(grid, SEARCH.cell, int(goal[1] / SEARCH.cell), int(goal[0] / SEARCH.cell), radius,
+                                 SEARCH.weight, SEARCH.comfort, (int(start[1] / SEARCH.cell), int(start[0] / SEARCH.cell)))
+    xs, ys, ths, parents, primitives, end = car_search.search(grid, front.cost.reshape(ny, nx), start, goal, radius,
+                                                              SEARCH._replace(shot=shot), front)
+    chain = [end]
+    while parents[chain[-1]] >= 0:
+        chain.append(parents[chain[-1]])
+    return len(xs), np.column_stack([xs, ys])[chain[::-1]], primitives[chain[::-1]], goal, grid
+
+
+def test_an_analytic_expansion_ends_a_search_that_starts_facing_away_at_a_similar_route():
+    searched, plain, plain_arcs, goal, _ = _facing_away(0)
+    nodes, shot, shot_arcs, _, grid = _facing_away(10)
+    assert nodes < searched / 2  # the search no longer spreads over every heading round the start
+    assert np.hypot(*(shot[-1] - goal)) <= SEARCH.reach
+    assert len(shot) <= 1.1 * len(plain)  # a route about as long as the search's own
+    assert np.all(shot_arcs[1:] < len(SEARCH.curvatures))  # forward arcs
+    cells = (shot / SEARCH.cell).astype(int)
+    assert grid[cells[:, 1], cells[:, 0]].min() >= BODY  # clear of the posts
+
+
+def test_an_analytic_expansion_stops_at_a_wall_across_the_way():
+    nodes = SearchNodes(np.zeros(100), np.zeros(100), np.zeros(100), np.full(100, -1), np.full(100, -1))
+    nodes.xs[0], nodes.ys[0] = 1.0, 1.0  # facing +x
+    grid = np.full((20, 80), RADIUS + SEARCH.comfort)
+    goal = np.array([7.0, 1.0])
+    end, cost = car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)
+    assert end == 28 and cost == pytest.approx(5.6)  # 28 straight arcs of 0.2 m: 6.6 m, within 0.5 m of the goal
+    grid[:, 40] = 0.0  # a wall across the straight line at x = 4 m
+    assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)[0] == -1

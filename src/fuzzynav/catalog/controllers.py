@@ -45,11 +45,12 @@ register_controller(ControllerSpec(
     "it, its back-up out of a wedge allowed to close part of the gap to the nearest point, and its route planned "
     "on as soon as a back-up of it ends, to end inside the goal's tolerance, its arcs driven by the route layer "
     "wherever the route passes within 2 m of what was seen, and a route planned to a target more than 30° off its "
-    "heading; its earlier versions and the options that give them: "
+    "heading, whose search ends with the turn and straight line to the target once no cheaper route is left; its "
+    "earlier versions and the options that give them: "
     "docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
-    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=13))
+    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=14))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "

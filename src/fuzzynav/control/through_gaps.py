@@ -75,15 +75,17 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_gear=1.0, guide_car_cell=0.1, guide_car_steerings=7, guide_car_steering=ALPHA_MAX,
                     guide_car_ahead=1.0, guide_car_tight=2.0, guide_car_speed=0.8,
                     guide_car_reuse=5.0, guide_car_keep=0.1, guide_car_stray=0.3, guide_car_swerve=0.5,
-                    guide_car_chain=1.0, guide_off_heading=math.pi / 6)
+                    guide_car_chain=1.0, guide_off_heading=math.pi / 6, guide_car_shot=10)
 GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance (RobustNavigator.for_goal)
 # the pace (units and meaning: kernels.layers.Pace)
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
 
 # the bounds of the settings the kernels' reasoning needs (any other must be a finite number): the
-# car route's wavefront is exact only for a clearance weight >= 0 (kernels.car_search)
-BOUNDS = {"guide_off_heading": (0.0, math.pi), "guide_car_weight": (0.0, validation.MAX_MAGNITUDE)}
+# car route's wavefront is exact only for a clearance weight >= 0, and its analytic expansions come
+# every guide_car_shot >= 0 expanded nodes (kernels.car_search)
+BOUNDS = {"guide_off_heading": (0.0, math.pi), "guide_car_weight": (0.0, validation.MAX_MAGNITUDE),
+          "guide_car_shot": (0.0, validation.MAX_MAGNITUDE)}
 ANY = (-validation.MAX_MAGNITUDE, validation.MAX_MAGNITUDE)
 
 
@@ -116,7 +118,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     ends the car route ``guide_car_reach`` m from the goal whatever its tolerance, as version 10 did;
     ``guidance={"guide_car_tight": 0.5}`` lets the navigator drive wherever the route keeps 0.5 m
     beyond the radius, as version 11 did; ``guidance={"guide_off_heading": 0}`` steers straight at
-    a target the line to which is free wherever it is, as version 12 did;
+    a target the line to which is free wherever it is, as version 12 did; ``guidance={"guide_car_shot": 0}``
+    searches a route to a target off the heading to its end, without analytic expansions, as version 13 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as

@@ -20,6 +20,14 @@ over the whole grid gives; the estimate is shrunk by ``DIRECTED`` so that roundi
 cell before a neighbour that would lower it. Dijkstra alone settles the disc of cells nearer the
 goal than the start; the A* keeps to the band between the goal and the start that the search's
 arcs look up (one target < 0: no direction, the plain Dijkstra of :func:`fuzzynav.kernels.car_route.cost_to_go`).
+
+With ``shot`` > 0 the search tries Dolgov et al.'s analytic expansion every ``shot`` expanded
+nodes (:func:`shot`: the turn and straight line a car takes to the goal on open ground) and ends
+with it when it is clear of obstacles and its whole cost is no more than the lowest key of the
+search at that moment (cost so far plus cost-to-go): no route the search could still find is
+cheaper, by the heuristic's account. The heading-blind heuristic lets a search that starts facing
+away from its goal spread over every heading round the start; the expansion ends it once a node
+points the right way.
 """
 
 from __future__ import annotations
@@ -29,7 +37,7 @@ import math
 import numpy as np
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels.records import Wavefront
+from fuzzynav.kernels.records import SearchNodes, Wavefront
 
 FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
 DIRECTED = 1.0 - 1e-9  # the wavefront's octile estimate is shrunk by this (module docstring)
@@ -67,6 +75,48 @@ def arc_cost(clear, kappa, kmax, backwards, came_by, by, settings):
         if (came_by >= len(settings.curvatures)) != backwards:
             cost += settings.gear
     return cost
+
+
+@jit
+def shot(clearance, goal, radius, settings, nodes, node, count):
+    """(end node, cost): Dolgov et al.'s analytic expansion, on the search's own arcs. From search
+    node ``node``, forward arcs, each the one whose end heading points nearest the goal (a full
+    lock turn, then the straight line: the shortest path when nothing is in the way), while every
+    sample of every arc keeps ``radius`` plus ``settings.comfort`` (so each arc costs its length
+    and turn only, :func:`arc_cost` with a clearance factor of 1). The arcs are written into
+    ``nodes`` (a :class:`~fuzzynav.kernels.records.SearchNodes`) from index ``count`` on; the end node is the one within ``reach`` of ``goal``,
+    −1 when an arc is blocked, the arrays are full, or the goal is not reached within the
+    straight line plus a full circle."""
+    curvatures, cell, step, reach = settings.curvatures, settings.cell, settings.step, settings.reach
+    ny, nx = clearance.shape
+    kinds, samples, kmax = len(curvatures), max(2, int(math.ceil(step / (0.5 * cell)))), np.abs(curvatures).max()
+    wanted = radius + settings.comfort
+    xs, ys, ths, parents, primitives = nodes
+    x, y, theta = xs[node], ys[node], ths[node]
+    parent, came_by, cost = node, primitives[node], 0.0
+    for k in range(int((math.hypot(goal[0] - x, goal[1] - y) + 2.0 * math.pi / kmax) / step) + 2):
+        if math.hypot(x - goal[0], y - goal[1]) <= reach:
+            return parent, cost
+        if count + k >= xs.shape[0]:
+            return -1, cost
+        error = math.atan2(goal[1] - y, goal[0] - x) - theta
+        best, by = math.inf, 0
+        for a in range(kinds):
+            miss = abs((error - curvatures[a] * step + math.pi) % (2.0 * math.pi) - math.pi)
+            if miss < best:
+                best, by = miss, a
+        cos_theta, sin_theta = math.cos(theta), math.sin(theta)
+        for j in range(1, samples + 1):
+            px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step * j / samples)
+            row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
+            if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < wanted:
+                return -1, cost
+        cost += arc_cost(1.0, curvatures[by], kmax, False, came_by, by, settings)
+        x, y, theta = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step)
+        theta, came_by = theta % (2.0 * math.pi), by
+        xs[count + k], ys[count + k], ths[count + k] = x, y, theta
+        parents[count + k], primitives[count + k], parent = parent, by, count + k
+    return -1, cost
 
 
 @jit
@@ -218,8 +268,9 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
     kmax = np.abs(curvatures).max()
     xs[0], ys[0], ths[0], gs[0], parents[0], primitives[0] = start[0], start[1], start[2], 0.0, -1, -1
     keys[0] = -1
-    count, size = 1, push(heap_f, heap_n, 0, 0.0, 0)
+    count, size, expanded = 1, push(heap_f, heap_n, 0, 0.0, 0), 0
     while size > 0:
+        lowest = heap_f[0]
         node, size = pop(heap_f, heap_n, size)
         if keys[node] >= 0:
             at = slot(table, keys[node])
@@ -229,6 +280,12 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
         x, y, theta, g = xs[node], ys[node], ths[node], gs[node]
         if math.hypot(x - goal[0], y - goal[1]) <= reach:
             return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
+        if settings.shot > 0 and expanded % settings.shot == 0:
+            end, cost = shot(clearance, goal, radius, settings, SearchNodes(xs, ys, ths, parents, primitives), node,
+                             count)
+            if end >= 0 and g + cost <= lowest:  # no cheaper route left, by the heuristic's account
+                return xs[:end + 1], ys[:end + 1], ths[:end + 1], parents[:end + 1], primitives[:end + 1], end
+        expanded += 1
         cos_theta, sin_theta = math.cos(theta), math.sin(theta)
         for a in range(primitives_per_node):
             kappa, backwards = curvatures[a % kinds], a >= kinds

@@ -70,10 +70,11 @@ def line_free(points, count, x, y, tx, ty, room, direct):
 
 
 @jit
-def search_settings(params):
+def search_settings(params, shot):
     """The car route's search settings (a :class:`~fuzzynav.kernels.records.CarSearch`) of the
     layers' ``params``: the curvatures of the steering values, the grid cell and the search's
-    ``guide_car_…`` settings (forward arcs only for a robot that cannot reverse)."""
+    ``guide_car_…`` settings (forward arcs only for a robot that cannot reverse), analytic
+    expansions every ``shot`` expanded nodes (0: none)."""
     steering = params[PARAM.guide_car_steering]
     curvatures = np.tan(np.linspace(-steering, steering, int(params[PARAM.guide_car_steerings]))) / params[PARAM.wheelbase]
     reverse = params[PARAM.guide_car_reverse] if params[PARAM.max_reverse_speed] > 0 else 0.0
@@ -82,7 +83,7 @@ def search_settings(params):
                      weight=params[PARAM.guide_car_weight], comfort=params[PARAM.guide_car_comfort],
                      turn_cost=params[PARAM.guide_car_turn], switch_cost=params[PARAM.guide_car_switch],
                      reach=params[PARAM.guide_car_reach], budget=int(params[PARAM.guide_car_budget]),
-                     reverse=reverse, gear=params[PARAM.guide_car_gear])
+                     reverse=reverse, gear=params[PARAM.guide_car_gear], shot=shot)
 
 
 @jit
@@ -94,7 +95,7 @@ def follow(state, params, seen, robot, radius, at):
     state[STATE.guide_at] = at
     if count - at < 2:
         return False
-    manoeuvre, backwards, px, py, kappa, run = car_route.leg(route, at, count, seen, search_settings(params), radius,
+    manoeuvre, backwards, px, py, kappa, run = car_route.leg(route, at, count, seen, search_settings(params, 0), radius,
                                                              params[PARAM.guide_car_ahead], params[PARAM.guide_car_tight])
     if manoeuvre:
         state[STATE.guide_gear] = -1.0 if backwards else 1.0
@@ -111,7 +112,7 @@ def car(state, params, seen, robot, t, radius):
     from (x, y, θ) to (tx, ty) round the points ``seen`` (a
     :class:`~fuzzynav.kernels.records.Sightings`) at time ``t``, keep its first ``route_slots``
     poses and follow it: the route point, or the arc the layer drives; False when the search gives up."""
-    search = search_settings(params)
+    search = search_settings(params, int(params[PARAM.guide_car_shot]) if off_heading(params, robot) else 0)
     wanted = radius + params[PARAM.guide_car_room]
     found, poses, primitives = car_route.plan(seen, robot, wanted, radius, search)
     forget(state)

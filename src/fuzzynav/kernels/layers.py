@@ -1,16 +1,14 @@
-"""Array layout of the recovery and loop-escape layers of the default navigators, of the route
-guidance and the pace that ``fuzzy-5b`` (the default) adds (the kernels:
-:mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`,
-:mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`;
-the controller: :mod:`fuzzynav.control.robust`), generated from one dataclass per layer.
+"""Array layout of the recovery and loop-escape layers of the default navigators, of the route guidance and the
+pace that ``fuzzy-5b`` (the default) adds (the kernels: :mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`,
+:mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`; the controller:
+:mod:`fuzzynav.control.robust`), generated from one dataclass per layer.
 
 The layers travel as two float arrays (two arguments of the compiled step; each costs time at a call):
 
-- ``params``: the fields of :data:`PARAMETERS` — :class:`Supervisor`, :class:`Body`,
-  :class:`Recovery`, :class:`Loop`, :class:`Follow`, :class:`Guidance`, :class:`Pace`,
-  :class:`Latency`, :class:`Slots`, in that order (a layer not given is off: all its fields 0) —, then from
-  :data:`TABLES_AT` the recovery's rule base (:func:`fuzzynav.kernels.ts0.pack`). :func:`pack`
-  writes them;
+- ``params``: the fields of :data:`PARAMETERS` — :class:`Supervisor`, :class:`Body`, :class:`Recovery`, :class:`Loop`,
+  :class:`Follow`, :class:`Guidance`, :class:`Pace`, :class:`Latency`, :class:`Slots`, in that order (a layer not
+  given is off: all its fields 0) —, then from :data:`TABLES_AT` the recovery's rule base
+  (:func:`fuzzynav.kernels.ts0.pack`). :func:`pack` writes them;
 - ``state`` (N, …), one row per robot: the fields of :class:`RobotState` (a new episode's values:
   :data:`NEW_EPISODE`), then the loop detector's ring buffer of sampled places (``places_slots`` ×
   (t, x, y)), the commands sent and not yet applied (``delay`` × (α, V), the latency
@@ -208,6 +206,8 @@ class Guidance:
     """1: a backward arc of the layer ends with the next plan in the same step (0: the navigator drives that step)"""
     guide_off_heading: float = 0.0
     """rad: a target farther off the heading than this gets a route though the line to it is free (0: never)"""
+    guide_car_shot: float = 0.0
+    """expanded nodes between two analytic expansions of a search that starts off the heading (0: none)"""
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -113,6 +113,17 @@ class CarSearch(NamedTuple):
     budget: int  # the search nodes before it gives up
     reverse: float  # the cost factor of a backward arc (0: forward arcs only)
     gear: float  # m, the cost of a change of direction
+    shot: int = 0  # expanded nodes between two analytic expansions (0: none)
+
+
+class SearchNodes(NamedTuple):
+    """The nodes of a hybrid A* search (:func:`fuzzynav.kernels.car_search.search`), one entry each."""
+
+    xs: np.ndarray  # (budget,) m, the pose reached
+    ys: np.ndarray
+    ths: np.ndarray  # rad
+    parents: np.ndarray  # (budget,) int: the node it was reached from (−1: the start)
+    primitives: np.ndarray  # (budget,) int: the arc that reached it (−1: the start)
 
 
 class Wavefront(NamedTuple):
