@@ -17,7 +17,9 @@ body off what the memory has not seen yet.
 With ``guide_car`` on, a route the car can drive is tried before the grid route, from the
 robot's pose (:func:`fuzzynav.kernels.car_route.plan`: hybrid A* with forward and backward
 arcs, Dolgov et al. 2008, Reeds & Shepp 1990, keeping the radius plus ``guide_car_room``; the
-grid route is the fallback when the search gives up within ``guide_car_budget`` nodes). Where
+grid route is the fallback when the search gives up within ``guide_car_budget`` nodes; a search
+to a target off the heading tries an analytic expansion every ``guide_car_shot`` expanded nodes,
+:func:`fuzzynav.kernels.car_search.shot`). Where
 the plan's next ``guide_car_ahead`` m keep ``guide_car_tight`` m more than the radius from every
 remembered point and hold no cusp, the route point is that far along it and the navigator
 drives. Elsewhere — in a passage barely wider than the body, or in a K-turn — the layer drives
