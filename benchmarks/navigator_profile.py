@@ -159,7 +159,8 @@ def plans(n: int, steps: int) -> dict:
             t1 = time.process_time()
             heuristic = car_route.cost_to_go(grid, search.cell, row, col, kept, search.weight, comfort)
             t2 = time.process_time()
-            car_search.search(grid, heuristic, start, goal, kept, search)
+            shots = int(params[layers.PARAM.guide_car_shot]) if guidance.off_heading(params, robot) else 0
+            car_search.search(grid, heuristic, start, goal, kept, search._replace(shot=shots))  # as guidance.car
             t3 = time.process_time()
             for name, spent in zip(seconds, (t1 - t0, t2 - t1, t3 - t2)):
                 seconds[name] += spent / 3
@@ -222,12 +223,13 @@ def search_steps(steps: int) -> dict:
     for _ in range(steps):
         if run.sim.done:
             run.sim.reset()
-        before, now = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns].copy(), run.sim.k * run.sim.params.dt
+        before = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns].copy()
+        now = run.sim.k * run.sim.params.dt
         began = time.perf_counter()
         run.sim.step()
         spent = time.perf_counter() - began
         after = controller.compiled(1, run.sim.sensors.angles)[-1][0, columns]
-        # a search stamps guide_made with the step's time (the first step's search at t = 0 too)
+        # a search stamps guide_made with the step's time (t = 0 too: a new episode's stamp is -inf)
         kind = ("searched" if now > 0.0 else "searched at the start") if after[1] == now else (
             "planned, no search" if after[0] != before[0] else "neither")
         kinds[kind].append(spent)

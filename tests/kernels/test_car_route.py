@@ -258,8 +258,9 @@ def _facing_away(shot):
     grid = car_route.clearance_grid(hits, len(hits), low_x, low_y, nx, ny, SEARCH.cell, radius + SEARCH.comfort)
     start = np.array([robot.x - low_x, robot.y - low_y, robot.theta % (2 * math.pi)])
     goal = np.array([robot.tx - low_x, robot.ty - low_y])
+    toward = (int(start[1] / SEARCH.cell), int(start[0] / SEARCH.cell))
     front = car_search.wavefront(grid, SEARCH.cell, int(goal[1] / SEARCH.cell), int(goal[0] / SEARCH.cell), radius,
-                                 SEARCH.weight, SEARCH.comfort, (int(start[1] / SEARCH.cell), int(start[0] / SEARCH.cell)))
+                                 SEARCH.weight, SEARCH.comfort, toward)
     xs, ys, ths, parents, primitives, end = car_search.search(grid, front.cost.reshape(ny, nx), start, goal, radius,
                                                               SEARCH._replace(shot=shot), front)
     chain = [end]

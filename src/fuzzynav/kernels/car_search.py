@@ -23,9 +23,9 @@ arcs look up (one target < 0: no direction, the plain Dijkstra of :func:`fuzzyna
 
 With ``shot`` > 0 the search tries Dolgov et al.'s analytic expansion every ``shot`` expanded
 nodes (:func:`shot`: the turn and straight line a car takes to the goal on open ground) and ends
-with it when it is clear of obstacles and its whole cost is no more than the lowest key of the
-search at that moment (cost so far plus cost-to-go): no route the search could still find is
-cheaper, by the heuristic's account. The heading-blind heuristic lets a search that starts facing
+with it when it is clear of obstacles and costs no more than the cost-to-go of the node it starts
+from, whose key (cost so far plus cost-to-go) is the lowest of the search: no route the search
+could still find is cheaper, by the heuristic's account. The heading-blind heuristic lets a search that starts facing
 away from its goal spread over every heading round the start; the expansion ends it once a node
 points the right way.
 """
@@ -80,13 +80,14 @@ def arc_cost(clear, kappa, kmax, backwards, came_by, by, settings):
 @jit
 def shot(clearance, goal, radius, settings, nodes, node, count):
     """(end node, cost): Dolgov et al.'s analytic expansion, on the search's own arcs. From search
-    node ``node``, forward arcs, each the one whose end heading points nearest the goal (a full
-    lock turn, then the straight line: the shortest path when nothing is in the way), while every
-    sample of every arc keeps ``radius`` plus ``settings.comfort`` (so each arc costs its length
-    and turn only, :func:`arc_cost` with a clearance factor of 1). The arcs are written into
-    ``nodes`` (a :class:`~fuzzynav.kernels.records.SearchNodes`) from index ``count`` on; the end node is the one within ``reach`` of ``goal``,
-    −1 when an arc is blocked, the arrays are full, or the goal is not reached within the
-    straight line plus a full circle."""
+    node ``node``, forward arcs, each the one whose end heading points nearest the goal — a full
+    lock turn, then the straight line, the shortest path on open ground where the goal lies outside
+    the turning circle on its side (inside it the arcs circle until the loop's bound: −1) — while
+    every sample of every arc keeps ``radius`` plus ``settings.comfort`` (so each arc costs its
+    length and turn only, :func:`arc_cost` with a clearance factor of 1). The arcs are written into
+    ``nodes`` (a :class:`~fuzzynav.kernels.records.SearchNodes`) from index ``count`` on; the end
+    node is the one within ``reach`` of ``goal``, −1 when an arc is blocked, the arrays are full,
+    or the goal is not reached within the straight line plus a full circle."""
     curvatures, cell, step, reach = settings.curvatures, settings.cell, settings.step, settings.reach
     ny, nx = clearance.shape
     kinds, samples, kmax = len(curvatures), max(2, int(math.ceil(step / (0.5 * cell)))), np.abs(curvatures).max()
@@ -247,8 +248,9 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
     the cost-to-go of each cell (inf: unreachable), or the costs of the :func:`wavefront`
     ``front`` (reshaped), which the search then settles as far as it looks; ``settings``: a
     :class:`~fuzzynav.kernels.records.CarSearch` (:mod:`fuzzynav.world.hybrid_astar` tells the
-    meaning of its fields; ``reverse`` 0: forward arcs only). Returns the node arrays (x, y, θ,
-    parent, primitive) and the goal node (−1: none within the budget of nodes)."""
+    meaning of its fields; ``reverse`` 0: forward arcs only; ``shot`` > 0: analytic expansions, the
+    module docstring). Returns the node arrays (x, y, θ, parent, primitive) and the goal node, the
+    end of an analytic expansion or a node the search reached (−1: none within the budget of nodes)."""
     curvatures, cell, step, node_cell = settings.curvatures, settings.cell, settings.step, settings.node_cell
     weight, comfort, reach, reverse = settings.weight, settings.comfort, settings.reach, settings.reverse
     bins, budget, kinds = int(settings.headings), int(settings.budget), len(curvatures)
@@ -280,10 +282,10 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
         x, y, theta, g = xs[node], ys[node], ths[node], gs[node]
         if math.hypot(x - goal[0], y - goal[1]) <= reach:
             return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
-        if settings.shot > 0 and expanded % settings.shot == 0:
+        if settings.shot > 0 and expanded > 0 and expanded % settings.shot == 0:  # (the start's key: 0)
             end, cost = shot(clearance, goal, radius, settings, SearchNodes(xs, ys, ths, parents, primitives), node,
                              count)
-            if end >= 0 and g + cost <= lowest:  # no cheaper route left, by the heuristic's account
+            if end >= 0 and g + cost <= lowest:  # no dearer than the node's estimate, the lowest key
                 return xs[:end + 1], ys[:end + 1], ths[:end + 1], parents[:end + 1], primitives[:end + 1], end
         expanded += 1
         cos_theta, sin_theta = math.cos(theta), math.sin(theta)

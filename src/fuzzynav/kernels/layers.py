@@ -1,6 +1,6 @@
-"""Array layout of the recovery and loop-escape layers of the default navigators, of the route guidance and the
-pace that ``fuzzy-5b`` (the default) adds (the kernels: :mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`,
-:mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`; the controller:
+"""Array layout of the recovery and loop-escape layers of the default navigators, the route guidance and the pace
+of ``fuzzy-5b`` (kernels :mod:`~fuzzynav.kernels.recovery`, :mod:`~fuzzynav.kernels.escape`,
+:mod:`~fuzzynav.kernels.guidance`, :mod:`~fuzzynav.kernels.pace`, :mod:`~fuzzynav.kernels.robust`; controller
 :mod:`fuzzynav.control.robust`), generated from one dataclass per layer.
 
 The layers travel as two float arrays (two arguments of the compiled step; each costs time at a call):
@@ -207,7 +207,7 @@ class Guidance:
     guide_off_heading: float = 0.0
     """rad: a target farther off the heading than this gets a route though the line to it is free (0: never)"""
     guide_car_shot: float = 0.0
-    """expanded nodes between two analytic expansions of a search that starts off the heading (0: none)"""
+    """expanded nodes (whole) between two analytic expansions of a search off the heading (0: none)"""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -354,7 +354,7 @@ class RobotState:
 # a new episode's state row: 0 but these (NaN: none yet)
 NEW_EPISODE = {"last_x": math.nan, "last_y": math.nan, "best": math.inf, "t_best": math.nan, "route_x": math.nan,
                "route_y": math.nan, "planned": -math.inf, "guide_x": math.nan, "guide_y": math.nan,
-               "guide_planned": -math.inf}
+               "guide_planned": -math.inf, "guide_made": -math.inf}
 
 PARAMETERS = (Supervisor, Body, Recovery, Loop, Follow, Guidance, Pace, Latency, Slots)
 PARAM_NAMES = tuple(field.name for record in PARAMETERS for field in fields(record))

@@ -113,7 +113,7 @@ class CarSearch(NamedTuple):
     budget: int  # the search nodes before it gives up
     reverse: float  # the cost factor of a backward arc (0: forward arcs only)
     gear: float  # m, the cost of a change of direction
-    shot: int = 0  # expanded nodes between two analytic expansions (0: none)
+    shot: int  # expanded nodes between two analytic expansions (0: none; kernels.car_search)
 
 
 class SearchNodes(NamedTuple):

@@ -82,7 +82,7 @@ class Search:
                          node_cell=float(self.node_cell), headings=int(self.headings), weight=float(self.weight),
                          comfort=float(self.comfort), turn_cost=float(self.turn_cost),
                          switch_cost=float(self.switch_cost), reach=float(self.reach), budget=int(self.budget),
-                         reverse=float(self.reverse), gear=float(self.gear))
+                         reverse=float(self.reverse), gear=float(self.gear), shot=0)
 
 
 @dataclass(frozen=True)
