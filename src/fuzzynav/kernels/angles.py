@@ -1,8 +1,9 @@
 """The angle convention of the package (docs/thesis.md, conventions): radians, wrapped to (−π, π].
 
-:func:`wrap_formula` is the one formula; it runs on floats, on NumPy arrays and compiled inside
-the kernels (:data:`fuzzynav.kernels.motion.wrap`). Python's float ``%`` and NumPy's ``mod``
-give the same numbers.
+:func:`wrap_formula` is the one formula; it runs on floats and on NumPy arrays. Python's float
+``%`` and NumPy's ``mod`` give the same numbers. Inside the kernels,
+:func:`fuzzynav.kernels.motion.wrap` computes it for one float with the remainder skipped where
+it changes nothing, the same numbers bit for bit (``tests/kernels/test_angles.py``).
 """
 
 from __future__ import annotations

@@ -33,6 +33,7 @@ import numpy as np
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import car_search, sightings
+from fuzzynav.kernels.motion import turn_remainder
 
 MARGIN = 1.5  # m of grid round the robot, the target and the points
 SLACK = 0.02  # m: the plan keeps the robot's present clearance less this, when below the radius asked
@@ -102,7 +103,7 @@ def plan(seen, robot, radius, body, search):
     cell, comfort = search.cell, search.comfort
     radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
-    start = np.array([x - low_x, y - low_y, theta % (2.0 * math.pi)])
+    start = np.array([x - low_x, y - low_y, turn_remainder(theta)])
     front = car_search.wavefront(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius,
                                  search.weight, comfort, (int(math.floor(start[1] / cell)),
                                                           int(math.floor(start[0] / cell))))

@@ -37,6 +37,7 @@ import math
 import numpy as np
 
 from fuzzynav.jit import jit
+from fuzzynav.kernels.motion import turn_remainder
 from fuzzynav.kernels.records import SearchNodes, Wavefront
 
 FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
@@ -103,7 +104,7 @@ def shot(clearance, goal, radius, settings, nodes, node, count):
         error = math.atan2(goal[1] - y, goal[0] - x) - theta
         best, by = math.inf, 0
         for a in range(kinds):
-            miss = abs((error - curvatures[a] * step + math.pi) % (2.0 * math.pi) - math.pi)
+            miss = abs(turn_remainder(error - curvatures[a] * step + math.pi) - math.pi)
             if miss < best:
                 best, by = miss, a
         cos_theta, sin_theta = math.cos(theta), math.sin(theta)
@@ -114,7 +115,7 @@ def shot(clearance, goal, radius, settings, nodes, node, count):
                 return -1, cost
         cost += arc_cost(1.0, curvatures[by], kmax, False, came_by, by, settings)
         x, y, theta = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step)
-        theta, came_by = theta % (2.0 * math.pi), by
+        theta, came_by = turn_remainder(theta), by
         xs[count + k], ys[count + k], ths[count + k] = x, y, theta
         parents[count + k], primitives[count + k], parent = parent, by, count + k
     return -1, cost
@@ -294,7 +295,7 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
             length = -step if backwards else step
             # the arc's end first: an arc into a closed node is dropped before its points are tested
             ex, ey, eth = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length)
-            eth = eth % (2.0 * math.pi)
+            eth = turn_remainder(eth)
             key = ((int(ey / node_cell) * node_cols + int(ex / node_cell)) * bins
                    + int(eth / (2.0 * math.pi) * bins) % bins)
             at = slot(table, key)

@@ -26,6 +26,7 @@ import numpy as np
 
 from fuzzynav.jit import jit
 from fuzzynav.kernels import sightings
+from fuzzynav.kernels.motion import turn_remainder
 
 BESIDE = 0.05  # m: a beam passing this near a point covers it
 BEYOND = 0.15  # m: the echo must lie this much farther than the point to clear it
@@ -44,7 +45,7 @@ def contradicted(px, py, pose, seen):
     if d >= max_range - BEYOND:
         return False
     phi = math.atan2(py - y, px - x) - theta
-    phi = (phi + math.pi) % (2.0 * math.pi) - math.pi
+    phi = turn_remainder(phi + math.pi) - math.pi
     k = min(max(int(np.searchsorted(angles, phi)), 1), angles.shape[0] - 1)
     if abs(phi - angles[k - 1]) < abs(phi - angles[k]):
         k -= 1  # the beam nearest the point's direction

@@ -14,6 +14,7 @@ import math
 from fuzzynav.jit import jit
 from fuzzynav.kernels import route
 from fuzzynav.kernels.layers import PARAM, STATE
+from fuzzynav.kernels.motion import turn_remainder
 
 
 @jit
@@ -84,7 +85,7 @@ def should_leave(state, params, distance, bearing, ranges, angles):
         return False
     k, gap = 0, math.inf
     for i in range(angles.shape[0]):
-        turn = (angles[i] - bearing + math.pi) % math.tau  # Python's and NumPy's remainder alike
+        turn = turn_remainder(angles[i] - bearing + math.pi)  # Python's and NumPy's remainder alike
         if abs(turn - math.pi) < gap:
             k, gap = i, abs(turn - math.pi)
     return ranges[k] >= min(distance, params[PARAM.free])

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from fuzzynav.jit import jit
-from fuzzynav.kernels.motion import ring_gap
+from fuzzynav.kernels.motion import ring_gap, turn_remainder
 
 GSB, FOA, ROA, LOA = 0, 1, 2, 3
 # angles of C1…C7 (rad, thesis §IV.7) and the avoider on each sensor's side
@@ -69,7 +69,7 @@ def remember(memory, count, pose, seen, half_cone):
     slot = count % memory.shape[0]
     gap = math.inf
     for a in angles:
-        r = (bearing - a) % (2.0 * math.pi)
+        r = turn_remainder(bearing - a)
         gap = min(gap, min(r, 2.0 * math.pi - r))
     echo = distance if gap <= half_cone else math.inf
     limit = max_range - 1e-9
