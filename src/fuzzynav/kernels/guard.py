@@ -94,7 +94,9 @@ def turning_room(memory, x, y, theta, body, radius):
     """(room left, room right, free lane ahead) from the remembered hits: the smallest gap between
     the body of a robot turning half a circle of ``radius`` to that side and any hit (a hit
     ahead is passed at | |p − c| − R |, one behind at the nearer end of the half circle), and the
-    free length of the lane of half-width ``body`` ahead. inf without hits."""
+    free length of the lane of half-width ``body`` ahead. inf without hits. A hit d m away is at
+    least d − 2R from either half circle (:func:`beyond`): one beyond both rooms found so far is
+    passed without its circles, which leaves the three numbers as they are, bit for bit."""
     c, s = math.cos(theta), math.sin(theta)
     left = right = ahead = math.inf
     for m in range(memory.shape[0]):
@@ -102,6 +104,10 @@ def turning_room(memory, x, y, theta, body, radius):
             if memory[m, j, 2] == 0.0:
                 continue
             lx, ly = local(memory, m, j, x, y, c, s)
+            if lx > 0.0 and abs(ly) < body:
+                ahead = min(ahead, lx - body)
+            if beyond(lx, ly, max(left, right) + 2.0 * radius + body):
+                continue
             if lx >= 0.0:
                 gap_left = ring_gap(lx, ly - radius, radius, left + body)
                 gap_right = ring_gap(lx, ly + radius, radius, right + body)
@@ -110,9 +116,16 @@ def turning_room(memory, x, y, theta, body, radius):
                 gap_left = min(here, ring_gap(lx, ly - 2.0 * radius, 0.0, left + body))
                 gap_right = min(here, ring_gap(lx, ly + 2.0 * radius, 0.0, right + body))
             left, right = min(left, gap_left - body), min(right, gap_right - body)
-            if lx > 0.0 and abs(ly) < body:
-                ahead = min(ahead, lx - body)
     return left, right, ahead
+
+
+@jit
+def beyond(dx, dy, reach):
+    """Is (dx, dy) farther than ``reach`` from the origin, with 1 µm to spare for rounding (so a
+    point that passes could not have changed a minimum it is skipped for)? False for an infinite
+    ``reach``."""
+    far = reach + 1e-6
+    return dx * dx + dy * dy > far * far
 
 
 @jit
@@ -135,12 +148,14 @@ def turn_wanted(memory, pose, step, turning, goal_bearing, side, room):
 
 @jit
 def step_clearance(memory, x, y, theta, advance, body):
-    """Gap between the body after moving ``advance`` (m) straight ahead and the remembered hits."""
+    """Gap between the body after moving ``advance`` (m) straight ahead and the remembered hits (a
+    hit farther than the gap found so far plus ``advance`` and the body is passed: :func:`beyond`)."""
     c, s = math.cos(theta), math.sin(theta)
     gap = math.inf
     for m in range(memory.shape[0]):
         for j in range(memory.shape[1]):
-            if memory[m, j, 2] != 0.0:
+            if memory[m, j, 2] != 0.0 and not beyond(memory[m, j, 0] - x, memory[m, j, 1] - y,
+                                                     gap + abs(advance) + body):
                 lx, ly = local(memory, m, j, x, y, c, s)
                 gap = min(gap, ring_gap(lx - advance, ly, 0.0, gap + body) - body)
     return gap
