@@ -75,3 +75,14 @@ def test_blocked_directions_are_those_of_the_definition_on_random_scans(field_de
         assert np.array_equal(gaps.blocked_directions(ranges, angles, clearance, 2.0), expected)
         mixed += expected.any() and not expected.all()
     assert mixed > 50  # most scans test both answers
+
+
+def test_blocked_directions_on_uneven_scans_are_those_of_the_definition():
+    """Directions unevenly spaced (the runs blocked without a test are sized by the widest step)."""
+    rng = np.random.default_rng(8)
+    for k in range(200):
+        angles = np.sort(rng.uniform(-2.4, 2.4, 181))
+        ranges = np.where(rng.random(181) < 0.02 + k / 1000, rng.uniform(0.05, 4.0, 181), 4.0)
+        clearance = rng.uniform(0.2, 0.6)
+        assert np.array_equal(gaps.blocked_directions(ranges, angles, clearance, 2.0),
+                              blocked_by_definition(ranges, angles, clearance, 2.0))
