@@ -38,6 +38,24 @@ def test_free_run_is_the_arc_length_to_the_first_hit_within_room(seed, kappa):
     assert run == pytest.approx(marched(ranges, kappa, 0.35), abs=0.01)
 
 
+@pytest.mark.parametrize("kappa", [0.0, 0.3, -0.9, 1.45, 5e-4])
+def test_far_hits_passed_unmeasured_change_no_run(kappa):
+    """The run of a cluttered scan is the least of its hits' runs alone, bit for bit."""
+    rng = np.random.default_rng(int(abs(kappa) * 100) + 7)
+    passed = 0
+    for _ in range(60):
+        ranges = np.where(rng.random(ANGLES.size) < 0.5, rng.uniform(0.2, MAX_RANGE, ANGLES.size), MAX_RANGE)
+        alone = []
+        for j in np.flatnonzero(ranges < MAX_RANGE):
+            one = np.full(ANGLES.size, MAX_RANGE)
+            one[j] = ranges[j]
+            alone.append(free_run(one, ANGLES, MAX_RANGE, kappa, 0.35))
+        run = free_run(ranges, ANGLES, MAX_RANGE, kappa, 0.35)
+        assert run == min(alone, default=MAX_RANGE)
+        passed += int(np.sum((ranges < MAX_RANGE) & (ranges > run + 0.35 + 1e-6)))
+    assert passed > 500  # most scans hold hits beyond the run: the pruning was exercised
+
+
 def test_a_hit_inside_the_room_ahead_leaves_no_run_and_one_behind_is_ignored():
     ranges = np.full(ANGLES.size, MAX_RANGE)
     ranges[135] = 0.3  # straight ahead, within 0.35 m

@@ -25,11 +25,13 @@ def free_run(ranges, angles, max_range, kappa, room):
     """Arc length (m) the robot's centre can travel forward on the arc of curvature ``kappa``
     (1/m, + to the left) before it comes within ``room`` of a hit of the scan (``ranges`` along
     ``angles`` from the centre, robot frame; ``max_range``: no hit); 0 when it is already that
-    close to one ahead of it, ``max_range`` at most."""
+    close to one ahead of it, ``max_range`` at most. The centre comes within ``room`` of a hit r m
+    away only after r − ``room`` m of travel, so a hit farther than the best run so far plus
+    ``room`` (and 1 µm for rounding) is passed unmeasured: the run is the same number, bit for bit."""
     best = max_range
     for j in range(ranges.shape[0]):
         r = ranges[j]
-        if r >= max_range:
+        if r >= max_range or r > best + room + 1e-6:
             continue
         hx, hy = r * math.cos(angles[j]), r * math.sin(angles[j])
         if abs(kappa) < 1e-3:  # straight on (the arc leaves the line by < 5 cm over 10 m)
