@@ -5,8 +5,7 @@ import math
 import struct
 
 import numpy as np
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
 
 from fuzzynav.kernels.angles import wrap_formula
 from fuzzynav.kernels.motion import turn_remainder, wrap
