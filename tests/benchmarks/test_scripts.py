@@ -90,6 +90,7 @@ SMALLEST = [
     ("navigator_profile.py", ("--robots", "1", "--steps", "10", "--json"), '"part_share"'),
     ("navigator_profile.py", ("--singles", "--robots", "2", "--steps", "5"), '"singles_us_per_robot_step"'),
     ("navigator_profile.py", ("--searches", "--steps", "20"), '"share_of_time"'),
+    ("navigator_parts.py", ("--steps", "20", "--repeats", "1", "--json"), '"blocked directions"'),
     ("robust_nav.py", ("--family", "mixed", "--seeds", "0", "--n", "1", "--json"), '"stood_still_10s"'),
     ("robust_nav.py", ("--layers", "--controller", "fuzzy-2b-thesis", "--family", "mixed", "--seeds", "0", "--n", "1"),
      "| fuzzy-2b-thesis | all layers |"),
