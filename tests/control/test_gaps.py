@@ -58,7 +58,8 @@ def test_gap_heading_is_the_goal_bearing_when_free_else_the_nearest_free_directi
 
 def blocked_by_definition(ranges, angles, clearance, look):
     """Every direction tested against every hit (the definition :func:`gaps.blocked_directions` scans runs of)."""
-    spread = np.arcsin(np.minimum(1.0, clearance / np.maximum(ranges, 1e-9)))
+    with np.errstate(invalid="ignore"):  # a negative clearance below −r: no spread (NaN), nothing blocked
+        spread = np.arcsin(np.minimum(1.0, clearance / np.maximum(ranges, 1e-9)))
     gap = np.abs(np.pi - (np.pi - (angles[:, None] - angles[None, :])) % (2 * np.pi))
     return ((gap <= spread[None, :]) & (ranges[None, :] < look)).any(axis=1)
 
@@ -75,6 +76,24 @@ def test_blocked_directions_are_those_of_the_definition_on_random_scans(field_de
         assert np.array_equal(gaps.blocked_directions(ranges, angles, clearance, 2.0), expected)
         mixed += expected.any() and not expected.all()
     assert mixed > 50  # most scans test both answers
+
+
+@pytest.mark.parametrize("case", ["full circle", "repeated", "one beam", "two beams", "tiny steps", "negative"])
+def test_blocked_directions_on_odd_scans_are_those_of_the_definition(case):
+    """Scans round the whole circle, with repeated directions, of one or two beams, with steps
+    below the rounding of the angles' differences, and a negative clearance (blocks nothing)."""
+    rng = np.random.default_rng(len(case))
+    for _ in range(100):
+        angles = {"full circle": np.linspace(-np.pi, np.pi, 361),
+                  "repeated": np.repeat(np.linspace(-2.0, 2.0, 61), 3),
+                  "one beam": np.array([rng.uniform(-3.0, 3.0)]),
+                  "two beams": np.sort(rng.uniform(-3.0, 3.0, 2)),
+                  "tiny steps": np.arange(21) * 3e-17,
+                  "negative": np.linspace(-2.0, 2.0, 41)}[case]
+        ranges = np.where(rng.random(angles.size) < 0.3, rng.uniform(0.05, 3.0, angles.size), 9.0)
+        clearance = -0.1 if case == "negative" else (4e-16 if case == "tiny steps" else rng.uniform(0.2, 2.5))
+        assert np.array_equal(gaps.blocked_directions(ranges, angles, clearance, 2.0),
+                              blocked_by_definition(ranges, angles, clearance, 2.0)), case
 
 
 def test_blocked_directions_on_uneven_scans_are_those_of_the_definition():

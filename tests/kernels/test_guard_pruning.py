@@ -66,6 +66,30 @@ def test_far_hits_passed_by_the_guard_change_no_number():
     assert skipped > 1000  # the memories hold hits beyond the rooms: the pruning was exercised
 
 
+def test_hits_at_the_edge_of_the_reach_change_no_number():
+    """Hits a hair inside and outside the distance at which they could first matter, where the
+    bounds are tight (beside the robot on the side of the larger room, straight along the step):
+    a bound tightened by a micrometre, or without the rounding slack, fails here."""
+    rng = np.random.default_rng(4)
+    for trial in range(12000):
+        theta, advance = float(rng.uniform(-math.pi, math.pi)), float(rng.choice([-1.0, 1.0]) * rng.uniform(0.01, 0.5))
+        c, s = math.cos(theta), math.sin(theta)
+        memory = np.zeros((1, 3, 3))
+        near, a = rng.uniform(0.4, 1.5), rng.uniform(-math.pi, math.pi)  # one hit sets the rooms and the gap
+        memory[0, 0] = 5.0 + near * math.cos(a), 5.0 + near * math.sin(a), 1.0
+        left, right, _ = guard.turning_room(memory[:, :1], 5.0, 5.0, theta, BODY, RADIUS)
+        gap = guard.step_clearance(memory[:, :1], 5.0, 5.0, theta, advance, BODY)
+        slack = 2e-6 if trial % 2 else 4e-15  # micrometres, or a few units of rounding
+        side = 1.0 if left >= right else -1.0
+        d = max(left, right) + 2.0 * RADIUS + BODY + rng.uniform(-slack, slack)
+        memory[0, 1] = 5.0 - side * d * s, 5.0 + side * d * c, 1.0  # beside the robot, local (0, ±d)
+        d = gap + abs(advance) + BODY + rng.uniform(-slack, slack)
+        memory[0, 2] = 5.0 + math.copysign(d, advance) * c, 5.0 + math.copysign(d, advance) * s, 1.0  # along the step
+        assert guard.turning_room(memory, 5.0, 5.0, theta, BODY, RADIUS) == every_hit_room(memory, 5.0, 5.0, theta)
+        assert guard.step_clearance(memory, 5.0, 5.0, theta, advance, BODY) == \
+            every_hit_clearance(memory, 5.0, 5.0, theta, advance)
+
+
 def test_without_hits_everything_is_free():
     memory = np.zeros((10, 40, 3))
     assert guard.turning_room(memory, 1.0, 2.0, 0.3, BODY, RADIUS) == (math.inf, math.inf, math.inf)

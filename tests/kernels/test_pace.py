@@ -56,6 +56,21 @@ def test_far_hits_passed_unmeasured_change_no_run(kappa):
     assert passed > 500  # most scans hold hits beyond the run: the pruning was exercised
 
 
+def test_a_hit_at_the_edge_of_the_skip_changes_no_run():
+    """A hit straight ahead a hair nearer or farther than the best run so far plus the room, where
+    the bound is tight: a skip tightened by a micrometre fails here."""
+    rng = np.random.default_rng(12)
+    for _ in range(400):
+        ranges = np.full(ANGLES.size, MAX_RANGE)
+        first = int(rng.integers(90, 130))  # to the right of straight ahead: read first
+        ranges[first] = rng.uniform(1.0, 3.0)
+        best = free_run(ranges, ANGLES, MAX_RANGE, 0.0, 0.35)
+        ranges[135] = best + 0.35 + rng.uniform(-2e-6, 2e-6)
+        one = np.full(ANGLES.size, MAX_RANGE)
+        one[135] = ranges[135]
+        assert free_run(ranges, ANGLES, MAX_RANGE, 0.0, 0.35) == min(best, free_run(one, ANGLES, MAX_RANGE, 0.0, 0.35))
+
+
 def test_a_hit_inside_the_room_ahead_leaves_no_run_and_one_behind_is_ignored():
     ranges = np.full(ANGLES.size, MAX_RANGE)
     ranges[135] = 0.3  # straight ahead, within 0.35 m

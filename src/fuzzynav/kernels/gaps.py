@@ -63,7 +63,8 @@ def blocked_directions(ranges, angles, clearance, look):
     (across ±π), so each hit marks those runs only: the scan's cost grows with the hits near the
     robot and their spread, not with the square of its size. The directions fewer places from
     the hit than its spread over the scan's widest step, less one, are blocked without a test
-    (each lies a step or more inside the spread); the run's two ends are then found as before."""
+    (each lies a step or more inside the spread, for steps above 10⁻⁹ rad, far above the
+    rounding of the angles' differences); the run's two ends are then found as before."""
     size = ranges.shape[0]
     mask = np.zeros(size, dtype=np.bool_)
     widest = 0.0
@@ -74,7 +75,9 @@ def blocked_directions(ranges, angles, clearance, look):
         if not r < look:
             continue
         spread = math.asin(min(1.0, clearance / max(r, 1e-9)))
-        sure = max(int(spread / widest) - 1, 0) if widest > 0.0 else 0
+        if not spread >= 0.0:  # a negative clearance blocks nothing, not even the hit's own direction
+            continue
+        sure = max(int(min(spread / widest, size + 1.0)) - 1, 0) if widest > 1e-9 else 0
         low, high = max(j - sure, 0), min(j + sure, size - 1)
         mask[low:high + 1] = True
         i = low - 1

@@ -95,8 +95,8 @@ def turning_room(memory, x, y, theta, body, radius):
     the body of a robot turning half a circle of ``radius`` to that side and any hit (a hit
     ahead is passed at | |p − c| − R |, one behind at the nearer end of the half circle), and the
     free length of the lane of half-width ``body`` ahead. inf without hits. A hit d m away is at
-    least d − 2R from either half circle (:func:`beyond`): one beyond both rooms found so far is
-    passed without its circles, which leaves the three numbers as they are, bit for bit."""
+    least d − 2R from either half circle (R ≥ 0; :func:`beyond`): one beyond both rooms found so
+    far is passed without its circles, which leaves the three numbers as they are, bit for bit."""
     c, s = math.cos(theta), math.sin(theta)
     left = right = ahead = math.inf
     for m in range(memory.shape[0]):
@@ -121,10 +121,10 @@ def turning_room(memory, x, y, theta, body, radius):
 
 @jit
 def beyond(dx, dy, reach):
-    """Is (dx, dy) farther than ``reach`` from the origin, with 1 µm to spare for rounding (so a
-    point that passes could not have changed a minimum it is skipped for)? False for an infinite
-    ``reach``."""
-    far = reach + 1e-6
+    """Is (dx, dy) farther than ``reach`` from the origin, with 1 µm and a billionth of ``reach``
+    to spare for rounding (so a point that passes could not have changed a minimum it is skipped
+    for, wherever the world lies)? False for an infinite or unknown ``reach``."""
+    far = reach * (1.0 + 1e-9) + 1e-6
     return dx * dx + dy * dy > far * far
 
 
