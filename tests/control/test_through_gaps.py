@@ -146,6 +146,14 @@ def test_route_guidance_options_are_checked_and_on_in_the_default_navigator_only
     ("guide_off_heading", float("nan"), "must be finite"), ("guide_car_weight", -1.0, "must be >= 0"),
     ("guide_car_shot", -5.0, "must be >= 0"),
     ("guide_car_step", "0.2", "must be a number"), ("pace_horizon", float("inf"), "must be finite"),
+    # each of these ran before and drove nonsense: an invalid command at once, or a timeout
+    ("guide_car_cell", 0.0, "must be > 0"), ("guide_car_cell", -0.1, "must be > 0"),
+    ("guide_car_step", 0.0, "must be > 0"),
+    ("guide_car_node", 0.0, "must be > 0"), ("guide_car_reach", -1.0, "must be > 0"), ("pace_goal", 0.0, "must be > 0"),
+    ("guide_car_budget", 0, "must be >= 1"), ("guide_car_budget", 1.5, "must be a whole number"),
+    ("guide_car_budget", 1e12, "must be <= 1e"), ("guide_car_headings", 0, "must be >= 1"),
+    ("guide_car_steerings", 1, "must be >= 2"), ("guide_car_shot", 2.5, "must be a whole number"),
+    ("guide_car_steering", 2.0, "must be < 1.57"), ("guide_car_comfort", -0.3, "must be >= 0"),
 ])
 def test_a_bad_guidance_or_pace_value_is_a_clear_error_naming_the_option(option, value, says):
     group = "pace" if option.startswith("pace") else "guidance"

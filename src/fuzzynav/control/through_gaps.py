@@ -57,6 +57,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import fields, replace
+from typing import Any
 
 from fuzzynav import validation
 from fuzzynav.control.robust import RobustNavigator
@@ -82,24 +83,49 @@ PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=
 
 
 # the bounds of the settings the kernels' reasoning needs (any other must be a finite number): the
-# car route's wavefront is exact only for a clearance weight >= 0, and its analytic expansions come
-# every guide_car_shot >= 0 expanded nodes (kernels.car_search)
-BOUNDS = {"guide_off_heading": (0.0, math.pi), "guide_car_weight": (0.0, validation.MAX_MAGNITUDE),
-          "guide_car_shot": (0.0, validation.MAX_MAGNITUDE)}
-ANY = (-validation.MAX_MAGNITUDE, validation.MAX_MAGNITUDE)
+# sizes, lengths and periods they divide by or step with are > 0 (lo_open), the rooms, costs and
+# angles >= 0 (the car route's wavefront is exact only for a clearance weight >= 0), the steering
+# of the arcs below a right angle; the counts are whole numbers (:data:`WHOLE`)
+MAX = validation.MAX_MAGNITUDE
+BOUNDS: dict[str, dict[str, Any]] = {
+    **{name: {"lo": 0.0, "lo_open": True} for name in (
+        "guide_cell", "guide_car_step", "guide_car_node", "guide_car_cell", "guide_car_reach", "guide_car_speed",
+        "pace_horizon", "pace_goal")},
+    **{name: {"lo": 0.0} for name in (
+        "guide_ahead", "guide_replan", "guide_direct", "guide_room", "guide_narrow", "guide_bare", "guide_car_room",
+        "guide_car_weight", "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reverse",
+        "guide_car_gear", "guide_car_ahead", "guide_car_tight", "guide_car_reuse", "guide_car_keep",
+        "guide_car_stray", "guide_car_swerve", "pace_room")},
+    "guide_off_heading": {"lo": 0.0, "hi": math.pi},
+    "guide_car_steering": {"lo": 0.0, "hi": math.pi / 2, "lo_open": True, "hi_open": True},
+}
+# the counts: heading bins of a search node, steering values of its arcs (both ends at least),
+# nodes before it gives up (each costs about 100 bytes), expanded nodes between analytic expansions
+WHOLE = {"guide_car_headings": (1, 3600), "guide_car_steerings": (2, 101), "guide_car_budget": (1, 10_000_000),
+         "guide_car_shot": (0, 10**9)}
+
+
+def _setting(name: str, value, field: str) -> float:
+    """``value`` of the setting ``name`` checked against :data:`BOUNDS` and :data:`WHOLE`."""
+    where = f"{field}.{name}"
+    if name in WHOLE:
+        low, high = WHOLE[name]
+        number = validation.number(value, "fuzzy-5b options", where, lo=low, hi=high)
+        if not number.is_integer():
+            validation.fail(f"must be a whole number, got {validation.shown(value)}", "fuzzy-5b options", where)
+        return number
+    return validation.number(value, "fuzzy-5b options", where, **{"lo": -MAX, "hi": MAX, **BOUNDS.get(name, {})})
 
 
 def _replaced(record, values: dict | None, field: str):
     """``record`` with the fields named in ``values`` (an option of the factory) replaced; an
-    unknown name, or a value that is not a finite number within :data:`BOUNDS`, is an
-    :class:`~fuzzynav.errors.InputError` naming the option."""
+    unknown name, or a value that is not a finite number within :data:`BOUNDS` (a whole one within
+    :data:`WHOLE`), is an :class:`~fuzzynav.errors.InputError` naming the option."""
     names = {item.name for item in fields(record)} - {"guide", "pace"}
     unknown = sorted(set(values or {}) - names)
     if unknown:
         raise InputError(f"{field} has no {unknown}; it takes {sorted(names)}", field=field)
-    return replace(record, **{name: validation.number(value, "fuzzy-5b options", f"{field}.{name}",
-                                                      lo=BOUNDS.get(name, ANY)[0], hi=BOUNDS.get(name, ANY)[1])
-                              for name, value in (values or {}).items()})
+    return replace(record, **{name: _setting(name, value, field) for name, value in (values or {}).items()})
 
 
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
