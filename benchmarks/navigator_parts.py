@@ -10,7 +10,7 @@ navigator's step runs over all the recorded steps in one compiled loop (warm fir
 - ``gap finding``: :func:`fuzzynav.kernels.gaps.gap_heading` at the navigator's clearance, and its
   ``blocked directions`` alone (the navigator asks for gaps only off goal seeking, up to three times);
 - ``sector readings``: the thesis' seven readings from the scan (:func:`fuzzynav.kernels.gaps.sector_readings`);
-- ``pace``: the free run on arcs of the navigator's curvatures (:func:`fuzzynav.kernels.pace.free_run`);
+- ``pace``: the free run on the arcs of the car route's curvatures (:func:`fuzzynav.kernels.pace.free_run`);
 - ``points seen``: the map of the recovery and route layers (:func:`fuzzynav.kernels.sightings.see`).
 
 The parts are timed apart from the simulator, so they are a split of the step, not its sum (the
@@ -37,7 +37,7 @@ from sim_core import start_poses, world_of_15  # noqa: E402
 
 from fuzzynav.catalog.controllers import make_controller  # noqa: E402
 from fuzzynav.jit import jit  # noqa: E402
-from fuzzynav.kernels import gaps, guard, navigators, pace, sightings  # noqa: E402
+from fuzzynav.kernels import gaps, guard, guidance, layers, navigators, pace, sightings  # noqa: E402
 from fuzzynav.kernels.records import Pose, Reading  # noqa: E402
 from fuzzynav.sim import BatchSimulator  # noqa: E402
 
@@ -136,14 +136,16 @@ def main(argv=None) -> None:
     inner = make_controller("fuzzy-5b-gap")
     inner.compiled(1, angles)
     params = inner.params
-    curvatures = np.tan(np.linspace(-0.6, 0.6, 7)) / params[navigators.WHEELBASE]
+    layer = make_controller("fuzzy-5b").params  # the pace's room and the car route's arcs, as fuzzy-5b has them
+    curvatures = guidance.search_settings(layer, 0).curvatures
+    room = layer[layers.PARAM.radius] + layer[layers.PARAM.pace_room]
     parts = {
         "hit memory": (hit_memory, lambda: (poses, scans, angles, params,
                                             np.zeros((MEMORY_STEPS, angles.size + 1, 3)))),
         "gap finding": (gap_finding, lambda: (scans, angles, params)),
         "blocked directions": (blocked, lambda: (scans, angles, params)),
         "sector readings": (sectors, lambda: (scans, angles, params)),
-        "pace": (free_runs, lambda: (scans, angles, curvatures, params[navigators.BODY] + 0.05)),
+        "pace": (free_runs, lambda: (scans, angles, curvatures, room)),
         "points seen": (points_seen, lambda: (poses, scans, angles, np.zeros((scans.size + 1, 2)),
                                               np.zeros(1 << int(np.ceil(np.log2(2 * scans.size + 2)))))),
     }

@@ -85,7 +85,7 @@ def should_leave(state, params, distance, bearing, ranges, angles):
         return False
     k, gap = 0, math.inf
     for i in range(angles.shape[0]):
-        turn = turn_remainder(angles[i] - bearing + math.pi)  # Python's and NumPy's remainder alike
+        turn = turn_remainder(angles[i] - bearing + math.pi)  # in [0, 2π), as Python's remainder
         if abs(turn - math.pi) < gap:
             k, gap = i, abs(turn - math.pi)
     return ranges[k] >= min(distance, params[PARAM.free])
