@@ -89,7 +89,7 @@ def test_safety_stop_turns_a_hidden_wall_end_into_a_stop():
     controller = "fuzzy-5b-layered"
     # mixed-0-009: a thin wall end hides between the rays until no turn is free (README)
     world = generate_worlds("mixed", 10, 0)[9]
-    unguarded = run_episode(world, make_controller(controller, stop_margin=-1.0), seed=0)
+    unguarded = run_episode(world, make_controller(controller, layers=("orbit_guard", "turning_room", "hysteresis")), seed=0)
     assert unguarded.collision
     guarded = run_episode(world, make_controller(controller), seed=0)
     assert not guarded.collision and guarded.outcome == "timeout"

@@ -22,7 +22,7 @@ def models(tmp_path_factory):
 @pytest.mark.parametrize("key, value, message", [
     ("speed", "fast", "speed: must be a number, got 'fast'"),
     ("speed", True, "speed: must be a number, got True"),
-    ("lookahead", -1.0, "lookahead: must be a finite number > 0, got -1.0"),
+    ("lookahead", -1.0, "lookahead: must be > 0, got -1.0"),
     ("corner_radius", -1.0, "corner_radius: must be >= 0, got -1.0"),
 ])
 def test_bad_tracker_option_names_file_and_field(models, tmp_path, capsys, kind, key, value, message):

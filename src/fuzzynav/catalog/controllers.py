@@ -12,6 +12,8 @@ cheap. An installed distribution adds its own controllers through the entry poin
 
 from __future__ import annotations
 
+import re
+
 from fuzzynav import validation
 from fuzzynav.catalog.specs import SENSES, ControllerSpec
 from fuzzynav.control.base import Controller
@@ -163,10 +165,23 @@ def scenario_controllers(scenario, source: str) -> tuple[str, ...]:
 
 def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (or under the alias ``name``); a controller
-    with aliases carries the name asked for, which its traces and metrics show."""
+    with aliases carries the name asked for, which its traces and metrics show. A bad option (one
+    the controller does not take, or a value its constructor refuses:
+    :mod:`fuzzynav.settings`) is an :class:`InputError` naming the controller and the option."""
     validation.text(name, field="name", max_length=200)
     spec = spec_of(name)
-    controller = load(spec.factory)(**options)
+    try:
+        controller = load(spec.factory)(**options)
+    except InputError as error:
+        if error.source is not None:
+            raise
+        raise InputError(error.problem, source=f"{name} options", field=error.field) from None
+    except TypeError as error:
+        option = re.search(r"(unexpected|multiple values for) keyword argument '(\w+)'", str(error))
+        if option is None or option[2] not in options:
+            raise
+        problem = "no such option" if option[1] == "unexpected" else "is set by the controller itself"
+        raise InputError(problem, source=f"{name} options", field=option[2]) from None
     if spec.aliases:
         controller.name = name
     return controller

@@ -62,6 +62,7 @@ from fuzzynav.control.turning_room import TURN_RADIUS
 from fuzzynav.fuzzy.systems import goal_seeking, obstacle_avoidance
 from fuzzynav.kernels.navigators import TWO_BEHAVIOURS
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import LENGTH, ROOM, SPEED, SPREAD, STEPS, checked
 
 
 @functools.lru_cache(maxsize=1)
@@ -76,6 +77,8 @@ class TwoBehaviourNavigator(CompiledNavigator):
     name = "fuzzy-2b"
     kind, labels, roles, memory = TWO_BEHAVIOURS, ("GSB", "OA", "OA", "GAP"), ("gsb", "oab"), 10
 
+    @checked(detection=LENGTH, sector=SPREAD, front=SPREAD, risk=ROOM, wheelbase=LENGTH, dwell=STEPS, release=ROOM,
+             lane=ROOM, room_margin=ROOM, v_turn=SPEED, stop_margin=ROOM, gap_margin=ROOM, gap_look=LENGTH)
     def __init__(self, detection: float = 2.0, sector: float = math.pi / 2, front: float = math.pi / 4,
                  risk: float = 0.3, wheelbase: float = DEFAULT_PARAMS.wheelbase, dwell: int = 10,
                  release: float = 0.5, lane: float = 1.5, room_margin: float = 0.5, v_turn: float = 0.3,

@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from fuzzynav.control.base import BatchController
-from fuzzynav.validation import positive
+from fuzzynav.settings import LENGTH, RATE, SPEED, checked
 from fuzzynav.world.geometry import wrap_angle
 
 DEFAULT_SPEED = 1.0
@@ -44,13 +44,13 @@ def _window(path: np.ndarray, index: np.ndarray):
 
 
 class _PathBaseline(BatchController):
-    """Constant speed, batch and single-robot entry points; subclasses give ``_steer(obs)``."""
+    """Constant speed, batch and single-robot entry points; subclasses give ``_steer(obs)`` and check
+    the settings (:func:`~fuzzynav.settings.checked`)."""
 
     label = "track"
 
     def __init__(self, speed: float, wheelbase: float):
-        self.speed = positive(speed, field="speed")
-        self.wheelbase = positive(wheelbase, field="wheelbase")
+        self.speed, self.wheelbase = float(speed), float(wheelbase)
 
     def act_batch(self, obs):
         alpha = self._steer(np.atleast_2d(obs.pose), np.atleast_2d(obs.target), obs.path,
@@ -63,9 +63,10 @@ class PurePursuit(_PathBaseline):
 
     name = "pure-pursuit"
 
+    @checked(lookahead=LENGTH, speed=SPEED, wheelbase=LENGTH)
     def __init__(self, lookahead: float = 1.0, speed: float = DEFAULT_SPEED, wheelbase: float = WHEELBASE):
         super().__init__(speed, wheelbase)
-        self.lookahead = positive(lookahead, field="lookahead")
+        self.lookahead = float(lookahead)
 
     def goal_points(self, pose, target, path, index) -> np.ndarray:
         """Goal point ``(N, 2)``: the furthest-along intersection of the look-ahead circle with the path.
@@ -108,11 +109,11 @@ class Stanley(_PathBaseline):
 
     name = "stanley"
 
+    @checked(gain=RATE, softening=RATE, speed=SPEED, wheelbase=LENGTH)
     def __init__(self, gain: float = 2.5, softening: float = 1.0, speed: float = DEFAULT_SPEED,
                  wheelbase: float = WHEELBASE):
         super().__init__(speed, wheelbase)
-        self.gain = positive(gain, field="gain")
-        self.softening = positive(softening, field="softening")
+        self.gain, self.softening = float(gain), float(softening)
 
     def _steer(self, pose, target, path, index, speed):
         theta = pose[:, 2]

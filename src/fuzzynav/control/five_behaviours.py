@@ -89,6 +89,7 @@ from fuzzynav.fuzzy import systems_navigation as nav
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import FIVE_BEHAVIOURS
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import LENGTH, MEMORY, ROOM, SLOW, SPEED, STEPS, checked
 
 LABELS = ("GSB", "FOA+VRB", "ROA+VRB", "LOA+VRB", "GSB+VRB", "FOA+VRB", "GAP+VRB")  # of the mode codes (full lock: FOA)
 
@@ -108,6 +109,8 @@ class FiveBehaviourNavigator(CompiledNavigator):
     kind, labels, roles = FIVE_BEHAVIOURS, LABELS, ("gsb", "foa", "roa", "loa", "vrb")
     sensors_deg = supervisor.THESIS_ANGLES_DEG
 
+    @checked(d_m=LENGTH, d_s=LENGTH, d_max=LENGTH, v_floor=SLOW, v_max=SPEED, wheelbase=LENGTH, dwell=STEPS, lane=ROOM,
+             room_margin=ROOM, memory=MEMORY, stop_margin=ROOM, gap_margin=ROOM, gap_look=LENGTH)
     def __init__(self, d_m: float = nav.D_M, d_s: float = nav.D_S, d_max: float = nav.D_MAX,
                  v_floor: float = 0.3, v_max: float = DEFAULT_PARAMS.max_speed,
                  params: supervisor.SupervisorParams | None = None, wheelbase: float = DEFAULT_PARAMS.wheelbase,

@@ -31,6 +31,7 @@ from fuzzynav.control.batched import CompiledNavigator, layer_flags, navigator_p
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.kernels.navigators import GOAL_SEEKING
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import LENGTH, checked
 
 
 @functools.lru_cache(maxsize=1)
@@ -42,6 +43,7 @@ def default_systems() -> dict:
 class GuardedGoalSeeking:
     """Table IV.1 (or ``system``) on a batch, with the anti-orbit guard of the module docstring."""
 
+    @checked(wheelbase=LENGTH)
     def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, system=None):
         from fuzzynav.kernels import ts0
 
@@ -69,6 +71,7 @@ class GoalSeekingController(CompiledNavigator):
     name = "goal-seeking"
     kind, labels, roles = GOAL_SEEKING, ("GSB",), ("gsb",)
 
+    @checked(wheelbase=LENGTH)
     def __init__(self, wheelbase: float = DEFAULT_PARAMS.wheelbase, systems: Mapping | None = None,
                  layers=("orbit_guard",)):
         self._build(systems, default_systems, navigator_params(wheelbase=wheelbase, **layer_flags(layers)))

@@ -49,7 +49,6 @@ import math
 
 import numpy as np
 
-from fuzzynav import validation
 from fuzzynav.control.base import BatchController, Command
 from fuzzynav.control.batched import readings
 from fuzzynav.control.escape import FOLLOW, LOOP
@@ -59,8 +58,10 @@ from fuzzynav.kernels import layers, row_blocks
 from fuzzynav.kernels.motion import ROBOT_FIELDS
 from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import DURATION, ROOM, SHARE, Range, checked
 
 FIRST_SLOTS = 16  # obstacle point slots per robot at the start, in steps of S + 1 (doubled when needed)
+BARRIER = Range(0.0, 1.0, hi_open=True)  # the share of the body's gap a back-up step may close
 ROUTE_SLOTS = 100  # poses of the car route kept for reuse (arcs of guide_car_step: 20 m at 0.2 m)
 
 
@@ -84,11 +85,12 @@ class RobustNavigator(BatchController):
     that layer adjusts each command after the compiled decision (then made in Python, one call a
     step: :attr:`in_step` is False); ``systems`` of the navigator are its rule bases by role."""
 
+    @checked(stop_wait=DURATION, barrier=BARRIER, barrier_within=ROOM, goal_share=SHARE)
     def __init__(self, navigator, name: str, *, recovery: bool = True, escape: bool = True,
                  stop_wait: float = 1.0, barrier: float = 0.0, barrier_within: float = 0.0, guidance: layers.Guidance | None = None, pace: layers.Pace | None = None,
                  compensate: bool = False, forget_moving: bool = False, traffic=None, goal_share: float = 0.0):
         self.navigator, self.name, self.compensate, self.forget_moving = navigator, name, compensate, forget_moving
-        self.goal_share = validation.number(goal_share, "fuzzy-5b options", "goal_share", lo=0.0, hi=1.0)
+        self.goal_share = float(goal_share)
         self._reach = guidance.guide_car_reach if guidance else 0.0
         self.traffic, self._yielding = traffic, False
         self.labels = (*navigator.labels, "REC-BACK", "REC-TURN", "BF", "CAR-BACK", "CAR-FWD")
@@ -97,8 +99,7 @@ class RobustNavigator(BatchController):
         places = int(LOOP.horizon / (LOOP.sample_every - 1e-9)) + 3  # never all in use
         slots = layers.Slots(places_slots=places, route_slots=ROUTE_SLOTS if guidance else 0)
         recovering = dataclasses.replace(
-            RECOVERY, barrier=validation.number(barrier, "fuzzy-5b options", "barrier", lo=0.0, hi=1.0, hi_open=True),
-            barrier_within=validation.number(barrier_within, "fuzzy-5b options", "barrier_within", lo=0.0))
+            RECOVERY, barrier=float(barrier), barrier_within=float(barrier_within))
         records = (supervisor, recovering, LOOP, FOLLOW, guidance, pace, slots)
         self.params = np.concatenate([layers.pack(*(record for record in records if record is not None)),
                                       _recovery_tables()])

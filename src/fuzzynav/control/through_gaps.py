@@ -60,11 +60,12 @@ from dataclasses import fields, replace
 from typing import Any
 
 from fuzzynav import validation
-from fuzzynav.control.robust import RobustNavigator
+from fuzzynav.control.robust import BARRIER, RobustNavigator
 from fuzzynav.control.yield_layer import YieldLayer
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.kernels.layers import Guidance, Pace
+from fuzzynav.settings import ROOM, SHARE, checked
 
 # the route guidance and its car route (units and meaning: kernels.layers.Guidance); the car's
 # steering values span Fig IV.7's largest singleton
@@ -122,12 +123,13 @@ def _replaced(record, values: dict | None, field: str):
     unknown name, or a value that is not a finite number within :data:`BOUNDS` (a whole one within
     :data:`WHOLE`), is an :class:`~fuzzynav.errors.InputError` naming the option."""
     names = {item.name for item in fields(record)} - {"guide", "pace"}
-    unknown = sorted(set(values or {}) - names)
+    unknown = sorted(set(validation.mapping(values, field=field) if values is not None else {}) - names)
     if unknown:
         raise InputError(f"{field} has no {unknown}; it takes {sorted(names)}", field=field)
     return replace(record, **{name: _setting(name, value, field) for name, value in (values or {}).items()})
 
 
+@checked(barrier=BARRIER, barrier_within=ROOM, goal_share=SHARE)
 def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance: dict | None = None,
                         paced: bool = True, pace: dict | None = None, forget_moving: bool = True,
                         yield_in_traffic: bool = True, evade: bool = True, barrier: float = 0.5,

@@ -41,6 +41,7 @@ from fuzzynav.control.reference import STEP, WINDOW, advance, smoothed_path
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems import tracking
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import LENGTH, ROOM, SPEED, STEERING, checked
 from fuzzynav.world.geometry import wrap_angle
 
 DEFAULT_SPEED = 1.0  # m/s, the constant tracking speed of the chapter V comparison
@@ -59,11 +60,9 @@ class AngleErrorTracker(BatchController):
 
     label = "track"
 
+    @checked(speed=SPEED, corner_radius=ROOM, lookahead=LENGTH)
     def __init__(self, speed: float = DEFAULT_SPEED, corner_radius: float = DEFAULT_CORNER_RADIUS,
                  lookahead: float = DEFAULT_LOOKAHEAD):
-        validation.positive(speed, field="speed")
-        validation.number(corner_radius, field="corner_radius", lo=0.0)
-        validation.positive(lookahead, field="lookahead")
         self.speed = float(speed)
         self.corner_radius = float(corner_radius)
         self.lookahead = float(lookahead)
@@ -136,6 +135,7 @@ class ModelTracker(AngleErrorTracker):
     to ±``max_steering``.
     """
 
+    @checked(speed=SPEED, corner_radius=ROOM, lookahead=LENGTH, max_steering=STEERING)
     def __init__(self, model, input_range, *, name: str, speed: float = DEFAULT_SPEED,
                  corner_radius: float = DEFAULT_CORNER_RADIUS, lookahead: float = DEFAULT_LOOKAHEAD,
                  max_steering: float = np.pi / 4):
@@ -157,7 +157,7 @@ class ModelTracker(AngleErrorTracker):
 def fuzzy_tracker(systems=None, **options) -> FuzzyTracker:
     """Factory of ``fuzzy-tracker`` (options: ``speed``, ``corner_radius``, ``lookahead``, ``system``;
     ``systems={"tracker": system}``, its rule base by role, replaces Table V.1)."""
-    unknown = set(systems or {}) - {"tracker"}
+    unknown = set(validation.mapping(systems, field="systems") if systems is not None else {}) - {"tracker"}
     if unknown:
         raise InputError(f"unknown role(s) {', '.join(sorted(unknown))}; fuzzy-tracker has tracker", field="systems")
     if systems:

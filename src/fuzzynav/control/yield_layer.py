@@ -42,6 +42,7 @@ from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable, strong_partit
 from fuzzynav.kernels import evasion, scan_tracks, threats
 from fuzzynav.kernels.records import Scans, ThreatSettings
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+from fuzzynav.settings import LENGTH, PREDICTION, ROOM, SLOW, SPEED, Range, checked
 
 TTC_PEAKS = (1.0, 2.5, 4.5)  # s: short, medium, long
 SIDE_PEAKS = tuple(np.deg2rad((0.0, 45.0, 90.0, 150.0)))  # front, diagonal, abeam, behind
@@ -72,6 +73,8 @@ class YieldLayer:
     observation and the navigator's command to get the command it leaves; it keeps the scan
     before and the tracks (:meth:`reset` for a new episode)."""
 
+    @checked(mover_speed=SLOW, max_speed=SPEED, horizon=PREDICTION, close=ROOM, track_range=LENGTH,
+             tracked_beyond=Range(0.0, 180.0))
     def __init__(self, *, mover_speed: float = 0.3, max_speed: float = 2.5, horizon: float = 3.0,
                  close: float = 0.35, tracks: bool = False, track_range: float = 6.0, tracked_beyond: float = 60.0,
                  evade: bool = False):

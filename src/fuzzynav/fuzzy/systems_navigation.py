@@ -23,12 +23,14 @@ module). Universes and breakpoints the thesis leaves symbolic are fixed here:
 
 from __future__ import annotations
 
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.command_sets import steering
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.partition import strong_partition
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.settings import LENGTH, SPEED, checked
 
 D_M = 1.5  # d_m, Fig IV.18 (m)
 D_S = 3.0  # d_s, Fig IV.18 (m)
@@ -43,7 +45,7 @@ NEAR_FAR = ("P", "L")
 def distance_variable(name: str, d_m: float = D_M, d_s: float = D_S, d_max: float = D_MAX) -> Variable:
     """A range reading with P (near) and L (far), Fig IV.18: P = 1 below d_m, 0 beyond d_s."""
     if not 0.0 < d_m < d_s <= d_max:
-        raise ValueError(f"need 0 < d_m < d_s <= d_max, got {d_m}, {d_s}, {d_max}")
+        raise InputError(f"need 0 < d_m < d_s <= d_max, got {d_m}, {d_s}, {d_max}", field="d_m, d_s, d_max")
     return Variable(name, (0.0, d_max), strong_partition((d_m, d_s), NEAR_FAR, (0.0, d_max)))
 
 
@@ -160,6 +162,7 @@ def velocity_reducer(v_breaks=V_BREAKS, d1: float = D_M, d2: float = D_S, d_max:
 TABLE_VI_2 = {"P": "NG/P NP/M NG/P NM/M", "L": "PG/P PG/M PG/M PP/P"}
 
 
+@checked(d_m=LENGTH, d_s=LENGTH, d_max=LENGTH, v1=SPEED, v2=SPEED)
 def wall_follower(d_m: float = WALL_D_M, d_s: float = WALL_D_S, d_max: float = D_MAX,
                   v1: float = WALL_V1, v2: float = WALL_V2) -> FuzzySystem:
     """Hand-made fuzzy wall follower, §VI.5.3.1, Figs VI.17, VI.25–VI.26, Table VI.2 (8 rules).

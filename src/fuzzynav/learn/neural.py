@@ -169,6 +169,8 @@ def fit_inverse_model(
         raise InputError(f"must be one or more integers >= 1, got {hidden_layer_sizes!r}", field="hidden_layer_sizes")
     if solver not in SOLVERS:
         raise InputError(f"must be one of {', '.join(SOLVERS)}, got {solver!r}", field="solver")
+    if random_state is not None:  # scikit-learn's random_state takes 32-bit seeds only
+        validation.integer(random_state, field="seed", lo=0, hi=2**32 - 1)
     x_mean, x_std = X.mean(axis=0), X.std(axis=0)
     x_std = np.where(x_std > 0, x_std, 1.0)
     y_mean, y_std = float(y.mean()), float(y.std()) or 1.0

@@ -23,7 +23,7 @@ import numpy as np
 
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap
-from fuzzynav.validation import positive
+from fuzzynav.settings import BODY, LENGTH, MEMORY, RATE, checked
 
 
 class PotentialField(Controller):
@@ -32,13 +32,14 @@ class PotentialField(Controller):
 
     name = "apf"
 
+    @checked(**BODY, attraction=RATE, repulsion=RATE, influence=LENGTH, lookahead=LENGTH, memory=MEMORY)
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  attraction: float = 1.0, repulsion: float = 0.3, influence: float = 1.5, lookahead: float = 1.0,
                  memory: int = 10):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.attraction, self.repulsion = positive(attraction, field="attraction"), positive(repulsion, field="repulsion")
-        self.influence, self.lookahead = positive(influence, field="influence"), positive(lookahead, field="lookahead")
+        self.attraction, self.repulsion = float(attraction), float(repulsion)
+        self.influence, self.lookahead = float(influence), float(lookahead)
         self.map = LocalMap(memory)
 
     def reset(self, rng=None) -> None:

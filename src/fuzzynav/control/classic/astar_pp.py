@@ -56,7 +56,7 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, arcs
 from fuzzynav.errors import InputError
-from fuzzynav.validation import positive
+from fuzzynav.settings import BODY, LENGTH, RATE, ROOM, SPEED, WEIGHT, checked
 from fuzzynav.world.hybrid_astar import Car, Search, hybrid_astar
 from fuzzynav.world.planning import shortest_path
 
@@ -139,6 +139,8 @@ class AStarPurePursuit(Controller):
     name = "astar-pp"
     map_aware = True
 
+    @checked(**BODY, inflation=ROOM, comfort=ROOM, weight=WEIGHT, lookahead=LENGTH, lateral=RATE, check_margin=ROOM,
+             reverse_speed=SPEED)
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  inflation: float = 0.05, comfort: float = 0.4, weight: float = 3.0, lookahead: float = 0.6,
@@ -149,9 +151,9 @@ class AStarPurePursuit(Controller):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
         self.inflation = float(inflation)
         self.search = Search(weight=float(weight), comfort=float(comfort))
-        self.lookahead, self.lateral = positive(lookahead, field="lookahead"), positive(lateral, field="lateral")
+        self.lookahead, self.lateral = float(lookahead), float(lateral)
         self.check_margin = float(check_margin)
-        self.reverse_speed = positive(reverse_speed, field="reverse_speed")
+        self.reverse_speed = float(reverse_speed)
         self.hybrid = planner == "hybrid"
         self.steering = np.linspace(-max_steering, max_steering, 15)
         self.world = self.scenario = None

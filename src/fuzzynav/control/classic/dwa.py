@@ -42,7 +42,7 @@ from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap, arcs, free_length, moving_free_length
 from fuzzynav.control.sighting_tracks import tracked_variant
 from fuzzynav.robot.sensors import named_ring
-from fuzzynav.validation import positive
+from fuzzynav.settings import BODY, LENGTH, MEMORY, PREDICTION, RATE, ROOM, SAMPLES, WEIGHT, checked
 
 
 class DynamicWindow(Controller):
@@ -53,6 +53,9 @@ class DynamicWindow(Controller):
 
     name = "dwa"
 
+    @checked(**BODY, acceleration=RATE, braking=RATE, margin=ROOM, horizon=LENGTH, lookahead=PREDICTION,
+             heading=WEIGHT, clearance=WEIGHT, velocity=WEIGHT, n_steering=SAMPLES, n_speeds=SAMPLES, memory=MEMORY,
+             prediction=PREDICTION)
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  acceleration: float = 2.0, braking: float = 2.0, margin: float = 0.1, horizon: float = 3.0,
@@ -60,15 +63,14 @@ class DynamicWindow(Controller):
                  n_steering: int = 15, n_speeds: int = 5, memory: int = 10, tracks: bool = False,
                  prediction: float = 3.0):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.acceleration, self.braking = positive(acceleration, field="acceleration"), positive(braking, field="braking")
-        self.margin, self.horizon = float(margin), positive(horizon, field="horizon")
-        self.lookahead = positive(lookahead, field="lookahead")
+        self.acceleration, self.braking = float(acceleration), float(braking)
+        self.margin, self.horizon, self.lookahead = float(margin), float(horizon), float(lookahead)
         self.weights = np.array([float(heading), float(clearance), float(velocity)])
         self.steering = np.linspace(-max_steering, max_steering, int(n_steering))
         self.n_speeds = int(n_speeds)
         self.map = TrackedMap(memory) if tracks else LocalMap(memory)
         self.sensors = named_ring("lidar") if tracks else None  # None: the thesis' seven rays
-        self.prediction = positive(prediction, field="prediction")
+        self.prediction = float(prediction)
 
     def reset(self, rng=None) -> None:
         self.map.reset()

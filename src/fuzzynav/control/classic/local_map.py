@@ -23,7 +23,7 @@ from fuzzynav.control.sighting_tracks import JOIN, MARGIN, ScanTracker
 from fuzzynav.kernels import guard
 from fuzzynav.kernels.records import Pose, Reading
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-from fuzzynav.validation import positive
+from fuzzynav.settings import BODY, within
 
 
 @dataclass(frozen=True)
@@ -37,8 +37,8 @@ class Body:
     max_speed: float = 2.0
 
     def __post_init__(self):
-        for name in ("radius", "wheelbase", "max_steering", "max_speed"):
-            positive(getattr(self, name), field=name)
+        for name, bounds in BODY.items():
+            within(getattr(self, name), name, bounds)
 
     @property
     def turn_radius(self) -> float:

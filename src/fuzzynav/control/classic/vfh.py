@@ -41,7 +41,7 @@ from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap
 from fuzzynav.control.sighting_tracks import tracked_variant
 from fuzzynav.robot.sensors import named_ring
-from fuzzynav.validation import positive
+from fuzzynav.settings import BODY, LENGTH, MEMORY, PREDICTION, RATE, ROOM, WEIGHT, Range, checked
 
 
 class VectorFieldHistogram(Controller):
@@ -52,22 +52,22 @@ class VectorFieldHistogram(Controller):
 
     name = "vfh"
 
+    @checked(**BODY, sector=Range(0.1, 180.0), window=LENGTH, safety=ROOM, lookahead=LENGTH, tau_low=WEIGHT, tau_high=WEIGHT,
+             s_max=Range(1, 3600), h_m=RATE, memory=MEMORY, prediction=PREDICTION, prediction_step=Range(0.01, 60.0))
     def __init__(self, *, radius: float = Body.radius, wheelbase: float = Body.wheelbase,
                  max_steering: float = Body.max_steering, max_speed: float = Body.max_speed,
                  sector: float = 5.0, window: float = 3.0, safety: float = 0.15, lookahead: float = 1.0,
                  tau_low: float = 0.4, tau_high: float = 0.8, s_max: int = 16, h_m: float = 3.0, memory: int = 10,
                  tracks: bool = False, prediction: float = 1.5, prediction_step: float = 0.25):
         self.body = Body(radius, wheelbase, max_steering, max_speed)
-        self.n = int(round(360.0 / positive(sector, field="sector")))
+        self.n = int(round(360.0 / sector))
         self.width = 2 * math.pi / self.n
-        self.window, self.safety = positive(window, field="window"), float(safety)
-        self.lookahead, self.h_m = positive(lookahead, field="lookahead"), positive(h_m, field="h_m")
+        self.window, self.safety, self.lookahead, self.h_m = float(window), float(safety), float(lookahead), float(h_m)
         self.tau_low, self.tau_high, self.s_max = float(tau_low), float(tau_high), int(s_max)
         self.directions = np.angle(np.exp(1j * np.arange(self.n) * self.width))  # sector k ↦ k·width, wrapped
         self.map = TrackedMap(memory) if tracks else LocalMap(memory)
         self.sensors = named_ring("lidar") if tracks else None  # None: the thesis' seven rays
-        self.ahead = np.arange(0.0, positive(prediction, field="prediction") + 1e-9,
-                               positive(prediction_step, field="prediction_step"))
+        self.ahead = np.arange(0.0, prediction + 1e-9, prediction_step)
         self.reset()
 
     def reset(self, rng=None) -> None:

@@ -185,12 +185,12 @@ def default_document(kind: str, seed: int = 0) -> dict:
 
 def neural_tracker(seed: int = 0, **options) -> ModelTracker:
     """Factory of ``neural-tracker``: the default MLP trained on the fly (options: ``speed``, ``corner_radius``, ``lookahead``)."""
-    return load_neural_tracker(default_document("neural-tracker", seed), **options)
+    return load_neural_tracker(default_document("neural-tracker", validation.seed(seed, field="seed")), **options)
 
 
 def anfis_tracker(seed: int = 0, **options) -> ModelTracker:
     """Factory of ``anfis-tracker``: the default ANFIS trained on the fly."""
-    return load_anfis_tracker(default_document("anfis-tracker", seed), **options)
+    return load_anfis_tracker(default_document("anfis-tracker", validation.seed(seed, field="seed")), **options)
 
 
 def _train(kind: str, request) -> dict:
