@@ -57,7 +57,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import fields, replace
-from typing import Any
 
 from fuzzynav import validation
 from fuzzynav.control.robust import BARRIER, RobustNavigator
@@ -65,7 +64,7 @@ from fuzzynav.control.yield_layer import YieldLayer
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.kernels.layers import Guidance, Pace
-from fuzzynav.settings import ROOM, SHARE, checked
+from fuzzynav.settings import ROOM, SHARE, STEERING, Range, checked, within
 
 # the route guidance and its car route (units and meaning: kernels.layers.Guidance); the car's
 # steering values span Fig IV.7's largest singleton
@@ -83,39 +82,37 @@ GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance
 PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
 
 
-# the bounds of the settings the kernels' reasoning needs (any other must be a finite number): the
-# sizes, lengths and periods they divide by or step with are > 0 (lo_open), the rooms, costs and
-# angles >= 0 (the car route's wavefront is exact only for a clearance weight >= 0), the steering
-# of the arcs below a right angle; the counts are whole numbers (:data:`WHOLE`)
+# the ranges of the settings the kernels' reasoning needs (:mod:`fuzzynav.settings`; any other
+# must be a finite number): the sizes, lengths and periods they divide by or step with are > 0, the
+# rooms, costs and angles >= 0 (the car route's wavefront is exact only for a clearance weight >= 0),
+# the steering of the arcs below a right angle; the counts are whole numbers (:data:`WHOLE`)
 MAX = validation.MAX_MAGNITUDE
-BOUNDS: dict[str, dict[str, Any]] = {
-    **{name: {"lo": 0.0, "lo_open": True} for name in (
-        "guide_cell", "guide_car_step", "guide_car_node", "guide_car_cell", "guide_car_reach", "guide_car_speed",
-        "pace_horizon", "pace_goal")},
-    **{name: {"lo": 0.0} for name in (
+ANY, ABOVE_0, AT_LEAST_0 = Range(-MAX, MAX), Range(0.0, MAX, lo_open=True), Range(0.0, MAX)
+BOUNDS: dict[str, Range] = {
+    **dict.fromkeys(("guide_cell", "guide_car_step", "guide_car_node", "guide_car_cell", "guide_car_reach",
+                     "guide_car_speed", "pace_horizon", "pace_goal"), ABOVE_0),
+    **dict.fromkeys((
         "guide_ahead", "guide_replan", "guide_direct", "guide_room", "guide_narrow", "guide_bare", "guide_car_room",
         "guide_car_weight", "guide_car_comfort", "guide_car_turn", "guide_car_switch", "guide_car_reverse",
         "guide_car_gear", "guide_car_ahead", "guide_car_tight", "guide_car_reuse", "guide_car_keep",
-        "guide_car_stray", "guide_car_swerve", "pace_room")},
-    "guide_off_heading": {"lo": 0.0, "hi": math.pi},
-    "guide_car_steering": {"lo": 0.0, "hi": math.pi / 2, "lo_open": True, "hi_open": True},
+        "guide_car_stray", "guide_car_swerve", "pace_room"), AT_LEAST_0),
+    "guide_off_heading": Range(0.0, math.pi),
+    "guide_car_steering": STEERING,
 }
 # the counts: heading bins of a search node, steering values of its arcs (both ends at least),
 # nodes before it gives up (each costs about 100 bytes), expanded nodes between analytic expansions
-WHOLE = {"guide_car_headings": (1, 3600), "guide_car_steerings": (2, 101), "guide_car_budget": (1, 10_000_000),
-         "guide_car_shot": (0, 10**9)}
+# (whole numbers, as floats too: the kernels' records hold them as floats)
+WHOLE = {"guide_car_headings": Range(1, 3600), "guide_car_steerings": Range(2, 101),
+         "guide_car_budget": Range(1, 10_000_000), "guide_car_shot": Range(0, 10**9)}
 
 
 def _setting(name: str, value, field: str) -> float:
     """``value`` of the setting ``name`` checked against :data:`BOUNDS` and :data:`WHOLE`."""
     where = f"{field}.{name}"
-    if name in WHOLE:
-        low, high = WHOLE[name]
-        number = validation.number(value, "fuzzy-5b options", where, lo=low, hi=high)
-        if not number.is_integer():
-            validation.fail(f"must be a whole number, got {validation.shown(value)}", "fuzzy-5b options", where)
-        return number
-    return validation.number(value, "fuzzy-5b options", where, **{"lo": -MAX, "hi": MAX, **BOUNDS.get(name, {})})
+    number = within(value, where, WHOLE.get(name) or BOUNDS.get(name, ANY))
+    if name in WHOLE and not number.is_integer():
+        validation.fail(f"must be a whole number, got {validation.shown(value)}", field=where)
+    return number
 
 
 def _replaced(record, values: dict | None, field: str):
