@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import tempfile
 import time
 from pathlib import Path
@@ -64,8 +65,19 @@ def atomic_write(path, write) -> None:
 
     The file gets the usual permissions (0666 less the umask, not mkstemp's 0600); a path that
     cannot be written (missing permission, a directory, ...) is an :class:`InputError` naming it.
+    A symbolic link is kept: the file it points to is written. A path that is not a file to
+    replace — a device, a pipe (``/dev/null``, ``/dev/stdout``) — is written in place, as a shell's
+    ``>`` would, never replaced by a file.
     """
     path = Path(path)
+    if _is_stream(path):
+        try:
+            with open(path, "wb") as handle:
+                write(handle)
+        except OSError as error:
+            raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
+        return
+    path = Path(os.path.realpath(path)) if path.is_symlink() else path
     tmp = None
     started = time.time()
     try:
@@ -88,6 +100,17 @@ def atomic_write(path, write) -> None:
             raise InputError(f"cannot write ({error.strerror or error})", source=str(path)) from None
         raise
     remove_stale_temporaries(path, older_than=started - 1.0)
+
+
+def _is_stream(path: Path) -> bool:
+    """Whether ``path`` (links followed) exists and is neither a regular file nor a folder, or is
+    a name in the system's ``/dev`` or ``/proc`` (``/dev/stdout`` redirected to a file is a link
+    to that file; replacing it would leave the shell writing to a file no longer there)."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):  # missing, a dangling link, a name the system refuses
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode)) or path.parts[:2] in (("/", "dev"), ("/", "proc"))
 
 
 def file_name_part(text: str) -> str:

@@ -16,6 +16,8 @@ import io
 import json
 import math
 import operator
+import os
+import stat
 import warnings
 import zipfile
 from pathlib import Path
@@ -242,6 +244,8 @@ def read_bytes(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> bytes:
         if hasattr(path, "read"):
             data = path.read(max_bytes + 1)
         else:
+            if stat.S_ISFIFO(os.stat(path).st_mode) or stat.S_ISSOCK(os.stat(path).st_mode):
+                fail("is a named pipe or a socket, not a file (reading it could wait for ever)", source)
             with open(path, "rb") as handle:
                 data = handle.read(max_bytes + 1)
     except OSError as error:

@@ -93,7 +93,12 @@ def figure_path(text: str) -> str:
     """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG)."""
     from matplotlib.backend_bases import FigureCanvasBase
 
-    if Path(text).is_dir():
+    try:
+        folder = Path(text).is_dir()
+    except OSError as error:  # a name too long for the file system, ...
+        raise argparse.ArgumentTypeError(
+            f"{validation.shown(text)}: not a usable file name ({error.strerror or error})") from None
+    if folder:
         raise argparse.ArgumentTypeError(f"{text!r} is a folder; give the figure's file name")
     suffix = text.rpartition(".")[2].lower() if "." in text.rpartition("/")[2] else ""
     supported = FigureCanvasBase.get_supported_filetypes()
