@@ -19,6 +19,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.learn.tasks.common import TrainRequest
 
 PRIORS = ("none", "thesis")
+MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)
 PARALLEL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall")
 from fuzzynav.storage import document_format
 
@@ -42,9 +43,9 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
                         help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
     parser.add_argument("--curve", type=arguments.figure_path, help="write the learning curve plot (PNG; any "
                         "suffix matplotlib writes, checked before training)")
-    parser.add_argument("--parallel", type=arguments.count(validation.MAX_ROBOTS), metavar="N",
+    parser.add_argument("--parallel", type=arguments.count(MAX_PARALLEL), metavar="N",
                         help="reinforcement learning: N robots per batch sharing one rule base, 1 to "
-                             f"{validation.MAX_ROBOTS:,} (default: the thesis' one robot, episodes one by one)")
+                             f"{MAX_PARALLEL:,} (default: the thesis' one robot, episodes one by one)")
     parser.add_argument("--prior", choices=PRIORS,
                         help="fql-avoid: initial table, none (q = 0, best-quality extraction; default) or thesis")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -57,7 +58,7 @@ def run(args) -> int:
         if value is not None:
             validation.integer(value, field=flag, lo=1, hi=validation.MAX_EPISODES)
     if args.parallel is not None:
-        validation.integer(args.parallel, field="--parallel", lo=1, hi=1000)
+        validation.integer(args.parallel, field="--parallel", lo=1, hi=MAX_PARALLEL)
         if args.task not in PARALLEL_TASKS:
             raise InputError(f"only for {', '.join(PARALLEL_TASKS)}, not {args.task}", field="--parallel")
     if args.prior is not None and args.task != "fql-avoid":
