@@ -18,8 +18,10 @@ import json
 from datetime import UTC, datetime
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.experiments.claims import REPRODUCED
+from fuzzynav.errors import InputError
+from fuzzynav.experiments.claims import REPRODUCED, SOURCES
 from fuzzynav.storage import write_text_atomic
 
 RUN_FILE, CLAIM_FILE = "run.json", "claim.json"
@@ -76,15 +78,62 @@ def _checks_table(checks: list[dict], source: str) -> str:
             f"{body}</table>")
 
 
-def _section(out_dir: Path, key: str, record: dict, description: str) -> str:
+def _flag(value, source, field) -> bool:
+    """``value``, a JSON boolean."""
+    if not isinstance(value, bool):
+        validation.fail(f"must be true or false, got {validation.shown(value)}", source, field)
+    return value
+
+
+def _read_json(path: Path, source: str):
+    """The JSON document of the file ``path``, bounded; errors name it ``source``."""
+    return validation.parse_json(validation.read_text(path, source=source), source)
+
+
+def _read_record(out_dir: Path, key: str) -> tuple[dict, dict, str]:
+    """The run record, the claim and the numbers' text of experiment ``key``, checked to be what
+    :func:`record_run` writes (the fields the page shows); otherwise an InputError naming the file
+    (relative to ``out_dir``, where the page is)."""
     folder = experiment_dir(out_dir, key)
-    claim = json.loads((folder / CLAIM_FILE).read_text(encoding="utf-8"))
+    source = f"{key}/{RUN_FILE}"
+    record = validation.mapping(_read_json(folder / RUN_FILE, source), source)
+    for field in ("verdict", "seconds", "quick", "seed", "finished"):
+        if field not in record:
+            validation.fail("missing", source, field)
+    validation.choice(record["verdict"], list(VERDICT_CLASS), source, "verdict")
+    validation.number(record["seconds"], source, "seconds", lo=0)
+    _flag(record["quick"], source, "quick")
+    validation.seed(record["seed"], source, "seed")
+    validation.text(record["finished"], source, "finished")
+    source = f"{key}/{CLAIM_FILE}"
+    claim = validation.mapping(_read_json(folder / CLAIM_FILE, source), source)
+    for field in ("verdict", "reference", "thesis", "asserted", "checks"):
+        if field not in claim:
+            validation.fail("missing", source, field)
+    validation.choice(claim["verdict"], list(VERDICT_CLASS), source, "verdict")
+    for field in ("reference", "thesis", "asserted"):
+        validation.text(claim[field], source, field)
+    for i, check in enumerate(validation.sequence(claim["checks"], source, "checks")):
+        where = f"checks[{i}]"
+        validation.mapping(check, source, where)
+        for field in ("name", "value", "target", "pass", "source"):
+            if field not in check:
+                validation.fail("missing", source, f"{where}.{field}")
+        validation.text(check["name"], source, f"{where}.name")
+        validation.text(check["target"], source, f"{where}.target")
+        _flag(check["pass"], source, f"{where}.pass")
+        validation.choice(check["source"], SOURCES, source, f"{where}.source")
+    numbers = validation.read_text(folder / f"{key}.json", max_bytes=validation.MAX_MODEL_BYTES,
+                                   source=f"{key}/{key}.json")
+    return record, claim, numbers
+
+
+def _section(key: str, record: dict, claim: dict, numbers: str, description: str, folder: Path) -> str:
     verdict = claim["verdict"]
     status = f'<span class="{VERDICT_CLASS[verdict]}">{html.escape(verdict)}</span>'
     setting = "quick run (short budgets)" if record["quick"] else "full run"
     images = "".join(f'<img src="{html.escape(f"{key}/{image.name}")}" alt="{html.escape(key)}: our figure">'
                      for image in sorted(folder.glob("*.png")))
-    numbers = (folder / f"{key}.json").read_text()
     e = html.escape
     return f"""<section id="{e(key)}">
 <h2>{e(key)} — {e(description)}</h2>
@@ -100,21 +149,51 @@ def _section(out_dir: Path, key: str, record: dict, description: str) -> str:
 </section>"""
 
 
+def _row(key: str, record: dict | None) -> str:
+    """The summary table's row of ``key`` (``record`` None: an unreadable record)."""
+    e = html.escape
+    if record is None:
+        return f'<tr><td><a href="#{e(key)}">{e(key)}</a></td><td class="fail">unreadable</td><td></td><td></td></tr>'
+    return (f'<tr><td><a href="#{e(key)}">{e(key)}</a></td>'
+            f'<td class="{VERDICT_CLASS[record["verdict"]]}">{e(record["verdict"])}</td>'
+            f'<td>{record["seconds"]:.1f} s</td><td>{"quick" if record["quick"] else "full"}</td></tr>')
+
+
+def _unreadable_section(key: str, error: InputError, description: str) -> str:
+    e = html.escape
+    return f"""<section id="{e(key)}">
+<h2>{e(key)} — {e(description)}</h2>
+<p><span class="fail">unreadable record</span>: {e(str(error))} (run <code>fuzzynav reproduce {e(key)}</code>
+again to replace it)</p>
+</section>"""
+
+
 def write_index(out_dir: Path) -> Path:
-    """Write ``out_dir/index.html`` over every experiment recorded in ``out_dir``; returns its path."""
+    """Write ``out_dir/index.html`` over every experiment recorded in ``out_dir``; returns its path.
+
+    An experiment whose ``run.json``, ``claim.json`` or numbers cannot be read or are not what
+    :func:`record_run` writes (a run cut short, a file edited by hand) is listed as unreadable,
+    with the file and the problem, instead of stopping the page."""
     out_dir = Path(out_dir)
     listing = registry.available()
-    records = {}
+    records: dict[str, tuple[dict, dict, str]] = {}
+    unreadable: dict[str, InputError] = {}
     for key in listing:
         folder = experiment_dir(out_dir, key)
         if (folder / RUN_FILE).is_file() and (folder / CLAIM_FILE).is_file():
-            records[key] = json.loads((folder / RUN_FILE).read_text())
-    held = sum(r["verdict"] == REPRODUCED for r in records.values())
-    rows = "".join(f'<tr><td><a href="#{html.escape(k)}">{html.escape(k)}</a></td>'
-                   f'<td class="{VERDICT_CLASS[r["verdict"]]}">{html.escape(r["verdict"])}</td>'
-                   f'<td>{r["seconds"]:.1f} s</td><td>{"quick" if r["quick"] else "full"}</td></tr>'
-                   for k, r in records.items())
-    sections = "\n".join(_section(out_dir, key, record, listing[key]) for key, record in records.items())
+            try:
+                records[key] = _read_record(out_dir, key)
+            except InputError as error:
+                unreadable[key] = error
+    held = sum(r["verdict"] == REPRODUCED for r, _, _ in records.values())
+    rows = "".join(_row(key, records[key][0] if key in records else None) for key in listing
+                   if key in records or key in unreadable)
+    sections = "\n".join(
+        _section(key, *records[key], listing[key], experiment_dir(out_dir, key)) if key in records else
+        _unreadable_section(key, unreadable[key], listing[key])
+        for key in listing if key in records or key in unreadable)
+    found = f"{len(records) + len(unreadable)} of {len(listing)} experiments in this folder" + (
+        f" ({len(unreadable)} unreadable)" if unreadable else "")
     page = f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>fuzzynav — reproduction of the thesis</title>
 <style>{STYLE}</style></head><body>
@@ -123,8 +202,8 @@ def write_index(out_dir: Path) -> Path:
 Université de Biskra, 2014). Each section puts the thesis' claim (translated) beside the figure and the numbers
 of this run, checks the claim on those numbers and gives the verdict: reproduced (every check passes), partly or
 not reproduced. Checks of this package's own targets (numbers the thesis does not give) are listed apart.
-{len(records)} of {len(listing)} experiments in this folder; reproduced: {held} of {len(records)}; total run time
-{sum(r["seconds"] for r in records.values()):.0f} s.</p>
+{found}; reproduced: {held} of {len(records)}; total run time
+{sum(r["seconds"] for r, _, _ in records.values()):.0f} s.</p>
 <table><tr><th>experiment</th><th>verdict</th><th>run time</th><th>setting</th></tr>{rows}</table>
 {sections}
 </body></html>
