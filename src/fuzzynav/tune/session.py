@@ -30,7 +30,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.tune.fitness import OBJECTIVES, Fitness
+from fuzzynav.tune.fitness import INVALID_COST, OBJECTIVES, Fitness
 from fuzzynav.tune.optimisers import METHODS
 from fuzzynav.tune.space import WHAT
 
@@ -159,9 +159,24 @@ def checkpoint_path(request: TuneRequest) -> Path | None:
     return None if request.out is None else Path(f"{request.out}.tune.npz")
 
 
-def _load_checkpoint(path: Path, request: TuneRequest, dimension: int) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The stored generations [(population, values)], after checking the options match and the
-    arrays fit together (``dimension``: the searched parameters, the columns of a population)."""
+def _load_checkpoint(path: Path, request: TuneRequest, fitness: Fitness) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The stored generations [(population, values)], after checking the options match, the
+    arrays fit together (a population has a column per searched parameter of ``fitness``'s space)
+    and the objective values ``f`` are possible ones (:func:`_check_values`).
+
+    A resumed run does not simulate the stored generations again (that would cost the whole run
+    once more): it takes their values ``f`` as stored. It detects damage and another tuning's
+    options; populations ``x`` that are not finite or that the optimiser does not ask again when
+    replayed (a stored population edited, or a value of ``f`` of an earlier generation edited so
+    that the optimiser asked something else next); and a value of ``f`` that no simulation on these
+    worlds gives: NaN or infinite, or outside its objective's range — the cost in [0,
+    ``INVALID_COST``] (the worst episode's), the failure rate a multiple of 1/W in [0, 1] (W
+    training worlds), the mean time (s) in [0, the longest time limit + one step], minus the mean
+    least clearance (m) in [−the largest world diagonal, 1] (clearances are clipped at −1 m). It
+    does not detect a false value inside those ranges that leaves the replay unchanged — in the
+    last stored generation, or one that does not change the optimiser's next population: such a
+    value can make a worse candidate the result, steer the search, or (``nsga2``) show in the front
+    with the stored objectives. A checkpoint is trusted as the run's own; its file is not signed."""
     validation.check_npz(path)
     with np.load(path, allow_pickle=False) as data:
         try:
@@ -170,7 +185,7 @@ def _load_checkpoint(path: Path, request: TuneRequest, dimension: int) -> list[t
         except (KeyError, ValueError) as error:
             raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
     validation.mapping(options, str(path), "options")
-    for name, array, columns in (("x", x, dimension), ("f", f, 1 + len(OBJECTIVES))):
+    for name, array, columns in (("x", x, len(fitness.space.start)), ("f", f, 1 + len(OBJECTIVES))):
         if array.ndim != 2 or array.shape[1] != columns or array.dtype.kind != "f":
             raise InputError(f"must be a float array of {columns} columns, got {array.dtype} of shape {array.shape}",
                              source=str(path), field=name)
@@ -182,8 +197,31 @@ def _load_checkpoint(path: Path, request: TuneRequest, dimension: int) -> list[t
         if options.get(key) != value:
             raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
                              source=str(path), field=key)
+    if not np.isfinite(x).all():
+        raise InputError("the populations must be finite numbers (no NaN or infinity)", source=str(path), field="x")
+    _check_values(path, f, fitness)
     ends = np.cumsum(sizes)
     return [(x[end - size:end], f[end - size:end]) for size, end in zip(sizes, ends)]
+
+
+def _check_values(path: Path, f: np.ndarray, fitness: Fitness) -> None:
+    """Refuse objective values ``f`` (rows of :meth:`Fitness.objectives`) that ``fitness``'s worlds
+    cannot give (:func:`_load_checkpoint`)."""
+    worlds = fitness.worlds
+    extent = max(math.hypot(s.world.width, s.world.height) for s in worlds.scenarios)
+    ranges = ((0.0, INVALID_COST), (0.0, 1.0), (0.0, float(np.max(worlds.max_time + worlds.dt))), (-extent, 1.0))
+    names = ("cost", "failure rate", "mean time (s)", "minus mean least clearance (m)")  # Fitness.objectives
+    for column, ((lo, hi), name) in enumerate(zip(ranges, names)):
+        values = f[:, column]
+        bad = ~np.isfinite(values) | (values < lo) | (values > hi)
+        if column == 1:  # a failure rate is k of the W worlds
+            bad |= np.abs(values * len(worlds) - np.round(values * len(worlds))) > 1e-6
+        if bad.any():
+            row = int(np.argmax(bad))
+            what = "be finite" if not np.isfinite(values[row]) else f"lie in [{lo:g}, {hi:g}]" + (
+                f" and be a multiple of 1/{len(worlds)} (the worlds)" if column == 1 else "")
+            raise InputError(f"the {name} of candidate {row} must {what}, got {validation.shown(float(values[row]))}",
+                             source=str(path), field=f"f[{row}, {column}]")
 
 
 def _save_checkpoint(path: Path, request: TuneRequest, generations) -> None:
@@ -212,9 +250,9 @@ def tune(request: TuneRequest) -> dict:
     space = SearchSpace(system, request.what)
     path = checkpoint_path(request)
     resumed = request.resume and path is not None and path.is_file()
-    stored = _load_checkpoint(path, request, len(space.start)) if resumed else []
     fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)],
                       wall=not spec_of(request.controller).goal_directed)
+    stored = _load_checkpoint(path, request, fitness) if resumed else []
     optimiser = make_optimiser(request.method, space, request.population, request.seed,
                                n_obj=len(_columns(request)))
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
