@@ -17,24 +17,45 @@ from fuzzynav.errors import InputError
 from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.scenario import Scenario, load_scenario
 
+MAX_CONTROLLER_NAME = 100  # characters of a controller name (as load_scenario reads them)
 
-def scenario_yaml(scenario: Scenario, controllers: tuple[str, ...] = ()) -> str:
-    """The scenario-file text of ``scenario`` (one line per obstacle), naming ``controllers`` if given."""
+
+def controller_names(controllers) -> tuple[str, ...]:
+    """``controllers`` checked: one name (a string) or a list / tuple of names, each a non-empty
+    string of at most :data:`MAX_CONTROLLER_NAME` characters (whether a controller of that name is
+    registered is checked when it is run, as for a scenario file's own ``controllers``)."""
+    if controllers is None:
+        return ()
+    if isinstance(controllers, str):
+        controllers = [controllers]
+    names = validation.sequence(controllers, field="controllers")
+    for i, name in enumerate(names):
+        validation.text(name, field=f"controllers[{i}]", max_length=MAX_CONTROLLER_NAME, allow_empty=False)
+    return tuple(names)
+
+
+def scenario_yaml(scenario: Scenario, controllers: tuple[str, ...] | str = ()) -> str:
+    """The scenario-file text of ``scenario`` (one line per obstacle), naming ``controllers`` if
+    given (:func:`controller_names`: they replace the scenario's own), else the scenario's own."""
+    names = controller_names(controllers)
     document = scenario.to_dict()
-    if controllers:
-        document = {"name": document.pop("name"), "controllers": list(controllers), **document}
+    if names:
+        document.pop("controllers", None)
+        document = {"name": document.pop("name"), "controllers": list(names), **document}
     obstacles = document.pop("obstacles")
     text = yaml.safe_dump(document, sort_keys=False, default_flow_style=None, width=100, allow_unicode=True)
     lines = [f"  - {yaml.safe_dump(shape, sort_keys=False, default_flow_style=True, width=1000).strip()}" for shape in obstacles]
     return text + "obstacles:" + ("\n" + "\n".join(lines) if lines else " []") + "\n"
 
 
-def save_scenario(scenario: Scenario, path, controllers: tuple[str, ...] = ()) -> Path:
-    """Write ``scenario`` as a YAML scenario file at ``path`` (atomically); returns the path."""
+def save_scenario(scenario: Scenario, path, controllers: tuple[str, ...] | str = ()) -> Path:
+    """Write ``scenario`` as a YAML scenario file at ``path`` (atomically), naming ``controllers``
+    if given, else the scenario's own (:func:`scenario_yaml`); returns the path."""
     if not isinstance(scenario, Scenario):
         raise InputError(f"must be a Scenario, got {type(scenario).__name__}", field="scenario")
     path = validation.file_path(path, field="path")
-    write_text_atomic(path, scenario_yaml(scenario, controllers))
+    text = scenario_yaml(scenario, controllers)  # checked before anything is written
+    write_text_atomic(path, text)
     return path
 
 
