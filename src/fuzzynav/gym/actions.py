@@ -46,10 +46,11 @@ def check_actions(actions, space, n: int, used=None, *, single: bool) -> np.ndar
         if array.shape != shape or array.dtype.kind not in "iu":
             raise InputError(f"must be an integer {'index' if single else f'array of shape {shape}'} of "
                              f"Discrete({space.n}), got {_shown(actions, array)}", field=field)
-        indices = array.reshape(n).astype(np.int64)
+        given = array.reshape(n)
+        indices = given.astype(np.int64)  # a uint64 above 2**63 - 1 wraps to a negative index: refused below
         bad = used & ((indices < space.start) | (indices >= space.start + space.n))
         if bad.any():
-            raise InputError(f"must be in [{space.start}, {space.start + space.n - 1}], got {int(indices[bad][0])}",
+            raise InputError(f"must be in [{space.start}, {space.start + space.n - 1}], got {int(given[bad][0])}",
                              field=_row(field, bad, single))
         return indices - space.start
     shape = space.shape if single else (n, *space.shape)

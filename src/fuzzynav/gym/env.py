@@ -45,6 +45,7 @@ class FuzzynavEnv(gymnasium.Env):
         self.render_mode = render_mode
         self._renderer = None
         self._live = np.ones(1, dtype=bool)
+        self._started = False  # no episode before the first reset()
 
     @property
     def scenario(self):
@@ -57,11 +58,16 @@ class FuzzynavEnv(gymnasium.Env):
         scenario = validation.known_keys({} if options is None else options, ("scenario",), field="options").get("scenario")
         self.episodes.start([0], [self.np_random], None if scenario is None else [scenario])
         self._live[0] = True
+        self._started = True
         if self.render_mode == "human":
             self.render()
         return self.episodes.observe()[0], {}
 
     def step(self, action):
+        """One action (checked, :mod:`fuzzynav.gym.actions`); a RuntimeError before :meth:`reset`
+        or after the episode has ended."""
+        if not self._started:
+            raise RuntimeError("call reset() before step()")
         if not self._live[0]:
             raise RuntimeError("the episode has ended: call reset()")
         rewards, terminated, truncated, info = self.episodes.step(action, self._live, single=True)
@@ -73,9 +79,12 @@ class FuzzynavEnv(gymnasium.Env):
                  "collision": bool(info["collision"][0])})
 
     def render(self):
+        """The frame of the current episode (``render_mode``); a RuntimeError before :meth:`reset`."""
         if self.render_mode is None:
             gymnasium.logger.warn("render() without a render_mode: pass render_mode='rgb_array' or 'human'")
             return None
+        if not self._started:
+            raise RuntimeError("call reset() before render()")
         from fuzzynav.gym.render import Renderer
 
         if self._renderer is None:
