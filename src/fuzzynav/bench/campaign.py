@@ -33,7 +33,7 @@ from pathlib import Path
 from fuzzynav import validation
 from fuzzynav.bench import stored
 from fuzzynav.bench.backends import execute
-from fuzzynav.bench.cells import Cell
+from fuzzynav.bench.cells import Cell, is_model_file
 from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
@@ -175,9 +175,35 @@ def _check_plant(out: Path, plant: str, resuming: bool) -> None:
     write_text_atomic(path, json.dumps({"plant": plant}) + "\n")
 
 
+def check_tasks(plan: Plan) -> None:
+    """Refuse, before anything runs, a world whose task a controller of ``plan`` cannot do: a
+    campaign runs goal tasks (every generated world is one), and a scenario file of a folder
+    suite says its own task. The :class:`InputError` names the first such file and controller
+    (:func:`fuzzynav.catalog.controllers.check_task`'s message)."""
+    from fuzzynav.catalog.controllers import check_task
+
+    for suite in plan.suites:
+        worlds = [(suite.name, "goal")] if suite.family is not None else \
+            [(file, suite.scenario(index, 0).task) for index, file in enumerate(suite.files)]
+        for source, task in worlds:
+            for label, spec in plan.controllers:
+                try:
+                    if not is_model_file(spec):
+                        check_task(spec, task, field="--controllers")
+                    elif task != "goal":
+                        raise InputError(f"model file {label} cannot do a {task} task (a campaign runs model "
+                                         "files on goal tasks)")
+                except InputError as error:
+                    note = "" if task == "goal" else ("; but a campaign runs goal tasks only: leave this file out of "
+                                                      "the folder (`fuzzynav run FILE --controller NAME` runs it)")
+                    raise InputError(error.problem + note, source=source, field="--controllers") from None
+
+
 def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = "local", workers: int = 1,
                  address: str | None = None, progress: bool = True) -> list[dict]:
-    """Run ``plan`` into ``out`` (module docstring); returns every row in the final order."""
+    """Run ``plan`` into ``out`` (module docstring); returns every row in the final order. A world
+    of a task one of its controllers cannot do is refused first (:func:`check_tasks`)."""
+    check_tasks(plan)
     with campaign_lock(out):
         return _run(plan, out, resume, backend, workers, address, progress)
 

@@ -10,6 +10,7 @@ import copy
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.bench.measures import run_row, shortest_length
 from fuzzynav.bench.suites import Suite
 from fuzzynav.catalog.roles import ROLES, load_replacement, make_with_systems
@@ -61,7 +62,8 @@ class controller_maker:  # noqa: N801 (a factory of controllers, called like a f
     ``controller`` (its roles' rule bases replaced by ``systems``, its factory given ``options``),
     or the controller stored in ``model`` (loaded once; each call a copy of it, so no episode
     inherits another's state; refused unless its kind drives goal tasks, as every evaluation and
-    campaign world is one). Exactly one of the two; ``name`` is the controller's."""
+    campaign world is one; so is a registered controller that cannot do them,
+    :func:`~fuzzynav.catalog.controllers.check_task`). Exactly one of the two; ``name`` is the controller's."""
 
     def __init__(self, controller: str | None = None, *, model: str | Path | None = None,
                  systems: dict | None = None, options: dict | None = None):
@@ -73,6 +75,9 @@ class controller_maker:  # noqa: N801 (a factory of controllers, called like a f
             self._loaded = load_controller(Path(model), "goal")
             self.name = self._loaded.name
         else:
+            from fuzzynav.catalog.controllers import check_task
+
+            check_task(validation.text(controller, field="controller", max_length=200), "goal", field="controller")
             self._loaded, self.name = None, str(controller)
         self._systems, self._options = systems or {}, options or {}
 

@@ -6,7 +6,8 @@ The demo first compiles the kernels its controllers use (``fuzzynav warmup``; a 
 bar on the first run), then runs every pair, prints a progress line per run, and writes into DIR one trajectory /
 command plot per run (``<scenario>--<controller>.png``) and the metrics table as
 ``metrics.md`` (Markdown) and ``metrics.json``. ``--scenario`` takes built-in names or your own
-scenario files, ``--controllers a,b`` the controllers to run on them (instead of their own list).
+scenario files, ``--controllers a,b`` the controllers to run on them (instead of their own list; each
+on the scenarios whose task it can do, a scenario none of them can do is refused before any run).
 
 The table's columns are the metrics of :func:`fuzzynav.sim.metrics.metrics` shared by every task,
 then each task's own: cross-track error (mean / max) and waypoints reached for paths, capture
@@ -40,14 +41,23 @@ fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
 
 
-def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:
+def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list[tuple[str, str]]:
     """The (scenario, controller) pairs of the built-in scenarios (all, or those named — built-in
-    names or scenario files), with each scenario's own controllers or the ``controllers`` given."""
-    from fuzzynav.catalog.controllers import scenario_controllers
+    names or scenario files), with each scenario's own controllers or the ``controllers`` given.
+
+    Every pair is one whose controller can do the scenario's task, checked before anything runs
+    (:func:`fuzzynav.catalog.controllers.check_task`): a scenario's own controller that cannot is an
+    :class:`InputError` naming the scenario; of the ``controllers`` given, those that cannot are left
+    out of that scenario's runs (each such pair added to ``skipped``: a goal world and a path given
+    with ``--controllers fuzzy-5b,fuzzy-tracker`` run one each), and a scenario none of them can do is
+    an :class:`InputError` naming it."""
+    from fuzzynav.catalog.controllers import check_task, scenario_controllers, spec_of
     from fuzzynav.errors import InputError
     from fuzzynav.world.scenario import list_scenarios
     from fuzzynav.world.scenario_file import open_scenario
 
+    for controller in controllers or ():
+        spec_of(controller)  # an unknown name is refused as such, not as a scenario's
     runs = []
     for name in names or list_scenarios():
         scenario = open_scenario(name)
@@ -55,7 +65,17 @@ def demo_runs(names=None, controllers=None) -> list[tuple[str, str]]:
         if not chosen and names:  # a built-in scenario without controllers is left out of the full demo
             raise InputError(f"scenario {scenario.name!r} names no controllers (no 'controllers' key): "
                              "give them with --controllers, e.g. --controllers fuzzy-5b,fuzzy-2b", field="--controllers")
-        runs.extend((name, controller) for controller in chosen)
+        able = [controller for controller in chosen if scenario.task in spec_of(controller).tasks]
+        for i, controller in enumerate(chosen):
+            field = "--controllers" if controllers else f"controllers[{i}]"
+            if controller not in able and (not controllers or not able):
+                try:
+                    check_task(controller, scenario.task, field=field)
+                except InputError as error:
+                    raise InputError(error.problem, source=name, field=field) from None
+        if skipped is not None:
+            skipped.extend((name, controller) for controller in chosen if controller not in able)
+        runs.extend((name, controller) for controller in able)
     return runs
 
 
@@ -83,7 +103,10 @@ def run(args) -> int:
     from fuzzynav.storage import file_name_part, write_text_atomic
     from fuzzynav.world.scenario_file import open_scenario
 
-    runs = demo_runs(args.scenario, args.controllers)
+    skipped: list[tuple[str, str]] = []
+    runs = demo_runs(args.scenario, args.controllers, skipped)
+    for name, controller_name in skipped:
+        print(f"left out: {controller_name} on {name} (it cannot do that scenario's task)", flush=True)
     for controller_name in dict.fromkeys(name for _, name in runs):
         make_controller(controller_name)  # unknown names fail before any run
     warm_up(list(dict.fromkeys(name for _, name in runs)))
