@@ -29,17 +29,19 @@ def train(task: str, out: str | Path, *, episodes: int | None = None, seed: int 
     """Train the learning controller ``task`` (see :func:`list_training_tasks`) and write its model
     file to ``out``; returns the results (``model`` and what the task measured, e.g.
     ``converged_at`` per phase). ``episodes`` defaults to the task's own budget; ``curve`` writes
-    the learning-curve plot; :func:`fuzzynav.load_controller` reads the model back.
+    the learning-curve plot (a suffix matplotlib writes, checked before training as ``train --curve``
+    is: :func:`fuzzynav.viz.trajectories.figure_file`); :func:`fuzzynav.load_controller` reads the model back.
     """
     from fuzzynav import validation
     from fuzzynav.catalog.tasks import trainer
     from fuzzynav.learn.tasks.common import TrainRequest
+    from fuzzynav.viz.trajectories import figure_file
 
     validation.text(task, field="task", max_length=200)
     if episodes is not None:
         validation.count(episodes, field="episodes", hi=validation.MAX_EPISODES)
     request = TrainRequest(out=validation.file_path(out, field="out"), episodes=episodes,
                            seed=validation.seed(seed, field="seed"), resume=bool(resume),
-                           curve=None if curve is None else validation.file_path(curve, field="curve"),
+                           curve=None if curve is None else figure_file(curve, field="curve"),
                            progress=bool(progress))
     return trainer(task)(request)

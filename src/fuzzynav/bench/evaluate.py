@@ -26,13 +26,13 @@ from pathlib import Path
 
 import numpy as np
 
-from fuzzynav import progress as progress_bars
+from fuzzynav import progress as progress_bars, validation
 from fuzzynav.bench.backends import pool_map
 from fuzzynav.bench.cells import controller_maker
 from fuzzynav.bench.stats import rate
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.sim.plants import DEFAULT_PLANT
+from fuzzynav.sim.plants import DEFAULT_PLANT, check_plant
 from fuzzynav.world.generate import check_family, generate_world
 
 
@@ -71,6 +71,31 @@ def _world(index: int) -> dict:
     return run
 
 
+def _check_arguments(progress, model, systems, save_failures, sensors, options, plant, workers) -> None:
+    """The arguments of :func:`evaluate` that no lower layer checks before the first world: each
+    of its type (an :class:`InputError` naming it, never a ``TypeError`` from a worker)."""
+    if progress is not None and not callable(progress):
+        validation.fail(f"must be a function progress(i, outcome) or None, got {type(progress).__name__} "
+                        f"{validation.shown(progress)}", field="progress")
+    if model is not None:
+        validation.file_path(model, field="model")
+    for name, value in (("systems", systems), ("options", options)):
+        if value is not None:
+            validation.mapping(value, field=name)
+    if save_failures is not None:
+        folder = validation.file_path(save_failures, field="save_failures")
+        try:
+            is_file = folder.is_file()
+        except OSError as error:  # a name too long for the file system, ...
+            validation.fail(f"not a usable folder name ({error.strerror or error})", field="save_failures")
+        if is_file:
+            validation.fail(f"{folder} is a file; give a folder", field="save_failures")
+    if sensors is not None:
+        validation.text(sensors, field="sensors", max_length=200)
+    check_plant(plant)
+    validation.count(workers, field="workers", hi=validation.MAX_WORKERS)
+
+
 def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100, seed: int = 0,
              progress: Callable[[int, dict], None] | None = None, *, model: str | Path | None = None,
              systems: dict | None = None, save_failures: str | Path | None = None, sensors: str | None = None,
@@ -82,12 +107,14 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
     ``progress(i, outcome)`` is called after each world (in the order they finish); ``plant`` moves
     the robot (:mod:`fuzzynav.sim.plants`); ``workers`` processes share the worlds
     (:func:`fuzzynav.bench.backends.pool_map`): every episode is seeded alone, so the result does
-    not depend on ``workers``.
+    not depend on ``workers`` (an integer from 1 to :data:`fuzzynav.validation.MAX_WORKERS`). A
+    controller that cannot do a goal task (every generated world is one) is refused.
 
     A model is loaded once and every episode runs a copy of it, as a registered controller is
     built afresh per world (:class:`~fuzzynav.bench.cells.controller_maker`). A progress bar shows on a terminal
     (:mod:`fuzzynav.progress`).
     """
+    _check_arguments(progress, model, systems, save_failures, sensors, options, plant, workers)
     build = controller_maker(controller, model=model, systems=systems, options=options)
     controller = build.name
     n, seed = check_family(worlds, n, seed)

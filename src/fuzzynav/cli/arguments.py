@@ -9,9 +9,9 @@ from __future__ import annotations
 import argparse
 import re
 from collections.abc import Callable
-from pathlib import Path
 
 from fuzzynav import validation
+from fuzzynav.errors import InputError
 
 
 def plain(text: str) -> str:
@@ -90,26 +90,25 @@ def count(hi: int, lo: int = 1) -> Callable[[str], int]:
 
 
 def figure_path(text: str) -> str:
-    """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG)."""
-    from matplotlib.backend_bases import FigureCanvasBase
+    """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG),
+    checked by :func:`fuzzynav.viz.trajectories.figure_file`, as the Python API checks it."""
+    from fuzzynav.viz.trajectories import figure_file
 
-    try:
-        folder = Path(text).is_dir()
-    except OSError as error:  # a name too long for the file system, ...
-        raise argparse.ArgumentTypeError(
-            f"{validation.shown(text)}: not a usable file name ({error.strerror or error})") from None
-    if folder:
-        raise argparse.ArgumentTypeError(f"{text!r} is a folder; give the figure's file name")
-    suffix = text.rpartition(".")[2].lower() if "." in text.rpartition("/")[2] else ""
-    supported = FigureCanvasBase.get_supported_filetypes()
-    if suffix and suffix not in supported:
-        raise argparse.ArgumentTypeError(f"{text!r}: matplotlib cannot write '.{suffix}' files "
-                                         f"(use one of {', '.join(sorted(supported))})")
-    return text
+    return _file_argument(figure_file, text)
 
 
 def gif_path(text: str) -> str:
-    """``--animate``: the animated GIF to write (Pillow's writer), so the name must end in ``.gif``."""
-    if not text.lower().endswith(".gif"):
-        raise argparse.ArgumentTypeError(f"{text!r}: the animation is written as GIF, give a name ending in .gif")
+    """``--animate``: the animated GIF to write (Pillow's writer), so the name must end in ``.gif``
+    (:func:`fuzzynav.viz.animation.gif_file`)."""
+    from fuzzynav.viz.animation import gif_file
+
+    return _file_argument(gif_file, text)
+
+
+def _file_argument(check, text: str) -> str:
+    """``text`` when ``check(text)`` takes it; its problem as argparse's error otherwise."""
+    try:
+        check(text)
+    except InputError as error:
+        raise argparse.ArgumentTypeError(error.problem) from None
     return text

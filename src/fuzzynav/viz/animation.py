@@ -12,6 +12,8 @@ the time and the active behaviour, and the last one, held for :data:`HOLD_S`, th
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 from matplotlib import patches
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -20,15 +22,19 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from PIL import Image
 
+from fuzzynav import validation
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import atomic_write
 from fuzzynav.viz.moving import MovingArtists
 from fuzzynav.viz.palette import GOAL_COLOUR, RAY_COLOUR, behaviour_style, legend_order
-from fuzzynav.viz.trajectories import draw_world, sensor_segments
+from fuzzynav.viz.trajectories import draw_world, output_file, sensor_segments
 from fuzzynav.world.scenario import Scenario
 
 HOLD_S = 2.5  # seconds the last frame, with the outcome, stays on screen before the GIF loops
+MIN_SIZE, MAX_SIZE = 64, 4000  # pixels of the GIF's width and height (``run --size``)
+MIN_FPS, MAX_FPS = 0.1, 100.0  # frames per second (``run --fps``; GIF frame times are whole 10 ms)
+MAX_PIXELS = 100 * MAX_SIZE**2  # pixels of all the frames together: 100 frames of the largest size, 1.6 GB
 MAX_BEAMS = 60  # beams drawn per frame at most (a lidar's 271 are thinned evenly)
 BODY_COLOUR = "#ffd54f"
 
@@ -47,11 +53,40 @@ def behaviour_legend(ax, trace: Trace) -> None:
               loc="upper center", bbox_to_anchor=(0.5, -0.07), ncols=2, fontsize=6.5, frameon=False)
 
 
+def gif_file(path, field: str = "path") -> Path:
+    """``path`` as the animation to write: a file name, not a folder, ending in ``.gif`` (Pillow's
+    writer); otherwise an InputError on ``field`` naming the path."""
+    path = output_file(path, field, "animation")
+    if not str(path).lower().endswith(".gif"):
+        validation.fail(f"{str(path)!r}: the animation is written as GIF, give a name ending in .gif", field=field)
+    return path
+
+
+def check_options(trace: Trace, path, fps, max_frames, size) -> tuple[Path, float, int, int]:
+    """The GIF file ``path`` (its name ending in ``.gif``, as ``run --animate`` wants:
+    :func:`fuzzynav.cli.arguments.gif_path`), ``fps`` in [:data:`MIN_FPS`, :data:`MAX_FPS`],
+    ``size`` an integer in [:data:`MIN_SIZE`, :data:`MAX_SIZE`] (``run --fps``, ``--size``) and
+    ``max_frames`` an integer >= 1 whose frames of ``trace`` hold at most :data:`MAX_PIXELS`, returned
+    as ``(path, fps, max_frames, size)``; otherwise an InputError naming the argument."""
+    path = gif_file(path)
+    fps = validation.number(fps, field="fps", lo=MIN_FPS, hi=MAX_FPS)
+    size = validation.integer(size, field="size", lo=MIN_SIZE, hi=MAX_SIZE)
+    max_frames = validation.integer(max_frames, field="max_frames", lo=1)
+    frames = min(max_frames, len(trace.pose))
+    if frames * size**2 > MAX_PIXELS:
+        validation.fail(f"{frames} frames of {size} x {size} pixels are more than the {MAX_PIXELS:,} pixels of "
+                        f"one animation: ask for at most {MAX_PIXELS // size**2} frames or a smaller size",
+                        field="max_frames")
+    return path, fps, max_frames, size
+
+
 def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, max_frames: int = 100,
                     rays: bool = True, size: int = 400) -> int:
     """Write the episode as a GIF of ``size`` × ``size`` pixels at ``fps`` frames per second to
-    ``path``; returns the number of frames."""
+    ``path``, at most ``max_frames`` frames; returns the number of frames. Bad values are refused
+    before anything is drawn (:func:`check_options`)."""
     check_trace(trace), check_scenario(scenario)
+    path, fps, max_frames, size = check_options(trace, path, fps, max_frames, size)
     dpi = size / 5
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
     canvas = FigureCanvasAgg(figure)
@@ -80,8 +115,8 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     figure.set_layout_engine("none")
     background = canvas.copy_from_bbox(figure.bbox)
 
-    images = []
-    for k in frames:
+    def image(k: int) -> Image.Image:
+        """Frame ``k`` drawn over the background (every artist set from ``k`` alone)."""
         pose = trace.pose[k]
         obstacles.show(k)
         trail.set_segments(segments[:k])
@@ -98,9 +133,12 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
         canvas.restore_region(background)
         for artist in moving:
             figure.draw_artist(artist)
-        images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy()))
-    palette = images[-1].quantize(colors=64)  # one palette, from the busiest frame (the whole trail)
-    images = [image.quantize(palette=palette, dither=Image.Dither.NONE) for image in images]
+        return Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3].copy())
+
+    # one palette, from the busiest frame (the whole trail), drawn first: each frame is mapped to it
+    # as soon as it is drawn, so the frames are held at one byte a pixel, not three
+    palette = image(frames[-1]).quantize(colors=64)
+    images = [image(k).quantize(palette=palette, dither=Image.Dither.NONE) for k in frames]
     step_ms = max(10, int(round(1000 / fps)))
     durations = [step_ms] * (len(images) - 1) + [max(step_ms, int(1000 * HOLD_S))]
     atomic_write(path, lambda handle: images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],

@@ -16,12 +16,14 @@ Figures are built with :class:`matplotlib.figure.Figure` (no pyplot state, no GU
 from __future__ import annotations
 
 import string
+from pathlib import Path
 
 import numpy as np
 from matplotlib import patches
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
+from fuzzynav import validation
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import savefig_atomic
@@ -30,6 +32,36 @@ from fuzzynav.viz.palette import CHANGE_LEGEND, GOAL_COLOUR, RAY_COLOUR, behavio
 from fuzzynav.world.scenario import Scenario
 
 OBSTACLE_STYLE = {"facecolor": "0.55", "edgecolor": "0.2", "linewidth": 0.8}
+
+
+def output_file(path, field: str = "path", what: str = "figure") -> Path:
+    """``path`` as a file to write: a file name (:func:`fuzzynav.validation.file_path`) the file
+    system takes, not a folder; otherwise an InputError on ``field`` naming the path."""
+    path = validation.file_path(path, field=field)
+    try:
+        folder = path.is_dir()
+    except OSError as error:  # a name too long for the file system, ...
+        validation.fail(f"{validation.shown(str(path))}: not a usable file name ({error.strerror or error})",
+                        field=field)
+    if folder:
+        validation.fail(f"{str(path)!r} is a folder; give the {what}'s file name", field=field)
+    return path
+
+
+def figure_file(path, field: str = "path") -> Path:
+    """``path`` as a figure file to write, checked as ``--plot`` and ``--curve`` are
+    (:func:`fuzzynav.cli.arguments.figure_path`, which the command line checks with before any
+    work): a file name, not a folder (:func:`output_file`), its suffix one matplotlib writes
+    (none: PNG); otherwise an InputError on ``field`` naming the path."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    path = output_file(path, field)
+    suffix = path.suffix.lower().lstrip(".")
+    supported = FigureCanvasBase.get_supported_filetypes()
+    if suffix and suffix not in supported:
+        validation.fail(f"{str(path)!r}: matplotlib cannot write '.{suffix}' files (use one of "
+                        f"{', '.join(sorted(supported))})", field=field)
+    return path
 
 
 def change_labels(n: int) -> list[str]:
@@ -95,8 +127,10 @@ def sensor_segments(pose, angles, ranges) -> np.ndarray:
 def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = False, ray_every: int = 20,
                     markers: bool = True):
     """Trajectory of ``trace`` on the world; returns the axes. The legend, below the axes, names
-    each behaviour's code and meaning and what the letters mark."""
+    each behaviour's code and meaning and what the letters mark. With ``rays``, the sensor rays
+    of every ``ray_every``-th step (an integer >= 1)."""
     check_trace(trace), check_scenario(scenario)
+    ray_every = validation.integer(ray_every, field="ray_every", lo=1)
     if ax is None:
         ax = Figure(figsize=(6, 7), layout="constrained").add_subplot(111)
     draw_world(ax, scenario, trace)
@@ -111,10 +145,10 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
     else:
         ax.plot(xy[:, 0], xy[:, 1], color=behaviour_style("")[0], linewidth=1.8, label="robot")
     if rays:
-        for k in range(0, len(trace.pose), max(1, ray_every)):
+        for k in range(0, len(trace.pose), ray_every):
             segs = sensor_segments(trace.pose[k], trace.sensor_angles, trace.ranges[k])
             ax.add_collection(LineCollection(segs, colors=RAY_COLOUR, linewidths=0.6, alpha=0.7))
-        ax.plot([], [], color=RAY_COLOUR, linewidth=0.6, label=f"range sensors, every {max(1, ray_every)} steps")
+        ax.plot([], [], color=RAY_COLOUR, linewidth=0.6, label=f"range sensors, every {ray_every} steps")
     if markers:
         changes = merged_changes(trace)
         for name, k in zip(change_labels(len(changes)), changes):
@@ -149,8 +183,11 @@ def plot_commands(trace: Trace, axes=None):
 
 
 def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = False) -> Figure:
-    """Trajectory (left) and commands (right) in one figure; saved to ``path`` (PNG) if given."""
+    """Trajectory (left) and commands (right) in one figure; saved to ``path`` if given (PNG, or
+    the format its suffix names: one matplotlib writes, :func:`figure_file`, checked first)."""
     check_trace(trace), check_scenario(scenario)
+    if path is not None:
+        path = figure_file(path)
     figure = Figure(figsize=(12, 7.5), layout="constrained")
     left, right = figure.subfigures(1, 2, width_ratios=[1.1, 1.0])
     plot_trajectory(trace, scenario, left.add_subplot(111), rays=rays)
@@ -162,6 +199,8 @@ def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = Fa
 
 def save_figure(figure: Figure, path, dpi: int = 110) -> str:
     """Save ``figure`` to ``path`` (its folder created), cropped to everything drawn — the
-    legends below the axes included; returns the path as a string."""
+    legends below the axes included; returns the path as a string. A folder or a suffix
+    matplotlib does not write is an InputError (:func:`figure_file`)."""
+    figure_file(path)
     savefig_atomic(figure, path, dpi=dpi, bbox_inches="tight")
     return str(path)
