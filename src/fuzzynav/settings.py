@@ -84,10 +84,11 @@ def checked(**ranges: Range):
     return decorate
 
 
-def flag(value, name: str) -> bool:
-    """``value`` of the flag ``name`` (an :class:`~fuzzynav.errors.InputError` unless true or false)."""
+def flag(value, name: str, source=None) -> bool:
+    """``value`` of the flag ``name`` (of the file ``source``, if any): an
+    :class:`~fuzzynav.errors.InputError` unless true or false."""
     if not isinstance(value, (bool, np.bool_)):
-        validation.fail(f"must be true or false, got {validation.shown(value)}", field=name)
+        validation.fail(f"must be true or false, got {validation.shown(value)}", source, name)
     return bool(value)
 
 

@@ -22,6 +22,7 @@ from fuzzynav import validation
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.errors import InputError
 from fuzzynav.experiments.claims import REPRODUCED, SOURCES
+from fuzzynav.settings import flag
 from fuzzynav.storage import write_text_atomic
 
 RUN_FILE, CLAIM_FILE = "run.json", "claim.json"
@@ -78,11 +79,11 @@ def _checks_table(checks: list[dict], source: str) -> str:
             f"{body}</table>")
 
 
-def _flag(value, source, field) -> bool:
-    """``value``, a JSON boolean."""
-    if not isinstance(value, bool):
-        validation.fail(f"must be true or false, got {validation.shown(value)}", source, field)
-    return value
+def _required(document: dict, fields, source: str, where: str = "") -> None:
+    """An InputError naming the first of ``fields`` that ``document`` lacks."""
+    for field in fields:
+        if field not in document:
+            validation.fail("missing", source, f"{where}{field}")
 
 
 def _read_json(path: Path, source: str):
@@ -97,31 +98,25 @@ def _read_record(out_dir: Path, key: str) -> tuple[dict, dict, str]:
     folder = experiment_dir(out_dir, key)
     source = f"{key}/{RUN_FILE}"
     record = validation.mapping(_read_json(folder / RUN_FILE, source), source)
-    for field in ("verdict", "seconds", "quick", "seed", "finished"):
-        if field not in record:
-            validation.fail("missing", source, field)
+    _required(record, ("verdict", "seconds", "quick", "seed", "finished"), source)
     validation.choice(record["verdict"], list(VERDICT_CLASS), source, "verdict")
     validation.number(record["seconds"], source, "seconds", lo=0)
-    _flag(record["quick"], source, "quick")
+    flag(record["quick"], "quick", source)
     validation.seed(record["seed"], source, "seed")
     validation.text(record["finished"], source, "finished")
     source = f"{key}/{CLAIM_FILE}"
     claim = validation.mapping(_read_json(folder / CLAIM_FILE, source), source)
-    for field in ("verdict", "reference", "thesis", "asserted", "checks"):
-        if field not in claim:
-            validation.fail("missing", source, field)
+    _required(claim, ("verdict", "reference", "thesis", "asserted", "checks"), source)
     validation.choice(claim["verdict"], list(VERDICT_CLASS), source, "verdict")
     for field in ("reference", "thesis", "asserted"):
         validation.text(claim[field], source, field)
     for i, check in enumerate(validation.sequence(claim["checks"], source, "checks")):
         where = f"checks[{i}]"
         validation.mapping(check, source, where)
-        for field in ("name", "value", "target", "pass", "source"):
-            if field not in check:
-                validation.fail("missing", source, f"{where}.{field}")
+        _required(check, ("name", "value", "target", "pass", "source"), source, f"{where}.")
         validation.text(check["name"], source, f"{where}.name")
         validation.text(check["target"], source, f"{where}.target")
-        _flag(check["pass"], source, f"{where}.pass")
+        flag(check["pass"], f"{where}.pass", source)
         validation.choice(check["source"], SOURCES, source, f"{where}.source")
     numbers = validation.read_text(folder / f"{key}.json", max_bytes=validation.MAX_MODEL_BYTES,
                                    source=f"{key}/{key}.json")
