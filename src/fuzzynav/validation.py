@@ -236,6 +236,9 @@ def check_tree(document, source=None, *, max_depth: int = MAX_DEPTH, max_nodes: 
     return document
 
 
+FILE_KINDS = {stat.S_IFIFO: "a named pipe", stat.S_IFDIR: "a folder"}
+
+
 def read_bytes(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> bytes:
     """The bytes of the file ``path`` or of a binary stream (``sys.stdin.buffer``), at most
     ``max_bytes``; unreadable or too large: InputError."""
@@ -243,9 +246,10 @@ def read_bytes(path, *, max_bytes: int = MAX_TEXT_BYTES, source=None) -> bytes:
     try:
         if hasattr(path, "read"):
             data = path.read(max_bytes + 1)
-        else:
-            if stat.S_ISFIFO(os.stat(path).st_mode) or stat.S_ISSOCK(os.stat(path).st_mode):
-                fail("is a named pipe or a socket, not a file (reading it could wait for ever)", source)
+        else:  # a named pipe would make the read wait for ever: only a regular file is opened
+            kind = stat.S_IFMT(os.stat(path).st_mode)
+            if kind != stat.S_IFREG:
+                fail(f"is {FILE_KINDS.get(kind, 'a socket or device')}, not a regular file", source)
             with open(path, "rb") as handle:
                 data = handle.read(max_bytes + 1)
     except OSError as error:

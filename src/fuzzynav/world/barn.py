@@ -17,14 +17,14 @@ a robot bigger than BARN's Jackal can be given the same worlds with proportional
 
 from __future__ import annotations
 
-import os
+import io
 import re
-import stat
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 
 START = (-2.25, 3.0, 1.57)  # run.py, static worlds 0–299
@@ -40,10 +40,10 @@ def read_posts(path: Path) -> np.ndarray:
     """Posts ``(n, 3)`` (x, y, radius) of a BARN ``.world`` file: the top-level models' poses and
     their collision cylinders (the ``<state>`` block repeats the poses and is not read). A path that
     is not a regular file (a named pipe, a device, a folder) is refused, not read."""
+    data = validation.read_bytes(path, source=str(path))  # a named pipe or a folder is refused, not read
     try:
-        with _open_regular(path) as handle:
-            root = ElementTree.parse(handle).getroot()
-    except (OSError, ElementTree.ParseError) as error:
+        root = ElementTree.fromstring(data)
+    except ElementTree.ParseError as error:
         raise InputError(f"unreadable SDF world ({getattr(error, 'strerror', None) or error})",
                          source=str(path)) from None
     world = root.find("world")
@@ -70,24 +70,6 @@ def read_posts(path: Path) -> np.ndarray:
     return np.array(posts)
 
 
-def _open_regular(path: Path):
-    """``path`` opened for reading in binary, refused (InputError) unless it is a regular file: it is
-    opened without blocking and checked on the open descriptor, so a named pipe cannot hang the read."""
-    descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    try:
-        mode = os.fstat(descriptor).st_mode
-        if not stat.S_ISREG(mode):
-            kind = ("a named pipe" if stat.S_ISFIFO(mode) else "a folder" if stat.S_ISDIR(mode) else
-                    "a socket" if stat.S_ISSOCK(mode) else "a device or special file")
-            raise InputError(f"is {kind}, not a regular file", source=str(path))
-        if hasattr(os, "set_blocking"):
-            os.set_blocking(descriptor, True)
-        return os.fdopen(descriptor, "rb")
-    except BaseException:
-        os.close(descriptor)
-        raise
-
-
 MAX_CELL = 1e6  # |grid cell| of a path file (BARN's grid is 30 × 30 cells)
 MAX_PATH_CELLS = 10**6  # cells of a path file (BARN's paths have fewer than 100)
 
@@ -96,13 +78,12 @@ def optimal_path_length(path_file: Path) -> float:
     """Length (m) of BARN's optimal path of ``path_N.npy`` with the start and the goal added (run.py).
 
     The file must be a regular ``.npy`` file of one ``(n, 2)`` array (1 ≤ n ≤ ``MAX_PATH_CELLS``) of
-    finite numbers within ±``MAX_CELL``; it is memory-mapped first, so a header declaring more data
-    than the file holds, an ``.npz`` archive, pickled objects or an unreadable file are refused
-    (InputError naming the file) before anything is copied."""
+    finite numbers within ±``MAX_CELL``, read whole (at most ``MAX_MODEL_BYTES``) without pickle,
+    so a header declaring more data than the file holds, an ``.npz`` archive, pickled objects, a
+    named pipe or an unreadable file are refused (InputError naming the file)."""
     cells = _read_cells(path_file)
     if not np.all(np.isfinite(cells)) or np.abs(cells).max() > MAX_CELL:
         raise InputError(f"grid cells must be finite numbers within ±{MAX_CELL:g}", source=str(path_file))
-    cells = np.array(cells)  # a copy in memory, of the file's dtype
     half = POST_SPACING / 2
     points = np.column_stack([cells[:, 0] * POST_SPACING - half - 30 * POST_SPACING,
                               cells[:, 1] * POST_SPACING + half + 5.0])
@@ -112,12 +93,11 @@ def optimal_path_length(path_file: Path) -> float:
 
 
 def _read_cells(path_file: Path) -> np.ndarray:
-    """The array of ``path_file`` as a read-only memory map, checked (:func:`optimal_path_length`)."""
+    """The array of ``path_file``, checked (:func:`optimal_path_length`)."""
     source = str(path_file)
     try:
-        with _open_regular(path_file):  # a named pipe or a folder is refused before numpy opens it
-            pass
-        cells = np.load(path_file, mmap_mode="r", allow_pickle=False)
+        data = validation.read_bytes(path_file, max_bytes=validation.MAX_MODEL_BYTES, source=source)
+        cells = np.load(io.BytesIO(data), allow_pickle=False)
     except InputError:
         raise
     except Exception as error:  # numpy raises many types on hostile headers (ValueError, OSError, ...)
