@@ -1,5 +1,7 @@
 """Every scenario validation rule through the command line: exit 2, the message names the field."""
 
+from pathlib import Path
+
 import pytest
 
 from fuzzynav.cli import main
@@ -89,6 +91,12 @@ def test_binary_file(tmp_path, capsys):
 def test_a_folder_is_not_a_scenario_file(tmp_path, capsys):
     assert main(["run", str(tmp_path), "--controller", "fuzzy-5b"]) == 2
     assert f"{tmp_path}: SCENARIO: is a directory" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero (POSIX)")
+def test_a_device_is_not_a_missing_scenario(capsys):
+    assert main(["run", "/dev/zero", "--controller", "fuzzy-5b"]) == 2
+    assert "/dev/zero: is a socket or device, not a regular file" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("argv, expected", [

@@ -51,6 +51,12 @@ def test_convert_round_trips_through_files(fmt, tmp_path, capsys):
     assert main(["fis", "show", "nonsense"]) == 2
 
 
+@pytest.mark.parametrize("target", ["fuzzy-5b:", "fuzzy-5b:nosuch"])
+def test_an_unknown_role_names_the_argument_given(target, capsys):
+    assert main(["fis", "show", target]) == 2
+    assert "error: system: fuzzy-5b has no role" in capsys.readouterr().err
+
+
 def test_plots(tmp_path):
     x1, x2, y = surface(get_system("tracking"), n=21)
     assert y.shape == (21, 21) and y.max() == pytest.approx(np.pi / 4) and y.min() == pytest.approx(-np.pi / 4)

@@ -54,11 +54,12 @@ def roles_of(controller: str) -> Mapping[str, str]:
     return ROLES[controller]
 
 
-def default_system(controller: str, role: str):
-    """The system ``controller`` uses for ``role`` unless told otherwise."""
+def default_system(controller: str, role: str, field: str = "--fis"):
+    """The system ``controller`` uses for ``role`` unless told otherwise; an unknown role is an
+    InputError on ``field`` (the option or argument that named it)."""
     roles = roles_of(controller)
     if role not in roles:
-        raise InputError(f"{controller} has no role {role!r} (its roles: {', '.join(roles)})", field="--fis")
+        raise InputError(f"{controller} has no role {role!r} (its roles: {', '.join(roles)})", field=field)
     return get_system(roles[role])
 
 

@@ -54,7 +54,7 @@ def resolve(name: str) -> FuzzySystem | Engine:
         return get_system(name)
     controller, sep, role = name.partition(":")
     if sep and not Path(name).exists() and controller in ROLES:
-        return default_system(controller, role)
+        return default_system(controller, role, field="system")
     if Path(name).suffix in (".json", ".npz") and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":

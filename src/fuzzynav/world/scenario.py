@@ -343,7 +343,7 @@ def list_scenarios() -> dict[str, str]:
 def load_scenario(path_or_name) -> Scenario:
     """Load a scenario file, or a built-in scenario by name (see :func:`list_scenarios`)."""
     path = validation.file_path(path_or_name, field="scenario")
-    if not path.is_file():
+    if not path.exists() or path.is_dir():  # a device or pipe is read, and refused by name, below
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
         if path.is_dir() and not builtin.is_file():
             raise InputError("is a directory; give one scenario file (`fuzzynav bench FOLDER` runs a folder)",
