@@ -61,6 +61,11 @@ class Plan:
 
     def __post_init__(self):
         validation.count(self.seeds, field="--seeds", hi=validation.MAX_SEEDS)
+        for suite in self.suites:  # seed k runs the family's worlds of seed SEED + k, which must stay a seed
+            if suite.family is not None and suite.seed + self.seeds - 1 > validation.MAX_SEED:
+                raise InputError(f"{suite.name} with {self.seeds} seeds would run worlds of seed up to "
+                                 f"{suite.seed + self.seeds - 1}, above {validation.MAX_SEED:,}: lower its SEED",
+                                 field="SUITE")
         runs = sum(suite.size for suite in self.suites) * self.seeds * len(self.controllers)
         if runs > validation.MAX_CAMPAIGN_RUNS:
             raise InputError(f"{runs:,} runs (worlds x seeds x controllers), more than the "
