@@ -26,19 +26,30 @@ def campaign_lock(out: Path):
     except ImportError:  # pragma: no cover - Windows
         yield
         return
-    out.mkdir(parents=True, exist_ok=True)
     path = out / LOCK_FILE
-    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+    except OSError as error:
+        raise _unwritable(path, error) from None
     try:
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
             raise InputError("another `fuzzynav bench` is writing this campaign (its lock is held): wait for it "
                              "to finish, or choose another --out", source=str(out), field="--out") from None
-        os.ftruncate(fd, 0)
-        os.write(fd, f"{os.getpid()}\n".encode())
+        try:
+            os.ftruncate(fd, 0)
+            os.write(fd, f"{os.getpid()}\n".encode())
+        except OSError as error:
+            raise _unwritable(path, error) from None
         yield
         with contextlib.suppress(OSError):
             os.unlink(path)
     finally:
         os.close(fd)
+
+
+def _unwritable(path: Path, error: OSError) -> InputError:
+    return InputError(f"cannot write the campaign's lock file ({error.strerror or error})", source=str(path),
+                      field="--out")
