@@ -196,6 +196,15 @@ def test_a_damaged_checkpoint_is_a_one_line_error(tmp_path, capsys):
     assert len(err.splitlines()) == 1 and "oab.yaml.tune.npz" in err, err
 
 
+def test_resume_without_a_checkpoint_says_it_tunes_from_the_start(tmp_path, capsys):
+    argv = ["tune", "fuzzy-2b:oab", "--worlds", WORLDS, "--population", "4", "--budget", "32",
+            "--out", str(tmp_path / "oab.yaml"), "--resume", "--quiet"]
+    assert main(argv) == 0
+    assert "--resume: no checkpoint at" in capsys.readouterr().err
+    assert main(argv) == 0
+    assert "no checkpoint" not in capsys.readouterr().err
+
+
 def test_a_wall_follower_is_tuned_on_wall_courses_by_its_wall_cost(tmp_path):
     from fuzzynav.experiments.tuning import wall_worlds
 

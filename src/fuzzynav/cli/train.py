@@ -10,13 +10,14 @@ conclusion of best quality extracted: the thesis') or ``thesis`` (the a-priori a
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import TrainRequest
+from fuzzynav.learn.tasks.common import TrainRequest, checkpoint_path
 
 PRIORS = ("none", "thesis")
 MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)
@@ -79,7 +80,11 @@ def run(args) -> int:
         prior=args.prior,
         progress=progress.enabled() and not (args.quiet or args.json),
     )
+    first_checkpoint = checkpoint_path(out, "steering")  # every resumable task's first phase
+    fresh = args.resume and not first_checkpoint.exists()
     result = train(request)
+    if fresh:
+        print(f"--resume: there was no checkpoint at {first_checkpoint}: trained from the start", file=sys.stderr)
     if args.json:
         print(json.dumps(result, default=str))
     else:

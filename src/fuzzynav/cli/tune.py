@@ -56,7 +56,7 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
-    from fuzzynav.tune.session import TuneRequest, check, tune
+    from fuzzynav.tune.session import TuneRequest, check, checkpoint_path, tune
 
     objectives = tuple(name.strip() for name in args.objectives.split(",")) if args.objectives else ()
     if args.out and Path(args.out).is_dir():
@@ -66,6 +66,9 @@ def run(args) -> int:
                           holdout=args.holdout, validation=args.validation, out=args.out, resume=args.resume, curve=args.curve,
                           progress=not (args.quiet or args.json))
     check(request)
+    checkpoint = checkpoint_path(request)
+    if request.resume and checkpoint is not None and not checkpoint.is_file():
+        print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
     with progress.quiet(not request.progress):
         result = tune(request)
     written = _write(request, result)
