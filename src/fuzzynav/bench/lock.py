@@ -26,30 +26,24 @@ def campaign_lock(out: Path):
     except ImportError:  # pragma: no cover - Windows
         yield
         return
+    out.mkdir(parents=True, exist_ok=True)  # an OSError here names the path (a file in the way, ...)
     path = out / LOCK_FILE
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
-    except OSError as error:
-        raise _unwritable(path, error) from None
+    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
     try:
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
             raise InputError("another `fuzzynav bench` is writing this campaign (its lock is held): wait for it "
                              "to finish, or choose another --out", source=str(out), field="--out") from None
-        try:
+        try:  # these errors carry no file name: give it
             os.ftruncate(fd, 0)
             os.write(fd, f"{os.getpid()}\n".encode())
         except OSError as error:
-            raise _unwritable(path, error) from None
+            raise InputError(f"cannot write the campaign's lock file ({error.strerror or error})", source=str(path),
+                             field="--out") from None
         yield
         with contextlib.suppress(OSError):
             os.unlink(path)
     finally:
         os.close(fd)
 
-
-def _unwritable(path: Path, error: OSError) -> InputError:
-    return InputError(f"cannot write the campaign's lock file ({error.strerror or error})", source=str(path),
-                      field="--out")
