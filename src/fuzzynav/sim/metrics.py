@@ -24,6 +24,7 @@ import math
 
 import numpy as np
 
+from fuzzynav.errors import InputError
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.scenario import Scenario
@@ -49,6 +50,10 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
     """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
     check_trace(trace)
     check_scenario(scenario)
+    if (trace.scenario, trace.task) != (scenario.name, scenario.task):
+        raise InputError(f"the trace was run on the {trace.task} scenario {trace.scenario!r}, not on the "
+                         f"{scenario.task} scenario {scenario.name!r}: measure it against the scenario it ran on",
+                         field="scenario")
     xy = trace.pose[:, :2]
     steps = np.diff(xy, axis=0)
     world = scenario.world
