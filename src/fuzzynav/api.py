@@ -35,13 +35,14 @@ def train(task: str, out: str | Path, *, episodes: int | None = None, seed: int 
     from fuzzynav import validation
     from fuzzynav.catalog.tasks import trainer
     from fuzzynav.learn.tasks.common import TrainRequest
+    from fuzzynav.settings import flag
     from fuzzynav.viz.trajectories import figure_file
 
     validation.text(task, field="task", max_length=200)
     if episodes is not None:
         validation.count(episodes, field="episodes", hi=validation.MAX_EPISODES)
     request = TrainRequest(out=validation.file_path(out, field="out"), episodes=episodes,
-                           seed=validation.seed(seed, field="seed"), resume=bool(resume),
+                           seed=validation.seed(seed, field="seed"), resume=flag(resume, "resume"),
                            curve=None if curve is None else figure_file(curve, field="curve"),
-                           progress=bool(progress))
+                           progress=flag(progress, "progress"))
     return trainer(task)(request)

@@ -82,3 +82,19 @@ def test_train_checks_the_curve_file_before_training(tmp_path):
         fuzzynav.train("q-goal", tmp_path / "tr.json", episodes=1, curve=tmp_path / "c.nosuch")
     assert caught.value.field == "curve"
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("call, field", [
+    (lambda t, s, d: plot_episode(t, s, rays="no"), "rays"),
+    (lambda t, s, d: plot_trajectory(t, s, rays=1), "rays"),
+    (lambda t, s, d: plot_trajectory(t, s, markers="false"), "markers"),
+    (lambda t, s, d: animate_episode(t, s, d / "a.gif", rays="no", max_frames=2, size=64), "rays"),
+    (lambda t, s, d: fuzzynav.train("q-goal", d / "q.json", episodes=1, resume="no"), "resume"),
+    (lambda t, s, d: fuzzynav.train("q-goal", d / "q.json", episodes=1, progress=None), "progress"),
+])
+def test_flags_are_true_or_false_not_truthy(episode, tmp_path, call, field):
+    trace, scenario = episode
+    with pytest.raises(InputError, match="must be true or false") as caught:
+        call(trace, scenario, tmp_path)
+    assert caught.value.field == field
+    assert list(tmp_path.iterdir()) == []

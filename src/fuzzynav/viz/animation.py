@@ -23,6 +23,7 @@ from matplotlib.lines import Line2D
 from PIL import Image
 
 from fuzzynav import validation
+from fuzzynav.settings import flag
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import atomic_write
@@ -86,6 +87,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     ``path``, at most ``max_frames`` frames; returns the number of frames. Bad values are refused
     before anything is drawn (:func:`check_options`)."""
     check_trace(trace), check_scenario(scenario)
+    rays = flag(rays, "rays")
     path, fps, max_frames, size = check_options(trace, path, fps, max_frames, size)
     dpi = size / 5
     figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")

@@ -24,6 +24,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
 from fuzzynav import validation
+from fuzzynav.settings import flag
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import savefig_atomic
@@ -130,6 +131,7 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
     each behaviour's code and meaning and what the letters mark. With ``rays``, the sensor rays
     of every ``ray_every``-th step (an integer >= 1)."""
     check_trace(trace), check_scenario(scenario)
+    rays, markers = flag(rays, "rays"), flag(markers, "markers")
     ray_every = validation.integer(ray_every, field="ray_every", lo=1)
     if ax is None:
         ax = Figure(figsize=(6, 7), layout="constrained").add_subplot(111)
@@ -186,6 +188,7 @@ def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = Fa
     """Trajectory (left) and commands (right) in one figure; saved to ``path`` if given (PNG, or
     the format its suffix names: one matplotlib writes, :func:`figure_file`, checked first)."""
     check_trace(trace), check_scenario(scenario)
+    rays = flag(rays, "rays")
     if path is not None:
         path = figure_file(path)
     figure = Figure(figsize=(12, 7.5), layout="constrained")
