@@ -140,3 +140,25 @@ def test_animation_size_and_rate(tmp_path, capsys):
         assert image.size == (160, 160) and image.info["duration"] == 50
     assert main(["run", "fig-IV-13", "--controller", "goal-seeking", "--animate", str(gif), "--size", "9"]) == 2
     assert "--size" in capsys.readouterr().err
+
+
+def test_demo_with_only_a_goal_navigator_leaves_the_other_tasks_out(capsys):
+    from fuzzynav.cli.demo import demo_runs
+    from fuzzynav.errors import InputError
+
+    skipped = []
+    runs = demo_runs(controllers=["fuzzy-5b"], skipped=skipped)
+    assert runs and all(controller == "fuzzy-5b" for _, controller in runs)
+    assert ("path-v", "fuzzy-5b") in skipped and ("example-target", "fuzzy-5b") in skipped
+    with pytest.raises(InputError, match="fuzzy-5b cannot do a path task"):
+        demo_runs(["path-v"], ["fuzzy-5b"])  # a scenario named is refused, not left out
+    with pytest.raises(InputError) as caught:
+        demo_runs(controllers=["dwaa"])
+    assert caught.value.field == "--controllers"
+
+
+@pytest.mark.parametrize("command", ["demo", "warmup"])
+def test_a_bad_controller_name_is_refused_before_the_compile_banner(command, tmp_path, capsys):
+    assert main([command, "--controllers", "fuzzy5b", *(["--out", str(tmp_path)] if command == "demo" else [])]) == 2
+    out, err = capsys.readouterr()
+    assert "--controllers: unknown controller 'fuzzy5b'" in err and "compiling" not in out + err

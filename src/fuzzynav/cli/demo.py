@@ -49,15 +49,19 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
     (:func:`fuzzynav.catalog.controllers.check_task`): a scenario's own controller that cannot is an
     :class:`InputError` naming the scenario; of the ``controllers`` given, those that cannot are left
     out of that scenario's runs (each such pair added to ``skipped``: a goal world and a path given
-    with ``--controllers fuzzy-5b,fuzzy-tracker`` run one each), and a scenario none of them can do is
-    an :class:`InputError` naming it."""
+    with ``--controllers fuzzy-5b,fuzzy-tracker`` run one each). A scenario named (``names``) that
+    none of them can do is an :class:`InputError` naming it; of all the built-in ones, it is left
+    out, unless none is left."""
     from fuzzynav.catalog.controllers import check_task, scenario_controllers, spec_of
     from fuzzynav.errors import InputError
     from fuzzynav.world.scenario import list_scenarios
     from fuzzynav.world.scenario_file import open_scenario
 
     for controller in controllers or ():
-        spec_of(controller)  # an unknown name is refused as such, not as a scenario's
+        try:  # an unknown name is refused as such, not as a scenario's
+            spec_of(controller)
+        except InputError as error:
+            raise InputError(error.problem, field="--controllers") from None
     runs = []
     for name in names or list_scenarios():
         scenario = open_scenario(name)
@@ -68,7 +72,7 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
         able = [controller for controller in chosen if scenario.task in spec_of(controller).tasks]
         for i, controller in enumerate(chosen):
             field = "--controllers" if controllers else f"controllers[{i}]"
-            if controller not in able and (not controllers or not able):
+            if controller not in able and (not controllers or (not able and names)):
                 try:
                     check_task(controller, scenario.task, field=field)
                 except InputError as error:
@@ -76,6 +80,8 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
         if skipped is not None:
             skipped.extend((name, controller) for controller in chosen if controller not in able)
         runs.extend((name, controller) for controller in able)
+    if not runs:
+        raise InputError(f"{', '.join(controllers or ())} can do no built-in scenario's task", field="--controllers")
     return runs
 
 
@@ -92,23 +98,24 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def run(args) -> int:
+    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.cli.warmup import announce, warm_up
 
+    skipped: list[tuple[str, str]] = []
+    runs = demo_runs(args.scenario, args.controllers, skipped)  # bad names are refused before anything is said
+    for controller_name in dict.fromkeys(name for _, name in runs):
+        make_controller(controller_name)  # unknown names fail before any run
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
           f"into {args.out}/", flush=True)
+    for controller_name in dict.fromkeys(name for _, name in skipped):
+        names = [name for name, skipped_name in skipped if skipped_name == controller_name]
+        print(f"left out: {controller_name} on {', '.join(names)} (a task it cannot do)", flush=True)
     announce()
-    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.storage import file_name_part, write_text_atomic
     from fuzzynav.world.scenario_file import open_scenario
 
-    skipped: list[tuple[str, str]] = []
-    runs = demo_runs(args.scenario, args.controllers, skipped)
-    for name, controller_name in skipped:
-        print(f"left out: {controller_name} on {name} (it cannot do that scenario's task)", flush=True)
-    for controller_name in dict.fromkeys(name for _, name in runs):
-        make_controller(controller_name)  # unknown names fail before any run
     warm_up(list(dict.fromkeys(name for _, name in runs)))
     args.out.mkdir(parents=True, exist_ok=True)
     rows = []

@@ -86,6 +86,14 @@ def announce() -> None:
 
 
 def run(args) -> int:
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.errors import InputError
+
+    for name in args.controllers or ():
+        try:  # refused before the announcement
+            make_controller(name)
+        except InputError as error:
+            raise InputError(error.problem, field="--controllers") from None
     announce()
     seconds = warm_up(args.controllers)
     print(f"kernels ready in {seconds:.1f} s", flush=True)
