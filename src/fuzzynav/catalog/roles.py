@@ -10,8 +10,8 @@ its factory accepts
 role: the same input variables in the same order (the controller feeds them by position) and the
 same outputs; otherwise an :class:`InputError` names the file, the variable and what was expected.
 
-    fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml      # a role's system, to edit
-    fuzzynav run fig-IV-22a --controller fuzzy-5b --fis foa=foa.yaml
+    fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml      # a role's system, to edit
+    fuzzynav run fig-IV-22a --controller fuzzy-5b-thesis --fis foa=foa.yaml
 """
 
 from __future__ import annotations

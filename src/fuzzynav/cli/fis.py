@@ -8,7 +8,7 @@ controller's role (``fuzzy-5b:foa``: the system that role uses) or a file (``.js
     fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3      # JSON on stdout
     fuzzynav fis eval tracking --csv inputs.csv -o outputs.csv          # one column per input
     fuzzynav fis convert goal-seeking --to fll -o gs.fll
-    fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml             # edit, then run --fis foa=foa.yaml
+    fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml      # edit, then run --fis foa=foa.yaml
     fuzzynav fis convert tipper.fis --to yaml
     fuzzynav fis plot tracking --surface -o fig-V7.png
     fuzzynav fis export-c goal-seeking -o controller.c [--fixed Q16.16]   # and controller.h
@@ -326,7 +326,7 @@ fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
     conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML",
                             example="""
 fuzzynav fis convert tracking --to fll -o tracking.fll
-fuzzynav fis convert fuzzy-5b:foa --to yaml -o foa.yaml""")
+fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml""")
     conv.add_argument("system", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True)
     conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
