@@ -159,3 +159,9 @@ def test_index_page_has_html_tables_and_a_sentence_per_plot(reference):
     assert page.images[:2] == ["rates.png", "path_ratio.png"]
     assert len(page.headings) == 1 + len(page.images)  # the tables' heading, then one per plot
     assert "|---|" not in "".join(page.text)  # no Markdown left in the page
+
+
+def test_no_progress_bar_on_a_redirected_stderr(tmp_path, capsys):
+    assert main(["bench", "circles:1", "--controllers", "goal-seeking", "--workers", "1", "--gallery", "0",
+                 "--out", str(tmp_path / "o")]) == 0  # no --quiet: stderr is not a terminal here
+    assert "run/s" not in capsys.readouterr().err

@@ -26,7 +26,6 @@ import csv
 import hashlib
 import io
 import json
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -37,6 +36,7 @@ from fuzzynav.bench.cells import Cell, is_model_file
 from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
+from fuzzynav.progress import bar as progress_bar, quiet as quiet_progress
 from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.storage import remove_temporaries_under, write_text_atomic
 
@@ -228,9 +228,8 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))
     total = sum(len(cell.controllers) for cell in cells)
-    from tqdm import tqdm
-
-    bar = tqdm(total=total, unit="run", file=sys.stderr, disable=not progress or not total, dynamic_ncols=True)
+    with quiet_progress(not progress or not total):  # a bar only on a terminal, as every command's
+        bar = progress_bar(total=total, unit="run")
     with open(out / "runs.jsonl", "a", encoding="utf-8") as jsonl, open(out / "runs.csv", "a", encoding="utf-8") as table:
         def on_rows(new_rows):
             jsonl.write(json_lines(new_rows))
