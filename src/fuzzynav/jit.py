@@ -16,6 +16,7 @@ for a while otherwise. ``fuzzynav warmup`` compiles them all up front, with a pr
 from __future__ import annotations
 
 import hashlib
+import mmap
 import os
 import sys
 from pathlib import Path
@@ -89,13 +90,23 @@ def jit(function=None, *, fastmath: tuple = ()):
 class CompileNotice(event.Listener):
     """Prints :data:`COMPILE_NOTICE` on stderr once, when numba starts compiling (a cache miss,
     not a load) a kernel of this package; :meth:`silence` stops it (a caller that reports the
-    compilation its own way, such as ``fuzzynav warmup``)."""
+    compilation its own way, such as ``fuzzynav warmup``). Whether it was said is one byte of memory
+    shared with the processes forked after it was made (``evaluate``'s and ``bench``'s workers), so
+    a command says it once, not once per worker."""
 
     def __init__(self) -> None:
-        self.said = False
+        self._said = mmap.mmap(-1, 1)  # anonymous and shared: a forked worker sees its parent's byte
+
+    @property
+    def said(self) -> bool:
+        return bool(self._said[0])
+
+    @said.setter
+    def said(self, value: bool) -> None:
+        self._said[0] = int(bool(value))
 
     def silence(self) -> None:
-        """Say nothing from now on in this process."""
+        """Say nothing from now on in this process and the workers it forks."""
         self.said = True
 
     def on_start(self, compile_event) -> None:

@@ -2,6 +2,9 @@
 ``--help``, defaults that run, and commands that say what they wrote."""
 
 import json
+import os
+import sys
+from types import SimpleNamespace
 
 import numba
 import pytest
@@ -38,6 +41,26 @@ def test_the_compile_notice_is_said_once_and_only_for_the_package(capsys, monkey
     assert COMPILE_NOTICE not in capsys.readouterr().err
 
 
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="workers are forked on POSIX only")
+def test_forked_workers_say_the_notice_once_between_them(monkeypatch):
+    notice = CompileNotice()
+    compiling = SimpleNamespace(data={"dispatcher": SimpleNamespace(py_func=_kernel)})
+    said = []
+    for _ in range(2):  # two workers forked by one command, compiling one after the other
+        read, write = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # the worker: its stderr is the pipe
+            os.dup2(write, 2)
+            sys.stderr = os.fdopen(2, "w")
+            notice.on_start(compiling)
+            os._exit(0)
+        os.close(write)
+        os.waitpid(pid, 0)
+        with os.fdopen(read) as pipe:
+            said.append(pipe.read())
+    assert said == [COMPILE_NOTICE + "\n", ""]
+
+
 def _subcommands(parser, prefix=()):
     """(words, parser) of every command and sub-command."""
     yield prefix, parser
@@ -63,9 +86,10 @@ def test_warmup_compiles_and_says_how_long(capsys):
     assert main(["warmup", "--controllers", "no-such-navigator"]) == 2
 
 
-def test_the_demo_says_what_it_does_before_anything_else(capsys, tmp_path):
+def test_the_demo_says_what_it_does_first_and_checks_before_compiling(capsys, tmp_path):
     assert main(["demo", "--scenario", str(tmp_path / "missing.yaml"), "--out", str(tmp_path / "d")]) == 2
-    assert capsys.readouterr().out.startswith("fuzzynav demo: ")
+    out, err = capsys.readouterr()
+    assert out.startswith("fuzzynav demo: ") and "missing.yaml" in err and "compiling" not in out + err
 
 
 @pytest.mark.slow

@@ -98,16 +98,17 @@ def markdown_table(rows: list[dict]) -> str:
 
 
 def run(args) -> int:
-    from fuzzynav.catalog.controllers import make_controller
     from fuzzynav.cli.warmup import announce, warm_up
 
-    skipped: list[tuple[str, str]] = []
-    runs = demo_runs(args.scenario, args.controllers, skipped)  # bad names are refused before anything is said
-    for controller_name in dict.fromkeys(name for _, name in runs):
-        make_controller(controller_name)  # unknown names fail before any run
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
           f"into {args.out}/", flush=True)
+    from fuzzynav.catalog.controllers import make_controller
+
+    skipped: list[tuple[str, str]] = []
+    runs = demo_runs(args.scenario, args.controllers, skipped)  # bad names are refused before compiling is said
+    for controller_name in dict.fromkeys(name for _, name in runs):
+        make_controller(controller_name)  # unknown names fail before any run
     for controller_name in dict.fromkeys(name for _, name in skipped):
         names = [name for name, skipped_name in skipped if skipped_name == controller_name]
         print(f"left out: {controller_name} on {', '.join(names)} (a task it cannot do)", flush=True)
