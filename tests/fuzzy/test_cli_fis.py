@@ -57,6 +57,11 @@ def test_an_unknown_role_names_the_argument_given(target, capsys):
     assert "error: system: fuzzy-5b has no role" in capsys.readouterr().err
 
 
+def test_a_misspelt_system_gets_close_names(capsys):
+    assert main(["fis", "show", "goal-seekin"]) == 2
+    assert "(did you mean goal-seeking," in capsys.readouterr().err
+
+
 def test_plots(tmp_path):
     x1, x2, y = surface(get_system("tracking"), n=21)
     assert y.shape == (21, 21) and y.max() == pytest.approx(np.pi / 4) and y.min() == pytest.approx(-np.pi / 4)

@@ -17,6 +17,7 @@ controller's role (``fuzzy-5b:foa``: the system that role uses) or a file (``.js
 from __future__ import annotations
 
 import csv
+import difflib
 import io
 import json
 import math
@@ -67,8 +68,10 @@ def resolve(name: str) -> FuzzySystem | Engine:
             return from_document(document, source=name)
     if Path(name).suffix:
         return load(name)
-    raise InputError(f"not a built-in system ({', '.join(SYSTEMS)}), a CONTROLLER:ROLE ({', '.join(ROLES)}) nor a "
-                     ".json/.yaml/.fll/.fis file", field=name)
+    close = difflib.get_close_matches(name, [*SYSTEMS, *(f"{c}:{r}" for c in ROLES for r in ROLES[c])], n=3)
+    hint = f" (did you mean {', '.join(close)}?)" if close else ""
+    raise InputError(f"not a built-in system, a CONTROLLER:ROLE nor a .json/.yaml/.fll/.fis file{hint}; built-in "
+                     f"systems: {', '.join(SYSTEMS)}; controllers with roles: {', '.join(ROLES)}", field=name)
 
 
 def describe(system: FuzzySystem | Engine) -> str:
