@@ -119,6 +119,8 @@ def test_barn_score_follows_run_py():
 
 @pytest.mark.parametrize("argv, field", [
     (["bench", "nowhere", "--controllers", "dwa"], "SUITE"),
+    (["bench", "barn-1.5", "--controllers", "dwa"], "`fuzzynav import barn` writes a folder of BARN worlds"),
+    (["bench", "mixd:3", "--controllers", "dwa"], "(did you mean mixed?)"),
     (["bench", "mixed:x", "--controllers", "dwa"], "COUNT"),
     (["bench", "mixed:2", "--controllers", "dwb"], "--controllers"),
     (["bench", "mixed:2", "--controllers", "missing.json"], "missing.json"),

@@ -15,6 +15,7 @@ seed k (which only matters for noisy sensors or random controllers).
 
 from __future__ import annotations
 
+import difflib
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -101,8 +102,11 @@ def parse_suite(spec: str) -> Suite:
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")
     if family not in KINDS:
+        close = difflib.get_close_matches(family, KINDS, n=3)
+        hint = f" (did you mean {', '.join(close)}?)" if close else ""
         raise InputError(f"{spec!r} is neither a folder nor a world family ({', '.join(KINDS)}) "
-                         "written FAMILY[:COUNT[:SEED]]", field="SUITE")
+                         f"written FAMILY[:COUNT[:SEED]]{hint}; `fuzzynav import barn` writes a folder of BARN "
+                         "worlds, `fuzzynav worlds generate` one of a family's", field="SUITE")
     if len(rest) > 2:
         raise InputError(f"too many ':' in {spec!r} (FAMILY[:COUNT[:SEED]])", field="SUITE")
     count = _count(rest[0], "COUNT", spec, 1, validation.MAX_WORLDS) if rest else DEFAULT_COUNT

@@ -30,7 +30,8 @@ from fuzzynav.errors import InputError
 
 EXAMPLES = """
 fuzzynav bench mixed:3 utrap:3 --controllers fuzzy-5b,dwa,astar-pp --out bench   # bench/index.html
-fuzzynav bench mixed:100 utrap:100 barn-1.5 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench"""
+fuzzynav bench mixed:100 utrap:100 --controllers fuzzy-5b,dwa --seeds 3 --workers 2 --out bench
+fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out bench-barn   # a folder 'fuzzynav import barn' wrote"""
 
 
 def register(subparsers) -> None:
