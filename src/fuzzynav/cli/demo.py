@@ -131,7 +131,7 @@ def run(args) -> int:
 
             plot_episode(trace, scenario, args.out / f"{file_name_part(name)}--{file_name_part(controller_name)}.png")
         why = f" — the scenario: {scenario.description}" if row["outcome"] != "reached" and scenario.description else ""
-        print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} in {row['time_s']:.1f} s{why}",
+        print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} after {row['time_s']:.1f} s{why}",
               flush=True)
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))

@@ -38,7 +38,8 @@ fuzzynav evaluate --controller fuzzy-5b-thesis --worlds mixed --n 100 --save-fai
 fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--controller", metavar="NAME",
-                        help=f"built-in controller (default {DEFAULT_CONTROLLER}; {', '.join(sorted(CONTROLLERS))})")
+                        help=f"built-in controller of goal tasks (default {DEFAULT_CONTROLLER}; "
+                             f"{', '.join(sorted(n for n, spec in CONTROLLERS.items() if 'goal' in spec.tasks))})")
     source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",

@@ -70,7 +70,7 @@ def warm_up(controllers: list[str] | None = None) -> float:
         run_episode(open_scenario(scenario_for(name)), make_controller(name), seed=0, max_time=STEPS_S)
         bar.update()
         if bar.disable:
-            print(f"  {name}: {time.perf_counter() - began:.1f} s", file=sys.stderr, flush=True)
+            print(f"  {name}: kernels ready in {time.perf_counter() - began:.1f} s", file=sys.stderr, flush=True)
     bar.close()
     return time.perf_counter() - start
 
