@@ -115,3 +115,14 @@ def test_a_curve_that_never_settled_reports_null_and_says_so(tmp_path, capsys):
     assert train("q-goal", out, "--episodes", "100") == 0
     line = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("steering:"))
     assert "steering: 100 episodes, not converged within 100 episodes" in line and "101" not in line  # not the model path
+
+
+def test_the_help_states_the_phases_shares_as_the_tasks_set_them(capsys):
+    from fuzzynav.learn.tasks import common, fql_avoid
+
+    with pytest.raises(SystemExit):
+        main(["train", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    shares = {0.25: "a quarter", 0.5: "a half"}
+    assert f"speed phase {shares[common.SPEED_SHARE]} (fql-goal, fql-wall) or {shares[fql_avoid.AVOID_SPEED_SHARE]} " \
+           "(fql-avoid)" in text

@@ -36,7 +36,9 @@ fuzzynav train fql-goal --episodes 3000 --seed 0 --out fql.npz --curve fql.png
 fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to 6000 in all""")
     parser.add_argument("task", metavar="TASK", help="training task name")
     parser.add_argument("--episodes", type=int,
-                        help=f"number of episodes / epochs, 1 to {validation.MAX_EPISODES:,} (task default)")
+                        help=f"number of episodes / epochs in all, 1 to {validation.MAX_EPISODES:,} (task default); "
+                             "a task learned in two phases, steering then speed, gives the speed phase a quarter "
+                             "(fql-goal, fql-wall) or a half (fql-avoid)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
