@@ -40,16 +40,9 @@ register_controller(ControllerSpec(
 register_controller(ControllerSpec(
     "fuzzy-5b", "fuzzynav.control.through_gaps:fuzzy_5b_gap_robust",
     "the default navigator: the five behaviours on a lidar, steering through the gap that fits the body, "
-    "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed, with recovery "
-    "and loop escape, its speed set by the room ahead on its arc (on the car route's forward arcs too), deciding "
-    "where its command will act when the robot's actuation is late, its car route reused while valid, forgetting "
-    "where moving obstacles were and, among them, yielding to and evading what its tracks predict would run into "
-    "it, its back-up out of a wedge allowed to close part of the gap to the nearest point, and its route planned "
-    "on as soon as a back-up of it ends, to end inside the goal's tolerance, its arcs driven by the route layer "
-    "wherever the route passes within 2 m of what was seen, and a route planned to a target more than 30° off its "
-    "heading, whose search ends with the turn and straight line to the target once no cheaper route is left; its "
-    "earlier versions and the options that give them: "
-    "docs/guide/controllers.md",
+    "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed; recovery, "
+    "loop escape, a speed set by the room ahead, and yielding to moving obstacles its tracks predict; what each "
+    "version added, and the options that give the earlier ones: docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
     "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=14))
