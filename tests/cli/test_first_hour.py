@@ -52,6 +52,7 @@ def test_demo_runs_a_users_world_with_the_controllers_given(tmp_path, capsys):
                  "--out", str(tmp_path / "out"), "--no-plots"]) == 0
     out = capsys.readouterr().out  # each controller on the scenario whose task it can do
     assert "wrote 2 runs" in out and "left out: fuzzy-tracker on " in out and "left out: fuzzy-2b on path-v" in out
+    assert out.rstrip().splitlines()[-1].startswith("next: `fuzzynav run fig-IV-23 --plot u.png`")
     table = (tmp_path / "out" / "metrics.md").read_text()
     assert "mean_cross_track_m" in table.splitlines()[0] and "| mine | fuzzy-2b |" in table
 

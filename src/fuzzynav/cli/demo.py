@@ -137,4 +137,6 @@ def run(args) -> int:
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
     print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
+    print("next: `fuzzynav run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b; "
+          "`fuzzynav COMMAND --help` shows each command with examples; the README's tour tries them all")
     return 0
