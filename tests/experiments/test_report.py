@@ -158,3 +158,9 @@ def test_an_experiment_id_must_name_its_chapter():
 def test_reproduce_list_counts_the_experiments(capsys):
     assert main(["reproduce", "--list"]) == 0
     assert capsys.readouterr().out.splitlines()[-1] == f"{len(registry.available())} figures and tables"
+
+
+def test_reproduce_without_ids_lists_them_and_says_nothing_ran(capsys, tmp_path):
+    assert main(["reproduce", "--out", str(tmp_path / "f")]) == 0
+    assert capsys.readouterr().out.splitlines()[-1].startswith("nothing run: name the ids to reproduce")
+    assert not (tmp_path / "f").exists()

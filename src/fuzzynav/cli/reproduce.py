@@ -50,6 +50,8 @@ def run(args) -> int:
         for key, text in listing.items():
             print(f"{key:24s} {text}")
         print(f"{len(listing)} figures and tables")
+        if not args.list:
+            print("nothing run: name the ids to reproduce, or all (e.g. fuzzynav reproduce fig-IV-23 --out figures/)")
         return 0
     ids = list(registry.available()) if args.ids == ["all"] else args.ids
     functions = [(key, registry.experiment(key)) for key in ids]  # validate every id first
