@@ -2,7 +2,9 @@
 
 Each sub-command lives in its own module under :mod:`fuzzynav.cli` and exposes
 ``register(subparsers)``, which declares it with :func:`fuzzynav.cli.arguments.command` (its
-parser, and the ``func(args) -> int`` it runs) and adds its arguments. Bad input
+parser, and the ``func(args) -> int`` it runs) and adds its arguments. Only the modules of the
+commands named on the command line are imported (:func:`build_parser`): ``fuzzynav --help`` lists
+the others by their line in :data:`COMMAND_MODULES`. Bad input
 raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the exit status is 2.
 """
 
@@ -11,30 +13,41 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from collections.abc import Sequence
 from importlib import import_module
 
 from fuzzynav import __version__
 from fuzzynav.cli import arguments
 from fuzzynav.errors import InputError
 
-# Sub-command modules, in the order ``fuzzynav --help`` lists them.
-COMMAND_MODULES: list[str] = [
-    "demo",
-    "warmup",
-    "run",
-    "scenarios",
-    "train",
-    "reproduce",
-    "fis",
-    "evaluate",
-    "worlds",
-    "bench",
-    "importer",
-    "tune",
-]
+# Sub-command modules, in the order ``fuzzynav --help`` lists them: module -> (command, its line in
+# that list). The lines are kept here so that listing the commands imports none of their modules.
+COMMAND_MODULES: dict[str, tuple[str, str]] = {
+    "demo": ("demo", "run the thesis' controllers on the built-in scenarios (plots + metrics table)"),
+    "warmup": ("warmup", "compile the simulator's kernels now (first run only), with a progress bar"),
+    "run": ("run", "run a controller on a scenario"),
+    "scenarios": ("scenarios", "list the built-in scenarios"),
+    "train": ("train", "train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)"),
+    "reproduce": ("reproduce", "reproduce a figure or table of the thesis"),
+    "fis": ("fis", "show, evaluate, convert or plot a fuzzy system"),
+    "evaluate": ("evaluate", "run a controller over N generated worlds"),
+    "worlds": ("worlds", "write generated worlds as scenario files"),
+    "bench": ("bench", "run navigators against each other on suites of worlds"),
+    "importer": ("import", "convert standard benchmark worlds into scenario files"),
+    "tune": ("tune", "tune a controller's fuzzy system by GA, PSO, DE, CMA-ES, NSGA-II or ant colony"),
+}
 
 
-def build_parser() -> argparse.ArgumentParser:
+def help_line(module: str) -> str:
+    """The line of the sub-command of ``module`` in ``fuzzynav --help`` (its ``help``)."""
+    return COMMAND_MODULES[module][1]
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The parser of the command line. Every sub-command's module is imported and registered, or,
+    given the words ``argv`` to parse, only those of the commands ``argv`` names: the others are
+    listed with their line alone (a parser without arguments argparse never reaches, since it picks
+    a sub-command by its exact name), so a command does not import the modules of all the others."""
     parser = argparse.ArgumentParser(
         prog="fuzzynav",
         description="Neuro-fuzzy navigation of a simulated tricycle robot (Cherroun, 2014).",
@@ -45,8 +58,11 @@ fuzzynav COMMAND --help              # a command's options, with examples"""),
     )
     parser.add_argument("--version", action="version", version=f"fuzzynav {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for module_name in COMMAND_MODULES:
-        import_module(f"fuzzynav.cli.{module_name}").register(subparsers)
+    for module_name, (command, line) in COMMAND_MODULES.items():
+        if argv is None or command in argv:
+            import_module(f"fuzzynav.cli.{module_name}").register(subparsers)
+        else:
+            subparsers.add_parser(command, help=line)
     return parser
 
 
@@ -61,8 +77,9 @@ def _survive_any_terminal() -> None:
 
 def main(argv: list[str] | None = None) -> int:
     _survive_any_terminal()
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    words = sys.argv[1:] if argv is None else argv
+    parser = build_parser(words)
+    args = parser.parse_args(words)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2

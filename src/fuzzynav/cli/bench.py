@@ -24,7 +24,7 @@ import sys
 from pathlib import Path
 
 from fuzzynav import validation
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.cli.run import PLANT_HELP
 from fuzzynav.errors import InputError
 
@@ -35,7 +35,7 @@ fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out bench-barn   # a folder
 
 
 def register(subparsers) -> None:
-    parser = arguments.command(subparsers, "bench", run, help="run navigators against each other on suites of worlds",
+    parser = arguments.command(subparsers, "bench", run, help=help_line("bench"),
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap|dynamic|dynabarn|office|maze|forest, "

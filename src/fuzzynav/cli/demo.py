@@ -19,7 +19,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
@@ -28,7 +28,7 @@ TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_r
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "demo", run,
-                               help="run the thesis' controllers on the built-in scenarios (plots + metrics table)",
+                               help=help_line("demo"),
                                description=__doc__.split("\n\n")[1],
                                example="""
 fuzzynav demo --out fuzzynav-out

@@ -21,7 +21,7 @@ from pathlib import Path
 from fuzzynav import progress as progress_bars, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, SENSORS_HELP
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS
@@ -29,7 +29,7 @@ from fuzzynav.world.generate import KINDS
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "evaluate", run,
-                               help="run a controller over N generated worlds",
+                               help=help_line("evaluate"),
                                description="Success / collision / timeout rates, mean time and path length of a "
                                            "controller over N seeded random worlds (solvable by construction).",
                                example="""

@@ -28,7 +28,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.catalog.roles import ROLES, default_system
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.engine.convert import engine_to_system
@@ -305,7 +305,7 @@ def _write(text: str, output: str | None) -> None:
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser("fis", help="show, evaluate, convert or plot a fuzzy system",
+    parser = subparsers.add_parser("fis", help=help_line("fis"),
                                    description=__doc__.split("\n\n")[0],
                                    **arguments.with_example("fuzzynav fis show goal-seeking\nfuzzynav fis eval --help"))
     sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)

@@ -12,14 +12,14 @@ import sys
 from pathlib import Path
 
 from fuzzynav import validation
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "import",
-        help="convert standard benchmark worlds into scenario files",
+        help=help_line("importer"),
         description="Convert worlds of a standard benchmark into scenario files (`fuzzynav bench DIR` runs them).",
         **arguments.with_example("fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5"),
     )

@@ -19,7 +19,7 @@ from pathlib import Path
 from fuzzynav import progress
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.catalog.roles import parse_option
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 
 EXAMPLES = """
 fuzzynav reproduce --list
@@ -28,7 +28,7 @@ fuzzynav reproduce all --quick --out figures/"""
 
 
 def register(subparsers) -> None:
-    parser = arguments.command(subparsers, "reproduce", run, help="reproduce a figure or table of the thesis",
+    parser = arguments.command(subparsers, "reproduce", run, help=help_line("reproduce"),
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")

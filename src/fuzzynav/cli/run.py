@@ -16,7 +16,7 @@ import sys
 
 from fuzzynav import validation
 from fuzzynav.catalog.controllers import available, check_task, scenario_controllers
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
 SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
@@ -45,7 +45,7 @@ def default_controller(scenario, source: str) -> str:
 def register(subparsers) -> None:
     width = max(map(len, available()))
     parser = arguments.command(subparsers, "run", run,
-                               help="run a controller on a scenario",
+                               help=help_line("run"),
                                description="Run one episode of a controller on a scenario file or built-in scenario "
                                            "(`fuzzynav scenarios` lists the built-ins).",
                                epilog="controllers (--controller NAME):\n"

@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import difflib
 
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 from fuzzynav.world.scenario import BUILTIN_DIR, list_scenarios
 
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "scenarios", run,
-                               help="list the built-in scenarios",
+                               help=help_line("scenarios"),
                                description="List the built-in scenarios, which `fuzzynav run NAME` runs by name.",
                                example="""
 fuzzynav scenarios

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 from fuzzynav.learn.tasks.common import TrainRequest, checkpoint_path
 
@@ -27,7 +27,7 @@ from fuzzynav.storage import document_format
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "train", run,
-                               help="train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)",
+                               help=help_line("train"),
                                description="Train a learning controller and write its model file (atomically). Tasks: "
                                + ", ".join(f"{name} ({text})" for name, text in tasks.available().items()),
                                example="""

@@ -17,7 +17,7 @@ import sys
 from pathlib import Path
 
 from fuzzynav import progress
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
 EXAMPLES = """
@@ -27,7 +27,7 @@ fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 10
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "tune", run,
-                               help="tune a controller's fuzzy system by GA, PSO, DE, CMA-ES, NSGA-II or ant colony",
+                               help=help_line("tune"),
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("target", metavar="CONTROLLER:ROLE",
                         help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:foa")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import sys
 import time
 
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 
 STEPS_S = 0.3  # simulated seconds per controller: a few steps run every kernel of the episode loop
 FALLBACK_SCENARIO = "fig-IV-23"  # a goal world, for controllers no built-in scenario lists
@@ -24,7 +24,7 @@ fuzzynav warmup --controllers fuzzy-5b,dwa"""
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "warmup", run,
-                               help="compile the simulator's kernels now (first run only), with a progress bar",
+                               help=help_line("warmup"),
                                description=__doc__.split("\n\n")[1], example=EXAMPLE)
     parser.add_argument("--controllers", metavar="A,B", type=arguments.names,
                         help="compile what these controllers use (default: the demo's controllers and fuzzy-5b)")

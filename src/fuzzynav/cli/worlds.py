@@ -10,11 +10,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from fuzzynav import validation
-from fuzzynav.cli import arguments
+from fuzzynav.cli import arguments, help_line
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser("worlds", help="write generated worlds as scenario files",
+    parser = subparsers.add_parser("worlds", help=help_line("worlds"),
                                    description="Generated worlds (the ones `fuzzynav evaluate` runs) as files.",
                                    **arguments.with_example("fuzzynav worlds generate mixed --n 3 --out worlds/"))
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
