@@ -10,7 +10,6 @@ import argparse
 import re
 from collections.abc import Callable
 
-from fuzzynav import validation
 from fuzzynav.errors import InputError
 
 
@@ -74,6 +73,8 @@ def _integer(text: str, lo: int, hi: int) -> int:
 def seed(text: str) -> int:
     """``--seed``: a non-negative integer, at most 2**63 - 1 (NumPy's ``SeedSequence`` rejects
     negative entropy)."""
+    from fuzzynav import validation  # numpy: imported when a command parses, not for ``fuzzynav --help``
+
     if text.strip().startswith("-") and text.strip()[1:].isdigit():
         raise argparse.ArgumentTypeError(f"must be a non-negative integer, got {text.strip()}")
     return _integer(text, 0, validation.MAX_SEED)
