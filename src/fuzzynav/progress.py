@@ -7,6 +7,7 @@ imported on first use, so importing this module costs nothing at start-up.
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
@@ -16,8 +17,15 @@ _QUIET: ContextVar[bool] = ContextVar("fuzzynav_quiet", default=False)
 
 
 def enabled() -> bool:
-    """True when a progress bar would be shown: stderr is a terminal and output is not quiet."""
-    return not _QUIET.get() and sys.stderr.isatty()
+    """True when a progress bar would be shown: stderr is a terminal with room for one (a terminal
+    that says it has 0 columns draws nothing: the commands then print their lines instead) and
+    output is not quiet."""
+    if _QUIET.get() or not sys.stderr.isatty():
+        return False
+    try:
+        return os.get_terminal_size(sys.stderr.fileno()).columns > 0
+    except (OSError, ValueError):  # a stand-in stderr without a descriptor: trust isatty
+        return True
 
 
 @contextmanager

@@ -2,6 +2,7 @@
 the demo, help that lists the controllers, progress bars only on a terminal, readable numbers."""
 
 import json
+import os
 
 import numpy as np
 import pytest
@@ -81,6 +82,9 @@ def test_progress_bars_only_on_a_terminal(monkeypatch):
     with progress.quiet():
         assert not progress.enabled() and progress.bar(total=3).disable
     assert progress.enabled()
+    monkeypatch.setattr("sys.stderr.fileno", lambda: 2, raising=False)
+    monkeypatch.setattr("os.get_terminal_size", lambda fd: os.terminal_size((0, 0)))
+    assert not progress.enabled()  # a terminal of 0 columns draws no bar: lines instead
 
 
 def test_printed_results_carry_units_and_meaning():
