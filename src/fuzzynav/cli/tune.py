@@ -30,7 +30,7 @@ def register(subparsers) -> None:
                                help=help_line("tune"),
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("target", metavar="CONTROLLER:ROLE",
-                        help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:foa")
+                        help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:gsb")
     parser.add_argument("--worlds", required=True, metavar="SUITE",
                         help="training worlds: folder of scenario files or FAMILY[:COUNT[:SEED]] (as bench reads them)")
     parser.add_argument("--holdout", metavar="SUITE",
