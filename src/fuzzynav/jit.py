@@ -91,8 +91,9 @@ class CompileNotice(event.Listener):
     """Prints :data:`COMPILE_NOTICE` on stderr once, when numba starts compiling (a cache miss,
     not a load) a kernel of this package; :meth:`silence` stops it (a caller that reports the
     compilation its own way, such as ``fuzzynav warmup``). Whether it was said is one byte of memory
-    shared with the processes forked after it was made (``evaluate``'s and ``bench``'s workers), so
-    a command says it once, not once per worker."""
+    shared with the processes forked after it was made (``evaluate``'s and ``bench``'s workers on
+    Linux), so a command says it once, not once per worker; workers started afresh (spawned, as
+    on macOS and Windows, or Ray's) each have their own."""
 
     def __init__(self) -> None:
         self._said = mmap.mmap(-1, 1)  # anonymous and shared: a forked worker sees its parent's byte

@@ -167,3 +167,20 @@ def test_a_bad_controller_name_is_refused_before_the_compile_banner(command, tmp
     assert main([command, "--controllers", "fuzzy5b", *(["--out", str(tmp_path)] if command == "demo" else [])]) == 2
     out, err = capsys.readouterr()
     assert "--controllers: unknown controller 'fuzzy5b'" in err and "compiling" not in out + err
+
+
+def test_no_controller_is_made_before_the_compile_banner(monkeypatch, tmp_path):
+    """Making a controller may compile (neural-tracker): numba's own notice would then come before
+    the banner that silences it, two banners on a first run."""
+    from fuzzynav.catalog import controllers
+
+    events = []
+    monkeypatch.setattr("fuzzynav.cli.warmup.announce", lambda: events.append("announce"))
+    make = controllers.make_controller
+    monkeypatch.setattr(controllers, "make_controller", lambda *a, **k: events.append("make") or make(*a, **k))
+    assert main(["demo", "--scenario", "fig-IV-12a", "--controllers", "goal-seeking", "--no-plots",
+                 "--out", str(tmp_path / "d")]) == 0
+    assert events[0] == "announce" and "make" in events
+    events.clear()
+    assert main(["warmup", "--controllers", "goal-seeking"]) == 0
+    assert events[0] == "announce" and "make" in events

@@ -44,6 +44,6 @@ def test_resume_episode_by_episode_runs_to_the_total(tmp_path, capsys):
 def test_resume_without_a_checkpoint_says_it_trained_from_the_start(tmp_path, capsys):
     out = tmp_path / "q.json"
     assert main(["train", "q-goal", "--episodes", "5", "--quiet", "--out", str(out), "--resume"]) == 0
-    assert "--resume: there was no checkpoint at" in capsys.readouterr().err
+    assert "--resume: no checkpoint at" in capsys.readouterr().err
     assert main(["train", "q-goal", "--episodes", "10", "--quiet", "--out", str(out), "--resume"]) == 0
     assert "no checkpoint" not in capsys.readouterr().err  # the checkpoint of the first run was there

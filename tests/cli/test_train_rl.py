@@ -124,5 +124,5 @@ def test_the_help_states_the_phases_shares_as_the_tasks_set_them(capsys):
         main(["train", "--help"])
     text = " ".join(capsys.readouterr().out.split())
     shares = {0.25: "a quarter", 0.5: "a half"}
-    assert f"speed phase {shares[common.SPEED_SHARE]} (fql-goal, fql-wall) or {shares[fql_avoid.AVOID_SPEED_SHARE]} " \
-           "(fql-avoid)" in text
+    quarter, half = shares[common.SPEED_SHARE], shares[fql_avoid.AVOID_SPEED_SHARE]
+    assert f"speed phase {quarter} (fql-goal, fql-goal-35, fql-wall) or {half} (fql-avoid)" in text

@@ -292,7 +292,8 @@ API = [
     Case("api-metrics-scenario-none", python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), None)",
          expect="scenario: must be a Scenario"),
     Case("api-metrics-other-scenario",
-         python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), fuzzynav.load_scenario('fig-IV-23'))",
+         python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), "
+                "fuzzynav.load_scenario('fig-IV-23'))",
          expect="the trace was run on the goal scenario 'example-goal', not on the goal scenario 'fig-IV-23'"),
     Case("api-seed-negative", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, seed=-1)",
          expect="seed: must be an integer in [0,"),

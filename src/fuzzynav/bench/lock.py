@@ -46,4 +46,3 @@ def campaign_lock(out: Path):
             os.unlink(path)
     finally:
         os.close(fd)
-

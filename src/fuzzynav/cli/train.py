@@ -38,7 +38,7 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
     parser.add_argument("--episodes", type=int,
                         help=f"number of episodes / epochs in all, 1 to {validation.MAX_EPISODES:,} (task default); "
                              "a task learned in two phases, steering then speed, gives the speed phase a quarter "
-                             "(fql-goal, fql-wall) or a half (fql-avoid)")
+                             "(fql-goal, fql-goal-35, fql-wall) or a half (fql-avoid)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
@@ -83,10 +83,9 @@ def run(args) -> int:
         progress=progress.enabled() and not (args.quiet or args.json),
     )
     first_checkpoint = checkpoint_path(out, "steering")  # every resumable task's first phase
-    fresh = args.resume and not first_checkpoint.exists()
+    if args.resume and not first_checkpoint.exists():  # said before a run that may take hours
+        print(f"--resume: no checkpoint at {first_checkpoint}: training from the start", file=sys.stderr)
     result = train(request)
-    if fresh:
-        print(f"--resume: there was no checkpoint at {first_checkpoint}: trained from the start", file=sys.stderr)
     if args.json:
         print(json.dumps(result, default=str))
     else:
