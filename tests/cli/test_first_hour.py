@@ -170,17 +170,22 @@ def test_a_bad_controller_name_is_refused_before_the_compile_banner(command, tmp
 
 
 def test_no_controller_is_made_before_the_compile_banner(monkeypatch, tmp_path):
-    """Making a controller may compile (neural-tracker): numba's own notice would then come before
-    the banner that silences it, two banners on a first run."""
+    """Making a controller (neural-tracker) or loading a scenario may compile: numba's own notice
+    must not come before the banner, two banners on a first run."""
     from fuzzynav.catalog import controllers
+    from fuzzynav.cli import demo
+    from fuzzynav.jit import NOTICE
 
     events = []
+    monkeypatch.setattr(NOTICE, "said", False)
+    runs = demo.demo_runs
+    monkeypatch.setattr(demo, "demo_runs", lambda *a: events.append(f"runs, notice silenced: {NOTICE.said}") or runs(*a))
     monkeypatch.setattr("fuzzynav.cli.warmup.announce", lambda: events.append("announce"))
     make = controllers.make_controller
     monkeypatch.setattr(controllers, "make_controller", lambda *a, **k: events.append("make") or make(*a, **k))
     assert main(["demo", "--scenario", "fig-IV-12a", "--controllers", "goal-seeking", "--no-plots",
                  "--out", str(tmp_path / "d")]) == 0
-    assert events[0] == "announce" and "make" in events
+    assert events[:2] == ["runs, notice silenced: True", "announce"] and "make" in events  # loading may compile
     events.clear()
     assert main(["warmup", "--controllers", "goal-seeking"]) == 0
     assert events[0] == "announce" and "make" in events

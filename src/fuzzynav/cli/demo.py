@@ -101,6 +101,9 @@ def run(args) -> int:
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
           f"into {args.out}/", flush=True)
+    from fuzzynav.jit import NOTICE
+
+    NOTICE.silence()  # loading a scenario may compile (its start's placement check): the banner below says it
     skipped: list[tuple[str, str]] = []
     runs = demo_runs(args.scenario, args.controllers, skipped)  # bad names are refused before compiling is said
     for controller_name in dict.fromkeys(name for _, name in skipped):
