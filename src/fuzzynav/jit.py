@@ -8,6 +8,13 @@ on first use). Installs and upgrades rewrite every file, so numba's own check su
 guard is for working copies (an editable install being edited). Caches put elsewhere by
 ``NUMBA_CACHE_DIR`` are not checked: clear that directory after editing kernels.
 
+numba's cache is not safe between processes (numba issue 4807): two processes that compile two
+signatures of one kernel at once (the forked workers of ``evaluate``, ``bench`` or the demo, on a
+cold cache) can write one data file name for both, so a later run may load one signature's machine
+code for the other. Every kernel's cache file is therefore wrapped in :class:`LockedCacheFile`,
+which holds an advisory lock on its cache folder while it reads or writes (where ``fcntl``
+exists: Linux and macOS; Windows keeps numba's own guard).
+
 The first time in a process that one of the package's kernels is compiled rather than loaded
 from the cache, one line on stderr (:data:`COMPILE_NOTICE`) says so: a cold first run is silent
 for a while otherwise. ``fuzzynav warmup`` compiles them all up front, with a progress bar.
@@ -15,17 +22,24 @@ for a while otherwise. ``fuzzynav warmup`` compiles them all up front, with a pr
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import mmap
 import os
 import sys
 from pathlib import Path
 
+try:
+    import fcntl
+except ImportError:  # Windows
+    fcntl = None
+
 import numba
 from numba.core import event
 
 PACKAGE = Path(__file__).resolve().parent
 STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
+CACHE_LOCK = "fuzzynav-kernel-cache.lock"  # one per cache folder (LockedCacheFile)
 CACHE_SUFFIXES = (".nbi", ".nbc")
 COMPILE_NOTICE = ("fuzzynav: compiling kernels not yet in the cache (once: later runs load them; a first run "
                   "can spend a minute of CPU here, docs/results/first-run.md)")
@@ -82,9 +96,48 @@ def jit(function=None, *, fastmath: tuple = ()):
         return lambda f: jit(f, fastmath=fastmath)
     options = {"error_model": "numpy", "fastmath": set(fastmath) if fastmath else False}
     try:
-        return numba.njit(cache=True, **options)(function)
+        kernel = numba.njit(cache=True, **options)(function)
     except RuntimeError:  # "cannot cache function ...: no locator available"
         return numba.njit(**options)(function)
+    kernel._cache._cache_file = LockedCacheFile(kernel._cache._cache_file)
+    return kernel
+
+
+class LockedCacheFile:
+    """A kernel's numba cache file (index and data files) whose ``save`` and ``load`` hold a lock on
+    the cache folder: exclusive while saving (read the index, pick a data file, write both), shared
+    while loading, so no process reads or picks names from an index another is rewriting (module
+    docstring). Without ``fcntl``, or where the lock file cannot be opened (a folder it may not
+    write), it reads and writes as numba does."""
+
+    def __init__(self, cache_file) -> None:
+        self._cache_file = cache_file
+        self._lock_path = os.path.join(cache_file._cache_path, CACHE_LOCK)
+
+    @contextlib.contextmanager
+    def _locked(self, exclusive: bool):
+        try:
+            lock = open(self._lock_path, "a+b") if fcntl is not None else None
+        except OSError:  # a folder it may not write: numba's own way
+            lock = None
+        if lock is None:
+            yield
+            return
+        with lock:  # closing the file releases the lock
+            fcntl.flock(lock, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
+            yield
+
+    def save(self, key, data) -> None:
+        with self._locked(exclusive=True):
+            self._cache_file.save(key, data)
+
+    def load(self, key):
+        with self._locked(exclusive=False):
+            return self._cache_file.load(key)
+
+    def flush(self) -> None:
+        with self._locked(exclusive=True):
+            self._cache_file.flush()
 
 
 class CompileNotice(event.Listener):
