@@ -30,3 +30,18 @@ def test_scenario_controllers_key_is_validated():
         scenario_from_dict(doc, source="s.yaml")
     doc["controllers"] = ["goal-seeking"]
     assert scenario_from_dict(doc, source="s.yaml").controllers == ("goal-seeking",)
+
+
+def test_demo_workers_change_the_wall_time_only(tmp_path, capsys):
+    """Runs shared among worker processes give the same rows, plots and lines, in the runs' order."""
+    outputs = {}
+    for workers in ("1", "3"):
+        out = tmp_path / workers
+        assert main(["demo", "--scenario", "path-n", "--workers", workers, "--out", str(out)]) == 0
+        lines = [line for line in capsys.readouterr().out.splitlines() if line.startswith("[")]
+        outputs[workers] = (lines, (out / "metrics.json").read_text(),
+                            {plot.name: plot.read_bytes() for plot in out.glob("*.png")})
+    lines, metrics, plots = outputs["3"]
+    assert outputs["1"] == outputs["3"]
+    assert [line.split("]")[0] for line in lines] == [f"[{i}/5" for i in range(1, 6)]
+    assert len(plots) == 5 and len(json.loads(metrics)) == 5

@@ -3,7 +3,8 @@
 Each built-in scenario lists in its ``controllers`` key the controllers the thesis runs on it
 (chapter IV navigators on the Fig IV.12–IV.23 worlds, the trackers on the chapter V paths…).
 The demo first compiles the kernels its controllers use (``fuzzynav warmup``; a progress
-bar on the first run), then runs every pair, prints a progress line per run, and writes into DIR one trajectory /
+bar on the first run), then runs every pair in ``--workers`` processes (default: one per core; the
+results do not depend on it), prints a progress line per run in order, and writes into DIR one trajectory /
 command plot per run (``<scenario>--<controller>.png``) and the metrics table as
 ``metrics.md`` (Markdown) and ``metrics.json``. ``--scenario`` takes built-in names or your own
 scenario files, ``--controllers a,b`` the controllers to run on them (instead of their own list; each
@@ -17,8 +18,10 @@ time for moving targets (empty where a task has none).
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
+from fuzzynav import validation
 from fuzzynav.cli import arguments, help_line
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
@@ -39,6 +42,9 @@ fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-
     parser.add_argument("--controllers", metavar="A,B", type=arguments.names,
                         help="run these controllers (comma-separated) instead of each scenario's own list")
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
+    parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
+                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the number of cores); "
+                             "the results do not depend on it")
 
 
 def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list[tuple[str, str]]:
@@ -95,6 +101,27 @@ def markdown_table(rows: list[dict]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def run_one(item: tuple[str, str, Path | None]) -> tuple[dict, str]:
+    """One demo run, ``(scenario, controller, plot folder or None)``: its metrics row, and why it
+    did not reach its goal (the scenario's description) or ``""``; the plot written when a folder is
+    given. Module-level, so the demo's worker processes can run it."""
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.sim import metrics, run_episode
+    from fuzzynav.storage import file_name_part
+    from fuzzynav.world.scenario_file import open_scenario
+
+    name, controller_name, plots = item
+    scenario = open_scenario(name)
+    trace = run_episode(scenario, make_controller(controller_name), seed=0)
+    row = metrics(trace, scenario)
+    if plots is not None:
+        from fuzzynav.viz.trajectories import plot_episode
+
+        plot_episode(trace, scenario, plots / f"{file_name_part(scenario.name)}--{file_name_part(controller_name)}.png")
+    why = f" — the scenario: {scenario.description}" if row["outcome"] != "reached" and scenario.description else ""
+    return row, why
+
+
 def run(args) -> int:
     from fuzzynav.cli.warmup import announce, warm_up
 
@@ -110,27 +137,24 @@ def run(args) -> int:
         names = [name for name, skipped_name in skipped if skipped_name == controller_name]
         print(f"left out: {controller_name} on {', '.join(names)} (a task it cannot do)", flush=True)
     announce()  # making a controller may compile (neural-tracker): after the banner that silences the notice
-    from fuzzynav.catalog.controllers import make_controller
-    from fuzzynav.sim import metrics, run_episode
-    from fuzzynav.storage import file_name_part, write_text_atomic
-    from fuzzynav.world.scenario_file import open_scenario
+    from fuzzynav.bench.backends import pool_map
+    from fuzzynav.storage import write_text_atomic
 
     warm_up(list(dict.fromkeys(name for _, name in runs)))
     args.out.mkdir(parents=True, exist_ok=True)
-    rows = []
-    for index, (name, controller_name) in enumerate(runs, 1):
-        scenario = open_scenario(name)
-        name = scenario.name
-        trace = run_episode(scenario, make_controller(controller_name), seed=0)
-        row = metrics(trace, scenario)
-        rows.append(row)
-        if not args.no_plots:
-            from fuzzynav.viz.trajectories import plot_episode
+    rows: list[dict] = []
+    finished: dict[int, tuple[dict, str]] = {}
 
-            plot_episode(trace, scenario, args.out / f"{file_name_part(name)}--{file_name_part(controller_name)}.png")
-        why = f" — the scenario: {scenario.description}" if row["outcome"] != "reached" and scenario.description else ""
-        print(f"[{index}/{len(runs)}] {name} / {controller_name}: {row['outcome']} after {row['time_s']:.1f} s{why}",
-              flush=True)
+    def report(index: int, result: tuple[dict, str]) -> None:  # the lines in the runs' order
+        finished[index] = result
+        while len(rows) in finished:
+            row, why = finished.pop(len(rows))
+            rows.append(row)
+            print(f"[{len(rows)}/{len(runs)}] {row['scenario']} / {row['controller']}: {row['outcome']} "
+                  f"after {row['time_s']:.1f} s{why}", flush=True)
+
+    items = [(name, controller_name, None if args.no_plots else args.out) for name, controller_name in runs]
+    pool_map(run_one, items, min(args.workers or os.cpu_count() or 1, len(items) or 1), report)
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
