@@ -31,8 +31,9 @@ def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[
     """Run ``task(item)`` for every item, in this process (``workers`` = 1) or in a pool of
     ``workers`` processes whose ``initializer(*initargs)`` runs once each; ``on_result(index,
     result)`` per finished item, in the order they finish. A bounded window of items is in flight,
-    so memory stays flat on long runs. On Linux the workers are forked: they start with this
-    process' imports and loaded kernels."""
+    so memory stays flat on long runs; when an item fails, the items not yet started are dropped
+    and its error is raised once the running ones end. On Linux the workers are forked: they start
+    with this process' imports and loaded kernels."""
     if workers == 1:
         if initializer is not None:
             initializer(*initargs)
@@ -44,17 +45,21 @@ def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[
                              initargs=initargs) as pool:
         queue = enumerate(items)
         pending = {}
-        for index, item in queue:
-            pending[pool.submit(task, item)] = index
-            if len(pending) >= 4 * workers:
-                break
-        while pending:
-            done, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for future in done:
-                on_result(pending.pop(future), future.result())
-                following = next(queue, None)
-                if following is not None:
-                    pending[pool.submit(task, following[1])] = following[0]
+        try:
+            for index, item in queue:
+                pending[pool.submit(task, item)] = index
+                if len(pending) >= 4 * workers:
+                    break
+            while pending:
+                done, _ = wait(pending, return_when=FIRST_COMPLETED)
+                for future in done:
+                    on_result(pending.pop(future), future.result())
+                    following = next(queue, None)
+                    if following is not None:
+                        pending[pool.submit(task, following[1])] = following[0]
+        except BaseException:  # an item failed (or Ctrl-C): the items not started are dropped
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
 
 
 def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None], address: str | None) -> None:
