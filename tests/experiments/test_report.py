@@ -108,6 +108,19 @@ def test_the_verdict_counts_every_check():
         Check("c", 0, "= 0", True, "elsewhere")
 
 
+def test_experiments_in_worker_processes_give_the_numbers_of_one_process(tmp_path, capsys):
+    ids = ["fig-IV-13", "fig-V-7", "fig-VI-28"]
+    for workers in ("1", "3"):
+        assert main(["reproduce", *ids, "--quick", "--workers", workers, "--out", str(tmp_path / workers)]) == 0
+    printed = capsys.readouterr().out
+    for key in ids:
+        for name in (f"{key}.json", "claim.json"):  # the same, but for the folder they name
+            one, three = ((tmp_path / w / key / name).read_text().replace(str(tmp_path / w), "OUT") for w in ("1", "3"))
+            assert one == three, (key, name)
+        assert printed.count(f"{key}: reproduced (quick run)") == 2
+    assert read_page(tmp_path / "3")[0].sections == ids
+
+
 def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp_path, monkeypatch):
     """CONTRIBUTING's recipe: a function and its spec (with its claim) registered from outside."""
     def fig_ix_1(out_dir, quick=False, seed=0):

@@ -8,15 +8,18 @@ Each experiment writes into ``DIR/<id>/`` (PNG figures and ``<id>.json``, the nu
 measured, and ``claim.json``, the claim's checks and verdict); ``DIR/index.html`` puts the thesis'
 claim beside our figure and numbers for every experiment in DIR, with its checks, its verdict
 (reproduced, partly, not reproduced) and the run time
-(:mod:`fuzzynav.experiments.report`).
+(:mod:`fuzzynav.experiments.report`). The experiments are shared among ``--workers`` processes
+(default: one per core; each experiment's numbers do not depend on it, its run time does).
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
 import time
 from pathlib import Path
 
-from fuzzynav import progress
+from fuzzynav import progress, validation
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.catalog.roles import parse_option
 from fuzzynav.cli import arguments, help_line
@@ -40,9 +43,33 @@ def register(subparsers) -> None:
                         help="run with the rule base of ROLE replaced (gsb, oab, foa, roa, loa, vrb, wall, tracker; "
                              "any .yaml/.json/.fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` "
                              "writes a start) — to check that a claim depends on its table")
+    parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
+                        help=f"experiments run at once, 1 to {validation.MAX_WORKERS} (default: the number of "
+                             "cores); their numbers do not depend on it, their run times do")
+
+
+_WORKER = contextlib.ExitStack()  # a worker's settings, kept until it exits
+
+
+def start_worker(systems: dict) -> None:
+    """A worker process' setup: the replaced rule bases, and no progress bars (processes running
+    side by side cannot share the terminal's lines; the command's own bar counts the experiments)."""
+    from fuzzynav.experiments import rule_bases
+
+    _WORKER.enter_context(progress.quiet())
+    _WORKER.enter_context(rule_bases.replaced(systems))
+
+
+def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float]:
+    """Run experiment ``(id, its folder, quick, seed)``; its numbers and the seconds it took."""
+    key, folder, quick, seed = item
+    start = time.perf_counter()
+    numbers = registry.experiment(key)(folder, quick=quick, seed=seed)
+    return numbers, time.perf_counter() - start
 
 
 def run(args) -> int:
+    from fuzzynav.bench.backends import pool_map
     from fuzzynav.experiments import report, rule_bases
 
     if args.list or not args.ids:
@@ -54,25 +81,30 @@ def run(args) -> int:
             print("nothing run: name the ids to reproduce, or all (e.g. fuzzynav reproduce fig-IV-23 --out figures/)")
         return 0
     ids = list(registry.available()) if args.ids == ["all"] else args.ids
-    functions = [(key, registry.experiment(key)) for key in ids]  # validate every id first
+    for key in ids:  # validate every id first
+        registry.experiment(key)
     systems = rule_bases.from_options(args.fis)
     replaced = {role: path for role, path in map(parse_option, args.fis or [])}
     args.out.mkdir(parents=True, exist_ok=True)
+    items = [(key, report.experiment_dir(args.out, key), args.quick, args.seed) for key in ids]
+    workers = min(args.workers or os.cpu_count() or 1, len(items))
     with progress.quiet(args.quiet), rule_bases.replaced(systems):
-        bar = progress.bar(total=len(functions), desc="reproduce", unit="figure")
-        for key, function in functions:
-            bar.set_postfix_str(key)
-            start = time.perf_counter()
-            numbers = function(report.experiment_dir(args.out, key), quick=args.quick, seed=args.seed)
+        bar = progress.bar(total=len(items), desc="reproduce", unit="figure")
+
+        def finished(index: int, result: tuple[dict, float]) -> None:
+            key, folder = items[index][:2]
+            numbers, seconds = result
             if replaced:
                 numbers = {**numbers, "replaced_rule_bases": replaced}
-            record = report.record_run(args.out, key, numbers, time.perf_counter() - start, quick=args.quick,
-                                       seed=args.seed)
+            record = report.record_run(args.out, key, numbers, seconds, quick=args.quick, seed=args.seed)
             report.write_index(args.out)
             verdict = record["verdict"] + (" (quick run)" if args.quick else "") + (
                 f" with {', '.join(f'{role}={path}' for role, path in replaced.items())}" if replaced else "")
-            progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {report.experiment_dir(args.out, key)}")
+            progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {folder}")
             bar.update()
+
+        pool_map(reproduce_one, items, workers, finished, initializer=None if workers == 1 else start_worker,
+                 initargs=(systems,))
         bar.close()
     print(f"report: {args.out / 'index.html'}")
     return 0
