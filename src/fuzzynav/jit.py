@@ -99,7 +99,9 @@ def jit(function=None, *, fastmath: tuple = ()):
         kernel = numba.njit(cache=True, **options)(function)
     except RuntimeError:  # "cannot cache function ...: no locator available"
         return numba.njit(**options)(function)
-    kernel._cache._cache_file = LockedCacheFile(kernel._cache._cache_file)
+    cache = getattr(kernel, "_cache", None)  # none under NUMBA_DISABLE_JIT=1 (the plain function)
+    if cache is not None:
+        cache._cache_file = LockedCacheFile(cache._cache_file)
     return kernel
 
 
@@ -124,7 +126,10 @@ class LockedCacheFile:
             yield
             return
         with lock:  # closing the file releases the lock
-            fcntl.flock(lock, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
+            except OSError:  # a file system without locks: numba's own way
+                pass
             yield
 
     def save(self, key, data) -> None:

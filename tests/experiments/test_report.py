@@ -143,6 +143,26 @@ def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp
     assert "fig-IX-1" in read_page(tmp_path)[0].sections
 
 
+def test_an_experiment_registered_at_run_time_in_workers_started_afresh_is_a_clear_error(tmp_path, monkeypatch,
+                                                                                          capsys):
+    """Spawned workers (macOS, Windows; simulated here) know the thesis' experiments, not those a
+    script registered before calling the command: that is said, with the way out."""
+    from fuzzynav.bench import backends
+
+    fresh = Registry("experiment", "ID", registry.Experiment, group="fuzzynav.experiments")
+    monkeypatch.setattr(registry, "EXPERIMENTS", fresh)
+    for key in ("fig-IX-3", "fig-IX-4"):
+        registry.register_experiment(registry.Experiment(
+            key, "tests.catalog.plugin_figure:fig_ix_2", "registered by a script", "§IX.3",
+            Claim("The answer is 42.", "The answer is 42.",
+                  lambda n: [Check("answer", n["answer"], "= 42", n["answer"] == 42)])))
+    monkeypatch.setattr(backends, "FORKED", False)
+    assert main(["reproduce", "fig-IX-3", "fig-IX-4", "--workers", "2", "--out", str(tmp_path)]) == 2
+    error = capsys.readouterr().err
+    assert "unknown experiment 'fig-IX-" in error and "--workers 1" in error and "Traceback" not in error
+    assert main(["reproduce", "fig-IX-3", "--workers", "1", "--out", str(tmp_path)]) == 0
+
+
 def test_an_experiment_from_an_installed_distribution(tmp_path, monkeypatch):
     """The same from another distribution: its module and one entry point line, nothing of fuzzynav edited."""
     from tests.catalog.plugins import installed

@@ -26,40 +26,52 @@ from fuzzynav.errors import InputError
 BACKENDS = ("local", "ray")
 
 
+FORKED = sys.platform == "linux"  # pool_map's workers start as copies of this process (else afresh)
+
+
 def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[[int, Any], None], *,
              initializer: Callable | None = None, initargs: tuple = ()) -> None:
     """Run ``task(item)`` for every item, in this process (``workers`` = 1) or in a pool of
     ``workers`` processes whose ``initializer(*initargs)`` runs once each; ``on_result(index,
     result)`` per finished item, in the order they finish. A bounded window of items is in flight,
-    so memory stays flat on long runs; when an item fails, the items not yet started are dropped
-    and its error is raised once the running ones end. On Linux the workers are forked: they start
-    with this process' imports and loaded kernels."""
+    so memory stays flat on long runs. When an item fails, the items not yet started are dropped,
+    those running are waited for (their results still go to ``on_result``), and then the first
+    error is raised. Where :data:`FORKED` (Linux) the workers are forked: they start with this
+    process' imports, registries and loaded kernels."""
     if workers == 1:
         if initializer is not None:
             initializer(*initargs)
         for index, item in enumerate(items):
             on_result(index, task(item))
         return
-    context = multiprocessing.get_context("fork") if sys.platform == "linux" else None
+    context = multiprocessing.get_context("fork" if FORKED else "spawn")
     with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=initializer,
                              initargs=initargs) as pool:
         queue = enumerate(items)
-        pending = {}
-        try:
-            for index, item in queue:
-                pending[pool.submit(task, item)] = index
-                if len(pending) >= 4 * workers:
-                    break
-            while pending:
-                done, _ = wait(pending, return_when=FIRST_COMPLETED)
-                for future in done:
-                    on_result(pending.pop(future), future.result())
-                    following = next(queue, None)
-                    if following is not None:
-                        pending[pool.submit(task, following[1])] = following[0]
-        except BaseException:  # an item failed (or Ctrl-C): the items not started are dropped
-            pool.shutdown(wait=False, cancel_futures=True)
-            raise
+        pending: dict = {}
+        failure: BaseException | None = None
+        for index, item in queue:
+            pending[pool.submit(task, item)] = index
+            if len(pending) >= 4 * workers:
+                break
+        while pending:
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in done:
+                index = pending.pop(future)
+                if future.cancelled():
+                    continue
+                if future.exception() is not None:
+                    if failure is None:
+                        failure = future.exception()
+                        for waiting in pending:  # the running ones cannot be cancelled: they end
+                            waiting.cancel()
+                    continue
+                on_result(index, future.result())
+                following = next(queue, None) if failure is None else None
+                if following is not None:
+                    pending[pool.submit(task, following[1])] = following[0]
+        if failure is not None:
+            raise failure
 
 
 def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None], address: str | None) -> None:

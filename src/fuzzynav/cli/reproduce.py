@@ -62,9 +62,17 @@ def start_worker(systems: dict) -> None:
 
 def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float]:
     """Run experiment ``(id, its folder, quick, seed)``; its numbers and the seconds it took."""
+    from fuzzynav.errors import InputError
+
     key, folder, quick, seed = item
+    try:
+        function = registry.experiment(key)
+    except InputError as error:  # the command knew it (it checks every id first): its caller registered it
+        raise InputError(f"{error.problem}: it was registered in the calling process, which worker processes "
+                         "started afresh (macOS, Windows) do not share; run it with --workers 1",
+                         field="--workers") from None
     start = time.perf_counter()
-    numbers = registry.experiment(key)(folder, quick=quick, seed=seed)
+    numbers = function(folder, quick=quick, seed=seed)
     return numbers, time.perf_counter() - start
 
 
