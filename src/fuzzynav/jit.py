@@ -144,6 +144,12 @@ class LockedCacheFile:
         with self._locked(exclusive=True):
             self._cache_file.flush()
 
+    def __getattr__(self, name: str):
+        """Anything else numba may read of its cache file, from the file itself."""
+        if name == "_cache_file":  # not set yet (a copy being made): no recursion
+            raise AttributeError(name)
+        return getattr(self._cache_file, name)
+
 
 class CompileNotice(event.Listener):
     """Prints :data:`COMPILE_NOTICE` on stderr once, when numba starts compiling (a cache miss,

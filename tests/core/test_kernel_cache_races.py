@@ -76,3 +76,12 @@ def test_two_signatures_compiled_at_once_are_both_cached_intact(tmp_path):
     assert reader.returncode == 0, reader.stderr
     # each signature's own machine code, loaded (two hits, no compilation)
     assert reader.stdout.split() == ["8", "8.0", "2", "0"], reader.stdout
+
+
+def test_a_kernels_cache_file_is_locked_and_still_answers_as_numbas():
+    from fuzzynav.jit import LockedCacheFile
+    from fuzzynav.kernels import motion
+
+    cache_file = motion.turn_remainder._cache._cache_file
+    assert isinstance(cache_file, LockedCacheFile)
+    assert cache_file._index_path.endswith(".nbi")  # numba's own attributes pass through
