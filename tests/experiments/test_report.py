@@ -143,6 +143,29 @@ def test_an_experiment_from_outside_the_package_is_reproduced_with_its_claim(tmp
     assert "fig-IX-1" in read_page(tmp_path)[0].sections
 
 
+def test_workers_start_the_experiments_an_earlier_run_found_longest_first(tmp_path, monkeypatch):
+    from fuzzynav.bench import backends
+
+    ids = ["fig-IV-13", "fig-V-7", "fig-VI-28"]
+    assert main(["reproduce", *ids, "--quick", "--workers", "1", "--out", str(tmp_path)]) == 0
+    for key, seconds in zip(ids, (1.0, 100.0, 50.0)):
+        path = tmp_path / key / "run.json"
+        path.write_text(json.dumps({**json.loads(path.read_text()), "seconds": seconds}))
+    started = []
+
+    def one_by_one(task, items, workers, on_result, **options):
+        started.extend(item[0] for item in items)
+        for index, item in enumerate(items):
+            on_result(index, task(item))
+
+    monkeypatch.setattr(backends, "pool_map", one_by_one)
+    assert main(["reproduce", *ids, "fig-IV-12", "--quick", "--workers", "2", "--out", str(tmp_path)]) == 0
+    assert started == ["fig-IV-12", "fig-V-7", "fig-VI-28", "fig-IV-13"]  # never run here: first
+    started.clear()  # the quick runs' times do not order a full run
+    assert main(["reproduce", *ids, "--workers", "2", "--out", str(tmp_path)]) == 0
+    assert started == ids
+
+
 def test_an_experiment_registered_at_run_time_in_workers_started_afresh_is_a_clear_error(tmp_path, monkeypatch,
                                                                                           capsys):
     """Spawned workers (macOS, Windows; simulated here) know the thesis' experiments, not those a

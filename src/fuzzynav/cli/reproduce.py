@@ -94,8 +94,11 @@ def run(args) -> int:
     systems = rule_bases.from_options(args.fis)
     replaced = {role: path for role, path in map(parse_option, args.fis or [])}
     args.out.mkdir(parents=True, exist_ok=True)
+    workers = min(args.workers or os.cpu_count() or 1, len(ids))
+    if workers > 1:  # the longest first, by an earlier run's time in --out (unknown ones first of all)
+        earlier = {key: report.recorded_seconds(args.out, key, quick=args.quick) for key in ids}
+        ids = sorted(ids, key=lambda key: -(earlier[key] or float("inf")))
     items = [(key, report.experiment_dir(args.out, key), args.quick, args.seed) for key in ids]
-    workers = min(args.workers or os.cpu_count() or 1, len(items))
     with progress.quiet(args.quiet), rule_bases.replaced(systems):
         bar = progress.bar(total=len(items), desc="reproduce", unit="figure")
 

@@ -123,6 +123,16 @@ def _read_record(out_dir: Path, key: str) -> tuple[dict, dict, str]:
     return record, claim, numbers
 
 
+def recorded_seconds(out_dir: Path, key: str, *, quick: bool) -> float | None:
+    """The run time a readable earlier run of ``key`` recorded in ``out_dir`` with the same
+    ``quick`` setting, else None (``reproduce`` starts the longest first)."""
+    try:
+        record = _read_record(out_dir, key)[0]
+    except InputError:
+        return None
+    return float(record["seconds"]) if record["quick"] == quick else None
+
+
 def _section(key: str, record: dict, claim: dict, numbers: str, description: str, folder: Path) -> str:
     verdict = claim["verdict"]
     status = f'<span class="{VERDICT_CLASS[verdict]}">{html.escape(verdict)}</span>'
