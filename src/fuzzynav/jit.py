@@ -8,7 +8,7 @@ on first use). Installs and upgrades rewrite every file, so numba's own check su
 guard is for working copies (an editable install being edited). Caches put elsewhere by
 ``NUMBA_CACHE_DIR`` are not checked: clear that directory after editing kernels.
 
-numba's cache is not safe between processes (numba issue 4807): two processes that compile two
+numba's cache is not safe between processes (numba/numba#4807 on GitHub): two processes that compile two
 signatures of one kernel at once (the forked workers of ``evaluate``, ``bench`` or the demo, on a
 cold cache) can write one data file name for both, so a later run may load one signature's machine
 code for the other. Every kernel's cache file is therefore wrapped in :class:`LockedCacheFile`,

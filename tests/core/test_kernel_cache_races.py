@@ -1,7 +1,7 @@
 """Two processes compiling one kernel at once leave a cache every later process can trust.
 
 numba's cache file (``IndexDataCacheFile.save``) reads the kernel's index, picks the first free
-data file name, writes the index, then the data, with no lock (numba issue 4807). Two processes
+data file name, writes the index, then the data, with no lock (numba/numba#4807 on GitHub). Two processes
 that compile two signatures of one kernel at once (forked workers of ``evaluate`` or ``bench`` on a
 cold cache) can both pick ``kernel.1.nbc``: the index keeps one signature, and the data file may
 hold the other's machine code, which a later run loads and calls with the wrong argument types.
