@@ -126,10 +126,8 @@ class LockedCacheFile:
             yield
             return
         with lock:  # closing the file releases the lock
-            try:
+            with contextlib.suppress(OSError):  # a file system without locks: numba's own way
                 fcntl.flock(lock, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
-            except OSError:  # a file system without locks: numba's own way
-                pass
             yield
 
     def save(self, key, data) -> None:
