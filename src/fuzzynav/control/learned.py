@@ -88,7 +88,9 @@ GROUPS = np.array([FRONT, RIGHT, LEFT])
 def as_column(values, n: int) -> np.ndarray:
     """``values`` (a scalar or (n,)) as an (n,) float array for the kernels (no copy when it is one)."""
     values = np.asarray(values, dtype=float)
-    return values if values.shape == (n,) else np.broadcast_to(values, (n,))
+    if values.shape == (n,):
+        return values
+    return np.full(n, values) if values.ndim == 0 else np.broadcast_to(values, (n,))
 
 
 def _module_inputs(ranges, open_side: bool) -> np.ndarray:

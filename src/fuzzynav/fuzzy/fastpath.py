@@ -92,9 +92,9 @@ class _InputPartition:
         """Interval index k (0 … n_int − 1) with bp[k] <= x < bp[k+1] for clamped ``x``."""
         if self.lut is None:
             return np.searchsorted(self.inner, x, side="right")
-        k = np.take(self.lut, ((x - self.lo) * self.inv_h).astype(np.intp))
-        k += x >= np.take(self.right_edge, k)
-        k -= x < np.take(self.left_edge, k)
+        k = self.lut.take(((x - self.lo) * self.inv_h).astype(np.intp))
+        k += x >= self.right_edge.take(k)
+        k -= x < self.left_edge.take(k)
         return k
 
     @staticmethod
@@ -195,19 +195,19 @@ class StrongPartitionKernel:
         np.maximum(x, p.lo, out=x)
         np.minimum(x, p.hi, out=x)
         k = p.locate(x)
-        return k, (x - np.take(p.bp, k)) * np.take(p.inv_width, k)
+        return k, (x - p.bp.take(k)) * p.inv_width.take(k)
 
     def _accumulate(self, columns: np.ndarray):
         """Σ_cells f·num and Σ_cells f·den over the active term combinations, (n_out, N) each.
 
-        Written as 1-D ``np.take`` gathers and element-wise operations on contiguous columns,
+        Written as 1-D ``take`` gathers and element-wise operations on contiguous columns,
         the fastest NumPy idiom here (2-D fancy indexing and small-axis reductions are slower).
         """
         n = columns.shape[1]
         combos = [(None, None)]  # (cell offset, firing strength) per combination of active slots
         for p, x in zip(self.parts, columns):
             k, t = self._locate(p, x)
-            slots = [(np.take(p.term[s], k), np.take(p.ml[s], k) + t * np.take(p.dm[s], k))
+            slots = [(p.term[s].take(k), p.ml[s].take(k) + t * p.dm[s].take(k))
                      for s in range(p.term.shape[0])]
             combos = [(c2 if c1 is None else c1 + c2,
                        f2 if f1 is None else (f1 * f2 if self.product else np.minimum(f1, f2)))
@@ -216,8 +216,8 @@ class StrongPartitionKernel:
         den = np.zeros((self.num.shape[0], n))
         for o in range(self.num.shape[0]):
             for cell, f in combos:
-                num[o] += f * np.take(self.num[o], cell)
-                den[o] += f * np.take(self.den[o], cell)
+                num[o] += f * self.num[o].take(cell)
+                den[o] += f * self.den[o].take(cell)
         return num, den
 
     def _multilinear_batch(self, columns: np.ndarray):
@@ -228,9 +228,9 @@ class StrongPartitionKernel:
             prods = prods + [t if q is None else q * t for q in prods]
 
         def value(coef: np.ndarray) -> np.ndarray:
-            y = np.take(coef[0], cell)
+            y = coef[0].take(cell)
             for subset in range(1, len(prods)):
-                y += np.take(coef[subset], cell) * prods[subset]
+                y += coef[subset].take(cell) * prods[subset]
             return y
 
         num = [value(c) for c in self.coef_num]

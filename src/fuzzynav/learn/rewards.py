@@ -27,8 +27,13 @@ EPS = 1e-9
 
 
 def _first(conditions, values, default: float = 0.0) -> np.ndarray:
-    """Value of the first condition that holds, row by row (``default`` when none does)."""
-    return np.select(conditions, [np.float64(v) for v in values], default=default)
+    """Value of the first condition that holds, row by row (``default`` when none does): the
+    conditions written last to first, so the first that holds is written last (``np.select``'s
+    answer, at a fraction of its cost on the short rows of one robot)."""
+    out = np.full(np.broadcast_shapes(*(np.shape(c) for c in conditions)), float(default))
+    for condition, value in zip(reversed(conditions), reversed(values)):
+        np.copyto(out, float(value), where=condition)
+    return out
 
 
 @dataclass(frozen=True)

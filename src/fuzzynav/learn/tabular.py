@@ -40,6 +40,14 @@ from fuzzynav.world.geometry import wrap_angle
 METHODS = ("q_learning", "sarsa", "q_lambda")
 
 
+_add_at = np.add.at  # rows sharing one table may update the same pair: each addition counts
+
+
+def _add_unique(array: np.ndarray, index: tuple, values) -> None:
+    """``np.add.at`` where no pair repeats (one row, or one table per row): the same sums, cheaper."""
+    array[index] += values
+
+
 def _owners(n_tables: int, batch: int) -> np.ndarray:
     """Table index of each batch row: one table per row, or one shared table."""
     if n_tables == batch:
@@ -117,11 +125,12 @@ class TabularLearner:
         else:
             target = r + bootstrap * q_next.max(axis=-1)
         delta = (target - self.q[owners, s, a]) * live
+        add = _add_at if s.size > 1 and self.n_tables == 1 else _add_unique
         if self.method == "q_lambda":
             self._trace_update(owners, s, a, delta, q_next, a_next, live)
         else:
-            np.add.at(self.q, (owners, s, a), self._rate(owners, s, a) * delta)
-        np.add.at(self.visits, (owners, s, a), live)
+            add(self.q, (owners, s, a), self._rate(owners, s, a) * delta)
+        add(self.visits, (owners, s, a), live)
         return delta
 
     def _trace_update(self, owners, s, a, delta, q_next, a_next, live):

@@ -26,7 +26,8 @@ from typing import Any
 import numpy as np
 
 from fuzzynav.errors import InputError
-from fuzzynav.kernels import step as core
+from fuzzynav.kernels import step as core, traffic, worlds as kernel
+from fuzzynav.kernels.records import Robots
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world import moving as motion
@@ -48,6 +49,7 @@ class Fleet:
         self._setups: list = [None] * self.n
         self.scenes, self.scene_bounds = concatenate(self._scenes)  # filled by start
         self.setups, self.setup_bounds = concatenate(self._setups)
+        self._moving = False  # some robot's world has moving obstacles (set by start)
 
     def setup(self, **task) -> np.ndarray:
         """A robot's set-up array: these robots and sensors, the task of :func:`task_fields`."""
@@ -71,20 +73,17 @@ class Fleet:
             self.status[row] = 0
         self.scenes, self.scene_bounds = concatenate(self._scenes)
         self.setups, self.setup_bounds = concatenate(self._setups)
+        self._moving = any(world is not None and world.moving for world in self.worlds)
         self._place(range(self.n), 0)
-        from fuzzynav.kernels import worlds as kernel
-
         kernel.settle_rows(self.scenes, self.scene_bounds, self.setups, self.setup_bounds, rows, self.state,
                            self.ranges, self.status)
 
     def step(self, steering, speed, live) -> np.ndarray:
         """One step Δt of the ``live`` rows still running, under commands (α, V) (scalars or
         (n,)); the others stand still at speed 0. Returns the rows that moved (bool (n,))."""
-        from fuzzynav.kernels import worlds as kernel
-        from fuzzynav.kernels.records import Robots
-
         moved = np.asarray(live, dtype=bool) & self.running
-        self._place(np.flatnonzero(moved), 1)
+        if self._moving:
+            self._place(np.flatnonzero(moved), 1)
         commands = np.empty((self.n, 2))
         commands[:, 0], commands[:, 1] = steering, speed
         kernel.step(self.scenes, self.scene_bounds, self.setups, self.setup_bounds, commands, moved,
@@ -100,8 +99,6 @@ class Fleet:
     def _place(self, rows, ahead: int) -> None:
         """Write the moving obstacles of ``rows`` into their scenes where they are ``ahead``
         steps from now (:func:`fuzzynav.kernels.traffic.place`)."""
-        from fuzzynav.kernels import traffic
-
         for row in rows:
             world = self.worlds[row]
             if world is not None and world.moving:

@@ -33,7 +33,7 @@ unless ``start_speed`` says otherwise (a speed phase starting at the steering ph
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -116,8 +116,6 @@ class RobotEnv:
         states at both ends of the period, the speed at the end being the one the robot last
         drove at (a row that reached the goal mid-period arrived at that speed, not at rest).
         """
-        from dataclasses import replace
-
         before = self.state
         now = before
         live = ~self.done
