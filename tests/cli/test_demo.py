@@ -1,6 +1,7 @@
 """The main job: runs the built-in scenarios' controllers and writes plots and metrics."""
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -45,3 +46,19 @@ def test_demo_workers_change_the_wall_time_only(tmp_path, capsys):
     assert outputs["1"] == outputs["3"]
     assert [line.split("]")[0] for line in lines] == [f"[{i}/5" for i in range(1, 6)]
     assert len(plots) == 5 and len(json.loads(metrics)) == 5
+
+
+def test_the_next_hint_names_a_command_this_shell_can_type(tmp_path, monkeypatch):
+    """Run as ``.venv/bin/fuzzynav`` without activating the environment, the closing hint says
+    ``.venv/bin/fuzzynav``, not a bare ``fuzzynav`` the shell would not find."""
+    from fuzzynav.cli import demo
+
+    bin_dir = tmp_path / ".venv" / "bin"
+    bin_dir.mkdir(parents=True)
+    (bin_dir / "fuzzynav").write_text("#!/bin/sh\n")
+    monkeypatch.setattr(demo.sys, "executable", str(bin_dir / "python"))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(demo.shutil, "which", lambda name: None)
+    assert demo.command_name() == str(Path(".venv") / "bin" / "fuzzynav")
+    monkeypatch.setattr(demo.shutil, "which", lambda name: str(bin_dir / name))
+    assert demo.command_name() == "fuzzynav"

@@ -1,7 +1,8 @@
 """``fuzzynav demo --out DIR`` — the main job: every built-in thesis scenario with its controllers.
 
-Each built-in scenario lists in its ``controllers`` key the controllers the thesis runs on it
-(chapter IV navigators on the Fig IV.12–IV.23 worlds, the trackers on the chapter V paths…).
+Each built-in scenario lists in its ``controllers`` key the controllers to run on it: the thesis'
+own (the trackers on the chapter V paths…) or, on the chapter IV obstacle worlds, this package's
+variants of them (``fuzzy-2b``, ``fuzzy-5b-rays``).
 The demo first compiles the kernels its controllers use (``fuzzynav warmup``; a progress
 bar on the first run), then runs every pair in ``--workers`` processes (default: one per core; the
 results do not depend on it), prints a progress line per run in order, and writes into DIR one trajectory /
@@ -19,6 +20,8 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
+import sys
 from pathlib import Path
 
 from fuzzynav import validation
@@ -159,6 +162,21 @@ def run(args) -> int:
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
     print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
-    print("next: `fuzzynav run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b; "
-          "`fuzzynav COMMAND --help` shows each command with examples; the README's tour tries them all")
+    command = command_name()
+    print(f"next: `{command} run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b; "
+          f"`{command} COMMAND --help` shows each command with examples; the README's tour tries them all")
     return 0
+
+
+def command_name() -> str:
+    """How to type the command in this shell: ``fuzzynav`` when it is on the PATH, else the
+    script beside this Python (e.g. ``.venv/bin/fuzzynav`` of an environment not activated)."""
+    if shutil.which("fuzzynav"):
+        return "fuzzynav"
+    script = Path(sys.executable).parent / "fuzzynav"
+    if not (script.exists() or script.with_suffix(".exe").exists()):
+        return "fuzzynav"
+    try:
+        return os.path.relpath(script)
+    except ValueError:  # another drive (Windows)
+        return str(script)
