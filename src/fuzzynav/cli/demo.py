@@ -28,6 +28,11 @@ from fuzzynav import validation
 from fuzzynav.cli import arguments, help_line
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
+LEGEND = ("time_s: simulated seconds to the end of the run (its outcome); path_length_m: the length driven; "
+          "min_clearance_m: the least gap between the robot's footprint and any obstacle or the workspace's "
+          "boundary (the boundary alone in a world without obstacles; < 0 an overlap); final_distance_m: to the "
+          "goal, waypoint or target at the end; cross-track errors: from the path polyline (§V.4). Every field: "
+          "`fuzzynav run SCENARIO --json`, documented in fuzzynav.sim.metrics.\n")
 TASK_COLUMNS = {"path": ("mean_cross_track_m", "max_cross_track_m", "waypoints_reached"),
                 "target": ("capture_time_s",)}
 
@@ -101,7 +106,7 @@ def markdown_table(rows: list[dict]) -> str:
     columns = COLUMNS + tuple(key for task in tasks for key in TASK_COLUMNS.get(task, ()))
     lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     lines += ["| " + " | ".join(cell(row.get(key)) for key in columns) + " |" for row in rows]
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n\n" + LEGEND
 
 
 def run_one(item: tuple[str, str, Path | None]) -> tuple[dict, str]:
@@ -154,7 +159,7 @@ def run(args) -> int:
             row, why = finished.pop(len(rows))
             rows.append(row)
             print(f"[{len(rows)}/{len(runs)}] {row['scenario']} / {row['controller']}: {row['outcome']} "
-                  f"after {row['time_s']:.1f} s{why}", flush=True)
+                  f"after {row['time_s']:.1f} s simulated{why}", flush=True)
 
     items = [(name, controller_name, None if args.no_plots else args.out) for name, controller_name in runs]
     pool_map(run_one, items, min(args.workers or os.cpu_count() or 1, len(items) or 1), report)
