@@ -291,3 +291,22 @@ def test_an_analytic_expansion_stops_at_a_wall_across_the_way():
     assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)[0] == -1
     grid[:, 40] = 0.0  # a wall across the straight line at x = 4 m
     assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)[0] == -1
+
+
+def test_a_target_beyond_the_largest_grid_gets_no_plan_and_no_grid():
+    """A goal farther than the largest grid (``route.MAX_CELLS``: a box of 100 m at the car
+    route's 0.1 m cells) is left to the reactive layers: neither search builds the grid, whose
+    arrays would otherwise exhaust the memory (a 3 km world once failed to allocate 57 GB). Just
+    inside the bound both still plan."""
+    from fuzzynav.kernels import route
+
+    post = np.array([[3.0, 0.4]])
+    side = math.sqrt(route.MAX_CELLS) * SEARCH.cell  # the box's side at the bound, margins included
+    ahead = (0.0, 0.0, math.pi / 4)  # heading to the goal: a straight route, found at once where a grid is built
+    near = side - 2 * car_route.MARGIN - 1.0  # the box, margins included, just inside the bound
+    assert _plan(post, ahead, (near, near))[0]
+    found, poses, primitives = _plan(post, ahead, (side + 20.0, side + 20.0))
+    assert not found and poses.shape == (1, 3) and primitives.tolist() == [-1]
+    sightings = Sightings(post, 1)
+    assert not route.target(sightings, 0.0, 0.0, 300.0, 300.0, 0.5, 2.0)[0]  # 0.25 m cells: 250 m at most
+    assert route.target(sightings, 0.0, 0.0, 100.0, 100.0, 0.5, 2.0)[0]

@@ -34,6 +34,7 @@ import numpy as np
 from fuzzynav.jit import jit
 from fuzzynav.kernels import car_search, sightings
 from fuzzynav.kernels.motion import turn_remainder
+from fuzzynav.kernels.route import MAX_CELLS
 
 MARGIN = 1.5  # m of grid round the robot, the target and the points
 SLACK = 0.02  # m: the plan keeps the robot's present clearance less this, when below the radius asked
@@ -98,10 +99,13 @@ def plan(seen, robot, radius, body, search):
     frame, its first pose the start (primitive −1), each next one reached by the arc of
     ``primitives`` (:func:`fuzzynav.kernels.car_search.search` with the settings ``search``, a
     :class:`~fuzzynav.kernels.records.CarSearch`, keeping ``radius``, or less as the module
-    docstring says, never below ``body``); ``found`` False when the search gives up."""
+    docstring says, never below ``body``); ``found`` False when the search gives up, or when
+    its grid would exceed :data:`fuzzynav.kernels.route.MAX_CELLS`."""
     points, count, x, y, theta, tx, ty = seen.points, seen.count, robot.x, robot.y, robot.theta, robot.tx, robot.ty
     cell, comfort = search.cell, search.comfort
     radius, low_x, low_y, nx, ny = frame(seen, robot, radius, body, cell)
+    if nx * ny > MAX_CELLS:  # a target too far for a grid: no plan (the search gives up)
+        return False, np.array([[x, y, theta]]), np.full(1, -1, np.int64)
     clearance = clearance_grid(points, count, low_x, low_y, nx, ny, cell, radius + comfort)
     start = np.array([x - low_x, y - low_y, turn_remainder(theta)])
     front = car_search.wavefront(clearance, cell, int((ty - low_y) / cell), int((tx - low_x) / cell), radius,

@@ -29,6 +29,9 @@ from fuzzynav.jit import jit
 
 CELL = 0.25  # m
 MARGIN = 3.0  # m of grid around the robot, the goal and the points
+MAX_CELLS = 1_000_000  # the largest grid a search builds (a box of 250 m here, 100 m for the car route's
+# 0.1 m cells): a goal farther than that is left to the reactive layers until it comes nearer, where
+# the search's arrays (several times the cells, 8 bytes each) would otherwise exhaust the memory
 NEIGHBOURS_X = (1, -1, 0, 0, 1, 1, -1, -1)  # the 8 neighbours (x, y index steps), in the order tried
 NEIGHBOURS_Y = (0, 0, 1, -1, 1, -1, 1, -1)
 
@@ -65,7 +68,7 @@ def target(seen, sx, sy, gx, gy, inflate, ahead, cell=CELL):
     """(found, x, y): a point ``ahead`` m along the shortest route, on a grid of ``cell`` m, from
     (sx, sy) to (gx, gy) that keeps ``inflate`` from the first ``count`` of the ``points`` (P, 2)
     of ``seen`` (a :class:`~fuzzynav.kernels.records.Sightings`), world frame; ``found`` is False
-    when no route exists."""
+    when no route exists, or when the grid would exceed :data:`MAX_CELLS`."""
     points, count = seen.points, seen.count
     low_x, low_y, high_x, high_y = min(sx, gx), min(sy, gy), max(sx, gx), max(sy, gy)
     for p in range(count):
@@ -74,6 +77,8 @@ def target(seen, sx, sy, gx, gy, inflate, ahead, cell=CELL):
     low_x, low_y = low_x - MARGIN, low_y - MARGIN
     nx = int(math.ceil((high_x + MARGIN - low_x) / cell)) + 1
     ny = int(math.ceil((high_y + MARGIN - low_y) / cell)) + 1
+    if nx * ny > MAX_CELLS:
+        return False, 0.0, 0.0
     blocked = blocked_grid(points, count, low_x, low_y, nx, ny, inflate, cell)
     width = ny + 2
     start = (index(sx, low_x, nx, cell) + 1) * width + index(sy, low_y, ny, cell) + 1
