@@ -41,8 +41,23 @@ def test_published_table_iv_1_passes_and_a_wrong_sign_cell_fails(tmp_path, capsy
     failed = [c["name"] for c in claim["checks"] if not c["pass"]]
     assert any("published tables" in name for name in failed)  # the route or the switch points moved
     numbers = json.loads((tmp_path / "m" / "fig-IV-15" / "fig-IV-15.json").read_text())
-    assert numbers["replaced_rule_bases"] == {"gsb": edited}
+    assert numbers["replaced_rule_bases"] == {"gsb": edited} and "unused_rule_bases" not in numbers
     assert "with gsb=" in capsys.readouterr().out
+
+
+def test_a_table_the_experiment_never_reads_is_reported_unused(tmp_path, capsys):
+    """fig-V-7 (the tracker) reads no Table IV.1: its numbers with ``--fis gsb=FILE`` are the
+    published ones, and the report says so rather than credit the claim to the edited table; in
+    worker processes too, beside an experiment that does read it."""
+    edited = _edited(tmp_path, "gsb", "IF drg IS G AND theta IS NM THEN alpha", "NP")
+    assert main(["reproduce", "fig-V-7", "fig-IV-15", "--quick", "--fis", f"gsb={edited}", "--workers", "2",
+                 "--out", str(tmp_path / "r")]) == 0
+    out = capsys.readouterr().out
+    line = next(line for line in out.splitlines() if line.startswith("fig-V-7:"))
+    assert "does not use gsb" in line
+    numbers = {key: json.loads((tmp_path / "r" / key / f"{key}.json").read_text()) for key in ("fig-V-7", "fig-IV-15")}
+    assert numbers["fig-V-7"]["unused_rule_bases"] == ["gsb"]
+    assert "unused_rule_bases" not in numbers["fig-IV-15"]
 
 
 def test_a_biased_table_v_1_cell_fails_the_tracking_claims(tmp_path):

@@ -26,6 +26,8 @@ CASES = [
     ("q-ragged", lambda d: d["learner"]["q"][0].__setitem__(0, [1.0]), "learner.q: must be a table of numbers"),
     ("q-nan", lambda d: d["learner"]["q"][0][0].__setitem__(0, float("nan")), "learner.q: holds NaN"),
     ("visits-shape", lambda d: d["learner"].__setitem__("visits", [[0.0]]), "learner.visits: table shape"),
+    ("visits-negative", lambda d: d["learner"]["visits"][0][0].__setitem__(0, -3.0),
+     "learner.visits: visit counts must not be negative"),  # β = 1/(1 + visits) would make NaN qualities
     ("episode-text", lambda d: d.__setitem__("episode", "x"), "episode: must be a non-negative integer"),
     ("episode-negative", lambda d: d.__setitem__("episode", -3), "episode: must be a non-negative integer"),
     ("curve-not-lists", lambda d: d.__setitem__("curve", {"mean_reward": 1}), "curve: must map mean_reward"),

@@ -60,9 +60,11 @@ def start_worker(systems: dict) -> None:
     _WORKER.enter_context(rule_bases.replaced(systems))
 
 
-def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float]:
-    """Run experiment ``(id, its folder, quick, seed)``; its numbers and the seconds it took."""
+def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float, list[str]]:
+    """Run experiment ``(id, its folder, quick, seed)``; its numbers, the seconds it took and the
+    roles whose rule base it looked up (:func:`fuzzynav.experiments.rule_bases.reading`)."""
     from fuzzynav.errors import InputError
+    from fuzzynav.experiments import rule_bases
 
     key, folder, quick, seed = item
     try:
@@ -72,8 +74,9 @@ def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float]:
                          "started afresh (macOS, Windows) do not share; run it with --workers 1",
                          field="--workers") from None
     start = time.perf_counter()
-    numbers = function(folder, quick=quick, seed=seed)
-    return numbers, time.perf_counter() - start
+    with rule_bases.reading() as read:
+        numbers = function(folder, quick=quick, seed=seed)
+    return numbers, time.perf_counter() - start, sorted(read)
 
 
 def run(args) -> int:
@@ -102,15 +105,20 @@ def run(args) -> int:
     with progress.quiet(args.quiet), rule_bases.replaced(systems):
         bar = progress.bar(total=len(items), desc="reproduce", unit="figure")
 
-        def finished(index: int, result: tuple[dict, float]) -> None:
+        def finished(index: int, result: tuple[dict, float, list[str]]) -> None:
             key, folder = items[index][:2]
-            numbers, seconds = result
+            numbers, seconds, read = result
+            unused = sorted(set(replaced) - set(read))  # replaced, but never looked up: nothing changed
             if replaced:
                 numbers = {**numbers, "replaced_rule_bases": replaced}
+            if unused:
+                numbers = {**numbers, "unused_rule_bases": unused}
             record = report.record_run(args.out, key, numbers, seconds, quick=args.quick, seed=args.seed)
             report.write_index(args.out)
             verdict = record["verdict"] + (" (quick run)" if args.quick else "") + (
-                f" with {', '.join(f'{role}={path}' for role, path in replaced.items())}" if replaced else "")
+                f" with {', '.join(f'{role}={path}' for role, path in replaced.items())}" if replaced else "") + (
+                f" (this experiment does not use {', '.join(unused)}: its numbers are the published tables')"
+                if unused else "")
             progress.write(f"{key}: {verdict}, {record['seconds']:.1f} s -> {folder}")
             bar.update()
 

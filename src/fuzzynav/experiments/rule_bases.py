@@ -24,6 +24,7 @@ from fuzzynav.fuzzy.systems import get_system
 ROLE_SYSTEMS: dict[str, str] = {role: system for roles in ROLES.values() for role, system in roles.items()}
 
 _REPLACED: ContextVar[Mapping] = ContextVar("replaced_rule_bases", default=MappingProxyType({}))
+_READ: ContextVar[set | None] = ContextVar("rule_bases_read", default=None)
 
 
 @contextmanager
@@ -39,8 +40,27 @@ def replaced(systems: Mapping) -> Iterator[None]:
         _REPLACED.reset(token)
 
 
+@contextmanager
+def reading() -> Iterator[set]:
+    """Collect the roles the experiments inside look up (:func:`system`, :func:`systems_for`,
+    :func:`controller`): the replacement of a role never looked up changed nothing they ran."""
+    read: set = set()
+    token = _READ.set(read)
+    try:
+        yield read
+    finally:
+        _READ.reset(token)
+
+
+def _looked_up(roles) -> None:
+    read = _READ.get()
+    if read is not None:
+        read.update(roles)
+
+
 def system(role: str):
     """The system of ``role`` the experiments run now: the replacement, else the built-in one."""
+    _looked_up((role,))
     return _REPLACED.get().get(role) or get_system(ROLE_SYSTEMS[role])
 
 
@@ -51,6 +71,7 @@ def active() -> dict:
 
 def systems_for(name: str) -> dict:
     """The replacements in force for the roles of controller ``name`` ({role: system})."""
+    _looked_up(ROLES.get(name, {}))
     return {role: s for role, s in _REPLACED.get().items() if role in ROLES.get(name, {})}
 
 

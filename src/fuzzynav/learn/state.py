@@ -3,7 +3,8 @@ Algorithm VI.1) read back from a file: its quality table ``q``, the visit counts
 1/(1+visits) learning rate (eq III.24) and its episode count.
 
 Checkpoints (:mod:`fuzzynav.learn.checkpoint`) and the learners' ``from_dict`` share
-:func:`restore_state`: a table that is not numeric, not of the learner's shape or not finite is
+:func:`restore_state`: a table that is not numeric, not of the learner's shape or not finite, or a
+negative visit count, is
 an :class:`~fuzzynav.errors.InputError` naming the field — a damaged file never resumes
 training from NaN qualities.
 """
@@ -38,8 +39,11 @@ def state_array(saved: dict, name: str, shape: tuple, source: str | None) -> np.
 
 def restore_state(learner, saved: dict, source: str | None = None) -> None:
     """Put the learned state of ``saved`` (a learner's ``to_dict()``: tables ``q``, ``visits`` of
-    the learner's shape, finite, and its ``episode`` count, 0 when absent) into ``learner``."""
+    the learner's shape, finite, the visits not negative, and its ``episode`` count, 0 when absent)
+    into ``learner``."""
     q = state_array(saved, "q", learner.q.shape, source)
     visits = state_array(saved, "visits", learner.q.shape, source)
+    if (visits < 0).any():  # 1 / (1 + visits) would be negative or, at −1, infinite: NaN qualities
+        raise InputError("visit counts must not be negative", source=source, field="learner.visits")
     learner.episode = episode_count(saved.get("episode", 0), source, "learner.episode")
     learner.q, learner.visits = q, visits
