@@ -16,6 +16,7 @@ from fuzzynav.fuzzy.systems import get_system
 from fuzzynav.tune import session
 from fuzzynav.tune.fitness import Fitness
 from fuzzynav.tune.session import TuneRequest, tune
+from fuzzynav.world.scenario import load_scenario
 
 WORLDS = "mixed:4"  # four generated worlds; the held-out ones: mixed:4:1000
 SMALL = dict(worlds=WORLDS, population=4, budget=4 * 4 * 3, seed=0)
@@ -175,7 +176,21 @@ BAD = [
     (["fuzzy-2b:oab", "--worlds", "swamp:3"], "SUITE"),
     (["fuzzy-2b:oab", "--validation", "swamp:3"], "--validation"),
     (["fuzzy-2b:oab", "--population", "4", "--budget", "20"], "+ 16 validation episodes"),
+    (["fuzzy-tracker:tracker", "--population", "4", "--budget", "64"], "fuzzy-tracker has no compiled step"),
 ]
+
+
+def test_worlds_of_a_task_the_controller_cannot_do_are_refused_by_name(tmp_path, capsys):
+    """A goal seeker tuned on path scenarios would time out on every one and report a tuned table:
+    the world is refused by its name before any generation runs."""
+    from fuzzynav.world.scenario_file import save_scenario
+
+    path = load_scenario("path-n")
+    save_scenario(path, tmp_path / "p.yaml")
+    assert main(["tune", "goal-seeking:gsb", "--worlds", str(tmp_path), "--holdout", str(tmp_path),
+                 "--validation", "none", "--population", "2", "--budget", "4", "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "path-n: task: goal-seeking cannot do a path task" in err, err
 
 
 @pytest.mark.parametrize("argv,message", BAD, ids=[" ".join(a) for a, _ in BAD])

@@ -128,6 +128,7 @@ class Worlds:
     parameters (sized for its robot and ring), set-up array, scene and start, concatenated."""
 
     def __init__(self, scenarios, controller):
+        from fuzzynav.catalog.controllers import check_task
         from fuzzynav.sim.simulator import default_ring
         from fuzzynav.sim.tasks import TaskState
 
@@ -145,6 +146,10 @@ class Worlds:
             if scenario.task == "target":
                 raise InputError("tuning runs goal and path tasks, not moving targets", source=scenario.name,
                                  field="task")
+            try:
+                check_task(controller.name, scenario.task, field="task")
+            except InputError as error:  # e.g. a goal seeker on a path: it would time out on every world
+                raise InputError(error.problem, source=scenario.name, field="task") from None
             if len(scenario.world.moving):
                 raise InputError("tuning runs worlds whose obstacles stand still", source=scenario.name,
                                  field="obstacles")

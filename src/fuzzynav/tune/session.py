@@ -83,7 +83,7 @@ def check(request: TuneRequest):
     """Every option checked before any work; returns (controller, start system, suite, held-out suite)."""
     from fuzzynav.bench.suites import parse_suite
     from fuzzynav.catalog.controllers import spec_of
-    from fuzzynav.catalog.roles import default_system, make_with_systems, roles_of
+    from fuzzynav.catalog.roles import ROLES, default_system, make_with_systems, roles_of
     from fuzzynav.tune.space import SearchSpace
 
     controller, sep, role = request.target.partition(":")
@@ -137,7 +137,12 @@ def check(request: TuneRequest):
                          f"{request.population * suite.size + reserve} episodes at least", field="--budget")
     holdout = parse_suite(request.holdout) if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
-    return make_with_systems(controller, dict(request.systems)), system, suite, holdout
+    made = make_with_systems(controller, dict(request.systems))
+    if not callable(getattr(made, "compiled", None)):
+        tunable = [name for name in sorted(ROLES) if callable(getattr(make_with_systems(name, {}), "compiled", None))]
+        raise InputError(f"{controller} has no compiled step, and tune simulates each generation in one compiled "
+                         f"call; tunable: {', '.join(tunable)}", field="CONTROLLER:ROLE")
+    return made, system, suite, holdout
 
 
 def validation_suite(request: TuneRequest, suite):
