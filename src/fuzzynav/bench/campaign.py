@@ -18,6 +18,9 @@ Files in the output folder:
   :mod:`fuzzynav.robot.imperfections`); a ``--resume`` with others is refused likewise.
 - ``plant.json``: the plant that moved the robots (``--plant``, :mod:`fuzzynav.sim.plants`); a
   ``--resume`` with another plant is refused.
+- ``inputs.json``: the SHA-256 of every file the runs read under a name that may stay while the
+  content changes — the model files of ``--controllers`` (by label) and the scenario files of
+  folder suites; a ``--resume`` after one of them changed is refused, naming it.
 """
 
 from __future__ import annotations
@@ -139,11 +142,14 @@ def _describe(record: dict) -> str:
         or "no --fis"
 
 
+def _sha256(path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
 def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
     """Record the rule-base replacements (role, file, content hash) in ``fis.json``; a campaign
     whose runs were made with other ones (or none) is refused: it cannot mix them."""
-    record = {role: {"file": path, "sha256": hashlib.sha256(Path(path).read_bytes()).hexdigest()}
-              for role, path in fis}
+    record = {role: {"file": path, "sha256": _sha256(path)} for role, path in fis}
     path = out / "fis.json"
     if resuming:
         before = stored.read_replacements(path) if path.exists() else {}
@@ -151,6 +157,24 @@ def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
             raise InputError(f"its runs were made with {_describe(before)}, this campaign gives {_describe(record)}: "
                              "runs of different rule bases cannot be mixed (resume with the same --fis, or choose "
                              "another --out)", source=str(out), field="--fis")
+    write_text_atomic(path, json.dumps(record, indent=1) + "\n")
+
+
+def _check_inputs(out: Path, plan: Plan, resuming: bool) -> None:
+    """Record in ``inputs.json`` the content hash of the model files and folder-suite scenario
+    files the runs read; a campaign whose runs read another content under one of those names is
+    refused (a folder written before this file has nothing to compare)."""
+    record = {"models": {label: _sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
+              "worlds": {file: _sha256(file) for suite in plan.suites for file in suite.files}}
+    path = out / "inputs.json"
+    if resuming and path.exists():
+        before = stored.read_inputs(path)
+        changed = [name for part in ("models", "worlds") for name in sorted(before[part].keys() & record[part].keys())
+                   if before[part][name] != record[part][name]]
+        if changed:
+            raise InputError(f"changed since its runs were made: {', '.join(changed)}; runs of different files "
+                             "cannot be mixed (restore them, or choose another --out)", source=str(out),
+                             field="--resume")
     write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
 
@@ -224,6 +248,7 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
     _check_replacements(out, plan.fis, bool(previous))
     _check_perturbations(out, plan.perturb, bool(previous))
     _check_plant(out, plan.plant, bool(previous))
+    _check_inputs(out, plan, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))

@@ -1,0 +1,58 @@
+"""``fuzzynav bench --resume`` never mixes runs of two contents under one name: the model files
+and folder-suite scenario files a campaign read are hashed in ``inputs.json``."""
+
+import json
+
+from fuzzynav.cli import main
+from fuzzynav.world.scenario import load_scenario, scenario_from_dict
+from fuzzynav.world.scenario_file import save_scenario
+
+
+def _bench(worlds, out, *extra, controllers="goal-seeking"):
+    return main(["bench", str(worlds), "--controllers", controllers, "--workers", "1", "--out", str(out),
+                 "--quiet", "--gallery", "0", *extra])
+
+
+def _folder(tmp_path):
+    folder = tmp_path / "worlds"
+    folder.mkdir()
+    save_scenario(load_scenario("fig-IV-13"), folder / "a.yaml")
+    return folder
+
+
+def test_an_edited_world_file_is_refused_on_resume(tmp_path, capsys):
+    folder, out = _folder(tmp_path), tmp_path / "campaign"
+    assert _bench(folder, out) == 0
+    record = json.loads((out / "inputs.json").read_text())
+    assert record["models"] == {} and [len(d) for d in record["worlds"].values()] == [64]
+    assert _bench(folder, out, "--resume") == 0  # unchanged: resumes
+    edited = load_scenario(folder / "a.yaml").to_dict()
+    edited["max_time"] = 55.0  # the same name, another world
+    (folder / "a.yaml").unlink()
+    save_scenario(scenario_from_dict(edited), folder / "a.yaml")
+    capsys.readouterr()
+    assert _bench(folder, out, "--resume") == 2
+    err = capsys.readouterr().err.strip()
+    assert "changed since its runs were made" in err and "a.yaml" in err and len(err.splitlines()) == 1
+
+
+def test_a_replaced_model_file_is_refused_on_resume(tmp_path, capsys):
+    model = tmp_path / "m.json"
+    assert main(["train", "q-goal", "--episodes", "3", "--quiet", "--out", str(model)]) == 0
+    out = tmp_path / "campaign"
+    assert _bench("circles:1:3", out, controllers=str(model)) == 0
+    assert list(json.loads((out / "inputs.json").read_text())["models"]) == ["m"]
+    assert main(["train", "q-goal", "--episodes", "3", "--seed", "1", "--quiet", "--out", str(model)]) == 0
+    capsys.readouterr()
+    assert _bench("circles:1:3", out, "--resume", controllers=str(model)) == 2
+    assert "changed since its runs were made: m;" in capsys.readouterr().err
+
+
+def test_a_damaged_inputs_record_is_a_clear_error(tmp_path, capsys):
+    out = tmp_path / "campaign"
+    assert _bench("circles:1:3", out) == 0
+    (out / "inputs.json").write_text('{"models": {"m": "abc"}, "worlds": {}}\n')
+    capsys.readouterr()
+    assert _bench("circles:1:3", out, "--resume") == 2
+    err = capsys.readouterr().err.strip()
+    assert "inputs.json" in err and "models.m" in err and "64 lowercase hexadecimal" in err
