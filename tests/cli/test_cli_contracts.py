@@ -39,6 +39,21 @@ def test_negative_seed_is_a_usage_error(capsys, tmp_path, monkeypatch, argv):
     assert "Traceback" not in err and not list(tmp_path.iterdir())
 
 
+@pytest.mark.parametrize("argv,option", [
+    (["demo", "--no-plots", "--out", ""], "--out"),
+    (["reproduce", "fig-IV-12", "--quick", "--out", ""], "--out"),
+    (["train", "q-goal", "--episodes", "1", "--out", " "], "--out"),
+    (["evaluate", "--worlds", "circles", "--n", "1", "--save-failures", ""], "--save-failures"),
+    (["bench", "circles:1", "--out", ""], "--out"),
+    (["worlds", "generate", "circles", "--out", ""], "--out"),
+])
+def test_an_empty_path_is_a_usage_error_not_the_current_folder(capsys, tmp_path, monkeypatch, argv, option):
+    monkeypatch.chdir(tmp_path)
+    status, err = run_cli(capsys, *argv)
+    assert status == 2 and f"{option}: is empty" in err and "Traceback" not in err
+    assert not list(tmp_path.iterdir())  # nothing written into the current folder
+
+
 def test_evaluate_workers_out_of_range_is_a_usage_error(capsys):
     status, err = run_cli(capsys, "evaluate", "--worlds", "circles", "--n", "1", "--workers", "0")
     assert status == 2

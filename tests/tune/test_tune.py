@@ -177,6 +177,8 @@ BAD = [
     (["fuzzy-2b:oab", "--validation", "swamp:3"], "--validation"),
     (["fuzzy-2b:oab", "--population", "4", "--budget", "20"], "+ 16 validation episodes"),
     (["fuzzy-tracker:tracker", "--population", "4", "--budget", "64"], "fuzzy-tracker has no compiled step"),
+    (["fuzzy-2b:oab", "--holdout", "swamp:3"], "--holdout: "),
+    (["fuzzy-2b:oab", "--holdout", " "], "--holdout: is empty"),
 ]
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import re
 from collections.abc import Callable
+from pathlib import Path
 
 from fuzzynav.errors import InputError
 
@@ -88,6 +89,14 @@ def count(hi: int, lo: int = 1) -> Callable[[str], int]:
 
     parse.__name__ = "count"
     return parse
+
+
+def path(text: str) -> Path:
+    """A file or folder argument (``--out``, ``--save-failures``): not empty, which would
+    quietly mean the current folder."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("is empty: name a file or folder (. for the current one)")
+    return Path(text)
 
 
 def figure_path(text: str) -> str:

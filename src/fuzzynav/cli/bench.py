@@ -61,7 +61,7 @@ def register(subparsers) -> None:
     parser.add_argument("--ray-address", metavar="ADDR", default=None,
                         help="Ray cluster to join (default: $RAY_ADDRESS, else a local instance)")
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
-    parser.add_argument("--out", default="bench-out", metavar="DIR", help="output folder (default bench-out)")
+    parser.add_argument("--out", default="bench-out", type=arguments.path, metavar="DIR", help="output folder (default bench-out)")
     parser.add_argument("--resume", action="store_true", help="continue the campaign already in --out")
     parser.add_argument("--gallery", type=arguments.count(1000, lo=0), default=6, metavar="N",
                         help="failed runs drawn per controller, 0 to 1000 (default 6, 0: none)")

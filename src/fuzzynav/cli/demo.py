@@ -44,7 +44,7 @@ def register(subparsers) -> None:
                                example="""
 fuzzynav demo --out fuzzynav-out
 fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-5b,dwa --out my-demo/""")
-    parser.add_argument("--out", type=Path, default=Path("fuzzynav-out"), help="output folder")
+    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out"), help="output folder")
     parser.add_argument("--scenario", action="append", metavar="NAME|FILE",
                         help="only this built-in scenario or scenario file (repeatable)")
     parser.add_argument("--controllers", metavar="A,B", type=arguments.names,

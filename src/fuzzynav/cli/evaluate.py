@@ -16,7 +16,6 @@ from __future__ import annotations
 import json
 import os
 import sys
-from pathlib import Path
 
 from fuzzynav import progress as progress_bars, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
@@ -55,7 +54,7 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
-    parser.add_argument("--save-failures", type=Path, metavar="DIR",
+    parser.add_argument("--save-failures", type=arguments.path, metavar="DIR",
                         help="write each world not reached as DIR/<world>.yaml with its plot DIR/<world>.png")
 
 

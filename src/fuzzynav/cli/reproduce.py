@@ -35,7 +35,7 @@ def register(subparsers) -> None:
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
-    parser.add_argument("--out", type=Path, default=Path("fuzzynav-out/reproduce"), help="output folder")
+    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out/reproduce"), help="output folder")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--quiet", action="store_true", help="no progress bars")

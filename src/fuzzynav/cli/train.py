@@ -40,7 +40,7 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
                              "a task learned in two phases, steering then speed, gives the speed phase a quarter "
                              "(fql-goal, fql-goal-35, fql-wall) or a half (fql-avoid)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
-    parser.add_argument("--out", type=Path, help="model file to write, .json or .npz (default TASK.json)")
+    parser.add_argument("--out", type=arguments.path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=int, metavar="K",
                         help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")

@@ -28,7 +28,7 @@ fuzzynav run worlds/mixed-0-002.yaml""")
     generate.add_argument("--n", type=arguments.count(validation.MAX_WORLDS), default=10,
                           help=f"number of worlds, 1 to {validation.MAX_WORLDS:,} (default 10)")
     generate.add_argument("--seed", type=arguments.seed, default=0, help="world seed (default 0)")
-    generate.add_argument("--out", type=Path, default=Path("worlds"), help="output folder (default worlds/)")
+    generate.add_argument("--out", type=arguments.path, default=Path("worlds"), help="output folder (default worlds/)")
 
 
 def run(args) -> int:

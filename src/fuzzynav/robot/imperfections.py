@@ -116,7 +116,7 @@ def perturbed(imperfections: Imperfections, key: str, value, source=None) -> Imp
     (``robot.sensor_noise.range_sigma``; ``fuzzynav bench --perturb KEY=VALUE``)."""
     names = [f"robot.{group}.{name}" for group, keys in KEYS.items() for name in keys]
     if key not in names:
-        validation.fail(f"unknown key {validation.shown(key)}; known: {', '.join(names)}", source, "--perturb")
+        validation.fail(f"unknown key {validation.shown(key)}; known: {', '.join(names)}", source, key)
     name = key.rsplit(".", 1)[1]
     return replace(imperfections, **{name: _value(value, source, key, name)})
 

@@ -128,6 +128,9 @@ def check(request: TuneRequest):
     if request.resume and request.out is None:
         raise InputError("--resume needs --out (the checkpoint lives beside it)", field="--resume")
     SearchSpace(system, request.what)  # a system with nothing to tune fails here
+    for option, value in (("--worlds", request.worlds), ("--holdout", request.holdout)):
+        if value is not None and not str(value).strip():
+            raise InputError("is empty: name a family (mixed:40) or a folder of scenario files", field=option)
     suite = parse_suite(request.worlds)
     chooser = validation_suite(request, suite)
     reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
@@ -135,7 +138,11 @@ def check(request: TuneRequest):
         raise InputError(f"{request.budget} episodes do not cover one generation: {request.population} candidates × "
                          f"{suite.size} worlds{f' + {reserve} validation episodes' if reserve else ''} = "
                          f"{request.population * suite.size + reserve} episodes at least", field="--budget")
-    holdout = parse_suite(request.holdout) if request.holdout else (
+    try:
+        given = parse_suite(request.holdout) if request.holdout else None
+    except InputError as error:
+        raise InputError(error.problem, source=error.source, field="--holdout") from None
+    holdout = given if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
     made = make_with_systems(controller, dict(request.systems))
     if not callable(getattr(made, "compiled", None)):
