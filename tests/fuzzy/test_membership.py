@@ -44,8 +44,10 @@ def test_trapezoid_by_hand_and_open_shoulders():
     np.testing.assert_allclose(left(np.array([-1e9, 1.0, 1.5])), [1, 1, 0.5])
     right = Trapezoidal(2.8, 4.0, math.inf, math.inf)
     np.testing.assert_allclose(right(np.array([2.8, 3.4, 1e9])), [0, 0.5, 1])
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="trapezoid needs"):
         Trapezoidal(1.0, 0.0, 2.0, 3.0)
+    with pytest.raises(ValueError, match=r"triangle needs a <= b <= c, got \(0.5, 0.0, -0.5\)"):
+        Triangular(0.5, 0.0, -0.5)  # a file's triangle is named as one, not as the trapezoid it becomes
 
 
 def test_gaussian_bell_sigmoid_singleton_by_hand():

@@ -490,6 +490,8 @@ NAMES_AND_IMPORTS = [
          _eval("zero.fis"), expect="a fuzzy system needs at least one rule"),
     Case("fis-num-rules-disagrees", {"n.fis": _fis().replace("NumRules=2", "NumRules=3")}, _eval("n.fis"),
          expect="line 6 (NumRules): says 3, the file holds 2"),
+    Case("fis-num-mfs-disagrees", {"n.fis": _fis().replace("NumMFs=2", "NumMFs=9", 1)}, _eval("n.fis"),
+         expect="line 16 (NumMFs): says 9, [Input1] holds 2 MFs"),
     Case("fis-num-inputs-disagrees", {"n.fis": _fis().replace("NumInputs=1", "NumInputs=99999999999999999999")},
          _eval("n.fis"), expect="(NumInputs): says 99999999999999999999, the file holds 1"),
     Case("fis-unknown-type", {"t.fis": _fis().replace("Type='mamdani'", "Type='tsk'")}, _eval("t.fis"),

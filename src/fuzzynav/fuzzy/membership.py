@@ -115,6 +115,9 @@ class Triangular(Trapezoidal):
     kind = "triangle"
 
     def __init__(self, a: float, b: float, c: float):
+        a, b, c = (_as_float(n, v) for n, v in zip("abc", (a, b, c)))
+        if not a <= b <= c:
+            raise ValueError(f"triangle needs a <= b <= c, got {(a, b, c)}")
         super().__init__(a, b, b, c)
 
     def params(self) -> tuple[float, ...]:

@@ -107,7 +107,8 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
     fuzzylite resolves the name, so its reading keeps the last term of that name."""
     cls = model.OutputVariable if output else model.InputVariable
     var = cls("", -math.inf, math.inf)
-    order = []
+    order: list[str] = []
+    declared = None  # (NumMFs as written, its line)
     for key, value, line in section["items"]:
         if key == "Name":
             var.name = re.sub(r"\W", "", _text(value)) or "_"
@@ -129,10 +130,14 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
             else:
                 attribute = {"Enabled": "enabled", "LockPrevious": "lock_previous", "LockRange": "lock_range"}[key]
                 setattr(var, attribute, number == 1.0)
-        elif key != "NumMFs":
+        elif key == "NumMFs":
+            declared = (value.strip(), line)
+        else:
             raise lines.error(f"unknown key {key!r} in {section['name']}", line, key)
     if not var.name:
         raise lines.error(f"{section['name']} has no Name", section["line"], "Name")
+    if declared is not None and declared[0] != str(len(order)):  # as the [System] counts (_check_counts)
+        raise lines.error(f"says {declared[0]}, {section['name']} holds {len(order)} MFs", declared[1], "NumMFs")
     return var, order
 
 
