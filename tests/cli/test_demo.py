@@ -62,3 +62,14 @@ def test_the_next_hint_names_a_command_this_shell_can_type(tmp_path, monkeypatch
     assert demo.command_name() == str(Path(".venv") / "bin" / "fuzzynav")
     monkeypatch.setattr(demo.shutil, "which", lambda name: str(bin_dir / name))
     assert demo.command_name() == "fuzzynav"
+
+
+def test_an_unusable_out_is_refused_before_any_compiling(tmp_path, capsys, monkeypatch):
+    """A folder named metrics.json in --out used to fail after every run had finished."""
+    from fuzzynav.cli import warmup
+
+    monkeypatch.setattr(warmup, "warm_up", lambda *a, **k: pytest.fail("compiled before checking --out"))
+    (tmp_path / "metrics.json").mkdir()
+    assert main(["demo", "--scenario", "fig-IV-23", "--out", str(tmp_path), "--no-plots"]) == 2
+    err = capsys.readouterr().err
+    assert "metrics.json" in err and "--out" in err and "is a folder" in err

@@ -132,6 +132,7 @@ def run_one(item: tuple[str, str, Path | None]) -> tuple[dict, str]:
 
 def run(args) -> int:
     from fuzzynav.cli.warmup import announce, warm_up
+    from fuzzynav.errors import InputError
 
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
@@ -148,8 +149,11 @@ def run(args) -> int:
     from fuzzynav.bench.backends import pool_map
     from fuzzynav.storage import write_text_atomic
 
+    args.out.mkdir(parents=True, exist_ok=True)  # an unusable --out fails before the compiling, not after the runs
+    for table in ("metrics.json", "metrics.md"):
+        if (args.out / table).is_dir():
+            raise InputError("is a folder where the demo writes its table", source=str(args.out / table), field="--out")
     warm_up(list(dict.fromkeys(name for _, name in runs)))
-    args.out.mkdir(parents=True, exist_ok=True)
     rows: list[dict] = []
     finished: dict[int, tuple[dict, str]] = {}
 
