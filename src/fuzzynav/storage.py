@@ -191,7 +191,7 @@ def read_document(path) -> dict:
     """
     path = Path(path)
     if not path.is_file():
-        raise InputError("no such model file", source=str(path))
+        raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file", source=str(path))
     try:
         with path.open("rb") as handle:
             npz = handle.read(len(_NPZ_MAGIC)) == _NPZ_MAGIC

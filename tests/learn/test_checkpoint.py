@@ -94,6 +94,9 @@ def test_checkpoint_files_are_plain_json_and_checked(tmp_path):
         load_checkpoint(tmp_path / "model.json")
     with pytest.raises(InputError, match="no such model file"):
         load_checkpoint(tmp_path / "missing.json")
+    (tmp_path / "folder.json").mkdir()
+    with pytest.raises(InputError, match="is a folder, not a model file"):
+        load_checkpoint(tmp_path / "folder.json")
     with pytest.raises(InputError, match="episodes"):
         train_loop(ChainEnv(3), learner, -1, rng)
 

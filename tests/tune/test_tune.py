@@ -213,6 +213,15 @@ def test_a_damaged_checkpoint_is_a_one_line_error(tmp_path, capsys):
     assert len(err.splitlines()) == 1 and "oab.yaml.tune.npz" in err, err
 
 
+def test_a_folder_in_the_checkpoints_place_is_refused_before_tuning(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(Fitness, "__init__", lambda *a, **k: pytest.fail("simulated despite the folder"))
+    (tmp_path / "oab.yaml.tune.npz").mkdir()
+    assert main(["tune", "fuzzy-2b:oab", "--worlds", WORLDS, "--population", "4", "--budget", "32",
+                 "--out", str(tmp_path / "oab.yaml"), "--resume", "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "oab.yaml.tune.npz" in err and "is a directory" in err, err
+
+
 def test_resume_without_a_checkpoint_says_it_tunes_from_the_start(tmp_path, capsys):
     argv = ["tune", "fuzzy-2b:oab", "--worlds", WORLDS, "--population", "4", "--budget", "32",
             "--out", str(tmp_path / "oab.yaml"), "--resume", "--quiet"]

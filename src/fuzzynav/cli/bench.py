@@ -79,7 +79,8 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     for spec in specs:
         if is_model_file(spec):
             if not Path(spec).is_file():
-                raise InputError("no such model file", source=spec, field="--controllers")
+                raise InputError("is a folder, not a model file" if Path(spec).is_dir() else "no such model file",
+                                 source=spec, field="--controllers")
             spec = str(Path(spec).resolve())
         try:  # unknown names, controllers of other tasks and bad model files fail before any run
             if not is_model_file(spec):

@@ -67,6 +67,8 @@ def run(args) -> int:
                           progress=not (args.quiet or args.json))
     check(request)
     checkpoint = checkpoint_path(request)
+    if checkpoint is not None and checkpoint.is_dir():  # found now, not when the first generation is saved
+        raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
     if request.resume and checkpoint is not None and not checkpoint.is_file():
         print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
     with progress.quiet(not request.progress):
