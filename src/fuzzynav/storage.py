@@ -181,6 +181,15 @@ def _read_npz(path: Path) -> dict:
     return document
 
 
+def check_model_file(path, field: str | None = None) -> Path:
+    """``path`` as a Path when it is a file; else an InputError naming it: a folder, or missing."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file",
+                         source=str(path), field=field)
+    return path
+
+
 def read_document(path) -> dict:
     """Read a document written by :func:`save_document` (either format, whatever the name says)
     or an archive of arrays with a ``kind``; a file that is neither is an InputError naming it.
@@ -189,9 +198,7 @@ def read_document(path) -> dict:
     nesting and values; an ``.npz`` by the sizes its zip and array headers declare
     (:func:`fuzzynav.validation.check_npz`), never unpickled.
     """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file", source=str(path))
+    path = check_model_file(path)
     try:
         with path.open("rb") as handle:
             npz = handle.read(len(_NPZ_MAGIC)) == _NPZ_MAGIC

@@ -142,14 +142,14 @@ def _describe(record: dict) -> str:
         or "no --fis"
 
 
-def _sha256(path) -> str:
+def _file_sha256(path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
     """Record the rule-base replacements (role, file, content hash) in ``fis.json``; a campaign
     whose runs were made with other ones (or none) is refused: it cannot mix them."""
-    record = {role: {"file": path, "sha256": _sha256(path)} for role, path in fis}
+    record = {role: {"file": path, "sha256": _file_sha256(path)} for role, path in fis}
     path = out / "fis.json"
     if resuming:
         before = stored.read_replacements(path) if path.exists() else {}
@@ -164,8 +164,8 @@ def _check_inputs(out: Path, plan: Plan, resuming: bool) -> None:
     """Record in ``inputs.json`` the content hash of the model files and folder-suite scenario
     files the runs read; a campaign whose runs read another content under one of those names is
     refused (a folder written before this file has nothing to compare)."""
-    record = {"models": {label: _sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
-              "worlds": {file: _sha256(file) for suite in plan.suites for file in suite.files}}
+    record = {"models": {label: _file_sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
+              "worlds": {file: _file_sha256(file) for suite in plan.suites for file in suite.files}}
     path = out / "inputs.json"
     if resuming and path.exists():
         before = stored.read_inputs(path)

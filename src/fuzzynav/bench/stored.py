@@ -81,7 +81,7 @@ def read_replacements(path: Path) -> dict:
     for role, item in record.items():
         validation.known_keys(item, ("file", "sha256"), source, role, required=("file", "sha256"))
         validation.text(item["file"], source, f"{role}.file")
-        _sha256(item["sha256"], source, f"{role}.sha256")
+        _checked_sha256(item["sha256"], source, f"{role}.sha256")
     return record
 
 
@@ -92,11 +92,11 @@ def read_inputs(path: Path) -> dict:
     validation.known_keys(record, ("models", "worlds"), source, None, required=("models", "worlds"))
     for part in ("models", "worlds"):
         for name, digest in validation.mapping(record[part], source, part).items():
-            _sha256(digest, source, f"{part}.{name}")
+            _checked_sha256(digest, source, f"{part}.{name}")
     return record
 
 
-def _sha256(value, source: str, field: str) -> str:
+def _checked_sha256(value, source: str, field: str) -> str:
     digest = validation.text(value, source, field)
     if len(digest) != 64 or any(c not in "0123456789abcdef" for c in digest):
         raise InputError("must be 64 lowercase hexadecimal digits", source=source, field=field)

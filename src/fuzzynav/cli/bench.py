@@ -71,6 +71,7 @@ def register(subparsers) -> None:
 def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     from fuzzynav.bench.cells import build_controller, is_model_file
     from fuzzynav.catalog.controllers import check_task
+    from fuzzynav.storage import check_model_file
 
     specs = [spec.strip() for spec in text.split(",") if spec.strip()]
     if not specs:
@@ -78,10 +79,7 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
     pairs = []
     for spec in specs:
         if is_model_file(spec):
-            if not Path(spec).is_file():
-                raise InputError("is a folder, not a model file" if Path(spec).is_dir() else "no such model file",
-                                 source=spec, field="--controllers")
-            spec = str(Path(spec).resolve())
+            spec = str(check_model_file(spec, "--controllers").resolve())
         try:  # unknown names, controllers of other tasks and bad model files fail before any run
             if not is_model_file(spec):
                 check_task(spec, "goal", field="--controllers")  # a campaign's worlds are goal tasks

@@ -40,9 +40,6 @@ from fuzzynav.world.geometry import wrap_angle
 METHODS = ("q_learning", "sarsa", "q_lambda")
 
 
-_add_at = np.add.at  # rows sharing one table may update the same pair: each addition counts
-
-
 def _add_unique(array: np.ndarray, index: tuple, values) -> None:
     """``np.add.at`` where no pair repeats (one row, or one table per row): the same sums, cheaper."""
     array[index] += values
@@ -125,7 +122,8 @@ class TabularLearner:
         else:
             target = r + bootstrap * q_next.max(axis=-1)
         delta = (target - self.q[owners, s, a]) * live
-        add = _add_at if s.size > 1 and self.n_tables == 1 else _add_unique
+        # rows sharing one table may update the same pair, where each addition must count
+        add = np.add.at if s.size > 1 and self.n_tables == 1 else _add_unique
         if self.method == "q_lambda":
             self._trace_update(owners, s, a, delta, q_next, a_next, live)
         else:
