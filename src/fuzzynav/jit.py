@@ -42,7 +42,7 @@ STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
 CACHE_LOCK = "fuzzynav-kernel-cache.lock"  # one per cache folder (LockedCacheFile)
 CACHE_SUFFIXES = (".nbi", ".nbc")
 COMPILE_NOTICE = ("fuzzynav: compiling kernels not yet in the cache (once: later runs load them; a first run "
-                  "can spend a minute of CPU here, docs/results/first-run.md)")
+                  "can spend one to two minutes here, docs/results/first-run.md)")
 
 
 def _kernel_sources(package: Path) -> list[Path]:

@@ -79,7 +79,7 @@ def test_a_patrol_across_the_way_no_longer_leaves_a_wall_of_ghosts_to_drive_roun
     once the disc has passed (under 10 s). Both as version 6 drove: no yield layer, and the step after a
     back-up the navigator's (version 10 plans on at once, which takes the remembering robot round sooner)."""
     scenario = scenario_from_dict(patrol(1.0))
-    version_6 = {"yield_in_traffic": False, "guidance": {"guide_car_chain": 0.0}}
+    version_6 = {"yield_in_traffic": False, "guidance": {"guide_car_chain": 0.0}, "pace": {"pace_horizon": 1.5}}
     remembering = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False, **version_6), seed=0)
     forgetting = run_episode(scenario, fuzzy_5b_gap_robust(**version_6), seed=0)
     assert remembering.outcome == forgetting.outcome == "reached"
@@ -104,7 +104,8 @@ def test_a_held_out_dynamic_world_that_version_4_failed_is_now_passed():
     from fuzzynav.world.generate import generate_world
 
     scenario = generate_world("dynamic", 11, 2)
-    before = run_episode(scenario, fuzzy_5b_gap_robust(forget_moving=False, yield_in_traffic=False), seed=0)
+    version_4 = {"forget_moving": False, "yield_in_traffic": False, "pace": {"pace_horizon": 1.5}}
+    before = run_episode(scenario, fuzzy_5b_gap_robust(**version_4), seed=0)
     assert before.outcome == "collision"
     assert {"CAR-FWD", "CAR-BACK"} & set(before.behaviour[-10:])
     no_yield = fuzzy_5b_gap_robust(yield_in_traffic=False)  # the clearing alone, without version 7's yield layer

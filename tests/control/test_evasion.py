@@ -93,7 +93,7 @@ def test_it_gets_through_a_world_where_version_8_is_run_into():
     (``EVADE``) and reaches the goal (both driving the car route's arcs in tight places only, as
     then); today's default reaches it too."""
     scenario = generate_world("dynamic", 5, 2)
-    then = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0}}
+    then = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0}, "pace": {"pace_horizon": 1.5}}
     before = run_episode(scenario, fuzzy_5b_gap_robust(evade=False, **then), seed=0)
     assert before.outcome == "collision"
     after = run_episode(scenario, fuzzy_5b_gap_robust(**then), seed=0)

@@ -27,7 +27,8 @@ def _run(**options):
 
 @pytest.mark.slow
 def test_the_default_backs_out_of_the_wedge_where_version_7_stands_still():
-    then = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0}}  # the car route's arcs driven in tight places only, as then
+    then = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0},  # the car route's arcs driven in tight places only,
+            "pace": {"pace_horizon": 1.5}}  # and version 14's pace, as then
     wedged, freed = _run(barrier=0.0, **then), _run(**then)
     assert wedged.outcome == "timeout"
     stuck = wedged.speed[-200:]  # the last 20 s: the escape stands still

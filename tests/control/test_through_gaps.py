@@ -108,8 +108,9 @@ def test_version_13_turns_round_to_a_goal_behind_instead_of_swinging_wide():
     from fuzzynav.world.scenario_file import open_scenario
 
     scenario = open_scenario("office-0-007")
-    version_12 = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_off_heading": 0.0}), seed=0)
-    version_13 = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    then = {"pace": {"pace_horizon": 1.5}}  # version 14's pace, as then
+    version_12 = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_off_heading": 0.0}, **then), seed=0)
+    version_13 = run_episode(scenario, make_controller("fuzzy-5b", **then), seed=0)
     assert version_12.reached and version_13.reached and not version_13.collision
     assert version_13.time < 0.5 * version_12.time
     assert make_controller("fuzzy-5b").params[layers.PARAM.guide_off_heading] == pytest.approx(np.pi / 6)
@@ -209,9 +210,10 @@ def test_a_back_up_of_the_car_route_is_followed_by_the_next_plan_not_undone():
     from fuzzynav.world.scenario import load_scenario
 
     scenario = load_scenario("fig-IV-23")
-    undone = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_chain": 0, "guide_car_tight": 0.5, "guide_off_heading": 0.0}),
-                         seed=0)
-    chained = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_tight": 0.5, "guide_off_heading": 0.0}), seed=0)
+    then = {"guide_car_tight": 0.5, "guide_off_heading": 0.0}
+    paced = {"pace_horizon": 1.5}  # version 14's pace, as then
+    undone = run_episode(scenario, make_controller("fuzzy-5b", guidance={"guide_car_chain": 0, **then}, pace=paced), seed=0)
+    chained = run_episode(scenario, make_controller("fuzzy-5b", guidance=then, pace=paced), seed=0)
     assert undone.reached and chained.reached and not chained.collision
     assert back_ups(undone) >= 15 and back_ups(chained) <= 2
     assert chained.steps < 0.6 * undone.steps
@@ -229,7 +231,7 @@ def test_the_car_route_ends_inside_the_goals_tolerance():
 
     scenario = open_scenario("office-0-033")
     goal = scenario.goal.position
-    version_11 = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0}}
+    version_11 = {"guidance": {"guide_car_tight": 0.5, "guide_off_heading": 0.0}, "pace": {"pace_horizon": 1.5}}
     beside = run_episode(scenario, make_controller("fuzzy-5b", goal_share=0, **version_11), seed=0)
     inside = run_episode(scenario, make_controller("fuzzy-5b", **version_11), seed=0)
     assert beside.outcome == "timeout" and inside.reached and not inside.collision

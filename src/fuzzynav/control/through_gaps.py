@@ -79,7 +79,7 @@ GUIDANCE = Guidance(guide=1.0, guide_cell=0.15, guide_ahead=1.5, guide_replan=1.
                     guide_car_chain=1.0, guide_off_heading=math.pi / 6, guide_car_shot=10)
 GOAL_SHARE = 0.8  # the car route ends within this share of the goal's tolerance (RobustNavigator.for_goal)
 # the pace (units and meaning: kernels.layers.Pace)
-PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.5, pace_goal=1.0, pace_car=1.0)
+PACE = Pace(pace=1.0, pace_room=0.05, pace_horizon=1.25, pace_goal=1.0, pace_car=1.0)
 
 
 # the ranges of the settings the kernels' reasoning needs (:mod:`fuzzynav.settings`; any other
@@ -145,6 +145,8 @@ def fuzzy_5b_gap_robust(*, recovery: bool = True, escape: bool = True, guidance:
     beyond the radius, as version 11 did; ``guidance={"guide_off_heading": 0}`` steers straight at
     a target the line to which is free wherever it is, as version 12 did; ``guidance={"guide_car_shot": 0}``
     searches a route to a target off the heading to its end, without analytic expansions, as version 13 did;
+    ``pace={"pace_horizon": 1.5}`` leaves 1.5 s of travel ahead where the pace raises the speed, as
+    version 14 did;
     ``barrier`` > 0 lets the recovery back on steps that close that share of the body's gap
     (:func:`fuzzynav.kernels.recovery.may_step`) during the first ``barrier_within`` m of a
     back-up (0: throughout, the turn included); ``barrier=0`` backs only on safe steps, as
