@@ -45,7 +45,7 @@ def test_an_alias_builds_the_same_controller_under_the_name_asked_for():
     assert registry.spec_of("fuzzy-5b-gap-robust") is registry.CONTROLLERS["fuzzy-5b"]
     assert registry.make_controller("fuzzy-5b-gap-robust").name == "fuzzy-5b-gap-robust"
     assert registry.make_controller("fuzzy-5b").name == "fuzzy-5b"
-    assert registry.CONTROLLERS["fuzzy-5b"].version == 14 and "fuzzy-5b-rays" in registry.CONTROLLERS
+    assert registry.CONTROLLERS["fuzzy-5b"].version == 15 and "fuzzy-5b-rays" in registry.CONTROLLERS
     assert ROLES["fuzzy-5b-gap-robust"] == ROLES["fuzzy-5b"]
 
 

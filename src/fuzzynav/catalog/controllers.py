@@ -45,7 +45,7 @@ register_controller(ControllerSpec(
     "version added, and the options that give the earlier ones: docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
-    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=14))
+    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=15))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "
