@@ -68,7 +68,8 @@ def test_astar_pp_drives_round_where_the_grid_path_cannot_be_driven():
     following it hits a wall; the hybrid A* path turns in the room beyond, and the car gets there."""
     scenario = bay(1.4)
     grid = AStarPurePursuit(planner="grid")
-    assert run_episode(scenario, grid, seed=0).outcome == "collision" and grid.planner == "grid-A*"
+    # (it drove into the wall until the tracker learnt to back off, or stand, where no arc is clear)
+    assert run_episode(scenario, grid, seed=0).outcome == "timeout" and grid.planner == "grid-A*"
     before = PLANNERS["hybrid-A*"]
     hybrid = AStarPurePursuit()
     trace = run_episode(scenario, hybrid, seed=0)
@@ -118,3 +119,19 @@ def test_astar_pp_keeps_forward_plans_where_they_exist():
     navigator = AStarPurePursuit()
     navigator.prepare(generate_world("mixed", 0, 0))
     assert navigator.planner == "hybrid-A*" and navigator.gear is None and navigator.heading is None
+
+
+@pytest.mark.parametrize("world", [("maze", 4, 44), ("dead-end", 1, 68)])
+def test_astar_pp_never_drives_into_the_map_it_knows(world):
+    """Where the tracker lags a planned full-lock turn near a wall and no replan from there finds a
+    path (``maze`` seed 4 world 44; dead end 68 of seed 1), no arc ahead is clear: the car backs on a
+    clear arc behind, or stands, and no longer takes the clearest arc ahead into the wall. Every
+    replan tried counts, so the stalemate does not search at every step."""
+    family, seed, index = world
+    scenario = dead_ends(index + 1, seed)[index] if family == "dead-end" else generate_world(family, seed, index)
+    navigator = AStarPurePursuit()
+    trace = run_episode(scenario, navigator, seed=0, max_time=30.0)
+    labels = trace.behaviour.tolist()
+    assert trace.outcome != "collision" and metrics(trace, scenario)["min_clearance_m"] > 0
+    assert any(label.endswith("-back-check") for label in labels)
+    assert navigator.replans == 4  # the budget spent, on tries that found nothing too

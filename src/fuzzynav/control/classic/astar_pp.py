@@ -24,8 +24,10 @@ V_max · max(cos η, 0.25), η the bearing of that point, and at most √(``late
 path ahead (the next ``lookahead`` + 0.5 m) bends with curvature κ. The arc of the pure-pursuit
 steering up to the aimed point is checked against the map: when the body would come within
 ``check_margin`` of an obstacle on it, the nearest steering on a grid of 15 whose arc stays clear
-is taken instead (none: the clearest, at half speed), at a speed of at most 4/s times the arc's
-room (clearance less the radius; 0.5 m/s at least).
+is taken instead, at a speed of at most 4/s times the arc's room (clearance less the radius;
+0.5 m/s at least). When none is clear, the robot backs at ``reverse_speed`` on the clearest of
+the grid's arcs ``BACK_CHECK`` m behind it if that one is clear (``-back-check``), else takes the
+clearest arc ahead at half speed if the body stays off the map along it, else stands.
 
 A path with backward legs (runs of one gear between cusps) is tracked leg by leg, each to its
 cusp — left for the next leg once within ``CUSP`` of it, or within ``PASSED`` once the robot's
@@ -39,7 +41,7 @@ When the tracker cannot hold the plan — no checked arc is clear, or the robot 
 ``ASTRAY`` from its projection on the path (a full-lock turn cut wide, a leg begun off the path
 after a cusp) — hybrid A* plans again from the robot's pose with backward arcs (the ``BACKING``
 tries above, which leave the tracker a share of the steering), and the new path is tracked from
-its start; at most ``REPLANS`` times an episode (replanning in the loop, as the local planners of
+its start; at most ``REPLANS`` tries an episode, a try that finds nothing included (replanning in the loop, as the local planners of
 Kuwata et al., *Real-time motion planning with applications to autonomous urban driving*, IEEE
 Trans. Control Syst. Technol. 17(5), 2009). Where hybrid A* finds nothing from there, the plan
 is kept. A new episode (:meth:`reset`) starts from the prepared plan.
@@ -70,7 +72,8 @@ STANLEY_GAIN = 1.0  # 1/s: the cross-track gain of the Stanley law on paths with
 BACKING = {"reverse": 2.0, "gear": 5.0}  # hybrid A*'s backward arcs, when no forward path exists: few cusps
 BACKING_ROOM = 0.1  # m more room tried first with backward arcs (the legs are tracked less closely)
 BACKING_LOCK = 0.8  # share of the steering limit planned with backward arcs (the tracker keeps the rest)
-REPLANS = 4  # replans from the robot's pose per episode at most
+REPLANS = 4  # replans tried from the robot's pose per episode at most (found or not)
+BACK_CHECK = 0.3  # m of the arc behind checked before backing out of a pose with no arc ahead clear
 ASTRAY = 0.2  # m from the path beyond which the tracker plans again
 
 
@@ -207,10 +210,10 @@ class AStarPurePursuit(Controller):
         """Plan again from ``pose`` with backward arcs (module docstring); False, the plan kept, without a hybrid A* path."""
         planner, path, curvature, gear, heading = plan_path(self.scenario, self.body, self.inflation, self.search,
                                                             start=np.asarray(pose, dtype=float), careful=True)
+        self.replans += 1  # a try that finds nothing counts too: a stalemate does not search at every step
         if planner != "hybrid-A*":
             return False
         self.path, self.curvature, self.gear, self.heading = path, curvature, gear, heading
-        self.replans += 1
         self._follow()
         return True
 
@@ -259,24 +262,35 @@ class AStarPurePursuit(Controller):
             return Command(command.steering, -command.speed, command.behaviour + "-back")
         return command
 
-    def _checked(self, pose, steering: float, speed: float, length: float, backwards: bool = False) -> Command:
-        """The command with its arc up to ``length`` metres (behind the robot when ``backwards``)
-        checked against the map (module docstring)."""
-        candidates = np.concatenate([[steering], self.steering])
-        order = np.argsort(np.abs(candidates - steering), kind="stable")
+    def _arc_clearance(self, pose, candidates: np.ndarray, length: float, backwards: bool) -> np.ndarray:
+        """The least clearance of the body's centre along each steering's arc of ``length`` metres
+        from ``pose`` (behind the robot when ``backwards``), on the map."""
         lengths = np.linspace(0.1, 1.0, 10) * max(length, 0.3) * (-1.0 if backwards else 1.0)
         local = arcs(np.tan(candidates) / self.body.wheelbase, lengths)  # (A, K, 2) robot frame
         c, s = math.cos(float(pose[2])), math.sin(float(pose[2]))
         world = np.stack([pose[0] + c * local[..., 0] - s * local[..., 1],
                           pose[1] + s * local[..., 0] + c * local[..., 1]], axis=-1)
-        clearance = self.world.clearance(world.reshape(-1, 2)).reshape(local.shape[:2]).min(axis=1)
+        return self.world.clearance(world.reshape(-1, 2)).reshape(local.shape[:2]).min(axis=1)
+
+    def _checked(self, pose, steering: float, speed: float, length: float, backwards: bool = False) -> Command:
+        """The command with its arc up to ``length`` metres (behind the robot when ``backwards``)
+        checked against the map (module docstring)."""
+        candidates = np.concatenate([[steering], self.steering])
+        order = np.argsort(np.abs(candidates - steering), kind="stable")
+        clearance = self._arc_clearance(pose, candidates, length, backwards)
         clear = clearance >= self.body.radius + self.check_margin
         label = "HA*+PP" if self.planner == "hybrid-A*" else "A*+PP"
         if clear[order].any():
             best = order[np.argmax(clear[order])]
             room = float(clearance[best]) - self.body.radius  # slow down where the arc passes close
             return Command(float(candidates[best]), min(speed, max(0.5, 4.0 * room)), label)
-        return Command(float(candidates[np.argmax(clearance)]), 0.5 * speed, label + "-check")
+        if not backwards:  # no arc ahead is clear: back on the clearest arc behind, when that one is
+            behind = self._arc_clearance(pose, self.steering, BACK_CHECK, backwards=True)
+            if behind.max() >= self.body.radius + self.check_margin:
+                return Command(float(self.steering[np.argmax(behind)]), -self.reverse_speed, label + "-back-check")
+        clearest = int(np.argmax(clearance))  # at half speed while it keeps off the map, else stand
+        return Command(float(candidates[clearest]), 0.5 * speed if clearance[clearest] > self.body.radius else 0.0,
+                       label + "-check")
 
 
 def make(**options) -> AStarPurePursuit:
