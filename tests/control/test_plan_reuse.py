@@ -26,6 +26,7 @@ def _rest_touched(params, before, after, start):
 def test_the_car_route_is_reused_while_valid_and_dropped_when_an_obstacle_appears_on_it():
     at = layers.STATE
     controller = make_controller("fuzzy-5b")
+    # utrap world 1: a run that reuses, searches and drops a plan (world 0 drops none at version 15's pace)
     sim = BatchSimulator(generate_world("utrap", 0, 1), controller, seed=0, record=False)
     reused = searched = dropped = 0
     while not sim.done:

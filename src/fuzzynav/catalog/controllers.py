@@ -130,8 +130,9 @@ register_controller(ControllerSpec(
 register_controller(ControllerSpec(
     "astar-pp", "fuzzynav.control.classic.astar_pp:make",
     "MAP-AWARE reference: hybrid A* on the inflated map (backward arcs where no forward path exists) + pure "
-    "pursuit, planning again from its pose when it leaves the plan, backing off or standing where no arc ahead is "
-    "clear (knows the whole map); version 2 drove the clearest arc ahead there, version 1 planned once",
+    "pursuit, planning again from its pose when it leaves the plan; where no arc ahead is clear it backs off, or "
+    "takes the clearest only while it stays off the map, or stands (knows the whole map); version 2 drove the "
+    "clearest arc ahead there, version 1 planned once",
     "Dolgov et al. 2008; Coulter 1992; Kuwata et al. 2009", GOAL, needs_map=True, version=3))
 
 

@@ -34,15 +34,16 @@ cusp — left for the next leg once within ``CUSP`` of it, or within ``PASSED`` 
 projection is there — by the Stanley law (S. Thrun et al., *Stanley: the robot that won the DARPA
 Grand Challenge*, J. Field Robotics 2006) with the path's curvature fed forward: α = atan(l κ) +
 gear · (heading error) − atan(k · cross-track offset / (V + 0.1)), at most ``reverse_speed``
-backwards, slowing into a cusp; its arc is checked as above (behind the robot when backing). The
-last leg, forward to the goal, is driven by pure pursuit as a forward path is.
+backwards, slowing into a cusp; its arc is checked as above, behind the robot when backing (where
+no arc behind is clear: the clearest at half speed if the body stays off the map along it, else
+it stands). The last leg, forward to the goal, is driven by pure pursuit as a forward path is.
 
 When the tracker cannot hold the plan — no checked arc is clear, or the robot is more than
 ``ASTRAY`` from its projection on the path (a full-lock turn cut wide, a leg begun off the path
 after a cusp) — hybrid A* plans again from the robot's pose with backward arcs (the ``BACKING``
 tries above, which leave the tracker a share of the steering), and the new path is tracked from
-its start; at most ``REPLANS`` tries an episode, a try that finds nothing included (replanning in the loop, as the local planners of
-Kuwata et al., *Real-time motion planning with applications to autonomous urban driving*, IEEE
+its start; at most ``REPLANS`` tries an episode, a try that finds nothing included
+(replanning in the loop, as the local planners of Kuwata et al., *Real-time motion planning with applications to autonomous urban driving*, IEEE
 Trans. Control Syst. Technol. 17(5), 2009). Where hybrid A* finds nothing from there, the plan
 is kept. A new episode (:meth:`reset`) starts from the prepared plan.
 """
@@ -197,7 +198,7 @@ class AStarPurePursuit(Controller):
         if self.path is None:
             return Command(0.0, 0.0, "A*-no-path")
         command = self._track(obs)
-        if self.replans < REPLANS and self.hybrid and (command.behaviour.endswith("-check") or self._astray(obs)):
+        if self.replans < REPLANS and self.hybrid and ("-check" in command.behaviour or self._astray(obs)):
             if self._replan(obs.pose):
                 return self._track(obs)
         return command
@@ -284,7 +285,7 @@ class AStarPurePursuit(Controller):
             best = order[np.argmax(clear[order])]
             room = float(clearance[best]) - self.body.radius  # slow down where the arc passes close
             return Command(float(candidates[best]), min(speed, max(0.5, 4.0 * room)), label)
-        if not backwards:  # no arc ahead is clear: back on the clearest arc behind, when that one is
+        if not backwards:  # no arc ahead is clear: back on the clearest arc behind, when that one is clear
             behind = self._arc_clearance(pose, self.steering, BACK_CHECK, backwards=True)
             if behind.max() >= self.body.radius + self.check_margin:
                 return Command(float(self.steering[np.argmax(behind)]), -self.reverse_speed, label + "-back-check")
