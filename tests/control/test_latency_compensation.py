@@ -23,7 +23,8 @@ UNCHANGED = (("barn-6", "fuzzy-5b", ()), ("barn-6", "fuzzy-5b", NO_LATENCY), ("f
              ("fig-IV-23", "fuzzy-2b", ()), ("fig-IV-22b", "fuzzy-5b-rays", NO_LATENCY))
 # the default as the digests were recorded: its car route's forward arcs at a fixed speed, the
 # step after a back-up the navigator's, the arcs driven by the layer only in tight places (the pace
-# on the arcs, the chained plan and the wider driving came later and change the decisions, latency or none)
+# on the arcs, the chained plan, the wider driving and the 1.25 s pace horizon came later and change the
+# decisions, latency or none)
 OPTIONS = {"fuzzy-5b": {"pace": {"pace_car": 0.0, "pace_horizon": 1.5}, "guidance": {"guide_car_chain": 0.0, "guide_car_tight": 0.5, "guide_off_heading": 0.0}}}
 BEFORE = {
     'barn-6/fuzzy-5b/0': '2c8e8f3569b4e780453d14565ccc21ea7e8e3419e141a144fbc408500ecdaeb2',

@@ -34,6 +34,8 @@ def test_the_default_backs_out_of_the_wedge_where_version_7_stands_still():
     stuck = wedged.speed[-200:]  # the last 20 s: the escape stands still
     assert abs(stuck).max() == 0.0 and set(wedged.behaviour[-200:]) == {"BF"}
     assert freed.outcome == "reached" and freed.t[-1] < 20.0
+    today = _run()  # the default as it is (version 15's pace) gets out too
+    assert today.outcome == "reached" and not today.collision
     assert _back_ups(wedged) == [1] * 19  # one step each, 19 times over
     assert _back_ups(freed) == [2, 2]  # two steps each: 6 cm backed frees the body
     backing = [k for k, b in enumerate(freed.behaviour) if b == "REC-BACK"]

@@ -116,6 +116,19 @@ def test_version_13_turns_round_to_a_goal_behind_instead_of_swinging_wide():
     assert make_controller("fuzzy-5b").params[layers.PARAM.guide_off_heading] == pytest.approx(np.pi / 6)
 
 
+def test_version_15_paced_with_less_time_ahead_reaches_the_office_version_14_times_out_in():
+    """``office-0-079`` (a tuning world of version 15): with 1.5 s of travel left ahead by the pace,
+    version 14 times out there; with 1.25 s the default reaches it, without a collision."""
+    from fuzzynav.world.generate import generate_world
+
+    scenario = generate_world("office", 0, 79)
+    version_14 = run_episode(scenario, make_controller("fuzzy-5b", pace={"pace_horizon": 1.5}), seed=0)
+    version_15 = run_episode(scenario, make_controller("fuzzy-5b"), seed=0)
+    assert version_14.outcome == "timeout"
+    assert version_15.reached and not version_15.collision and version_15.time < 20.0
+    assert make_controller("fuzzy-5b").params[layers.PARAM.pace_horizon] == 1.25
+
+
 def test_route_guidance_gives_the_goal_where_the_straight_line_is_free():
     given = _aim([(x, 2.0) for x in np.arange(-4.0, -0.99, 0.1)])  # left of the line only
     np.testing.assert_allclose(given, [0.0, 10.0])

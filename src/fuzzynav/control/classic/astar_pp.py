@@ -43,9 +43,9 @@ When the tracker cannot hold the plan — no checked arc is clear, or the robot 
 after a cusp) — hybrid A* plans again from the robot's pose with backward arcs (the ``BACKING``
 tries above, which leave the tracker a share of the steering), and the new path is tracked from
 its start; at most ``REPLANS`` tries an episode, a try that finds nothing included
-(replanning in the loop, as the local planners of Kuwata et al., *Real-time motion planning with applications to autonomous urban driving*, IEEE
-Trans. Control Syst. Technol. 17(5), 2009). Where hybrid A* finds nothing from there, the plan
-is kept. A new episode (:meth:`reset`) starts from the prepared plan.
+(replanning in the loop, as the local planners of Kuwata et al., *Real-time motion planning with
+applications to autonomous urban driving*, IEEE Trans. Control Syst. Technol. 17(5), 2009). Where
+hybrid A* finds nothing from there, the plan is kept. A new episode (:meth:`reset`) starts from the prepared plan.
 """
 
 from __future__ import annotations
