@@ -78,8 +78,8 @@ def warm_up(controllers: list[str] | None = None) -> float:
 def announce() -> None:
     """The first line of a command that compiles up front: what is about to happen, said before
     numba is imported; the notice of :mod:`fuzzynav.jit` is then not needed."""
-    print("compiling the simulator's kernels if this is the first run (numba; later runs load them from the cache)",
-          file=sys.stderr, flush=True)
+    print("compiling the simulator's kernels if this is the first run (numba: one to two minutes once; later runs "
+          "load them from the cache in seconds)", file=sys.stderr, flush=True)
     from fuzzynav.jit import NOTICE
 
     NOTICE.silence()
