@@ -14,6 +14,12 @@ starting from the hand-made choice: an optimistic bound of what any learner choo
 same interpretations, reading the same distances, can reach on those courses. Prints one line
 per tried variable, then the best table as JSON.
 
+``wall-corners``: can any choice among those interpretations go round both corners of Fig VI.28
+(fig-VI-29's corner check)? Every steering choice (3^8 tables) with every rule's speed at the same
+interpretation (× 0.7, 1 or 1.3), run at both corners; then, from each table that goes round the
+second corner, a coordinate descent over all 16 per-rule choices for both. Prints the counts of
+the outcome pairs and the tables that reach both goals, as JSON (about 45 minutes with 2 workers).
+
 ``wall-collisions MODEL|wall-follow``: where a wall follower collides on those 96 courses — per
 collision, the time, whether the start leaves the robot any clear constant-steering forward arc
 (:func:`clear_arc`: full lock either way down to straight ahead; none clear means the start can
@@ -30,6 +36,7 @@ whose ``fuzzynav reproduce ID --seed S --out DIR`` numbers are in the DIRs: the 
     python benchmarks/chapter6_probes.py avoid-rules avoid-4.json
     python benchmarks/chapter6_probes.py wall-bound rays --sweeps 2
     python benchmarks/chapter6_probes.py wall-collisions wall-4.json
+    python benchmarks/chapter6_probes.py wall-corners --workers 2
 ``table-vi-1 SEED``: Table VI.1's four tabular learners (§VI.2) trained as ``fuzzynav reproduce
 table-VI-1`` trains them, but with another exploration and learning-rate schedule, to see whether
 the thesis' trend (more state–action pairs, more episodes) hides behind the package's schedule:
@@ -51,14 +58,18 @@ converge as JSON.
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
+import multiprocessing
 import re
+from collections import Counter
 from pathlib import Path
 
 import numpy as np
 
 from fuzzynav.catalog.tasks import load_controller
 from fuzzynav.control.learned import LearnedWallFollower
+from fuzzynav.experiments import chapter6_worlds
 from fuzzynav.experiments.chapter6 import rank_correlation
 from fuzzynav.experiments.claims_vi import RELATIVE, relative_over_seeds
 from fuzzynav.experiments.evaluation import evaluate_avoid, starts_in_a_wall, wall_course_scenario
@@ -73,6 +84,7 @@ from fuzzynav.learn.tasks.fql_wall import wall_parts
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import BatchSimulator, run_episode
 from fuzzynav.storage import save_document
+from fuzzynav.world.scenario import load_scenario
 
 RUNS = 100
 
@@ -156,18 +168,24 @@ def wall_collisions(model: str) -> dict:
             "starts_without_clear_arc": sum(not clear_arc(c.world, c.start) for _, c in evaluation_courses())}
 
 
+def interpreted(choice, sensing: str = "rays") -> LearnedWallFollower:
+    """Table VI.2's follower with the interpretations ``choice`` = (steering, speed): per rule, the
+    index of the learner's candidate (0, 1, 2: the label's value − 10° / × 0.7, itself, + 10° / × 1.3)."""
+    handmade, _, alpha, speed = wall_parts()
+    system = rule_table(handmade, [("alpha", alpha, np.asarray(choice[0])), ("v", speed, np.asarray(choice[1]))],
+                        name="probe", description="interpretation probe")
+    return LearnedWallFollower(system, sensing)
+
+
 def wall_bound(sensing: str, sweeps: int) -> dict:
     """Coordinate descent of the per-rule interpretations on the 100 evaluation courses."""
-    handmade, _, alpha, speed = wall_parts()
+    rules = wall_parts()[2].shape[0]
     courses = [course for _, course in evaluation_courses()]
 
     def collisions(choice):
-        system = rule_table(handmade, [("alpha", alpha, choice[0]), ("v", speed, choice[1])], name="probe",
-                            description="interpretation probe")
-        controller = LearnedWallFollower(system, sensing)
+        controller = interpreted(choice, sensing)
         return sum(BatchSimulator(s, controller, record=False).run().outcomes()[0] == "collision" for s in courses)
 
-    rules = alpha.shape[0]
     choice = [np.ones(rules, dtype=int), np.ones(rules, dtype=int)]  # the hand-made value of every label
     best = start = collisions(choice)
     for sweep in range(sweeps):
@@ -186,6 +204,57 @@ def wall_bound(sensing: str, sweeps: int) -> dict:
             break
     return {"sensing": sensing, "hand-made": int(start), "best": int(best),
             "alpha": choice[0].tolist(), "v": choice[1].tolist()}
+
+
+def corner_outcomes(choice) -> tuple[str, str]:
+    """The outcomes of :func:`interpreted` ``choice`` at the corners of Fig VI.28 (a, b), as
+    ``fuzzynav reproduce fig-VI-29`` runs them."""
+    controller = interpreted(choice)
+    return tuple(run_episode(corner, controller).outcome
+                 for corner in (load_scenario("fig-VI-28"), chapter6_worlds.second_corner()))
+
+
+def corners_reached(choice) -> int:
+    return sum(outcome == "reached" for outcome in corner_outcomes(choice))
+
+
+def corner_descent(start) -> tuple[int, list, list]:
+    """Coordinate descent of the 16 per-rule choices from ``start``, for the most corners reached
+    (two sweeps at most; stops when both are)."""
+    choice = [list(start[0]), list(start[1])]
+    best = corners_reached(choice)
+    for _ in range(2):
+        improved = False
+        for output in choice:
+            for r in range(len(output)):
+                keep = output[r]
+                for j in {0, 1, 2} - {keep}:
+                    output[r] = j
+                    if (reached := corners_reached(choice)) > best:
+                        best, keep, improved = reached, j, True
+                output[r] = keep
+                if best == 2:
+                    return best, *choice
+        if not improved:
+            break
+    return best, *choice
+
+
+def wall_corners(workers: int) -> dict:
+    """Every steering choice (3^8) at each of the three speed interpretations taken by every rule:
+    the outcomes at the two corners; then, from each table that goes round corner b, a coordinate
+    descent over all 16 choices (:func:`corner_descent`)."""
+    rules = wall_parts()[2].shape[0]
+    tables = [(steering, (v,) * rules) for v in (0, 1, 2) for steering in itertools.product((0, 1, 2), repeat=rules)]
+    with multiprocessing.Pool(workers) as pool:
+        outcomes = pool.map(corner_outcomes, tables, chunksize=64)
+        counts = Counter(" / ".join(pair) for pair in outcomes)
+        starts = [table for table, pair in zip(tables, outcomes) if pair[1] == "reached"]
+        descents = pool.map(corner_descent, starts, chunksize=1)
+    return {"tables": len(tables), "outcomes (a / b)": dict(counts.most_common()),
+            "both reached": counts["reached / reached"], "descents from b reached": len(starts),
+            "corners reached after the descent": dict(Counter(best for best, _, _ in descents)),
+            "both reached after the descent": [[a, v] for best, a, v in descents if best == 2]}
 
 
 class PerStateEpsilon(TabularLearner):
@@ -245,6 +314,8 @@ def main() -> None:
     wall = sub.add_parser("wall-bound")
     wall.add_argument("sensing", choices=("rays", "modules"))
     wall.add_argument("--sweeps", type=int, default=2)
+    corners = sub.add_parser("wall-corners")
+    corners.add_argument("--workers", type=int, default=2)
     collisions = sub.add_parser("wall-collisions")
     collisions.add_argument("model", help="an fql-wall model file, or wall-follow (Table VI.2)")
     relative = sub.add_parser("relative")
@@ -267,6 +338,8 @@ def main() -> None:
         print(json.dumps(probe(args.seed, args.schedule, args.episodes, Path(args.out))))
     elif args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
+    elif args.probe == "wall-corners":
+        print(json.dumps(wall_corners(args.workers)))
     elif args.probe == "wall-collisions":
         print(json.dumps(wall_collisions(args.model)))
     elif args.probe == "relative":

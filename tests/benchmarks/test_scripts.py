@@ -108,7 +108,8 @@ NOT_RUN_HERE = {
     "tuning_compare.py": "a tuner needs at least one generation: 400 episodes",
     "train_time.py": "trains with the task's whole default budget in fresh processes",
     "chapter6_probes.py": "avoid-rules reads a trained fql-avoid model (minutes of training first); wall-bound "
-                          "searches the wall follower's interpretations for tens of minutes; table-vi-1 trains four tables "
+                          "searches the wall follower's interpretations for tens of minutes, wall-corners runs 19,683 of them at "
+                          "two corners (45 minutes); table-vi-1 trains four tables "
                           "(20 s for 60 episodes each)",
     "irsim_peer.py": "needs the ir-sim package (its own virtualenv); its world conversion is tested below",
     # smallest runs (the arguments given) of 20-45 s on an idle 2-core machine:
