@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import csv
 import difflib
+import functools
 import io
 import json
 import math
@@ -224,6 +225,21 @@ def _finite(system, X, Y, source: str) -> None:
                          "non-finite value)", source=source, field=system.output_names[column])
 
 
+def _naming_the_system(action):
+    """``action`` whose :class:`InputError` without a source (a term's formula giving inf, say)
+    names the system or file it was asked of."""
+    @functools.wraps(action)
+    def named(args) -> int:
+        try:
+            return action(args)
+        except InputError as error:
+            if error.source:
+                raise
+            raise InputError(error.problem, source=args.system, field=error.field) from None
+    return named
+
+
+@_naming_the_system
 def _eval(args) -> int:
     system = resolve(args.system)
     if args.csv:
@@ -278,6 +294,7 @@ def _export_c(args) -> int:
     return 0
 
 
+@_naming_the_system
 def _plot(args) -> int:
     from fuzzynav.fuzzy.plot import plot_surface, plot_system
 

@@ -14,6 +14,7 @@ import re
 
 import numpy as np
 
+from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import MembershipFunction
 from fuzzynav.validation import MAX_DEPTH
 
@@ -152,7 +153,8 @@ class Function(MembershipFunction):
     def __init__(self, formula: str):
         self.formula = str(formula).strip()
         self.tree = _Parser(self.formula).parse()
-        self.variables = _names(self.tree) - {"x"}
+        self.reads = _names(self.tree)
+        self.variables = self.reads - {"x"}
 
     def params(self) -> tuple:
         return (self.formula,)
@@ -163,4 +165,24 @@ class Function(MembershipFunction):
         missing = self.variables - values.keys()
         if missing:
             raise ValueError(f"formula {self.formula!r} uses unknown variable(s) {', '.join(sorted(missing))}")
-        return np.broadcast_to(_run(self.tree, values), np.shape(values["x"])).astype(float)
+        result = np.broadcast_to(_run(self.tree, values), np.shape(values["x"])).astype(float)
+        if np.isinf(result).any():
+            self._refuse_infinite(result, values)
+        return result
+
+    def _refuse_infinite(self, result: np.ndarray, values: dict) -> None:
+        """An :class:`InputError` where the formula gives ±inf from finite values of what it reads
+        (a pole, a log of 0): no membership degree or conclusion is infinite, and inference would
+        turn it into NaN, which an output's default then hides. NaN passes on as fuzzylite passes
+        it (``sin(x)/x`` at 0 in its own examples), and so does an infinite value read."""
+        shape = result.shape
+        known = np.ones(shape, dtype=bool)
+        for name in sorted(self.reads):
+            known &= np.broadcast_to(np.isfinite(np.asarray(values[name], dtype=float)), shape)
+        broken = known & np.isinf(result)
+        if broken.any():
+            at = np.unravel_index(int(np.flatnonzero(broken.ravel())[0]), shape)
+            where = ", ".join(f"{name}={float(np.broadcast_to(np.asarray(values[name], dtype=float), shape)[at])!r}"
+                              for name in sorted(self.reads)) or "every input"
+            raise InputError(f"gives {float(result[at])!r} at {where}: a membership degree or conclusion must be "
+                             "finite", field=f"formula {self.formula!r}")

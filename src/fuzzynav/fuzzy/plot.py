@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
@@ -27,16 +28,24 @@ def plot_variable(variable: Variable, ax=None, samples: int = 801):
         ax = _figure(figsize=(6, 2.6), layout="constrained").add_subplot()
     lo, hi = variable.universe
     x = np.linspace(lo, hi, samples)
+    others = []  # formulas of other variables: no shape over this one's axis
     for label, mf in variable.terms.items():
         if isinstance(mf, Singleton):
             line = ax.vlines(mf.value, 0, 1, linewidth=2)
             ax.annotate(label, (mf.value, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color()[0])
         elif isinstance(mf, Linear):
             continue  # an affine conclusion has no shape on the output axis
+        elif isinstance(mf, Function) and mf.variables - {variable.name}:
+            others.append(f"{label} = {mf.formula}")
         else:
-            (line,) = ax.plot(x, mf(x), linewidth=1.5)
-            peak = x[np.argmax(mf(x))]
+            with np.errstate(all="ignore"):  # a formula may divide by zero somewhere on the axis
+                mu = mf(x, {variable.name: x}) if isinstance(mf, Function) else mf(x)
+            (line,) = ax.plot(x, mu, linewidth=1.5)
+            peak = x[np.nanargmax(np.where(np.isfinite(mu), mu, np.nan))] if np.isfinite(mu).any() else x[0]
             ax.annotate(label, (peak, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color())
+    if others:
+        ax.text(0.01, 0.97, "not drawn (formulas of other variables): " + "; ".join(others), transform=ax.transAxes,
+                fontsize=7, va="top")
     pad = 0.03 * (hi - lo) if any(isinstance(mf, Singleton) for mf in variable.terms.values()) else 0.0
     ax.set_xlim(lo - pad, hi + pad)
     ax.set_ylim(0, 1.15)
