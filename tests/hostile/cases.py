@@ -398,6 +398,9 @@ def _row_case(name: str, expect: str, **changes) -> Case:
 
 
 CAMPAIGN = [
+    Case("tune-folder-with-a-path-task", {"c.yaml": "robot: {x: 1, y: 1}\npath: [[2, 2], [8, 8]]\n"},
+         ("tune", "fuzzy-2b:oab", "--worlds", "{d}", "--budget", "400", "--out", "{d}/o.yaml"),
+         expect="c.yaml: task: fuzzy-2b cannot do a path task"),
     _row_case("seed-abc", "line 1.seed: must be an integer", seed="abc"),
     _row_case("seed-null", "line 1.seed: must be an integer", seed=None),
     _row_case("time-fast", "line 1.time_s: must be a number", time_s="fast"),

@@ -140,18 +140,19 @@ class Worlds:
         if tolerances and callable(getattr(controller, "for_goal", None)):  # one layer row for all: the tightest
             controller.for_goal(min(tolerances))
         for scenario in self.scenarios:
+            where = scenario.source or scenario.name  # the file, for a folder's world
             ring = default_ring(scenario, controller)
             if ring.noise_std > 0:
-                raise InputError("tuning simulates noise-free sensors only", source=scenario.name, field="sensors")
+                raise InputError("tuning simulates noise-free sensors only", source=where, field="sensors")
             if scenario.task == "target":
-                raise InputError("tuning runs goal and path tasks, not moving targets", source=scenario.name,
+                raise InputError("tuning runs goal and path tasks, not moving targets", source=where,
                                  field="task")
             try:
                 check_task(controller.name, scenario.task, field="task")
             except InputError as error:  # e.g. a goal seeker on a path: it would time out on every world
-                raise InputError(error.problem, source=scenario.name, field="task") from None
+                raise InputError(error.problem, source=where, field="task") from None
             if len(scenario.world.moving):
-                raise InputError("tuning runs worlds whose obstacles stand still", source=scenario.name,
+                raise InputError("tuning runs worlds whose obstacles stand still", source=where,
                                  field="obstacles")
             robot = scenario.robot
             controller.for_robot(robot)
