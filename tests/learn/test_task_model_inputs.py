@@ -48,6 +48,22 @@ def test_a_bad_q_goal_field_is_named_without_a_traceback(tmp_path, capsys, field
     assert "Traceback" not in err
 
 
+@pytest.mark.parametrize("field, value, problem", [
+    ("version", 99, "unsupported version 99"),
+    ("version", True, "unsupported version True"),
+    ("q_tabel", [[0.0, 0.0, 1.0]] * 13, "unknown key 'q_tabel'"),
+])
+def test_an_unknown_field_or_version_is_refused(tmp_path, capsys, field, value, problem):
+    code, out, err, path = run_model(tmp_path, capsys, dict(GOOD_Q, **{field: value}))
+    assert code == 2 and out == "" and f"{path}: {field}: {problem}" in err, err
+
+
+def test_a_trained_q_goal_model_says_its_version(tmp_path):
+    model = tmp_path / "q.json"
+    assert main(["train", "q-goal", "--out", str(model), "--episodes", "4", "--quiet"]) == 0
+    assert json.loads(model.read_text())["version"] == tabular_goal.Q_GOAL_VERSION  # and GOOD_Q, without it, loads
+
+
 def test_a_missing_field_is_named(tmp_path, capsys):
     document = {k: v for k, v in GOOD_Q.items() if k != "steering"}
     code, _, err, path = run_model(tmp_path, capsys, document)

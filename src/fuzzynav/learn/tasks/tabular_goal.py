@@ -35,6 +35,8 @@ from fuzzynav.learn.tasks.common import (
 
 Q_STEERING = (0.0, -ALPHA_MAX, ALPHA_MAX)  # forward (α1), right (α2), left (α3)
 Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
+Q_GOAL_VERSION = 1  # of the model file; a file without the field is of version 1
+Q_GOAL_FIELDS = ("kind", "version", "zone_edges", "n_sectors", "merge_inner", "steering", "speed", "q", "training")
 
 
 FIXED_EPSILON_FLOOR = 0.0  # from a fixed start ε decays to 0 (greedy in the limit): see q_goal_parts
@@ -91,7 +93,7 @@ def train_q_goal(request) -> dict:
     env, learner, disc, steering = q_goal_parts(batch=batch)
     phases, _ = run_phases([Phase("steering", env, learner, episode_budget(request, 3000),
                                   checkpoint_path(request.out, "steering"))], request)
-    document = {"kind": "q-goal", "zone_edges": disc.zone_edges.tolist(), "n_sectors": disc.n_sectors,
+    document = {"kind": "q-goal", "version": Q_GOAL_VERSION, "zone_edges": disc.zone_edges.tolist(), "n_sectors": disc.n_sectors,
                 "merge_inner": disc.merge_inner, "steering": list(steering), "speed": Q_SPEED,
                 "q": learner.q[0].tolist(), "training": {"task": "q-goal", "seed": request.seed, **protocol_record(batch, "none"),
                              **summarise(phases)}}
@@ -99,12 +101,16 @@ def train_q_goal(request) -> dict:
 
 
 def load_model(document: dict, path) -> TabularGoalSeeker:
-    """Model loader of kind ``q-goal``: every field checked, a bad
-    one is an InputError naming the file and the field."""
+    """Model loader of kind ``q-goal``: every field checked, a bad, missing or unknown one (or a
+    version this package does not write) is an InputError naming the file and the field."""
     try:
+        validation.known_keys(document, Q_GOAL_FIELDS)
         for name in ("zone_edges", "n_sectors", "merge_inner", "steering", "speed", "q"):
             if name not in document:
                 raise InputError("missing field", field=name)
+        version = document.get("version", Q_GOAL_VERSION)
+        if version != Q_GOAL_VERSION or isinstance(version, bool):
+            raise InputError(f"unsupported version {version!r} (this package reads {Q_GOAL_VERSION})", field="version")
         sectors, merge = document["n_sectors"], document["merge_inner"]
         if not isinstance(sectors, int) or isinstance(sectors, bool):
             raise InputError(f"must be a positive integer, got {sectors!r}", field="n_sectors")
