@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from fuzzynav.cli import main
-from fuzzynav.fuzzy.io import load
+from fuzzynav.fuzzy.io import from_fll, load, to_fll
 from fuzzynav.fuzzy.plot import plot_surface, plot_system, surface
 from fuzzynav.fuzzy.systems import get_system
 
@@ -69,3 +69,37 @@ def test_plots(tmp_path):
     plot_surface(get_system("goal-seeking"), "v").savefig(tmp_path / "s.png")
     assert main(["fis", "plot", "tracking", "--surface", "-o", str(tmp_path / "v7.png")]) == 0
     assert (tmp_path / "v7.png").stat().st_size > 10_000
+
+
+def test_a_takagi_sugeno_file_plots_its_constant_conclusions_as_bars():
+    """Table IV.1 read from an FLL file that stays an engine (a Function term) holds its
+    conclusions as Constant terms of a weighted defuzzifier: values, drawn as the built-in
+    system's singletons are (one bar each), not as flat degrees across the axis; a Mamdani
+    output's Constant term stays a degree over its axis."""
+    text = to_fll(get_system("goal-seeking")).replace("term: P Triangle 0.1 3.5 8.0",
+                                                      "term: P Function max(0, 1 - abs(drg - 3.5) / 4)")
+    built_in, engine = get_system("goal-seeking"), from_fll(text, source="gs.fll")  # a Function term: an engine
+    assert engine.outputs[0].terms["NG"].kind == "constant"
+    for system in (built_in, engine):
+        alpha = plot_system(system).axes[2]
+        assert len(alpha.collections) == 7 and not alpha.lines  # NG … PG, as bars
+    mamdani = from_fll(MAMDANI_CONSTANT, source="m.fll")
+    assert len(plot_system(mamdani).axes[1].lines) == 2  # a Constant degree over the axis, and a triangle
+
+
+MAMDANI_CONSTANT = """Engine: m
+InputVariable: x
+  range: 0 1
+  term: lo Triangle 0 0 1
+OutputVariable: v
+  range: 0 1
+  aggregation: Maximum
+  defuzzifier: Centroid 100
+  term: half Constant 0.5
+  term: hi Triangle 0 1 1
+RuleBlock: rb
+  conjunction: Minimum
+  implication: Minimum
+  activation: General
+  rule: if x is lo then v is hi
+"""

@@ -13,6 +13,7 @@ import numpy as np
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.fuzzy.terms import Constant
 from fuzzynav.fuzzy.variable import Variable
 
 
@@ -22,17 +23,20 @@ def _figure(**kwargs):
     return Figure(**kwargs)
 
 
-def plot_variable(variable: Variable, ax=None, samples: int = 801):
-    """Draw the terms of ``variable`` over its universe on ``ax`` (a new figure if None); returns ax."""
+def plot_variable(variable: Variable, ax=None, samples: int = 801, crisp: bool = False):
+    """Draw the terms of ``variable`` over its universe on ``ax`` (a new figure if None); returns ax.
+    ``crisp``: an output of Takagi–Sugeno conclusions, whose ``Constant`` terms are values (drawn
+    as bars, like singletons), not degrees over the axis."""
     if ax is None:
         ax = _figure(figsize=(6, 2.6), layout="constrained").add_subplot()
     lo, hi = variable.universe
     x = np.linspace(lo, hi, samples)
     others = []  # formulas of other variables: no shape over this one's axis
     for label, mf in variable.terms.items():
-        if isinstance(mf, Singleton):
-            line = ax.vlines(mf.value, 0, 1, linewidth=2)
-            ax.annotate(label, (mf.value, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color()[0])
+        if isinstance(mf, Singleton) or (crisp and isinstance(mf, Constant)):
+            value = float(mf.params()[0])
+            line = ax.vlines(value, 0, 1, linewidth=2)
+            ax.annotate(label, (value, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color()[0])
         elif isinstance(mf, Linear):
             continue  # an affine conclusion has no shape on the output axis
         elif isinstance(mf, Function) and mf.variables - {variable.name}:
@@ -46,12 +50,21 @@ def plot_variable(variable: Variable, ax=None, samples: int = 801):
     if others:
         ax.text(0.01, 0.97, "not drawn (formulas of other variables): " + "; ".join(others), transform=ax.transAxes,
                 fontsize=7, va="top")
-    pad = 0.03 * (hi - lo) if any(isinstance(mf, Singleton) for mf in variable.terms.values()) else 0.0
+    bars = any(isinstance(mf, Singleton) or (crisp and isinstance(mf, Constant)) for mf in variable.terms.values())
+    pad = 0.03 * (hi - lo) if bars else 0.0
     ax.set_xlim(lo - pad, hi + pad)
     ax.set_ylim(0, 1.15)
     ax.set_xlabel(variable.name)
     ax.set_ylabel(f"μ({variable.name})")
     return ax
+
+
+def _crisp(system, output) -> bool:
+    """Are ``output``'s terms Takagi–Sugeno conclusions (a weighted defuzzifier), not fuzzy sets?"""
+    defuzzifier = getattr(output, "defuzzifier", None)  # an engine's output variable
+    if defuzzifier is not None:
+        return not defuzzifier.integral
+    return getattr(system, "method", "mamdani") != "mamdani"
 
 
 def plot_system(system: FuzzySystem):
@@ -60,7 +73,7 @@ def plot_system(system: FuzzySystem):
     fig = _figure(figsize=(6, 2.2 * len(variables)), layout="constrained")
     axes = fig.subplots(len(variables), 1, squeeze=False)[:, 0]
     for ax, var in zip(axes, variables):
-        plot_variable(var, ax)
+        plot_variable(var, ax, crisp=var in system.outputs and _crisp(system, var))
     fig.suptitle(system.name or "fuzzy system")
     return fig
 
