@@ -184,7 +184,7 @@ BAD = [
 
 def test_worlds_of_a_task_the_controller_cannot_do_are_refused_by_name(tmp_path, capsys):
     """A goal seeker tuned on path scenarios would time out on every one and report a tuned table:
-    the world is refused by its name before any generation runs."""
+    the world is refused, naming its file, before any generation runs."""
     from fuzzynav.world.scenario_file import save_scenario
 
     path = load_scenario("path-n")
@@ -192,7 +192,7 @@ def test_worlds_of_a_task_the_controller_cannot_do_are_refused_by_name(tmp_path,
     assert main(["tune", "goal-seeking:gsb", "--worlds", str(tmp_path), "--holdout", str(tmp_path),
                  "--validation", "none", "--population", "2", "--budget", "4", "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "path-n: task: goal-seeking cannot do a path task" in err, err
+    assert len(err.splitlines()) == 1 and f"{tmp_path / 'p.yaml'}: task: goal-seeking cannot do a path task" in err, err
 
 
 @pytest.mark.parametrize("argv,message", BAD, ids=[" ".join(a) for a, _ in BAD])
