@@ -221,3 +221,13 @@ def read_document(path) -> dict:
         raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
     validation.text(document["kind"], str(path), "kind", max_length=100)
     return document
+
+
+def supported_version(document: dict, version: int, source=None, *, required: bool = False) -> None:
+    """Refuse a ``document`` whose ``version`` is not ``version`` (a boolean is not a version);
+    one without the field is of ``version`` unless it is ``required``."""
+    if required and "version" not in document:
+        validation.fail(f"unsupported version None (this package reads {version})", source, "version")
+    found = document.get("version", version)
+    if found != version or isinstance(found, bool):
+        validation.fail(f"unsupported version {validation.shown(found)} (this package reads {version})", source, "version")

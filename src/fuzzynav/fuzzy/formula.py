@@ -175,14 +175,12 @@ class Function(MembershipFunction):
         (a pole, a log of 0): no membership degree or conclusion is infinite, and inference would
         turn it into NaN, which an output's default then hides. NaN passes on as fuzzylite passes
         it (``sin(x)/x`` at 0 in its own examples), and so does an infinite value read."""
-        shape = result.shape
-        known = np.ones(shape, dtype=bool)
-        for name in sorted(self.reads):
-            known &= np.broadcast_to(np.isfinite(np.asarray(values[name], dtype=float)), shape)
-        broken = known & np.isinf(result)
+        read = {name: np.broadcast_to(np.asarray(values[name], dtype=float), result.shape) for name in sorted(self.reads)}
+        broken = np.isinf(result)
+        for value in read.values():
+            broken &= np.isfinite(value)
         if broken.any():
-            at = np.unravel_index(int(np.flatnonzero(broken.ravel())[0]), shape)
-            where = ", ".join(f"{name}={float(np.broadcast_to(np.asarray(values[name], dtype=float), shape)[at])!r}"
-                              for name in sorted(self.reads)) or "every input"
-            raise InputError(f"gives {float(result[at])!r} at {where}: a membership degree or conclusion must be "
-                             "finite", field=f"formula {self.formula!r}")
+            at = np.argwhere(broken)[0]
+            where = ", ".join(f"{name}={float(value[tuple(at)])!r}" for name, value in read.items()) or "every input"
+            raise InputError(f"gives {float(result[tuple(at)])!r} at {where}: a membership degree or conclusion "
+                             "must be finite", field=f"formula {self.formula!r}")

@@ -42,10 +42,9 @@ def plot_variable(variable: Variable, ax=None, samples: int = 801, crisp: bool =
         elif isinstance(mf, Function) and mf.variables - {variable.name}:
             others.append(f"{label} = {mf.formula}")
         else:
-            with np.errstate(all="ignore"):  # a formula may divide by zero somewhere on the axis
-                mu = mf(x, {variable.name: x}) if isinstance(mf, Function) else mf(x)
+            mu = mf(x, {variable.name: x}) if isinstance(mf, Function) else mf(x)
             (line,) = ax.plot(x, mu, linewidth=1.5)
-            peak = x[np.nanargmax(np.where(np.isfinite(mu), mu, np.nan))] if np.isfinite(mu).any() else x[0]
+            peak = x[np.argmax(np.where(np.isnan(mu), -np.inf, mu))]  # a formula may give NaN somewhere
             ax.annotate(label, (peak, 1.02), ha="center", va="bottom", fontsize=8, color=line.get_color())
     if others:
         ax.text(0.01, 0.97, "not drawn (formulas of other variables): " + "; ".join(others), transform=ax.transAxes,

@@ -10,14 +10,14 @@ import numpy as np
 
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
+from fuzzynav.storage import supported_version
 
 
 def check_format(document, fmt: str, version: int, what: str, source: str | None = None) -> None:
     """A fitted-model document of format ``fmt`` and ``version`` (``what``: "an ANFIS", "an MLP")."""
     if not isinstance(document, dict) or document.get("format") != fmt:
         raise InputError(f"not {what} document (format must be {fmt!r})", source=source, field="format")
-    if document.get("version") != version or isinstance(document.get("version"), bool):
-        raise InputError(f"unsupported version {document.get('version')!r}", source=source, field="version")
+    supported_version(document, version, source, required=True)
 
 
 def check_xy(X, y) -> tuple[np.ndarray, np.ndarray]:

@@ -39,6 +39,7 @@ from fuzzynav.fuzzy.membership import make
 from fuzzynav.fuzzy.rules import parse_rule, rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
+from fuzzynav.storage import supported_version
 
 FORMAT = "fuzzynav-fis"
 VERSION = 1
@@ -191,8 +192,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
         raise InputError("a fuzzy system file holds a mapping", source=source)
     if doc.get("format", FORMAT) != FORMAT:
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
-    if doc.get("version", VERSION) != VERSION or isinstance(doc.get("version"), bool):
-        raise InputError(f"unsupported version {doc.get('version')!r}", source=source, field="version")
+    supported_version(doc, VERSION, source)
     _check_keys(doc, _TOP_KEYS, source, "", strict=False)
     if "inputs" not in doc and isinstance(doc.get("kind"), str):
         raise InputError(f"a {doc['kind']!r} model file, not a fuzzy system (run it with --model)", source=source,

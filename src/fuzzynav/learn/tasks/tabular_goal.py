@@ -32,6 +32,7 @@ from fuzzynav.learn.tasks.common import (
     summarise,
     thesis_schedules,
 )
+from fuzzynav.storage import supported_version
 
 Q_STEERING = (0.0, -ALPHA_MAX, ALPHA_MAX)  # forward (α1), right (α2), left (α3)
 Q_SPEED = 1.0  # m/s, constant (the tabular goal seeker only steers)
@@ -108,9 +109,7 @@ def load_model(document: dict, path) -> TabularGoalSeeker:
         for name in ("zone_edges", "n_sectors", "merge_inner", "steering", "speed", "q"):
             if name not in document:
                 raise InputError("missing field", field=name)
-        version = document.get("version", Q_GOAL_VERSION)
-        if version != Q_GOAL_VERSION or isinstance(version, bool):
-            raise InputError(f"unsupported version {version!r} (this package reads {Q_GOAL_VERSION})", field="version")
+        supported_version(document, Q_GOAL_VERSION)
         sectors, merge = document["n_sectors"], document["merge_inner"]
         if not isinstance(sectors, int) or isinstance(sectors, bool):
             raise InputError(f"must be a positive integer, got {sectors!r}", field="n_sectors")
