@@ -81,7 +81,7 @@ def clear_stale_caches(package: Path = PACKAGE) -> bool:
         return False
 
 
-def jit(function=None, *, fastmath: tuple = ()):
+def jit(function=None, *, fastmath: tuple = (), nogil: bool = False):
     """``numba.njit`` with the on-disk cache and NumPy's floating-point error model (x / 0 is
     inf or nan, as in the rest of the package). The cache lives in ``__pycache__`` beside this
     package, or — when that is not writable (a read-only install) — in numba's user-wide cache
@@ -91,10 +91,13 @@ def jit(function=None, *, fastmath: tuple = ()):
     ``@jit(fastmath=("contract",))`` lets the compiler fuse a * b + c into one instruction (one
     rounding instead of two, where the processor has FMA): for polynomial kernels
     (:mod:`fuzzynav.fuzzy.engine.vmath`), whose last bits may then differ between processors
-    (never between two runs on one)."""
+    (never between two runs on one).
+
+    ``@jit(nogil=True)`` releases the GIL while the kernel runs, so that threads of one process
+    run it at once (:mod:`fuzzynav.threads`)."""
     if function is None:
-        return lambda f: jit(f, fastmath=fastmath)
-    options = {"error_model": "numpy", "fastmath": set(fastmath) if fastmath else False}
+        return lambda f: jit(f, fastmath=fastmath, nogil=nogil)
+    options = {"error_model": "numpy", "fastmath": set(fastmath) if fastmath else False, "nogil": nogil}
     try:
         kernel = numba.njit(cache=True, **options)(function)
     except RuntimeError:  # "cannot cache function ...: no locator available"

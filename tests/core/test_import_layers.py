@@ -18,7 +18,7 @@ PACKAGE = SRC / "fuzzynav"
 # sits above fuzzynav.learn). Keep in step with the table of docs/ARCHITECTURE.md.
 LAYERS = {
     "fuzzynav.errors": 0, "fuzzynav.yaml_loader": 0, "fuzzynav.lookup": 0, "fuzzynav.storage": 0,
-    "fuzzynav.progress": 0, "fuzzynav.jit": 0, "fuzzynav.validation": 0, "fuzzynav.settings": 0,
+    "fuzzynav.progress": 0, "fuzzynav.jit": 0, "fuzzynav.threads": 0, "fuzzynav.validation": 0, "fuzzynav.settings": 0,
     "fuzzynav.fuzzy": 1,
     "fuzzynav.kernels": 2,
     "fuzzynav.robot": 3, "fuzzynav.world": 3,

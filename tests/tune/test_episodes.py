@@ -65,3 +65,28 @@ def test_a_tuned_default_ends_its_car_route_inside_the_tightest_goal_tolerance()
     tolerance = min(world.goal.tolerance for world in worlds)
     assert tolerance == 0.3
     assert compiled.layer_params[PARAM.guide_car_reach] == pytest.approx(0.8 * tolerance)
+
+
+def test_the_jobs_give_the_same_rows_on_any_number_of_threads():
+    """The jobs share nothing (each its own robot, navigator state and layer row), so chunks of
+    them run at once on several threads give the rows one thread gives, bit for bit; the kernel
+    releases the GIL, or the threads would take turns."""
+    from fuzzynav import threads
+
+    suite = parse_suite("mixed:6")
+    worlds = [suite.scenario(i, 0) for i in range(suite.size)]
+    controller = make_controller("fuzzy-2b")
+    space = SearchSpace(controller.systems["oab"], "both")
+    population = space.start + np.random.default_rng(0).normal(0.0, 0.05, (5, len(space.start)))
+    rows = {}
+    try:
+        for count in (1, 2, 3):
+            threads.set_count(count)
+            rows[count] = Fitness(controller, "oab", space, worlds).simulate(population)
+    finally:
+        threads.set_count(None)
+    steps = rows[1][:, :, STEPS]
+    assert (steps != steps[0]).any()  # the candidates drive differently
+    np.testing.assert_array_equal(rows[2], rows[1])
+    np.testing.assert_array_equal(rows[3], rows[1])
+    assert episodes.run_jobs.targetoptions["nogil"]

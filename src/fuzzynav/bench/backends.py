@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from typing import Any
 
+from fuzzynav import threads
 from fuzzynav.bench.cells import Cell, run_cell
 from fuzzynav.errors import InputError
 
@@ -27,6 +28,14 @@ BACKENDS = ("local", "ray")
 
 
 FORKED = sys.platform == "linux"  # pool_map's workers start as copies of this process (else afresh)
+
+
+def _worker_start(initializer: Callable | None, initargs: tuple) -> None:
+    """A pool worker's start: one thread for its batches (the pool spreads the work over the
+    cores, :mod:`fuzzynav.threads`), then ``initializer(*initargs)``."""
+    threads.set_count(1)
+    if initializer is not None:
+        initializer(*initargs)
 
 
 def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[[int, Any], None], *,
@@ -45,8 +54,8 @@ def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[
             on_result(index, task(item))
         return
     context = multiprocessing.get_context("fork" if FORKED else "spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=initializer,
-                             initargs=initargs) as pool:
+    with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=_worker_start,
+                             initargs=(initializer, initargs)) as pool:
         queue = enumerate(items)
         pending: dict = {}
         failure: BaseException | None = None

@@ -1,9 +1,11 @@
 """``fuzzynav tune CONTROLLER:ROLE --worlds SUITE [--what mf|rules|both] [--method ga|pso|aco|de|cmaes|nsga2]
-[--objectives success,time,clearance] [--budget EVALS] [--seed S] [--out tuned.yaml] [--resume] [--curve PNG]``
+[--objectives success,time,clearance] [--budget EVALS] [--seed S] [--out tuned.yaml] [--resume] [--curve PNG]
+[--workers N]``
 (:mod:`fuzzynav.tune`).
 
 Optimise a role's membership breakpoints and/or rule conclusions on training worlds (every
-candidate of a generation on every world in one compiled call), then test it on held-out worlds.
+candidate of a generation on every world in compiled calls spread over the cores), then test it on
+held-out worlds.
 
 Both the start and the result are tested on the held-out worlds; the tuned system is written as
 ``.yaml``, ``.json``, ``.fll`` or ``.fis``, which ``run``, ``bench``, ``evaluate`` and ``reproduce``
@@ -16,7 +18,7 @@ import json
 import sys
 from pathlib import Path
 
-from fuzzynav import progress
+from fuzzynav import progress, threads, validation
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
@@ -51,6 +53,9 @@ def register(subparsers) -> None:
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint beside --out")
     parser.add_argument("--curve", metavar="PNG", type=arguments.figure_path,
                         help="write the learning curve (best training cost against episodes)")
+    parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
+                        help=f"threads simulating the episodes, 1 to {validation.MAX_WORKERS} (default: the number of "
+                             "cores); the result does not depend on it")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
 
@@ -71,6 +76,7 @@ def run(args) -> int:
         raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
     if request.resume and checkpoint is not None and not checkpoint.is_file():
         print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
+    threads.set_count(args.workers)
     with progress.quiet(not request.progress):
         result = tune(request)
     written = _write(request, result)

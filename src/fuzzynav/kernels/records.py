@@ -180,7 +180,7 @@ class StepNavigator(NamedTuple):
     tables: np.ndarray  # its rule bases
     state: np.ndarray  # (N, 4) ints: navigators.MODE, HELD, SIDE, COUNT
     memory: np.ndarray  # (N, steps, S + 1, 3) the hit memory of kernels.guard
-    layer_state: np.ndarray  # (N, …) the layers' rows (unused without layers)
+    layer_state: np.ndarray | None  # (N, …) the layers' rows (None without layers: lean_arguments)
 
 
 class Traffic(NamedTuple):

@@ -198,7 +198,7 @@ def reset(setup, scene_array, state, ranges, status, imperfect):
     return running
 
 
-@jit
+@jit(nogil=True)
 def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
     """One step of every running robot, ``k`` being the step count after it; returns how many
     still run. The moving obstacles of ``world`` (a :class:`~fuzzynav.kernels.records.Traffic`)

@@ -1,7 +1,8 @@
 """The episode loop: sense → act → clip → step → record, until done (docs/ARCHITECTURE.md, "Data flow of one run").
 
 :class:`BatchSimulator` steps N robots of one scenario together, one compiled call per step
-(:func:`fuzzynav.kernels.step.step`) over the robots still running. Each step:
+(:func:`fuzzynav.kernels.step.step`) over the robots still running — a large batch in row
+blocks on the process' threads (:func:`fuzzynav.sim.blocks.step_in_blocks`). Each step:
 
 1. act: a navigator with a compiled ``act`` (``controller.compiled(n, sensor_angles)``, the
    optional hooks of :mod:`fuzzynav.control.hooks`) decides inside that call; otherwise ``controller.act_batch(batch_obs)`` if the controller has it,
@@ -48,7 +49,7 @@ from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
 from fuzzynav.robot.imperfections import with_ring_noise
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
-from fuzzynav.sim import arguments
+from fuzzynav.sim import arguments, blocks
 from fuzzynav.sim.arguments import default_ring
 from fuzzynav.sim.commands import (
     INVALID_COMMAND,
@@ -241,9 +242,10 @@ class BatchSimulator:
         try:
             world = self._traffic.at(self.k)
             if self.plant.in_kernel:
-                self._running = step_kernel.step(*step_kernel.lean_arguments(self._navigator), self._setup, world,
-                                                 self.k, Robots(self._state, self._ranges, self._status, True),
-                                                 self._imperfect)
+                self._running = blocks.step_in_blocks(self._running, *step_kernel.lean_arguments(self._navigator),
+                                                      self._setup, world, self.k,
+                                                      Robots(self._state, self._ranges, self._status, True),
+                                                      self._imperfect)
             else:
                 self._plant_step(world)
         except ValueError as error:  # a compiled navigator refusing a non-finite input: stop who fed it

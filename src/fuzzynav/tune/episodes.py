@@ -4,7 +4,9 @@
 controller, one compiled call per step. A population of rule bases is N controllers on W
 worlds, so :func:`run_jobs` loops the simulator's own compiled step
 (:func:`fuzzynav.kernels.step.reset`, :func:`fuzzynav.kernels.step.step`) over every job
-(candidate, world) inside one compiled call — the same arithmetic, step for step, as
+(candidate, world) inside compiled calls, a chunk of jobs each, spread over the process' threads
+(:func:`fuzzynav.threads.spread`; the jobs share nothing, so the result does not depend on how
+many) — the same arithmetic, step for step, as
 ``BatchSimulator(world, controller).run()`` (``tests/tune/test_episodes.py`` checks outcomes, step
 counts and final poses against it). Each job is one robot with its own navigator state, hit
 memory and layer state; the layers' obstacle-point slots are sized up front (:data:`SLOTS`), and
@@ -21,6 +23,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from fuzzynav import threads
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.systems_navigation import WALL_D_M, WALL_D_S
 from fuzzynav.jit import jit
@@ -106,7 +109,7 @@ def _one(navigator, memory_steps, layer, setup, scene, start, out):
     out[OFF_BAND] = off_band
 
 
-@jit
+@jit(nogil=True)
 def run_jobs(population, layer, worlds, jobs, out):
     """Every job j = ``jobs[j]`` = (c, w): candidate c of ``population`` (:class:`Population`: its
     ``tables`` row c, its ``params`` row w) on world w of ``worlds`` (:class:`Packed`), with the
@@ -194,12 +197,22 @@ class Worlds:
         out = np.zeros((len(jobs), N_OUT))
         todo, slots = np.arange(len(jobs)), SLOTS
         while len(todo):
-            layer_params, row = self.layer_row(slots)
-            part = np.zeros((len(todo), N_OUT))
-            run_jobs(Population(self.kind, self.params, tables, self.memory_steps), Layers(layer_params, row),
-                     self.packed, np.ascontiguousarray(jobs[todo], dtype=np.int64), part)
+            part = self._spread(tables, np.ascontiguousarray(jobs[todo], dtype=np.int64), slots)
             out[todo] = part
             todo, slots = todo[part[:, OUTCOME] == OVERFLOW], 2 * slots
+        return out
+
+    def _spread(self, tables: np.ndarray, jobs: np.ndarray, slots: int) -> np.ndarray:
+        """``out`` of :func:`run_jobs` for ``jobs`` with ``slots`` point slots, chunks of jobs on
+        the process' threads."""
+        layer_params, row = self.layer_row(slots)
+        population, layer = Population(self.kind, self.params, tables, self.memory_steps), Layers(layer_params, row)
+        out = np.zeros((len(jobs), N_OUT))
+
+        def chunk(first: int, last: int) -> None:
+            run_jobs(population, layer, self.packed, jobs[first:last], out[first:last])
+
+        threads.spread(chunk, len(jobs))
         return out
 
 

@@ -1,9 +1,9 @@
-"""Fitness of candidate rule bases: a whole population × its worlds in one compiled call.
+"""Fitness of candidate rule bases: a whole population × its worlds in compiled calls.
 
 A candidate is a gene vector of a :class:`~fuzzynav.tune.space.SearchSpace`; it becomes the
 controller's rule base for the tuned role (the other roles keep theirs), packed as the simulator's
 compiled navigators read them (:func:`fuzzynav.kernels.ts0.pack`), and every candidate runs every
-world in one call of :func:`fuzzynav.tune.episodes.run_jobs`.
+world in calls of :func:`fuzzynav.tune.episodes.run_jobs` spread over the process' threads.
 
 The cost of one episode (:func:`episode_cost`, minimised) ranks success first, then time: a
 reached goal costs its time over the world's time limit (below 1), a timeout 10 plus the share of

@@ -1,0 +1,83 @@
+"""Batches spread over threads: every item once, errors raised, one pool per process."""
+
+import threading
+
+import pytest
+
+from fuzzynav import threads
+
+
+@pytest.fixture(autouse=True)
+def _restore():
+    yield
+    threads.set_count(None)
+
+
+@pytest.mark.parametrize("count,items", [(1, 10), (3, 10), (4, 2), (2, 0), (3, 1000)])
+def test_every_item_is_run_once(count, items):
+    threads.set_count(count)
+    seen, lock = [], threading.Lock()
+
+    def task(start, stop):
+        with lock:
+            seen.extend(range(start, stop))
+
+    threads.spread(task, items)
+    assert sorted(seen) == list(range(items))
+
+
+def test_chunks_run_on_several_threads_and_one_thread_runs_here():
+    names, lock, here = set(), threading.Lock(), threading.current_thread().name
+    barrier = threading.Barrier(2, timeout=10)  # the first two chunks must run at once to pass it
+    calls = []
+
+    def task(start, stop):
+        with lock:
+            names.add(threading.current_thread().name)
+            calls.append(start)
+            first_two = len(calls) <= 2
+        if first_two and stop - start < 64:
+            barrier.wait()
+
+    threads.set_count(2)
+    threads.spread(task, 64)
+    assert len(names) == 2 and here not in names
+    names.clear()
+    threads.set_count(1)
+    threads.spread(task, 1)  # one chunk: no barrier, run in this thread
+    assert names == {here}
+
+
+def test_an_error_of_a_chunk_is_raised_after_every_chunk_has_ended():
+    threads.set_count(2)
+    ended = []
+
+    def task(start, stop):
+        if start == 0:
+            raise RuntimeError("chunk 0")
+        ended.append(start)
+
+    with pytest.raises(RuntimeError, match="chunk 0"):
+        threads.spread(task, 16)
+    assert len(ended) == 15
+
+
+def test_a_count_below_one_is_refused():
+    with pytest.raises(ValueError, match="at least 1"):
+        threads.set_count(0)
+
+
+def test_a_forked_child_makes_its_own_pool(monkeypatch):
+    threads.set_count(2)
+    parent = threads._executor(2)
+    assert threads._executor(2) is parent
+    monkeypatch.setattr(threads.os, "getpid", lambda: -1)  # as in a child after fork
+    assert threads._executor(2) is not parent
+
+
+def test_pool_workers_run_their_batches_on_one_thread():
+    from fuzzynav.bench.backends import _worker_start
+
+    started = []
+    _worker_start(started.append, ("ready",))
+    assert threads.count() == 1 and started == ["ready"]
