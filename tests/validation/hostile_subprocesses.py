@@ -13,7 +13,9 @@ its Python code for the constructor and simulator cases) in a fresh temporary di
 - wrong exit: refused (exit 2) where the input is fine.
 
 Also two end-to-end checks of ``train --resume``: a seed-0 checkpoint resumed with ``--seed 1``, and
-with fewer ``--episodes`` than done, must exit 2 naming the field. Run:
+with fewer ``--episodes`` than done, must exit 2 naming the field. Run from the clone's root with
+the Python of the environment ``fuzzynav`` is installed in (each case is a fresh process: several
+minutes in all; each case is printed as it ends):
 
     python tests/validation/hostile_subprocesses.py [--timeout 10] [--json]
 """
@@ -95,24 +97,29 @@ def main() -> int:
     parser.add_argument("--only", default="", help="run only the cases whose name contains this text")
     args = parser.parse_args()
     rows = []
-    for case, prelude in ALL_CASES:
-        if args.only not in case.name:
-            continue
+    chosen = [(case, prelude) for case, prelude in ALL_CASES if args.only in case.name]
+
+    def show(row: dict) -> None:  # each case as it ends (on stderr under --json): a run takes minutes
+        print(f"[{len(rows)}/{len(chosen) + 2}] {row['verdict']:12s} {row['seconds']:6.2f} s  {row['case']}",
+              file=sys.stderr if args.json else sys.stdout, flush=True)
+
+    for case, prelude in chosen:
         with tempfile.TemporaryDirectory() as tmp:
             directory = Path(tmp)
             write_files(case, directory)
             status, out, err, seconds = run(command_of(case, directory, prelude), directory, args.timeout)
             rows.append({"case": case.name, "status": status, "seconds": round(seconds, 2),
                          "verdict": verdict(case, status, out, err), "message": (err or out).strip()[-200:]})
+        show(rows[-1])
     with tempfile.TemporaryDirectory() as tmp:
-        rows += resume_cases(Path(tmp), args.timeout)
+        for row in resume_cases(Path(tmp), args.timeout):
+            rows.append(row)
+            show(row)
     counts = {key: sum(row["verdict"] == key for row in rows)
               for key in ("ok", "traceback", "hang", "wrong-exit", "silent-wrong")}
     if args.json:
         print(json.dumps({"cases": len(rows), **counts, "rows": rows}))
     else:
-        for row in rows:
-            print(f"{row['verdict']:12s} {row['seconds']:6.2f} s  {row['case']}")
         print(f"{len(rows)} cases: " + ", ".join(f"{key} {value}" for key, value in counts.items()))
     return 0 if counts["ok"] == len(rows) else 1
 

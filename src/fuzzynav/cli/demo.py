@@ -135,7 +135,12 @@ def run(args) -> int:
     from fuzzynav.errors import InputError
 
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
-    print(f"fuzzynav demo: {what} with {'their controllers' if not args.controllers else ', '.join(args.controllers)}, "
+    if args.controllers:
+        driven = ", ".join(args.controllers)
+    else:
+        driven = ("the controllers it names" if len(args.scenario) == 1 else "the controllers each names") \
+            if args.scenario else "their controllers"
+    print(f"fuzzynav demo: {what} with {driven}, "
           f"into {args.out}/", flush=True)
     from fuzzynav.jit import NOTICE
 
