@@ -85,6 +85,8 @@ SMALLEST = [
     ("default_cost.py", ("--parts", "--n", "2", "--robots", "1", "--steps", "10"), '"benchmark": "default_cost"'),
     ("astar_backing.py", ("--n", "1", "--json"), '"benchmark": "astar_backing"'),
     ("astar_planners.py", ("mixed:1", "--episodes", "--json"), '"plan_median_s"'),
+    ("batch_threads.py", ("--controller", "fuzzy-5b-thesis", "--robots", "70", "--steps", "3", "--chunks", "1",
+                          "--json"), '"same_states": true'),
     ("bench_overhead.py", ("--worlds", "1", "--repeats", "1", "--controllers", "goal-seeking", "--json"), '"cpu_ratio"'),
     ("fuzzy_bench.py", ("--only", "fuzzynav", "--json"), '"single_call_us"'),
     ("navigator_profile.py", ("--robots", "1", "--steps", "10", "--json"), '"part_share"'),
