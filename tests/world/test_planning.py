@@ -45,3 +45,18 @@ def test_clearance_cost_keeps_the_path_away_from_obstacles():
     careful = shortest_path(world, (2, 5), (18, 5), 0.3, weight=3.0, comfort=0.5)
     dense = lambda p: np.vstack([a + np.linspace(0, 1, 50)[:, None] * (b - a) for a, b in zip(p[:-1], p[1:])])
     assert world.clearance(dense(careful)).min() > world.clearance(dense(plain)).min() + 0.2
+
+
+def test_a_huge_world_gets_a_coarser_grid_and_a_path_in_bounded_memory():
+    """A 3 km world at 0.1 m cells would be 900 million cells (7 GB a grid): the cell grows so
+    that the grid stays within MAX_GRID_CELLS, and the path is still found."""
+    from fuzzynav.world.planning import MAX_GRID_CELLS, default_cell
+
+    huge = scenario_from_dict({"world": {"width": 3000, "height": 3000}, "robot": {"x": 5, "y": 5},
+                               "goal": {"x": 2990, "y": 2990}}, source="huge.yaml").world
+    cell = default_cell(huge)
+    assert (3000 / cell) ** 2 <= MAX_GRID_CELLS * 1.0001 and cell > 2.0
+    path = shortest_path(huge, (5, 5), (2990, 2990), 0.3)
+    assert path is not None and math.isclose(path_length(path), math.hypot(2985, 2985), rel_tol=0.01)
+    small = scenario_from_dict({"robot": {"x": 1, "y": 1}, "goal": {"x": 15, "y": 15}}, source="s.yaml").world
+    assert default_cell(small) == 0.1  # the worlds of the families and BARN keep their cells

@@ -21,11 +21,14 @@ Everything is deterministic in the world and the parameters (no randomness).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from fuzzynav.world.world import World
+
+MAX_GRID_CELLS = 1_000_000  # cells of a planning grid at most (default_cell coarsens larger worlds)
 
 
 @dataclass(frozen=True)
@@ -50,9 +53,13 @@ class Grid:
 def default_cell(world: World) -> float:
     """Grid cell (m): 0.1 m, or 0.05 m among posts thinner than 0.3 m (BARN's), where the free
     strips between posts are narrow. (A thin wall needs no finer cell: inflated by the robot's
-    radius it blocks a band wider than a cell's diagonal.)"""
+    radius it blocks a band wider than a cell's diagonal.) A world so large that the grid would
+    pass :data:`MAX_GRID_CELLS` gets cells just large enough to stay within it (over 100 m × 100 m
+    at 0.1 m): its memory and time stay bounded, and passages narrower than about a cell may be
+    seen as closed."""
     radii = [float(o.radius) for o in world.obstacles if o.kind == "circle"]
-    return 0.05 if radii and min(radii) < 0.15 else 0.1
+    fine = 0.05 if radii and min(radii) < 0.15 else 0.1
+    return max(fine, math.sqrt(world.width * world.height / MAX_GRID_CELLS))
 
 
 def clearance_grid(world: World, cell: float, floor: float, cap: float) -> np.ndarray:
