@@ -14,6 +14,31 @@ from fuzzynav.fuzzy.io import dumps, load, loads
 from fuzzynav.fuzzy.io.fis import from_fis
 from fuzzynav.fuzzy.systems import get_system
 
+FLL_DEFAULT = """Engine: d
+InputVariable: x
+  enabled: true
+  range: 0.000 1.000
+  lock-range: false
+  term: lo Triangle 0 0 1
+  term: hi Triangle 0 1 1
+OutputVariable: v
+  enabled: true
+  range: 0 1
+  aggregation: Maximum
+  defuzzifier: Centroid 100
+  default: 0.25
+  term: lo Triangle 0 0 1
+  term: hi Triangle 0 1 1
+RuleBlock: rb
+  enabled: true
+  conjunction: Minimum
+  disjunction: Maximum
+  implication: Minimum
+  activation: General
+  rule: if x is lo then v is lo
+  rule: if x is hi then v is hi
+"""
+
 X = np.linspace(-3.0, 13.0, 3201)
 
 
@@ -170,6 +195,28 @@ def test_round_trips(tmp_path):
     assert "'linzmf',[0.1 3.5]" in path.read_text()
     X = np.random.default_rng(1).uniform([0, -3], [28, 3], (500, 2))
     np.testing.assert_allclose(load(path).evaluate(X), gsb.evaluate(X), rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["obstacle-avoidance", "goal-seeking", "tracking"])
+def test_a_fis_round_trip_answers_as_before_outside_the_ranges_too(name, tmp_path):
+    """The inputs' clipping to their range (lock-range) and the outputs' default travel in the
+    .fis file (fuzzylite's keys), so the written file answers as the system everywhere."""
+    path = tmp_path / f"{name}.fis"
+    assert main(["fis", "convert", name, "--to", "fis", "-o", str(path)]) == 0
+    system, again = get_system(name), load(path)
+    lo, hi = np.array([v.universe for v in system.inputs]).T
+    wide = lo - (hi - lo), hi + (hi - lo)  # a third inside the ranges, the rest outside
+    X = np.random.default_rng(2).uniform(*wide, (600, len(lo)))
+    np.testing.assert_allclose(again.evaluate(X), system.evaluate(X), rtol=0, atol=1e-12)
+
+
+def test_an_outputs_default_travels_in_the_fis_file():
+    fll = FLL_DEFAULT
+    system = loads(fll, "fll", source="d.fll")
+    again = loads(dumps(system, "fis"), "fis", source="d.fis")
+    X = np.array([[5.0], [0.5]])  # x = 5: no rule fires, the default answers
+    np.testing.assert_allclose(again.evaluate(X), system.evaluate(X), rtol=0, atol=1e-12)
+    assert system.evaluate(X)[0, 0] == 0.25
 
 
 def test_errors_name_file_line_and_field(tmp_path):

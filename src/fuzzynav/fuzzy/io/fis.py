@@ -20,8 +20,11 @@ builds, used to compare with fuzzylite):
 - a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;
   fuzzylite first aggregates the rules sharing an output term with it.
 
-Neither clips inputs to their range (MATLAB warns and evaluates the value as it is). Errors raise
-:class:`InputError` naming the file, the line and the field.
+Neither clips inputs to their range (MATLAB warns and evaluates the value as it is), unless the
+variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's ``LockRange``
+(inputs and outputs), ``LockPrevious`` and ``Default`` (outputs) where they are set, and the
+reader takes them back, so a system written as ``.fis`` answers as before everywhere (outside the
+ranges too). Errors raise :class:`InputError` naming the file, the line and the field.
 """
 
 from __future__ import annotations
@@ -120,7 +123,7 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
                 label = next(f"{label}_{k}" for k in range(2, len(var.terms) + 3) if f"{label}_{k}" not in var.terms)
             var.terms[label] = mf
             order.append(label)
-        elif key in ("Enabled", "Default", "LockPrevious", "LockRange") and (output or key == "Enabled"):
+        elif key in ("Enabled", "Default", "LockPrevious", "LockRange") and (output or key in ("Enabled", "LockRange")):
             try:
                 number = float(value)
             except ValueError:
@@ -323,8 +326,15 @@ def to_fis(system: FuzzySystem | Engine) -> str:
             lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
                       f"NumMFs={len(v.terms)}"]
             lines += [f"MF{k}='{label}':{term_to_fis(mf)}" for k, (label, mf) in enumerate(v.terms.items(), 1)]
-            if isinstance(v, model.OutputVariable) and v.lock_range:
+            # fuzzylite's keys beside MATLAB's, which this reader takes back: without them a round trip
+            # would answer differently outside the range (no clipping) or where no rule fires
+            if v.lock_range:
                 lines.append("LockRange=1")
+            if isinstance(v, model.OutputVariable):
+                if v.lock_previous:
+                    lines.append("LockPrevious=1")
+                if not math.isnan(v.default):
+                    lines.append(f"Default={number(v.default)}")
     lines += ["", "[Rules]"]
     by_name = {v.name: v for v in engine.inputs + outs}
     for rule in block.rules:

@@ -182,7 +182,9 @@ def _variable(sec: dict, reader: _Reader):
     for key, value, line in sec["items"]:
         if key == "term":
             label, mf = term_from_fll(value, reader.source, line)
-            var.terms[label] = mf  # a repeated name: the last one is the term (rules resolve it so in fuzzylite)
+            if label in var.terms:  # fuzzylite's rules would read the first, its output every one: refused
+                raise reader.error(f"variable {sec['name']!r} has two terms named {label!r}", line)
+            var.terms[label] = mf
         elif key == "range":
             parts = value.split()
             if len(parts) != 2:
