@@ -106,3 +106,18 @@ def test_cli_writes_c_and_header(tmp_path, capsys):
     assert "malloc" not in target.read_text()
     assert main(["fis", "export-c", "goal-seeking", "-o", str(tmp_path / "controller.txt")]) == 2
     assert "-o" in capsys.readouterr().err
+
+
+def test_a_ramp_narrower_than_the_fixed_point_step_is_a_step_and_names_stay_in_comments(tmp_path):
+    """A term edge 1e-6 wide rounds to 0 in Q16.16: it is exported as a step (dividing by its width
+    would trap on every input); a system name holding ``*/`` cannot end a comment of the code."""
+    x = Variable("x", (0.0, 1.0), {"lo": Triangular(0.0, 0.1, 0.100001),
+                                                       "hi": Triangular(0.1, 0.100002, 1.0)})
+    y = Variable("y", (0.0, 1.0), {"s": Triangular(0.0, 0.0, 1.0), "b": Triangular(0.0, 1.0, 1.0)})
+    rules = ["IF x IS lo THEN y IS s", "IF x IS hi THEN y IS b"]
+    system = FuzzySystem([x], [y], rules, method="mamdani", name="t */ int oops = ; /*\nline")
+    X = np.array([[0.05], [0.5], [0.9], [0.1000005]])
+    for fixed in (None, "Q16.16"):
+        ours, flags = _run(_compile(system, fixed, tmp_path), X, 1, fixed)  # compiled with -Werror
+        assert (flags == 0).all()
+        np.testing.assert_allclose(ours[:3], system.evaluate(X)[:3], atol=2e-3)

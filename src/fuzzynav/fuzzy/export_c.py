@@ -52,6 +52,11 @@ _PRELUDE_FIXED = """typedef int32_t {p}_real; /* Q16.16 */
 """
 
 
+def _comment(text: str) -> str:
+    """``text`` safe inside a C comment: no ``*/`` to end it, no ``/*`` inside it, no line break."""
+    return " ".join(str(text).replace("*/", "* /").replace("/*", "/ *").split())
+
+
 def _identifier(name: str) -> str:
     ident = re.sub(r"\W", "_", name).strip("_").lower() or "fis"
     return ident if not ident[0].isdigit() else f"fis_{ident}"
@@ -69,6 +74,11 @@ class _Writer:
             return f"((int32_t){scaled})"
         return "INFINITY" if value == math.inf else "-INFINITY" if value == -math.inf else repr(float(value))
 
+    def sloped(self, width: float) -> bool:
+        """Is a ramp of ``width`` a slope in this number format? In Q16.16 a ramp narrower than
+        its step (1/65536) is a step: its width rounds to 0, and dividing by it would trap."""
+        return width > 0 and (not self.fixed or round(width * _SCALE) != 0)
+
     def mul(self, a: str, b: str) -> str:
         return f"{self.p.upper()}_MUL({a}, {b})"
 
@@ -81,11 +91,11 @@ class _Writer:
             a, b, c, d = mf._edges()
             parts = []
             if b > -math.inf:
-                rise = (self.div(f"({x} - {self.const(a)})", self.const(b - a)) if b > a
+                rise = (self.div(f"({x} - {self.const(a)})", self.const(b - a)) if self.sloped(b - a)
                         else f"({x} < {self.const(a)} ? {self.p.upper()}_ZERO : {self.p.upper()}_ONE)")
                 parts.append(rise)
             if c < math.inf:
-                fall = (self.div(f"({self.const(d)} - {x})", self.const(d - c)) if d > c
+                fall = (self.div(f"({self.const(d)} - {x})", self.const(d - c)) if self.sloped(d - c)
                         else f"({x} > {self.const(d)} ? {self.p.upper()}_ZERO : {self.p.upper()}_ONE)")
                 parts.append(fall)
             expr = f"{self.p.upper()}_ONE"
@@ -124,11 +134,11 @@ def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,
     w = _Writer(fixed is not None, p)
     n_in, n_out = len(system.inputs), len(system.outputs)
     header = "\n".join([
-        f"/* {system.name or p}: fuzzy system exported by fuzzynav (C99, no heap). */",
+        f"/* {_comment(system.name or p)}: fuzzy system exported by fuzzynav (C99, no heap). */",
         f"#ifndef {P}_H", f"#define {P}_H", "", "#include <stdint.h>", "",
         (_PRELUDE_FIXED if fixed else _PRELUDE_DOUBLE).format(p=p, P=P).rstrip(), "",
         f"#define {P}_N_INPUTS {n_in}", f"#define {P}_N_OUTPUTS {n_out}", "",
-        f"/* inputs: {', '.join(system.input_names)}; outputs: {', '.join(system.output_names)}"
+        f"/* inputs: {_comment(', '.join(system.input_names))}; outputs: {_comment(', '.join(system.output_names))}"
         + (" (Q16.16: value * 65536)" if fixed else "") + ".",
         "   Returns a bit mask of the outputs on which no rule fired (0: all fired). */",
         f"int {p}_evaluate(const {p}_real in[{P}_N_INPUTS], {p}_real out[{P}_N_OUTPUTS]);", "", f"#endif /* {P}_H */",
@@ -141,7 +151,7 @@ def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,
                                   "{", "    int none = 0;"]
     for i, v in enumerate(system.inputs):
         lo, hi = (w.const(u) for u in v.universe)
-        body.append(f"    const {p}_real x{i} = {p}_min({p}_max(in[{i}], {lo}), {hi}); /* {v.name} */")
+        body.append(f"    const {p}_real x{i} = {p}_min({p}_max(in[{i}], {lo}), {hi}); /* {_comment(v.name)} */")
     for i, v in enumerate(system.inputs):
         values = ", ".join(w.membership(mf, f"x{i}", f"{v.name}.{label}") for label, mf in v.terms.items())
         body.append(f"    const {p}_real mu{i}[{len(v.terms)}] = {{{values}}};")
@@ -173,7 +183,7 @@ def _rules(system: FuzzySystem, w: _Writer) -> list[str]:
             if c.premises[r, i] >= 0:
                 term = f"mu{i}[{c.premises[r, i]}]"
                 expr = w.mul(expr, term) if system.tnorm == "product" else f"{w.p}_min({expr}, {term})"
-        lines.append(f"    fire[{r}] = {w.mul(expr, w.const(c.weights[r]))}; /* {system.rules[r].text()} */")
+        lines.append(f"    fire[{r}] = {w.mul(expr, w.const(c.weights[r]))}; /* {_comment(system.rules[r].text())} */")
     return lines
 
 
@@ -192,7 +202,7 @@ def _outputs(system: FuzzySystem, w: _Writer) -> list[str]:
     lines = []
     for o, v in enumerate(system.outputs):
         rules = [r for r in range(len(system.rules)) if c.conclusions[r, o] >= 0]
-        lines.append(f"    {{ /* {v.name} */")
+        lines.append(f"    {{ /* {_comment(v.name)} */")
         if system.method == "mamdani":
             n = system.resolution
             lines += [f"        {p}_real num = {P}_ZERO, area = {P}_ZERO;", "        int k;",
