@@ -343,6 +343,9 @@ COUNTS = [
          expect="--n: must be an integer in [1, 100000]"),
     Case("worlds-generate-5000-digits", argv=("worlds", "generate", "circles", "--n", "9" * 5000, "--out", "{d}/w"),
          expect="--n: must be an integer in [1, 100000]"),
+    Case("train-parallel-not-a-divisor", argv=("train", "q-goal", "--episodes", "5", "--parallel", "3", "--out",
+                                               "{d}/q.json"),
+         expect="--parallel: for q-goal, N must divide the convergence window of 50 episodes"),
     Case("train-curve-bad-suffix", argv=("train", "q-goal", "--curve", "{d}/x.xyz", "--out", "{d}/q.json"),
          expect="matplotlib cannot write '.xyz'"),
 ]

@@ -17,12 +17,14 @@ from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import TrainRequest, checkpoint_path
+from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path
+from fuzzynav.storage import document_format
 
 PRIORS = ("none", "thesis")
 MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)
 PARALLEL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall")
-from fuzzynav.storage import document_format
+# tasks whose convergence is read on windows of episodes (learn.curves): a batch must divide them
+GOAL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces")
 
 
 def register(subparsers) -> None:
@@ -48,7 +50,8 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
                         "suffix matplotlib writes, checked before training)")
     parser.add_argument("--parallel", type=arguments.count(MAX_PARALLEL), metavar="N",
                         help="reinforcement learning: N robots per batch sharing one rule base, 1 to "
-                             f"{MAX_PARALLEL:,} (default: the thesis' one robot, episodes one by one)")
+                             f"{MAX_PARALLEL:,}; for the goal tasks a divisor of 50 (default: the thesis' one "
+                             "robot, episodes one by one)")
     parser.add_argument("--prior", choices=PRIORS,
                         help="fql-avoid: initial table, none (q = 0, best-quality extraction; default) or thesis")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -64,6 +67,11 @@ def run(args) -> int:
         validation.integer(args.parallel, field="--parallel", lo=1, hi=MAX_PARALLEL)
         if args.task not in PARALLEL_TASKS:
             raise InputError(f"only for {', '.join(PARALLEL_TASKS)}, not {args.task}", field="--parallel")
+        window = int(GOAL_CONVERGENCE["window"])
+        if args.task in GOAL_TASKS and window % args.parallel:
+            divisors = [str(k) for k in range(1, window + 1) if window % k == 0]
+            raise InputError(f"for {args.task}, N must divide the convergence window of {window} episodes "
+                             f"({', '.join(divisors[:-1])} or {divisors[-1]}), got {args.parallel}", field="--parallel")
     if args.prior is not None and args.task != "fql-avoid":
         raise InputError(f"only for fql-avoid, not {args.task}", field="--prior")
     out = args.out or Path(f"{args.task}.json")
