@@ -139,6 +139,22 @@ def test_resume_refuses_a_checkpoint_of_other_options(tmp_path):
                          **{**SMALL, "seed": 1}))
 
 
+def test_resume_refuses_a_checkpoint_made_on_other_worlds(tmp_path):
+    """A folder of worlds edited between a run and its resumption: the checkpoint's values were
+    measured on the old worlds, so resuming would mix two runs (bench refuses it the same way)."""
+    worlds = tmp_path / "worlds"
+    worlds.mkdir()
+    world = worlds / "a.yaml"
+    world.write_text("robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nmax_time: 30\n")
+    options = dict(target="goal-seeking:gsb", worlds=str(worlds), holdout=str(worlds), population=3, budget=6,
+                   validation=None, out=str(tmp_path / "t.yaml"), progress=False)
+    tune(TuneRequest(**options))
+    world.write_text("robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nmax_time: 30\n"
+                     "obstacles:\n  - circle: {center: [8, 8], radius: 2}\n")
+    with pytest.raises(session.InputError, match="--worlds: the training worlds of .* are not the ones"):
+        tune(TuneRequest(**{**options, "budget": 12, "resume": True}))
+
+
 def test_the_tuned_file_drives_run_and_round_trips_through_convert_and_c(tmp_path, capsys):
     out = tmp_path / "oab.yaml"
     assert main(["tune", "fuzzy-2b:oab", "--worlds", WORLDS, "--population", "4", "--budget", "32",

@@ -19,6 +19,7 @@ and resumed run ends exactly where an uninterrupted one does.
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 from collections.abc import Mapping
@@ -194,9 +195,18 @@ def _load_checkpoint(path: Path, request: TuneRequest, fitness: Fitness) -> list
         try:
             options = json.loads(str(data["options"]))
             sizes, x, f = data["sizes"], data["x"], data["f"]
+            worlds = str(data["worlds"]) if "worlds" in data.files else None  # written since 2026-12-07
         except (KeyError, ValueError) as error:
             raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
     validation.mapping(options, str(path), "options")
+    for key, value in request.replayed().items():
+        if options.get(key) != value:
+            raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
+                             source=str(path), field=key)
+    if worlds is not None and worlds != _worlds_digest(fitness):
+        raise InputError(f"the training worlds of {request.worlds} are not the ones the checkpoint was made on (a "
+                         "world edited, added or removed since): tune afresh, or restore them", source=str(path),
+                         field="--worlds")
     for name, array, columns in (("x", x, len(fitness.space.start)), ("f", f, 1 + len(OBJECTIVES))):
         if array.ndim != 2 or array.shape[1] != columns or array.dtype.kind != "f":
             raise InputError(f"must be a float array of {columns} columns, got {array.dtype} of shape {array.shape}",
@@ -205,10 +215,6 @@ def _load_checkpoint(path: Path, request: TuneRequest, fitness: Fitness) -> list
             or len(f) != len(x):
         raise InputError(f"the generations' sizes must add up to the {len(x)} rows of x and f", source=str(path),
                          field="sizes")
-    for key, value in request.replayed().items():
-        if options.get(key) != value:
-            raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
-                             source=str(path), field=key)
     if not np.isfinite(x).all():
         raise InputError("the populations must be finite numbers (no NaN or infinity)", source=str(path), field="x")
     _check_values(path, f, fitness)
@@ -236,10 +242,20 @@ def _check_values(path: Path, f: np.ndarray, fitness: Fitness) -> None:
                              source=str(path), field=f"f[{row}, {column}]")
 
 
-def _save_checkpoint(path: Path, request: TuneRequest, generations) -> None:
+def _worlds_digest(fitness: Fitness) -> str:
+    """A digest of the training worlds as the simulation reads them (set-ups, scenes, starts and
+    the navigator's constants): a resumed run must tune on the same worlds."""
+    digest = hashlib.sha256()
+    packed = fitness.worlds.packed
+    for array in (*packed, fitness.worlds.params):
+        digest.update(np.ascontiguousarray(array).tobytes())
+    return digest.hexdigest()
+
+
+def _save_checkpoint(path: Path, request: TuneRequest, generations, fitness: Fitness) -> None:
     from fuzzynav.storage import save_npz_atomic
 
-    save_npz_atomic(path, options=np.array(json.dumps(request.replayed())),
+    save_npz_atomic(path, options=np.array(json.dumps(request.replayed())), worlds=np.array(_worlds_digest(fitness)),
                     sizes=np.array([len(x) for x, _ in generations], dtype=np.int64),
                     x=np.concatenate([x for x, _ in generations]), f=np.concatenate([f for _, f in generations]))
 
@@ -295,7 +311,7 @@ def tune(request: TuneRequest) -> dict:
             if len(population) == asked:  # a population cut short by the budget ends the run untold
                 optimiser.tell(population, values[:, columns])
             if path is not None:
-                _save_checkpoint(path, request, generations)
+                _save_checkpoint(path, request, generations, fitness)
             bar.update(len(population) * n_worlds)
             bar.set_postfix(best=f"{best:.4f}")
         chosen = None
