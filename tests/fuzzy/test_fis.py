@@ -1,6 +1,7 @@
 """MATLAB .fis files: every membership function against its formula in the Fuzzy Logic Toolbox
 reference (written out here independently), MATLAB's semantics, round trips, errors."""
 
+import json
 import math
 
 import numpy as np
@@ -204,10 +205,21 @@ def test_a_fis_round_trip_answers_as_before_outside_the_ranges_too(name, tmp_pat
     path = tmp_path / f"{name}.fis"
     assert main(["fis", "convert", name, "--to", "fis", "-o", str(path)]) == 0
     system, again = get_system(name), load(path)
+    assert type(again) is type(system)  # a FuzzySystem again, which a controller's role takes (--fis)
     lo, hi = np.array([v.universe for v in system.inputs]).T
     wide = lo - (hi - lo), hi + (hi - lo)  # a third inside the ranges, the rest outside
     X = np.random.default_rng(2).uniform(*wide, (600, len(lo)))
     np.testing.assert_allclose(again.evaluate(X), system.evaluate(X), rtol=0, atol=1e-12)
+
+
+def test_a_fis_file_written_from_a_role_drives_its_controller_as_the_role(tmp_path, capsys):
+    path = tmp_path / "gsb.fis"
+    assert main(["fis", "convert", "goal-seeking", "--to", "fis", "-o", str(path)]) == 0
+    runs = []
+    for extra in ([], ["--fis", f"gsb={path}"]):
+        assert main(["run", "fig-IV-23", "--controller", "goal-seeking", "--json", *extra]) == 0
+        runs.append(json.loads(capsys.readouterr().out))
+    assert runs[1]["outcome"] == runs[0]["outcome"] and runs[1]["time_s"] == runs[0]["time_s"]
 
 
 def test_an_outputs_default_travels_in_the_fis_file():

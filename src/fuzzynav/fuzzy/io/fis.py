@@ -16,7 +16,8 @@ builds, used to compare with fuzzylite):
 
 - a Mamdani output is defuzzified on 101 points from end to end of its range (``linspace``),
   fuzzylite on the midpoints of ``resolution`` cells (1000 unless the file says otherwise);
-- an output on which no rule fires takes the middle of its range, fuzzylite gives NaN;
+- an output on which no rule fires takes the middle of its range, fuzzylite gives NaN (its
+  ``Default`` when the file states one, ``nan`` included);
 - a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;
   fuzzylite first aggregates the rules sharing an output term with it.
 
@@ -237,6 +238,7 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
     in_vars = [_variable(s, lines, False, matlab) for s in lines.sections if s["name"].startswith("[Input")]
     out_vars = [_variable(s, lines, True, matlab) for s in lines.sections if s["name"].startswith("[Output")]
     inputs, outputs = [v for v, _ in in_vars], [v for v, _ in out_vars]
+    stated = [any(key == "Default" for key, _, _ in s["items"]) for s in lines.sections if s["name"].startswith("[Output")]
     unknown = [s for s in lines.sections if not re.fullmatch(r"\[(System|Input\d+|Output\d+|Rules)\]", s["name"])]
     if unknown:
         raise lines.error(f"unknown section {unknown[0]['name']}", unknown[0]["line"])
@@ -246,7 +248,7 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
                 var.terms[label] = type(mf)(mf.params(), 0.0)
     defuzz = options.get("DefuzzMethod")
     kind = options.get("Type", "mamdani").lower()
-    for var in outputs:
+    for var, default_stated in zip(outputs, stated):
         if defuzz in ("Centroid", "Bisector", "MeanOfMaximum", "LargestOfMaximum", "SmallestOfMaximum"):
             points = {"resolution": MATLAB_POINTS, "grid": "linspace"} if matlab else {}
             var.defuzzifier = model.Defuzzifier(defuzz, **points)
@@ -254,7 +256,7 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
         elif defuzz is not None:
             var.defuzzifier = model.Defuzzifier(defuzz, type="Tsukamoto" if kind == "tsukamoto" else "Automatic")
             var.aggregation = None if matlab and kind == "sugeno" else options.get("AggMethod")
-        if matlab and math.isnan(var.default):
+        if matlab and math.isnan(var.default) and not default_stated:  # a stated Default=nan is kept
             var.default = 0.5 * (var.minimum + var.maximum)
     rules, connectives = [], set()
     for section in (s for s in lines.sections if s["name"] == "[Rules]"):
@@ -333,8 +335,7 @@ def to_fis(system: FuzzySystem | Engine) -> str:
             if isinstance(v, model.OutputVariable):
                 if v.lock_previous:
                     lines.append("LockPrevious=1")
-                if not math.isnan(v.default):
-                    lines.append(f"Default={number(v.default)}")
+                lines.append(f"Default={number(v.default)}")  # nan too: else MATLAB's reading takes the middle
     lines += ["", "[Rules]"]
     by_name = {v.name: v for v in engine.inputs + outs}
     for rule in block.rules:
