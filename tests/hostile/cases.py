@@ -388,9 +388,6 @@ FUZZY = [
          ("fis", "eval", "{d}/t.fll", "--csv", "{d}/in.csv"), expect="no finite answer"),
     Case("fll-csv-infinite-term", {"t.fll": _TS.replace("FORMULA", "1/(x-x)"), "in.csv": "x\n0.3\n"},
          ("fis", "eval", "{d}/t.fll", "--csv", "{d}/in.csv"), expect="gives inf"),
-    Case("fll-duplicate-term", {"t.fll": _fll("  term: hi Triangle 0 1 1\nOutputVariable",
-                                              "  term: hi Triangle 0 1 1\n  term: lo Triangle 0.5 1 1\nOutputVariable")},
-         _eval("t.fll"), expect="t.fll: line 7: variable 'x' has two terms named 'lo'"),
     Case("json-duplicate-terms", {"g.json": '{"name": "g", "inputs": [{"name": "x", "universe": [0, 1], "terms": '
                                             '{"Z": {"kind": "triangle", "params": [0, 0, 1]}, '
                                             '"Z": {"kind": "triangle", "params": [0, 1, 1]}}}]}'},

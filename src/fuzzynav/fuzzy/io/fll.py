@@ -182,9 +182,8 @@ def _variable(sec: dict, reader: _Reader):
     for key, value, line in sec["items"]:
         if key == "term":
             label, mf = term_from_fll(value, reader.source, line)
-            if label in var.terms:  # fuzzylite's rules would read the first, its output every one: refused
-                raise reader.error(f"variable {sec['name']!r} has two terms named {label!r}", line)
-            var.terms[label] = mf
+            var.terms[label] = mf  # a repeated name: the last one is the term, as fuzzylite's rules read it
+            # (its own examples repeat names: takagi_sugeno/matlab/juggler.fll; tests/fll compares)
         elif key == "range":
             parts = value.split()
             if len(parts) != 2:
