@@ -47,3 +47,9 @@ def test_resume_without_a_checkpoint_says_it_trained_from_the_start(tmp_path, ca
     assert "--resume: no checkpoint at" in capsys.readouterr().err
     assert main(["train", "q-goal", "--episodes", "10", "--quiet", "--out", str(out), "--resume"]) == 0
     assert "no checkpoint" not in capsys.readouterr().err  # the checkpoint of the first run was there
+
+
+def test_resume_of_a_one_pass_task_is_refused_without_promising_a_fresh_start(tmp_path, capsys):
+    assert main(["train", "anfis-tracker", "--resume", "--out", str(tmp_path / "a.json")]) == 2
+    err = capsys.readouterr().err
+    assert "--resume: not supported" in err and "training from the start" not in err

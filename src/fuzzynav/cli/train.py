@@ -22,6 +22,7 @@ from fuzzynav.storage import document_format
 
 PRIORS = ("none", "thesis")
 MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)
+# the reinforcement-learning tasks: --parallel, and --resume from checkpoints (the trackers train in one pass)
 PARALLEL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall")
 # tasks whose convergence is read on windows of episodes (learn.curves): a batch must divide them
 GOAL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces")
@@ -91,7 +92,7 @@ def run(args) -> int:
         progress=progress.enabled() and not (args.quiet or args.json),
     )
     first_checkpoint = checkpoint_path(out, "steering")  # every resumable task's first phase
-    if args.resume and not first_checkpoint.exists():  # said before a run that may take hours
+    if args.resume and args.task in PARALLEL_TASKS and not first_checkpoint.exists():  # before hours of training
         print(f"--resume: no checkpoint at {first_checkpoint}: training from the start", file=sys.stderr)
     result = train(request)
     if args.json:
