@@ -87,6 +87,9 @@ def load_controller(path, task: str | None = None):
     document = read_document(validation.file_path(path, field="model"))
     kind = document["kind"]
     loaders = model_loaders()
+    if kind == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
+        raise InputError("a training checkpoint, not a model: `fuzzynav train TASK --out FILE --resume` goes on "
+                         "from it, and FILE is the model to run", source=str(path), field="kind")
     if kind not in loaders:
         raise InputError(f"unknown model kind {kind!r}; known: {', '.join(sorted(loaders)) or 'none'}",
                          source=str(path), field="kind")

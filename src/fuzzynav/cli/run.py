@@ -85,7 +85,9 @@ def run(args) -> int:
     from fuzzynav.world.scenario_file import open_scenario
 
     if args.max_time is not None:
-        validation.positive(args.max_time, field="--max-time")
+        from fuzzynav.world.limits import MAX_TIME
+
+        validation.number(args.max_time, field="--max-time", lo=0.0, lo_open=True, hi=MAX_TIME)
     if args.fis and args.model:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     if args.rays and not args.plot:

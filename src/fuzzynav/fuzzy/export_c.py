@@ -115,9 +115,13 @@ class _Writer:
 
 
 def _check(system: FuzzySystem) -> None:
-    if not isinstance(system, FuzzySystem) or system.method not in ("ts0", "ts1", "mamdani"):
-        kind = getattr(system, "method", type(system).__name__)
-        raise InputError(f"C export takes TS0, TS1 and Mamdani systems, got {kind}", field="system")
+    if not isinstance(system, FuzzySystem):  # a file read as an engine (engine.convert.engine_to_system)
+        raise InputError("C export takes TS0, TS1 and Mamdani systems; this one holds what they cannot: what "
+                         "makes one is a single rule block, inputs clipped to their range (lock-range), outputs "
+                         "with no default, lock-range or lock-previous and one defuzzifier and aggregation, and "
+                         "terms of the package's shapes", field="system")
+    if system.method not in ("ts0", "ts1", "mamdani"):
+        raise InputError(f"C export takes TS0, TS1 and Mamdani systems, got {system.method}", field="system")
 
 
 def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,

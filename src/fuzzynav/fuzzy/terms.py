@@ -206,6 +206,12 @@ class GaussianProduct(_Params):
 
     kind, names = "gaussianproduct", ("mean_a", "sd_a", "mean_b", "sd_b")
 
+    def check(self) -> None:
+        for name in ("sd_a", "sd_b"):  # as a gaussian's sigma: the formula divides by it
+            value = getattr(self, name)
+            if not 0 < value < np.inf:
+                raise ValueError(f"gaussianproduct needs a finite {name} > 0, got {value}")
+
     def __call__(self, x):
         x = _x(x)
         a = np.where(x < self.mean_a, np.exp(-((x - self.mean_a) ** 2) / (2.0 * self.sd_a ** 2)), 1.0)

@@ -194,6 +194,9 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
     supported_version(doc, VERSION, source)
     _check_keys(doc, _TOP_KEYS, source, "", strict=False)
+    if "inputs" not in doc and doc.get("kind") == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
+        raise InputError("a training checkpoint, not a fuzzy system (`fuzzynav train ... --resume` reads it)",
+                         source=source, field="kind")
     if "inputs" not in doc and isinstance(doc.get("kind"), str):
         raise InputError(f"a {doc['kind']!r} model file, not a fuzzy system (run it with --model)", source=source,
                          field="kind")
