@@ -14,31 +14,9 @@ from fuzzynav.fuzzy.fis_terms import term_from_fis, term_to_fis
 from fuzzynav.fuzzy.io import dumps, load, loads
 from fuzzynav.fuzzy.io.fis import from_fis
 from fuzzynav.fuzzy.systems import get_system
+from tests.hostile.cases import _FLL
 
-FLL_DEFAULT = """Engine: d
-InputVariable: x
-  enabled: true
-  range: 0.000 1.000
-  lock-range: false
-  term: lo Triangle 0 0 1
-  term: hi Triangle 0 1 1
-OutputVariable: v
-  enabled: true
-  range: 0 1
-  aggregation: Maximum
-  defuzzifier: Centroid 100
-  default: 0.25
-  term: lo Triangle 0 0 1
-  term: hi Triangle 0 1 1
-RuleBlock: rb
-  enabled: true
-  conjunction: Minimum
-  disjunction: Maximum
-  implication: Minimum
-  activation: General
-  rule: if x is lo then v is lo
-  rule: if x is hi then v is hi
-"""
+FLL_DEFAULT = _FLL.replace("  default: nan", "  default: 0.25")  # x = 5: no rule fires
 
 X = np.linspace(-3.0, 13.0, 3201)
 
