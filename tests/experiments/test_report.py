@@ -220,3 +220,8 @@ def test_reproduce_without_ids_lists_them_and_says_nothing_ran(capsys, tmp_path)
     assert main(["reproduce", "--out", str(tmp_path / "f")]) == 0
     assert capsys.readouterr().out.splitlines()[-1].startswith("nothing run: name the ids to reproduce")
     assert not (tmp_path / "f").exists()
+
+
+def test_an_id_named_twice_runs_once(tmp_path, capsys):
+    assert main(["reproduce", "fig-IV-13", "fig-IV-13", "--quick", "--out", str(tmp_path)]) == 0
+    assert capsys.readouterr().out.count("fig-IV-13:") == 1

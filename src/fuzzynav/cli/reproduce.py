@@ -91,7 +91,7 @@ def run(args) -> int:
         if not args.list:
             print("nothing run: name the ids to reproduce, or all (e.g. fuzzynav reproduce fig-IV-23 --out figures/)")
         return 0
-    ids = list(registry.available()) if args.ids == ["all"] else args.ids
+    ids = list(registry.available()) if args.ids == ["all"] else list(dict.fromkeys(args.ids))  # each id once
     for key in ids:  # validate every id first
         registry.experiment(key)
     systems = rule_bases.from_options(args.fis)
