@@ -8,8 +8,8 @@ result is the same, bit for bit, for any number of threads.
 :func:`count` is how many threads a process uses: one per core it may run on, unless
 :func:`set_count` said otherwise (``fuzzynav tune --workers N``). The workers of a process pool
 (:func:`fuzzynav.bench.backends.pool_map`) use one each, since the pool already spreads its work
-over the cores. The thread pool is made on first use in each process: a forked child makes its
-own, never the parent's, whose threads it does not have.
+over the cores. The thread pool is made on first use and joined before the process forks (a fork
+copies no thread of it half-way; parent and child each make a new one when they next need it).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 CHUNKS_PER_THREAD = 8  # chunks cut per thread, so that a thread done early takes the next one
 _chosen: int | None = None
-_pool: tuple[int, int, ThreadPoolExecutor] | None = None  # (process id, threads, pool)
+_pool: tuple[int, ThreadPoolExecutor] | None = None  # (threads, pool)
 
 
 def cores() -> int:
@@ -64,10 +64,21 @@ def spread(task: Callable[[int, int], None], items: int, *, threads: int | None 
 
 
 def _executor(threads: int) -> ThreadPoolExecutor:
-    """This process' pool of ``threads`` threads, made on first use (and again after a fork)."""
+    """This process' pool of ``threads`` threads, made on first use."""
     global _pool
-    if _pool is None or _pool[0] != os.getpid() or _pool[1] != threads:
-        if _pool is not None and _pool[0] == os.getpid():
-            _pool[2].shutdown(wait=False)
-        _pool = (os.getpid(), threads, ThreadPoolExecutor(max_workers=threads, thread_name_prefix="fuzzynav"))
-    return _pool[2]
+    if _pool is None or _pool[0] != threads:
+        _join()
+        _pool = (threads, ThreadPoolExecutor(max_workers=threads, thread_name_prefix="fuzzynav"))
+    return _pool[1]
+
+
+def _join() -> None:
+    """End the pool's threads (before a fork, or to make one of another size)."""
+    global _pool
+    if _pool is not None:
+        _pool[1].shutdown(wait=True)
+    _pool = None
+
+
+if hasattr(os, "register_at_fork"):  # not on Windows, which does not fork
+    os.register_at_fork(before=_join)

@@ -1,5 +1,6 @@
 """Batches spread over threads: every item once, errors raised, one pool per process."""
 
+import os
 import threading
 
 import pytest
@@ -67,12 +68,28 @@ def test_a_count_below_one_is_refused():
         threads.set_count(0)
 
 
-def test_a_forked_child_makes_its_own_pool(monkeypatch):
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="only where processes fork")
+def test_a_fork_copies_no_thread_of_the_pool_and_both_sides_spread_again():
+    import multiprocessing
+
     threads.set_count(2)
-    parent = threads._executor(2)
-    assert threads._executor(2) is parent
-    monkeypatch.setattr(threads.os, "getpid", lambda: -1)  # as in a child after fork
-    assert threads._executor(2) is not parent
+    threads.spread(lambda start, stop: None, 8)  # the pool's threads are running
+    assert any(t.name.startswith("fuzzynav") for t in threading.enumerate())
+    with multiprocessing.get_context("fork").Pool(1) as pool:  # the fork joins them first
+        assert pool.apply_async(_spread_in_a_child).get(timeout=60) == list(range(40))  # a copied pool: a hang
+    threads.spread(lambda start, stop: None, 8)  # and the parent makes a new pool
+
+
+def _spread_in_a_child() -> list[int]:
+    seen, lock = [], threading.Lock()
+
+    def task(start, stop):
+        with lock:
+            seen.extend(range(start, stop))
+
+    threads.set_count(2)
+    threads.spread(task, 40)
+    return sorted(seen)
 
 
 def test_pool_workers_run_their_batches_on_one_thread():
