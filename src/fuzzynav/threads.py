@@ -20,7 +20,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 CHUNKS_PER_THREAD = 8  # chunks cut per thread, so that a thread done early takes the next one
 _chosen: int | None = None
-_pool: tuple[int, ThreadPoolExecutor] | None = None  # (threads, pool)
+_pool: tuple[int, ThreadPoolExecutor] | None = None  # (its threads, the pool)
 
 
 def cores() -> int:
@@ -56,7 +56,8 @@ def spread(task: Callable[[int, int], None], items: int, *, threads: int | None 
         return
     chunks = min(items, threads * per_thread)
     edges = [items * i // chunks for i in range(chunks + 1)]
-    futures = [_executor(threads).submit(task, start, stop) for start, stop in zip(edges, edges[1:])]
+    pool = _executor(max(threads, count()))
+    futures = [pool.submit(task, start, stop) for start, stop in zip(edges, edges[1:])]
     errors = [future.exception() for future in futures]
     for error in errors:
         if error is not None:
@@ -64,9 +65,10 @@ def spread(task: Callable[[int, int], None], items: int, *, threads: int | None 
 
 
 def _executor(threads: int) -> ThreadPoolExecutor:
-    """This process' pool of ``threads`` threads, made on first use."""
+    """This process' pool, of at least ``threads`` threads (made on first use, or anew larger):
+    a batch of fewer chunks than threads keeps the others idle."""
     global _pool
-    if _pool is None or _pool[0] != threads:
+    if _pool is None or _pool[0] < threads:
         _join()
         _pool = (threads, ThreadPoolExecutor(max_workers=threads, thread_name_prefix="fuzzynav"))
     return _pool[1]

@@ -18,13 +18,12 @@ ROBOTS_PER_THREAD = 32  # running robots a thread must have before a batch is cu
 
 def step_in_blocks(running: int, params, layer_params, navigator, setup, world, k, robots, imperfect) -> int:
     """:func:`~fuzzynav.kernels.step.step` (the arguments after ``running``, the robots running
-    before it; returns how many still run), in row blocks on the process' threads when there are at
-    least :data:`ROBOTS_PER_THREAD` running robots a thread and the robot is perfect and moved by
-    the step; otherwise one call. The result
-    is the same for any number of threads, but for a navigator that raises on a non-finite input:
-    there every other block ends its step, where one call stops at the robot that raised.
-    (A block's share of the batch is fixed by its rows, so blocks whose robots have ended sooner
-    wait for the others.)"""
+    before it; returns how many still run), in row blocks on the process' threads when there are
+    at least :data:`ROBOTS_PER_THREAD` running robots a thread and the robot is perfect and moved
+    by the step; otherwise one call. The result is the same for any number of threads, but for a
+    navigator that raises on a non-finite input: there every other block ends its step, where one
+    call stops at the robot that raised. (A block's share of the batch is fixed by its rows, so
+    blocks whose robots have ended sooner wait for the others.)"""
     count = 1 if running < 2 * ROBOTS_PER_THREAD else min(threads.count(), running // ROBOTS_PER_THREAD)
     if count <= 1 or imperfect is not None or not robots.moves:
         return step.step(params, layer_params, navigator, setup, world, k, robots, imperfect)
