@@ -1,26 +1,33 @@
 """The cores of one process for compiled kernels that release the GIL (``@jit(nogil=True)``).
 
 A batch of independent items — the jobs of a tuning generation (:mod:`fuzzynav.tune.episodes`),
-each one robot on one world — is cut into contiguous chunks that a pool of threads runs, each
-chunk one kernel call writing its own rows of the output. Items do not share state, so the
+each one robot on one world — is cut into contiguous chunks that threads take one after another,
+each chunk one kernel call writing its own rows of the output. Items do not share state, so the
 result is the same, bit for bit, for any number of threads.
 
 :func:`count` is how many threads a process uses: one per core it may run on, unless
-:func:`set_count` said otherwise (``fuzzynav tune --workers N``). The workers of a process pool
-(:func:`fuzzynav.bench.backends.pool_map`) use one each, since the pool already spreads its work
-over the cores. The thread pool is made on first use and joined before the process forks (a fork
-copies no thread of it half-way; parent and child each make a new one when they next need it).
+:func:`set_count` (or :func:`using`) said otherwise (``fuzzynav tune --workers N``). The workers of
+a process pool (:func:`fuzzynav.bench.backends.pool_map`) use one each, since the pool already
+spreads its work over the cores. The threads live in one pool per process, made on first use and
+joined before the process forks (a fork copies no thread of it half-way; parent and child each
+make a new one when they next need it). A :func:`spread` called from one of its threads runs its
+chunks in that thread.
 """
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 import os
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 
 CHUNKS_PER_THREAD = 8  # chunks cut per thread, so that a thread done early takes the next one
 _chosen: int | None = None
 _pool: tuple[int, ThreadPoolExecutor] | None = None  # (its threads, the pool)
+_lock = threading.Lock()  # around _pool
+_inside = threading.local()  # .chunk set while a pool thread runs a chunk
 
 
 def cores() -> int:
@@ -44,42 +51,72 @@ def set_count(threads: int | None) -> None:
     _chosen = threads
 
 
+@contextlib.contextmanager
+def using(threads: int | None) -> Iterator[None]:
+    """:func:`set_count` for the ``with`` block, then the count as it was."""
+    before = _chosen
+    set_count(threads)
+    try:
+        yield
+    finally:
+        set_count(before)
+
+
 def spread(task: Callable[[int, int], None], items: int, *, threads: int | None = None,
            per_thread: int = CHUNKS_PER_THREAD) -> None:
-    """Run ``task(start, stop)`` over contiguous chunks of ``range(items)``, ``per_thread`` chunks
-    a thread, on ``threads`` threads (default :func:`count`; in this thread when one is enough);
-    the first error of a chunk is raised after every chunk has ended."""
+    """Run ``task(start, stop)`` over contiguous chunks of ``range(items)``, about ``per_thread``
+    chunks a thread, on at most ``threads`` threads at once (default :func:`count`; in this thread
+    when one is enough, or when this is a pool thread already), each thread taking the next chunk
+    when it is done. Every chunk is run; then the first error in chunk order is raised, or an
+    :class:`ExceptionGroup` of them all when the chunks failed in different ways."""
     threads = min(count() if threads is None else threads, items)
-    if threads <= 1:
+    if threads <= 1 or getattr(_inside, "chunk", False):
         if items:
             task(0, items)
         return
     chunks = min(items, threads * per_thread)
     edges = [items * i // chunks for i in range(chunks + 1)]
-    pool = _executor(max(threads, count()))
-    futures = [pool.submit(task, start, stop) for start, stop in zip(edges, edges[1:])]
-    errors = [future.exception() for future in futures]
-    for error in errors:
-        if error is not None:
-            raise error
+    following = itertools.count()  # next() of it is atomic: each chunk is taken once
+    errors: dict[int, Exception] = {}
+
+    def runner() -> None:
+        _inside.chunk = True
+        try:
+            while (i := next(following)) < chunks:
+                try:
+                    task(edges[i], edges[i + 1])
+                except Exception as error:  # noqa: BLE001 - raised by spread once every chunk has run
+                    errors[i] = error
+        finally:
+            _inside.chunk = False
+
+    for future in [_executor(threads).submit(runner) for _ in range(threads)]:
+        future.result()
+    failed = [errors[i] for i in sorted(errors)]
+    if failed and all(type(error) is type(failed[0]) for error in failed):
+        raise failed[0]
+    if failed:
+        raise ExceptionGroup(f"{len(failed)} of {chunks} chunks failed", failed)
 
 
 def _executor(threads: int) -> ThreadPoolExecutor:
-    """This process' pool, of at least ``threads`` threads (made on first use, or anew larger):
-    a batch of fewer chunks than threads keeps the others idle."""
+    """This process' pool, of at least ``threads`` threads (made on first use, or anew larger)."""
     global _pool
-    if _pool is None or _pool[0] < threads:
-        _join()
-        _pool = (threads, ThreadPoolExecutor(max_workers=threads, thread_name_prefix="fuzzynav"))
-    return _pool[1]
+    with _lock:
+        if _pool is None or _pool[0] < threads:
+            old, _pool = _pool, (threads, ThreadPoolExecutor(max_workers=threads, thread_name_prefix="fuzzynav"))
+            if old is not None:
+                old[1].shutdown(wait=False)  # its threads end once idle
+        return _pool[1]
 
 
 def _join() -> None:
-    """End the pool's threads (before a fork, or to make one of another size)."""
+    """End the pool's threads before a fork (not from one of them, which cannot join itself)."""
     global _pool
-    if _pool is not None:
-        _pool[1].shutdown(wait=True)
-    _pool = None
+    with _lock:
+        old, _pool = _pool, None
+    if old is not None:
+        old[1].shutdown(wait=not getattr(_inside, "chunk", False))
 
 
 if hasattr(os, "register_at_fork"):  # not on Windows, which does not fork

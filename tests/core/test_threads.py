@@ -98,3 +98,41 @@ def test_pool_workers_run_their_batches_on_one_thread():
     started = []
     _worker_start(started.append, ("ready",))
     assert threads.count() == 1 and started == ["ready"]
+
+
+def test_at_most_count_chunks_run_at_once_whatever_the_pool_once_grew_to():
+    running, peak, lock = [0], [0], threading.Lock()
+
+    def task(start, stop):
+        with lock:
+            running[0] += 1
+            peak[0] = max(peak[0], running[0])
+        threading.Event().wait(0.002)
+        with lock:
+            running[0] -= 1
+
+    threads.set_count(6)
+    threads.spread(task, 60)  # a pool of six
+    peak[0] = 0
+    with threads.using(2):
+        threads.spread(task, 60)
+    assert peak[0] == 2 and threads.count() == 6  # using() gave the count back
+
+
+def test_a_spread_inside_a_chunk_runs_there_and_mixed_errors_come_as_a_group():
+    threads.set_count(2)
+    seen, lock = [], threading.Lock()
+
+    def inner(start, stop):
+        with lock:
+            seen.append(threading.current_thread().name)
+
+    threads.spread(lambda start, stop: threads.spread(inner, 4), 4)  # no deadlock: inline in the pool threads
+    assert seen and all(name.startswith("fuzzynav") for name in seen)
+
+    def task(start, stop):
+        raise (ValueError if start == 0 else KeyError)(start)
+
+    with pytest.raises(ExceptionGroup) as group:
+        threads.spread(task, 4)
+    assert {type(e) for e in group.value.exceptions} == {ValueError, KeyError}

@@ -121,3 +121,14 @@ def test_a_ramp_narrower_than_the_fixed_point_step_is_a_step_and_names_stay_in_c
         ours, flags = _run(_compile(system, fixed, tmp_path), X, 1, fixed)  # compiled with -Werror
         assert (flags == 0).all()
         np.testing.assert_allclose(ours[:3], system.evaluate(X)[:3], atol=2e-3)
+
+
+def test_a_narrow_ramp_far_from_the_input_does_not_overflow_q16(tmp_path):
+    """A ramp a few fixed-point steps wide on a wide range: (x - a) / (b - a) is about 10^9 for an x
+    far from it, past int32; the input is held to the ramp before the division."""
+    x = Variable("x", (-10.0, 10.0), {"lo": Triangular(-10.0, -10.0, 0.0), "hi": Triangular(0.0, 1e-4, 10.0)})
+    y = Variable("y", (0.0, 1.0), {"s": Triangular(0.0, 0.0, 1.0), "b": Triangular(0.0, 1.0, 1.0)})
+    system = FuzzySystem([x], [y], ["IF x IS lo THEN y IS s", "IF x IS hi THEN y IS b"], method="mamdani")
+    X = np.array([[9.0], [5.0], [-9.0], [0.5]])
+    ours, flags = _run(_compile(system, "Q16.16", tmp_path), X, 1, "Q16.16")
+    np.testing.assert_allclose(ours, system.evaluate(X), atol=2e-3)

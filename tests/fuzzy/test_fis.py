@@ -184,10 +184,26 @@ def test_a_fis_round_trip_answers_as_before_outside_the_ranges_too(name, tmp_pat
     assert main(["fis", "convert", name, "--to", "fis", "-o", str(path)]) == 0
     system, again = get_system(name), load(path)
     assert type(again) is type(system)  # a FuzzySystem again, which a controller's role takes (--fis)
+    _only_keys_other_readers_take(path.read_text())
     lo, hi = np.array([v.universe for v in system.inputs]).T
     wide = lo - (hi - lo), hi + (hi - lo)  # a third inside the ranges, the rest outside
     X = np.random.default_rng(2).uniform(*wide, (600, len(lo)))
     np.testing.assert_allclose(again.evaluate(X), system.evaluate(X), rtol=0, atol=1e-12)
+
+
+def _only_keys_other_readers_take(text: str) -> None:
+    """The keys of each section outside comments are ones fuzzylite's FisImporter takes (MATLAB's,
+    and an output's LockRange, LockPrevious and a numeric Default); the package's others are in
+    ``% fuzzynav:`` comments."""
+    section, allowed = None, {"Input": set(), "Output": {"LockRange", "LockPrevious", "Default"}}
+    for line in text.splitlines():
+        line = line.split("%", 1)[0].strip()
+        if line.startswith("["):
+            section = line.strip("[]").rstrip("0123456789")
+        elif line and section in allowed:
+            key, _, value = line.partition("=")
+            assert key in {"Name", "Enabled", "Range", "NumMFs"} | allowed[section] or key.startswith("MF"), line
+            assert key != "Default" or math.isfinite(float(value)), line
 
 
 def test_a_fis_file_written_from_a_role_drives_its_controller_as_the_role(tmp_path, capsys):

@@ -545,7 +545,7 @@ NAMES_AND_IMPORTS = [
     Case("csv-more-values-than-columns", {"in.csv": "drg,theta\n1,0,5\n"},
          ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"), expect="in.csv: line 2: 3 values for 2 columns"),
     Case("csv-quoted-newline-is-no-number", {"in.csv": 'drg,theta\n1,"0\n5"\n'},
-         ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"), expect="non-numeric value"),
+         ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"), expect="is not a number in {'drg'"),
     Case("fis-convert-suffix-against-to", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", "{d}/x.json"),
          expect="-o: the file's suffix says json, --to says fll"),
     Case("fis-convert-into-a-folder", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", "{d}/out/"),

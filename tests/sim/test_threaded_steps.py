@@ -64,6 +64,7 @@ def test_blocks_on_threads_step_as_one_call(monkeypatch, name, moving, steps):
             np.testing.assert_array_equal(state, state_1)
             np.testing.assert_array_equal(status, status_1)
         assert fault_many == fault_one
+    assert kernel.targetoptions["nogil"]  # else the blocks would take turns
     outcomes = one[-1][1][:, step_kernel.OUTCOME]
     assert (outcomes == step_kernel.RUNNING).any()
     if moving:

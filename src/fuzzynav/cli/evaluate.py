@@ -78,7 +78,8 @@ def run(args) -> int:
     if args.save_failures is not None:
         if args.save_failures.exists() and not args.save_failures.is_dir():
             raise InputError(f"{args.save_failures} is a file; give a folder", field="--save-failures")
-        made = not args.save_failures.exists()  # made now, so that an unwritable place fails before any run
+        # made now, so that an unwritable place fails before any run (and removed if nothing is saved)
+        made = [folder for folder in (args.save_failures, *args.save_failures.parents) if not folder.exists()]
         args.save_failures.mkdir(parents=True, exist_ok=True)
 
     def progress(i, run):
@@ -100,8 +101,9 @@ def run(args) -> int:
         value = result[key]
         print(f"  {key:20s} {'n/a' if value is None else f'{value:6.2f} {unit}'}  (over the episodes that reached the goal)")
     saved = [run["saved"] for run in result["episodes"] if "saved" in run]
-    if args.save_failures is not None and made and not saved:
-        args.save_failures.rmdir()  # nothing to keep: no empty folder left behind
+    if args.save_failures is not None and not saved:
+        for folder in made:  # the folders made above, deepest first: no empty folder left behind
+            folder.rmdir()
     if args.save_failures is not None:
         rerun = f"--model {args.model}" if args.model else f"--controller {args.controller}"
         print(f"saved {len(saved)} failed worlds (scenario + plot) to {args.save_failures}/; rerun one with: "

@@ -194,8 +194,8 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
     for line, row in table:
         try:
             rows.append([_decimal(row[n]) for n in system.input_names])
-        except (TypeError, ValueError):
-            raise InputError(f"non-numeric value in {dict((n, row[n]) for n in system.input_names)}",
+        except (TypeError, ValueError) as error:
+            raise InputError(f"{error} in {dict((n, row[n]) for n in system.input_names)}",
                              source=path, field=f"line {line}") from None
         if any(math.isnan(v) for v in rows[-1]):
             raise InputError(f"NaN input in {dict((n, row[n]) for n in system.input_names)}",

@@ -82,8 +82,7 @@ def run(args) -> int:
         raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
     if request.resume and checkpoint is not None and not checkpoint.is_file():
         print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
-    threads.set_count(args.workers)
-    with progress.quiet(not request.progress):
+    with threads.using(args.workers), progress.quiet(not request.progress):
         result = tune(request)
     written = _write(request, result)
     if args.json:

@@ -79,6 +79,14 @@ class _Writer:
         its step (1/65536) is a step: its width rounds to 0, and dividing by it would trap."""
         return width > 0 and (not self.fixed or round(width * _SCALE) != 0)
 
+    def within(self, x: str, lo: float, hi: float) -> str:
+        """``x`` in fixed point held to [``lo``, ``hi``] before a ramp's division, whose quotient
+        would pass int32 where the ramp is narrow and ``x`` far (its slope times the distance); in
+        floating point ``x`` itself (the ramp's value is held to [0, 1] after)."""
+        if not self.fixed or not (math.isfinite(lo) and math.isfinite(hi)):
+            return x
+        return f"{self.p}_min({self.p}_max({x}, {self.const(lo)}), {self.const(hi)})"
+
     def mul(self, a: str, b: str) -> str:
         return f"{self.p.upper()}_MUL({a}, {b})"
 
@@ -91,11 +99,11 @@ class _Writer:
             a, b, c, d = mf._edges()
             parts = []
             if b > -math.inf:
-                rise = (self.div(f"({x} - {self.const(a)})", self.const(b - a)) if self.sloped(b - a)
+                rise = (self.div(f"({self.within(x, a, b)} - {self.const(a)})", self.const(b - a)) if self.sloped(b - a)
                         else f"({x} < {self.const(a)} ? {self.p.upper()}_ZERO : {self.p.upper()}_ONE)")
                 parts.append(rise)
             if c < math.inf:
-                fall = (self.div(f"({self.const(d)} - {x})", self.const(d - c)) if self.sloped(d - c)
+                fall = (self.div(f"({self.const(d)} - {self.within(x, c, d)})", self.const(d - c)) if self.sloped(d - c)
                         else f"({x} > {self.const(d)} ? {self.p.upper()}_ZERO : {self.p.upper()}_ONE)")
                 parts.append(fall)
             expr = f"{self.p.upper()}_ONE"

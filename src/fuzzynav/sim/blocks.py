@@ -1,7 +1,9 @@
 """A large batch's step in row blocks on the process' threads.
 
-The compiled step (:func:`fuzzynav.kernels.step.step`) releases the GIL, and a robot's step reads
-only its own rows of the batch's arrays and the shared world. So the rows can be cut into blocks
+The compiled step (:func:`fuzzynav.kernels.step.step`) releases the GIL, and a robot's step writes
+only its own rows of the batch's arrays and reads the shared world — but for one flag of the
+layers' parameters, ``grow`` (its obstacle-point slots are nearly full), which any robot may set to
+1 and the simulator reads once the step has ended. So the rows can be cut into blocks
 that threads step at once (:func:`fuzzynav.threads.spread`), each block one call of the step on
 views of its rows. The moving obstacles are placed once, before the blocks, and the blocks are
 given the world with the obstacles in place.

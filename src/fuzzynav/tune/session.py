@@ -248,7 +248,8 @@ def _worlds_digest(fitness: Fitness) -> str:
     digest = hashlib.sha256()
     packed = fitness.worlds.packed
     for array in (*packed, fitness.worlds.params):
-        digest.update(np.ascontiguousarray(array).tobytes())
+        array = np.ascontiguousarray(array)
+        digest.update(f"{array.dtype.str}{array.shape}".encode() + array.tobytes())
     return digest.hexdigest()
 
 

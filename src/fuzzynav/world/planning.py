@@ -54,9 +54,10 @@ def default_cell(world: World) -> float:
     """Grid cell (m): 0.1 m, or 0.05 m among posts thinner than 0.3 m (BARN's), where the free
     strips between posts are narrow. (A thin wall needs no finer cell: inflated by the robot's
     radius it blocks a band wider than a cell's diagonal.) A world so large that the grid would
-    pass :data:`MAX_GRID_CELLS` gets cells just large enough to stay within it (over 100 m × 100 m
-    at 0.1 m): its memory and time stay bounded, and passages narrower than about a cell may be
-    seen as closed."""
+    pass :data:`MAX_GRID_CELLS` (about: the rows round up) gets cells just large enough to stay
+    within it — over 100 m × 100 m at 0.1 m, over 50 m × 50 m at 0.05 m: its memory and time stay
+    bounded, passages narrower than about a cell may be seen as closed, and a cell's clearance,
+    measured at its centre, may overstate its corners' by up to half its diagonal."""
     radii = [float(o.radius) for o in world.obstacles if o.kind == "circle"]
     fine = 0.05 if radii and min(radii) < 0.15 else 0.1
     return max(fine, math.sqrt(world.width * world.height / MAX_GRID_CELLS))

@@ -22,10 +22,13 @@ builds, used to compare with fuzzylite):
   fuzzylite first aggregates the rules sharing an output term with it.
 
 Neither clips inputs to their range (MATLAB warns and evaluates the value as it is), unless the
-variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's ``LockRange``
-(inputs and outputs), ``LockPrevious`` and ``Default`` (outputs) where they are set, and the
-reader takes them back, so a system written as ``.fis`` answers as before everywhere (outside the
-ranges too). Errors raise :class:`InputError` naming the file, the line and the field.
+variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's ``LockRange``,
+``LockPrevious`` and ``Default`` of an output where they are set, and — where fuzzylite's reader
+would refuse a key (an input's ``LockRange``, a ``Default`` of NaN) — writes it in a comment,
+``% fuzzynav: LockRange=1``, which MATLAB and fuzzylite skip and this reader takes as the key. So a
+system written as ``.fis`` reads back answering as before everywhere (outside the ranges too), and
+the file stays one the other two read. Errors raise :class:`InputError` naming the file, the line
+and the field.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.system import FuzzySystem
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
+ANNOTATION = re.compile(r"\s*%\s*fuzzynav:\s*(\S.*)")  # "% fuzzynav: Key=value": a key in a comment
 _TNORMS = {"min": "Minimum", "prod": "AlgebraicProduct", "bounded_difference": "BoundedDifference",
            "drastic_product": "DrasticProduct", "einstein_product": "EinsteinProduct",
            "hamacher_product": "HamacherProduct", "nilpotent_minimum": "NilpotentMinimum"}
@@ -70,7 +74,8 @@ class _Lines:
         self.source = source
         self.sections: list[dict] = []
         for line_number, raw in enumerate(text.splitlines(), start=1):
-            line = raw.split("%", 1)[0].split("#", 1)[0].strip()
+            noted = ANNOTATION.fullmatch(raw)  # a key of this package's, in a comment other readers skip
+            line = noted.group(1).strip() if noted else raw.split("%", 1)[0].split("#", 1)[0].strip()
             if not line:
                 continue
             if line.startswith("["):
@@ -328,14 +333,17 @@ def to_fis(system: FuzzySystem | Engine) -> str:
             lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
                       f"NumMFs={len(v.terms)}"]
             lines += [f"MF{k}='{label}':{term_to_fis(mf)}" for k, (label, mf) in enumerate(v.terms.items(), 1)]
-            # fuzzylite's keys beside MATLAB's, which this reader takes back: without them a round trip
-            # would answer differently outside the range (no clipping) or where no rule fires
+            # without these a round trip would answer differently outside the range (no clipping) or
+            # where no rule fires: fuzzylite's keys where its reader takes them (outputs), the others
+            # as comments that this reader takes back and MATLAB's and fuzzylite's skip
+            output = isinstance(v, model.OutputVariable)
             if v.lock_range:
-                lines.append("LockRange=1")
-            if isinstance(v, model.OutputVariable):
-                if v.lock_previous:
-                    lines.append("LockPrevious=1")
-                lines.append(f"Default={number(v.default)}")  # nan too: else MATLAB's reading takes the middle
+                lines.append("LockRange=1" if output else "% fuzzynav: LockRange=1")
+            if output and v.lock_previous:
+                lines.append("LockPrevious=1")
+            if output:  # nan too: else MATLAB's reading takes the middle of the range
+                default = f"Default={number(v.default)}"
+                lines.append(default if math.isfinite(v.default) else f"% fuzzynav: {default}")
     lines += ["", "[Rules]"]
     by_name = {v.name: v for v in engine.inputs + outs}
     for rule in block.rules:
