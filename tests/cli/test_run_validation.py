@@ -103,7 +103,7 @@ def test_a_device_is_not_a_missing_scenario(capsys):
     (["run", "no-such-scenario", "--controller", "x"], "SCENARIO: no such scenario file or built-in scenario"),
     (["run", "example-gaol", "--controller", "x"], "did you mean example-goal"),
     (["run", "example-goal", "--controller", "no-such-controller"], "--controller: unknown controller"),
-    (["run", "example-goal", "--controller", "x", "--max-time", "-1"], "--max-time: must be a finite number > 0"),
+    (["run", "example-goal", "--controller", "x", "--max-time", "-1"], "--max-time: must be > 0, got -1.0"),
     (["run", "example-goal", "--model", "/nonexistent/model.json"], "no such model file"),
     (["scenarios", "--show", "example-gaol"], "--show: no built-in scenario 'example-gaol' (did you mean example-goal"),
 ])
