@@ -38,7 +38,7 @@ def test_eval_csv_table(tmp_path, capsys):
     np.testing.assert_array_equal([float(r[2]) for r in rows[1:]], expected)
     src.write_text("theta_er,dtheta_er\n0.1,oops\n")
     assert main(["fis", "eval", "tracking", "--csv", str(src)]) == 2
-    assert "in.csv: line 2: non-numeric" in capsys.readouterr().err
+    assert "in.csv: line 2: 'oops' is not a number" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("fmt", ["fll", "json", "yaml"])

@@ -246,9 +246,7 @@ def _worlds_digest(fitness: Fitness) -> str:
     """A digest of the training worlds as the simulation reads them (set-ups, scenes, starts and
     the navigator's constants): a resumed run must tune on the same worlds."""
     digest = hashlib.sha256()
-    packed = fitness.worlds.packed
-    for array in (*packed, fitness.worlds.params):
-        array = np.ascontiguousarray(array)
+    for array in map(np.ascontiguousarray, (*fitness.worlds.packed, fitness.worlds.params)):
         digest.update(f"{array.dtype.str}{array.shape}".encode() + array.tobytes())
     return digest.hexdigest()
 
