@@ -137,11 +137,11 @@ def run(args) -> int:
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     if args.controllers:
         driven = ", ".join(args.controllers)
+    elif args.scenario:
+        driven = "the controllers it names" if len(args.scenario) == 1 else "the controllers each names"
     else:
-        driven = ("the controllers it names" if len(args.scenario) == 1 else "the controllers each names") \
-            if args.scenario else "their controllers"
-    print(f"fuzzynav demo: {what} with {driven}, "
-          f"into {args.out}/", flush=True)
+        driven = "their controllers"
+    print(f"fuzzynav demo: {what} with {driven}, into {args.out}/", flush=True)
     from fuzzynav.jit import NOTICE
 
     NOTICE.silence()  # loading a scenario may compile (its start's placement check): the banner below says it
