@@ -18,10 +18,12 @@ from __future__ import annotations
 
 import contextlib
 import itertools
+import math
 import os
 import threading
 from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 
 CHUNKS_PER_THREAD = 8  # chunks cut per thread, so that a thread done early takes the next one
 _chosen: int | None = None
@@ -31,11 +33,60 @@ _inside = threading.local()  # .chunk set while a pool thread runs a chunk
 
 
 def cores() -> int:
-    """The cores this process may run on."""
+    """The cores this process may run on: those of its CPU affinity (every core where the system
+    does not say), fewer where a Linux control group caps its CPU time (a container or a CI
+    runner given 2 CPUs on a larger machine: :func:`cpu_quota`). The default of every
+    ``--workers`` and of the threads of a batch."""
     try:
-        return len(os.sched_getaffinity(0)) or 1
+        allowed = len(os.sched_getaffinity(0)) or 1
     except AttributeError:  # macOS, Windows
-        return os.cpu_count() or 1
+        allowed = os.cpu_count() or 1
+    quota = cpu_quota()
+    return max(1, min(allowed, math.ceil(quota))) if quota is not None else allowed
+
+
+def cpu_quota(root: Path = Path("/sys/fs/cgroup"), membership: Path = Path("/proc/self/cgroup")) -> float | None:
+    """The CPUs' worth of time this process' control group may use — quota / period, from cgroup
+    v2's ``cpu.max`` or v1's ``cpu.cfs_quota_us`` and ``cpu.cfs_period_us`` of the group that
+    ``membership`` names (then of the hierarchy's root, as a container sees its own) — or None
+    where there is no cap or nothing can be read (not Linux, no cgroup file system)."""
+    try:
+        lines = membership.read_text().splitlines()
+    except OSError:
+        return None
+    for line in lines:
+        parts = line.split(":", 2)
+        if len(parts) != 3:
+            continue
+        controllers, group = parts[1], parts[2].lstrip("/")
+        if controllers == "":  # v2: "0::/group"
+            candidates = [root / group / "cpu.max", root / "cpu.max"]
+        elif "cpu" in controllers.split(","):  # v1: "N:cpu,cpuacct:/group"
+            candidates = [folder for base in (root / "cpu", root / "cpu,cpuacct") for folder in (base / group, base)]
+        else:
+            continue
+        for place in candidates:
+            share = _share(place)
+            if share is not False:
+                return share
+    return None
+
+
+def _share(place: Path) -> float | None | bool:
+    """quota / period of the cgroup file ``place`` (v2's ``cpu.max``) or folder (v1's two files):
+    None for no cap, False where it cannot be read."""
+    try:
+        if place.name == "cpu.max":
+            quota, period = place.read_text().split()[:2]
+        else:
+            quota = (place / "cpu.cfs_quota_us").read_text().strip()
+            period = (place / "cpu.cfs_period_us").read_text().strip()
+        if quota in ("max", "-1"):
+            return None
+        share = int(quota) / int(period)
+    except (OSError, ValueError, ZeroDivisionError):
+        return False
+    return share if share > 0 else None
 
 
 def count() -> int:

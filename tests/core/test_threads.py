@@ -136,3 +136,34 @@ def test_a_spread_inside_a_chunk_runs_there_and_mixed_errors_come_as_a_group():
     with pytest.raises(ExceptionGroup) as group:
         threads.spread(task, 4)
     assert {type(e) for e in group.value.exceptions} == {ValueError, KeyError}
+
+
+def _cgroup(tmp_path, membership, files):
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    (tmp_path / "self-cgroup").write_text(membership)
+    return {"root": tmp_path / "fs", "membership": tmp_path / "self-cgroup"}
+
+
+@pytest.mark.parametrize("membership,files,quota", [
+    ("0::/ci/job\n", {"fs/ci/job/cpu.max": "150000 100000\n"}, 1.5),  # v2, the process' own group
+    ("0::/\n", {"fs/cpu.max": "200000 100000\n"}, 2.0),  # v2 in a container: its root
+    ("0::/ci/job\n", {"fs/ci/job/cpu.max": "max 100000\n"}, None),  # v2, no cap
+    ("4:memory:/x\n1:cpu,cpuacct:/docker/abc\n",
+     {"fs/cpu,cpuacct/docker/abc/cpu.cfs_quota_us": "50000\n", "fs/cpu,cpuacct/docker/abc/cpu.cfs_period_us": "100000\n"},
+     0.5),  # v1, the group under the joint mount
+    ("1:cpu:/\n", {"fs/cpu/cpu.cfs_quota_us": "-1\n", "fs/cpu/cpu.cfs_period_us": "100000\n"}, None),  # v1, no cap
+    ("0::/ci/job\n", {}, None),  # nothing readable
+    ("0::/ci/job\n", {"fs/ci/job/cpu.max": "garbage\n", "fs/cpu.max": "300000 100000"}, 3.0),  # unreadable: next
+    ("0::/\n", {"fs/cpu.max": "100000 0\n"}, None),  # a zero period reads as nothing
+])
+def test_the_cpu_quota_of_a_control_group_is_read(tmp_path, membership, files, quota):
+    assert threads.cpu_quota(**_cgroup(tmp_path, membership, files)) == quota
+
+
+def test_cores_are_capped_by_the_quota_rounded_up_and_never_below_one(monkeypatch):
+    monkeypatch.setattr(os, "sched_getaffinity", lambda _: set(range(8)), raising=False)
+    for quota, expected in ((None, 8), (1.5, 2), (0.2, 1), (2.0, 2), (64.0, 8)):
+        monkeypatch.setattr(threads, "cpu_quota", lambda quota=quota: quota)
+        assert threads.cores() == expected

@@ -19,11 +19,10 @@ runs.jsonl as runs finish, then summary.md, summary.json, plots and index.html i
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 
-from fuzzynav import validation
+from fuzzynav import threads, validation
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.cli.run import PLANT_HELP
 from fuzzynav.errors import InputError
@@ -154,7 +153,7 @@ def run(args) -> int:
     plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers),
                 _perturbations(args.perturb), args.plant)
     out = Path(args.out)
-    workers = args.workers or os.cpu_count() or 1
+    workers = args.workers or threads.cores()
     rows = run_campaign(plan, out, resume=args.resume, backend=args.backend, workers=workers,
                         address=args.ray_address, progress=not args.quiet)
     arguments_used = {"suites": names, "controllers": [label for label, _ in plan.controllers], "seeds": args.seeds,

@@ -24,7 +24,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from fuzzynav import validation
+from fuzzynav import threads, validation
 from fuzzynav.cli import arguments, help_line
 
 COLUMNS = ("scenario", "controller", "outcome", "time_s", "path_length_m", "min_clearance_m", "final_distance_m")
@@ -171,7 +171,7 @@ def run(args) -> int:
                   f"after {row['time_s']:.1f} s simulated{why}", flush=True)
 
     items = [(name, controller_name, None if args.no_plots else args.out) for name, controller_name in runs]
-    pool_map(run_one, items, min(args.workers or os.cpu_count() or 1, len(items) or 1), report)
+    pool_map(run_one, items, min(args.workers or threads.cores(), len(items) or 1), report)
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"

@@ -14,10 +14,9 @@ episode, ``DIR/<world>.png``: ``fuzzynav run DIR/<world>.yaml --controller NAME`
 from __future__ import annotations
 
 import json
-import os
 import sys
 
-from fuzzynav import progress as progress_bars, validation
+from fuzzynav import progress as progress_bars, threads, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.cli import arguments, help_line
@@ -88,7 +87,7 @@ def run(args) -> int:
     with progress_bars.quiet(args.quiet or args.json or args.progress):
         result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
                           model=args.model, systems=systems, save_failures=args.save_failures,
-                          sensors=args.sensors, plant=args.plant, workers=args.workers or os.cpu_count() or 1)
+                          sensors=args.sensors, plant=args.plant, workers=args.workers or threads.cores())
     if args.json:
         print(json.dumps(result))
         return 0

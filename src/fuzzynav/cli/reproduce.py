@@ -15,11 +15,10 @@ claim beside our figure and numbers for every experiment in DIR, with its checks
 from __future__ import annotations
 
 import contextlib
-import os
 import time
 from pathlib import Path
 
-from fuzzynav import progress, validation
+from fuzzynav import progress, threads, validation
 from fuzzynav.catalog import experiments as registry
 from fuzzynav.catalog.roles import parse_option
 from fuzzynav.cli import arguments, help_line
@@ -97,7 +96,7 @@ def run(args) -> int:
     systems = rule_bases.from_options(args.fis)
     replaced = {role: path for role, path in map(parse_option, args.fis or [])}
     args.out.mkdir(parents=True, exist_ok=True)
-    workers = min(args.workers or os.cpu_count() or 1, len(ids))
+    workers = min(args.workers or threads.cores(), len(ids))
     if workers > 1:  # the longest first, by an earlier run's time in --out (unknown ones first of all)
         earlier = {key: report.recorded_seconds(args.out, key, quick=args.quick) for key in ids}
         ids = sorted(ids, key=lambda key: -(earlier[key] or float("inf")))
