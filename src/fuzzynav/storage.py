@@ -149,6 +149,12 @@ FORMATS = {".json": "JSON", ".npz": "NPZ"}
 _NPZ_MAGIC = b"PK"  # an .npz is a zip archive
 
 
+def is_model_file(name) -> bool:
+    """True when ``name`` names a model file by its extension (:data:`FORMATS`, any case), as a
+    ``--controllers`` entry or a ``fis`` argument may, rather than a registered name."""
+    return Path(name).suffix.lower() in FORMATS
+
+
 def document_format(path, field: str = "--out") -> str:
     """``".json"`` or ``".npz"``: the format ``path`` names; another extension is an InputError."""
     suffix = Path(path).suffix.lower()

@@ -56,3 +56,14 @@ def test_a_damaged_inputs_record_is_a_clear_error(tmp_path, capsys):
     assert _bench("circles:1:3", out, "--resume") == 2
     err = capsys.readouterr().err.strip()
     assert "inputs.json" in err and "models.m" in err and "64 lowercase hexadecimal" in err
+
+
+def test_a_model_file_named_in_capitals_is_a_model_file_for_every_command(tmp_path, capsys):
+    model = tmp_path / "M.JSON"  # train writes it (the extension's case does not matter there)
+    assert main(["train", "q-goal", "--episodes", "3", "--quiet", "--out", str(model)]) == 0
+    out = tmp_path / "campaign"
+    assert _bench("circles:1:3", out, controllers=str(model)) == 0
+    assert list(json.loads((out / "inputs.json").read_text())["models"]) == ["M"]
+    capsys.readouterr()
+    assert main(["fis", "show", str(model)]) == 2  # read as the model file it is
+    assert "a 'q-goal' model file, not a fuzzy system" in capsys.readouterr().err

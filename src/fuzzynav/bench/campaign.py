@@ -35,13 +35,13 @@ from pathlib import Path
 from fuzzynav import validation
 from fuzzynav.bench import stored
 from fuzzynav.bench.backends import execute
-from fuzzynav.bench.cells import Cell, is_model_file
+from fuzzynav.bench.cells import Cell
 from fuzzynav.bench.lock import campaign_lock
 from fuzzynav.bench.suites import Suite
 from fuzzynav.errors import InputError
 from fuzzynav.progress import bar as progress_bar, quiet as quiet_progress
 from fuzzynav.sim.plants import DEFAULT_PLANT
-from fuzzynav.storage import remove_temporaries_under, write_text_atomic
+from fuzzynav.storage import is_model_file, remove_temporaries_under, write_text_atomic
 
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
            "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",

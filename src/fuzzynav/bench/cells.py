@@ -18,10 +18,10 @@ from fuzzynav.errors import InputError
 from fuzzynav.robot.imperfections import perturbed
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.sim.plants import DEFAULT_PLANT
+from fuzzynav.storage import is_model_file
 from fuzzynav.world.scenario import Scenario
 
 _MAKERS: dict[tuple, controller_maker] = {}  # (spec, its (role, file) pairs) -> its maker, kept by the worker
-MODEL_SUFFIXES = (".json", ".npz")
 
 
 @dataclass(frozen=True)
@@ -50,11 +50,6 @@ def perturb_scenario(scenario: Scenario, perturb) -> Scenario:
     for name, value in perturb:
         imperfections = perturbed(imperfections, name, value)
     return replace(scenario, imperfections=imperfections) if perturb else scenario
-
-
-def is_model_file(spec: str) -> bool:
-    """True when a ``--controllers`` entry names a model file rather than a registered controller."""
-    return spec.endswith(MODEL_SUFFIXES)
 
 
 class controller_maker:  # noqa: N801 (a factory of controllers, called like a function)

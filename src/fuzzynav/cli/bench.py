@@ -68,9 +68,9 @@ def register(subparsers) -> None:
 
 
 def _controllers(text: str) -> tuple[tuple[str, str], ...]:
-    from fuzzynav.bench.cells import build_controller, is_model_file
+    from fuzzynav.bench.cells import build_controller
     from fuzzynav.catalog.controllers import check_task
-    from fuzzynav.storage import check_model_file
+    from fuzzynav.storage import check_model_file, is_model_file
 
     specs = [spec.strip() for spec in text.split(",") if spec.strip()]
     if not specs:
@@ -97,8 +97,8 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
 def _replacements(options: list[str] | None, controllers) -> tuple[tuple[str, str], ...]:
     """(role, absolute file) of every ``--fis ROLE=FILE``, each checked against every controller
     that has the role (InputError when none has it, or when the file does not fit)."""
-    from fuzzynav.bench.cells import is_model_file
     from fuzzynav.catalog.roles import ROLES, make_with_systems, parse_option, systems_from_options
+    from fuzzynav.storage import is_model_file
 
     if not options:
         return ()

@@ -40,7 +40,7 @@ from fuzzynav.fuzzy.io import FORMATS, dumps, load
 from fuzzynav.fuzzy.io.files import format_of
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.systems import SYSTEMS, get_system
-from fuzzynav.storage import read_document, savefig_atomic, write_text_atomic
+from fuzzynav.storage import is_model_file, read_document, savefig_atomic, write_text_atomic
 
 
 def read_model_or_none(path: str) -> dict | None:
@@ -58,13 +58,13 @@ def resolve(name: str) -> FuzzySystem | Engine:
     controller, sep, role = name.partition(":")
     if sep and not Path(name).exists() and controller in ROLES:
         return default_system(controller, role, field="system")
-    if Path(name).suffix in (".json", ".npz") and Path(name).is_file():
+    if is_model_file(name) and Path(name).is_file():
         document = read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
             from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
             return anfis_tracker_system(document, name)  # the trained ANFIS, exported
-        if document is not None and Path(name).suffix == ".npz":  # a learned rule base stored as NPZ
+        if document is not None and Path(name).suffix.lower() == ".npz":  # a learned rule base stored as NPZ
             from fuzzynav.fuzzy.io.document import from_document
 
             return from_document(document, source=name)
@@ -208,7 +208,7 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
 def training_report(name: str) -> str | None:
     """For a model file trained by fuzzy Q-learning: how it was trained and how many rules differ
     from the initial table (the model's ``training`` record); else ``None``."""
-    document = read_model_or_none(name) if Path(name).suffix in (".json", ".npz") and Path(name).is_file() else None
+    document = read_model_or_none(name) if is_model_file(name) and Path(name).is_file() else None
     training = document.get("training") if isinstance(document, dict) else None
     if not isinstance(training, dict) or "rules_changed" not in training:
         return None
