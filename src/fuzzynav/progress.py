@@ -39,12 +39,13 @@ def quiet(on: bool = True) -> Iterator[None]:
 
 
 def bar(iterable: Iterable | None = None, *, total: int | None = None, desc: str | None = None,
-        unit: str = "it", leave: bool = True):
-    """A tqdm bar on stderr, disabled unless :func:`enabled`; iterate it or call ``update``."""
+        unit: str = "it", leave: bool = True, initial: int = 0):
+    """A tqdm bar on stderr, disabled unless :func:`enabled`; iterate it or call ``update``
+    (``initial``: the count it starts from, as a resumed run's)."""
     from tqdm import tqdm
 
     return tqdm(iterable, total=total, desc=desc, unit=unit, leave=leave, disable=not enabled(),
-                file=sys.stderr, dynamic_ncols=True)
+                file=sys.stderr, dynamic_ncols=True, initial=initial)
 
 
 def write(text: str) -> None:

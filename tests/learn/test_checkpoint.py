@@ -103,12 +103,12 @@ def test_checkpoint_files_are_plain_json_and_checked(tmp_path):
 
 def test_progress_bar_counts_single_episodes_across_a_smaller_last_batch(tmp_path, monkeypatch):
     """3 batches of 4 episodes, then (resumed) 1 batch of 2: the bar runs 12 → 14 of 14."""
-    import fuzzynav.learn.checkpoint as checkpoint
+    from fuzzynav import progress
 
     bars = []
 
     class Bar:
-        def __init__(self, total, initial, **options):
+        def __init__(self, *, total, initial, **options):
             self.total, self.n = total, initial
             bars.append(self)
 
@@ -121,7 +121,7 @@ def test_progress_bar_counts_single_episodes_across_a_smaller_last_batch(tmp_pat
         def close(self):
             """Nothing to release."""
 
-    monkeypatch.setattr(checkpoint, "tqdm", Bar)
+    monkeypatch.setattr(progress, "bar", Bar)
     path, learner, rng = tmp_path / "run.json", make(rows=4, learners=1), np.random.default_rng(3)
     train_loop(LineEnv(4), learner, 3, rng, checkpoint=path, progress=True, batch_size=4)
     train_loop(LineEnv(2), learner, 4, rng, checkpoint=path, resume=True, progress=True, batch_size=2)

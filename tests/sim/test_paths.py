@@ -37,3 +37,7 @@ def test_path_scenario_starts_on_the_path_heading_along_it():
 def test_bad_paths_raise_input_error(points):
     with pytest.raises(InputError):
         paths.segment(*points) if len(points) == 2 else paths.path_scenario(points)
+
+
+def test_a_u_turn_turns_by_pi_as_the_package_wraps_angles():
+    assert paths.turn_angles([[0.0, 0.0], [0.0, 1.0], [0.0, 0.0]]).tolist() == [math.pi]  # (−π, π]: +π, not −π

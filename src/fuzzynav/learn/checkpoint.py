@@ -43,9 +43,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-from tqdm import tqdm
 
-from fuzzynav import validation
+from fuzzynav import progress as progress_bars, validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.state import episode_count, restore_state
 from fuzzynav.storage import read_document, remove_stale_temporaries, save_document
@@ -212,7 +211,8 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
 
     With ``checkpoint`` (a path), a checkpoint is written every ``checkpoint_every`` batches
     (0: only at the end) and at the end; ``resume`` continues from it when it exists (the
-    learner and ``rng`` are restored in place). ``progress`` shows a tqdm bar with the episode,
+    learner and ``rng`` are restored in place). ``progress`` shows a bar (:func:`fuzzynav.progress.bar`:
+    on a terminal, unless quiet) with the episode,
     the mean reward and the success rate of the last batch. The curve maps ``mean_reward``,
     ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
     (B) and ``desc`` only label the bar: it then counts single episodes, B per batch, starting
@@ -235,8 +235,9 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
         start = resumed_from = int(document["episode"])
     start = start or 0
     done = sum(len(row) for row in curve["success"])  # single episodes so far (earlier batches may differ in size)
-    bar = tqdm(total=done + max(int(episodes) - start, 0) * batch_size, initial=done,
-               disable=not progress, unit="episode", dynamic_ncols=True, desc=desc)
+    with progress_bars.quiet(not progress):
+        bar = progress_bars.bar(total=done + max(int(episodes) - start, 0) * batch_size, initial=done,
+                                unit="episode", desc=desc)
     episode = start
     try:
         while episode < episodes:

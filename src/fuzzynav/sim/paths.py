@@ -23,6 +23,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.world.scenario import DEFAULT_PATH_SPEED, DEFAULT_PATH_TOLERANCE, scenario_from_dict
 
 STAR_CENTER = (10.0, 10.0)
@@ -77,7 +78,7 @@ def headings(waypoints) -> np.ndarray:
 def turn_angles(waypoints) -> np.ndarray:
     """Heading change ``(n − 2,)`` at every interior waypoint, wrapped to (−π, π] (> 0 = left turn)."""
     h = headings(waypoints)
-    return np.angle(np.exp(1j * np.diff(h)))
+    return wrap_angle(np.diff(h))
 
 
 def length(waypoints) -> float:
