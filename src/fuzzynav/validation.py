@@ -40,7 +40,6 @@ MAX_STRING = 100_000  # characters in one string field
 MAX_INTEGER = 2**53  # |integer| accepted where the field takes an integer (exact as a float)
 MAX_DOCUMENT_INTEGER = 2**130  # |integer| anywhere in a document (a checkpoint's RNG state is 128-bit)
 MAX_MAGNITUDE = 1e15  # |number| accepted where no tighter range is documented
-MAX_RUNS = 100_000  # episodes of one evaluation (``evaluate --n``)
 MAX_EPISODES = 10_000_000  # training episodes (``train --episodes``, ``--checkpoint-every``)
 MAX_RESOLUTION = 10_000  # centroid samples of a Mamdani output (fuzzylite's default is 1,000)
 MAX_UNIVERSE_WIDTH = 1e300  # a fuzzy variable's hi - lo: MAX_RESOLUTION samples across it stay finite

@@ -28,7 +28,10 @@ def test_hostile_input(case, tmp_path, capsys):
             exec(case.python, namespace)  # noqa: S102
         assert case.expect in str(error.value)
         return
-    status = main(argv_of(case, tmp_path))
+    try:
+        status = main(argv_of(case, tmp_path))
+    except SystemExit as exit_:  # refused by an option's type (argparse)
+        status = exit_.code
     out, err = capsys.readouterr()
     assert status == case.status, err
     assert case.expect in (err if status else out), err

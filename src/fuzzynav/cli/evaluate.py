@@ -22,7 +22,7 @@ from fuzzynav.catalog.roles import make_with_systems, systems_from_options
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, SENSORS_HELP
 from fuzzynav.errors import InputError
-from fuzzynav.world.generate import KINDS
+from fuzzynav.world.generate import KINDS, check_family
 
 
 def register(subparsers) -> None:
@@ -42,8 +42,8 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")
-    parser.add_argument("--n", type=int, default=100,
-                        help=f"number of worlds, 1 to {validation.MAX_RUNS:,} (default 100)")
+    parser.add_argument("--n", type=arguments.count(validation.MAX_WORLDS), default=100,
+                        help=f"number of worlds, 1 to {validation.MAX_WORLDS:,} (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
@@ -61,9 +61,7 @@ def run(args) -> int:
     from fuzzynav.bench.evaluate import evaluate
     from fuzzynav.sim.plants import check_plant
 
-    if args.worlds not in KINDS:
-        raise InputError(f"unknown world family {args.worlds!r} (known: {', '.join(KINDS)})", field="--worlds")
-    validation.integer(args.n, field="--n", lo=1, hi=validation.MAX_RUNS)
+    check_family(args.worlds, args.n, args.seed)
     check_plant(args.plant)
     if args.model is None and args.controller is None:
         args.controller = DEFAULT_CONTROLLER

@@ -64,8 +64,7 @@ def run(args) -> int:
     for flag, value in (("--episodes", args.episodes), ("--checkpoint-every", args.checkpoint_every)):
         if value is not None:
             validation.integer(value, field=flag, lo=1, hi=validation.MAX_EPISODES)
-    if args.parallel is not None:
-        validation.integer(args.parallel, field="--parallel", lo=1, hi=MAX_PARALLEL)
+    if args.parallel is not None:  # its type checked the range
         if args.task not in PARALLEL_TASKS:
             raise InputError(f"only for {', '.join(PARALLEL_TASKS)}, not {args.task}", field="--parallel")
         window = int(GOAL_CONVERGENCE["window"])

@@ -33,12 +33,10 @@ fuzzynav run worlds/mixed-0-002.yaml""")
 
 def run(args) -> int:
     from fuzzynav import progress
-    from fuzzynav.errors import InputError
-    from fuzzynav.world.generate import KINDS, generate_worlds
+    from fuzzynav.world.generate import check_kind, generate_worlds
     from fuzzynav.world.scenario_file import save_scenario
 
-    if args.family not in KINDS:
-        raise InputError(f"unknown world family {args.family!r} (known: {', '.join(KINDS)})", field="FAMILY")
+    check_kind(args.family, "FAMILY")
     scenarios = generate_worlds(args.family, args.n, args.seed)
     for scenario in progress.bar(scenarios, desc="worlds", unit="world"):
         save_scenario(scenario, args.out / f"{scenario.name}.yaml")

@@ -24,10 +24,9 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.learn.envs.layouts import EMPTY, RandomGoal, RandomObstacles, WallCourse
 from fuzzynav.sim.paths import path_scenario
-from fuzzynav.world.generate import KINDS, random_world
-from fuzzynav.world.scenario import Goal, Scenario, load_scenario
+from fuzzynav.world.generate import KINDS, check_kind, random_world
+from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE, Goal, Scenario, load_scenario
 
-GOAL_TOLERANCE = 0.3  # m, the scenarios' default
 LAYOUTS = {"random-goal": RandomGoal, "random-obstacles": RandomObstacles, "wall-course": WallCourse}
 
 
@@ -44,7 +43,7 @@ class LayoutSource:
 
     def draw(self, rng) -> Scenario:
         world, pose, target = self.layout.sample(rng, 1)
-        goal = None if target is None else Goal(np.asarray(target[0], dtype=float), GOAL_TOLERANCE)
+        goal = None if target is None else Goal(np.asarray(target[0], dtype=float), DEFAULT_GOAL_TOLERANCE)
         return Scenario(name=self.name, world=world, start=np.asarray(pose[0], dtype=float), goal=goal,
                         max_time=float("inf"))
 
@@ -59,8 +58,7 @@ class FamilySource:
     _cache: dict = field(default_factory=dict, repr=False)
 
     def __post_init__(self):
-        if self.family not in KINDS:
-            raise InputError(f"unknown world family {self.family!r} (known: {', '.join(KINDS)})", field="worlds")
+        check_kind(self.family, "worlds")
         if int(self.n_worlds) < 1:
             raise InputError(f"must be >= 1, got {self.n_worlds!r}", field="n_worlds")
         # world i from child i, as fuzzynav.world.generate.generate_worlds: the same worlds by index

@@ -102,12 +102,18 @@ def connected(world: World, start, goal, radius: float) -> bool:
     return bool(scene.joined(world.scene, xs, ys, float(radius), cell(start), cell(goal)))
 
 
+def check_kind(kind: str, field: str = "--worlds") -> str:
+    """``kind`` when it is a world family of :data:`KINDS`, else an InputError naming ``field``."""
+    if kind not in KINDS:
+        raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field=field)
+    return kind
+
+
 def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", max_time: float = 120.0,
                  robot_radius: float = DEFAULT_PARAMS.radius, margin: float | None = None) -> Scenario:
     """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``;
     ``margin`` (m) replaces the family's solvability margin."""
-    if kind not in KINDS:
-        raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="kind")
+    check_kind(kind, "kind")
     if kind == "dynabarn":
         return scenario_from_dict(dynabarn.dynabarn_document(rng, name), source=name)
     room = robot_radius + (_MARGINS.get(kind, TURNING_MARGIN) if margin is None else margin)
@@ -168,8 +174,7 @@ def family_reference(kind: str) -> dict:
 
 def generate_world(kind: str, seed: int, i: int, **options) -> Scenario:
     """World ``i`` of :func:`generate_worlds` ``(kind, n, seed)`` for any ``n > i``, drawn alone."""
-    if kind not in KINDS:
-        raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
+    check_kind(kind)
     child = np.random.SeedSequence([int(seed), KINDS.index(kind)], spawn_key=(int(i),))
     return random_world(kind, np.random.default_rng(child), name=f"{kind}-{seed}-{i:03d}", **options)
 
@@ -177,8 +182,7 @@ def generate_world(kind: str, seed: int, i: int, **options) -> Scenario:
 def check_family(kind: str, n: int, seed: int) -> tuple[int, int]:
     """``(n, seed)`` of a request for ``n`` worlds of family ``kind``, checked (an
     :class:`~fuzzynav.errors.InputError` names the option at fault)."""
-    if kind not in KINDS:
-        raise InputError(f"unknown world family {kind!r} (known: {', '.join(KINDS)})", field="--worlds")
+    check_kind(kind)
     return validation.count(n, field="--n", hi=validation.MAX_WORLDS), validation.seed(seed, field="--seed")
 
 

@@ -41,6 +41,7 @@ from fuzzynav.control.learned import as_column, goal_inputs, side_distances
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 from fuzzynav.world.fleet import Fleet
+from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE
 from fuzzynav.world.world import World
 
 
@@ -65,7 +66,7 @@ class RobotEnv:
     """``batch`` episodes of a task in lock-step (see the module docstring)."""
 
     def __init__(self, layout, observe, command, reward, *, batch: int, max_steps: int,
-                 tolerance: float = 0.3, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None,
+                 tolerance: float = DEFAULT_GOAL_TOLERANCE, params: TricycleParams = DEFAULT_PARAMS, sensors: SensorRing | None = None,
                  decision_steps: int = 1, sides=side_distances, start_speed: float = 0.0,
                  timeout_reward: float = 0.0):
         self.layout, self.observe, self.command, self.reward = layout, observe, command, reward

@@ -43,6 +43,7 @@ from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
 from fuzzynav.storage import save_document, savefig_atomic
+from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE
 
 if TYPE_CHECKING:
     from fuzzynav.learn.envs import RobotEnv
@@ -52,7 +53,7 @@ BATCH = 50  # parallel episodes per batch (random starts)
 FIXED_BATCH = 10  # parallel episodes per batch from a fixed start (Figs VI.1, VI.8)
 SPEED_SHARE = 0.25  # share of a two-phase task's episodes given to the speed phase
 TOLERANCE = 0.05  # extraction: minimum quality gain over the prior conclusion
-GOAL_TOLERANCE = 0.3  # m, as the scenarios' default
+GOAL_TOLERANCE = DEFAULT_GOAL_TOLERANCE  # m: the scenarios' default
 STEERING_SPEED = 1.8  # m/s: the constant speed of the steering phases (M of Fig IV.8)
 MAX_STEPS = 300  # 30 s per episode
 GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
