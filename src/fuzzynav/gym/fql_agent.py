@@ -21,23 +21,25 @@ bases (:data:`DESIGNS`):
   +90°), α from VI.21, V_r ∈ {0.5, 1, 1.8} m/s from VI.22;
 - ``path`` — the goal seeker's 35 rules towards the current waypoint, α ∈ eq VI.15 from VI.2.
 
-Settings of the grid designs are those of the thesis' tasks: γ = 0.9, β = 1 / (1 + visits) floored at 0.2 / N for N
-parallel robots, per-rule ε-greedy with ε decaying 0.3 → 0.02 (× 0.85 every N finished episodes),
-extraction tolerance 0.05 over the middle candidate (§VI.4). Continuous action spaces only (the
+Settings of the grid designs are those of the training tasks' batch learner (``fuzzynav train …
+--parallel N``, :func:`fuzzynav.learn.tasks.common.batch_schedules`), for N = 1 too: γ = 0.9,
+β = 1 / (1 + visits) floored at 0.2 / N for N parallel robots, per-rule ε-greedy with ε decaying
+0.3 → 0.02 (× 0.85 every N finished episodes), extraction tolerance 0.05 over the middle
+candidate (§VI.4). (The tasks' one-robot protocol of the thesis, ``fuzzynav train`` without
+``--parallel``, is not this agent's.) Continuous action spaces only (the
 inferred action Σ w_i a_i is a blend of the candidates).
 """
 
 from __future__ import annotations
 
 import copy
-import itertools
 from dataclasses import dataclass
 
 import numpy as np
 
 from fuzzynav.control.learned import single_rays
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy import FuzzySystem, Rule, Singleton, Variable
+from fuzzynav.fuzzy import FuzzySystem
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.fuzzy.systems_navigation import wall_follower
 from fuzzynav.gym.episodes import unscale_actions
@@ -46,9 +48,7 @@ from fuzzynav.gym.tasks import AVOID_SPEEDS, GOAL_SPEEDS, STEERING3, STEERING5, 
 from fuzzynav.learn.envs.premise import GridPremise
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner, extract_system
-from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
-
-TOLERANCE = 0.05  # extraction: minimum quality gain over the prior (middle) candidate
+from fuzzynav.learn.tasks.common import TOLERANCE, batch_schedules, grid_system, output_variable
 
 
 @dataclass(frozen=True)
@@ -79,29 +79,21 @@ DESIGNS = {
 }
 
 
-def grid_rules(inputs, outputs) -> FuzzySystem:
-    """TS0 system whose rules cover every combination of one term per input (first input
-    slowest), each concluding the middle singleton of every output; product, weighted sum."""
-    rules = [Rule(tuple((v.name, label) for v, label in zip(inputs, labels)),
-                  tuple((o.name, o.labels[len(o.labels) // 2]) for o in outputs))
-             for labels in itertools.product(*[v.labels for v in inputs])]
-    return FuzzySystem(inputs, outputs, rules, method="ts0", tnorm="product", defuzzifier="weighted_sum",
-                       name="fql-agent", description="premise of the fuzzy Q-learning agent")
-
-
 class GridLearning:
     """One training run of a grid design (:data:`DESIGNS`) for ``batch`` robots: both heads learned
     together from their reward heads; :meth:`begin` / :meth:`step` return the environment's actions."""
 
     def __init__(self, design: FQLDesign, batch: int, head_names, *, gamma, epsilon, lam, tolerance):
         self.design, self.batch, self.tolerance = design, batch, tolerance
-        self.outputs = [Variable(name, (min(values), max(values)), {f"c{k}": Singleton(float(v))
-                                                                    for k, v in enumerate(values)})
-                        for name, values, _ in design.heads]
-        self.premise = grid_rules(design.inputs(), self.outputs)
+        self.outputs = [output_variable(name, {f"c{k}": float(v) for k, v in enumerate(values)},
+                                        (min(values), max(values))) for name, values, _ in design.heads]
+        inputs = design.inputs()
+        rules = int(np.prod([len(v.terms) for v in inputs]))
+        self.premise = grid_system(inputs, self.outputs, [[o.labels[len(o.labels) // 2]] * rules for o in self.outputs],
+                                   "fql-agent", "premise of the fuzzy Q-learning agent")  # every rule: the middle candidates
         self.learner = FuzzyQLearner.separate(
             GridPremise(self.premise), [np.array(values) for _, values, _ in design.heads],
-            gamma=gamma, alpha=InverseVisits(1.0, 1.0, 0.2 / batch), lam=lam,
+            gamma=gamma, alpha=batch_schedules(batch)[0], lam=lam,
             policy=EpsilonGreedy(epsilon), normalise=False)
         self.columns = [[list(head_names).index(h) for h in heads] for _, _, heads in design.heads]
 
@@ -140,7 +132,7 @@ class FQLAgent:
             raise InputError(f"unknown task {task!r} (known: {', '.join(TASKS)})", field="task")
         self.task, self.gamma, self.lam, self.tolerance = task, gamma, lam, tolerance
         self.prior = prior  # avoid: the initial table, "thesis" (a-priori conclusions) or "none" (q = 0 only)
-        self.epsilon = epsilon if epsilon is not None else ExponentialDecay(0.3, 0.85, 0.02)
+        self.epsilon = epsilon if epsilon is not None else batch_schedules(1)[1]  # the batch learner's decay
         self.learning_ = None
 
     def _setup(self, batch: int, total_steps: int, head_names):

@@ -338,6 +338,12 @@ def thesis_schedules() -> tuple[InverseVisits, EpsilonGreedy]:
     return InverseVisits(1.0, 1.0, THESIS["rate_floor"]), EpsilonGreedy(ExponentialDecay(*THESIS["epsilon"]))
 
 
+def batch_schedules(batch: int) -> tuple[InverseVisits, ExponentialDecay]:
+    """(β, ε) of the batch learner of ``batch`` robots: β = 1 / (1 + visits) floored at 0.2 / B, so
+    the B parallel corrections stay small, and ε decaying 0.3 → 0.02, × 0.85 per batch."""
+    return InverseVisits(1.0, 1.0, 0.2 / batch), ExponentialDecay(0.3, 0.85, 0.02)
+
+
 def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior=None, alpha=None) -> FuzzyQLearner:
     """The FQL settings of every task: γ = 0.9, q = 0 at start (eq VI.9), ε-greedy per rule.
 
@@ -350,8 +356,8 @@ def fql_learner(premise, candidates, lam: float = 0.0, batch: int = BATCH, prior
     if thesis_protocol(batch):
         alpha, policy = thesis_schedules()
     else:
-        alpha = InverseVisits(1.0, 1.0, 0.2 / batch) if alpha is None else alpha
-        policy = EpsilonGreedy(ExponentialDecay(0.3, 0.85, 0.02))
+        rate, epsilon = batch_schedules(batch)
+        alpha, policy = rate if alpha is None else alpha, EpsilonGreedy(epsilon)
     return FuzzyQLearner(premise, candidates, gamma=THESIS["gamma"], alpha=alpha, policy=policy, lam=lam,
                          normalise=False, prior=prior, initial_q=THESIS["initial_q"],
                          terminal_bootstrap=thesis_protocol(batch))
