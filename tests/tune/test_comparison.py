@@ -89,3 +89,16 @@ def test_a_short_wall_comparison_checks_lasting_and_collisions_against_table_vi_
         assert 0.0 <= seeds[0]["too_close_share"] <= 1.0 and seeds[0]["mean_time_s"] is None
     verdict, checks = spec("cmp-VI-tuning").claim.evaluate(numbers)
     assert len(checks) == 3 * 4 and verdict in ("reproduced", "partly", "not reproduced")
+
+
+def test_the_rule_grid_reads_a_cell_by_input_whatever_order_a_rule_names_them_in():
+    from fuzzynav.experiments.tuning import _grid
+    from fuzzynav.fuzzy import FuzzySystem, Singleton, Triangular, Variable
+
+    terms = {"L": Triangular(-2.0, -1.0, 1.0), "R": Triangular(-1.0, 1.0, 2.0)}
+    a, b = Variable("a", (-1.0, 1.0), terms), Variable("b", (-1.0, 1.0), terms)  # the same labels
+    out = Variable("y", (0.0, 3.0), {f"c{k}": Singleton(float(k)) for k in range(4)})
+    rules = [f"IF b IS {tb} AND a IS {ta} THEN y IS c{k}"  # named b first, a second
+             for k, (ta, tb) in enumerate([("L", "L"), ("L", "R"), ("R", "L"), ("R", "R")])]
+    assert _grid(FuzzySystem([a, b], [out], rules)) == [
+        "       b |      L      R", "       L |     c0     c2", "       R |     c1     c3"]

@@ -211,11 +211,11 @@ def _grid(system) -> list[str]:
         return [" ".join(f"{v}={t}" for v, t in rule.premises) + " -> " + "/".join(t for _, t in rule.conclusions)
                 for rule in system.rules]
     first, second = system.inputs[0], system.inputs[1]
-    cells = {tuple(t for _, t in rule.premises): "/".join(t for _, t in rule.conclusions) for rule in system.rules}
+    cells = {frozenset(rule.premises): "/".join(t for _, t in rule.conclusions) for rule in system.rules}
     lines = [f"{second.name:>8s} | " + " ".join(f"{label:>6s}" for label in first.labels)]
-    for label in second.labels:
-        lines.append(f"{label:>8s} | " + " ".join(f"{cells.get((c, label), cells.get((label, c), '?')):>6s}"
-                                                 for c in first.labels))
+    for label in second.labels:  # a cell by its (input, term) pairs, whatever order the rule names them in
+        lines.append(f"{label:>8s} | " + " ".join(
+            f"{cells.get(frozenset({(first.name, c), (second.name, label)}), '?'):>6s}" for c in first.labels))
     return lines
 
 
