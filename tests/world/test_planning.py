@@ -4,7 +4,8 @@ import math
 
 import numpy as np
 
-from fuzzynav.world.planning import path_length, shortest_path
+from fuzzynav.world.planning import shortest_path
+from fuzzynav.world.polylines import path_length
 from fuzzynav.world.scenario import scenario_from_dict
 
 

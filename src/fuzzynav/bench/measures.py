@@ -30,7 +30,8 @@ from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.storage import write_text_atomic
-from fuzzynav.world.planning import path_length, shortest_path
+from fuzzynav.world.planning import shortest_path
+from fuzzynav.world.polylines import path_length
 from fuzzynav.world.scenario import Scenario
 
 BARN_SPEED = 2.0  # m/s: the challenge's t_opt = optimal path length / 2 m/s

@@ -37,6 +37,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.world.geometry import wrap_angle
+from fuzzynav.world.polylines import arc_lengths, at_arc
 
 STEP = 0.02  # m between reference samples
 WINDOW = 2.0  # m of reference searched ahead of the current index
@@ -70,11 +71,10 @@ def _fillet(vertices: np.ndarray, radii: np.ndarray, step: float) -> np.ndarray:
         pieces.append(centre + radius * np.column_stack([np.cos(angles), np.sin(angles)]))
     pieces.append(vertices[-1:])
     points = np.concatenate(pieces)
-    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(points, axis=0).T))])
+    s = arc_lengths(points)
     keep = np.concatenate([[True], np.diff(s) > 1e-12])
     points, s = points[keep], s[keep]
-    samples = np.append(np.arange(0.0, s[-1], step), s[-1])
-    return np.column_stack([np.interp(samples, s, points[:, 0]), np.interp(samples, s, points[:, 1])])
+    return at_arc(points, s, np.append(np.arange(0.0, s[-1], step), s[-1]))
 
 
 def smoothed_path(waypoints, radius: float, transition: float = 2.0, approach: float = APPROACH,

@@ -18,6 +18,7 @@ from importlib import resources
 import numpy as np
 
 from fuzzynav.experiments.claims import Check
+from fuzzynav.world.polylines import arc_lengths, at_arc
 
 SPACING = 0.2  # m between the points of a stored route
 REFERENCES = "published_routes.json"
@@ -26,11 +27,10 @@ REFERENCES = "published_routes.json"
 def route(trace, spacing: float = SPACING) -> list[list[float]]:
     """The robot's path resampled every ``spacing`` metres along it (first and last point kept)."""
     xy = np.asarray(trace.pose[:, :2], dtype=float)
-    along = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy, axis=0).T))])
+    along = arc_lengths(xy)
     if along[-1] == 0.0:
         return [[round(float(v), 3) for v in xy[0]]]
-    at = np.append(np.arange(0.0, along[-1], spacing), along[-1])
-    points = np.column_stack([np.interp(at, along, xy[:, 0]), np.interp(at, along, xy[:, 1])])
+    points = at_arc(xy, along, np.append(np.arange(0.0, along[-1], spacing), along[-1]))
     return np.round(points, 3).tolist()
 
 

@@ -27,6 +27,7 @@ import numpy as np
 from fuzzynav.errors import InputError
 from fuzzynav.sim.arguments import check_scenario, check_trace
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world.polylines import path_length
 from fuzzynav.world.scenario import Scenario
 
 
@@ -55,7 +56,6 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
                          f"{scenario.task} scenario {scenario.name!r}: measure it against the scenario it ran on",
                          field="scenario")
     xy = trace.pose[:, :2]
-    steps = np.diff(xy, axis=0)
     world = scenario.world
     clearance = (world.clearance(xy) if trace.obstacle_offsets is None
                  else world.clearance_over_time(xy, trace.obstacle_offsets)) - trace.robot_radius
@@ -72,7 +72,7 @@ def metrics(trace: Trace, scenario: Scenario) -> dict:
         "timeout": trace.outcome == "timeout",
         "time_s": round(trace.time, 10),
         "steps": trace.steps,
-        "path_length_m": float(np.hypot(steps[:, 0], steps[:, 1]).sum()),
+        "path_length_m": path_length(xy),
         "min_clearance_m": float(clearance.min()),
         "mean_speed_mps": float(trace.speed.mean()) if trace.steps else 0.0,
         "final_speed_mps": float(trace.speed[-1]) if trace.steps else 0.0,

@@ -24,6 +24,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.kernels.angles import wrap_angle
+from fuzzynav.world.polylines import path_length
 from fuzzynav.world.scenario import DEFAULT_PATH_SPEED, DEFAULT_PATH_TOLERANCE, scenario_from_dict
 
 STAR_CENTER = (10.0, 10.0)
@@ -83,7 +84,7 @@ def turn_angles(waypoints) -> np.ndarray:
 
 def length(waypoints) -> float:
     """Total length of the polyline (m)."""
-    return float(np.hypot(*np.diff(_waypoints(waypoints), axis=0).T).sum())
+    return path_length(_waypoints(waypoints))
 
 
 def path_scenario(waypoints, *, name: str = "path", start=None, theta: float | None = None,

@@ -26,6 +26,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.world.polylines import path_length
 
 START = (-2.25, 3.0, 1.57)  # run.py, static worlds 0–299
 GOAL_OFFSET = (0.0, 10.0)
@@ -89,7 +90,7 @@ def optimal_path_length(path_file: Path) -> float:
                               cells[:, 1] * POST_SPACING + half + 5.0])
     start, goal = np.array(START[:2]), np.array(START[:2]) + GOAL_OFFSET
     points = np.vstack([start, points, goal])
-    return float(np.hypot(*np.diff(points, axis=0).T).sum())
+    return path_length(points)
 
 
 def _read_cells(path_file: Path) -> np.ndarray:

@@ -35,6 +35,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from fuzzynav.world.polylines import arc_lengths, at_arc
+
 ARENA = 10.0  # m: half-width of DynaBARN's arena
 WALL_FACE = 9.75  # m: the walls are 0.5 m thick, centred on ±10
 START, HEADING, GOAL = (11.0, 0.0), float(np.pi), (-9.0, 0.0)  # run.py, worlds 300–359
@@ -72,11 +74,10 @@ def track(rng: np.random.Generator) -> np.ndarray:
         first, last = max(zip(runs[::2], runs[1::2]), key=lambda run: run[1] - run[0])
         xs = x[first:last]
         curve = np.column_stack([xs, poly(xs)])
-        arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(curve, axis=0).T))])
+        arc = arc_lengths(curve)
         if arc[-1] < MIN_TRACK:
             continue
-        at = np.linspace(0.0, arc[-1], TRACK_POINTS)
-        points = np.column_stack([np.interp(at, arc, curve[:, 0]), np.interp(at, arc, curve[:, 1])])
+        points = at_arc(curve, arc, np.linspace(0.0, arc[-1], TRACK_POINTS))
         inner = WALL_FACE - RADIUS
         points = np.column_stack([np.clip(points[:, 0], -inner, ARENA), np.clip(points[:, 1], -inner, inner)])
         return points[::-1] if rng.uniform() < 0.5 else points

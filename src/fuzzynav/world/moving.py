@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fuzzynav.world.motion import MOTION_PARAMS, TargetMotion, read_motion
+from fuzzynav.world.polylines import arc_lengths, at_arc
 
 # scenario-file parameters of each obstacle motion: name -> default (None when required)
 OBSTACLE_MOTIONS: dict[str, dict[str, object]] = {
@@ -81,10 +82,10 @@ def along(points, speed: float, loop: bool, t) -> np.ndarray:
     points = np.asarray(points, dtype=float)
     if loop:
         points = np.vstack([points, points[:1]])
-    arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(points, axis=0).T))])
+    arc = arc_lengths(points)
     s = speed * np.asarray(t, dtype=float)
     s = np.mod(s, arc[-1]) if loop and arc[-1] > 0 else np.minimum(s, arc[-1])
-    return np.column_stack([np.interp(s, arc, points[:, 0]), np.interp(s, arc, points[:, 1])])
+    return at_arc(points, arc, s)
 
 
 def parse_motion(check, document, field: str, shape) -> ObstacleMotion:

@@ -203,8 +203,3 @@ def cost_to_go(grid: Grid, goal, radius: float, *, weight: float = 0.0, comfort:
     distance = csgraph.dijkstra(_graph(grid, radius, weight, comfort), directed=False,
                                 indices=target[0] * nx + target[1])
     return distance.reshape(grid.free.shape)
-
-
-def path_length(path: np.ndarray) -> float:
-    """Length (m) of a polyline ``(m, 2)``."""
-    return float(np.hypot(*np.diff(path, axis=0).T).sum())
