@@ -82,3 +82,15 @@ def test_static_scenarios_run_bit_for_bit_as_before():
     """Traces of built-in scenarios under compiled and Python navigators and trackers hash as
     those recorded with the code before moving obstacles (``python -m tests.sim.static_hashes``)."""
     assert all_hashes() == json.loads(HASHES.read_text())
+
+
+def test_numpy_runs_the_simd_code_the_traces_were_recorded_with():
+    """tests/conftest.py keeps NumPy off AVX-512, whose exp, log, arctan and tan differ in the last
+    bits (the recorded hashes above would then not match on such a machine)."""
+    from tests.conftest import NUMPY_AVX2
+
+    try:
+        from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    except ImportError:  # NumPy 1.x
+        from numpy.core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    assert not [name for name in __cpu_dispatch__ if name in NUMPY_AVX2.split() and __cpu_features__.get(name)]
