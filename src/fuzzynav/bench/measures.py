@@ -29,6 +29,7 @@ import math
 from pathlib import Path
 
 from fuzzynav import validation
+from fuzzynav.bench.stored import json_mapping
 from fuzzynav.storage import write_text_atomic
 from fuzzynav.world.planning import shortest_path
 from fuzzynav.world.polylines import path_length
@@ -68,7 +69,7 @@ def shortest_length(scenario: Scenario, radius: float, cache_dir: str | Path | N
 def _cached_length(file: Path) -> float | None:
     """The ``shortest_path_m`` of a cache file, read back as user input (a number > 0 or null)."""
     source = str(file)
-    document = validation.mapping(validation.parse_json(validation.read_text(file), source), source)
+    document = json_mapping(file)
     length = document.get("shortest_path_m")
     return None if length is None else validation.number(length, source, "shortest_path_m", lo=0.0, lo_open=True)
 

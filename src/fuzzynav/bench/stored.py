@@ -74,10 +74,16 @@ def read_runs(out: Path, columns, plan_keys=None) -> list[dict]:
     return rows
 
 
+def json_mapping(path: Path) -> dict:
+    """The JSON object in the file ``path``, read as user input (an InputError names the file)."""
+    source = str(path)
+    return validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+
+
 def read_replacements(path: Path) -> dict:
     """``fis.json``: {role: {"file": text, "sha256": 64 hex digits}}."""
     source = str(path)
-    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    record = json_mapping(path)
     for role, item in record.items():
         validation.known_keys(item, ("file", "sha256"), source, role, required=("file", "sha256"))
         validation.text(item["file"], source, f"{role}.file")
@@ -88,7 +94,7 @@ def read_replacements(path: Path) -> dict:
 def read_inputs(path: Path) -> dict:
     """``inputs.json``: {"models": {label: sha256}, "worlds": {file: sha256}}, 64 hex digits each."""
     source = str(path)
-    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    record = json_mapping(path)
     validation.known_keys(record, ("models", "worlds"), source, None, required=("models", "worlds"))
     for part in ("models", "worlds"):
         for name, digest in validation.mapping(record[part], source, part).items():
@@ -108,7 +114,7 @@ def read_perturbations(path: Path) -> dict:
     from fuzzynav.robot.imperfections import NONE, perturbed
 
     source = str(path)
-    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    record = json_mapping(path)
     for name, value in record.items():
         perturbed(NONE, name, value, source)
     return record
@@ -117,7 +123,7 @@ def read_perturbations(path: Path) -> dict:
 def read_plant(path: Path) -> str:
     """``plant.json``: {"plant": name}, the name one of :data:`fuzzynav.sim.plants.PLANTS`."""
     source = str(path)
-    record = validation.mapping(validation.parse_json(validation.read_text(path), source), source)
+    record = json_mapping(path)
     validation.known_keys(record, ("plant",), source, required=("plant",))
     name = validation.text(record["plant"], source, "plant")
     if name not in PLANTS:

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from fuzzynav import validation
+from fuzzynav.bench.stored import json_mapping
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS, family_reference, generate_world
 from fuzzynav.world.scenario import Scenario, load_scenario
@@ -79,7 +80,7 @@ def _references(file: Path) -> dict:
     """The ``scenarios`` of a folder's ``benchmark.json``: per world a mapping, its
     ``barn_optimal_path_m`` (if any) a number > 0 (read as user input: InputError naming the entry)."""
     source = str(file)
-    document = validation.mapping(validation.parse_json(validation.read_text(file), source), source)
+    document = json_mapping(file)
     references = validation.mapping(document.get("scenarios", {}), source, "scenarios")
     for name, entry in references.items():
         validation.mapping(entry, source, f"scenarios.{name}")
