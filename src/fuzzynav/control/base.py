@@ -29,7 +29,8 @@ def thesis_angle_error(bearing):
 
     ``bearing`` is θ_d − θ_r wrapped to (−π, π] (positive when the target is on the left).
     The published tables map a *negative* error to a *positive* (left) steering, so they are fed
-    θ_r − θ_d = −bearing. This is the only place where the sign is flipped.
+    θ_r − θ_d = −bearing. This is the only place where the sign is flipped, but for the compiled
+    learned controllers, which flip it the same way in :func:`fuzzynav.kernels.learned.goal_inputs`.
     """
     return -wrap_angle(bearing)
 

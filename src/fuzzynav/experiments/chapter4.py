@@ -27,8 +27,6 @@ passed on).
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 from matplotlib.figure import Figure
 
@@ -36,7 +34,7 @@ from fuzzynav.bench.evaluate import evaluate
 from fuzzynav.experiments import routes
 from fuzzynav.experiments.rule_bases import controller, systems_for
 from fuzzynav.sim import metrics, run_episode
-from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_figure
+from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_in
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
 # Fig IV.12: (start x, y, θ), (goal x, y) per panel; the first pair is the built-in scenario.
@@ -46,10 +44,6 @@ FIG_IV_12 = {
     "b": [((4.0, 1.5, 3.14), (9.0, 10.0)), ((17.0, 1.0, 1.57), (11.0, 7.0)), ((1.0, 12.0, -1.57), (7.0, 6.0)),
           ((10.0, 19.0, 0.0), (15.0, 12.0)), ((19.0, 10.0, 3.14), (4.0, 16.0))],
 }
-
-
-def _save(figure: Figure, out_dir, name: str) -> str:
-    return save_figure(figure, Path(out_dir) / name)
 
 
 def _outcome(trace, scenario) -> dict:
@@ -70,7 +64,7 @@ def _panels(names, navigator: str, out_dir, figure_name: str, markers: bool = Tr
         trace = run_episode(scenario, controller(navigator))
         plot_trajectory(trace, scenario, ax, markers=markers)
         result[name] = _outcome(trace, scenario)
-    result["figure"] = _save(figure, out_dir, figure_name)
+    result["figure"] = save_in(figure, out_dir, figure_name)
     return result
 
 
@@ -94,7 +88,7 @@ def fig_iv_12(out_dir, quick: bool = False, seed: int = 0) -> dict:
             runs.append(_outcome(trace, scenario))
         ax.set_title(f"({panel}) goal seeking, Table IV.1")
         result[panel] = runs
-    result["figure"] = _save(figure, out_dir, "fig-IV-12.png")
+    result["figure"] = save_in(figure, out_dir, "fig-IV-12.png")
     result["all_reached"] = all(r["outcome"] == "reached" for panel in FIG_IV_12 for r in result[panel])
     return result
 
@@ -108,7 +102,7 @@ def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
     plot_trajectory(trace, scenario, left.add_subplot(111), markers=False)
     plot_commands(trace, right.subplots(2, 1, sharex=True))
     return {**_outcome(trace, scenario), "first_steering_rad": float(trace.steering[0]),
-            "max_speed_mps": float(trace.speed.max()), "figure": _save(figure, out_dir, "fig-IV-13.png")}
+            "max_speed_mps": float(trace.speed.max()), "figure": save_in(figure, out_dir, "fig-IV-13.png")}
 
 
 def fig_iv_15(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -152,5 +146,5 @@ def eval_iv(out_dir, quick: bool = False, seed: int = 0) -> dict:
     ax.set_ylabel("share of the worlds (%)")
     ax.set_ylim(0, 110)
     ax.legend(loc="upper right")
-    result["figure"] = _save(figure, out_dir, "eval-IV.png")
+    result["figure"] = save_in(figure, out_dir, "eval-IV.png")
     return result

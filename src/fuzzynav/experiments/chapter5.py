@@ -33,7 +33,6 @@ the episodes are short (a few seconds in all), so ``quick`` changes nothing but 
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -45,7 +44,7 @@ from fuzzynav.learn.tasks import trackers as tt
 from fuzzynav.sim import metrics, paths, run_episode
 from fuzzynav.viz import palette
 from fuzzynav.viz.training import plot_training
-from fuzzynav.viz.trajectories import draw_world, save_figure
+from fuzzynav.viz.trajectories import draw_world, save_in
 from fuzzynav.world.scenario import load_scenario
 
 TRACKERS = {"fuzzy-tracker": "CF", "neural-tracker": "CN", "anfis-tracker": "CNF"}
@@ -61,10 +60,6 @@ STYLES: dict[str, dict[str, Any]] = {"fuzzy-tracker": {"linestyle": "-"},
 SEGMENTS = {"a": (((3.0, 16.0), (16.0, 3.0)), (2.5, 15.5)), "b": (((16.0, 16.0), (3.0, 3.0)), (15.5, 16.5))}
 SEGMENT_FIGURES = {"fig-V-10": ("fig-V-8", "fig-V-9"), "fig-V-18": ("fig-V-16", "fig-V-17"),
                    "fig-V-26": ("fig-V-24", "fig-V-25")}
-
-
-def _save(figure: Figure, out_dir, name: str) -> str:
-    return save_figure(figure, Path(out_dir) / name)
 
 
 def _figure(doc: str, draw, *arguments):
@@ -94,7 +89,7 @@ def fig_v_7(out_dir, quick: bool = False, seed: int = 0) -> dict:
            title="Fuzzy tracker, Table V.1: control surface")
     grid = np.array([[e, de] for e in PEAKS for de in PEAKS])
     at_peaks = tracker.evaluate(grid)[:, 0].reshape(5, 5)
-    return {"figure": _save(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
+    return {"figure": save_in(figure, out_dir, "fig-V-7.png"), "alpha_min_rad": float(alpha.min()),
             "alpha_max_rad": float(alpha.max()), "alpha_at_peaks_rad": np.round(at_peaks, 6).tolist()}
 
 
@@ -104,7 +99,7 @@ def _training_figure(kind: str, out_dir, quick: bool, seed: int) -> dict:
     name = "fig-V-15.png" if kind == "neural-tracker" else "fig-V-23.png"
     figure = plot_training(kind, model, data, None)
     residual = data.y_val - model.predict(data.x_val)
-    return {"figure": _save(figure, out_dir, name), "validation_rmse_rad": float(np.sqrt(np.mean(residual ** 2))),
+    return {"figure": save_in(figure, out_dir, name), "validation_rmse_rad": float(np.sqrt(np.mean(residual ** 2))),
             "validation_max_error_rad": float(np.abs(residual).max())}
 
 
@@ -160,8 +155,8 @@ def _segments(kind: str, figure_id: str, out_dir, seed: int) -> dict:
         result[panel] = _numbers(m, PATH_KEYS)
     route_figure.suptitle(f"{TRACKERS[kind]} ({kind}): one straight segment")
     command_figure.suptitle(f"{TRACKERS[kind]} ({kind}): commands generated")
-    return {"segments": result, "segment_figures": [_save(route_figure, out_dir, f"{names[0]}.png"),
-                                                    _save(command_figure, out_dir, f"{names[1]}.png")]}
+    return {"segments": result, "segment_figures": [save_in(route_figure, out_dir, f"{names[0]}.png"),
+                                                    save_in(command_figure, out_dir, f"{names[1]}.png")]}
 
 
 def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
@@ -180,7 +175,7 @@ def _star_lines(kind: str, figure_id: str, out_dir, seed: int) -> dict:
         lines[f"T{i + 1}"] = _numbers(m, PATH_KEYS)
     ax.set(title=f"{TRACKERS[kind]} ({kind}): straight lines T1…T6 from (10, 10), θ = 0",
            xlabel="x (m)", ylabel="y (m)")
-    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), "lines": lines,
+    return {"figure": save_in(figure, out_dir, f"{figure_id}.png"), "lines": lines,
             "all_completed": all(v["completed"] for v in lines.values()),
             "worst_max_cross_track_m": max(v["max_cross_track_m"] for v in lines.values()),
             **_segments(kind, figure_id, out_dir, seed)}
@@ -205,7 +200,7 @@ def _polygon_paths(kind: str, figure_id: str, out_dir, seed: int) -> dict:
         result[scenario_name] = {"thesis": _numbers(m_thesis, PATH_KEYS),
                                  "anticipation": _numbers(m_anticipating, PATH_KEYS)}
     figure.suptitle(f"{TRACKERS[kind]} ({kind}): N and trapezoid paths")
-    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
+    return {"figure": save_in(figure, out_dir, f"{figure_id}.png"), **result}
 
 
 def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
@@ -229,7 +224,7 @@ def fig_v_28(out_dir, quick: bool = False, seed: int = 0) -> dict:
     gap = routes.deviation(runs["neural-tracker"][1]["route"], runs["anfis-tracker"][1]["route"])
     figure.suptitle(f"CN and CNF learn the same inverse map α = f(θ_er) from the same pairs, so their curves "
                     f"coincide (at most {gap:.2f} m apart): CN dashed with circles, CNF dotted with crosses")
-    return {"figure": _save(figure, out_dir, "fig-V-28.png"), "cn_cnf_route_gap_m": gap,
+    return {"figure": save_in(figure, out_dir, "fig-V-28.png"), "cn_cnf_route_gap_m": gap,
             **{name: _numbers(m, PATH_KEYS) for name, (_, m) in runs.items()}}
 
 
@@ -241,7 +236,7 @@ def _pursuit(scenario_name: str, out_dir, seed: int) -> dict:
         _draw(ax, trace, name, "robot")
         ax.set_title(f"({'abc'[list(TRACKERS).index(name)]}) {TRACKERS[name]}")
         ax.legend(loc="upper right", fontsize=7)
-    return {"figure": _save(figure, out_dir, f"{scenario_name}.png"),
+    return {"figure": save_in(figure, out_dir, f"{scenario_name}.png"),
             **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
 
 
@@ -272,7 +267,7 @@ def fig_v_32(out_dir, quick: bool = False, seed: int = 0) -> dict:
     zoom.set(xlim=(capture[0] - 2.0, capture[0] + 2.0), ylim=(capture[1] - 2.0, capture[1] + 2.0), aspect="equal",
              title="(d) comparison near the capture", xlabel="x (m)", ylabel="y (m)")
     zoom.legend(fontsize=7)
-    return {"figure": _save(figure, out_dir, "fig-V-32.png"),
+    return {"figure": save_in(figure, out_dir, "fig-V-32.png"),
             **{name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}}
 
 
@@ -283,7 +278,7 @@ def _two_pursuits(figure_id: str, scenario_names, titles, out_dir, seed: int) ->
         scenario, runs = _runs(scenario_name, seed)
         _overlay(ax, scenario, runs, f"({letter}) {title}")
         result[scenario_name] = {name: _numbers(m, PURSUIT_KEYS) for name, (_, m) in runs.items()}
-    return {"figure": _save(figure, out_dir, f"{figure_id}.png"), **result}
+    return {"figure": save_in(figure, out_dir, f"{figure_id}.png"), **result}
 
 
 def fig_v_33(out_dir, quick: bool = False, seed: int = 0) -> dict:

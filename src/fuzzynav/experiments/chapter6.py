@@ -45,7 +45,7 @@ from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_
 from fuzzynav.learn.tasks.common import TrainRequest
 from fuzzynav.sim import run_episode
 from fuzzynav.viz.curves import plot_learning_curve
-from fuzzynav.viz.trajectories import draw_world, plot_trajectory, save_figure
+from fuzzynav.viz.trajectories import draw_world, plot_trajectory, save_in
 from fuzzynav.world.scenario import load_scenario
 
 TABLE_VI_1_EPISODES = 10_000  # the thesis' 8,950 plus a hold of 500 reachable
@@ -55,10 +55,6 @@ AVOID_EVALUATION_RUNS = 300
 """Held-out obstacle worlds of fig-VI-22's claim: its target is no collision, and a learned avoider
 that collides in about 1 % of worlds shows none in 100 worlds about a third of the time
 (docs/results/chapter-vi.md, "The 0-collision bar on 300 fresh worlds")."""
-
-
-def _save(figure: Figure, out_dir, name: str) -> str:
-    return save_figure(figure, Path(out_dir) / name)
 
 
 def _request(out_dir, name: str, episodes, seed: int, **options) -> TrainRequest:
@@ -102,7 +98,7 @@ def _figure(curves: dict, converged: dict, controller, starts, title: str, out_d
         trace = run_episode(scenario, controller)
         plot_trajectory(trace, scenario, ax, markers=obstacles)
         outcomes.append(trace.outcome)
-    return {"figure": _save(figure, out_dir, name), "converged_at": converged, "episodes": budget,
+    return {"figure": save_in(figure, out_dir, name), "converged_at": converged, "episodes": budget,
             "trajectories": outcomes, "curve": _curve_ends(curves)}
 
 
@@ -169,7 +165,7 @@ def table_vi_1(out_dir, quick=False, seed=0) -> dict:
     table.auto_set_font_size(False)
     table.set_fontsize(10)
     table.scale(1.0, 1.6)
-    return {"rows": rows, "rank_correlation": rank_correlation(rows), "figure": _save(figure, out_dir, "table-VI-1.png")}
+    return {"rows": rows, "rank_correlation": rank_correlation(rows), "figure": save_in(figure, out_dir, "table-VI-1.png")}
 
 
 # -- fuzzy Q-learning goal seeking (§VI.5.1) ---------------------------------------------------
@@ -316,7 +312,7 @@ def fig_vi_22(out_dir, quick=False, seed=0) -> dict:
     figure = Figure(figsize=(11, 5.8), layout="constrained")
     for ax, episode in zip(figure.subplots(1, 2), EARLY_EPISODES):
         _training_panel(ax, early.paths[episode], episode, early.outcomes[episode - 1])
-    training_figure = _save(figure, out_dir, "fig-VI-18-19.png")
+    training_figure = save_in(figure, out_dir, "fig-VI-18-19.png")
     window = common.convergence_window(common.WORLD_CONVERGENCE, common.THESIS["robots"])[0]
     numbers = _figure(_curves(request, ["steering", "speed"]), summary, controller,
                       worlds.goal_scenarios(seed, 3, layout=RandomObstacles()) + [worlds.wall_to_goal_scenario()],
@@ -346,7 +342,7 @@ def fig_vi_24(out_dir, quick=False, seed=0) -> dict:
         ax.set_title(f"{name}: {trace.outcome}")
         numbers[name] = {"outcome": trace.outcome,
                          "evaluation": evaluation.evaluate_avoid(controller, 20 if quick else EVALUATION_RUNS)}
-    return {**numbers, "world": scenario.name, "figure": _save(figure, out_dir, "fig-VI-24.png")}
+    return {**numbers, "world": scenario.name, "figure": save_in(figure, out_dir, "fig-VI-24.png")}
 
 
 # -- wall following (§VI.5.3) ------------------------------------------------------------------
@@ -378,4 +374,4 @@ def fig_vi_29(out_dir, quick=False, seed=0) -> dict:
             "evaluation": {"wall-follow": evaluation.evaluate_wall(handmade, courses),
                            "fql-wall": evaluation.evaluate_wall(learned, courses)},
             "rules": model["rules"], "sensing": model["sensing"],
-            "rules_changed": model["training"]["rules_changed"], "figure": _save(figure, out_dir, "fig-VI-29.png")}
+            "rules_changed": model["training"]["rules_changed"], "figure": save_in(figure, out_dir, "fig-VI-29.png")}

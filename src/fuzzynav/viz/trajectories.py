@@ -207,3 +207,8 @@ def save_figure(figure: Figure, path, dpi: int = 110) -> str:
     figure_file(path)
     savefig_atomic(figure, path, dpi=dpi, bbox_inches="tight")
     return str(path)
+
+
+def save_in(figure: Figure, folder, name: str) -> str:
+    """:func:`save_figure` as ``name`` in ``folder`` (the figures of ``fuzzynav reproduce``)."""
+    return save_figure(figure, Path(folder) / name)
