@@ -10,7 +10,7 @@ import pytest
 
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.kernels import car_route, car_search, guidance, layers, row_blocks
-from fuzzynav.kernels.records import CarSearch, Layers, Navigator, Reading, Robot, SearchNodes, Sightings
+from fuzzynav.kernels.records import CarSearch, Clock, Layers, Navigator, Reading, Robot, SearchNodes, Sightings
 
 PARAMS = make_controller("fuzzy-5b-gap-robust").params
 # the route point the navigator is given round a wall of posts: only where the layer leaves the
@@ -189,8 +189,8 @@ def test_the_loop_escape_beginning_or_ending_drops_the_arc_pending(starts):
     ranges = np.full(len(angles), controller.sensors.max_range)
     steering, speed, code = robust.act_one(Navigator(kind, params, tables), nav_state[0], memory[0],
                                            Layers(layer_params, row), Robot(0.0, 0.0, 0.0, 0.5, 10.0, 0.0),
-                                           Reading(ranges, angles, controller.sensors.max_range, math.inf, 0.0), 0.05,
-                                           30.0)
+                                           Reading(ranges, angles, controller.sensors.max_range, math.inf, 0.0),
+                                           Clock(0.05, 30.0), layer_params)
     assert row[layers.STATE.active] == (1.0 if starts else 0.0)
     assert controller.labels[int(code)] != "CAR-FWD"  # the arc pending is not driven
     assert row[layers.STATE.guide_gear] == 0.0 and row[layers.STATE.guide_planned] == 30.0  # planned again at once

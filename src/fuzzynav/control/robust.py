@@ -56,7 +56,8 @@ from fuzzynav.control.recovery import RECOVERY, recovery_system
 from fuzzynav.errors import InputError
 from fuzzynav.kernels import layers, row_blocks
 from fuzzynav.kernels.motion import ROBOT_FIELDS
-from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot
+from fuzzynav.kernels.records import Clock, Layers, Navigator, Reading, Robot
+from fuzzynav.kernels.step import route_of
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.settings import DURATION, ROOM, SHARE, Range, checked
 
@@ -202,7 +203,8 @@ class RobustNavigator(BatchController):
         out = np.zeros((n, 3))
         kind, params, tables, state, memory, layer_params, rows = arguments
         robust.act(Navigator(kind, params, tables), state, memory, Layers(layer_params, rows),
-                   readings(obs, obs.ranges, obs.sensor_angles, active, n), float(obs.dt), float(obs.t), out)
+                   readings(obs, obs.ranges, obs.sensor_angles, active, n), Clock(float(obs.dt), float(obs.t)),
+                   route_of(layer_params), out)
         command = out[:, 0], out[:, 1], np.asarray(self.labels)[out[:, 2].astype(int)]
         return self.traffic(obs, *command) if self._yielding else command
 
@@ -229,7 +231,7 @@ class RobustNavigator(BatchController):
             Navigator(kind, params, tables), state[0], memory[0], Layers(layer_params, rows[0]),
             Robot(x, y, theta, v, tx, ty),
             Reading(np.ascontiguousarray(obs.ranges, dtype=float), angles, float(obs.max_range), d_o, b_o),
-            float(obs.dt), float(obs.t))
+            Clock(float(obs.dt), float(obs.t)), route_of(layer_params))
         return Command(float(steering), float(speed), str(self.labels[int(code)]))
 
 

@@ -89,6 +89,13 @@ class Layers(NamedTuple):
     state: np.ndarray  # the robot's row: layers.STATE_NAMES, then its places, points and cells
 
 
+class Clock(NamedTuple):
+    """When a robot decides: the step's period and the time of the decision (s)."""
+
+    dt: float
+    t: float
+
+
 class Sightings(NamedTuple):
     """The obstacle points a robot remembers."""
 
@@ -181,6 +188,7 @@ class StepNavigator(NamedTuple):
     state: np.ndarray  # (N, 4) ints: navigators.MODE, HELD, SIDE, COUNT
     memory: np.ndarray  # (N, steps, S + 1, 3) the hit memory of kernels.guard
     layer_state: np.ndarray | None  # (N, …) the layers' rows (None without layers: lean_arguments)
+    route: np.ndarray | None  # the layers' params when their route guidance or pace is on, else None (step.route_of)
 
 
 class Traffic(NamedTuple):

@@ -22,34 +22,38 @@ from fuzzynav.kernels.row_blocks import cells_of, places_of, points_of
 
 
 @jit
-def act_one(navigator, cstate, memory, layer, robot, seen, dt, t):
-    """(α, V, behaviour code) of one robot at time ``t`` (the arguments of
-    :func:`fuzzynav.kernels.navigators.act_one`, plus ``layer``, a
+def act_one(navigator, cstate, memory, layer, robot, seen, clock, route):
+    """(α, V, behaviour code) of one robot at the time of ``clock`` (a
+    :class:`~fuzzynav.kernels.records.Clock`: the step's period dt and the time t; the other
+    arguments those of :func:`fuzzynav.kernels.navigators.act_one`, plus ``layer``, a
     :class:`~fuzzynav.kernels.records.Layers`: the layers' parameters and the robot's state row,
-    :mod:`fuzzynav.kernels.layers`). The obstacle points seen are remembered where they are seen;
+    :mod:`fuzzynav.kernels.layers`; ``route``: those parameters when the route guidance or the
+    pace is on, None when both are off — their code is then pruned at compile time,
+    :func:`fuzzynav.kernels.step.route_of`). The obstacle points seen are remembered where they are seen;
     with an actuation delay (``params[PARAM.delay]`` steps) the decision is taken at the pose
     where the command will act, on the scan moved there (:mod:`fuzzynav.kernels.latency`), and
     the command is remembered as sent."""
     p, state = layer.params, layer.state
     if p[PARAM.on] == 0.0:
-        return navigators.act_one(navigator, cstate, memory, robot, seen, dt)
+        return navigators.act_one(navigator, cstate, memory, robot, seen, clock.dt)
     here, count = Pose(robot.x, robot.y, robot.theta), int(state[STATE.count])
     if p[PARAM.forget] != 0.0:  # moving obstacles: forget where they were (kernels.clearing)
         count = clearing.clear(points_of(p, state), cells_of(p, state), count, here, seen)
     count = sightings.see(points_of(p, state), cells_of(p, state), count, here, seen)
     state[STATE.count] = count
     if p[PARAM.delay] == 0.0:
-        return decide(navigator, cstate, memory, layer, robot, seen, dt, t)
+        return decide(navigator, cstate, memory, layer, robot, seen, clock, route)
     later, moved = latency.ahead(p, state, robot, seen)
-    steering, speed, code = decide(navigator, cstate, memory, layer, later, moved, dt, t)
+    steering, speed, code = decide(navigator, cstate, memory, layer, later, moved, clock, route)
     latency.sent(p, state, steering, speed)
     return steering, speed, code
 
 
 @jit
-def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
+def decide(navigator, cstate, memory, layer, robot, seen, clock, route):
     """:func:`act_one` of a robot at ``robot``'s pose reading ``seen``, once what it sees is remembered."""
     p, state = layer.params, layer.state
+    dt, t = clock.dt, clock.t
     x, y, theta, tx, ty = robot.x, robot.y, robot.theta, robot.tx, robot.ty
     ranges, angles, max_range, d_o, b_o = seen.ranges, seen.angles, seen.max_range, seen.d_o, seen.b_o
     points = points_of(p, state)
@@ -76,18 +80,18 @@ def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
             following = True
             aim_x, aim_y = escape.virtual_goal(state, p, remembered, robot, t, d_o, ranges, p[PARAM.radius])
     heading_for = Robot(x, y, theta, robot.v, aim_x, aim_y)
-    if p[PARAM.guide] != 0.0:
+    if route is not None and p[PARAM.guide] != 0.0:  # (route None: pruned at compile time, as below)
         aim_x, aim_y = guidance.aim(state, p, remembered, heading_for, t, p[PARAM.radius])
     steering, speed, code = navigators.act_one(navigator, cstate, memory, Robot(x, y, theta, robot.v, aim_x, aim_y),
                                                seen, dt)
-    if p[PARAM.pace] != 0.0 and speed > 0.0:
+    if route is not None and p[PARAM.pace] != 0.0 and speed > 0.0:
         faster = pace.pace(ranges, angles, max_range, steering, p, distance)
         if faster > speed and navigators.safety_stop(navigator.params, memory, x, y, theta, faster, dt) > 0.0:
             speed = faster
     labels = int(p[PARAM.n_labels])
     if following:
         code = labels + 2
-    if p[PARAM.guide] != 0.0 and state[STATE.phase] == NO_PHASE:
+    if route is not None and p[PARAM.guide] != 0.0 and state[STATE.phase] == NO_PHASE:
         quick = pace.car_pace(ranges, angles, max_range, p, state, distance)
         backing = state[STATE.guide_gear] < 0.0
         moving, a, u = guidance.manoeuvre(state, p, remembered, x, y, theta, dt, quick)
@@ -114,15 +118,15 @@ def decide(navigator, cstate, memory, layer, robot, seen, dt, t):
 
 
 @jit
-def act(navigator, cstate, memory, layers, seen, dt, t, out):
+def act(navigator, cstate, memory, layers, seen, clock, route, out):
     """:func:`act_one` of every active robot of ``seen`` (a :class:`~fuzzynav.kernels.records.Readings`)
-    at time ``t``, ``layers`` holding every robot's state rows: ``out`` (N, 3) = α, V, behaviour code."""
+    at the time of ``clock``, ``layers`` holding every robot's state rows: ``out`` (N, 3) = α, V, behaviour code."""
     for n in range(seen.poses.shape[0]):
         if seen.active[n]:
             out[n, 0], out[n, 1], out[n, 2] = act_one(navigator, cstate[n], memory[n],
                                                       Layers(layers.params, layers.state[n]),
-                                                      navigators.robot_of(seen, n), navigators.reading_of(seen, n), dt,
-                                                      t)
+                                                      navigators.robot_of(seen, n), navigators.reading_of(seen, n),
+                                                      clock, route)
 
 
 @jit

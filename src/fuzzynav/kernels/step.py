@@ -27,7 +27,7 @@ import numpy as np
 from fuzzynav.jit import jit
 from fuzzynav.kernels import beams, imperfect as real, layers, navigators, robust, scene, traffic
 from fuzzynav.kernels.motion import RADIUS, ROBOT_FIELDS, advance, clip, wrap
-from fuzzynav.kernels.records import Layers, Navigator, Reading, Robot, StepNavigator
+from fuzzynav.kernels.records import Clock, Layers, Navigator, Reading, Robot, StepNavigator
 
 SETUP_FIELDS = ROBOT_FIELDS + ("max_range", "task", "tolerance", "forced_speed", "passed", "max_steps", "goal_x",
                                "goal_y", "n_angles", "half_beam")
@@ -75,10 +75,18 @@ def lean_arguments(navigator: tuple) -> tuple:
     compile)."""
     kind, params, tables, cstate, memory, layer_params, layer_state = navigator
     if kind == NO_NAVIGATOR:
-        return None, None, StepNavigator(kind, tables, cstate, memory, None)
+        return None, None, StepNavigator(kind, tables, cstate, memory, None, None)
     if layer_params[layers.ON] == 0.0:
-        return params, None, StepNavigator(kind, tables, cstate, memory, None)
-    return params, layer_params, StepNavigator(kind, tables, cstate, memory, layer_state)
+        return params, None, StepNavigator(kind, tables, cstate, memory, None, None)
+    return params, layer_params, StepNavigator(kind, tables, cstate, memory, layer_state, route_of(layer_params))
+
+
+def route_of(layer_params: np.ndarray) -> np.ndarray | None:
+    """``layer_params`` when the layers' route guidance or pace is on, else None: the step of a
+    navigator that uses neither then compiles without their code (the car route's hybrid A* is
+    most of the layers' compile time; :func:`fuzzynav.kernels.robust.decide`)."""
+    guided = layer_params[layers.PARAM.guide] != 0.0 or layer_params[layers.PARAM.pace] != 0.0
+    return layer_params if guided else None
 
 
 @jit
@@ -238,8 +246,8 @@ def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
                                                            seen, setup[0])
             else:
                 steering, speed, code = robust.act_one(Navigator(kind, params, tables), cstate[n], memory[n],
-                                                       Layers(layer_params, layer_state[n]), robot, seen, setup[0],
-                                                       (k - 1) * setup[0])
+                                                       Layers(layer_params, layer_state[n]), robot, seen,
+                                                       Clock(setup[0], (k - 1) * setup[0]), navigator.route)
             row[BEHAVIOUR] = code
         steering, speed = limit(setup, steering, speed)
         if not moves:  # another plant moves the robot (fuzzynav.sim.plants): decide and clip only

@@ -37,7 +37,7 @@ def step_in_blocks(running: int, params, layer_params, navigator, setup, world, 
         rows = slice(first, last)
         layer_state = navigator.layer_state  # None without layers (lean_arguments)
         part = StepNavigator(navigator.kind, navigator.tables, navigator.state[rows], navigator.memory[rows],
-                             None if layer_state is None else layer_state[rows])
+                             None if layer_state is None else layer_state[rows], navigator.route)
         counts.append(step.step(params, layer_params, part, setup, placed, k, Robots(
             robots.state[rows], robots.ranges[rows], robots.status[rows], True), None))
 

@@ -86,7 +86,7 @@ def _one(navigator, memory_steps, layer, setup, scene, start, out):
     while running:
         x, y = state[0, step_kernel.X], state[0, step_kernel.Y]
         k += 1
-        running = step_kernel.step(params, lp, StepNavigator(kind, tables, cstate, memory, lstate), setup,
+        running = step_kernel.step(params, lp, StepNavigator(kind, tables, cstate, memory, lstate, lp), setup,
                                    Traffic(scene, still, no_offsets, scene), k, Robots(state, ranges, status, True), None)
         path += math.hypot(state[0, step_kernel.X] - x, state[0, step_kernel.Y] - y)
         gap = min(state[0, step_kernel.OBSTACLE_DISTANCE], state[0, step_kernel.BOUNDARY]) - radius
