@@ -7,6 +7,7 @@ A bad value is an argparse error: usage and message on stderr, exit status 2, no
 from __future__ import annotations
 
 import argparse
+import os
 import re
 from collections.abc import Callable
 from pathlib import Path
@@ -97,6 +98,20 @@ def path(text: str) -> Path:
     if not text.strip():
         raise argparse.ArgumentTypeError("is empty: name a file or folder (. for the current one)")
     return Path(text)
+
+
+def check_writable(path, field: str) -> Path:
+    """``path`` as a file this process can write at the end of a long run, checked before the run:
+    not a folder, in a folder that exists and that it may write in (InputError naming ``field``)."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError("is a directory; give the file to write", source=str(path), field=field)
+    folder = path.parent
+    if not folder.is_dir():
+        raise InputError(f"no folder {folder} to write it in", source=str(path), field=field)
+    if not os.access(folder, os.W_OK):
+        raise InputError(f"cannot write in the folder {folder}", source=str(path), field=field)
+    return path
 
 
 def figure_path(text: str) -> str:

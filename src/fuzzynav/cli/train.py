@@ -75,9 +75,10 @@ def run(args) -> int:
     if args.prior is not None and args.task != "fql-avoid":
         raise InputError(f"only for fql-avoid, not {args.task}", field="--prior")
     out = args.out or Path(f"{args.task}.json")
-    if out.is_dir():
-        raise InputError(f"{out} is a directory; give the model file to write", field="--out")
-    document_format(out)  # .json or .npz, refused before any training
+    for flag, target in (("--out", out), ("--curve", args.curve)):  # refused before any training
+        if target is not None:
+            arguments.check_writable(target, flag)
+    document_format(out)  # .json or .npz
     request = TrainRequest(
         out=out,
         task=args.task,

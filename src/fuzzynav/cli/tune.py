@@ -15,7 +15,6 @@ take as ``--fis ROLE=FILE``. Every option is checked before any simulation.
 from __future__ import annotations
 
 import json
-import os
 import sys
 from pathlib import Path
 
@@ -65,13 +64,9 @@ def run(args) -> int:
     from fuzzynav.tune.session import TuneRequest, check, checkpoint_path, tune
 
     objectives = tuple(name.strip() for name in args.objectives.split(",")) if args.objectives else ()
-    if args.out and Path(args.out).is_dir():
-        raise InputError("is a directory; give the file to write", source=args.out, field="--out")
-    folder = Path(args.out).parent if args.out else None  # checked before the first generation is simulated
-    if folder is not None and not folder.is_dir():
-        raise InputError(f"no folder {folder} to write it in", source=args.out, field="--out")
-    if folder is not None and not os.access(folder, os.W_OK):
-        raise InputError(f"cannot write in the folder {folder}", source=args.out, field="--out")
+    for flag, target in (("--out", args.out), ("--curve", args.curve)):  # before the first generation is simulated
+        if target:
+            arguments.check_writable(target, flag)
     request = TuneRequest(target=args.target, worlds=args.worlds, what=args.what, method=args.method,
                           budget=args.budget, seed=args.seed, population=args.population, objectives=objectives,
                           holdout=args.holdout, validation=args.validation, out=args.out, resume=args.resume, curve=args.curve,
