@@ -107,6 +107,8 @@ def check_writable(path, field: str) -> Path:
     if path.is_dir():
         raise InputError("is a directory; give the file to write", source=str(path), field=field)
     folder = path.parent
+    if folder.exists() and not folder.is_dir():
+        raise InputError(f"cannot write in {folder}: a file, not a folder", source=str(path), field=field)
     if not folder.is_dir():
         raise InputError(f"no folder {folder} to write it in", source=str(path), field=field)
     if not os.access(folder, os.W_OK):
