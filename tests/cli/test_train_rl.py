@@ -50,7 +50,7 @@ def test_fql_model_is_a_readable_rule_table(tmp_path, capsys):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("stop", [signal.SIGINT, signal.SIGKILL], ids=["ctrl-c", "kill-9"])
+@pytest.mark.parametrize("stop", [signal.SIGINT, signal.SIGTERM, signal.SIGKILL], ids=["ctrl-c", "term", "kill-9"])
 def test_resume_after_ctrl_c_or_kill_equals_an_uninterrupted_run(tmp_path, stop):
     args = ["fql-goal-traces", "--episodes", "1000", "--seed", "5", "--checkpoint-every", "100", "--quiet", "--parallel", "50"]
     whole, part = tmp_path / "whole.json", tmp_path / "part.json"
@@ -66,7 +66,10 @@ def test_resume_after_ctrl_c_or_kill_equals_an_uninterrupted_run(tmp_path, stop)
         time.sleep(0.02)
     process.send_signal(stop)
     process.wait(timeout=60)
-    assert process.returncode == (130 if stop == signal.SIGINT else -stop), process.stderr.read()  # before the end
+    expected = {signal.SIGINT: (130, "interrupted"), signal.SIGTERM: (143, "terminated")}.get(stop, (-stop, ""))
+    err = process.stderr.read().decode()
+    assert process.returncode == expected[0], err  # before the end
+    assert expected[1] in err and "Traceback" not in err
     assert not part.exists()
     saved = json.loads(checkpoint.read_text())
     assert 0 < saved["episode"] < 20  # batches of 50 episodes (random starts)

@@ -13,8 +13,10 @@ files do not depend on the backend or on the order in which cells finished.
 
 from __future__ import annotations
 
+import ctypes
 import multiprocessing
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -28,14 +30,38 @@ BACKENDS = ("local", "ray")
 
 
 FORKED = sys.platform == "linux"  # pool_map's workers start as copies of this process (else afresh)
+PR_SET_PDEATHSIG = 1  # prctl(2): the signal a process gets when its parent dies
 
 
 def _worker_start(initializer: Callable | None, initargs: tuple) -> None:
     """A pool worker's start: one thread for its batches (the pool spreads the work over the
-    cores, :mod:`fuzzynav.threads`), then ``initializer(*initargs)``."""
+    cores, :mod:`fuzzynav.threads`); Ctrl-C left to the parent, which stops the pool
+    (:func:`_stop`), a SIGTERM ending it at once, and on Linux a SIGTERM when the parent dies
+    (killed, the workers would run on alone); then ``initializer(*initargs)``."""
     threads.set_count(1)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if sys.platform == "linux":
+        parent = os.getppid()
+        try:
+            ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+        except (AttributeError, OSError):  # no prctl: the worker ends when its next task fails to come
+            pass
+        if os.getppid() != parent:  # the parent died before the request was made
+            os._exit(1)
     if initializer is not None:
         initializer(*initargs)
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """End ``pool`` now, on Ctrl-C or SIGTERM in this process: drop the tasks not started and
+    terminate the workers (their tasks are lost; what they saved atomically is whole or absent)."""
+    workers = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for worker in workers:
+        worker.terminate()
+    for worker in workers:
+        worker.join(timeout=5.0)
 
 
 def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[[int, Any], None], *,
@@ -54,33 +80,45 @@ def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[
             on_result(index, task(item))
         return
     context = multiprocessing.get_context("fork" if FORKED else "spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=_worker_start,
-                             initargs=(initializer, initargs)) as pool:
-        queue = enumerate(items)
-        pending: dict = {}
-        failure: BaseException | None = None
-        for index, item in queue:
-            pending[pool.submit(task, item)] = index
-            if len(pending) >= 4 * workers:
-                break
-        while pending:
-            done, _ = wait(pending, return_when=FIRST_COMPLETED)
-            for future in done:
-                index = pending.pop(future)
-                if future.cancelled():
-                    continue
-                if future.exception() is not None:
-                    if failure is None:
-                        failure = future.exception()
-                        for waiting in pending:  # the running ones cannot be cancelled: they end
-                            waiting.cancel()
-                    continue
-                on_result(index, future.result())
-                following = next(queue, None) if failure is None else None
-                if following is not None:
-                    pending[pool.submit(task, following[1])] = following[0]
-        if failure is not None:
-            raise failure
+    pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=_worker_start,
+                               initargs=(initializer, initargs))
+    try:
+        _run_in(pool, task, items, workers, on_result)
+    except KeyboardInterrupt:  # Ctrl-C, or SIGTERM as the command line raises it
+        _stop(pool)
+        raise
+    finally:
+        pool.shutdown()  # waits for the tasks running (none after _stop)
+
+
+def _run_in(pool: ProcessPoolExecutor, task: Callable, items: Sequence, workers: int,
+            on_result: Callable[[int, Any], None]) -> None:
+    """:func:`pool_map`'s loop over ``pool``."""
+    queue = enumerate(items)
+    pending: dict = {}
+    failure: BaseException | None = None
+    for index, item in queue:
+        pending[pool.submit(task, item)] = index
+        if len(pending) >= 4 * workers:
+            break
+    while pending:
+        done, _ = wait(pending, return_when=FIRST_COMPLETED)
+        for future in done:
+            index = pending.pop(future)
+            if future.cancelled():
+                continue
+            if future.exception() is not None:
+                if failure is None:
+                    failure = future.exception()
+                    for waiting in pending:  # the running ones cannot be cancelled: they end
+                        waiting.cancel()
+                continue
+            on_result(index, future.result())
+            following = next(queue, None) if failure is None else None
+            if following is not None:
+                pending[pool.submit(task, following[1])] = following[0]
+    if failure is not None:
+        raise failure
 
 
 def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None], address: str | None) -> None:

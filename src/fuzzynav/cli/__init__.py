@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import gc
 import os
+import signal
 import sys
 from collections.abc import Sequence
 from importlib import import_module
@@ -76,18 +77,35 @@ def _survive_any_terminal() -> None:
             reconfigure(errors="backslashreplace")
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the process is, so that it ends as Ctrl-C ends it: every save under
+    way removes its temporary file, and the command exits with 143 instead of leaving them."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated
+
+
+def _who(args) -> str:
+    """``fuzzynav COMMAND``, the start of an error line (``fuzzynav`` before the command is read)."""
+    return f"fuzzynav {args.command}" if getattr(args, "command", None) else "fuzzynav"
+
+
 def main(argv: list[str] | None = None) -> int:
     _survive_any_terminal()
+    if argv is None:  # the process' own command (not a call from Python, whose signals are the caller's)
+        signal.signal(signal.SIGTERM, _terminate)
     words = sys.argv[1:] if argv is None else argv
-    parser = build_parser(words)
-    args = parser.parse_args(words)
-    if not getattr(args, "func", None):
-        parser.print_help()
-        return 2
+    args = None
     try:
+        parser = build_parser(words)  # (imports the command: Ctrl-C may come here too)
+        args = parser.parse_args(words)
+        if not getattr(args, "func", None):
+            parser.print_help()
+            return 2
         return int(args.func(args) or 0)
     except InputError as error:
-        print(f"fuzzynav {args.command}: error: {error}", file=sys.stderr)
+        print(f"{_who(args)}: error: {error}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         # the reader of stdout went away (``fuzzynav fis show ... | head``): quietly, no traceback
@@ -99,8 +117,11 @@ def main(argv: list[str] | None = None) -> int:
         problem = error.strerror or error
         if isinstance(error, FileExistsError) and error.filename and os.path.isfile(error.filename):
             problem = "is a file, not a folder (give a new or an existing folder)"
-        print(f"fuzzynav {args.command}: error: {where}{problem}", file=sys.stderr)
+        print(f"{_who(args)}: error: {where}{problem}", file=sys.stderr)
         return 2
+    except Terminated:
+        print("terminated", file=sys.stderr)
+        return 143
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
