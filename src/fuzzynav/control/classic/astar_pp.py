@@ -59,6 +59,7 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, arcs
 from fuzzynav.errors import InputError
+from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.settings import BODY, LENGTH, RATE, ROOM, SPEED, WEIGHT, checked
 from fuzzynav.world.hybrid_astar import Car, Search, hybrid_astar
 from fuzzynav.world.planning import shortest_path
@@ -229,7 +230,7 @@ class AStarPurePursuit(Controller):
         self._index += int(np.argmin(np.hypot(*(ahead - xy).T)))
         aim = min(self._index + int(round(self.lookahead / SPACING)), len(self.path) - 1)
         dx, dy = self.path[aim] - xy
-        bearing = math.remainder(math.atan2(dy, dx) - float(obs.pose[2]), math.tau)
+        bearing = wrap_angle(math.atan2(dy, dx) - float(obs.pose[2]))
         steering = self.body.steer_towards(bearing, math.hypot(dx, dy))
         bend = float(np.abs(self.curvature[self._index:aim + int(0.5 / SPACING)]).max(initial=0.0))
         speed = min(self.body.max_speed * max(math.cos(bearing), 0.25), math.sqrt(self.lateral / max(bend, 1e-6)))
@@ -254,7 +255,7 @@ class AStarPurePursuit(Controller):
         speed = min(speed, math.sqrt(self.lateral / max(abs(float(self.curvature[i])), 1e-6)))
         if self._end < len(self.path) - 1:  # slow down into a cusp
             speed = min(speed, max(0.2, 2.0 * to_cusp))
-        turn = math.remainder(psi - theta, math.tau)
+        turn = wrap_angle(psi - theta)
         steering = (math.atan(self.body.wheelbase * float(self.curvature[i])) + gear * turn
                     - math.atan(STANLEY_GAIN * offset / (speed + 0.1)))
         steering = min(max(steering, -self.body.max_steering), self.body.max_steering)

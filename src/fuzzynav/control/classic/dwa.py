@@ -41,6 +41,7 @@ import numpy as np
 from fuzzynav.control.base import Command, Controller
 from fuzzynav.control.classic.local_map import Body, LocalMap, TrackedMap, arcs, free_length, moving_free_length
 from fuzzynav.control.sighting_tracks import tracked_variant
+from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.sensors import named_ring
 from fuzzynav.settings import BODY, LENGTH, MEMORY, PREDICTION, RATE, ROOM, SAMPLES, WEIGHT, checked
 
@@ -104,7 +105,7 @@ class DynamicWindow(Controller):
         goal = np.array([c * (obs.target[0] - obs.pose[0]) + s * (obs.target[1] - obs.pose[1]),
                          -s * (obs.target[0] - obs.pose[0]) + c * (obs.target[1] - obs.pose[1])])
         to_goal = np.arctan2(goal[1] - end_xy[..., 1], goal[0] - end_xy[..., 0])
-        heading = 1.0 - np.abs(np.angle(np.exp(1j * (to_goal - end_theta)))) / math.pi
+        heading = 1.0 - np.abs(wrap_angle(to_goal - end_theta)) / math.pi
         terms = np.stack([heading, dist, v / body.max_speed])
         top = np.where(admissible, terms, 0.0).reshape(3, -1).max(axis=1)
         score = np.tensordot(self.weights / np.maximum(top, 1e-9), terms, axes=1)
