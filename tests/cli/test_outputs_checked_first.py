@@ -19,14 +19,27 @@ def _refused(argv, capsys):
     return err
 
 
+def test_tune_refuses_an_output_in_a_missing_folder_before_any_work(tmp_path, capsys):
+    err = _refused([*TUNE, "--out", str(tmp_path / "missing" / "t.yaml")], capsys)
+    assert "--out" in err and "no folder" in err and "missing" in err
+    assert not any(tmp_path.iterdir())
+
+
 @pytest.mark.parametrize("command", [TRAIN, TUNE], ids=["train", "tune"])
 @pytest.mark.parametrize("flag", ["--out", "--curve"])
-def test_an_output_in_a_missing_folder_is_refused_before_any_work(tmp_path, capsys, command, flag):
+def test_a_missing_folder_under_one_it_may_not_write_in_is_refused(tmp_path, capsys, monkeypatch, command, flag):
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    real = os.access
+    monkeypatch.setattr(os, "access", lambda path, mode, **kw: False if str(path) == str(locked) else real(path, mode, **kw))
     outputs = {"--out": tmp_path / ("m.json" if command is TRAIN else "t.yaml"), "--curve": tmp_path / "c.png"}
-    outputs[flag] = tmp_path / "missing" / outputs[flag].name
+    if command is TUNE and flag == "--out":
+        outputs[flag] = locked / outputs[flag].name  # tune: its folder must exist
+    else:
+        outputs[flag] = locked / "new" / outputs[flag].name  # made by the save, but not inside locked
     err = _refused([*command, "--out", str(outputs["--out"]), "--curve", str(outputs["--curve"])], capsys)
-    assert flag in err and "no folder" in err and "missing" in err
-    assert not any(tmp_path.iterdir())  # nothing trained, nothing written
+    assert flag in err and "cannot write in the folder" in err and str(locked) in err
+    assert not any(locked.iterdir()) and not outputs["--out"].exists()
 
 
 @pytest.mark.parametrize("command", [TRAIN, TUNE], ids=["train", "tune"])

@@ -100,13 +100,19 @@ def path(text: str) -> Path:
     return Path(text)
 
 
-def check_writable(path, field: str) -> Path:
+def check_writable(path, field: str, *, create: bool = True) -> Path:
     """``path`` as a file this process can write at the end of a long run, checked before the run:
-    not a folder, in a folder that exists and that it may write in (InputError naming ``field``)."""
+    not a folder, and its folder — or, with ``create`` (saves make missing folders), the nearest
+    folder above it that exists — a folder it may write in. A stream (``/dev/stdout``) passes.
+    Otherwise an InputError naming ``field``."""
     path = Path(path)
     if path.is_dir():
         raise InputError("is a directory; give the file to write", source=str(path), field=field)
+    if path.exists() and not path.is_file():  # a device or a pipe, written in place
+        return path
     folder = path.parent
+    while create and not folder.exists() and folder != folder.parent:
+        folder = folder.parent
     if folder.exists() and not folder.is_dir():
         raise InputError(f"cannot write in {folder}: a file, not a folder", source=str(path), field=field)
     if not folder.is_dir():

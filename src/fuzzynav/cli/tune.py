@@ -64,9 +64,10 @@ def run(args) -> int:
     from fuzzynav.tune.session import TuneRequest, check, checkpoint_path, tune
 
     objectives = tuple(name.strip() for name in args.objectives.split(",")) if args.objectives else ()
-    for flag, target in (("--out", args.out), ("--curve", args.curve)):  # before the first generation is simulated
-        if target:
-            arguments.check_writable(target, flag)
+    if args.out:  # (its folder must exist, as before) checked before the first generation is simulated
+        arguments.check_writable(args.out, "--out", create=False)
+    if args.curve:
+        arguments.check_writable(args.curve, "--curve")
     request = TuneRequest(target=args.target, worlds=args.worlds, what=args.what, method=args.method,
                           budget=args.budget, seed=args.seed, population=args.population, objectives=objectives,
                           holdout=args.holdout, validation=args.validation, out=args.out, resume=args.resume, curve=args.curve,
