@@ -17,6 +17,7 @@ chunks in that thread.
 from __future__ import annotations
 
 import contextlib
+import functools
 import itertools
 import math
 import os
@@ -45,31 +46,34 @@ def cores() -> int:
     return max(1, min(allowed, math.ceil(quota))) if quota is not None else allowed
 
 
+@functools.cache
 def cpu_quota(root: Path = Path("/sys/fs/cgroup"), membership: Path = Path("/proc/self/cgroup")) -> float | None:
-    """The CPUs' worth of time this process' control group may use — quota / period, from cgroup
-    v2's ``cpu.max`` or v1's ``cpu.cfs_quota_us`` and ``cpu.cfs_period_us`` of the group that
-    ``membership`` names (then of the hierarchy's root, as a container sees its own) — or None
-    where there is no cap or nothing can be read (not Linux, no cgroup file system)."""
+    """The CPUs' worth of time this process' control group may use — the least quota / period of
+    its group and of the groups above it (cgroup v2's ``cpu.max``, v1's ``cpu.cfs_quota_us`` and
+    ``cpu.cfs_period_us``; a container sees its own group as the root) — or None where no group
+    caps it or nothing can be read (not Linux, no cgroup file system). Read once per process."""
     try:
         lines = membership.read_text().splitlines()
     except OSError:
         return None
+    shares = []
     for line in lines:
         parts = line.split(":", 2)
         if len(parts) != 3:
             continue
-        controllers, group = parts[1], parts[2].lstrip("/")
+        controllers, group = parts[1], Path(parts[2].lstrip("/"))
         if controllers == "":  # v2: "0::/group"
-            candidates = [root / group / "cpu.max", root / "cpu.max"]
+            bases = [root]
         elif "cpu" in controllers.split(","):  # v1: "N:cpu,cpuacct:/group"
-            candidates = [folder for base in (root / "cpu", root / "cpu,cpuacct") for folder in (base / group, base)]
+            bases = [root / "cpu", root / "cpu,cpuacct"]
         else:
             continue
-        for place in candidates:
-            share = _share(place)
-            if share is not False:
-                return share
-    return None
+        for base in bases:
+            for level in (group, *group.parents):  # the group, then each group above it up to the root
+                share = _share(base / level / "cpu.max" if controllers == "" else base / level)
+                if share is not None and share is not False:
+                    shares.append(share)
+    return min(shares) if shares else None
 
 
 def _share(place: Path) -> float | None | bool:
@@ -129,11 +133,12 @@ def spread(task: Callable[[int, int], None], items: int, *, threads: int | None 
     edges = [items * i // chunks for i in range(chunks + 1)]
     following = itertools.count()  # next() of it is atomic: each chunk is taken once
     errors: dict[int, Exception] = {}
+    stopping = threading.Event()  # set on Ctrl-C or SIGTERM here: no chunk is started after it
 
     def runner() -> None:
         _inside.chunk = True
         try:
-            while (i := next(following)) < chunks:
+            while not stopping.is_set() and (i := next(following)) < chunks:
                 try:
                     task(edges[i], edges[i + 1])
                 except Exception as error:  # noqa: BLE001 - raised by spread once every chunk has run
@@ -141,8 +146,12 @@ def spread(task: Callable[[int, int], None], items: int, *, threads: int | None 
         finally:
             _inside.chunk = False
 
-    for future in [_executor(threads).submit(runner) for _ in range(threads)]:
-        future.result()
+    try:
+        for future in [_executor(threads).submit(runner) for _ in range(threads)]:
+            future.result()
+    except BaseException:  # KeyboardInterrupt, as the command line raises SIGTERM too: the chunks running end
+        stopping.set()
+        raise
     failed = [errors[i] for i in sorted(errors)]
     if failed and all(type(error) is type(failed[0]) for error in failed):
         raise failed[0]

@@ -2,6 +2,7 @@
 
 import os
 import threading
+import time
 
 import pytest
 
@@ -92,12 +93,20 @@ def _spread_in_a_child() -> list[int]:
     return sorted(seen)
 
 
-def test_pool_workers_run_their_batches_on_one_thread():
-    from fuzzynav.bench.backends import _worker_start
+def _worker_view(_):
+    import signal
 
-    started = []
-    _worker_start(started.append, ("ready",))
-    assert threads.count() == 1 and started == ["ready"]
+    return threads.count(), signal.getsignal(signal.SIGINT) is signal.SIG_IGN, signal.getsignal(signal.SIGTERM)
+
+
+def test_pool_workers_run_their_batches_on_one_thread_and_leave_ctrl_c_to_the_command():
+    import signal
+
+    from fuzzynav.bench.backends import pool_map
+
+    seen = {}
+    pool_map(_worker_view, range(4), 2, seen.__setitem__)
+    assert set(seen.values()) == {(1, True, signal.SIG_DFL)}
 
 
 def test_at_most_count_chunks_run_at_once_whatever_the_pool_once_grew_to():
@@ -167,3 +176,26 @@ def test_cores_are_capped_by_the_quota_rounded_up_and_never_below_one(monkeypatc
     for quota, expected in ((None, 8), (1.5, 2), (0.2, 1), (2.0, 2), (64.0, 8)):
         monkeypatch.setattr(threads, "cpu_quota", lambda quota=quota: quota)
         assert threads.cores() == expected
+
+
+def test_a_quota_set_on_a_group_above_the_process_caps_it_too(tmp_path):
+    files = {"fs/ci.slice/cpu.max": "150000 100000\n", "fs/ci.slice/job/cpu.max": "max 100000\n",
+             "fs/cpu.max": "400000 100000\n"}
+    assert threads.cpu_quota(**_cgroup(tmp_path, "0::/ci.slice/job\n", files)) == 1.5  # the least on the way up
+
+
+def test_an_interrupt_while_chunks_run_starts_no_further_chunk():
+    threads.set_count(2)
+    started = []
+
+    def task(start, stop):
+        started.append(start)
+        if start == 0:
+            time.sleep(0.05)  # the other thread takes a few chunks meanwhile
+            raise KeyboardInterrupt  # as Ctrl-C (or SIGTERM, as the command line raises it) reaches spread
+        time.sleep(0.01)
+
+    with pytest.raises(KeyboardInterrupt):
+        threads.spread(task, 160)  # 16 chunks of 10 items
+    time.sleep(0.3)  # what would still start, would have by now
+    assert len(started) < 16, started

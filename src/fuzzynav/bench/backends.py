@@ -18,6 +18,7 @@ import multiprocessing
 import os
 import signal
 import sys
+import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from typing import Any
@@ -33,19 +34,20 @@ FORKED = sys.platform == "linux"  # pool_map's workers start as copies of this p
 PR_SET_PDEATHSIG = 1  # prctl(2): the signal a process gets when its parent dies
 
 
-def _worker_start(initializer: Callable | None, initargs: tuple) -> None:
+def _worker_start(parent: int, interrupts: bool, initializer: Callable | None, initargs: tuple) -> None:
     """A pool worker's start: one thread for its batches (the pool spreads the work over the
-    cores, :mod:`fuzzynav.threads`); Ctrl-C left to the parent, which stops the pool
-    (:func:`_stop`), a SIGTERM ending it at once, and on Linux a SIGTERM when the parent dies
-    (killed, the workers would run on alone); then ``initializer(*initargs)``."""
+    cores, :mod:`fuzzynav.threads`); a SIGTERM ending it at once; Ctrl-C left to the process
+    ``parent`` when ``interrupts`` (its main thread runs the pool and stops it, :func:`_stop`);
+    on Linux a SIGTERM when that process dies (killed, the worker would wait for tasks forever);
+    then ``initializer(*initargs)``."""
     threads.set_count(1)
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if interrupts:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
     if sys.platform == "linux":
-        parent = os.getppid()
         try:
             ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
-        except (AttributeError, OSError):  # no prctl: the worker ends when its next task fails to come
+        except (AttributeError, OSError):  # no prctl: as before, the worker outlives a killed parent
             pass
         if os.getppid() != parent:  # the parent died before the request was made
             os._exit(1)
@@ -64,6 +66,16 @@ def _stop(pool: ProcessPoolExecutor) -> None:
         worker.join(timeout=5.0)
 
 
+def _shut(pool: ProcessPoolExecutor, *, cancel: bool) -> None:
+    """Shut ``pool`` down, waiting for its tasks running (and those queued, unless ``cancel``);
+    a Ctrl-C or SIGTERM during the wait stops it at once (:func:`_stop`)."""
+    try:
+        pool.shutdown(wait=True, cancel_futures=cancel)
+    except KeyboardInterrupt:
+        _stop(pool)
+        raise
+
+
 def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[[int, Any], None], *,
              initializer: Callable | None = None, initargs: tuple = ()) -> None:
     """Run ``task(item)`` for every item, in this process (``workers`` = 1) or in a pool of
@@ -80,15 +92,18 @@ def pool_map(task: Callable, items: Sequence, workers: int, on_result: Callable[
             on_result(index, task(item))
         return
     context = multiprocessing.get_context("fork" if FORKED else "spawn")
+    here = threading.current_thread() is threading.main_thread()  # where Ctrl-C is raised
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=_worker_start,
-                               initargs=(initializer, initargs))
+                               initargs=(os.getpid(), here, initializer, initargs))
     try:
         _run_in(pool, task, items, workers, on_result)
     except KeyboardInterrupt:  # Ctrl-C, or SIGTERM as the command line raises it
         _stop(pool)
         raise
-    finally:
-        pool.shutdown()  # waits for the tasks running (none after _stop)
+    except BaseException:  # a result that could not be handled: the tasks queued are dropped
+        _shut(pool, cancel=True)
+        raise
+    _shut(pool, cancel=False)
 
 
 def _run_in(pool: ProcessPoolExecutor, task: Callable, items: Sequence, workers: int,
@@ -130,7 +145,10 @@ def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], No
     started = not ray.is_initialized()
     if started:
         options = {"address": address} if address else {"num_cpus": workers, "include_dashboard": False}
+        handler = signal.getsignal(signal.SIGTERM)
         ray.init(log_to_driver=False, **options)
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGTERM, handler)  # ray.init puts its own (an exit with status 15)
     try:
         task = ray.remote(run_cell)
         pending = [task.remote(cell) for cell in cells]

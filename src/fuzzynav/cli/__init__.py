@@ -95,6 +95,8 @@ def main(argv: list[str] | None = None) -> int:
     _survive_any_terminal()
     if argv is None:  # the process' own command (not a call from Python, whose signals are the caller's)
         signal.signal(signal.SIGTERM, _terminate)
+        if hasattr(os, "register_at_fork"):  # a forked worker's SIGTERM ends it, from its first instruction
+            os.register_at_fork(after_in_child=lambda: signal.signal(signal.SIGTERM, signal.SIG_DFL))
     words = sys.argv[1:] if argv is None else argv
     args = None
     try:

@@ -105,7 +105,7 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
     not a folder, and its folder — or, with ``create`` (saves make missing folders), the nearest
     folder above it that exists — a folder it may write in. A stream (``/dev/stdout``) passes.
     Otherwise an InputError naming ``field``."""
-    path = Path(path)
+    path = Path(os.path.realpath(path)) if Path(path).is_symlink() else Path(path)  # a save writes the target
     if path.is_dir():
         raise InputError("is a directory; give the file to write", source=str(path), field=field)
     if path.exists() and not path.is_file():  # a device or a pipe, written in place
@@ -117,7 +117,7 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
         raise InputError(f"cannot write in {folder}: a file, not a folder", source=str(path), field=field)
     if not folder.is_dir():
         raise InputError(f"no folder {folder} to write it in", source=str(path), field=field)
-    if not os.access(folder, os.W_OK):
+    if not os.access(folder, os.W_OK | os.X_OK):
         raise InputError(f"cannot write in the folder {folder}", source=str(path), field=field)
     return path
 
