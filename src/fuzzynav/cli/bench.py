@@ -54,7 +54,7 @@ def register(subparsers) -> None:
                              f"sets; default 1); a campaign holds at most {validation.MAX_CAMPAIGN_RUNS:,} runs "
                              "(worlds x seeds x controllers), checked before any run")
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
-                        help=f"parallel workers, 1 to {validation.MAX_WORKERS} (default: the number of cores)")
+                        help=f"parallel workers, 1 to {validation.MAX_WORKERS} (default: the cores this process may use)")
     parser.add_argument("--backend", choices=("local", "ray"), default="local",
                         help="local process pool (default) or Ray tasks (pip install -e '.[cluster]' in the clone)")
     parser.add_argument("--ray-address", metavar="ADDR", default=None,

@@ -51,7 +51,7 @@ fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-
                         help="run these controllers (comma-separated) instead of each scenario's own list")
     parser.add_argument("--no-plots", action="store_true", help="metrics only")
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
-                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the number of cores); "
+                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the cores this process may use); "
                              "the results do not depend on it")
 
 

@@ -48,7 +48,7 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
-                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the number of cores); "
+                        help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the cores this process may use); "
                              "the result does not depend on it")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--progress", action="store_true", help="one line per world on stderr")

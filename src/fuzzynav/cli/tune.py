@@ -54,8 +54,8 @@ def register(subparsers) -> None:
     parser.add_argument("--curve", metavar="PNG", type=arguments.figure_path,
                         help="write the learning curve (best training cost against episodes)")
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
-                        help=f"threads simulating the episodes, 1 to {validation.MAX_WORKERS} (default: the number of "
-                             "cores); the result does not depend on it")
+                        help=f"threads simulating the episodes, 1 to {validation.MAX_WORKERS} (default: the cores this "
+                             "process may use); the result does not depend on it")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
 
