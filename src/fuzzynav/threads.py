@@ -71,14 +71,14 @@ def cpu_quota(root: Path = Path("/sys/fs/cgroup"), membership: Path = Path("/pro
         for base in bases:
             for level in (group, *group.parents):  # the group, then each group above it up to the root
                 share = _share(base / level / "cpu.max" if controllers == "" else base / level)
-                if share is not None and share is not False:
+                if share is not None:
                     shares.append(share)
     return min(shares) if shares else None
 
 
-def _share(place: Path) -> float | None | bool:
+def _share(place: Path) -> float | None:
     """quota / period of the cgroup file ``place`` (v2's ``cpu.max``) or folder (v1's two files):
-    None for no cap, False where it cannot be read."""
+    None where it sets no cap or cannot be read."""
     try:
         if place.name == "cpu.max":
             quota, period = place.read_text().split()[:2]
@@ -89,7 +89,7 @@ def _share(place: Path) -> float | None | bool:
             return None
         share = int(quota) / int(period)
     except (OSError, ValueError, ZeroDivisionError):
-        return False
+        return None
     return share if share > 0 else None
 
 

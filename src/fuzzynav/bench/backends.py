@@ -13,6 +13,7 @@ files do not depend on the backend or on the order in which cells finished.
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import multiprocessing
 import os
@@ -45,10 +46,8 @@ def _worker_start(parent: int, interrupts: bool, initializer: Callable | None, i
     if interrupts:
         signal.signal(signal.SIGINT, signal.SIG_IGN)
     if sys.platform == "linux":
-        try:
+        with contextlib.suppress(AttributeError, OSError):  # no prctl: the worker outlives a killed parent
             ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
-        except (AttributeError, OSError):  # no prctl: as before, the worker outlives a killed parent
-            pass
         if os.getppid() != parent:  # the parent died before the request was made
             os._exit(1)
     if initializer is not None:
