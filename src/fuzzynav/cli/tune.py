@@ -61,7 +61,8 @@ def register(subparsers) -> None:
 
 
 def run(args) -> int:
-    from fuzzynav.tune.session import TuneRequest, check, checkpoint_path, tune
+    from fuzzynav.tune.checkpoint import path_for
+    from fuzzynav.tune.session import TuneRequest, check, tune
 
     objectives = tuple(name.strip() for name in args.objectives.split(",")) if args.objectives else ()
     if args.out:  # (its folder must exist, as before) checked before the first generation is simulated
@@ -73,7 +74,7 @@ def run(args) -> int:
                           holdout=args.holdout, validation=args.validation, out=args.out, resume=args.resume, curve=args.curve,
                           progress=not (args.quiet or args.json))
     check(request)
-    checkpoint = checkpoint_path(request)
+    checkpoint = path_for(request)
     if checkpoint is not None and checkpoint.is_dir():  # found now, not when the first generation is saved
         raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
     if request.resume and checkpoint is not None and not checkpoint.is_file():

@@ -10,7 +10,7 @@ the :data:`VALIDATED` best distinct candidates on them, and the result is the on
 validation cost — the start when none beats it: model selection on worlds the search never saw
 (early stopping by a validation set; Hastie, Tibshirani & Friedman, *The Elements of Statistical
 Learning*, 2009, §7.2), since a candidate that fixes the training worlds' few failures often
-fails others (docs/tuning.md measures it). After each generation the checkpoint (``.npz``: the options and every
+fails others (docs/tuning.md measures it). After each generation the checkpoint (:mod:`~fuzzynav.tune.checkpoint`; ``.npz``: the options and every
 population with its objective values) is rewritten atomically; ``resume`` replays the stored
 generations through a new optimiser — same seed, same populations, same values, no
 simulation — checks that each replayed population is the one stored, and goes on, so a killed
@@ -19,19 +19,17 @@ and resumed run ends exactly where an uninterrupted one does.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
-from fuzzynav.tune.fitness import INVALID_COST, OBJECTIVES, Fitness
+from fuzzynav.tune import checkpoint
+from fuzzynav.tune.fitness import OBJECTIVES, Fitness
 from fuzzynav.tune.optimisers import METHODS
 from fuzzynav.tune.space import WHAT
 
@@ -167,98 +165,6 @@ def validation_suite(request: TuneRequest, suite):
         raise InputError(error.problem, source=error.source, field="--validation") from None
 
 
-def checkpoint_path(request: TuneRequest) -> Path | None:
-    """``OUT.tune.npz`` beside ``--out`` (no checkpoint without it)."""
-    return None if request.out is None else Path(f"{request.out}.tune.npz")
-
-
-def _load_checkpoint(path: Path, request: TuneRequest, fitness: Fitness) -> list[tuple[np.ndarray, np.ndarray]]:
-    """The stored generations [(population, values)], after checking the options match, the
-    arrays fit together (a population has a column per searched parameter of ``fitness``'s space)
-    and the objective values ``f`` are possible ones (:func:`_check_values`).
-
-    A resumed run does not simulate the stored generations again (that would cost the whole run
-    once more): it takes their values ``f`` as stored. It detects damage and another tuning's
-    options; populations ``x`` that are not finite or that the optimiser does not ask again when
-    replayed (a stored population edited, or a value of ``f`` of an earlier generation edited so
-    that the optimiser asked something else next); and a value of ``f`` that no simulation on these
-    worlds gives: NaN or infinite, or outside its objective's range — the cost in [0,
-    ``INVALID_COST``] (the worst episode's), the failure rate a multiple of 1/W in [0, 1] (W
-    training worlds), the mean time (s) in [0, the longest time limit + one step], minus the mean
-    least clearance (m) in [−the largest world diagonal, 1] (clearances are clipped at −1 m). It
-    does not detect a false value inside those ranges that leaves the replay unchanged — in the
-    last stored generation, or one that does not change the optimiser's next population: such a
-    value can make a worse candidate the result, steer the search, or (``nsga2``) show in the front
-    with the stored objectives. A checkpoint is trusted as the run's own; its file is not signed."""
-    validation.check_npz(path)
-    with np.load(path, allow_pickle=False) as data:
-        try:
-            options = json.loads(str(data["options"]))
-            sizes, x, f = data["sizes"], data["x"], data["f"]
-            worlds = str(data["worlds"]) if "worlds" in data.files else None  # written since 2026-12-07
-        except (KeyError, ValueError) as error:
-            raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
-    validation.mapping(options, str(path), "options")
-    for key, value in request.replayed().items():
-        if options.get(key) != value:
-            raise InputError(f"the checkpoint was made with {key} = {options.get(key)!r}, this run has {value!r}",
-                             source=str(path), field=key)
-    if worlds is not None and worlds != _worlds_digest(fitness):
-        raise InputError(f"the training worlds of {request.worlds} are not the ones the checkpoint was made on (a "
-                         "world edited, added or removed since): tune afresh, or restore them", source=str(path),
-                         field="--worlds")
-    for name, array, columns in (("x", x, len(fitness.space.start)), ("f", f, 1 + len(OBJECTIVES))):
-        if array.ndim != 2 or array.shape[1] != columns or array.dtype.kind != "f":
-            raise InputError(f"must be a float array of {columns} columns, got {array.dtype} of shape {array.shape}",
-                             source=str(path), field=name)
-    if sizes.ndim != 1 or sizes.dtype.kind not in "iu" or np.any(sizes < 0) or int(sizes.sum()) != len(x) \
-            or len(f) != len(x):
-        raise InputError(f"the generations' sizes must add up to the {len(x)} rows of x and f", source=str(path),
-                         field="sizes")
-    if not np.isfinite(x).all():
-        raise InputError("the populations must be finite numbers (no NaN or infinity)", source=str(path), field="x")
-    _check_values(path, f, fitness)
-    ends = np.cumsum(sizes)
-    return [(x[end - size:end], f[end - size:end]) for size, end in zip(sizes, ends)]
-
-
-def _check_values(path: Path, f: np.ndarray, fitness: Fitness) -> None:
-    """Refuse objective values ``f`` (rows of :meth:`Fitness.objectives`) that ``fitness``'s worlds
-    cannot give (:func:`_load_checkpoint`)."""
-    worlds = fitness.worlds
-    extent = max(math.hypot(s.world.width, s.world.height) for s in worlds.scenarios)
-    ranges = ((0.0, INVALID_COST), (0.0, 1.0), (0.0, float(np.max(worlds.max_time + worlds.dt))), (-extent, 1.0))
-    names = ("cost", "failure rate", "mean time (s)", "minus mean least clearance (m)")  # Fitness.objectives
-    for column, ((lo, hi), name) in enumerate(zip(ranges, names)):
-        values = f[:, column]
-        bad = ~np.isfinite(values) | (values < lo) | (values > hi)
-        if column == 1:  # a failure rate is k of the W worlds
-            bad |= np.abs(values * len(worlds) - np.round(values * len(worlds))) > 1e-6
-        if bad.any():
-            row = int(np.argmax(bad))
-            what = "be finite" if not np.isfinite(values[row]) else f"lie in [{lo:g}, {hi:g}]" + (
-                f" and be a multiple of 1/{len(worlds)} (the worlds)" if column == 1 else "")
-            raise InputError(f"the {name} of candidate {row} must {what}, got {validation.shown(float(values[row]))}",
-                             source=str(path), field=f"f[{row}, {column}]")
-
-
-def _worlds_digest(fitness: Fitness) -> str:
-    """A digest of the training worlds as the simulation reads them (set-ups, scenes, starts and
-    the navigator's constants): a resumed run must tune on the same worlds."""
-    digest = hashlib.sha256()
-    for array in map(np.ascontiguousarray, (*fitness.worlds.packed, fitness.worlds.params)):
-        digest.update(f"{array.dtype.str}{array.shape}".encode() + array.tobytes())
-    return digest.hexdigest()
-
-
-def _save_checkpoint(path: Path, request: TuneRequest, generations, fitness: Fitness) -> None:
-    from fuzzynav.storage import save_npz_atomic
-
-    save_npz_atomic(path, options=np.array(json.dumps(request.replayed())), worlds=np.array(_worlds_digest(fitness)),
-                    sizes=np.array([len(x) for x, _ in generations], dtype=np.int64),
-                    x=np.concatenate([x for x, _ in generations]), f=np.concatenate([f for _, f in generations]))
-
-
 def _columns(request: TuneRequest) -> list[int]:
     """Columns of :meth:`Fitness.objectives` the optimiser minimises."""
     return [1 + OBJECTIVES.index(name) for name in request.objectives] if request.objectives else [0]
@@ -275,11 +181,11 @@ def tune(request: TuneRequest) -> dict:
     controller, system, suite, holdout = check(request)
     chooser = validation_suite(request, suite)
     space = SearchSpace(system, request.what)
-    path = checkpoint_path(request)
+    path = checkpoint.path_for(request)
     resumed = request.resume and path is not None and path.is_file()
     fitness = Fitness(controller, request.role, space, [suite.scenario(i, 0) for i in range(suite.size)],
                       wall=not spec_of(request.controller).goal_directed)
-    stored = _load_checkpoint(path, request, fitness) if resumed else []
+    stored = checkpoint.load(path, request, fitness) if resumed else []
     optimiser = make_optimiser(request.method, space, request.population, request.seed,
                                n_obj=len(_columns(request)))
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
@@ -310,7 +216,7 @@ def tune(request: TuneRequest) -> dict:
             if len(population) == asked:  # a population cut short by the budget ends the run untold
                 optimiser.tell(population, values[:, columns])
             if path is not None:
-                _save_checkpoint(path, request, generations, fitness)
+                checkpoint.save(path, request, generations, fitness)
             bar.update(len(population) * n_worlds)
             bar.set_postfix(best=f"{best:.4f}")
         chosen = None
