@@ -146,62 +146,47 @@ def _file_sha256(path) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
-def _check_replacements(out: Path, fis: tuple, resuming: bool) -> None:
-    """Record the rule-base replacements (role, file, content hash) in ``fis.json``; a campaign
-    whose runs were made with other ones (or none) is refused: it cannot mix them."""
-    record = {role: {"file": path, "sha256": _file_sha256(path)} for role, path in fis}
-    path = out / "fis.json"
-    if resuming:
-        before = stored.read_replacements(path) if path.exists() else {}
-        if {r: v["sha256"] for r, v in before.items()} != {r: v["sha256"] for r, v in record.items()}:
-            raise InputError(f"its runs were made with {_describe(before)}, this campaign gives {_describe(record)}: "
-                             "runs of different rule bases cannot be mixed (resume with the same --fis, or choose "
-                             "another --out)", source=str(out), field="--fis")
+def _keep(out: Path, name: str, record, resuming: bool, read, absent, conflict) -> None:
+    """Write a campaign's setting ``record`` to ``out/name``; resuming, first refuse it where the
+    runs already made had another: ``conflict(before)`` (``before`` read by ``read``, or
+    ``absent`` where the file is missing) gives the problem and the option at fault, or None.
+    Runs made otherwise cannot be mixed."""
+    path = out / name
+    problem = conflict(read(path) if path.exists() else absent) if resuming else None
+    if problem:
+        raise InputError(problem[0], source=str(out), field=problem[1])
     write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
 
-def _check_inputs(out: Path, plan: Plan, resuming: bool) -> None:
-    """Record in ``inputs.json`` the content hash of the model files and folder-suite scenario
-    files the runs read; a campaign whose runs read another content under one of those names is
-    refused (a folder written before this file has nothing to compare)."""
-    record = {"models": {label: _file_sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
+def _mixed(before: str, now: str, what: str, option: str) -> tuple[str, str]:
+    return (f"its runs were made with {before}, this campaign {now}: runs of different {what} cannot be mixed "
+            f"(resume with the same {option}, or choose another --out)", option)
+
+
+def _keep_settings(out: Path, plan: Plan, resuming: bool) -> None:
+    """Record the campaign's settings beside its runs (module docstring: ``fis.json``,
+    ``perturb.json``, ``plant.json``, ``inputs.json``); a ``--resume`` whose settings differ from
+    those of the runs already made is refused, naming the option, or the files changed since."""
+    fis = {role: {"file": path, "sha256": _file_sha256(path)} for role, path in plan.fis}
+
+    def other_fis(before):
+        same = {role: item["sha256"] for role, item in before.items()} == {r: v["sha256"] for r, v in fis.items()}
+        return None if same else _mixed(_describe(before), f"gives {_describe(fis)}", "rule bases", "--fis")
+    _keep(out, "fis.json", fis, resuming, stored.read_replacements, {}, other_fis)
+    perturb = dict(plan.perturb)
+    _keep(out, "perturb.json", perturb, resuming, stored.read_perturbations, {}, lambda before: None if before == perturb
+          else _mixed(f"--perturb {before or 'none'}", f"gives {perturb or 'none'}", "robots", "--perturb"))
+    _keep(out, "plant.json", {"plant": plan.plant}, resuming, stored.read_plant, DEFAULT_PLANT, lambda before: None
+          if before == plan.plant else _mixed(f"the {before} plant", f"asks for {plan.plant}", "plants", "--plant"))
+    inputs = {"models": {label: _file_sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
               "worlds": {file: _file_sha256(file) for suite in plan.suites for file in suite.files}}
-    path = out / "inputs.json"
-    if resuming and path.exists():
-        before = stored.read_inputs(path)
-        changed = [name for part in ("models", "worlds") for name in sorted(before[part].keys() & record[part].keys())
-                   if before[part][name] != record[part][name]]
-        if changed:
-            raise InputError(f"changed since its runs were made: {', '.join(changed)}; runs of different files "
-                             "cannot be mixed (restore them, or choose another --out)", source=str(out),
-                             field="--resume")
-    write_text_atomic(path, json.dumps(record, indent=1) + "\n")
 
-
-def _check_perturbations(out: Path, perturb: tuple, resuming: bool) -> None:
-    """Record the imperfections (``--perturb``) in ``perturb.json``; a campaign whose runs were
-    made with others is refused."""
-    record = {name: value for name, value in perturb}
-    path = out / "perturb.json"
-    if resuming:
-        before = stored.read_perturbations(path) if path.exists() else {}
-        if before != record:
-            raise InputError(f"its runs were made with --perturb {before or 'none'}, this campaign gives "
-                             f"{record or 'none'}: runs of different robots cannot be mixed (resume with the same "
-                             "--perturb, or choose another --out)", source=str(out), field="--perturb")
-    write_text_atomic(path, json.dumps(record, indent=1) + "\n")
-
-
-def _check_plant(out: Path, plant: str, resuming: bool) -> None:
-    """Record the campaign's plant in ``plant.json``; runs made by another plant are not mixed."""
-    path = out / "plant.json"
-    if resuming:
-        before = stored.read_plant(path) if path.exists() else DEFAULT_PLANT
-        if before != plant:
-            raise InputError(f"its runs were made with the {before} plant, this campaign asks for {plant}: runs of "
-                             "different plants cannot be mixed (resume with the same --plant, or choose another --out)",
-                             source=str(out), field="--plant")
-    write_text_atomic(path, json.dumps({"plant": plant}) + "\n")
+    def changed(before):  # a folder written before inputs.json has nothing to compare
+        names = [name for part in ("models", "worlds") for name in sorted(before[part].keys() & inputs[part].keys())
+                 if before[part][name] != inputs[part][name]] if before else []
+        return (f"changed since its runs were made: {', '.join(names)}; runs of different files cannot be mixed "
+                "(restore them, or choose another --out)", "--resume") if names else None
+    _keep(out, "inputs.json", inputs, resuming, stored.read_inputs, None, changed)
 
 
 def check_tasks(plan: Plan) -> None:
@@ -245,10 +230,7 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
     if previous and not resume:
         raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
                          "another --out", source=str(out), field="--out")
-    _check_replacements(out, plan.fis, bool(previous))
-    _check_perturbations(out, plan.perturb, bool(previous))
-    _check_plant(out, plan.plant, bool(previous))
-    _check_inputs(out, plan, bool(previous))
+    _keep_settings(out, plan, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))
