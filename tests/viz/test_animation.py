@@ -39,3 +39,29 @@ def test_short_episode_keeps_every_step(tmp_path):
     scenario = load_scenario("fig-IV-15a")
     trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0, max_time=0.5)
     assert animate_episode(trace, scenario, tmp_path / "s.gif", rays=False) == len(trace.pose)
+
+
+def test_the_legend_of_long_behaviour_names_fits_the_frame():
+    """The GIF's legend stays inside the figure and off the axes' labels, however long the
+    behaviours' meanings (a yielding navigator's overflowed both sides of a 400-pixel frame)."""
+    from dataclasses import replace
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from fuzzynav.viz.animation import behaviour_legend
+
+    scenario = load_scenario("fig-IV-15a")
+    trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0, max_time=1.0)
+    labels = ["YIELD", "CAR-BACK", "CAR-FWD", "GAP+VRB"] * len(trace.behaviour)
+    trace = replace(trace, behaviour=np.array(labels[:len(trace.behaviour)]))
+    figure = Figure(figsize=(5, 5), dpi=80, layout="constrained")
+    FigureCanvasAgg(figure)
+    ax = figure.add_subplot(111)
+    ax.set_xlabel("x (m)")
+    behaviour_legend(figure, trace)
+    figure.canvas.draw()
+    renderer = figure.canvas.get_renderer()
+    legend, frame = figure.legends[0].get_window_extent(renderer), figure.bbox
+    assert frame.x0 <= legend.x0 and legend.x1 <= frame.x1 and frame.y0 <= legend.y0
+    assert legend.y1 <= ax.xaxis.label.get_window_extent(renderer).y0  # below the axis label

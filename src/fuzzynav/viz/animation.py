@@ -12,6 +12,7 @@ the time and the active behaviour, and the last one, held for :data:`HOLD_S`, th
 
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -38,6 +39,7 @@ MIN_FPS, MAX_FPS = 0.1, 100.0  # frames per second (``run --fps``; GIF frame tim
 MAX_PIXELS = 100 * MAX_SIZE**2  # pixels of all the frames together: 100 frames of the largest size, 1.6 GB
 MAX_BEAMS = 60  # beams drawn per frame at most (a lidar's 271 are thinned evenly)
 BODY_COLOUR = "#ffd54f"
+LEGEND_WIDTH = 42  # characters of a legend line (two columns fit the figure's 5 inches at 6.5 pt)
 
 
 def short_meaning(label: str) -> str:
@@ -45,13 +47,16 @@ def short_meaning(label: str) -> str:
     return behaviour_style(label)[1].split(" (")[0].split(",")[0]
 
 
-def behaviour_legend(ax, trace: Trace) -> None:
-    """A legend, below the axes, of the behaviours the episode used, the robot and its beams."""
+def behaviour_legend(figure, trace: Trace) -> None:
+    """A legend, below the axes and within the figure's width, of the behaviours the episode used,
+    the robot and its beams: two columns, a long text wrapped (the figure's constrained layout
+    leaves room for it)."""
     labels = sorted(dict.fromkeys(str(b) for b in trace.behaviour), key=legend_order)
     handles = [Line2D([], [], color=behaviour_style(label)[0], linewidth=2.5) for label in labels]
     handles += [patches.Patch(facecolor=BODY_COLOUR, edgecolor="k"), Line2D([], [], color=RAY_COLOUR, linewidth=1)]
-    ax.legend(handles, [short_meaning(label) for label in labels] + ["robot footprint, heading", "sensed beams"],
-              loc="upper center", bbox_to_anchor=(0.5, -0.07), ncols=2, fontsize=6.5, frameon=False)
+    texts = [short_meaning(label) for label in labels] + ["robot footprint, heading", "sensed beams"]
+    figure.legend(handles, [textwrap.fill(text, LEGEND_WIDTH) for text in texts], loc="outside lower center",
+                  ncols=2, fontsize=6.5, frameon=False)
 
 
 def gif_file(path, field: str = "path") -> Path:
@@ -90,12 +95,12 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     rays = flag(rays, "rays")
     path, fps, max_frames, size = check_options(trace, path, fps, max_frames, size)
     dpi = size / 5
-    figure = Figure(figsize=(5, 5), dpi=dpi, layout="tight")
+    figure = Figure(figsize=(5, 5), dpi=dpi, layout="constrained")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot(111)
     draw_world(ax, scenario, trace, moving_obstacles=False)
     obstacles = MovingArtists(ax, scenario, trace)  # moving obstacles and their tracks, frame by frame
-    behaviour_legend(ax, trace)
+    behaviour_legend(figure, trace)
     every = max(1, -(-len(trace.sensor_angles) // MAX_BEAMS))
     frames = np.unique(np.linspace(0, len(trace.pose) - 1, min(max_frames, len(trace.pose))).round().astype(int))
     trail = LineCollection([], linewidths=1.8, antialiaseds=False)  # coloured by behaviour, as in the static plots
