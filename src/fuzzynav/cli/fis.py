@@ -305,7 +305,7 @@ def _export_c(args) -> int:
     header, code = to_c(system, name=args.name or source.stem, fixed=args.fixed, header_file=header_path.name)
     for path, text in ((header_path, header), (source, code)):
         write_text_atomic(path, text)
-    print(f"{source} {header_path}")
+    print(f"wrote {source} and {header_path}")
     return 0
 
 
@@ -324,7 +324,7 @@ def _plot(args) -> int:
     else:
         fig = plot_system(system)
     savefig_atomic(fig, args.output, dpi=120)
-    print(args.output)
+    print(f"wrote {args.output}")
     return 0
 
 
@@ -341,7 +341,8 @@ def register(subparsers) -> None:
                                    description=__doc__.split("\n\n")[0],
                                    **arguments.with_example("fuzzynav fis show goal-seeking\nfuzzynav fis eval --help"))
     sub = parser.add_subparsers(dest="fis_command", metavar="ACTION", required=True)
-    target = "built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE or .json/.yaml/.fll/.fis file"
+    target = ("built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE, a .json/.yaml/.fll/.fis file, or a model "
+              "file of `fuzzynav train` holding a rule base (.json/.npz)")
 
     show = arguments.command(sub, "show", _show, help="variables, terms and rule table", example="""
 fuzzynav fis show goal-seeking               # Table IV.1 as a rule grid
@@ -359,11 +360,13 @@ fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
     ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
 
     conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML",
+                            description="Write SYSTEM in another format: fuzzylite's FLL, MATLAB's .fis, JSON or "
+                                        "YAML (to stdout, or -o FILE).",
                             example="""
 fuzzynav fis convert tracking --to fll -o tracking.fll
 fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml""")
     conv.add_argument("system", help=target)
-    conv.add_argument("--to", choices=FORMATS, required=True)
+    conv.add_argument("--to", choices=FORMATS, required=True, help="the format to write")
     conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
 
     export = arguments.command(sub, "export-c", _export_c,
