@@ -191,3 +191,14 @@ def test_no_controller_is_made_before_the_compile_banner(monkeypatch, tmp_path):
     events.clear()
     assert main(["warmup", "--controllers", "goal-seeking"]) == 0
     assert events[0] == "announce" and "make" in events
+
+
+def test_a_thesis_figure_run_without_a_controller_says_which_it_names(capsys):
+    """``run fig-IV-12a`` runs the default navigator, not the figure's: it says so and names the
+    figure's own controllers (a newcomer expected Table IV.1's goal seeker)."""
+    assert main(["run", "fig-IV-12a", "--max-time", "0.2"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("fig-IV-12a / fuzzy-5b:")
+    assert "note: fig-IV-12a names its own controllers (goal-seeking" in err and "--controller NAME" in err
+    assert main(["run", "fig-IV-12a", "--controller", "goal-seeking", "--max-time", "0.2"]) == 0
+    assert "note:" not in capsys.readouterr().err

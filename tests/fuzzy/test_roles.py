@@ -50,6 +50,15 @@ def test_edited_cell_changes_the_trajectory(edited_gsb, capsys):
     cli = json.loads(capsys.readouterr().out)
     assert cli["path_length_m"] == pytest.approx(metrics(edited, scenario)["path_length_m"], rel=1e-12)
     assert cli["path_length_m"] != pytest.approx(metrics(original, scenario)["path_length_m"], rel=1e-6)
+    assert cli["fis"] == {"gsb": str(edited_gsb.resolve())}  # the numbers say which rule base made them
+
+
+def test_evaluate_reports_the_replaced_rule_base(edited_gsb, capsys):
+    argv = ["evaluate", "--controller", "goal-seeking", "--worlds", "mixed", "--n", "1", "--fis", f"gsb={edited_gsb}"]
+    assert main([*argv, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["fis"] == {"gsb": str(edited_gsb.resolve())}
+    assert main(argv) == 0
+    assert f"(--fis gsb={edited_gsb.resolve()})" in capsys.readouterr().out.splitlines()[0]
 
 
 def test_mismatching_replacement_exits_2_naming_the_variable(edited_gsb, tmp_path, capsys):

@@ -17,6 +17,7 @@ same outputs; otherwise an :class:`InputError` names the file, the variable and 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
+from pathlib import Path
 
 from fuzzynav.catalog.controllers import CONTROLLERS, make_controller
 from fuzzynav.errors import InputError
@@ -96,6 +97,12 @@ def parse_option(option: str) -> tuple[str, str]:
     if not sep or not role or not path:
         raise InputError(f"expected ROLE=FILE, got {option!r}", field="--fis")
     return role, path
+
+
+def replaced_files(options: list[str] | None) -> dict[str, str]:
+    """``{role: absolute file}`` of the ``--fis ROLE=FILE`` options, as ``run`` and ``evaluate``
+    report them beside their numbers (``bench`` keeps them in ``fis.json``)."""
+    return {role: str(Path(path).resolve()) for role, path in map(parse_option, options or [])}
 
 
 def systems_from_options(controller: str, options: list[str] | None) -> dict:

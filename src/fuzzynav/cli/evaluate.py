@@ -18,7 +18,7 @@ import sys
 
 from fuzzynav import progress as progress_bars, threads, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
-from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+from fuzzynav.catalog.roles import make_with_systems, replaced_files, systems_from_options
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, SENSORS_HELP
 from fuzzynav.errors import InputError
@@ -86,10 +86,13 @@ def run(args) -> int:
         result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
                           model=args.model, systems=systems, save_failures=args.save_failures,
                           sensors=args.sensors, plant=args.plant, workers=args.workers or threads.cores())
+    if args.fis:
+        result["fis"] = replaced_files(args.fis)
     if args.json:
         print(json.dumps(result))
         return 0
-    source = f" (model {result['model']})" if result["model"] else ""
+    source = f" (model {result['model']})" if result["model"] else "".join(
+        f" (--fis {role}={path})" for role, path in result.get("fis", {}).items())
     print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} worlds (seed {result['seed']}, "
           f"{result['plant']} plant)")
     for key in ("success_rate", "collision_rate", "timeout_rate"):

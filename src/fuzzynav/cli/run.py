@@ -2,9 +2,10 @@
 
 SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Without ``--controller``
 or ``--model`` it runs :func:`default_controller`: the default navigator ``fuzzy-5b`` on a goal,
-else the first controller the scenario lists in its ``controllers`` key. Prints a one-line
-summary, or with ``--json`` exactly one JSON object with the metrics of
-:func:`fuzzynav.sim.metrics.metrics`. Exit status 0 whenever the episode ran (reached, collided
+else the first controller the scenario lists in its ``controllers`` key (a goal scenario that
+lists its own gets a note naming them). Prints a one-line summary, or with ``--json`` exactly one
+JSON object with the metrics of :func:`fuzzynav.sim.metrics.metrics` (and ``fis``: {role: file}
+when ``--fis`` replaced a rule base). Exit status 0 whenever the episode ran (reached, collided
 or timed out), 2 for bad input (message on stderr).
 """
 
@@ -78,7 +79,7 @@ fuzzynav run path-n --model anfis.json --json""")
 
 
 def run(args) -> int:
-    from fuzzynav.catalog.roles import make_with_systems, systems_from_options
+    from fuzzynav.catalog.roles import make_with_systems, replaced_files, systems_from_options
     from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.sim.plants import check_plant
@@ -100,6 +101,9 @@ def run(args) -> int:
     scenario = open_scenario(args.scenario)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario, args.scenario)
+        if scenario.task == "goal" and scenario.controllers:
+            print(f"note: {scenario.name} names its own controllers ({', '.join(scenario.controllers)}); this runs "
+                  f"the default {args.controller}: --controller NAME runs one of them", file=sys.stderr)
     if args.model:
         from fuzzynav.catalog.tasks import load_controller
 
@@ -109,7 +113,7 @@ def run(args) -> int:
         controller = make_with_systems(args.controller, systems_from_options(args.controller, args.fis))
     trace = run_episode(scenario, controller, seed=args.seed, max_time=args.max_time,
                         sensors=None if args.sensors is None else named_ring(args.sensors), plant=args.plant)
-    numbers = metrics(trace, scenario)
+    numbers = metrics(trace, scenario) | ({"fis": replaced_files(args.fis)} if args.fis else {})
     if args.plot:
         from fuzzynav.viz.trajectories import plot_episode
 
@@ -125,5 +129,6 @@ def run(args) -> int:
     else:
         print(f"{numbers['scenario']} / {numbers['controller']}: {numbers['outcome']} after "
               f"{numbers['time_s']:.1f} s, path {numbers['path_length_m']:.2f} m, "
-              f"min clearance {numbers['min_clearance_m']:.2f} m")
+              f"min clearance {numbers['min_clearance_m']:.2f} m"
+              + "".join(f", --fis {role}={path}" for role, path in numbers.get("fis", {}).items()))
     return 0
