@@ -68,6 +68,13 @@ def test_metrics_table_carries_each_tasks_own_columns():
     assert header.endswith("| mean_cross_track_m | max_cross_track_m | waypoints_reached |")
     assert goal.endswith("|  |  |  |") and path.endswith("| 0.012 | 0.200 | 3 |")
 
+    # two controllers that drive alike on every scenario both ran get a line saying so
+    twin = [dict(row, controller="d") for row in rows]
+    assert markdown_table(rows + twin).splitlines()[-1] == (
+        "c and d give the same numbers, to the digits shown, on all 2 scenarios both ran: they drive alike there.")
+    twin[0]["time_s"] = 1.5
+    assert "same numbers" not in markdown_table(rows + twin)
+
 
 def test_run_help_lists_every_controller(capsys):
     with pytest.raises(SystemExit):

@@ -46,7 +46,9 @@ def test_resume_without_a_checkpoint_says_it_trained_from_the_start(tmp_path, ca
     assert main(["train", "q-goal", "--episodes", "5", "--quiet", "--out", str(out), "--resume"]) == 0
     assert "--resume: no checkpoint at" in capsys.readouterr().err
     assert main(["train", "q-goal", "--episodes", "10", "--quiet", "--out", str(out), "--resume"]) == 0
-    assert "no checkpoint" not in capsys.readouterr().err  # the checkpoint of the first run was there
+    err = capsys.readouterr().err  # the checkpoint of the first run was there, and the run says so
+    assert "no checkpoint" not in err
+    assert err.strip() == f"--resume: the steering phase goes on from {out}.steering.checkpoint.json, 5 episodes done"
 
 
 def test_resume_of_a_one_pass_task_is_refused_without_promising_a_fresh_start(tmp_path, capsys):

@@ -75,9 +75,13 @@ def test_index_puts_each_claim_beside_its_figure_and_works_offline(tmp_path, cap
     assert corner == {"name": "sharp corner (Fig VI.28)", "value": "collision", "target": "collision", "pass": True,
                       "source": "thesis"}
     # a later run adds its section to the same page, in the thesis' order
+    capsys.readouterr()
     assert main(["reproduce", "fig-IV-13", "--quick", "--out", str(tmp_path)]) == 0
     assert read_page(tmp_path)[0].sections == ["fig-IV-13", "fig-V-7", "fig-VI-28"]
-    assert "report:" in capsys.readouterr().out
+    out, err = capsys.readouterr()
+    assert "report:" in out
+    # before the first result, which may take minutes, a line says what runs (no bar when piped)
+    assert err.splitlines()[0] == f"reproducing 1 experiment into {tmp_path} (1 worker); a line as each one ends"
 
 
 def test_a_claim_that_does_not_hold_is_reported_as_such():

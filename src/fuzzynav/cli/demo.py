@@ -1,11 +1,11 @@
-"""``fuzzynav demo --out DIR`` — the main job: every built-in thesis scenario with its controllers.
+"""``fuzzynav demo --out OUT`` — the main job: every built-in thesis scenario with its controllers.
 
 Each built-in scenario lists in its ``controllers`` key the controllers to run on it: the thesis'
 own (the trackers on the chapter V paths…) or, on the chapter IV obstacle worlds, this package's
 variants of them (``fuzzy-2b``, ``fuzzy-5b-rays``).
 The demo first compiles the kernels its controllers use (``fuzzynav warmup``; a progress
 bar on the first run), then runs every pair in ``--workers`` processes (default: one per core; the
-results do not depend on it), prints a progress line per run in order, and writes into DIR one trajectory /
+results do not depend on it), prints a progress line per run in order, and writes into OUT one trajectory /
 command plot per run (``<scenario>--<controller>.png``) and the metrics table as
 ``metrics.md`` (Markdown) and ``metrics.json``. ``--scenario`` takes built-in names or your own
 scenario files, ``--controllers a,b`` the controllers to run on them (instead of their own list; each
@@ -44,7 +44,7 @@ def register(subparsers) -> None:
                                example="""
 fuzzynav demo --out fuzzynav-out
 fuzzynav demo --scenario fig-IV-23 --scenario my-world.yaml --controllers fuzzy-5b,dwa --out my-demo/""")
-    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out"), help="output folder")
+    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out"), help="output folder (default: fuzzynav-out)")
     parser.add_argument("--scenario", action="append", metavar="NAME|FILE",
                         help="only this built-in scenario or scenario file (repeatable)")
     parser.add_argument("--controllers", metavar="A,B", type=arguments.names,
@@ -106,7 +106,25 @@ def markdown_table(rows: list[dict]) -> str:
     columns = COLUMNS + tuple(key for task in tasks for key in TASK_COLUMNS.get(task, ()))
     lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     lines += ["| " + " | ".join(cell(row.get(key)) for key in columns) + " |" for row in rows]
-    return "\n".join(lines) + "\n\n" + LEGEND
+    shown = {(row["controller"], row["scenario"]): tuple(cell(row.get(key)) for key in columns[2:]) for row in rows}
+    return "\n".join(lines) + "\n\n" + LEGEND + "".join(
+        f"\n{a} and {b} give the same numbers, to the digits shown, on all {n} scenarios both ran: they drive "
+        "alike there.\n" for a, b, n in _alike(shown))
+
+
+def _alike(shown: dict) -> list[tuple[str, str, int]]:
+    """(a, b, n): controllers whose rows read the same on the n > 1 scenarios both ran (``shown``:
+    the printed cells by (controller, scenario)), as the Markdown table prints them."""
+    runs: dict[str, dict] = {}
+    for (controller, scenario), cells in shown.items():
+        runs.setdefault(controller, {})[scenario] = cells
+    pairs = []
+    for i, a in enumerate(runs):
+        for b in list(runs)[i + 1:]:
+            common = runs[a].keys() & runs[b].keys()
+            if len(common) > 1 and all(runs[a][s] == runs[b][s] for s in common):
+                pairs.append((a, b, len(common)))
+    return pairs
 
 
 def run_one(item: tuple[str, str, Path | None]) -> tuple[dict, str]:

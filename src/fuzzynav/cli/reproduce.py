@@ -1,12 +1,12 @@
-"""``fuzzynav reproduce ID…|all --out DIR [--quick] [--fis ROLE=FILE]`` — reproduce the thesis'
+"""``fuzzynav reproduce ID…|all --out OUT [--quick] [--fis ROLE=FILE]`` — reproduce the thesis'
 figures and tables, optionally with a rule base replaced (:mod:`fuzzynav.experiments.rule_bases`).
 
-Reproduce thesis figures/tables: DIR/<ID>/ holds the PNG figures and <ID>.json numbers,
-DIR/index.html the thesis' claim beside our figure for each.
+Reproduce thesis figures/tables: OUT/<ID>/ holds the PNG figures and <ID>.json numbers,
+OUT/index.html the thesis' claim beside our figure for each.
 
-Each experiment writes into ``DIR/<id>/`` (PNG figures and ``<id>.json``, the numbers it
-measured, and ``claim.json``, the claim's checks and verdict); ``DIR/index.html`` puts the thesis'
-claim beside our figure and numbers for every experiment in DIR, with its checks, its verdict
+Each experiment writes into ``OUT/<id>/`` (PNG figures and ``<id>.json``, the numbers it
+measured, and ``claim.json``, the claim's checks and verdict); ``OUT/index.html`` puts the thesis'
+claim beside our figure and numbers for every experiment in OUT, with its checks, its verdict
 (reproduced, partly, not reproduced) and the run time
 (:mod:`fuzzynav.experiments.report`). The experiments are shared among ``--workers`` processes
 (default: one per core; each experiment's numbers do not depend on it, its run time does).
@@ -15,6 +15,7 @@ claim beside our figure and numbers for every experiment in DIR, with its checks
 from __future__ import annotations
 
 import contextlib
+import sys
 import time
 from pathlib import Path
 
@@ -34,7 +35,8 @@ def register(subparsers) -> None:
                                description=__doc__.split("\n\n")[1], example=EXAMPLES)
     parser.add_argument("ids", nargs="*", metavar="ID", help="experiment ids, or 'all'")
     parser.add_argument("--list", action="store_true", help="list the experiment ids")
-    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out/reproduce"), help="output folder")
+    parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out/reproduce"),
+                        help="output folder (default: fuzzynav-out/reproduce)")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--quiet", action="store_true", help="no progress bars")
@@ -101,6 +103,9 @@ def run(args) -> int:
         earlier = {key: report.recorded_seconds(args.out, key, quick=args.quick) for key in ids}
         ids = sorted(ids, key=lambda key: -(earlier[key] or float("inf")))
     items = [(key, report.experiment_dir(args.out, key), args.quick, args.seed) for key in ids]
+    if not args.quiet:  # a line before the first result, which may take minutes (no bar when piped)
+        print(f"reproducing {len(ids)} experiment{'s' * (len(ids) > 1)} into {args.out} ({workers} worker"
+              f"{'s' * (workers > 1)}); a line as each one ends", file=sys.stderr)
     with progress.quiet(args.quiet), rule_bases.replaced(systems):
         bar = progress.bar(total=len(items), desc="reproduce", unit="figure")
 

@@ -75,7 +75,8 @@ fuzzynav run path-n --model anfis.json --json""")
     parser.add_argument("--animate", metavar="GIF", type=arguments.gif_path, help="write an animated GIF of the episode")
     parser.add_argument("--size", type=int, default=400, metavar="PX",
                         help="width and height of the --animate GIF in pixels (default 400)")
-    parser.add_argument("--fps", type=float, default=10.0, help="frames per second of the --animate GIF (default 10)")
+    parser.add_argument("--fps", type=float, default=10.0, help="frames per second of the --animate GIF (default 10); the GIF samples at most 100 "
+                             "steps, so an episode longer than 100 / FPS seconds plays faster than real time")
 
 
 def run(args) -> int:

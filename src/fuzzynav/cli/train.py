@@ -17,7 +17,7 @@ from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path
+from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path, checkpoint_progress
 from fuzzynav.storage import document_format
 
 PRIORS = ("none", "thesis")
@@ -91,9 +91,8 @@ def run(args) -> int:
         prior=args.prior,
         progress=progress.enabled() and not (args.quiet or args.json),
     )
-    first_checkpoint = checkpoint_path(out, "steering")  # every resumable task's first phase
-    if args.resume and args.task in PARALLEL_TASKS and not first_checkpoint.exists():  # before hours of training
-        print(f"--resume: no checkpoint at {first_checkpoint}: training from the start", file=sys.stderr)
+    if args.resume and args.task in PARALLEL_TASKS:  # said before hours of training
+        _say_where_it_resumes(out)
     result = train(request)
     if args.json:
         print(json.dumps(result, default=str))
@@ -104,3 +103,15 @@ def run(args) -> int:
         if args.curve is not None:
             print(f"learning curve: {args.curve}")
     return 0
+
+
+def _say_where_it_resumes(out: Path) -> None:
+    """``--resume``: the episodes each phase's checkpoint holds (a resumed run prints the same
+    report as a fresh one), or that there is none to resume."""
+    found = [(phase, path) for phase in ("steering", "speed") if (path := checkpoint_path(out, phase)).exists()]
+    for phase, path in found:
+        print(f"--resume: the {phase} phase goes on from {path}, {checkpoint_progress(path, True)[1]} episodes "
+              "done", file=sys.stderr)
+    if not found:
+        print(f"--resume: no checkpoint at {checkpoint_path(out, 'steering')}: training from the start",
+              file=sys.stderr)
