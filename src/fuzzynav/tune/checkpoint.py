@@ -9,7 +9,6 @@ import hashlib
 import json
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -17,16 +16,15 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.tune.fitness import INVALID_COST, OBJECTIVES, Fitness
 
-if TYPE_CHECKING:
-    from fuzzynav.tune.session import TuneRequest
 
-
-def path_for(request: TuneRequest) -> Path | None:
-    """``OUT.tune.npz`` beside ``--out`` (no checkpoint without it)."""
+def path_for(request) -> Path | None:
+    """``OUT.tune.npz`` beside ``--out`` of ``request`` (the run's
+    :class:`~fuzzynav.tune.session.TuneRequest`, here as everywhere in this module; no checkpoint
+    without ``--out``)."""
     return None if request.out is None else Path(f"{request.out}.tune.npz")
 
 
-def load(path: Path, request: TuneRequest, fitness: Fitness) -> list[tuple[np.ndarray, np.ndarray]]:
+def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.ndarray]]:
     """The stored generations [(population, values)], after checking the options match, the
     arrays fit together (a population has a column per searched parameter of ``fitness``'s space)
     and the objective values ``f`` are possible ones (:func:`_check_values`).
@@ -108,7 +106,7 @@ def _worlds_digest(fitness: Fitness) -> str:
     return digest.hexdigest()
 
 
-def save(path: Path, request: TuneRequest, generations, fitness: Fitness) -> None:
+def save(path: Path, request, generations, fitness: Fitness) -> None:
     from fuzzynav.storage import save_npz_atomic
 
     save_npz_atomic(path, options=np.array(json.dumps(request.replayed())), worlds=np.array(_worlds_digest(fitness)),
