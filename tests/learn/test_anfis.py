@@ -239,6 +239,30 @@ def test_bad_data_and_documents_name_the_field():
     assert info.value.field == "params.mf"
 
 
+@pytest.mark.parametrize("key, value, field, problem", [
+    ("best_epoch", "abc", "best_epoch", "must be an integer"), ("best_epoch", [1], "best_epoch", "must be an integer"),
+    ("n_features_in", 2.5, "n_features_in", "must be an integer"),  # was cut to 2
+    ("n_features_in", 2**70, "n_features_in", "must be an integer in [1, 1000]"),
+])
+def test_a_model_files_counts_are_integers(key, value, field, problem):
+    document = ANFIS(n_mfs=2, epochs=2).fit(np.linspace(0, 1, 20)[:, None], np.linspace(0, 1, 20)).to_dict()
+    with pytest.raises(InputError) as info:
+        ANFIS.from_dict({**document, key: value}, source="m.json")
+    assert info.value.field == field and problem in str(info.value)
+
+
+def test_a_grid_of_too_many_rules_is_refused_before_it_is_built():
+    """16 inputs of 5 MFs each, a 4 KB file: 5^16 rules, refused by count (it took gigabytes)."""
+    document = ANFIS(n_mfs=2, epochs=2).fit(np.linspace(0, 1, 20)[:, None], np.linspace(0, 1, 20)).to_dict()
+    document = {**document, "n_features_in": 16, "premises": [[[0.1, 0.1 * j - 0.2] for j in range(5)]] * 16}
+    document["params"] = {**document["params"], "mf": "gaussian", "n_mfs": 5}
+    with pytest.raises(InputError, match=r"make 152,587,890,625 rules, more than the 100,000"):
+        ANFIS.from_dict(document, source="m.json")
+    with pytest.raises(InputError, match="rules, more than") as info:
+        ANFIS(n_mfs=5).fit(np.zeros((4, 8)), np.zeros(4))
+    assert info.value.field == "n_mfs"
+
+
 def _document(premises, consequents, *, order, mf):
     """A fitted-model document written by hand: a known system without training."""
     n = len(premises)

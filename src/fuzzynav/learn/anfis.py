@@ -47,12 +47,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
 from fuzzynav.learn.anfis_hybrid import TINY, Grid, StepRule
-from fuzzynav.learn.estimator_checks import (
-    check_format,
-    check_premises,
-    check_x,
-    check_xy,
-)
+from fuzzynav.learn.estimator_checks import MAX_FEATURES, check_format, check_premises, check_x, check_xy, checked_rules
 
 _FORMAT = "fuzzynav-anfis"
 _VERSION = 1
@@ -151,11 +146,12 @@ class ANFIS(RegressorMixin, BaseEstimator):
         if validation.number(self.tol, field="tol") < 0 or validation.number(self.ridge, field="ridge") < 0:
             raise InputError("tol and ridge must be >= 0", field="tol" if self.tol < 0 else "ridge")
         if self.premises is not None:
-            return [len(p) for p in check_premises(self.premises, self.mf, n_features, "premises")]
+            return checked_rules([len(p) for p in check_premises(self.premises, self.mf, n_features, "premises")],
+                                 field="premises")
         counts = [self.n_mfs] * n_features if isinstance(self.n_mfs, numbers.Integral) else list(self.n_mfs)
         if len(counts) != n_features or not all(isinstance(c, numbers.Integral) and c >= 1 for c in counts):
             raise InputError(f"must be an integer >= 1 or {n_features} of them, got {self.n_mfs!r}", field="n_mfs")
-        return [int(c) for c in counts]
+        return checked_rules([int(c) for c in counts])
 
     # ------------------------------------------------------------------ training
     def fit(self, X, y):
@@ -331,9 +327,11 @@ class ANFIS(RegressorMixin, BaseEstimator):
     def from_dict(cls, document, source: str | None = None) -> ANFIS:
         """Rebuild a fitted estimator from :meth:`to_dict`'s document (InputError naming the field)."""
         check_format(document, _FORMAT, _VERSION, "an ANFIS", source)
+        if "n_features_in" not in document:
+            raise InputError("missing", source=source, field="n_features_in")
+        n = validation.integer(document["n_features_in"], source, "n_features_in", lo=1, hi=MAX_FEATURES)
         try:
             model = cls(**document["params"])
-            n = int(document["n_features_in"])
             counts = model._check_hyper_parameters(n)
         except (KeyError, TypeError) as error:
             raise InputError(f"bad or missing hyper-parameters ({error})", source=source, field="params") from None
@@ -342,6 +340,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
         if model.premises is not None:
             counts = [len(p) for p in model.premises]
         premises = check_premises(document.get("premises"), model.mf, n, "premises", source)
+        checked_rules([len(p) for p in premises], source, "premises")
         if [len(p) for p in premises] != counts:
             raise InputError(f"MF counts {[len(p) for p in premises]} do not match n_mfs {counts}",
                              source=source, field="premises")
@@ -356,7 +355,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
                 raise InputError(f"must be [lo, hi] with lo ≤ hi, got [{lo:g}, {hi:g}]", source=source, field=where)
         model.premises_ = premises
         model.n_features_in_ = n
-        model.best_epoch_ = int(document.get("best_epoch", -1))
+        model.best_epoch_ = validation.integer(document.get("best_epoch", -1), source, "best_epoch", lo=-1)
         history = document.get("history", {"train_rmse": [], "validation_rmse": None, "step_size": []})
         if not isinstance(history, dict) or not isinstance(history.get("train_rmse"), list):
             raise InputError("must be an object with a 'train_rmse' list", source=source, field="history")

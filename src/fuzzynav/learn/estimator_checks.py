@@ -6,6 +6,8 @@ document is read from one).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from fuzzynav.errors import InputError
@@ -43,6 +45,20 @@ def check_x(X, n_features: int | None) -> np.ndarray:
     if not np.isfinite(X).all():
         raise InputError("contains NaN or infinite values", field="X")
     return X
+
+
+MAX_FEATURES = 1_000  # inputs
+MAX_RULES = 100_000  # rules of the grid partition (the product of the inputs' MF counts): memory and time
+
+
+def checked_rules(counts: list[int], source: str | None = None, field: str = "n_mfs") -> list[int]:
+    """``counts`` (MFs per input) when their grid of rules holds at most :data:`MAX_RULES` rules,
+    checked before any array of that size is made; otherwise an :class:`InputError` on ``field``."""
+    rules = math.prod(counts)
+    if rules > MAX_RULES:
+        raise InputError(f"{' x '.join(map(str, counts))} membership functions make {rules:,} rules, more than the "
+                         f"{MAX_RULES:,} a grid-partition ANFIS may hold", source=source, field=field)
+    return counts
 
 
 def check_premises(premises, family: str, n_features: int, field: str, source: str | None = None) -> list[np.ndarray]:
