@@ -55,6 +55,8 @@ def test_a_static_scenario_has_no_moving_obstacles():
     ({"type": "waypoints", "points": [[1, 1], [2, 2]], "speed": 1, "loop": "yes"}, "obstacles[0].motion.loop",
      "true or false"),
     ({"type": "circle", "center": [5, 5], "speed": 1}, "obstacles[0].motion.center", "zero radius"),
+    ({"type": "sinusoid", "velocity": [0, 0], "amplitude": 3, "period": 4}, "obstacles[0].motion.velocity",
+     "must not be zero"),
     ([1, 2], "obstacles[0].motion.type", "missing"),
 ])
 def test_bad_motions_name_the_file_and_field(motion, field, problem):

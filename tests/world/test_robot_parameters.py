@@ -31,7 +31,8 @@ def test_robot_keys_default_to_the_default_robot_and_round_trip():
 
 @pytest.mark.parametrize("key, value, problem", [
     ("radius", 0.0, "must be > 0"), ("wheelbase", -1.0, "must be > 0"), ("max_speed", "fast", "must be a number"),
-    ("max_steering", 2.0, "below π/2"), ("max_reverse_speed", -0.5, "≥ 0"), ("radius", float("nan"), "finite"),
+    ("max_steering", 2.0, "below π/2"), ("max_reverse_speed", -0.5, ">= 0"), ("radius", float("nan"), "finite"),
+    ("max_speed", 1e-4, "at least 0.001 m/s"), ("max_steering", 1e-4, "at least 0.001 rad"),
 ])
 def test_bad_robot_values_name_the_field(key, value, problem):
     with pytest.raises(InputError) as error:
@@ -77,3 +78,48 @@ def test_the_simulator_uses_the_scenario_robot():
     sim = BatchSimulator(scenario, controller).run()
     assert controller.seen is scenario.robot and sim.trace(0).robot_radius == 0.5
     assert sim.trace(0).speed.min() == -0.25 and math.isclose(sim.pose[0, 0], 2.0 - 0.25, abs_tol=1e-9)
+
+
+WALL = {"wall": {"start": [6.0, 1.0], "end": [6.0, 3.0], "thickness": 0.01}}
+
+
+@pytest.mark.parametrize("robot, field, bound", [
+    ({"radius": 0.01}, "robot.radius", "below 0.2 m/s"),  # 4 m/s: 0.4 m a step past a 1 cm wall
+    ({"max_speed": 1000.0}, "robot.max_speed", "below 6 m/s"),
+    ({"radius": 0.1, "max_speed": 1.0, "max_reverse_speed": 3.0}, "robot.max_reverse_speed", "below 2 m/s"),
+])
+def test_a_robot_whose_step_could_jump_a_thin_obstacle_is_refused(robot, field, bound):
+    """Collisions are tested once a step: a robot moving its diameter or more in a step could pass
+    through a thin wall unseen (it did: "reached", no collision, straight through)."""
+    doc = {**_doc(**robot), "obstacles": [WALL]}
+    with pytest.raises(InputError) as error:
+        scenario_from_dict(doc, source="w.yaml")
+    text = str(error.value)
+    assert text.startswith("w.yaml: robot.") and "could pass through a thin obstacle" in text and bound in text
+    scenario_from_dict(_doc(**robot))  # with nothing to pass through, nothing is refused
+    scenario_from_dict({**_doc(radius=0.01, max_speed=0.19, max_reverse_speed=0.1), "obstacles": [WALL]})  # seen
+
+
+def test_a_moving_obstacle_that_could_pass_through_the_robot_is_refused():
+    mover = {"circle": {"center": [10.0, 1.05], "radius": 0.5}, "motion": {"type": "line", "velocity": [0.0, 100.0]}}
+    with pytest.raises(InputError, match=r"w\.yaml: obstacles\[0\]\.motion: at up to 100 m/s, .* below 2 m/s"):
+        scenario_from_dict({**_doc(), "obstacles": [mover]}, source="w.yaml")
+    wave = {"circle": {"center": [10.0, 5.0], "radius": 0.5},
+            "motion": {"type": "sinusoid", "velocity": [1.0, 0.0], "amplitude": 2.0, "period": 4.0}}
+    with pytest.raises(InputError, match=r"obstacles\[0\]\.motion: at up to 4\.14159"):  # 1 + 2π·2/4 m/s
+        scenario_from_dict({**_doc(), "obstacles": [wave]})
+    mover["motion"]["velocity"] = [0.0, 1.9]
+    assert scenario_from_dict({**_doc(), "obstacles": [mover]}).world.moving == (0,)
+
+
+def test_robot_params_given_to_the_simulator_are_checked_the_same_way():
+    from dataclasses import replace
+
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.sim.simulator import Simulator
+
+    scenario = scenario_from_dict({**_doc(), "obstacles": [WALL]})
+    with pytest.raises(InputError, match=r"robot_params\.max_speed: a step of 0\.1 s at the robot's top speed 50"):
+        Simulator(scenario, make_controller("goal-seeking"), robot_params=replace(scenario.robot, max_speed=50.0))
+    with pytest.raises(InputError, match=r"robot_params\.max_speed: a step of 1 s"):
+        Simulator(scenario, make_controller("goal-seeking"), robot_params=replace(scenario.robot, dt=1.0))

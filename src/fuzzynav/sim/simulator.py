@@ -64,7 +64,7 @@ from fuzzynav.sim.plants import DEFAULT_PLANT, make_plant
 from fuzzynav.sim.tasks import TaskState
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.columns import Column
-from fuzzynav.world.limits import MAX_TIME
+from fuzzynav.world.limits import MAX_TIME, steps_see_collisions
 from fuzzynav.world.scenario import Scenario
 
 # a compiled navigator decides inside the compiled step: its commands are checked in the state
@@ -95,6 +95,9 @@ class BatchSimulator:
         robot_params, sensors = arguments.check_params(robot_params), arguments.check_sensors(sensors)
         seed = arguments.check_seed(seed)
         self.params = robot_params if robot_params is not None else scenario.robot
+        if robot_params is not None:  # the scenario's own robot was checked with it
+            steps_see_collisions(scenario.world, robot_params, robot_params.radius, prefix="robot_params",
+                                 given=("max_speed", "max_reverse_speed"))
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
         self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
                                           field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)

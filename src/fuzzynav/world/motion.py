@@ -84,6 +84,16 @@ class TargetMotion:
         omega = 2.0 * np.pi / self.period
         return np.asarray(self.velocity) + self.amplitude * omega * np.cos(omega * tt) * self._normal()
 
+    def top_speed(self) -> float:
+        """The largest speed (m/s) of the motion: |v| of a line, |speed| of a circle, at most
+        |v| + 2πA / T of a sinusoid."""
+        if self.type == "static":
+            return 0.0
+        if self.type == "circle":
+            return abs(float(self.speed))
+        wave = 2.0 * np.pi * abs(self.amplitude) / self.period if self.type == "sinusoid" else 0.0
+        return float(np.hypot(*self.velocity)) + wave
+
 
 def read_motion(check, document, field: str, table: dict[str, dict[str, object]]) -> tuple[str, dict]:
     """``(type, values)`` of a scenario file's ``motion`` mapping at ``field``, its ``type`` a key
@@ -120,4 +130,7 @@ def read_motion(check, document, field: str, table: dict[str, dict[str, object]]
             values[key] = validation.number(value, check.source, where, lo=0.0, lo_open=True, hi=limits.MAX_TIME)
         else:
             values[key] = check.number(value, where, positive=key != "amplitude")
+    if kind == "sinusoid" and not np.any(values["velocity"]):
+        check.fail(f"{field}.velocity", "must not be zero: it sets the direction the sinusoid moves along and "
+                                        "across (with [0, 0] nothing moves)")
     return kind, values

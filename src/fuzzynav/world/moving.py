@@ -57,6 +57,10 @@ class ObstacleMotion:
             offset = fold(offset, lo, np.maximum(hi, lo))
         return offset
 
+    def top_speed(self) -> float:
+        """The largest speed (m/s) of the obstacle (a line reflected at the border keeps its own)."""
+        return abs(self.speed) if self.course is None else self.course.top_speed()
+
     def to_dict(self) -> dict:
         """The scenario-file form of the motion."""
         doc: dict = {"type": self.type}

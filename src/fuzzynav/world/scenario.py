@@ -67,6 +67,7 @@ PATH_SWITCHING = ("passed", "zone")  # waypoint switching rules, :mod:`fuzzynav.
 TOP_KEYS = ("name", "description", "world", "robot", "goal", "path", "path_tolerance", "path_switching", "speed",
             "target", "obstacles", "max_time", "controllers", "sensors")
 ROBOT_KEYS = ("radius", "wheelbase", "max_steering", "max_speed", "max_reverse_speed")  # TricycleParams fields
+ROBOT_UNITS = {"radius": "m", "wheelbase": "m", "max_steering": "rad", "max_speed": "m/s", "max_reverse_speed": "m/s"}
 
 
 @dataclass(frozen=True)
@@ -253,6 +254,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     robot_limits = _robot_params(check, robot)
     radius = robot_limits.radius if "radius" in robot else robot_radius
     _place(check, world, start[:2], "robot", "start", radius)
+    limits.steps_see_collisions(world, robot_limits, radius, source, given=robot)
 
     goal = path = target = None
     if "goal" in doc:
@@ -310,9 +312,11 @@ def _robot_params(check: Checks, robot: dict) -> TricycleParams:
     values = {}
     for key in ROBOT_KEYS:
         if key in robot:
-            values[key] = check.number(robot[key], f"robot.{key}", positive=key != "max_reverse_speed")
-    if values.get("max_reverse_speed", 0.0) < 0:
-        check.fail("robot.max_reverse_speed", f"must be ≥ 0, got {values['max_reverse_speed']:g}")
+            unit = ROBOT_UNITS[key]
+            values[key] = validation.number(robot[key], check.source, f"robot.{key}", hi=limits.MAX_LENGTH, lo=0.0,
+                                            lo_open=key != "max_reverse_speed")
+            if key != "max_reverse_speed" and values[key] < limits.MIN_LENGTH:
+                check.fail(f"robot.{key}", f"must be at least {limits.MIN_LENGTH:g} {unit}, got {values[key]!r}")
     if values.get("max_steering", 0.0) >= math.pi / 2:
         check.fail("robot.max_steering", f"must be below π/2 (90°), got {values['max_steering']:g}")
     return replace(DEFAULT_PARAMS, **values) if values else DEFAULT_PARAMS
