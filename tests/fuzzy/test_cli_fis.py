@@ -103,3 +103,19 @@ RuleBlock: rb
   activation: General
   rule: if x is lo then v is hi
 """
+
+
+def test_a_function_term_reading_an_unknown_name_is_refused_when_read(tmp_path, capsys):
+    """It was read, shown and converted, then failed with a traceback at the first evaluation."""
+    text = to_fll(get_system("goal-seeking"))
+    assert text.index("term: Z Constant 0.0") < text.index("OutputVariable: v")  # alpha's Z comes first
+    bad = tmp_path / "gs-fn.fll"
+    bad.write_text(text.replace("term: Z Constant 0.0", "term: Z Function foo", 1))
+    for command in (["show"], ["eval", "--input", "drg=5", "--input", "theta=0.3"]):
+        assert main(["fis", command[0], str(bad), *command[1:]]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.endswith("gs-fn.fll: alpha.Z: Function 'foo' reads foo, not a variable of this system "
+                            "(alpha, drg, theta, v; x is the term's own input)"), err
+    good = tmp_path / "gs-ok.fll"  # a name of the system is fine
+    good.write_text(text.replace("term: Z Constant 0.0", "term: Z Function 0 * drg", 1))
+    assert main(["fis", "eval", str(good), "--input", "drg=5", "--input", "theta=0.3"]) == 0

@@ -12,7 +12,8 @@ An engine read from ``.fll``, ``.fis``, JSON or YAML (or built in Python) must h
   count of at least 1, a threshold finite in [0, 1], a ``Threshold`` comparator one of
   ``< <= == != >= >``;
 - no ``Function`` term of an output reading that output itself (its value is what is being
-  computed).
+  computed), nor any term's reading a name that is not a variable of the system (it failed at
+  the first evaluation).
 """
 
 from __future__ import annotations
@@ -29,11 +30,17 @@ from fuzzynav.fuzzy.terms import Discrete, Scaled
 
 def check_values(inputs, outputs, blocks) -> None:
     """Refuse the values of the module docstring (InputError naming the field)."""
+    names = {var.name for var in [*inputs, *outputs]}
     for var in [*inputs, *outputs]:
         if not (math.isfinite(var.minimum) and math.isfinite(var.maximum)):
             raise InputError(f"range [{var.minimum}, {var.maximum}] must be finite", field=f"{var.name}.range")
         for label, term in var.terms.items():
             _check_term(term, f"{var.name}.{label}")
+            formula = term.term if isinstance(term, Scaled) else term
+            if isinstance(formula, Function) and formula.variables - names:
+                raise InputError(f"Function {formula.formula!r} reads {', '.join(sorted(formula.variables - names))}, "
+                                 f"not a variable of this system ({', '.join(sorted(names))}; x is the term's own "
+                                 "input)", field=f"{var.name}.{label}")
     for var in outputs:
         integral = var.defuzzifier is not None and var.defuzzifier.integral
         if integral and not var.minimum < var.maximum:
