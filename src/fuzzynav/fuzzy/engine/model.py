@@ -23,6 +23,7 @@ INTEGRAL = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "Large
 WEIGHTED = ("WeightedAverage", "WeightedSum")
 WEIGHTED_TYPES = ("Automatic", "TakagiSugeno", "Tsukamoto")
 DEFAULT_RESOLUTION = 1000  # fuzzylite's IntegralDefuzzifier.default_resolution
+GRIDS = ("midpoints", "linspace")  # an integral defuzzifier's samples: fuzzylite's, MATLAB's
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,9 @@ Neither clips inputs to their range (MATLAB warns and evaluates the value as it 
 variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's ``LockRange``,
 ``LockPrevious`` and ``Default`` of an output where they are set, and — where fuzzylite's reader
 would refuse a key (an input's ``LockRange``, a ``Default`` of NaN) — writes it in a comment,
-``% fuzzynav: LockRange=1``, which MATLAB and fuzzylite skip and this reader takes as the key. So a
+``% fuzzynav: LockRange=1``, which MATLAB and fuzzylite skip and this reader takes as the key; so
+are the samples of an integral defuzzifier other than MATLAB's (``% fuzzynav: Resolution=1000``,
+``% fuzzynav: Grid=midpoints`` in ``[System]``). So a
 system written as ``.fis`` reads back answering as before everywhere (outside the ranges too), and
 the file stays one the other two read. Errors raise :class:`InputError` naming the file, the line
 and the field.
@@ -42,6 +44,7 @@ from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.system import FuzzySystem
+from fuzzynav.validation import MAX_RESOLUTION
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
 ANNOTATION = re.compile(r"\s*%\s*fuzzynav:\s*(\S.*)")  # "% fuzzynav: Key=value": a key in a comment
@@ -209,6 +212,15 @@ def _system_options(section: dict, lines: _Lines) -> dict:
             options[key], options["Type line"] = value, line
         elif key == "Name":
             options[key] = value
+        elif key == "Resolution":  # written in a comment (module docstring): the samples of an integral output
+            if not (value.isascii() and value.isdigit() and 2 <= int(value) <= MAX_RESOLUTION):
+                raise lines.error(f"must be a whole number of samples in [2, {MAX_RESOLUTION}], got {value!r}", line,
+                                  key)
+            options[key] = int(value)
+        elif key == "Grid":
+            if value not in model.GRIDS:
+                raise lines.error(f"must be one of {', '.join(model.GRIDS)}, got {value!r}", line, key)
+            options[key] = value
         elif key in _COUNTS:
             options[key] = (value, line)
         elif key != "Version":
@@ -255,7 +267,8 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
     kind = options.get("Type", "mamdani").lower()
     for var, default_stated in zip(outputs, stated):
         if defuzz in ("Centroid", "Bisector", "MeanOfMaximum", "LargestOfMaximum", "SmallestOfMaximum"):
-            points = {"resolution": MATLAB_POINTS, "grid": "linspace"} if matlab else {}
+            points = {"resolution": options.get("Resolution", MATLAB_POINTS),
+                      "grid": options.get("Grid", "linspace")} if matlab else {}
             var.defuzzifier = model.Defuzzifier(defuzz, **points)
             var.aggregation = options.get("AggMethod")
         elif defuzz is not None:
@@ -328,6 +341,8 @@ def to_fis(system: FuzzySystem | Engine) -> str:
              f"ImpMethod='{_inverse(_TNORMS, block.implication, 'implication') if block.implication else 'prod'}'",
              f"AggMethod='{_inverse(_SNORMS, outs[0].aggregation, 'aggregation') if outs[0].aggregation else 'sum'}'",
              f"DefuzzMethod='{_inverse(_DEFUZZ, d.kind, 'defuzzifier') if d else 'wtaver'}'"]
+    if integral and (d.resolution, d.grid) != (MATLAB_POINTS, "linspace"):  # else read back on MATLAB's 101 points
+        lines += [f"% fuzzynav: Resolution={d.resolution}", f"% fuzzynav: Grid={d.grid}"]
     for section, variables in (("Input", engine.inputs), ("Output", outs)):
         for i, v in enumerate(variables, start=1):
             lines += ["", f"[{section}{i}]", f"Name='{v.name}'", f"Range=[{number(v.minimum)} {number(v.maximum)}]",
