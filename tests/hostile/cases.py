@@ -461,6 +461,9 @@ CHECKPOINT = [
     Case("checkpoint-qualities-edited",
          python="trained_checkpoint(d, lambda doc: doc['learner']['q'][0][0].__setitem__(0, 5.0))",
          expect="digest: does not match"),
+    Case("checkpoint-batch-row-not-a-list-no-digest",  # a TypeError traceback at the resume
+         python="trained_checkpoint(d, lambda doc: (doc.pop('digest'), doc['curve']['success'].__setitem__(1, True)))",
+         expect="curve.success[1]: must be a list of the batch's episodes, got True"),
 ]
 
 SCENARIOS = [

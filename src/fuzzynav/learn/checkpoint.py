@@ -93,6 +93,9 @@ def load_checkpoint(path) -> dict:
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
     for key in _CURVE_FIELDS:
         for i, row in enumerate(curve[key]):
+            if not isinstance(row, list):  # a batch's record: one value per episode of the batch
+                raise InputError(f"must be a list of the batch's episodes, got {str(row)[:60]}", source=str(path),
+                                 field=f"curve.{key}[{i}]")
             try:
                 kind = np.asarray(row).dtype.kind
             except ValueError:  # ragged
@@ -111,7 +114,7 @@ def _check_itself(document: dict, source: str) -> None:
             raise InputError(f"holds {len(curve[key])} batches, but the checkpoint says {episode} were done: the "
                              "file was edited; train afresh without --resume", source=source, field=f"curve.{key}")
     for i, rows in enumerate(zip(*(curve[key] for key in _CURVE_FIELDS))):
-        if len({len(row) if isinstance(row, list) else 1 for row in rows}) != 1:
+        if len({len(row) for row in rows}) != 1:
             raise InputError("its records disagree on the number of episodes of this batch", source=source,
                              field=f"curve[{i}]")
 
@@ -122,6 +125,12 @@ def _check_digest(document: dict, source: str) -> None:
     if "digest" in document and document["digest"] != _digest(document):
         raise InputError("does not match the checkpoint's content: the file was edited or damaged; train afresh "
                          "without --resume", source=source, field="digest")
+
+
+def episodes_done(curve: dict) -> int:
+    """The single episodes of a learning ``curve`` (a checkpoint's, :func:`load_checkpoint`): its
+    batches' sizes added (earlier batches may differ in size)."""
+    return sum(len(row) for row in curve["success"])
 
 
 def check_same_run(document: dict, settings: dict, budget: int | None = None, source: str = "checkpoint") -> None:
@@ -139,7 +148,7 @@ def check_same_run(document: dict, settings: dict, budget: int | None = None, so
             raise InputError(f"the checkpoint was written by a run with {name} {saved[name]!r}, this run has "
                              f"{settings.get(name)!r}: resume with the same settings, or train afresh without --resume",
                              source=source, field=name)
-    done = sum(len(row) if isinstance(row, list) else 1 for row in document["curve"]["success"])
+    done = episodes_done(document["curve"])
     if budget is not None and done > budget:
         raise InputError(f"the checkpoint has already done {done} episodes of phase {saved.get('phase', '?')!r}, "
                          f"more than the {budget} this run asks for: resume with at least as many episodes, "
@@ -234,7 +243,7 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
         curve = document["curve"]
         start = resumed_from = int(document["episode"])
     start = start or 0
-    done = sum(len(row) for row in curve["success"])  # single episodes so far (earlier batches may differ in size)
+    done = episodes_done(curve)
     with progress_bars.quiet(not progress):
         bar = progress_bars.bar(total=done + max(int(episodes) - start, 0) * batch_size, initial=done,
                                 unit="episode", desc=desc)

@@ -37,7 +37,7 @@ from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
-from fuzzynav.learn.checkpoint import load_checkpoint, train_loop
+from fuzzynav.learn.checkpoint import episodes_done, load_checkpoint, train_loop
 from fuzzynav.learn.curves import episodes_to_converge
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
@@ -171,7 +171,7 @@ def checkpoint_progress(path: Path, resume: bool) -> tuple[int, int]:
     if not (resume and Path(path).exists()):
         return 0, 0
     document = load_checkpoint(path)
-    return int(document["episode"]), sum(len(row) for row in document["curve"]["success"])
+    return int(document["episode"]), episodes_done(document["curve"])
 
 
 def run_phase(phase: Phase, request, seed_offset: int) -> dict:
