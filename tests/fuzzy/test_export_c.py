@@ -123,6 +123,19 @@ def test_a_ramp_narrower_than_the_fixed_point_step_is_a_step_and_names_stay_in_c
         np.testing.assert_allclose(ours[:3], system.evaluate(X)[:3], atol=2e-3)
 
 
+def test_a_term_that_q16_would_shrink_to_a_point_is_refused():
+    """Table IV.1's theta scaled by 1e-6: each term's breakpoints are one value in Q16.16, every term
+    fired at 0 and the C answered v = 15.6 on a [0, 4] universe. Refused in fixed point; double is fine."""
+    system = get_system("goal-seeking")
+    theta = system.inputs[1]
+    tiny = {label: Triangular(*(p * 1e-6 for p in mf.params())) for label, mf in theta.terms.items()}
+    small = FuzzySystem([system.inputs[0], Variable("theta", (-3.2e-6, 3.2e-6), tiny)], system.outputs,
+                        [rule.text() for rule in system.rules], method=system.method)
+    to_c(small)
+    with pytest.raises(InputError, match=r"--fixed: theta\.NG: its breakpoints -1\.5e-06, -7\.5e-07 are one value"):
+        to_c(small, fixed="Q16.16")
+
+
 def test_a_narrow_ramp_far_from_the_input_does_not_overflow_q16(tmp_path):
     """A ramp a few fixed-point steps wide on a wide range: (x - a) / (b - a) is about 10^9 for an x
     far from it, past int32; the input is held to the ramp before the division."""

@@ -132,6 +132,19 @@ def _check(system: FuzzySystem) -> None:
         raise InputError(f"C export takes TS0, TS1 and Mamdani systems, got {system.method}", field="system")
 
 
+def _distinct_in_fixed_point(system: FuzzySystem) -> None:
+    """Refuse an input term whose distinct breakpoints Q16.16 rounds, all of them, to one value: the
+    term would shrink to a point or a step where it spans a width (theta's terms scaled by 1e-6
+    all fired at once at 0, and the C answered a speed of 15.6 where the universe ends at 4). One
+    ramp narrower than a step becomes a step (:meth:`_Writer.sloped`); the term keeps its extent."""
+    for v in system.inputs:
+        for label, mf in v.terms.items():
+            edges = sorted({e for e in mf._edges() if math.isfinite(e)}) if isinstance(mf, Trapezoidal) else []
+            if len(edges) > 1 and round(edges[0] * _SCALE) == round(edges[-1] * _SCALE):
+                raise InputError(f"its breakpoints {', '.join(map(repr, edges))} are one value in Q16.16 (steps of "
+                                 "1/65536): export in double, or scale the input", field=f"--fixed: {v.name}.{label}")
+
+
 def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,
          header_file: str | None = None) -> tuple[str, str]:
     """``(header, source)`` of the C99 evaluator of ``system`` (see module docstring); the functions
@@ -141,6 +154,8 @@ def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,
     if fixed is not None and fixed not in FIXED_FORMATS:
         raise InputError(f"fixed-point format must be one of {', '.join(FIXED_FORMATS)}, got {fixed!r}",
                          field="--fixed")
+    if fixed is not None:
+        _distinct_in_fixed_point(system)
     p = _identifier(name or system.name)
     P = p.upper()
     w = _Writer(fixed is not None, p)
