@@ -61,6 +61,21 @@ def test_existing_campaign_needs_resume(reference, tmp_path, capsys):
         assert (copy / name).read_bytes() == (reference / name).read_bytes(), name
 
 
+def test_a_folder_of_someone_elses_reports_is_not_overwritten(tmp_path, capsys):
+    """A folder holding an index.html, a summary.md (a user's, say) but no runs.jsonl is no campaign's:
+    the campaign used to overwrite them. Other files of a folder are never touched."""
+    out = tmp_path / "mine"
+    out.mkdir()
+    (out / "index.html").write_text("precious")
+    (out / "summary.md").write_text("notes")
+    assert _bench(out) == 2
+    assert "holds summary.md, index.html but no runs.jsonl" in capsys.readouterr().err
+    assert (out / "index.html").read_text() == "precious" and not (out / "runs.jsonl").exists()
+    (out / "index.html").unlink(), (out / "summary.md").unlink()
+    (out / "notes.txt").write_text("kept")
+    assert _bench(out) == 0 and (out / "notes.txt").read_text() == "kept"
+
+
 @pytest.mark.slow
 def test_killed_half_way_then_resumed_gives_the_same_files(reference, tmp_path):
     out = tmp_path / "killed"

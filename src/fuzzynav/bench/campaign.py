@@ -43,6 +43,8 @@ from fuzzynav.progress import bar as progress_bar, quiet as quiet_progress
 from fuzzynav.sim.plants import DEFAULT_PLANT
 from fuzzynav.storage import is_model_file, remove_temporaries_under, write_text_atomic
 
+# the tables and reports a campaign writes after runs.jsonl (module docstring, :mod:`.report`)
+WRITTEN = ("runs.csv", "summary.json", "summary.md", "index.html", "rates.png", "path_ratio.png")
 COLUMNS = ("suite", "world", "seed", "controller", "outcome", "time_s", "path_length_m", "shortest_path_m",
            "path_ratio", "min_clearance_m", "steering_effort_rad", "steering_variation_rad", "final_distance_m",
            "barn_score", "barn_score_challenge", "collision_by")
@@ -189,6 +191,17 @@ def _keep_settings(out: Path, plan: Plan, resuming: bool) -> None:
     _keep(out, "inputs.json", inputs, resuming, stored.read_inputs, None, changed)
 
 
+def _not_anothers(out: Path) -> None:
+    """Refuse a folder that holds files of the names a campaign writes but no ``runs.jsonl``: not a
+    campaign's folder, and the campaign would overwrite them (a user's ``index.html`` was lost)."""
+    if (out / "runs.jsonl").exists():
+        return
+    theirs = [name for name in WRITTEN if (out / name).exists()]
+    if theirs:
+        raise InputError(f"holds {', '.join(theirs)} but no runs.jsonl: it is not a campaign's folder, and a campaign "
+                         "would overwrite them; choose another --out", source=str(out), field="--out")
+
+
 def check_tasks(plan: Plan) -> None:
     """Refuse, before anything runs, a world whose task a controller of ``plan`` cannot do: a
     campaign runs goal tasks (every generated world is one), and a scenario file of a folder
@@ -224,6 +237,7 @@ def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = 
 
 def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, address: str | None,
          progress: bool) -> list[dict]:
+    _not_anothers(out)
     previous = read_runs(out, plan if resume else None)
     if resume:  # under the campaign's lock: a temporary file here is a killed run's (plots included)
         remove_temporaries_under(out)
