@@ -188,3 +188,23 @@ def test_fis_show_of_a_non_fuzzy_model_file_says_what_it_is(capsys, tmp_path):
     status, err = run_cli(capsys, "fis", "show", str(path))
     assert status == 2
     assert f"{path}: kind: a 'q-goal' model file, not a fuzzy system" in err
+
+
+@pytest.mark.parametrize("argv", [
+    ["run", "fig-IV-12a", "--max-time", "1_0"], ["run", "fig-IV-12a", "--seed", "٣"],
+    ["run", "fig-IV-12a", "--fps", "١٠"], ["train", "q-goal", "--episodes", "1_0"],
+    ["demo", "--controllers", ""], ["demo", "--controllers", ","], ["warmup", "--controllers", " , "],
+])
+def test_numbers_are_ascii_decimals_and_name_lists_are_not_empty(argv, capsys):
+    """Python's int and float read 1_0 and other scripts' digits: options took them silently; an
+    empty --controllers ran every default controller (55 demo runs)."""
+    with pytest.raises(SystemExit) as stop:  # argparse's usage error
+        main(argv)
+    assert stop.value.code == 2
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("fuzzynav ")
+
+
+def test_one_file_for_the_plot_and_the_animation_is_refused(tmp_path, capsys):
+    target = tmp_path / "x.gif"  # the plot was written, then the animation over it: "wrote x.gif" twice
+    assert main(["run", "fig-IV-12a", "--plot", str(target), "--animate", str(target)]) == 2
+    assert "is the --plot file too" in capsys.readouterr().err and not target.exists()

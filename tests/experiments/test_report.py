@@ -221,8 +221,10 @@ def test_reproduce_list_counts_the_experiments(capsys):
 
 
 def test_reproduce_without_ids_lists_them_and_says_nothing_ran(capsys, tmp_path):
-    assert main(["reproduce", "--out", str(tmp_path / "f")]) == 0
-    assert capsys.readouterr().out.splitlines()[-1].startswith("nothing run: name the ids to reproduce")
+    assert main(["reproduce", "--out", str(tmp_path / "f")]) == 2  # a usage error, after the list to choose from
+    out, err = capsys.readouterr()
+    assert out.splitlines()[-1] == f"{len(registry.available())} figures and tables"
+    assert err.startswith("nothing run: name the ids to reproduce")
     assert not (tmp_path / "f").exists()
 
 

@@ -7,6 +7,7 @@ A bad value is an argparse error: usage and message on stderr, exit status 2, no
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import re
 from collections.abc import Callable
@@ -55,18 +56,46 @@ def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], *, 
 
 
 def names(text: str) -> list[str]:
-    """``--controllers A,B``: the comma-separated names (empty items dropped)."""
-    return [name for name in text.split(",") if name]
+    """``--controllers A,B``: the comma-separated names (empty items dropped); none at all is a
+    usage error (it ran every default controller instead)."""
+    found = [name for name in text.split(",") if name.strip()]
+    if not found:
+        raise argparse.ArgumentTypeError(f"give at least one name, got {text!r}")
+    return found
+
+
+_DECIMAL = re.compile(r"\s*[+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf|infinity|nan)\s*", re.IGNORECASE | re.ASCII)
+_INTEGER = re.compile(r"\s*[+-]?\d+\s*", re.ASCII)
+
+
+def decimal(text: str) -> float:
+    """A number written in ASCII decimal (Python's ``float`` also reads ``1_000`` and other
+    scripts' digits, ``٣``); ValueError otherwise, or when a finite literal overflows to infinity.
+    The type of every option and value that is a number."""
+    if not isinstance(text, str) or not _DECIMAL.fullmatch(text):
+        raise ValueError(f"{text!r} is not a number")
+    value = float(text)
+    if math.isinf(value) and "inf" not in text.lower():
+        raise ValueError(f"{text.strip()} is too large for a float")
+    return value
+
+
+def whole(text: str) -> int:
+    """An integer in ASCII digits (``int`` also reads ``1_000`` and other scripts' digits), for an
+    option whose range its command checks; ValueError otherwise (argparse's usage error)."""
+    if not _INTEGER.fullmatch(text):
+        raise ValueError(f"{text!r} is not an integer")
+    return int(text)
 
 
 def _integer(text: str, lo: int, hi: int) -> int:
-    """``text`` as an integer in [lo, hi] (a 5,000-digit number is refused by its length, not parsed)."""
+    """``text`` as an integer in [lo, hi], ASCII digits only (a 5,000-digit number is refused by its
+    length, not parsed)."""
     if len(text.strip()) > 30:
         raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {len(text.strip())} characters")
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {text!r}") from None
+    if not _INTEGER.fullmatch(text):
+        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {text!r}")
+    value = int(text)
     if not lo <= value <= hi:
         raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {value}")
     return value

@@ -128,7 +128,7 @@ def _perturbations(options: list[str] | None) -> tuple[tuple[str, float], ...]:
         if name in pairs:
             raise InputError(f"{name} given twice", field="--perturb")
         try:
-            value = float(text)
+            value = arguments.decimal(text)
         except ValueError:
             raise InputError(f"the value of {name} must be a number, got {validation.shown(text)}",
                              field="--perturb") from None

@@ -22,7 +22,6 @@ import functools
 import io
 import json
 import math
-import re
 import sys
 from pathlib import Path
 
@@ -149,20 +148,6 @@ def _grid(system: FuzzySystem) -> str | None:
     return "\n".join(line.rstrip() for line in lines)
 
 
-_DECIMAL = re.compile(r"\s*[+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf|infinity|nan)\s*", re.IGNORECASE | re.ASCII)
-
-
-def _decimal(text: str) -> float:
-    """A number written in ASCII decimal (Python's ``float`` also reads ``1_000`` and other
-    scripts' digits); ValueError otherwise, or when a finite literal overflows to infinity."""
-    if not isinstance(text, str) or not _DECIMAL.fullmatch(text):
-        raise ValueError(f"{text!r} is not a number")
-    value = float(text)
-    if math.isinf(value) and "inf" not in text.lower():
-        raise ValueError(f"{text.strip()} is too large for a float")
-    return value
-
-
 def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
     values = {}
     for pair in pairs:
@@ -172,7 +157,7 @@ def _parse_inputs(system: FuzzySystem, pairs: list[str]) -> np.ndarray:
         if name in values:
             raise InputError(f"{name} is given twice", field=f"--input {pair}")
         try:
-            values[name] = _decimal(value)
+            values[name] = arguments.decimal(value)
         except ValueError as error:
             raise InputError(str(error), field=f"--input {pair}") from None
         if math.isnan(values[name]):
@@ -193,7 +178,7 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
     rows = []
     for line, row in table:
         try:
-            rows.append([_decimal(row[n]) for n in system.input_names])
+            rows.append([arguments.decimal(row[n]) for n in system.input_names])
         except (TypeError, ValueError) as error:
             raise InputError(f"{error} in {dict((n, row[n]) for n in system.input_names)}",
                              source=path, field=f"line {line}") from None

@@ -89,8 +89,10 @@ def run(args) -> int:
         for key, text in listing.items():
             print(f"{key:24s} {text}")
         print(f"{len(listing)} figures and tables")
-        if not args.list:
-            print("nothing run: name the ids to reproduce, or all (e.g. fuzzynav reproduce fig-IV-23 --out figures/)")
+        if not args.list:  # a usage error, after the list that helps to correct it
+            print("nothing run: name the ids to reproduce, or all (e.g. fuzzynav reproduce fig-IV-23 --out figures/)",
+                  file=sys.stderr)
+            return 2
         return 0
     ids = list(registry.available()) if args.ids == ["all"] else list(dict.fromkeys(args.ids))  # each id once
     for key in ids:  # validate every id first

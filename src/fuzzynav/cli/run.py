@@ -14,6 +14,7 @@ from __future__ import annotations
 import json
 import math
 import sys
+from pathlib import Path
 
 from fuzzynav import validation
 from fuzzynav.catalog.controllers import available, check_task, scenario_controllers
@@ -66,16 +67,16 @@ fuzzynav run path-n --model anfis.json --json""")
                         help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
                              ".fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` writes a start)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (sensor noise, controllers; default 0)")
-    parser.add_argument("--max-time", type=float, default=None, metavar="S", help="override the scenario's max_time")
+    parser.add_argument("--max-time", type=arguments.decimal, default=None, metavar="S", help="override the scenario's max_time")
     parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--json", action="store_true", help="print the metrics as one JSON object")
     parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
     parser.add_argument("--animate", metavar="GIF", type=arguments.gif_path, help="write an animated GIF of the episode")
-    parser.add_argument("--size", type=int, default=400, metavar="PX",
+    parser.add_argument("--size", type=arguments.whole, default=400, metavar="PX",
                         help="width and height of the --animate GIF in pixels (default 400)")
-    parser.add_argument("--fps", type=float, default=10.0, help="frames per second of the --animate GIF (default 10); the GIF samples at most 100 "
+    parser.add_argument("--fps", type=arguments.decimal, default=10.0, help="frames per second of the --animate GIF (default 10); the GIF samples at most 100 "
                              "steps, so an episode longer than 100 / FPS seconds plays faster than real time")
 
 
@@ -99,6 +100,9 @@ def run(args) -> int:
     if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
     check_plant(args.plant)
+    if args.plot and args.animate and Path(args.plot).resolve() == Path(args.animate).resolve():
+        raise InputError(f"{args.animate} is the --plot file too: one would overwrite the other; give two names",
+                         field="--animate")
     scenario = open_scenario(args.scenario)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario, args.scenario)

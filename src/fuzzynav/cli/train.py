@@ -38,14 +38,14 @@ fuzzynav train anfis-tracker --out anfis.json
 fuzzynav train fql-goal --episodes 3000 --seed 0 --out fql.npz --curve fql.png
 fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to 6000 in all""")
     parser.add_argument("task", metavar="TASK", help="training task name")
-    parser.add_argument("--episodes", type=int,
+    parser.add_argument("--episodes", type=arguments.whole,
                         help=f"number of episodes / epochs in all, 1 to {validation.MAX_EPISODES:,} (task default); "
                              "a task learned in two phases, steering then speed, gives the speed phase a quarter "
                              "(fql-goal, fql-goal-35, fql-wall) or a half (fql-avoid)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", type=arguments.path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
-    parser.add_argument("--checkpoint-every", type=int, metavar="K",
+    parser.add_argument("--checkpoint-every", type=arguments.whole, metavar="K",
                         help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
     parser.add_argument("--curve", type=arguments.figure_path, help="write the learning curve plot (PNG; any "
                         "suffix matplotlib writes, checked before training)")

@@ -44,9 +44,9 @@ def register(subparsers) -> None:
     parser.add_argument("--what", default="both", help="mf (breakpoints), rules (conclusions) or both (default)")
     parser.add_argument("--method", default="ga", help="ga (default), pso, de, cmaes, nsga2 or aco (--what rules)")
     parser.add_argument("--objectives", metavar="A,B", help="nsga2's objectives among success, time, clearance")
-    parser.add_argument("--budget", type=int, default=3000, metavar="EVALS",
+    parser.add_argument("--budget", type=arguments.whole, default=3000, metavar="EVALS",
                         help="simulated episodes (one candidate on one training world each; default 3000)")
-    parser.add_argument("--population", type=int, default=10, metavar="N",
+    parser.add_argument("--population", type=arguments.whole, default=10, metavar="N",
                         help="candidates per generation (ants per iteration; default 10)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
     parser.add_argument("--out", metavar="FILE", help="tuned system to write: .yaml, .json, .fll or .fis")
