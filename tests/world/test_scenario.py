@@ -47,3 +47,5 @@ def test_load_by_file_name_and_errors_name_the_file(tmp_path):
     assert "tolerance" in str(error.value)
     with pytest.raises(InputError, match="example-goal"):
         load_scenario("example-gaol")
+    with pytest.raises(InputError, match="SCENARIO: is empty"):  # not "is a directory" (the current one)
+        load_scenario(" ")

@@ -66,15 +66,16 @@ def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.nda
         if array.ndim != 2 or array.shape[1] != columns or array.dtype.kind != "f":
             raise InputError(f"must be a float array of {columns} columns, got {array.dtype} of shape {array.shape}",
                              source=str(path), field=name)
-    if sizes.ndim != 1 or sizes.dtype.kind not in "iu" or np.any(sizes < 0) or int(sizes.sum()) != len(x) \
+    counts = [int(size) for size in sizes.ravel()] if sizes.dtype.kind in "iu" else []  # Python ints: no wrap-round
+    if sizes.ndim != 1 or sizes.dtype.kind not in "iu" or min(counts, default=0) < 0 or sum(counts) != len(x) \
             or len(f) != len(x):
         raise InputError(f"the generations' sizes must add up to the {len(x)} rows of x and f", source=str(path),
                          field="sizes")
     if not np.isfinite(x).all():
         raise InputError("the populations must be finite numbers (no NaN or infinity)", source=str(path), field="x")
     _check_values(path, f, fitness)
-    ends = np.cumsum(sizes)
-    return [(x[end - size:end], f[end - size:end]) for size, end in zip(sizes, ends)]
+    ends = np.cumsum(counts, dtype=np.int64)
+    return [(x[end - size:end], f[end - size:end]) for size, end in zip(counts, ends)]
 
 
 def _check_values(path: Path, f: np.ndarray, fitness: Fitness) -> None:

@@ -346,6 +346,8 @@ def list_scenarios() -> dict[str, str]:
 
 def load_scenario(path_or_name) -> Scenario:
     """Load a scenario file, or a built-in scenario by name (see :func:`list_scenarios`)."""
+    if isinstance(path_or_name, str) and not path_or_name.strip():  # "" is the current folder to Path
+        raise InputError("is empty: give a scenario file or a built-in scenario's name", field="SCENARIO")
     path = validation.file_path(path_or_name, field="scenario")
     if not path.exists() or path.is_dir():  # a device or pipe is read, and refused by name, below
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
