@@ -250,6 +250,11 @@ def test_a_centroids_samples_travel_in_the_fis_file():
     assert "Resolution" not in dumps(matlab, "fis")  # MATLAB's 101 points need no comment
     through_fll = loads(dumps(loads(dumps(matlab, "fll"), "fll", source="m.fll"), "fis"), "fis", source="m2.fis")
     np.testing.assert_allclose(through_fll.evaluate(X), matlab.evaluate(X), rtol=0, atol=1e-12)
+    one = loads(text.replace("Resolution=1000", "Resolution=1"), "fis", source="one.fis")  # fuzzylite's Centroid 1
+    np.testing.assert_array_equal(loads(dumps(one, "fis"), "fis", source="again.fis").evaluate(X), one.evaluate(X))
+    with pytest.raises(InputError, match="Resolution=1 samples one point: only with Grid=midpoints"):
+        loads(text.replace("Resolution=1000", "Resolution=1").replace("Grid=midpoints", "Grid=linspace"), "fis",
+              source="b.fis")
     for bad, problem in (("Resolution=0", "whole number of samples"), ("Grid=cells", "one of midpoints, linspace")):
         with pytest.raises(InputError, match=problem):
             loads(text.replace("Resolution=1000" if bad.startswith("R") else "Grid=midpoints", bad), "fis",

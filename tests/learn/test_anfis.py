@@ -242,7 +242,7 @@ def test_bad_data_and_documents_name_the_field():
 @pytest.mark.parametrize("key, value, field, problem", [
     ("best_epoch", "abc", "best_epoch", "must be an integer"), ("best_epoch", [1], "best_epoch", "must be an integer"),
     ("n_features_in", 2.5, "n_features_in", "must be an integer"),  # was cut to 2
-    ("n_features_in", 2**70, "n_features_in", "must be an integer in [1, 1000]"),
+    ("n_features_in", 0, "n_features_in", "must be an integer in [1, "),
 ])
 def test_a_model_files_counts_are_integers(key, value, field, problem):
     document = ANFIS(n_mfs=2, epochs=2).fit(np.linspace(0, 1, 20)[:, None], np.linspace(0, 1, 20)).to_dict()

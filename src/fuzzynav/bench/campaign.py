@@ -196,7 +196,7 @@ def _not_anothers(out: Path) -> None:
     campaign's folder, and the campaign would overwrite them (a user's ``index.html`` was lost)."""
     if (out / "runs.jsonl").exists():
         return
-    theirs = [name for name in WRITTEN if (out / name).exists()]
+    theirs = [name for name in WRITTEN if (out / name).exists()] + sorted(p.name for p in out.glob("failures-*.png"))
     if theirs:
         raise InputError(f"holds {', '.join(theirs)} but no runs.jsonl: it is not a campaign's folder, and a campaign "
                          "would overwrite them; choose another --out", source=str(out), field="--out")

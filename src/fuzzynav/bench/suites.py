@@ -70,7 +70,7 @@ class Suite:
 
 
 def _count(text: str, field_name: str, spec: str, lo: int, hi: int) -> int:
-    if not re.fullmatch(r"\d{1,30}", text) or not lo <= int(text) <= hi:
+    if not re.fullmatch(r"\d{1,30}", text, re.ASCII) or not lo <= int(text) <= hi:
         raise InputError(f"{field_name} must be a whole number from {lo} to {hi:,} in {validation.shown(spec)}",
                          field="SUITE")
     return int(text)

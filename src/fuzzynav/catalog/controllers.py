@@ -162,8 +162,7 @@ def make_controller(name: str, **options) -> Controller:
     """Build the controller registered as ``name`` (or under the alias ``name``); a controller
     with aliases carries the name asked for, which its traces and metrics show. A bad option (one
     the controller does not take, or a value its constructor refuses:
-    :mod:`fuzzynav.settings`) is an :class:`InputError` naming the controller and the option; an
-    object of the wrong kind where the constructor fails on it, one naming the options given."""
+    :mod:`fuzzynav.settings`) is an :class:`InputError` naming the controller and the option."""
     validation.text(name, field="name", max_length=200)
     spec = spec_of(name)
     try:
@@ -172,16 +171,12 @@ def make_controller(name: str, **options) -> Controller:
         if error.source is not None:
             raise
         raise InputError(error.problem, source=f"{name} options", field=error.field) from None
-    except (TypeError, AttributeError, ValueError) as error:
+    except TypeError as error:
         option = re.search(r"(unexpected|multiple values for) (?:keyword )?argument '(\w+)'", str(error))
-        if option is not None and option[2] in options:
-            problem = "no such option" if option[1] == "unexpected" else "is set by the controller itself"
-            raise InputError(problem, source=f"{name} options", field=option[2]) from None
-        if not options:  # not the user's: a defect of the controller
+        if option is None or option[2] not in options:
             raise
-        raise InputError(f"the controller cannot be made with these options ({type(error).__name__}: {error}); "
-                         "each must be of the kind its constructor documents", source=f"{name} options",
-                         field=", ".join(options)) from None
+        problem = "no such option" if option[1] == "unexpected" else "is set by the controller itself"
+        raise InputError(problem, source=f"{name} options", field=option[2]) from None
     if spec.aliases:
         controller.name = name
     return controller

@@ -58,7 +58,7 @@ def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], *, 
 def names(text: str) -> list[str]:
     """``--controllers A,B``: the comma-separated names (empty items dropped); none at all is a
     usage error (it ran every default controller instead)."""
-    found = [name for name in text.split(",") if name.strip()]
+    found = [name.strip() for name in text.split(",") if name.strip()]
     if not found:
         raise argparse.ArgumentTypeError(f"give at least one name, got {text!r}")
     return found

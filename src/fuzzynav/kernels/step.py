@@ -186,6 +186,7 @@ def move(setup, scene_array, k, robots, n, steering, speed, imperfect):
     :func:`fuzzynav.kernels.worlds.step`)."""
     state, ranges, status = robots.state, robots.ranges, robots.status
     row = state[n]
+    x0, y0 = row[X], row[Y]
     if imperfect is None:
         row[X], row[Y], row[THETA] = advance(row[X], row[Y], row[THETA], steering, speed, setup)
     else:
@@ -193,7 +194,30 @@ def move(setup, scene_array, k, robots, n, steering, speed, imperfect):
         row[X], row[Y], row[THETA] = real.move(imperfect, n, row[X], row[Y], row[THETA], steering, speed, setup)
     row[STEERING], row[SPEED] = steering, speed
     status[n, STEPS] += 1
+    swept(setup, scene_array, row, x0, y0)
     settle(setup, scene_array, k, state, ranges, status, n, imperfect)
+
+
+@jit
+def swept(setup, scene_array, row, x0, y0):
+    """A step from (x0, y0) to the row's position that spans the robot's diameter 2r or more (a
+    small robot moving fast) is tested along its chord too: the position is set back to the first
+    of points at most r apart where the footprint meets an obstacle (the step then ends in a
+    collision there), else left. A shorter step needs nothing: every obstacle point the centre
+    crosses lies within r of one of its ends, where :func:`settle` tests it. Without this a 1 cm
+    robot at 4 m/s passed through a 1 cm wall unseen."""
+    r = setup[RADIUS]
+    dx, dy = row[X] - x0, row[Y] - y0
+    length = math.hypot(dx, dy)
+    if not length >= 2.0 * r:  # the default robot's steps, and NaN
+        return
+    parts = int(math.ceil(length / r))
+    for j in range(1, parts):
+        px, py = x0 + dx * j / parts, y0 + dy * j / parts
+        scene.nearest_one(scene_array, px, py, row[OBSTACLE_DISTANCE:BOUNDARY + 1])
+        if min(row[OBSTACLE_DISTANCE], row[BOUNDARY]) < r:
+            row[X], row[Y] = px, py
+            return
 
 
 @jit

@@ -47,7 +47,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
 from fuzzynav.learn.anfis_hybrid import TINY, Grid, StepRule
-from fuzzynav.learn.estimator_checks import MAX_FEATURES, check_format, check_premises, check_x, check_xy, checked_rules
+from fuzzynav.learn.estimator_checks import check_format, check_premises, check_x, check_xy, checked_rules
 
 _FORMAT = "fuzzynav-anfis"
 _VERSION = 1
@@ -329,7 +329,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
         check_format(document, _FORMAT, _VERSION, "an ANFIS", source)
         if "n_features_in" not in document:
             raise InputError("missing", source=source, field="n_features_in")
-        n = validation.integer(document["n_features_in"], source, "n_features_in", lo=1, hi=MAX_FEATURES)
+        n = validation.integer(document["n_features_in"], source, "n_features_in", lo=1)
         try:
             model = cls(**document["params"])
             counts = model._check_hyper_parameters(n)

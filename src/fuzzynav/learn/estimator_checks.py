@@ -47,7 +47,6 @@ def check_x(X, n_features: int | None) -> np.ndarray:
     return X
 
 
-MAX_FEATURES = 1_000  # inputs
 MAX_RULES = 100_000  # rules of the grid partition (the product of the inputs' MF counts): memory and time
 
 

@@ -96,8 +96,7 @@ class BatchSimulator:
         seed = arguments.check_seed(seed)
         self.params = robot_params if robot_params is not None else scenario.robot
         if robot_params is not None:  # the scenario's own robot was checked with it
-            steps_see_collisions(scenario.world, robot_params, robot_params.radius, prefix="robot_params",
-                                 given=("max_speed", "max_reverse_speed"))
+            steps_see_collisions(scenario.world, robot_params, robot_params.radius)
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
         self.max_time = validation.number(max_time if max_time is not None else scenario.max_time,
                                           field="max_time", lo=0.0, lo_open=True, hi=MAX_TIME)

@@ -66,33 +66,23 @@ def world_contents(obstacles, width: float, height: float, source=None, field: s
                         field)
 
 
-def steps_see_collisions(world, robot, radius: float, source=None, prefix: str = "robot", given=()) -> None:
-    """Collisions are tested once a step of Δt: refuse a ``robot`` (a
-    :class:`~fuzzynav.robot.tricycle.TricycleParams` of footprint ``radius``), or a moving obstacle
-    of ``world``, that could pass through an obstacle unseen between two steps.
-
-    Each step's ends must be closer together, relative to any obstacle, than the robot's diameter
-    2r: then every point of an obstacle that the robot's centre crosses lies within r of one end,
-    where the test sees it (a thin wall, a post or a corner's tip alike). The robot moves at most
-    V Δt a step (V its top speed forwards or backwards; the world's border, crossed, is seen at the
-    step's end, so a world without obstacles asks nothing); a moving obstacle adds its own top
-    speed. A problem names ``prefix.KEY`` for the speed at fault when ``given`` holds that KEY,
-    else ``prefix.radius``."""
+def steps_see_collisions(world, robot, radius: float, source=None) -> None:
+    """Collisions are tested once a step of Δt, and along a step that spans the robot's diameter
+    (:func:`fuzzynav.kernels.step.swept`), against where the obstacles are at the step's end:
+    refuse a moving obstacle of ``world`` that could pass through the robot (``robot`` a
+    :class:`~fuzzynav.robot.tricycle.TricycleParams` of footprint ``radius``) between two steps —
+    the two closing 2r or more in a step (the robot at its top speed V, forwards or backwards,
+    the obstacle at its own)."""
     dt, diameter = robot.dt, 2.0 * radius
-    speed = max(robot.max_speed, robot.max_reverse_speed)
-    fastest = "max_speed" if robot.max_speed >= robot.max_reverse_speed else "max_reverse_speed"
-    if world.obstacles and speed * dt >= diameter:
-        validation.fail(f"a step of {dt:g} s at the robot's top speed {speed:g} m/s ({speed * dt:g} m) is not "
-                        f"shorter than its diameter {diameter:g} m: it could pass through a thin obstacle between "
-                        f"two steps; give a speed below {diameter / dt:g} m/s or a larger radius", source,
-                        f"{prefix}.{fastest if fastest in given else 'radius'}")
+    speed = max(robot.max_speed, -robot.lowest_speed)  # backwards: max_reverse_speed, or a negative min_speed
     for index in world.moving:
         mover = world.motions[index].top_speed()
         if (mover + speed) * dt >= diameter:
             validation.fail(f"at up to {mover:g} m/s, with the robot's {speed:g} m/s, it closes {(mover + speed) * dt:g}"
                             f" m in a step of {dt:g} s, not less than the robot's diameter {diameter:g} m: the two "
                             f"could pass through each other between steps; give it a speed below "
-                            f"{diameter / dt - speed:g} m/s", source, f"obstacles[{index}].motion")
+                            f"{diameter / dt - speed:g} m/s (or the robot a lower max_speed)", source,
+                            f"obstacles[{index}].motion")
 
 
 def sensor_ring(name, source=None, field: str = "sensors") -> str | None:

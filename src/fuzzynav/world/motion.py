@@ -85,14 +85,14 @@ class TargetMotion:
         return np.asarray(self.velocity) + self.amplitude * omega * np.cos(omega * tt) * self._normal()
 
     def top_speed(self) -> float:
-        """The largest speed (m/s) of the motion: |v| of a line, |speed| of a circle, at most
-        |v| + 2πA / T of a sinusoid."""
+        """The largest speed (m/s) of the motion: |v| of a line, |speed| of a circle, and of a
+        sinusoid √(|v|² + (2πA / T)²) (its wave moves across v, along the normal n)."""
         if self.type == "static":
             return 0.0
         if self.type == "circle":
             return abs(float(self.speed))
         wave = 2.0 * np.pi * abs(self.amplitude) / self.period if self.type == "sinusoid" else 0.0
-        return float(np.hypot(*self.velocity)) + wave
+        return float(np.hypot(np.hypot(*self.velocity), wave))
 
 
 def read_motion(check, document, field: str, table: dict[str, dict[str, object]]) -> tuple[str, dict]:

@@ -254,7 +254,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     robot_limits = _robot_params(check, robot)
     radius = robot_limits.radius if "radius" in robot else robot_radius
     _place(check, world, start[:2], "robot", "start", radius)
-    limits.steps_see_collisions(world, robot_limits, radius, source, given=robot)
+    limits.steps_see_collisions(world, robot_limits, robot_limits.radius, source)  # the radius simulated
 
     goal = path = target = None
     if "goal" in doc:

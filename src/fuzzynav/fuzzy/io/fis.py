@@ -213,8 +213,8 @@ def _system_options(section: dict, lines: _Lines) -> dict:
         elif key == "Name":
             options[key] = value
         elif key == "Resolution":  # written in a comment (module docstring): the samples of an integral output
-            if not (value.isascii() and value.isdigit() and 2 <= int(value) <= MAX_RESOLUTION):
-                raise lines.error(f"must be a whole number of samples in [2, {MAX_RESOLUTION}], got {value!r}", line,
+            if not (value.isascii() and value.isdigit() and 1 <= int(value) <= MAX_RESOLUTION):
+                raise lines.error(f"must be a whole number of samples in [1, {MAX_RESOLUTION}], got {value!r}", line,
                                   key)
             options[key] = int(value)
         elif key == "Grid":
@@ -269,6 +269,8 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
         if defuzz in ("Centroid", "Bisector", "MeanOfMaximum", "LargestOfMaximum", "SmallestOfMaximum"):
             points = {"resolution": options.get("Resolution", MATLAB_POINTS),
                       "grid": options.get("Grid", "linspace")} if matlab else {}
+            if points.get("grid") == "linspace" and points["resolution"] < 2:  # its two ends at least
+                raise lines.error("Resolution=1 samples one point: only with Grid=midpoints", None, "Resolution")
             var.defuzzifier = model.Defuzzifier(defuzz, **points)
             var.aggregation = options.get("AggMethod")
         elif defuzz is not None:
