@@ -87,3 +87,20 @@ def test_render_draws_the_obstacles_where_they_are():
     later = env.render()
     env.close()
     assert first.shape == later.shape and (first != later).any()
+
+
+def test_a_batch_robot_too_fast_for_its_worlds_movers_is_refused():
+    """The scenario was checked with its own robot; a batch's ``params`` are checked again, as
+    ``Simulator(robot_params=...)`` does: a robot at 50 m/s and a 1 m/s mover pass through each
+    other between two steps."""
+    from dataclasses import replace
+
+    import pytest
+
+    from fuzzynav.errors import InputError
+    from fuzzynav.robot.tricycle import DEFAULT_PARAMS
+
+    scenario = scenario_from_dict(CROSSING, source="crossing.yaml")
+    batch = RobotBatch(1, TASKS["avoid"], params=replace(DEFAULT_PARAMS, max_speed=50.0))
+    with pytest.raises(InputError, match=r"obstacles\[0\]\.motion: at up to 1 m/s, with the robot's 50 m/s"):
+        batch.start([0], [scenario])

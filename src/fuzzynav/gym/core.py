@@ -20,6 +20,7 @@ from fuzzynav.learn.envs.env import RobotState
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.fleet import Fleet
+from fuzzynav.world.limits import steps_see_collisions
 
 
 class RobotBatch:
@@ -59,6 +60,8 @@ class RobotBatch:
                 setups.append(self.fleet.setup(goal=scenario.goal.position, tolerance=scenario.goal.tolerance))
             else:
                 setups.append(self.fleet.setup())
+        for scenario in scenarios:  # the batch's robot drives these worlds: its movers checked against it
+            steps_see_collisions(scenario.world, self.params, self.params.radius)
         self.fleet.start(rows, [s.world for s in scenarios], [s.start for s in scenarios], setups)
         self.state = self._state()
 
