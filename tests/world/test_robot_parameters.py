@@ -98,6 +98,16 @@ def test_a_robot_that_steps_past_its_diameter_still_hits_a_thin_wall(robot):
     assert scenario.world.clearance(trace.pose[-1:, :2])[0] < scenario.robot.radius
 
 
+def test_a_physics_plants_long_steps_are_tested_along_the_way_too():
+    """The MuJoCo plant moves the robot outside the compiled step (mujoco is in the test extra)."""
+    from fuzzynav.catalog.controllers import make_controller
+    from fuzzynav.sim import run_episode
+
+    scenario = scenario_from_dict({**_doc(radius=0.01, theta=0.0), "goal": {"x": 10.0, "y": 2.0}, "obstacles": [WALL]})
+    trace = run_episode(scenario, make_controller("goal-seeking"), plant="mujoco")
+    assert trace.outcome == "collision" and 5.0 < trace.pose[-1, 0] < 6.0  # it drove through the wall before
+
+
 def test_a_moving_obstacle_that_could_pass_through_the_robot_is_refused():
     mover = {"circle": {"center": [10.0, 1.05], "radius": 0.5}, "motion": {"type": "line", "velocity": [0.0, 100.0]}}
     with pytest.raises(InputError, match=r"w\.yaml: obstacles\[0\]\.motion: at up to 100 m/s, .* below 2 m/s"):

@@ -283,13 +283,16 @@ def step(params, layer_params, navigator, setup, world, k, robots, imperfect):
 
 
 @jit
-def settle_moved(setup, scene_array, k, state, ranges, status, moved):
+def settle_moved(setup, scene_array, k, state, ranges, status, moved, before):
     """Stop tests and sensing at step ``k`` of the robots another plant has just moved (``moved``
-    (N,) bool, their poses written in ``state``), each counted one step; returns how many still run."""
+    (N,) bool, their poses written in ``state``, ``before`` (N, 2+) where they were), each counted
+    one step and its move tested along the way as :func:`move` tests its own (:func:`swept`);
+    returns how many still run."""
     running = 0
     for n in range(state.shape[0]):
         if moved[n]:
             status[n, STEPS] += 1
+            swept(setup, scene_array, state[n], before[n, 0], before[n, 1])
             settle(setup, scene_array, k, state, ranges, status, n, None)
         running += status[n, OUTCOME] == RUNNING
     return running

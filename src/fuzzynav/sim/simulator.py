@@ -288,12 +288,12 @@ class BatchSimulator:
         if real is not None:
             imperfect.plant_commands(real, self.k, self._state, moved, self._setup, step_kernel.STEERING,
                                      step_kernel.SPEED)
-            before = self._state[:, step_kernel.X:step_kernel.THETA + 1].copy()
+        before = self._state[:, step_kernel.X:step_kernel.THETA + 1].copy()
         self.plant.move(self._state, moved)
         if real is not None:
             imperfect.plant_moved(real, before, self._state, moved)
         self._running = step_kernel.settle_moved(self._setup, world.scene, self.k, self._state, self._ranges,
-                                                 self._status, moved)
+                                                 self._status, moved, before)
         self.plant.sense(self._state, self._ranges, self.active)
         if real is not None:
             imperfect.plant_sense(real, self._ranges, self.active, self.sensors.max_range)
