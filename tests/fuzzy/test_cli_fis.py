@@ -116,6 +116,10 @@ def test_a_function_term_reading_an_unknown_name_is_refused_when_read(tmp_path, 
         err = capsys.readouterr().err.strip()
         assert err.endswith("gs-fn.fll: alpha.Z: Function 'foo' reads foo, not a variable of this system "
                             "(alpha, drg, theta, v; x is the term's own input)"), err
+    infinite = tmp_path / "gs-inf.fll"  # a constant that is infinite: refused when read, naming the term
+    infinite.write_text(text.replace("term: Z Constant 0.0", "term: Z Function 1/0", 1))
+    assert main(["fis", "show", str(infinite)]) == 2
+    assert "gs-inf.fll: alpha.Z: Function '1/0' gives inf at every input" in capsys.readouterr().err
     good = tmp_path / "gs-ok.fll"  # a name of the system is fine
     good.write_text(text.replace("term: Z Constant 0.0", "term: Z Function 0 * drg", 1))
     assert main(["fis", "eval", str(good), "--input", "drg=5", "--input", "theta=0.3"]) == 0

@@ -12,8 +12,8 @@ An engine read from ``.fll``, ``.fis``, JSON or YAML (or built in Python) must h
   count of at least 1, a threshold finite in [0, 1], a ``Threshold`` comparator one of
   ``< <= == != >= >``;
 - no ``Function`` term of an output reading that output itself (its value is what is being
-  computed), nor any term's reading a name that is not a variable of the system (it failed at
-  the first evaluation).
+  computed), nor any term's reading a name that is not a variable of the system, nor a constant
+  one that is infinite (``1/0``): both failed at the first evaluation, without the file's name.
 """
 
 from __future__ import annotations
@@ -41,6 +41,12 @@ def check_values(inputs, outputs, blocks) -> None:
                 raise InputError(f"Function {formula.formula!r} reads {', '.join(sorted(formula.variables - names))}, "
                                  f"not a variable of this system ({', '.join(sorted(names))}; x is the term's own "
                                  "input)", field=f"{var.name}.{label}")
+            if isinstance(formula, Function) and not formula.reads:  # a constant: infinite now or never
+                try:
+                    formula(0.0)
+                except InputError as error:
+                    raise InputError(f"Function {formula.formula!r} {error.problem}", field=f"{var.name}.{label}") \
+                        from None
     for var in outputs:
         integral = var.defuzzifier is not None and var.defuzzifier.integral
         if integral and not var.minimum < var.maximum:
