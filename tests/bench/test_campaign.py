@@ -71,6 +71,7 @@ def test_a_folder_of_someone_elses_reports_is_not_overwritten(tmp_path, capsys):
     assert _bench(out) == 2
     assert "holds summary.md, index.html but no runs.jsonl" in capsys.readouterr().err
     assert (out / "index.html").read_text() == "precious" and not (out / "runs.jsonl").exists()
+    assert sorted(p.name for p in out.iterdir()) == ["index.html", "summary.md"]  # not even a lock file left
     (out / "index.html").unlink(), (out / "summary.md").unlink()
     (out / "notes.txt").write_text("kept")
     assert _bench(out) == 0 and (out / "notes.txt").read_text() == "kept"

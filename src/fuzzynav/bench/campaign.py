@@ -231,13 +231,13 @@ def run_campaign(plan: Plan, out: Path, *, resume: bool = False, backend: str = 
     """Run ``plan`` into ``out`` (module docstring); returns every row in the final order. A world
     of a task one of its controllers cannot do is refused first (:func:`check_tasks`)."""
     check_tasks(plan)
+    _not_anothers(out)  # before the lock's file is made in someone else's folder
     with campaign_lock(out):
         return _run(plan, out, resume, backend, workers, address, progress)
 
 
 def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, address: str | None,
          progress: bool) -> list[dict]:
-    _not_anothers(out)
     previous = read_runs(out, plan if resume else None)
     if resume:  # under the campaign's lock: a temporary file here is a killed run's (plots included)
         remove_temporaries_under(out)
