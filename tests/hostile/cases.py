@@ -389,7 +389,7 @@ FUZZY = [
                         "term: lo Function 1 - v\n  term: hi Triangle 0 1 1\nOutputVariable")},
          ("fis", "plot", "{d}/t.fll", "-o", "{d}/p.png"), status=0, expect="p.png"),
     Case("fll-function-overflow", {"t.fll": _TS.replace("FORMULA", "exp(1000)*exp(1000)")}, _eval("t.fll"),
-         expect="formula 'exp(1000)*exp(1000)': gives inf"),
+         expect="t.fll: v.lo: Function 'exp(1000)*exp(1000)' gives inf at every input"),  # when read
     Case("fis-function-pole-at-the-input", {"t.fis": _fis().replace("MF1='lo':'trimf',[0 0 1]\nMF2='hi':'trimf',[0 1 1]\n\n[Output1]",
                                                                     "MF1='lo':'function',[1/(x-0.3)]\nMF2='hi':'trimf',[0 1 1]\n\n[Output1]")},
          _eval("t.fis"), expect="t.fis: formula '1/(x-0.3)': gives inf at x=0.3"),
