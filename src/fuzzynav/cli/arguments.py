@@ -93,9 +93,10 @@ def _integer(text: str, lo: int, hi: int) -> int:
     length, not parsed)."""
     if len(text.strip()) > 30:
         raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {len(text.strip())} characters")
-    if not _INTEGER.fullmatch(text):
-        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {text!r}")
-    value = int(text)
+    try:
+        value = whole(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {text!r}") from None
     if not lo <= value <= hi:
         raise argparse.ArgumentTypeError(f"must be an integer in [{lo}, {hi}], got {value}")
     return value

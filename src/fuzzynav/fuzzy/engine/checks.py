@@ -37,16 +37,8 @@ def check_values(inputs, outputs, blocks) -> None:
         for label, term in var.terms.items():
             _check_term(term, f"{var.name}.{label}")
             formula = term.term if isinstance(term, Scaled) else term
-            if isinstance(formula, Function) and formula.variables - names:
-                raise InputError(f"Function {formula.formula!r} reads {', '.join(sorted(formula.variables - names))}, "
-                                 f"not a variable of this system ({', '.join(sorted(names))}; x is the term's own "
-                                 "input)", field=f"{var.name}.{label}")
-            if isinstance(formula, Function) and not formula.reads:  # a constant: infinite now or never
-                try:
-                    formula(0.0)
-                except InputError as error:
-                    raise InputError(f"Function {formula.formula!r} {error.problem}", field=f"{var.name}.{label}") \
-                        from None
+            if isinstance(formula, Function):
+                _check_function(formula, names, f"{var.name}.{label}")
     for var in outputs:
         integral = var.defuzzifier is not None and var.defuzzifier.integral
         if integral and not var.minimum < var.maximum:
@@ -62,6 +54,20 @@ def check_values(inputs, outputs, blocks) -> None:
             if not (isinstance(rule.weight, (int, float)) and 0.0 <= rule.weight <= 1.0):
                 raise InputError(f"rule weight must be a number in [0, 1], got {rule.weight!r}",
                                  field=f"{where}: {rule.text()}")
+
+
+def _check_function(formula: Function, names: set, field: str) -> None:
+    """Every name ``formula`` reads is one of the system's variables (``names``); a constant one
+    (it reads nothing) is finite."""
+    unknown = formula.variables - names
+    if unknown:
+        raise InputError(f"Function {formula.formula!r} reads {', '.join(sorted(unknown))}, not a variable of this "
+                         f"system ({', '.join(sorted(names))}; x is the term's own input)", field=field)
+    if not formula.reads:  # a constant: infinite now or never
+        try:
+            formula(0.0)
+        except InputError as error:
+            raise InputError(f"Function {formula.formula!r} {error.problem}", field=field) from None
 
 
 def _check_term(term, field: str) -> None:
