@@ -20,7 +20,7 @@ import os
 import signal
 import sys
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from typing import Any
 
@@ -33,6 +33,38 @@ BACKENDS = ("local", "ray")
 
 FORKED = sys.platform == "linux"  # pool_map's workers start as copies of this process (else afresh)
 PR_SET_PDEATHSIG = 1  # prctl(2): the signal a process gets when its parent dies
+STOPS = {signal.SIGINT, signal.SIGTERM}  # the signals that stop a command (Ctrl-C, and a kill's)
+
+
+@contextlib.contextmanager
+def _stops_deferred() -> Iterator[None]:
+    """Ctrl-C and SIGTERM noted, not raised, while this process forks the pool's workers, and
+    raised again on leaving. Raised during the fork, their exception would be ignored by the
+    at-fork handlers (Python prints it and runs on: the command would not stop), and a worker
+    forked in that instant would print a traceback before :func:`_worker_start` sets its own
+    handling (such a worker leaves Ctrl-C to this process and ends on SIGTERM, as it will after).
+    Python sets handlers in its main thread only: elsewhere, nothing is deferred."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    here = os.getpid()
+    noted: list[int] = []
+
+    def note(number: int, frame: object) -> None:
+        if os.getpid() == here:
+            noted.append(number)
+        elif number == signal.SIGTERM:
+            signal.signal(number, signal.SIG_DFL)
+            os.kill(os.getpid(), number)
+
+    before = {stop: signal.signal(stop, note) for stop in STOPS}
+    try:
+        yield
+    finally:
+        for stop, handler in before.items():
+            signal.signal(stop, handler)
+        if noted:
+            signal.raise_signal(noted[0])
 
 
 def _worker_start(parent: int, interrupts: bool, initializer: Callable | None, initargs: tuple) -> None:
@@ -56,13 +88,18 @@ def _worker_start(parent: int, interrupts: bool, initializer: Callable | None, i
 
 def _stop(pool: ProcessPoolExecutor) -> None:
     """End ``pool`` now, on Ctrl-C or SIGTERM in this process: drop the tasks not started and
-    terminate the workers (their tasks are lost; what they saved atomically is whole or absent)."""
+    terminate the workers (their tasks are lost; what they saved atomically is whole or absent);
+    then wait for the pool's manager thread, which closes the pool's pipes: left running, it
+    could close one while the interpreter's exit writes to it (``OSError: Bad file descriptor``)."""
     workers = list((getattr(pool, "_processes", None) or {}).values())
+    manager = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=False, cancel_futures=True)
     for worker in workers:
         worker.terminate()
     for worker in workers:
         worker.join(timeout=5.0)
+    if manager is not None:
+        manager.join(timeout=5.0)
 
 
 def _shut(pool: ProcessPoolExecutor, *, cancel: bool) -> None:
@@ -111,10 +148,11 @@ def _run_in(pool: ProcessPoolExecutor, task: Callable, items: Sequence, workers:
     queue = enumerate(items)
     pending: dict = {}
     failure: BaseException | None = None
-    for index, item in queue:
-        pending[pool.submit(task, item)] = index
-        if len(pending) >= 4 * workers:
-            break
+    with _stops_deferred():  # the first submission forks the workers
+        for index, item in queue:
+            pending[pool.submit(task, item)] = index
+            if len(pending) >= 4 * workers:
+                break
     while pending:
         done, _ = wait(pending, return_when=FIRST_COMPLETED)
         for future in done:
