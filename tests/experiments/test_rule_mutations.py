@@ -2,6 +2,7 @@
 the published one passes (the harness of benchmarks/mutations.py, on two small cases)."""
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -43,6 +44,14 @@ def test_published_table_iv_1_passes_and_a_wrong_sign_cell_fails(tmp_path, capsy
     numbers = json.loads((tmp_path / "m" / "fig-IV-15" / "fig-IV-15.json").read_text())
     assert numbers["replaced_rule_bases"] == {"gsb": edited} and "unused_rule_bases" not in numbers
     assert "with gsb=" in capsys.readouterr().out
+
+
+def test_a_table_given_by_a_relative_path_is_recorded_absolute(tmp_path, monkeypatch):
+    edited = Path(_edited(tmp_path, "gsb", "IF drg IS G AND theta IS NM THEN alpha", "NP"))
+    monkeypatch.chdir(edited.parent)
+    assert main(["reproduce", "fig-IV-15", "--quick", "--quiet", "--fis", f"gsb={edited.name}", "--out", "r"]) == 0
+    numbers = json.loads((tmp_path / "r" / "fig-IV-15" / "fig-IV-15.json").read_text())
+    assert numbers["replaced_rule_bases"] == {"gsb": str(edited.resolve())}
 
 
 def test_a_table_the_experiment_never_reads_is_reported_unused(tmp_path, capsys):

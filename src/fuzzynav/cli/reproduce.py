@@ -21,7 +21,7 @@ from pathlib import Path
 
 from fuzzynav import progress, threads, validation
 from fuzzynav.catalog import experiments as registry
-from fuzzynav.catalog.roles import parse_option
+from fuzzynav.catalog.roles import replaced_files
 from fuzzynav.cli import arguments, help_line
 
 EXAMPLES = """
@@ -98,7 +98,7 @@ def run(args) -> int:
     for key in ids:  # validate every id first
         registry.experiment(key)
     systems = rule_bases.from_options(args.fis)
-    replaced = {role: path for role, path in map(parse_option, args.fis or [])}
+    replaced = replaced_files(args.fis)  # absolute: the record stays true wherever it is read from
     args.out.mkdir(parents=True, exist_ok=True)
     workers = min(args.workers or threads.cores(), len(ids))
     if workers > 1:  # the longest first, by an earlier run's time in --out (unknown ones first of all)
