@@ -361,6 +361,12 @@ FUZZY = [
     Case("fis-weight-minus-2", {"t.fis": _fis(weight="-2")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
     Case("fis-weight-1.5", {"t.fis": _fis(weight="1.5")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
     Case("fis-ok", {"t.fis": _fis()}, _eval("t.fis"), status=0, expect='{"v": 0.40'),
+    # rules name variables and terms by number: a file out of order would read the wrong ones
+    Case("fis-mfs-out-of-order", {"t.fis": _fis().replace("MF1='lo':'trimf',[0 0 1]\nMF2='hi'", "MF2='hi'", 1)
+                                  .replace("[0 1 1]\n\n[Output1]", "[0 1 1]\nMF1='lo':'trimf',[0 0 1]\n\n[Output1]", 1)},
+         _eval("t.fis"), expect="t.fis: line 17 (MF2): MF2 where MF1 is expected"),
+    Case("fis-sections-out-of-order", {"t.fis": _fis().replace("[Output1]", "[Output2]")},
+         _eval("t.fis"), expect="[Output2] where [Output1] is expected"),
     Case("fis-input-underscore", {"t.fis": _fis()}, ("fis", "eval", "{d}/t.fis", "--input", "x=1_000"),
          expect="--input x=1_000: '1_000' is not a number"),
     Case("fis-input-overflows", {"t.fis": _fis()}, ("fis", "eval", "{d}/t.fis", "--input", "x=1e400"),

@@ -28,6 +28,7 @@ from fuzzynav.world.scenario import Scenario, load_scenario
 
 DEFAULT_COUNT = 100
 REFERENCE_FILE = "benchmark.json"
+SCENARIO_SUFFIXES = (".yaml", ".yml")  # a folder's scenario files, in any case (a.YAML too), as `run` reads them
 
 
 def _natural(path: Path):
@@ -96,9 +97,9 @@ def parse_suite(spec: str) -> Suite:
     """The :class:`Suite` a SUITE argument names (module docstring); InputError otherwise."""
     path = Path(spec)
     if path.is_dir():
-        files = sorted(path.glob("*.yaml"), key=_natural)
+        files = sorted((f for f in path.iterdir() if f.suffix.lower() in SCENARIO_SUFFIXES), key=_natural)
         if not files:
-            raise InputError("folder has no scenario files (*.yaml)", source=spec, field="SUITE")
+            raise InputError("folder has no scenario files (*.yaml, *.yml)", source=spec, field="SUITE")
         references = _references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")

@@ -127,6 +127,9 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
         elif key == "Range":
             var.minimum, var.maximum = _range(value, lines, line)
         elif key.startswith("MF"):
+            if key != f"MF{len(order) + 1}":  # rules name the terms by this number
+                raise lines.error(f"{key} where MF{len(order) + 1} is expected (a section numbers its MFs "
+                                  f"MF1, MF2, … in order)", line, key)
             label, mf = term_from_fis(value, lines.source, line)
             if matlab and label in var.terms:
                 label = next(f"{label}_{k}" for k in range(2, len(var.terms) + 3) if f"{label}_{k}" not in var.terms)
@@ -252,6 +255,11 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
         raise lines.error("a .fis file has one [System] section", None)
     options = _system_options(system[0], lines)
     matlab = semantics == "matlab"
+    for kind in ("Input", "Output"):  # rules name the variables by their number: [Input1], [Input2], … in order
+        for count, section in enumerate((s for s in lines.sections if s["name"].startswith(f"[{kind}")), 1):
+            if section["name"] != f"[{kind}{count}]":
+                raise lines.error(f"{section['name']} where [{kind}{count}] is expected (sections are numbered "
+                                  f"[{kind}1], [{kind}2], … in order)", section["line"])
     in_vars = [_variable(s, lines, False, matlab) for s in lines.sections if s["name"].startswith("[Input")]
     out_vars = [_variable(s, lines, True, matlab) for s in lines.sections if s["name"].startswith("[Output")]
     inputs, outputs = [v for v, _ in in_vars], [v for v, _ in out_vars]

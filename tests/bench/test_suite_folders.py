@@ -1,0 +1,22 @@
+"""A folder of worlds (``bench FOLDER``, ``tune --worlds FOLDER``) holds every scenario file that
+``run`` reads: ``.yaml`` and ``.yml``, in any case."""
+
+import pytest
+
+from fuzzynav.bench.suites import parse_suite
+from fuzzynav.errors import InputError
+from fuzzynav.world.scenario import BUILTIN_DIR
+
+
+def test_a_folder_reads_yml_and_any_case_in_natural_order(tmp_path):
+    text = (BUILTIN_DIR / "example-goal.yaml").read_text()
+    for name in ("w10.yaml", "w2.yml", "w3.YAML", "notes.txt"):
+        (tmp_path / name).write_text(text)
+    suite = parse_suite(str(tmp_path))
+    assert [f.rsplit("/", 1)[-1] for f in suite.files] == ["w2.yml", "w3.YAML", "w10.yaml"]
+
+
+def test_a_folder_without_scenario_files_is_refused_by_name(tmp_path):
+    (tmp_path / "notes.txt").write_text("no worlds here")
+    with pytest.raises(InputError, match=r"folder has no scenario files \(\*\.yaml, \*\.yml\)"):
+        parse_suite(str(tmp_path))
