@@ -356,7 +356,7 @@ COUNTS = [
 ]
 
 FUZZY = [
-    Case("fis-output-range-4-4", {"t.fis": _fis("[4 4]")}, _eval("t.fis"), expect="v.range: range [4.0, 4.0] has no width"),
+    Case("fis-output-range-4-4", {"t.fis": _fis("[4 4]")}, _eval("t.fis"), expect="line 22 (Range): Range must be [lo hi] with lo < hi, got '[4 4]'"),
     Case("fis-output-range-nan", {"t.fis": _fis("[0 nan]")}, _eval("t.fis"), expect="Range must be [lo hi]"),
     Case("fis-weight-minus-2", {"t.fis": _fis(weight="-2")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
     Case("fis-weight-1.5", {"t.fis": _fis(weight="1.5")}, _eval("t.fis"), expect="rule weight must be a number in [0, 1]"),
@@ -365,6 +365,24 @@ FUZZY = [
     Case("fis-mfs-out-of-order", {"t.fis": _fis().replace("MF1='lo':'trimf',[0 0 1]\nMF2='hi'", "MF2='hi'", 1)
                                   .replace("[0 1 1]\n\n[Output1]", "[0 1 1]\nMF1='lo':'trimf',[0 0 1]\n\n[Output1]", 1)},
          _eval("t.fis"), expect="t.fis: line 17 (MF2): MF2 where MF1 is expected"),
+    Case("fis-export-c-fixed-huge-breakpoint", python="""
+from fuzzynav.cli import main
+assert main(["fis", "convert", "goal-seeking:gsb", "--to", "fis", "-o", str(d / "g.fis")]) == 0
+text = (d / "g.fis").read_text()
+assert "[0.1 3.5 8.0]" in text
+(d / "g.fis").write_text(text.replace("[0.1 3.5 8.0]", "[0.1 3.5 1e308]", 1))
+raise SystemExit(main(["fis", "export-c", str(d / "g.fis"), "-o", str(d / "g.c"), "--fixed", "Q16.16"]))
+""", expect="1e+308 does not fit Q16.16"),
+    Case("fll-plot-range-too-wide", {"t.fll": _fll("range: 0.000 1.000", "range: -1.7e308 0")},
+         ("fis", "plot", "{d}/t.fll", "-o", "{d}/p.png"), expect="x.range: range [-1.7e+308, 0.0] must be finite, at most 1e+300 wide"),
+    Case("fll-role-with-a-range-of-no-width", python="""
+from fuzzynav.cli import main
+assert main(["fis", "convert", "goal-seeking:gsb", "--to", "fll", "-o", str(d / "g.fll")]) == 0
+text = (d / "g.fll").read_text()
+start = text.index("range:")
+(d / "g.fll").write_text(text[:start] + "range: 5 5" + text[text.index("\\n", start):])
+raise SystemExit(main(["run", "circles-0-000", "--controller", "goal-seeking", "--fis", f"gsb={d / 'g.fll'}"]))
+""", expect="g.fll: drg.universe: is a fuzzylite engine, not a fuzzy system: universe must be finite with lo < hi"),
     Case("fis-sections-out-of-order", {"t.fis": _fis().replace("[Output1]", "[Output2]")},
          _eval("t.fis"), expect="[Output2] where [Output1] is expected"),
     Case("fis-input-underscore", {"t.fis": _fis()}, ("fis", "eval", "{d}/t.fis", "--input", "x=1_000"),

@@ -83,10 +83,16 @@ def check_fits(system, expected, source: str, role: str) -> None:
 
 def load_replacement(controller: str, role: str, path: str):
     """The system in ``path``, checked to fit ``controller``'s ``role``."""
+    from fuzzynav.fuzzy.engine import Engine
+    from fuzzynav.fuzzy.engine.convert import system_refusal
     from fuzzynav.fuzzy.io import load
 
     expected = default_system(controller, role)
     system = load(path)
+    refusal = system_refusal(system) if isinstance(system, Engine) else None
+    if refusal is not None:  # read as an engine for this value alone: say it, not what the role needs
+        raise InputError(f"is a fuzzylite engine, not a fuzzy system: {refusal.problem}", source=str(path),
+                         field=refusal.field)
     check_fits(system, expected, str(path), role)
     return system
 

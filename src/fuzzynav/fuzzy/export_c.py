@@ -62,22 +62,26 @@ def _identifier(name: str) -> str:
     return ident if not ident[0].isdigit() else f"fis_{ident}"
 
 
+def _fits(value: float) -> bool:
+    """Does ``value`` fit Q16.16 (scaled and rounded, under 2³¹ in magnitude; not NaN or ∞)?"""
+    return abs(value * _SCALE) < 2 ** 31 - 0.5
+
+
 class _Writer:
     def __init__(self, fixed: bool, prefix: str):
         self.fixed, self.p = fixed, prefix
 
     def const(self, value: float) -> str:
         if self.fixed:
-            scaled = round(value * _SCALE)
-            if abs(scaled) >= 2 ** 31:
+            if not _fits(value):
                 raise InputError(f"{value!r} does not fit Q16.16 (|value| < 32768)", field="--fixed")
-            return f"((int32_t){scaled})"
+            return f"((int32_t){round(value * _SCALE)})"
         return "INFINITY" if value == math.inf else "-INFINITY" if value == -math.inf else repr(float(value))
 
     def sloped(self, width: float) -> bool:
         """Is a ramp of ``width`` a slope in this number format? In Q16.16 a ramp narrower than
         its step (1/65536) is a step: its width rounds to 0, and dividing by it would trap."""
-        return width > 0 and (not self.fixed or round(width * _SCALE) != 0)
+        return width > 0 and (not self.fixed or width * _SCALE > 0.5)  # round(x) ≠ 0, for x = ∞ too
 
     def within(self, x: str, lo: float, hi: float) -> str:
         """``x`` in fixed point held to [``lo``, ``hi``] before a ramp's division, whose quotient
@@ -140,7 +144,8 @@ def _distinct_in_fixed_point(system: FuzzySystem) -> None:
     for v in system.inputs:
         for label, mf in v.terms.items():
             edges = sorted({e for e in mf._edges() if math.isfinite(e)}) if isinstance(mf, Trapezoidal) else []
-            if len(edges) > 1 and round(edges[0] * _SCALE) == round(edges[-1] * _SCALE):
+            if len(edges) > 1 and _fits(edges[0]) and _fits(edges[-1]) \
+                    and round(edges[0] * _SCALE) == round(edges[-1] * _SCALE):  # (one that does not fit: const)
                 raise InputError(f"its breakpoints {', '.join(map(repr, edges))} are one value in Q16.16 (steps of "
                                  "1/65536): export in double, or scale the input", field=f"--fixed: {v.name}.{label}")
 

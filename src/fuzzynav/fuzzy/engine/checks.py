@@ -26,14 +26,17 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.operators import COMPARATORS
 from fuzzynav.fuzzy.terms import Discrete, Scaled
+from fuzzynav.validation import MAX_UNIVERSE_WIDTH
 
 
 def check_values(inputs, outputs, blocks) -> None:
     """Refuse the values of the module docstring (InputError naming the field)."""
     names = {var.name for var in [*inputs, *outputs]}
     for var in [*inputs, *outputs]:
-        if not (math.isfinite(var.minimum) and math.isfinite(var.maximum)):
-            raise InputError(f"range [{var.minimum}, {var.maximum}] must be finite", field=f"{var.name}.range")
+        if not (math.isfinite(var.minimum) and math.isfinite(var.maximum)
+                and var.maximum - var.minimum <= MAX_UNIVERSE_WIDTH):  # (samples across it stay finite)
+            raise InputError(f"range [{var.minimum}, {var.maximum}] must be finite, at most "
+                             f"{MAX_UNIVERSE_WIDTH:g} wide", field=f"{var.name}.range")
         for label, term in var.terms.items():
             _check_term(term, f"{var.name}.{label}")
             formula = term.term if isinstance(term, Scaled) else term

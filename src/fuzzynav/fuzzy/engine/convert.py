@@ -75,6 +75,25 @@ def _premises(node) -> list[model.Proposition] | None:
 
 def engine_to_system(engine: Engine) -> FuzzySystem | None:
     """``engine`` as a FuzzySystem when that keeps its meaning exactly, else ``None``."""
+    try:
+        return _system_of(engine)
+    except (InputError, ValueError):
+        return None
+
+
+def system_refusal(engine: Engine) -> InputError | None:
+    """Why an engine shaped as a FuzzySystem is not one: the FuzzySystem's error on one of its
+    values (e.g. an input range of no width, which fuzzylite evaluates); ``None`` when the engine
+    is one, or is shaped otherwise (:func:`engine_to_system`)."""
+    try:
+        _system_of(engine)
+    except InputError as error:
+        return error
+    return None
+
+
+def _system_of(engine: Engine) -> FuzzySystem | None:
+    """:func:`engine_to_system`, raising the FuzzySystem's InputError where a value is refused."""
     if len(engine.blocks) != 1:
         return None
     block = engine.blocks[0]
@@ -121,8 +140,5 @@ def engine_to_system(engine: Engine) -> FuzzySystem | None:
     def variable(v):
         mfs = {k: Singleton(mf.value) if isinstance(mf, Constant) else mf for k, mf in v.terms.items()}
         return Variable(v.name, v.universe, mfs)
-    try:
-        return FuzzySystem([variable(v) for v in engine.inputs], [variable(v) for v in outs], rules,
-                           name=engine.name, description=engine.description, **options)
-    except (InputError, ValueError):
-        return None
+    return FuzzySystem([variable(v) for v in engine.inputs], [variable(v) for v in outs], rules,
+                       name=engine.name, description=engine.description, **options)

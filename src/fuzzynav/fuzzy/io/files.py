@@ -18,6 +18,7 @@ import yaml
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine
+from fuzzynav.fuzzy.engine.convert import system_refusal
 from fuzzynav.fuzzy.io.document import from_document, to_document
 from fuzzynav.fuzzy.io.fis import from_fis, to_fis
 from fuzzynav.fuzzy.io.fll import from_fll, to_fll
@@ -42,6 +43,9 @@ def dumps(system: FuzzySystem | Engine, fmt: str) -> str:
     if fmt == "fis":
         return to_fis(system)
     if fmt in ("json", "yaml") and isinstance(system, Engine):
+        refusal = system_refusal(system)
+        if refusal is not None:  # shaped as a system, refused for one value
+            raise InputError(f"is a fuzzylite engine, not a fuzzy system: {refusal.problem}", field=refusal.field)
         raise InputError(f"{system.name or 'this engine'} uses fuzzylite features a {fmt.upper()} document does not "
                          "hold (per-output settings, hedges, OR, several rule blocks...): write it as fll or fis",
                          field="--to")

@@ -109,6 +109,8 @@ def _range(value: str, lines: _Lines, line) -> tuple[float, float]:
         lo, hi = (float(Function(p)(0.0)) for p in parts)
     except ValueError:
         raise lines.error(f"Range must be [lo hi], got {value!r}", line, "Range") from None
+    if not lo < hi:  # MATLAB's own rule: a range increases
+        raise lines.error(f"Range must be [lo hi] with lo < hi, got {value!r}", line, "Range")
     return lo, hi
 
 
