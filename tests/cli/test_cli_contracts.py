@@ -113,6 +113,15 @@ def test_figure_file_types_checked_before_running(capsys, tmp_path, monkeypatch,
     assert not list(tmp_path.iterdir())
 
 
+@pytest.mark.skipif(sys.platform == "win32", reason="a child started without a standard output: POSIX fds")
+def test_a_command_started_without_standard_output_says_so_instead_of_losing_its_answer():
+    # ``fuzzynav fis show goal-seeking >&-``: Python makes sys.stdout None, where print writes nothing
+    process = subprocess.run([sys.executable, "-m", "fuzzynav", "fis", "show", "goal-seeking"], stdin=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE, preexec_fn=lambda: os.close(1), timeout=120)
+    assert process.returncode == 2
+    assert process.stderr.decode().strip() == "fuzzynav fis: error: standard output is closed"
+
+
 def test_closed_stdout_pipe_ends_quietly():
     process = subprocess.Popen([sys.executable, "-m", "fuzzynav", "fis", "show", "goal-seeking"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)

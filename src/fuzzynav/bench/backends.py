@@ -18,6 +18,7 @@ import ctypes
 import multiprocessing
 import os
 import signal
+import socket
 import sys
 import threading
 from collections.abc import Callable, Iterator, Sequence
@@ -173,17 +174,39 @@ def _run_in(pool: ProcessPoolExecutor, task: Callable, items: Sequence, workers:
         raise failure
 
 
+def ray_address(address: str | None) -> str | None:
+    """The Ray cluster to join: ``address`` (``--ray-address``), else ``$RAY_ADDRESS``, else None
+    (a local instance); refused, before any run, when Ray would misread it or wait on it: the
+    forms are ``auto``, ``local``, ``HOST:PORT`` and ``ray://HOST:PORT``, and a HOST:PORT must
+    answer within 5 s (Ray itself keeps retrying an address nobody answers at)."""
+    field = "--ray-address" if address else "RAY_ADDRESS"
+    address = address or os.environ.get("RAY_ADDRESS") or None
+    if address is None or address in ("auto", "local"):
+        return address
+    host, colon, port = address.removeprefix("ray://").rpartition(":")
+    if not (colon and host and port.isascii() and port.isdigit() and 0 < int(port) < 65536):
+        raise InputError(f"must be HOST:PORT, ray://HOST:PORT, auto or local, got {address!r}", field=field)
+    try:
+        socket.create_connection((host.strip("[]"), int(port)), timeout=5.0).close()
+    except OSError as error:
+        raise InputError(f"no Ray cluster answers at {address} ({error.strerror or error})", field=field) from None
+    return address
+
+
 def _ray(cells: Sequence[Cell], workers: int, on_rows: Callable[[list[dict]], None], address: str | None) -> None:
     try:
         import ray
     except ImportError:
         raise InputError("the ray backend needs Ray: pip install -e '.[cluster]' in the clone", field="--backend") from None
-    address = address or os.environ.get("RAY_ADDRESS")
+    address = ray_address(address)
     started = not ray.is_initialized()
     if started:
         options = {"address": address} if address else {"num_cpus": workers, "include_dashboard": False}
         handler = signal.getsignal(signal.SIGTERM)
-        ray.init(log_to_driver=False, **options)
+        try:
+            ray.init(log_to_driver=False, **options)
+        except (ValueError, ConnectionError) as error:  # e.g. "auto" with no cluster running
+            raise InputError(f"Ray could not start or join a cluster: {error}", field="--ray-address") from None
         if threading.current_thread() is threading.main_thread():
             signal.signal(signal.SIGTERM, handler)  # ray.init puts its own (an exit with status 15)
     try:

@@ -11,7 +11,9 @@ raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the 
 from __future__ import annotations
 
 import argparse
+import errno
 import gc
+import io
 import os
 import signal
 import sys
@@ -68,9 +70,23 @@ fuzzynav COMMAND --help              # a command's options, with examples"""),
     return parser
 
 
+class _Closed(io.TextIOBase):
+    """What stands for a standard stream the command was started without (``>&-``; Python makes it
+    None, and ``print`` to None writes nothing): writing to it is an error, not a lost answer."""
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.EBADF, f"standard {self.name} is closed")
+
+
 def _survive_any_terminal() -> None:
     """Characters the terminal's encoding lacks (``§``, ``θ``, ``≥`` on ``PYTHONIOENCODING=ascii``)
-    are written as ``\\u00a7`` escapes instead of failing with ``UnicodeEncodeError``."""
+    are written as ``\\u00a7`` escapes instead of failing with ``UnicodeEncodeError``; a closed
+    standard output refuses what is written to it (:class:`_Closed`)."""
+    if sys.stdout is None:
+        sys.stdout = _Closed("output")
     for stream in (sys.stdout, sys.stderr):
         reconfigure = getattr(stream, "reconfigure", None)
         if callable(reconfigure):

@@ -138,6 +138,7 @@ def _perturbations(options: list[str] | None) -> tuple[tuple[str, float], ...]:
 
 
 def run(args) -> int:
+    from fuzzynav.bench.backends import ray_address
     from fuzzynav.bench.campaign import Plan, run_campaign
     from fuzzynav.bench.report import write_reports
     from fuzzynav.bench.suites import parse_suite
@@ -149,6 +150,10 @@ def run(args) -> int:
     if len(set(names)) != len(names):
         raise InputError(f"suites repeat ({', '.join(names)})", field="SUITE")
     check_plant(args.plant)
+    if args.ray_address is not None and args.backend != "ray":
+        raise InputError("joins a Ray cluster: give --backend ray too", field="--ray-address")
+    if args.backend == "ray":
+        ray_address(args.ray_address)  # before the campaign's folder is made
     controllers = _controllers(args.controllers)
     plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers),
                 _perturbations(args.perturb), args.plant)
