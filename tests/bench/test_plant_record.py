@@ -26,6 +26,7 @@ def test_a_campaign_records_its_plant_and_refuses_to_resume_with_another(tmp_pat
     assert json.loads((physical / "summary.json").read_text())["arguments"]["plant"] == "mujoco"
     rows = [json.loads(line) for line in (physical / "runs.jsonl").read_text().splitlines()]
     assert len(rows) == 1 and rows[0]["outcome"] in ("reached", "collision", "timeout")
+    assert rows[0]["path_length_m"] > 1.0  # the MuJoCo plant moved the robot
     assert _bench(physical, "--resume") == 2  # the default plant is another one
 
 

@@ -86,3 +86,5 @@ def test_does_every_task_its_spec_lists(name, task):
     trace = run_episode(scenario, _controller(name), seed=0)
     expected = "reached" if CONTROLLERS[name].goal_directed else "timeout"  # a behaviour alone runs until the time is up
     assert trace.outcome == expected, f"{name} on the open {task} task: {trace.outcome} after {trace.steps} steps"
+    driven = np.hypot(*np.diff(trace.pose[:, :2], axis=0).T).sum()
+    assert driven > 3.0, f"{name} on the open {task} task drove {driven:.2f} m"  # a timeout that stood still fails

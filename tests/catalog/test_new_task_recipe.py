@@ -54,6 +54,7 @@ def _train_and_run(capsys, tmp_path):
     assert main(["run", "example-goal", "--model", str(out), "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["controller"] == "toy" and result["outcome"] in ("reached", "timeout", "collision")
+    assert result["path_length_m"] > 1.0  # the model drives the robot
     assert "toy" in tasks.available()
 
 

@@ -3,6 +3,8 @@ the demo, help that lists the controllers, progress bars only on a terminal, rea
 
 import json
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -106,7 +108,12 @@ def test_printed_results_carry_units_and_meaning():
 def test_a_behaviour_keeps_its_colour_whatever_the_order():
     colours = [behaviour_style(label)[0] for label in BEHAVIOURS]
     assert behaviour_style("FOA+VRB") == BEHAVIOURS["FOA+VRB"]
-    assert behaviour_style("my own") == behaviour_style("my own")
+    # a label of one's own gets a colour from its name, not from the labels styled before it
+    probe = ("import sys; from fuzzynav.viz.palette import behaviour_style as s; "
+             "[s(label) for label in sys.argv[1:]]; print(s('my own')[0])")
+    drawn = {subprocess.run([sys.executable, "-c", probe, *first], capture_output=True, text=True,
+                            check=True).stdout.strip() for first in ([], ["zz", "other"], ["a", "b", "c", "d"])}
+    assert drawn == {behaviour_style("my own")[0]}
     assert len(set(colours[:5])) == 5  # the five-behaviour navigator's labels are told apart
 
 

@@ -77,15 +77,18 @@ def test_a_bad_value_is_named_with_what_is_wrong(name, options, message):
         make_controller(name, **options)
 
 
-@pytest.mark.parametrize(("name", "options"), [
-    ("fuzzy-5b", {"barrier": 0.0, "goal_share": 1.0, "paced": False, "memory": 1}),
-    ("dwa", {"n_steering": 1, "n_speeds": 1001, "margin": 0.0}),
-    ("vfh", {"sector": 180.0, "prediction": 60.0, "prediction_step": 0.01, "tracks": True}),
-    ("stanley", {"gain": 1e4, "speed": 100.0}),
-    ("fuzzy-5b-thesis", {"layers": ("orbit_guard",), "v_floor": 0.0}),
+@pytest.mark.parametrize(("name", "options", "arrived"), [
+    ("fuzzy-5b", {"barrier": 0.0, "goal_share": 1.0, "paced": False, "memory": 1},
+     lambda c: (c.goal_share, c.navigator.memory) == (1.0, 1)),
+    ("dwa", {"n_steering": 1, "n_speeds": 1001, "margin": 0.0}, lambda c: (c.n_speeds, c.margin) == (1001, 0.0)),
+    ("vfh", {"sector": 180.0, "prediction": 60.0, "prediction_step": 0.01, "tracks": True}, None),
+    ("stanley", {"gain": 1e4, "speed": 100.0}, lambda c: (c.gain, c.speed) == (1e4, 100.0)),
+    ("fuzzy-5b-thesis", {"layers": ("orbit_guard",), "v_floor": 0.0}, None),
 ])
-def test_values_at_the_ends_of_their_ranges_are_taken(name, options):
-    make_controller(name, **options)
+def test_values_at_the_ends_of_their_ranges_are_taken(name, options, arrived):
+    """Accepted (not refused as out of range) and, where the controller shows them, received."""
+    controller = make_controller(name, **options)
+    assert arrived is None or arrived(controller)
 
 
 def test_a_setting_without_a_range_is_an_error_where_it_is_declared():

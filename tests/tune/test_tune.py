@@ -162,7 +162,8 @@ def test_the_tuned_file_drives_run_and_round_trips_through_convert_and_c(tmp_pat
     assert (tmp_path / "curve.png").stat().st_size > 0
     capsys.readouterr()
     assert main(["run", "mixed-1000-000", "--controller", "fuzzy-2b", "--fis", f"oab={out}", "--json"]) == 0
-    assert json.loads(capsys.readouterr().out)["outcome"] in ("reached", "timeout", "collision")
+    result = json.loads(capsys.readouterr().out)
+    assert result["outcome"] in ("reached", "timeout", "collision") and result["path_length_m"] > 1.0
     tuned = load(out)
     X = np.random.default_rng(0).uniform([0, -3.2], [4.5, 3.2], (500, 2))
     for suffix in ("fll", "fis"):

@@ -26,8 +26,12 @@ def test_deep_fll_rule_is_refused_naming_the_line(premise, problem):
 
 def test_ordinary_nesting_still_loads():
     premise = "(" * 10 + " and ".join(["drg is P"] * 10) + ")" * 10
-    engine = loads(FLL.replace(RULE, f"rule: if {premise} then alpha is Z and v is Z"), "fll", "x.fll")
-    assert np.isfinite(engine.evaluate(np.array([[1.0, 0.2]]))).all()
+    engine = loads(FLL.replace(RULE, f"rule: if {premise} then alpha is PG and v is F"), "fll", "x.fll")
+    plain = loads(FLL.replace(RULE, "rule: if drg is P then alpha is PG and v is F"), "fll", "y.fll")
+    without = loads(FLL.replace(RULE + "\n", ""), "fll", "z.fll")
+    inputs = np.array([[3.5, 0.2], [3.5, -1.0]])  # the peak of P: P^10 = P whatever the conjunction
+    assert np.array_equal(engine.evaluate(inputs), plain.evaluate(inputs))
+    assert not np.array_equal(engine.evaluate(inputs), without.evaluate(inputs))  # the rule counts
 
 
 @pytest.mark.parametrize("formula", ["(" * 5000 + "x" + ")" * 5000, "+".join(["1"] * 5000), "-" * 5000 + "1",

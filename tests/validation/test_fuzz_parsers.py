@@ -96,6 +96,25 @@ def _write(name: str, content) -> Path:
     return path
 
 
+def test_the_seeds_the_fuzzing_mutates_load_whole():
+    """The valid documents every fuzz test starts from load (a parser refusing everything would
+    pass the fuzz tests, whose refusals are all fine)."""
+    for document in SCENARIOS:
+        assert scenario_from_dict(document, "<seed>").name
+    for document in (FIS, MAMDANI):
+        assert np.isfinite(from_document(document, "<seed>").evaluate(np.array([[1.0, 0.5]]))).all()
+    for fmt in ("json", "yaml", "fll", "fis"):
+        system = loads(dumps(GOAL_SEEKING, fmt), fmt, "<seed>")
+        assert np.allclose(system.evaluate(np.array([[1.0, 0.5]])), GOAL_SEEKING.evaluate(np.array([[1.0, 0.5]])))
+    for name, document in (("model.json", MODEL), ("neural.json", NEURAL)):
+        assert load_controller(_write(name, json.dumps(document))) is not None
+    assert load_controller(_write("model.npz", NPZ)) is not None
+    loaded = load_checkpoint(_write("seed.checkpoint.json", json.dumps(CHECKPOINT)))
+    check_same_run(loaded, {"task": "t", "seed": 0}, 10, "<seed>")
+    restore(learner(), np.random.default_rng(), loaded, "<seed>")
+    assert _read_csv(GOAL_SEEKING, str(_write("seed.csv", CSV))) is not None
+
+
 # -- scenarios --------------------------------------------------------------------------------
 @FUZZ
 @given(st.one_of(st.sampled_from(SCENARIOS), st.sampled_from(SCENARIOS).flatmap(lambda d: mutated(d, SCENARIO_KEYS)),
