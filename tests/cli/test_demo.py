@@ -25,6 +25,21 @@ def test_demo_runs_a_scenario_and_writes_plot_and_tables(tmp_path, capsys, monke
     assert f"{name} / {controller}" in capsys.readouterr().out
 
 
+def test_runs_whose_plots_would_share_a_file_are_refused_before_any_run(tmp_path):
+    # each run's plot is SCENARIO--CONTROLLER.png: two files of one name: key, or a name given twice,
+    # would draw one plot over the other
+    text = Path(__file__).parents[2].joinpath("src/fuzzynav/world/scenarios/example-goal.yaml").read_text()
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "same.yaml").write_text(text)
+    with pytest.raises(InputError, match=r"b/same\.yaml: --scenario: scenario '.+' is also the name of .+a/same\.yaml"):
+        demo_runs([str(tmp_path / "a" / "same.yaml"), str(tmp_path / "b" / "same.yaml")], ["goal-seeking"])
+    with pytest.raises(InputError, match="fig-IV-23: --scenario: is given twice"):
+        demo_runs(["fig-IV-23", "fig-IV-23"])
+    with pytest.raises(InputError, match="--controllers: goal-seeking is given twice"):
+        demo_runs(["fig-IV-23"], ["goal-seeking", "goal-seeking"])
+
+
 def test_scenario_controllers_key_is_validated():
     doc = {"robot": {"x": 1, "y": 1}, "goal": {"x": 5, "y": 5}, "controllers": "goal-seeking"}
     with pytest.raises(InputError, match="controllers"):

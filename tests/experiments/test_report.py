@@ -231,3 +231,14 @@ def test_reproduce_without_ids_lists_them_and_says_nothing_ran(capsys, tmp_path)
 def test_an_id_named_twice_runs_once(tmp_path, capsys):
     assert main(["reproduce", "fig-IV-13", "fig-IV-13", "--quick", "--out", str(tmp_path)]) == 0
     assert capsys.readouterr().out.count("fig-IV-13:") == 1
+
+
+def test_reproduce_refuses_a_folder_holding_another_commands_report(tmp_path, capsys):
+    from fuzzynav.cli import main
+
+    (tmp_path / "index.html").write_text("<html>a campaign's report</html>")
+    assert main(["reproduce", "fig-V-7", "--quick", "--quiet", "--out", str(tmp_path)]) == 2
+    assert "not a reproduction's folder" in capsys.readouterr().err
+    assert (tmp_path / "index.html").read_text() == "<html>a campaign's report</html>"
+    assert main(["reproduce", "fig-V-7", "--quick", "--quiet", "--out", str(tmp_path / "r")]) == 0
+    assert main(["reproduce", "fig-V-7", "--quick", "--quiet", "--out", str(tmp_path / "r")]) == 0  # its own, again

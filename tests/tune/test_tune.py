@@ -146,7 +146,10 @@ def test_resume_refuses_a_checkpoint_made_on_other_worlds(tmp_path):
     worlds.mkdir()
     world = worlds / "a.yaml"
     world.write_text("robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nmax_time: 30\n")
-    options = dict(target="goal-seeking:gsb", worlds=str(worlds), holdout=str(worlds), population=3, budget=6,
+    held = tmp_path / "held"
+    held.mkdir()
+    (held / "b.yaml").write_text("robot: {x: 3, y: 2}\ngoal: {x: 15, y: 12}\nmax_time: 30\n")
+    options = dict(target="goal-seeking:gsb", worlds=str(worlds), holdout=str(held), population=3, budget=6,
                    validation=None, out=str(tmp_path / "t.yaml"), progress=False)
     tune(TuneRequest(**options))
     world.write_text("robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nmax_time: 30\n"
@@ -196,6 +199,7 @@ BAD = [
     (["fuzzy-tracker:tracker", "--population", "4", "--budget", "64"], "fuzzy-tracker has no compiled step"),
     (["fuzzy-2b:oab", "--holdout", "swamp:3"], "--holdout: "),
     (["fuzzy-2b:oab", "--holdout", " "], "--holdout: is empty"),
+    (["fuzzy-2b:oab", "--worlds", "mixed:4", "--holdout", "mixed:2"], "--holdout: shares 2 worlds with --worlds mixed:4"),
 ]
 
 
@@ -206,7 +210,10 @@ def test_worlds_of_a_task_the_controller_cannot_do_are_refused_by_name(tmp_path,
 
     path = load_scenario("path-n")
     save_scenario(path, tmp_path / "p.yaml")
-    assert main(["tune", "goal-seeking:gsb", "--worlds", str(tmp_path), "--holdout", str(tmp_path),
+    held = tmp_path / "held"
+    held.mkdir()
+    save_scenario(load_scenario("example-goal"), held / "g.yaml")
+    assert main(["tune", "goal-seeking:gsb", "--worlds", str(tmp_path), "--holdout", str(held),
                  "--validation", "none", "--population", "2", "--budget", "4", "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and f"{tmp_path / 'p.yaml'}: task: goal-seeking cannot do a path task" in err, err

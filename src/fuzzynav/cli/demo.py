@@ -71,14 +71,23 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
     from fuzzynav.world.scenario import list_scenarios
     from fuzzynav.world.scenario_file import open_scenario
 
-    for controller in controllers or ():
+    for k, controller in enumerate(controllers or ()):
         try:  # an unknown name is refused as such, not as a scenario's
             spec_of(controller)
         except InputError as error:
             raise InputError(error.problem, field="--controllers") from None
-    runs = []
+        if controller in controllers[:k]:
+            raise InputError(f"{controller} is given twice", field="--controllers")
+    runs, named = [], {}
     for name in names or list_scenarios():
         scenario = open_scenario(name)
+        if named.get(scenario.name) == name:
+            raise InputError("is given twice", source=name, field="--scenario")
+        if scenario.name in named:  # its plots and table rows would be the other's
+            raise InputError(f"scenario {scenario.name!r} is also the name of {named[scenario.name]}: each run's plot is "
+                             "named after its scenario (give each file its own name: key)", source=name,
+                             field="--scenario")
+        named[scenario.name] = name
         chosen = controllers or scenario_controllers(scenario, name)
         if not chosen and names:  # a built-in scenario without controllers is left out of the full demo
             raise InputError(f"scenario {scenario.name!r} names no controllers (no 'controllers' key): "

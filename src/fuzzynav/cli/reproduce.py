@@ -99,6 +99,7 @@ def run(args) -> int:
         registry.experiment(key)
     systems = rule_bases.from_options(args.fis)
     replaced = replaced_files(args.fis)  # absolute: the record stays true wherever it is read from
+    report.not_anothers(args.out)
     args.out.mkdir(parents=True, exist_ok=True)
     workers = min(args.workers or threads.cores(), len(ids))
     if workers > 1:  # the longest first, by an earlier run's time in --out (unknown ones first of all)

@@ -40,6 +40,14 @@ pre { background: #f5f5f5; padding: 0.5em; overflow-x: auto; font-size: 0.85em; 
 """
 
 
+def not_anothers(out_dir: Path) -> None:
+    """Refuse a folder that holds an ``index.html`` but no experiment's ``run.json``: another
+    command's report (a campaign's), which this one's index would overwrite."""
+    if (out_dir / "index.html").exists() and not any(out_dir.glob(f"*/{RUN_FILE}")):
+        raise InputError(f"holds an index.html but no experiment's {RUN_FILE}: it is not a reproduction's folder, "
+                         "and the report would overwrite it; choose another --out", source=str(out_dir), field="--out")
+
+
 def experiment_dir(out_dir: Path, key: str) -> Path:
     """The folder of experiment ``key`` inside the report folder."""
     return Path(out_dir) / key

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -141,6 +142,9 @@ def check(request: TuneRequest):
         given = parse_suite(request.holdout) if request.holdout else None
     except InputError as error:
         raise InputError(error.problem, source=error.source, field="--holdout") from None
+    if given is not None and _shared(suite, given):
+        raise InputError(f"shares {_shared(suite, given)} worlds with --worlds {request.worlds}: held-out worlds are "
+                         f"worlds the tuner never saw (e.g. {suite.family or 'mixed'}:40:1000)", field="--holdout")
     holdout = given if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
     made = make_with_systems(controller, dict(request.systems))
@@ -149,6 +153,16 @@ def check(request: TuneRequest):
         raise InputError(f"{controller} has no compiled step, and tune simulates each generation in one compiled "
                          f"call; tunable: {', '.join(tunable)}", field="CONTROLLER:ROLE")
     return made, system, suite, holdout
+
+
+def _shared(a, b) -> int:
+    """How many worlds suites ``a`` and ``b`` both hold: a family's worlds are numbered from 0 for
+    each seed; a folder's are its files."""
+    if a.family is not None and b.family is not None:
+        return min(a.count, b.count) if (a.family, a.seed) == (b.family, b.seed) else 0
+    if a.family is None and b.family is None:
+        return len({Path(f).resolve() for f in a.files} & {Path(f).resolve() for f in b.files})
+    return 0
 
 
 def validation_suite(request: TuneRequest, suite):
