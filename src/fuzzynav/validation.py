@@ -184,7 +184,8 @@ def choice(value, options, source=None, field=None) -> str:
 def mapping(value, source=None, field=None) -> dict:
     """``value``, a mapping with string keys."""
     if not isinstance(value, dict):
-        fail(f"must be a mapping, got {type(value).__name__}", source, field)
+        got = "nothing (an empty document)" if value is None and not field else type(value).__name__
+        fail(f"must be a mapping, got {got}", source, field)
     for key in value:
         if not isinstance(key, str):
             fail(f"keys must be strings, got {type(key).__name__} {shown(key)}", source, field or "(top level)")
@@ -337,9 +338,9 @@ def known_keys(value, known, source=None, field=None, *, required=()) -> dict:
     return value
 
 
-def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
-    """Refuse an ``.npz`` before decompressing it: every member a ``.npy`` array of a plain
-    (non-object) dtype, the sizes its zip headers and its array headers declare within
+def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES, what: str = "model file") -> None:
+    """Refuse an ``.npz`` (a ``what``) before decompressing it: every member a ``.npy`` array of a
+    plain (non-object) dtype, the sizes its zip headers and its array headers declare within
     ``max_bytes`` in total (a "deflate bomb" or an array declaring terabytes is refused)."""
     source = str(path)
     total = 0
@@ -360,7 +361,7 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
                               else np.lib.format.read_array_header_2_0)(member, max_header_size=10_000)
                 shape, _, dtype = header
                 if dtype.hasobject:
-                    fail(f"cannot read model file: its array {info.filename} holds Python objects, which fuzzynav never loads",
+                    fail(f"cannot read {what}: its array {info.filename} holds Python objects, which fuzzynav never loads",
                          source)
                 declared = dtype.itemsize
                 for n in shape:
@@ -371,7 +372,7 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES) -> None:
     except InputError:
         raise
     except Exception as error:  # zipfile / numpy header parsing of hostile bytes raise many types
-        fail(f"cannot read model file ({type(error).__name__}: {error})", source)
+        fail(f"cannot read {what} ({type(error).__name__}: {error})", source)
 
 
 def csv_table(content: str, source=None) -> tuple[list[str], list[tuple[int, dict]]]:

@@ -621,7 +621,31 @@ NAMES_AND_IMPORTS = [
          python="tuned_then_resumed(d, lambda a: a.update(f=a['f'][:, :3]))", expect="f: must be a float array of"),
     Case("tune-checkpoint-sizes-too-many",
          python="tuned_then_resumed(d, lambda a: a.update(sizes=np.array([2, 2, 200])))",
-         expect="sizes: the generations' sizes must add up"),
+         expect="sizes: the generations' sizes must be whole numbers ≥ 0 adding up"),
+    Case("tune-checkpoint-not-an-archive", {"a.yaml.tune.npz": "PK not a zip"},
+         ("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "none", "--budget", "8",
+          "--population", "2", "--out", "{d}/a.yaml", "--resume"),
+         expect="a.yaml.tune.npz: cannot read tuning checkpoint (BadZipFile"),
+    Case("tune-unknown-controller", argv=("tune", "FUZZY-2b:oab", "--worlds", "mixed:2"),
+         expect="unknown controller 'FUZZY-2b'"),
+    Case("fis-eval-csv-row-too-short", {"in.csv": "drg,theta\n1.0\n"}, ("fis", "eval", "goal-seeking", "--csv", "{d}/in.csv"),
+         expect="in.csv: line 2: has no value for theta (the row is shorter than the header)"),
+    Case("run-empty-scenario-file", {"w.yaml": ""}, ("run", "{d}/w.yaml"),
+         expect="w.yaml: must be a mapping, got nothing (an empty document)"),
+    Case("reproduce-all-and-an-id", argv=("reproduce", "all", "fig-V-7", "--out", "{d}/r"),
+         expect="ID: 'all' runs every experiment: give it alone"),
+    Case("bench-two-folders-of-one-name", {"a/w/x.yaml": ROBOT + "goal: {x: 9, y: 9}\n", "b/w/x.yaml": ROBOT + "goal: {x: 9, y: 9}\n"},
+         ("bench", "{d}/a/w", "{d}/b/w", "--controllers", "goal-seeking", "--out", "{d}/o"),
+         expect="are all named w (a folder suite is named by its last part: rename one)"),
+    Case("numba-threads-zero", python="""
+import os
+os.environ["NUMBA_NUM_THREADS"] = "0"
+try:
+    from fuzzynav.cli import main
+    raise SystemExit(main(["scenarios"]))
+finally:
+    del os.environ["NUMBA_NUM_THREADS"]
+""", expect="NUMBA_NUM_THREADS: must be a whole number of threads, at least 1, got '0'"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS]

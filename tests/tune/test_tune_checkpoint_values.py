@@ -48,7 +48,7 @@ def _set(name, where, value):
     (_set("x", (3, 0), np.nan), r"t9\.yaml\.tune\.npz: x: the populations must be finite"),
     (lambda arrays: arrays.pop("worlds"), r"worlds: the checkpoint does not say which training worlds"),
     (lambda arrays: arrays.__setitem__("sizes", np.array([2**64 - 2, 6], dtype=np.uint64)),  # wrapped to 4
-     r"sizes: the generations' sizes must add up to the 4 rows"),
+     r"sizes: the generations' sizes must be whole numbers ≥ 0 adding up to the 4 rows"),
 ])
 def test_impossible_stored_values_are_refused(checkpoint, tmp_path, edit, expected):
     request = _forged(checkpoint, tmp_path, edit)

@@ -199,6 +199,7 @@ def write_files(case: Case, directory) -> None:
     """Write the files of ``case`` into ``directory``."""
     for name, content in case.files.items():
         path = directory / name
+        path.parent.mkdir(parents=True, exist_ok=True)
         if isinstance(content, bytes):
             path.write_bytes(content)
         else:

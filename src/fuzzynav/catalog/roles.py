@@ -50,6 +50,9 @@ ROLES: Mapping[str, Mapping[str, str]] = _Roles()
 def roles_of(controller: str) -> Mapping[str, str]:
     """``{role: built-in system}`` of ``controller`` (InputError for a controller without roles)."""
     if controller not in ROLES:
+        from fuzzynav.catalog.controllers import spec_of
+
+        spec_of(controller)  # an unknown name is refused as such (with the names it may mean)
         raise InputError(f"controller {controller!r} has no replaceable fuzzy systems (those that do: "
                          f"{', '.join(ROLES)})", field="--fis")
     return ROLES[controller]

@@ -93,6 +93,14 @@ def _survive_any_terminal() -> None:
             reconfigure(errors="backslashreplace")
 
 
+def _check_numba_threads() -> None:
+    """``NUMBA_NUM_THREADS`` below 1 makes importing numba raise (other text it ignores)."""
+    value = os.environ.get("NUMBA_NUM_THREADS", "").strip()
+    if value.lstrip("+-").isdigit() and int(value) < 1:
+        raise InputError(f"must be a whole number of threads, at least 1, got {value!r} (the environment variable "
+                         "numba reads)", field="NUMBA_NUM_THREADS")
+
+
 class Terminated(KeyboardInterrupt):
     """SIGTERM, raised where the process is, so that it ends as Ctrl-C ends it: every save under
     way removes its temporary file, and the command exits with 143 instead of leaving them."""
@@ -116,6 +124,7 @@ def main(argv: list[str] | None = None) -> int:
     words = sys.argv[1:] if argv is None else argv
     args = None
     try:
+        _check_numba_threads()
         parser = build_parser(words)  # (imports the command: Ctrl-C may come here too)
         args = parser.parse_args(words)
         if not getattr(args, "func", None):

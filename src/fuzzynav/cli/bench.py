@@ -147,8 +147,14 @@ def run(args) -> int:
 
     suites = tuple(parse_suite(spec) for spec in args.suites)
     names = [suite.name for suite in suites]
-    if len(set(names)) != len(names):
-        raise InputError(f"suites repeat ({', '.join(names)})", field="SUITE")
+    if len(set(names)) != len(names):  # a campaign's rows name a folder suite by its last part
+        twice = sorted({name for name in names if names.count(name) > 1})
+        given = [spec for spec, name in zip(args.suites, names) if name in twice]
+        if len(set(given)) < len(given):
+            raise InputError(f"{next(spec for spec in given if given.count(spec) > 1)} is given twice", field="SUITE")
+        raise InputError(f"suites repeat: {', '.join(given)} "
+                         f"are all named {', '.join(twice)} (a folder suite is named by its last part: rename one)",
+                         field="SUITE")
     check_plant(args.plant)
     if args.ray_address is not None and args.backend != "ray":
         raise InputError("joins a Ray cluster: give --backend ray too", field="--ray-address")

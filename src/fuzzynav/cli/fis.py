@@ -177,6 +177,10 @@ def _read_csv(system: FuzzySystem, path: str) -> np.ndarray:
                          field="header")
     rows = []
     for line, row in table:
+        short = [n for n in system.input_names if row[n] is None]
+        if short:
+            raise InputError(f"has no value for {', '.join(short)} (the row is shorter than the header)",
+                             source=path, field=f"line {line}")
         try:
             rows.append([arguments.decimal(row[n]) for n in system.input_names])
         except (TypeError, ValueError) as error:

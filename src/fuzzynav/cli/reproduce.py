@@ -82,6 +82,7 @@ def reproduce_one(item: tuple[str, Path, bool, int]) -> tuple[dict, float, list[
 
 def run(args) -> int:
     from fuzzynav.bench.backends import pool_map
+    from fuzzynav.errors import InputError
     from fuzzynav.experiments import report, rule_bases
 
     if args.list or not args.ids:
@@ -94,6 +95,8 @@ def run(args) -> int:
                   file=sys.stderr)
             return 2
         return 0
+    if "all" in args.ids and args.ids != ["all"]:
+        raise InputError("'all' runs every experiment: give it alone, or the ids you want", field="ID")
     ids = list(registry.available()) if args.ids == ["all"] else list(dict.fromkeys(args.ids))  # each id once
     for key in ids:  # validate every id first
         registry.experiment(key)

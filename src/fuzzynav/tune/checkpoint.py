@@ -42,7 +42,7 @@ def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.nda
     last stored generation, or one that does not change the optimiser's next population: such a
     value can make a worse candidate the result, steer the search, or (``nsga2``) show in the front
     with the stored objectives. A checkpoint is trusted as the run's own; its file is not signed."""
-    validation.check_npz(path)
+    validation.check_npz(path, what="tuning checkpoint")
     with np.load(path, allow_pickle=False) as data:
         try:
             options = json.loads(str(data["options"]))
@@ -69,8 +69,8 @@ def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.nda
     counts = [int(size) for size in sizes.ravel()] if sizes.dtype.kind in "iu" else []  # Python ints: no wrap-round
     if sizes.ndim != 1 or sizes.dtype.kind not in "iu" or min(counts, default=0) < 0 or sum(counts) != len(x) \
             or len(f) != len(x):
-        raise InputError(f"the generations' sizes must add up to the {len(x)} rows of x and f", source=str(path),
-                         field="sizes")
+        raise InputError(f"the generations' sizes must be whole numbers ≥ 0 adding up to the {len(x)} rows of x "
+                         "and f", source=str(path), field="sizes")
     if not np.isfinite(x).all():
         raise InputError("the populations must be finite numbers (no NaN or infinity)", source=str(path), field="x")
     _check_values(path, f, fitness)
