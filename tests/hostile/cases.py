@@ -224,6 +224,8 @@ GYM = [
     *[Case(f"gym-vector-nan-action-{env.split('/')[1]}",
            python=f"step_vector({env!r}, np.full((3, {1 if 'Path' in env else 2}), np.nan, dtype=np.float32))",
            expect="actions[0]: must be finite") for env in GYM_IDS],
+    Case("gym-family-with-count", python="gymnasium.make('fuzzynav/GoalSeeking-v0', worlds='mixed:3')",
+         expect="a family's size and seed are the n_worlds and world_seed arguments (worlds='mixed')"),
     Case("gym-inf-action", python="step_env('fuzzynav/GoalSeeking-v0', [np.inf, 0.0])", expect="action: must be finite"),
     Case("gym-discrete-minus-one", python="step_env('fuzzynav/GoalSeeking-v0', -1, actions='discrete')",
          expect="action: must be in [0, 8]"),

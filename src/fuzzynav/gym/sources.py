@@ -38,7 +38,11 @@ class LayoutSource:
 
     def __post_init__(self):
         if self.name not in LAYOUTS:
-            raise InputError(f"unknown layout {self.name!r} (known: {', '.join(LAYOUTS)})", field="worlds")
+            family = str(self.name).partition(":")[0]
+            hint = (f"; a family's size and seed are the n_worlds and world_seed arguments (worlds={family!r})"
+                    if family in KINDS else "")
+            raise InputError(f"unknown layout or family {self.name!r} (layouts: {', '.join(LAYOUTS)}, random-paths; "
+                             f"families: {', '.join(KINDS)}){hint}", field="worlds")
         self.layout = LAYOUTS[self.name]()
 
     def draw(self, rng) -> Scenario:
