@@ -20,3 +20,11 @@ def test_a_folder_without_scenario_files_is_refused_by_name(tmp_path):
     (tmp_path / "notes.txt").write_text("no worlds here")
     with pytest.raises(InputError, match=r"folder has no scenario files \(\*\.yaml, \*\.yml\)"):
         parse_suite(str(tmp_path))
+
+
+def test_two_files_of_one_name_are_refused_not_merged(tmp_path):
+    text = (BUILTIN_DIR / "example-goal.yaml").read_text()
+    for name in ("w1.yaml", "W1.yml", "w2.yaml"):
+        (tmp_path / name).write_text(text)
+    with pytest.raises(InputError, match=r"W1\.yml, w1\.yaml would be one world"):
+        parse_suite(str(tmp_path))

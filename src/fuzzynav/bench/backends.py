@@ -44,8 +44,9 @@ def _stops_deferred() -> Iterator[None]:
     at-fork handlers (Python prints it and runs on: the command would not stop), and a worker
     forked in that instant would print a traceback before :func:`_worker_start` sets its own
     handling (such a worker leaves Ctrl-C to this process and ends on SIGTERM, as it will after).
-    Python sets handlers in its main thread only: elsewhere, nothing is deferred."""
-    if threading.current_thread() is not threading.main_thread():
+    Python sets handlers in its main thread only: elsewhere, nothing is deferred; nor where a
+    handler was set outside Python (it could not be put back)."""
+    if threading.current_thread() is not threading.main_thread() or None in map(signal.getsignal, STOPS):
         yield
         return
     here = os.getpid()
@@ -58,14 +59,29 @@ def _stops_deferred() -> Iterator[None]:
             signal.signal(number, signal.SIG_DFL)
             os.kill(os.getpid(), number)
 
-    before = {stop: signal.signal(stop, note) for stop in STOPS}
+    before: dict = {}
     try:
+        for stop in STOPS:
+            before[stop] = signal.signal(stop, note)
         yield
     finally:
-        for stop, handler in before.items():
-            signal.signal(stop, handler)
+        _put_back(before)
         if noted:
             signal.raise_signal(noted[0])
+
+
+def _put_back(handlers: dict) -> None:
+    """Set every signal's handler of ``handlers`` again; one that a handler put back raises in the
+    meantime (a Ctrl-C just after its own) is raised once all are back, so none stays deferred."""
+    error: BaseException | None = None
+    for stop, handler in handlers.items():
+        while signal.getsignal(stop) is not handler:
+            try:
+                signal.signal(stop, handler)
+            except BaseException as raised:  # raised again below, once the others are back
+                error = error or raised
+    if error is not None:
+        raise error
 
 
 def _worker_start(parent: int, interrupts: bool, initializer: Callable | None, initargs: tuple) -> None:

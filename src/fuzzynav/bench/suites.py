@@ -2,7 +2,7 @@
 
 A SUITE argument is either
 
-- a folder: every ``*.yaml`` scenario file in it, in name order (``world_10`` after ``world_9``:
+- a folder: every scenario file in it (``*.yaml``, ``*.yml``, any case), in name order (``world_10`` after ``world_9``:
   numbers sort as numbers); a ``benchmark.json`` beside them (written by ``fuzzynav import
   barn``) adds per-scenario reference data, e.g. BARN's optimal path length for its score;
 - ``FAMILY[:COUNT[:SEED]]`` with FAMILY one of :data:`fuzzynav.world.generate.KINDS` (COUNT
@@ -100,6 +100,11 @@ def parse_suite(spec: str) -> Suite:
         files = sorted((f for f in path.iterdir() if f.suffix.lower() in SCENARIO_SUFFIXES), key=_natural)
         if not files:
             raise InputError("folder has no scenario files (*.yaml, *.yml)", source=spec, field="SUITE")
+        stems = [f.stem.lower() for f in files]  # a world is named by its file's stem
+        twice = sorted({f.name for f in files if stems.count(f.stem.lower()) > 1})
+        if twice:
+            raise InputError(f"{', '.join(twice)} would be one world (a world is named by its file name without "
+                             "the suffix): rename one", source=spec, field="SUITE")
         references = _references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")

@@ -15,6 +15,7 @@ import errno
 import gc
 import io
 import os
+import re
 import signal
 import sys
 from collections.abc import Sequence
@@ -96,7 +97,7 @@ def _survive_any_terminal() -> None:
 def _check_numba_threads() -> None:
     """``NUMBA_NUM_THREADS`` below 1 makes importing numba raise (other text it ignores)."""
     value = os.environ.get("NUMBA_NUM_THREADS", "").strip()
-    if value.lstrip("+-").isdigit() and int(value) < 1:
+    if re.fullmatch(r"[+-]?\d+", value, re.ASCII) and int(value) < 1:
         raise InputError(f"must be a whole number of threads, at least 1, got {value!r} (the environment variable "
                          "numba reads)", field="NUMBA_NUM_THREADS")
 

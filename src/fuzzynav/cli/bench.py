@@ -151,10 +151,11 @@ def run(args) -> int:
         twice = sorted({name for name in names if names.count(name) > 1})
         given = [spec for spec, name in zip(args.suites, names) if name in twice]
         if len(set(given)) < len(given):
-            raise InputError(f"{next(spec for spec in given if given.count(spec) > 1)} is given twice", field="SUITE")
-        raise InputError(f"suites repeat: {', '.join(given)} "
-                         f"are all named {', '.join(twice)} (a folder suite is named by its last part: rename one)",
-                         field="SUITE")
+            raise InputError(f"suites repeat: {next(spec for spec in given if given.count(spec) > 1)} is given twice",
+                             field="SUITE")
+        folders = any(suite.family is None for suite in suites if suite.name in twice)
+        raise InputError(f"suites repeat: {', '.join(given)} are all {', '.join(twice)}"
+                         + (" (a folder suite is named by its last part: rename one)" if folders else ""), field="SUITE")
     check_plant(args.plant)
     if args.ray_address is not None and args.backend != "ray":
         raise InputError("joins a Ray cluster: give --backend ray too", field="--ray-address")

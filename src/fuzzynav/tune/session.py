@@ -143,8 +143,10 @@ def check(request: TuneRequest):
     except InputError as error:
         raise InputError(error.problem, source=error.source, field="--holdout") from None
     if given is not None and _shared(suite, given):
+        example = (f" (e.g. {suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}, the default)"
+                   if suite.family else "")
         raise InputError(f"shares {_shared(suite, given)} worlds with --worlds {request.worlds}: held-out worlds are "
-                         f"worlds the tuner never saw (e.g. {suite.family or 'mixed'}:40:1000)", field="--holdout")
+                         f"worlds the tuner never saw{example}", field="--holdout")
     holdout = given if request.holdout else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
     made = make_with_systems(controller, dict(request.systems))

@@ -89,6 +89,8 @@ def system_refusal(engine: Engine) -> InputError | None:
         _system_of(engine)
     except InputError as error:
         return error
+    except ValueError as error:  # a term's own check (a singleton of -inf)
+        return InputError(str(error))
     return None
 
 

@@ -109,9 +109,18 @@ def _range(value: str, lines: _Lines, line) -> tuple[float, float]:
         lo, hi = (float(Function(p)(0.0)) for p in parts)
     except ValueError:
         raise lines.error(f"Range must be [lo hi], got {value!r}", line, "Range") from None
-    if not lo < hi:  # MATLAB's own rule: a range increases
-        raise lines.error(f"Range must be [lo hi] with lo < hi, got {value!r}", line, "Range")
     return lo, hi
+
+
+def _in_order(name: str, kind: str, before: list[str], lines: _Lines, line) -> None:
+    """Refuse ``name`` (``MF2``, ``Input1``) numbered below the one before it: MATLAB and fuzzylite
+    take sections and terms by their place in the file, and rules refer to them by that place, so
+    a file numbered otherwise (``MF2`` written before ``MF1``) would be read against its own numbers.
+    A number repeated (MATLAB's ``slcp1.fis`` reads MF1, MF2, MF2) is read by its place, as they do."""
+    number, last = name[len(kind):], before[-1][len(kind):] if before else ""
+    if number.isdigit() and last.isdigit() and int(number) < int(last):
+        raise lines.error(f"{name} comes after {before[-1]}: rules refer to {kind} by place in the file, so "
+                          f"number them in file order", line, name if kind == "MF" else None)
 
 
 def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
@@ -122,6 +131,7 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
     cls = model.OutputVariable if output else model.InputVariable
     var = cls("", -math.inf, math.inf)
     order: list[str] = []
+    previous: list[str] = []  # the MF keys read so far
     declared = None  # (NumMFs as written, its line)
     for key, value, line in section["items"]:
         if key == "Name":
@@ -129,9 +139,8 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
         elif key == "Range":
             var.minimum, var.maximum = _range(value, lines, line)
         elif key.startswith("MF"):
-            if key != f"MF{len(order) + 1}":  # rules name the terms by this number
-                raise lines.error(f"{key} where MF{len(order) + 1} is expected (a section numbers its MFs "
-                                  f"MF1, MF2, … in order)", line, key)
+            _in_order(key, "MF", previous, lines, line)
+            previous.append(key)
             label, mf = term_from_fis(value, lines.source, line)
             if matlab and label in var.terms:
                 label = next(f"{label}_{k}" for k in range(2, len(var.terms) + 3) if f"{label}_{k}" not in var.terms)
@@ -257,11 +266,11 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
         raise lines.error("a .fis file has one [System] section", None)
     options = _system_options(system[0], lines)
     matlab = semantics == "matlab"
-    for kind in ("Input", "Output"):  # rules name the variables by their number: [Input1], [Input2], … in order
-        for count, section in enumerate((s for s in lines.sections if s["name"].startswith(f"[{kind}")), 1):
-            if section["name"] != f"[{kind}{count}]":
-                raise lines.error(f"{section['name']} where [{kind}{count}] is expected (sections are numbered "
-                                  f"[{kind}1], [{kind}2], … in order)", section["line"])
+    for kind in ("Input", "Output"):
+        seen: list[str] = []
+        for section in (s for s in lines.sections if s["name"].startswith(f"[{kind}")):
+            _in_order(section["name"].strip("[]"), kind, seen, lines, section["line"])
+            seen.append(section["name"].strip("[]"))
     in_vars = [_variable(s, lines, False, matlab) for s in lines.sections if s["name"].startswith("[Input")]
     out_vars = [_variable(s, lines, True, matlab) for s in lines.sections if s["name"].startswith("[Output")]
     inputs, outputs = [v for v, _ in in_vars], [v for v, _ in out_vars]
