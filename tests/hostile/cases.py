@@ -200,40 +200,19 @@ MF2='hi':'trimf',[0 1 1]
 """
 
 
-_TS_FIS = """[System]
-Name='t'
-Type='sugeno'
-NumInputs=1
-NumOutputs=1
-NumRules=2
-AndMethod='prod'
-OrMethod='max'
-ImpMethod='prod'
-AggMethod='sum'
-DefuzzMethod='wtaver'
-
-[Input1]
-Name='x'
-Range=[0 1]
-NumMFs=2
-MF1='lo':'trimf',[0 0 1]
-MF2='hi':'trimf',[0 1 1]
-
-[Output1]
-Name='v'
-Range=[0 0]
-NumMFs=2
-MF1='a':'constant',[0.2]
-MF2='b':'constant',[0.8]
-
-[Rules]
-1, 1 (1) : 1
-2, 2 (1) : 1
-"""
-
-
 def _fis(out_range: str = "[0 1]", weight: str = "1") -> str:
     return _FIS.replace("OUTRANGE", out_range).replace("WEIGHT", weight)
+
+
+def _sugeno_fis(out_range: str) -> str:
+    """The same system as :func:`_fis` written as a Sugeno one, its output two constants."""
+    text = _fis(out_range)
+    for old, new in (("'mamdani'", "'sugeno'"), ("AndMethod='min'", "AndMethod='prod'"),
+                     ("ImpMethod='min'", "ImpMethod='prod'"), ("AggMethod='max'", "AggMethod='sum'"),
+                     ("DefuzzMethod='centroid'", "DefuzzMethod='wtaver'")):
+        text = text.replace(old, new)
+    head, _, rules = text.rpartition("MF1='lo':'trimf',[0 0 1]\nMF2='hi':'trimf',[0 1 1]")
+    return head + "MF1='lo':'constant',[0.2]\nMF2='hi':'constant',[0.8]" + rules
 
 
 def _fll(old: str, new: str) -> str:
@@ -423,7 +402,7 @@ raise SystemExit(main(["run", "circles-0-000", "--controller", "goal-seeking", "
     Case("fis-repeated-mf-number-read-by-place", {"t.fis": _fis().replace("MF2='hi':'trimf',[0 1 1]\n\n[Output1]",
                                                                           "MF1='hi':'trimf',[0 1 1]\n\n[Output1]", 1)},
          _eval("t.fis"), status=0, expect='{"v": 0.40'),  # MATLAB's slcp1.fis repeats one; it and fuzzylite read by place
-    Case("fis-zero-width-output-range-of-a-sugeno", {"t.fis": _TS_FIS}, _eval("t.fis"), status=0,
+    Case("fis-zero-width-output-range-of-a-sugeno", {"t.fis": _sugeno_fis("[0 0]")}, _eval("t.fis"), status=0,
          expect='{"v": '),  # MATLAB's juggler.fis: Range=[0 0] on a Sugeno output
     Case("fll-role-with-an-infinite-singleton", python="""
 from fuzzynav.cli import main
