@@ -149,9 +149,9 @@ def file_path(value, source=None, field=None) -> Path:
     4,096 characters (``None``, a number or a list is refused, not passed to ``open``)."""
     if not isinstance(value, (str, Path)) and not hasattr(value, "__fspath__"):
         fail(f"must be a file name (a string or a path), got {type(value).__name__} {shown(value)}", source, field)
-    name = str(Path(value))
-    if not name.strip() or len(name) > 4096:
-        fail(f"must be a file name of 1 to 4096 characters, got {len(name)}", source, field)
+    name = str(value) if isinstance(value, str) else str(Path(value))  # (Path("") is ".")
+    if not name.strip() or len(name) > 4096 or "\x00" in name:
+        fail(f"must be a file name of 1 to 4096 characters, none NUL, got {len(name)} ({shown(name)})", source, field)
     return Path(value)
 
 

@@ -17,7 +17,7 @@ from fuzzynav.fuzzy import (
     check_strong_partition,
     strong_partition,
 )
-from fuzzynav.fuzzy.membership import make
+from fuzzynav.fuzzy.membership import Linear, make
 
 
 def test_triangle_by_hand():
@@ -97,3 +97,15 @@ def test_fuzzify_batch_shape_and_clamp():
     var = Variable("x", (0.0, 1.0), strong_partition([0.0, 1.0], ["L", "H"]))
     mu = var.fuzzify(np.array([-1.0, 0.25, 2.0]))
     np.testing.assert_allclose(mu, [[1, 0], [0.75, 0.25], [0, 1]])
+
+
+@pytest.mark.parametrize("build, message", [
+    (lambda: Gaussian(1.0, math.inf), "mean must be finite"),  # a term that would never fire
+    (lambda: Sigmoid(2.0, -math.inf), "c must be finite"),
+    (lambda: Bell(1.0, 2.0, math.inf), "c must be finite"),
+    (lambda: Linear([math.inf, 0.0]), r"coefficients\[0\] must be finite"),  # NaN conclusions
+    (lambda: Linear([1.0], constant=-math.inf), "constant must be finite"),
+])
+def test_a_term_placed_at_infinity_is_refused(build, message):
+    with pytest.raises(ValueError, match=message):
+        build()

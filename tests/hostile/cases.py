@@ -301,6 +301,43 @@ API = [
          status=0, expect="collision"),
     Case("api-robot-params-dict", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, robot_params={{'radius': 1}})",
          expect="robot_params: must be a fuzzynav.robot.tricycle.TricycleParams"),
+    # a fifth sweep, of the Python API
+    Case("api-robot-radius-of-a-nanometre",
+         python=f"import dataclasses as dc; s = {_SCENARIO}; fuzzynav.run_episode(s, {_CONTROLLER}, "
+                "robot_params=dc.replace(s.robot, radius=1e-9))", expect="robot_params.radius: must be at least 0.001 m"),  # it hung
+    Case("api-time-step-of-a-nanosecond",
+         python=f"import dataclasses as dc; s = {_SCENARIO}; fuzzynav.run_episode(s, {_CONTROLLER}, "
+                "robot_params=dc.replace(s.robot, dt=1e-9))", expect="robot_params.dt: must be >= 0.001"),
+    Case("api-one-robot-two-starts", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, start=[[1, 1, 0], [2, 2, 0]])",
+         expect="start: one robot takes one start pose"),  # ran two, returned one
+    Case("api-batch-count-and-starts", python=f"from fuzzynav.sim import BatchSimulator; "
+                                             f"BatchSimulator({_SCENARIO}, {_CONTROLLER}, n=5, starts=[[1, 1, 0], [2, 2, 0]])",
+         expect="n: 5 robots, but 2 start poses"),
+    Case("api-evaluate-failures-into-an-empty-name", python="fuzzynav.evaluate('goal-seeking', 'mixed', 2, save_failures='')",
+         expect="save_failures: must be a file name of 1 to 4096 characters"),  # it wrote into the working folder
+    Case("api-epsilon-above-one", python="from fuzzynav.learn.exploration import EpsilonGreedy; EpsilonGreedy(2.0)",
+         expect="epsilon: must stay within [0, 1], but starts at 2.0"),
+    Case("api-epsilon-nan", python="from fuzzynav.learn.exploration import EpsilonGreedy; EpsilonGreedy(float('nan'))",
+         expect="epsilon: must be finite"),
+    Case("api-decay-floor-above-start",
+         python="from fuzzynav.learn.schedules import ExponentialDecay; ExponentialDecay(0.1, 0.9, floor=5)",
+         expect="floor: must be <= 0.1"),
+    Case("api-learning-rate-negative", python="from fuzzynav.learn.tabular import TabularLearner; TabularLearner(3, 2, alpha=-1)",
+         expect="alpha: must be >= 0"),
+    Case("api-tabular-nan-reward",
+         python="from fuzzynav.learn.tabular import TabularLearner; TabularLearner(3, 2).update([0], [0], [float('nan')], [1], [False])",
+         expect="r: rewards must be finite"),  # one NaN spread over the whole table
+    Case("api-tabular-negative-state",
+         python="from fuzzynav.learn.tabular import TabularLearner; TabularLearner(3, 2).act([-1], np.random.default_rng(0))",
+         expect="s: must be indices in [0, 3)"),  # it wrapped round to the last state
+    Case("api-worlds-negative-margin", python="from fuzzynav.world.generate import generate_worlds; generate_worlds('mixed', 1, margin=-100)",
+         expect="margin: must be >= 0"),  # a world kept solvable for a robot smaller than nothing
+    Case("api-worlds-negative-radius", python="from fuzzynav.world.generate import generate_worlds; generate_worlds('mixed', 1, robot_radius=-1)",
+         expect="robot_radius: must be > 0"),
+    Case("api-fll-name-with-a-line-break",
+         python="from fuzzynav.fuzzy.systems import get_system; from fuzzynav.fuzzy.io import dumps; "
+                "s = get_system('goal-seeking'); s.name = 'a\\nb'; dumps(s, 'fll')",
+         expect="name: holds a line break, which a .fll file cannot hold"),  # it wrote a file it could not read back
     Case("api-metrics-none", python=f"fuzzynav.metrics(None, {_SCENARIO})", expect="trace: must be a Trace"),
     Case("api-metrics-scenario-none", python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), None)",
          expect="scenario: must be a Scenario"),

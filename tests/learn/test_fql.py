@@ -95,6 +95,15 @@ def test_one_step_update_is_algorithm_VI_1():
     np.testing.assert_allclose(learner.visits[0, 0], [[0.0, 0.25], [0.75, 0.0]])
 
 
+def test_a_reward_that_is_not_a_number_is_refused_before_it_spreads():
+    learner = FuzzyQLearner(TwoRules(), [[-1.0, 1.0], [-2.0, 2.0]], policy=EpsilonGreedy(0.0))
+    rng = np.random.default_rng(0)
+    learner.begin(np.array([[0.25]]), rng)
+    with pytest.raises(InputError, match="reward: rewards must be finite"):
+        learner.step(np.array([np.nan]), np.array([[1.0]]), np.array([False]), rng)
+    assert np.isfinite(learner.q).all()
+
+
 @pytest.mark.parametrize("terminal_bootstrap", [False, True])
 def test_a_terminal_step_is_bootstrapped_only_when_asked(terminal_bootstrap):
     """Algorithm VI.1 computes V*(s') at every step, the one into the terminal set F included

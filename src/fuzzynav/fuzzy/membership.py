@@ -58,6 +58,15 @@ def _as_float(name: str, value) -> float:
     return value
 
 
+def _finite(name: str, value) -> float:
+    """A parameter that places a term (a centre, a coefficient): at ±∞ the term would never fire,
+    or answer NaN; only a trapezoid's shoulders may lie at infinity."""
+    value = _as_float(name, value)
+    if math.isinf(value):
+        raise ValueError(f"{name} must be finite, got {value}")
+    return value
+
+
 class Trapezoidal(MembershipFunction):
     """Trapezoid {a, b, c, d}: 0 below a, rising to 1 on [b, c], falling to 0 at d (§II.2.2).
 
@@ -157,7 +166,7 @@ class Gaussian(MembershipFunction):
     kind = "gaussian"
 
     def __init__(self, sigma: float, mean: float):
-        sigma, mean = _as_float("sigma", sigma), _as_float("mean", mean)
+        sigma, mean = _as_float("sigma", sigma), _finite("mean", mean)
         if not sigma > 0 or math.isinf(sigma):
             raise ValueError(f"gaussian needs a finite sigma > 0, got {sigma}")
         self.sigma, self.mean = sigma, mean
@@ -176,7 +185,7 @@ class Bell(MembershipFunction):
     kind = "bell"
 
     def __init__(self, a: float, b: float, c: float):
-        a, b, c = (_as_float(n, v) for n, v in zip("abc", (a, b, c)))
+        a, b, c = _as_float("a", a), _as_float("b", b), _finite("c", c)
         if a == 0 or not math.isfinite(a) or not b > 0 or not math.isfinite(b):
             raise ValueError(f"bell needs a != 0 and b > 0 (finite), got {(a, b, c)}")
         self.a, self.b, self.c = a, b, c
@@ -195,7 +204,7 @@ class Sigmoid(MembershipFunction):
     kind = "sigmoid"
 
     def __init__(self, a: float, c: float):
-        a, c = _as_float("a", a), _as_float("c", c)
+        a, c = _as_float("a", a), _finite("c", c)
         if a == 0 or not math.isfinite(a):
             raise ValueError(f"sigmoid needs a finite slope a != 0, got {a}")
         self.a, self.c = a, c
@@ -244,8 +253,8 @@ class Linear(MembershipFunction):
     kind = "linear"
 
     def __init__(self, coefficients, constant: float = 0.0):
-        self.coefficients = tuple(_as_float(f"coefficients[{i}]", c) for i, c in enumerate(coefficients))
-        self.constant = _as_float("constant", constant)
+        self.coefficients = tuple(_finite(f"coefficients[{i}]", c) for i, c in enumerate(coefficients))
+        self.constant = _finite("constant", constant)
 
     def params(self) -> tuple[float, ...]:
         return (*self.coefficients, self.constant)

@@ -35,6 +35,7 @@ from fuzzynav.learn.schedules import (
     as_schedule,
     schedule_from_dict,
     schedule_to_dict,
+    share_schedule,
 )
 
 
@@ -126,7 +127,7 @@ class EpsilonGreedy(Policy):
     kind: ClassVar[str] = "epsilon_greedy"
 
     def __post_init__(self):
-        self.epsilon = as_schedule(self.epsilon, "epsilon")
+        self.epsilon = share_schedule(self.epsilon, "epsilon")
 
     def probabilities(self, q, t=0):
         q = np.asarray(q, dtype=float)

@@ -49,7 +49,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict, row_max
 from fuzzynav.learn.extraction import rule_table
-from fuzzynav.learn.schedules import as_schedule, schedule_to_dict
+from fuzzynav.learn.schedules import schedule_to_dict, share_schedule
 from fuzzynav.learn.state import restore_state
 
 
@@ -102,7 +102,7 @@ class FuzzyQLearner:
             raise InputError(f"must be a positive integer, got {n_learners!r}", field="n_learners")
         self.gamma = validation.number(gamma, field="gamma", lo=0.0, hi=1.0)
         self.lam = validation.number(lam, field="lam", lo=0.0, hi=1.0)
-        self.alpha = as_schedule(alpha, "alpha")
+        self.alpha = share_schedule(alpha, "alpha")
         self.policy = policy if policy is not None else EpsilonGreedy(0.1)
         self.normalise = bool(normalise)
         self.terminal_bootstrap = bool(terminal_bootstrap)
@@ -204,6 +204,8 @@ class FuzzyQLearner:
         v_star = (np.einsum("br,hr->bh", w_next, best[0]) if self.n_learners == 1
                   else np.einsum("br,bhr->bh", w_next, best))
         r = np.asarray(r, dtype=float).reshape(batch, -1)
+        if not np.isfinite(r).all():  # one NaN would spread over every quality it touches
+            raise InputError(f"rewards must be finite, got {r.ravel().tolist()}", field="reward")
         if r.shape[1] not in (1, self.q.shape[1]):
             raise InputError(f"rewards need 1 or {self.q.shape[1]} columns (one per head), got {r.shape[1]}",
                              field="reward")

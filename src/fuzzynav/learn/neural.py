@@ -69,6 +69,8 @@ class NeuralInverseModel:
             X = X[:, None]
         if X.ndim != 2 or X.shape[1] != self.n_features_in_:
             raise InputError(f"expected shape (N, {self.n_features_in_}), got {X.shape}", field="X")
+        if not np.isfinite(X).all():  # as ANFIS.predict: NaN would come out as a command, ±∞ saturate unseen
+            raise InputError("must be finite numbers (no NaN or infinity)", field="X")
         h = X
         for W, b in zip(self.weights[:-1], self.biases[:-1]):
             h = np.tanh(h @ W + b)

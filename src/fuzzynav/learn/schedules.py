@@ -34,6 +34,14 @@ class Constant:
     kind: ClassVar[str] = "constant"
     per_visit: ClassVar[bool] = False
 
+    def __post_init__(self):
+        validation.number(self.value, field="value", lo=0.0)
+
+    @property
+    def peak(self) -> float:
+        """The largest value it takes."""
+        return float(self.value)
+
     def __call__(self, t):
         return np.full(np.shape(t), float(self.value)) if np.ndim(t) else float(self.value)
 
@@ -50,6 +58,13 @@ class ExponentialDecay:
 
     def __post_init__(self):
         validation.number(self.rate, field="rate", lo=0.0, lo_open=True, hi=1.0)
+        validation.number(self.start, field="start", lo=0.0)
+        validation.number(self.floor, field="floor", lo=0.0, hi=self.start)
+
+    @property
+    def peak(self) -> float:
+        """The largest value it takes (at t = 0)."""
+        return float(self.start)
 
     def __call__(self, t):
         return np.maximum(self.floor, self.start * np.power(self.rate, t))
@@ -71,6 +86,13 @@ class InverseVisits:
 
     def __post_init__(self):
         validation.number(self.power, field="power", lo=0.5, lo_open=True, hi=1.0)
+        validation.number(self.scale, field="scale", lo=0.0, lo_open=True)
+        validation.number(self.floor, field="floor", lo=0.0, hi=self.scale)
+
+    @property
+    def peak(self) -> float:
+        """The largest value it takes (before any visit)."""
+        return float(self.scale)
 
     def __call__(self, visits):
         rate = self.scale / np.power(1.0 + np.asarray(visits, dtype=float), self.power)
@@ -88,8 +110,20 @@ def as_schedule(value, field: str = "schedule") -> Schedule:
     if isinstance(value, dict):
         return schedule_from_dict(value, field)
     if isinstance(value, (int, float, np.floating, np.integer)) and not isinstance(value, bool):
-        return Constant(float(value))
+        try:
+            return Constant(float(value))
+        except InputError as error:
+            raise InputError(error.problem, field=field) from None
     raise InputError(f"expected a number or a schedule, got {value!r}", field=field)
+
+
+def share_schedule(value, field: str) -> Schedule:
+    """:func:`as_schedule` for a value that is a share of something — a probability ε or a
+    learning rate β — so never above 1."""
+    schedule = as_schedule(value, field)
+    if schedule.peak > 1.0:
+        raise InputError(f"must stay within [0, 1], but starts at {schedule.peak!r}", field=field)
+    return schedule
 
 
 def schedule_to_dict(schedule: Schedule) -> dict:
@@ -107,3 +141,5 @@ def schedule_from_dict(document: dict, field: str = "schedule") -> Schedule:
         return SCHEDULES[kind](**parameters)
     except TypeError as error:
         raise InputError(f"bad parameters for schedule {kind!r} ({error})", field=field) from None
+    except InputError as error:
+        raise InputError(error.problem, field=f"{field}.{error.field}") from None

@@ -33,7 +33,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn.exploration import EpsilonGreedy, Policy, policy_from_dict
-from fuzzynav.learn.schedules import as_schedule, schedule_to_dict
+from fuzzynav.learn.schedules import schedule_to_dict, share_schedule
 from fuzzynav.learn.state import restore_state
 from fuzzynav.world.geometry import wrap_angle
 
@@ -43,6 +43,14 @@ METHODS = ("q_learning", "sarsa", "q_lambda")
 def _add_unique(array: np.ndarray, index: tuple, values) -> None:
     """``np.add.at`` where no pair repeats (one row, or one table per row): the same sums, cheaper."""
     array[index] += values
+
+
+def _indices(values, size: int, field: str) -> np.ndarray:
+    """``values`` as state or action indices in [0, ``size``) (a negative one would wrap round)."""
+    indices = np.asarray(values, dtype=int)
+    if indices.size and (indices.min() < 0 or indices.max() >= size):
+        raise InputError(f"must be indices in [0, {size}), got {indices.ravel().tolist()[:10]}", field=field)
+    return indices
 
 
 def _owners(n_tables: int, batch: int) -> np.ndarray:
@@ -77,7 +85,7 @@ class TabularLearner:
         self.method = method
         self.gamma = validation.number(gamma, field="gamma", lo=0.0, hi=1.0)
         self.lam = validation.number(lam, field="lam", lo=0.0, hi=1.0)
-        self.alpha = as_schedule(alpha, "alpha")
+        self.alpha = share_schedule(alpha, "alpha")
         self.policy = policy if policy is not None else EpsilonGreedy(0.1)
         self.q = np.full((int(n_tables), int(n_states), int(n_actions)), float(initial_q))
         self.visits = np.zeros(self.q.shape)
@@ -97,7 +105,7 @@ class TabularLearner:
 
     def act(self, s, rng: np.random.Generator) -> np.ndarray:
         """Actions for states ``s`` (B,) by the exploration policy."""
-        s = np.asarray(s, dtype=int)
+        s = _indices(s, self.q.shape[1], "s")
         return self.policy.choose(self.q[_owners(self.n_tables, s.size), s], rng, self.episode)
 
     def greedy(self) -> np.ndarray:
@@ -109,8 +117,11 @@ class TabularLearner:
 
         ``a_next`` is required by SARSA; for Q(λ) it decides Watkins' trace cut (omitted: no cut).
         """
-        s, a, s_next = (np.asarray(x, dtype=int) for x in (s, a, s_next))
+        s, a, s_next = (_indices(x, n, name) for x, n, name in ((s, self.q.shape[1], "s"), (a, self.q.shape[2], "a"),
+                                                                (s_next, self.q.shape[1], "s_next")))
         r = np.asarray(r, dtype=float)
+        if not np.isfinite(r).all():  # one NaN would spread over the whole table through the max
+            raise InputError(f"rewards must be finite, got {r.ravel().tolist()}", field="r")
         owners = _owners(self.n_tables, s.size)
         live = np.ones(s.size) if active is None else np.asarray(active, dtype=float)
         bootstrap = self.gamma * (1.0 - np.asarray(done, dtype=float))

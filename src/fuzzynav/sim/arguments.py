@@ -19,6 +19,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.robot.sensors import SensorRing, named_ring
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim.trace import Trace
+from fuzzynav.world import limits
 from fuzzynav.world.scenario import Scenario
 
 
@@ -69,6 +70,20 @@ def check_params(robot_params) -> TricycleParams | None:
                          f"dataclasses.replace(scenario.robot, radius=0.3)), got {_kind(robot_params)}",
                          field="robot_params")
     return robot_params
+
+
+MIN_DT, MAX_DT = 1e-3, 10.0  # s: a robot's time step (a run of limits.MAX_TIME holds at most 3.6 million steps)
+
+
+def check_robot(params: TricycleParams, field: str) -> TricycleParams:
+    """The robot simulated — a scenario's or ``robot_params`` — within the bounds a scenario file
+    sets on its size (:func:`fuzzynav.world.limits.length`: a robot built in Python as well; one of
+    radius 1e-9 m split each step's collision test into 10⁸ pieces) and with a time step ``dt`` in
+    [:data:`MIN_DT`, :data:`MAX_DT`]; ``field`` names where it came from."""
+    for name in ("radius", "wheelbase", "width"):
+        limits.length(getattr(params, name), field=f"{field}.{name}")
+    validation.number(params.dt, field=f"{field}.dt", lo=MIN_DT, hi=MAX_DT)
+    return params
 
 
 def check_sensors(sensors) -> SensorRing | None:

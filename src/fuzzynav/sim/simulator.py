@@ -43,6 +43,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.control.base import BatchObservation, Controller
 from fuzzynav.control.hooks import CompiledAct, KnowsGoal, KnowsLatency, KnowsTraffic, MapAware, SizedForRobot
+from fuzzynav.errors import InputError
 from fuzzynav.kernels import imperfect, layers, step as step_kernel
 from fuzzynav.kernels.records import Robots
 from fuzzynav.kernels.step import COLLISION, REACHED, RUNNING, TIMEOUT
@@ -90,11 +91,14 @@ class BatchSimulator:
         self.scenario = arguments.check_scenario(scenario)
         self.starts = (check_starts(starts) if starts is not None
                        else np.tile(scenario.start, (arguments.check_robots(n), 1)))
+        if starts is not None and n != 1 and n != len(self.starts):
+            raise InputError(f"{n} robots, but {len(self.starts)} start poses: give one or the other", field="n")
         self.n = len(self.starts)
         listed = arguments.check_controllers(controller, self.n)
         robot_params, sensors = arguments.check_params(robot_params), arguments.check_sensors(sensors)
         seed = arguments.check_seed(seed)
-        self.params = robot_params if robot_params is not None else scenario.robot
+        self.params = (arguments.check_robot(robot_params, "robot_params") if robot_params is not None
+                       else arguments.check_robot(scenario.robot, "scenario.robot"))
         if robot_params is not None:  # the scenario's own robot was checked with it
             steps_see_collisions(scenario.world, robot_params, robot_params.radius)
         self.sensors = sensors if sensors is not None else default_ring(scenario, controller)
@@ -366,6 +370,8 @@ class Simulator:
     def __init__(self, scenario: Scenario, controller: Controller, *,
                  robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
                  seed: int | None = None, max_time: float | None = None, start=None, plant: str = DEFAULT_PLANT):
+        if start is not None and np.ndim(np.asarray(start, dtype=object)) > 1:
+            raise InputError("one robot takes one start pose (x, y, θ); BatchSimulator runs several", field="start")
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
                                      sensors=sensors, seed=seed, max_time=max_time, plant=plant)
 

@@ -46,7 +46,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import ALPHA_MAX
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
-from fuzzynav.world import dynabarn, forest, maze, office, traffic
+from fuzzynav.world import dynabarn, forest, limits, maze, office, traffic
 from fuzzynav.world.scenario import Scenario, scenario_from_dict
 from fuzzynav.world.shapes import SHAPES
 from fuzzynav.world.world import World
@@ -114,6 +114,9 @@ def random_world(kind: str, rng: np.random.Generator, *, name: str = "random", m
     """One solvable random world of family ``kind`` (see the module docstring), drawn from ``rng``;
     ``margin`` (m) replaces the family's solvability margin."""
     check_kind(kind, "kind")
+    limits.length(robot_radius, field="robot_radius")  # the room a world keeps solvable: never below the body
+    if margin is not None:
+        validation.number(margin, field="margin", lo=0.0, hi=limits.MAX_LENGTH)
     if kind == "dynabarn":
         return scenario_from_dict(dynabarn.dynabarn_document(rng, name), source=name)
     room = robot_radius + (_MARGINS.get(kind, TURNING_MARGIN) if margin is None else margin)

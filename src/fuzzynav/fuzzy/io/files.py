@@ -40,6 +40,10 @@ def format_of(path) -> str:
 
 def dumps(system: FuzzySystem | Engine, fmt: str) -> str:
     """``system`` as text in ``fmt`` (json, yaml, fll or fis)."""
+    if fmt in ("fll", "fis"):  # line-based formats: a line break would end the key and break the file
+        for key in ("name", "description"):
+            if any(mark in str(getattr(system, key, "")) for mark in "\r\n"):
+                raise InputError(f"holds a line break, which a .{fmt} file cannot hold (one line per key)", field=key)
     if fmt == "fis":
         return to_fis(system)
     if fmt in ("json", "yaml") and isinstance(system, Engine):
