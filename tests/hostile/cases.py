@@ -338,6 +338,16 @@ API = [
          python="from fuzzynav.fuzzy.systems import get_system; from fuzzynav.fuzzy.io import dumps; "
                 "s = get_system('goal-seeking'); s.name = 'a\\nb'; dumps(s, 'fll')",
          expect="name: holds a line break, which a .fll file cannot hold"),  # it wrote a file it could not read back
+    Case("api-controller-without-reset",
+         python=f"from fuzzynav.control.base import Command\nclass OnlyAct:\n    def act(self, obs): return Command(0.0, 1.0)\n"
+                f"print(fuzzynav.run_episode({_SCENARIO}, OnlyAct(), max_time=1).outcome)",
+         status=0, expect="timeout"),  # reset is optional: an AttributeError before
+    Case("api-act-batch-returns-none",
+         python=f"class Bad:\n    def act_batch(self, obs): return None\nfuzzynav.run_episode({_SCENARIO}, Bad())",
+         expect="act_batch must return (steering, speed) or (steering, speed, labels), got NoneType"),
+    Case("api-act-batch-too-few-labels",
+         python=f"class Short:\n    def act_batch(self, obs): return np.zeros(1), np.ones(1), []\n"
+                f"fuzzynav.run_episode({_SCENARIO}, Short())", expect="act_batch gave 0 labels for 1 robots"),
     Case("api-metrics-none", python=f"fuzzynav.metrics(None, {_SCENARIO})", expect="trace: must be a Trace"),
     Case("api-metrics-scenario-none", python=f"fuzzynav.metrics(fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}), None)",
          expect="scenario: must be a Scenario"),

@@ -59,8 +59,15 @@ def controller_commands(controllers, batch: bool, obs, controller: str, step: in
     n = len(obs.active)
     if batch:
         out = controllers[0].act_batch(obs)
+        if not isinstance(out, (tuple, list)) or len(out) not in (2, 3):
+            raise CommandError(f"act_batch must return (steering, speed) or (steering, speed, labels), got "
+                               f"{type(out).__name__}", source=f"controller {controller}", field=f"step {step}")
         steering, speed = check_commands(out[0], out[1], n, controller, step)
-        return steering, speed, list(out[2]) if len(out) > 2 else [""] * n
+        labels = list(out[2]) if len(out) > 2 else [""] * n
+        if len(labels) != n:
+            raise CommandError(f"act_batch gave {len(labels)} labels for {n} robots", source=f"controller {controller}",
+                               field=f"step {step}")
+        return steering, speed, labels
     steering, speed, labels = np.zeros(n), np.zeros(n), [""] * n
     for i in np.flatnonzero(obs.active):
         command = controllers[0 if n == 1 else i].act(obs.single(i))

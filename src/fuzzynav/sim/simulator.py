@@ -145,7 +145,9 @@ class BatchSimulator:
         seeds = np.random.SeedSequence(self.seed).spawn(2 + len(self.controllers))
         self.rng = np.random.default_rng(seeds[0])
         for controller, child in zip(self.controllers, seeds[1:-1]):
-            controller.reset(np.random.default_rng(child))
+            reset = getattr(controller, "reset", None)  # optional for an object of one's own with act
+            if callable(reset):
+                reset(np.random.default_rng(child))
         self._imperfect = imperfect.record(self.imperfections, self.params.dt, self.n, seeds[-1])
         self._navigator = (self._compiled(self.n, self.sensors.angles) if self._compiled is not None
                            else step_kernel.idle_arguments())
