@@ -75,7 +75,9 @@ def _put_back(handlers: dict) -> None:
     meantime (a Ctrl-C just after its own) is raised once all are back, so none stays deferred."""
     error: BaseException | None = None
     for stop, handler in handlers.items():
-        while signal.getsignal(stop) is not handler:
+        for _ in range(3):  # a signal's exception interrupts a try at most once or twice; no endless retry
+            if signal.getsignal(stop) is handler:
+                break
             try:
                 signal.signal(stop, handler)
             except BaseException as raised:  # raised again below, once the others are back
