@@ -23,7 +23,11 @@ are evaluated as trained and with the turning-room guard of ``fuzzy-5b-thesis`` 
 every run a second time with twice the budget and reports both counts of episodes to converge
 (they must agree: the criterion does not depend on the budget).
 
-Run:  python benchmarks/rl_bench.py [--tasks fql-goal,q-goal-9] [--seeds 5] [--episodes N] [--double] [--json]
+By default every task trains under the thesis' protocol (one robot, one episode after another), as
+``fuzzynav train`` does; ``--parallel N`` trains N robots per batch on one rule base, the fast
+option of ``fuzzynav train --parallel N``, whose episodes are counted in batches.
+
+Run:  python benchmarks/rl_bench.py [--tasks fql-goal,q-goal-9] [--seeds 5] [--episodes N] [--double] [--parallel N] [--json]
 """
 
 from __future__ import annotations
@@ -73,7 +77,8 @@ def median_count(counts):
 def _tabular(n_states: int, n_actions: int, fixed: bool, default: int):
     """A tabular study: train with tabular_goal.q_goal_parts, return (summary, controller)."""
     def train(request):
-        env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed)
+        env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed,
+                                                                 batch=common.robots(request))
         episodes = request.episodes or default
         phases, _ = common.run_phases([common.Phase("steering", env, learner, episodes,
                                                         common.checkpoint_path(request.out, "steering"))], request)
@@ -135,10 +140,14 @@ EVALUATE = {"fql-avoid": _avoid, "fql-avoid-8": _avoid, "fql-wall": _wall, "fql-
             "q-goal-fixed": _fixed, "fql-goal-fixed": _fixed}
 
 
-def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: bool = False) -> dict:
+def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: bool = False,
+             parallel: int | None = None) -> dict:
+    """Train ``task`` with ``seed`` (``parallel`` robots per batch, None: the thesis' one robot) and
+    evaluate its controller: the row of the report."""
     out = folder / f"{task}-{seed}.json"
     start = time.perf_counter()
-    result, controller = _train(task, TrainRequest(out=out, episodes=episodes, seed=seed, progress=False))
+    result, controller = _train(task, TrainRequest(out=out, episodes=episodes, seed=seed, progress=False,
+                                                   parallel=parallel))
     wall = time.perf_counter() - start
     evaluation = EVALUATE.get(task, evaluations.evaluate_goal)(controller)
     phases = {k: v for k, v in result.items() if isinstance(v, dict)}
@@ -148,7 +157,7 @@ def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: b
     if double:
         budget = 2 * sum(row["episodes"].values())
         again, _ = _train(task, TrainRequest(out=folder / f"{task}-{seed}-x2.json", episodes=budget, seed=seed,
-                                             progress=False))
+                                             progress=False, parallel=parallel))
         row["converged_at_double_budget"] = {k: v["converged_at"] for k, v in again.items() if isinstance(v, dict)}
     return row
 
@@ -159,13 +168,16 @@ def main() -> int:
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--episodes", type=int, default=None, help="episodes per task (default: the task's)")
     parser.add_argument("--double", action="store_true", help="also train with twice the budget")
+    parser.add_argument("--parallel", type=int, default=None, metavar="N",
+                        help="train N robots per batch on one rule base, as `fuzzynav train --parallel N` "
+                             "(episodes then counted in batches); default: the thesis' one robot")
     parser.add_argument("--json", action="store_true", help="print one JSON object only")
     args = parser.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         for task in args.tasks.split(","):
             for seed in range(args.seeds):
-                rows.append(run_task(task, seed, args.episodes, Path(folder), args.double))
+                rows.append(run_task(task, seed, args.episodes, Path(folder), args.double, args.parallel))
                 if not args.json:
                     r = rows[-1]
                     guard = r.get("with_turn_guard")
@@ -193,7 +205,8 @@ def main() -> int:
         for task, s in summary.items():
             print(f"{task:16s} median wall {s['wall_s_median']:.1f} s; converged (median) {s['converged_at_median']} "
                   f"vs thesis {s['thesis_episodes']}; success per seed {s['success_per_seed']}")
-    print(json.dumps({"runs": rows, "summary": summary}))
+    print(json.dumps({"protocol": f"parallel: {args.parallel} robots per batch" if args.parallel else "thesis: one robot",
+                      "runs": rows, "summary": summary}))
     return 0
 
 

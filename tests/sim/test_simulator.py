@@ -139,6 +139,9 @@ def test_stateful_controllers_are_copied_per_robot():
     controller = CountingController()
     sim = BatchSimulator(scenario, controller, n=3).run()
     assert [sim.trace(i).behaviour[-1] for i in range(3)] == ["call10"] * 3
+    for robot in (3, -1, 1.0, True):  # one of the 3 robots, by its number: nothing else, no wrap-round
+        with pytest.raises(IndexError, match=r"robot must be a whole number from 0 to 2, got"):
+            sim.trace(robot)
 
 
 def test_sensor_noise_is_seeded():

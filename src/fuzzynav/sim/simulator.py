@@ -336,6 +336,8 @@ class BatchSimulator:
         """The :class:`Trace` of robot ``i`` (needs ``record=True``)."""
         if not self.record:
             raise RuntimeError("trace() needs a simulator built with record=True")
+        if isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < self.n:
+            raise IndexError(f"trace(): robot must be a whole number from 0 to {self.n - 1}, got {i!r}")
         k = int(self.steps[i])
         states = np.array([s[i] for s in self._history["state"][: k + 1]]).reshape(k + 1, -1)
         commands = states[1:]
