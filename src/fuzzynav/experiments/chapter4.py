@@ -37,6 +37,9 @@ from fuzzynav.sim import metrics, run_episode
 from fuzzynav.viz.trajectories import draw_world, plot_commands, plot_trajectory, save_in
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 
+# Fig IV.14: the steering "se diminue pour être nulle (le robot a la même direction de but)": the robot
+# is aligned from the first step its steering is below this (rad).
+ALIGNED_STEERING = float(np.radians(1.0))
 # Fig IV.12: (start x, y, θ), (goal x, y) per panel; the first pair is the built-in scenario.
 FIG_IV_12 = {
     "a": [((2.0, 17.0, 0.0), (10.0, 11.0)), ((2.0, 10.0, 0.0), (12.0, 15.0)), ((6.0, 2.0, 1.57), (14.0, 9.0)),
@@ -101,7 +104,12 @@ def fig_iv_13(out_dir, quick: bool = False, seed: int = 0) -> dict:
     left, right = figure.subfigures(1, 2)
     plot_trajectory(trace, scenario, left.add_subplot(111), markers=False)
     plot_commands(trace, right.subplots(2, 1, sharex=True))
-    return {**_outcome(trace, scenario), "first_steering_rad": float(trace.steering[0]),
+    steering = np.asarray(trace.steering, dtype=float)
+    aligned = np.flatnonzero(np.abs(steering) < ALIGNED_STEERING)
+    return {**_outcome(trace, scenario), "first_steering_rad": float(steering[0]),
+            "largest_steering_rad": float(np.abs(steering).max()),
+            "aligned_at_s": float(aligned[0] * trace.dt) if aligned.size else None,
+            "largest_steering_once_aligned_rad": float(np.abs(steering[aligned[0]:]).max()) if aligned.size else None,
             "max_speed_mps": float(trace.speed.max()), "figure": save_in(figure, out_dir, "fig-IV-13.png")}
 
 

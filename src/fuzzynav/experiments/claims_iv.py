@@ -17,6 +17,7 @@ from fuzzynav.experiments.routes import reference, route_check, switch_check
 
 MODULE = "fuzzynav.experiments.chapter4"
 ARRIVAL_SPEED_MPS = 0.15  # "slows to zero at the goal": the speed at arrival under this bound
+ALIGNED_DRIFT_DEG = 5.0  # Fig IV.14: once aligned the steering "stays null": no correction above this
 
 
 def _reached_without_contact(numbers, names) -> list[Check]:
@@ -70,8 +71,18 @@ def _fig_iv_13(numbers):
             Check("top speed (m/s)", numbers["max_speed_mps"], "≥ 3.0", numbers["max_speed_mps"] >= 3.0),
             Check("speed at the goal (m/s)", numbers["final_speed_mps"], f"< {ARRIVAL_SPEED_MPS}",
                   numbers["final_speed_mps"] < ARRIVAL_SPEED_MPS),
-            Check("first steering (°)", round(math.degrees(numbers["first_steering_rad"]), 1), "> 0 (left)",
-                  numbers["first_steering_rad"] > 0)]
+            Check("first steering (°)", round(math.degrees(numbers["first_steering_rad"]), 1),
+                  f"> 0 (left) and the run's largest ({math.degrees(numbers['largest_steering_rad']):.1f})",
+                  0 < numbers["first_steering_rad"] >= numbers["largest_steering_rad"]),
+            Check("largest steering once aligned (°)", _degrees(numbers["largest_steering_once_aligned_rad"]),
+                  f"< {ALIGNED_DRIFT_DEG} (steering falls to 0 and stays there)",
+                  numbers["largest_steering_once_aligned_rad"] is not None
+                  and math.degrees(numbers["largest_steering_once_aligned_rad"]) < ALIGNED_DRIFT_DEG)]
+
+
+def _degrees(radians):
+    """``radians`` in degrees to 0.1 (None stays None: never aligned)."""
+    return None if radians is None else round(math.degrees(radians), 1)
 
 
 def _fig_iv_15(numbers):
@@ -118,10 +129,11 @@ EXPERIMENTS = [
                    "within 0.5 m of the route Table IV.1 as published drives.", _fig_iv_12)),
     Experiment("fig-IV-13", f"{MODULE}:fig_iv_13", "free navigation and its commands α, V_r",
                "§IV.6.1, Figs IV.13–IV.14", Claim(
-                   "A positive maximal steering turns the robot left towards the goal; the speed rises to about "
-                   "3.5–4 m/s and falls to zero at the goal.",
-                   "The goal is reached, the first steering is to the left, the top speed is at least 3 m/s and the "
-                   "speed at the goal below 0.15 m/s; the route lies within 0.5 m of the published table's.",
+                   "A positive maximal steering turns the robot left towards the goal, then falls to zero once the "
+                   "robot has the goal's direction; the speed rises to about 3.5–4 m/s and falls to zero at the goal.",
+                   "The goal is reached; the first steering is to the left and the largest of the run, and once it "
+                   "has fallen below 1° it stays within 5°; the top speed is at least 3 m/s and the speed at the "
+                   "goal below 0.15 m/s; the route lies within 0.5 m of the published table's.",
                    _fig_iv_13)),
     Experiment("fig-IV-15", f"{MODULE}:fig_iv_15", "fuzzy-2b-thesis past circular obstacles, switches A...H",
                "§IV.6.2, Fig IV.15, Table IV.2", Claim(
