@@ -24,7 +24,7 @@ def test_an_edited_world_file_is_refused_on_resume(tmp_path, capsys):
     folder, out = _folder(tmp_path), tmp_path / "campaign"
     assert _bench(folder, out) == 0
     record = json.loads((out / "inputs.json").read_text())
-    assert record["models"] == {} and [len(d) for d in record["worlds"].values()] == [64]
+    assert record["models"] == {} and [len(d) for d in record["worlds"].values()] == [64, 64]  # a.yaml, the references
     assert _bench(folder, out, "--resume") == 0  # unchanged: resumes
     edited = load_scenario(folder / "a.yaml").to_dict()
     edited["max_time"] = 55.0  # the same name, another world
@@ -67,3 +67,27 @@ def test_a_model_file_named_in_capitals_is_a_model_file_for_every_command(tmp_pa
     capsys.readouterr()
     assert main(["fis", "show", str(model)]) == 2  # read as the model file it is
     assert "a 'q-goal' model file, not a fuzzy system" in capsys.readouterr().err
+
+
+def test_the_folder_spelled_otherwise_or_another_of_its_name_is_compared_too(tmp_path, capsys):
+    folder, out = _folder(tmp_path), tmp_path / "campaign"
+    assert _bench(folder, out) == 0
+    assert list(json.loads((out / "inputs.json").read_text())["worlds"]) == ["worlds/a.yaml", "worlds/benchmark.json"]
+    other = tmp_path / "elsewhere" / "worlds"  # the same suite name, another world under the same file name
+    other.mkdir(parents=True)
+    save_scenario(scenario_from_dict({**load_scenario("fig-IV-13").to_dict(), "max_time": 55.0}), other / "a.yaml")
+    for spelled in (other, f"{folder}/../worlds"):
+        if spelled != other:
+            (folder / "a.yaml").write_bytes((other / "a.yaml").read_bytes())
+        capsys.readouterr()
+        assert _bench(spelled, out, "--resume") == 2
+        assert "changed since its runs were made: worlds/a.yaml;" in capsys.readouterr().err
+
+
+def test_edited_reference_data_is_refused_on_resume(tmp_path, capsys):
+    folder, out = _folder(tmp_path), tmp_path / "campaign"
+    assert _bench(folder, out) == 0  # no benchmark.json: its reference data is none
+    (folder / "benchmark.json").write_text('{"scenarios": {"a": {"barn_optimal_path_m": 2.0}}}\n')
+    capsys.readouterr()
+    assert _bench(folder, out, "--resume") == 2  # the scores of the runs made would not be those of the new ones
+    assert "changed since its runs were made: worlds/benchmark.json;" in capsys.readouterr().err

@@ -19,8 +19,9 @@ Files in the output folder:
 - ``plant.json``: the plant that moved the robots (``--plant``, :mod:`fuzzynav.sim.plants`); a
   ``--resume`` with another plant is refused.
 - ``inputs.json``: the SHA-256 of every file the runs read under a name that may stay while the
-  content changes — the model files of ``--controllers`` (by label) and the scenario files of
-  folder suites; a ``--resume`` after one of them changed is refused, naming it.
+  content changes — the model files of ``--controllers`` (by label), the scenario files of
+  folder suites and each folder's reference data (by suite and file name, as the runs name their
+  worlds); a ``--resume`` after one of them changed is refused, naming it.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ from fuzzynav.bench import stored
 from fuzzynav.bench.backends import execute
 from fuzzynav.bench.cells import Cell
 from fuzzynav.bench.lock import campaign_lock
-from fuzzynav.bench.suites import Suite
+from fuzzynav.bench.suites import REFERENCE_FILE, Suite
 from fuzzynav.errors import InputError
 from fuzzynav.progress import bar as progress_bar, quiet as quiet_progress
 from fuzzynav.sim.plants import DEFAULT_PLANT
@@ -181,7 +182,7 @@ def _keep_settings(out: Path, plan: Plan, resuming: bool) -> None:
     _keep(out, "plant.json", {"plant": plan.plant}, resuming, stored.read_plant, DEFAULT_PLANT, lambda before: None
           if before == plan.plant else _mixed(f"the {before} plant", f"asks for {plan.plant}", "plants", "--plant"))
     inputs = {"models": {label: _file_sha256(spec) for label, spec in plan.controllers if is_model_file(spec)},
-              "worlds": {file: _file_sha256(file) for suite in plan.suites for file in suite.files}}
+              "worlds": _world_digests(plan.suites)}
 
     def changed(before):  # a folder written before inputs.json has nothing to compare
         names = [name for part in ("models", "worlds") for name in sorted(before[part].keys() & inputs[part].keys())
@@ -189,6 +190,22 @@ def _keep_settings(out: Path, plan: Plan, resuming: bool) -> None:
         return (f"changed since its runs were made: {', '.join(names)}; runs of different files cannot be mixed "
                 "(restore them, or choose another --out)", "--resume") if names else None
     _keep(out, "inputs.json", inputs, resuming, stored.read_inputs, None, changed)
+
+
+def _world_digests(suites) -> dict[str, str]:
+    """The SHA-256 of every scenario file of the folder suites, and of each folder's reference data
+    (``benchmark.json`` as read; none is ``{}``), keyed as the runs know them — suite name and file
+    name (``w/a.yaml``, ``w/benchmark.json``) — not by the path as typed, so that the same folder
+    spelled another way, or another folder of the same name, is compared with the record too."""
+    digests = {}
+    for suite in suites:
+        if suite.family is not None:
+            continue
+        for file in suite.files:
+            digests[f"{suite.name}/{Path(file).name}"] = _file_sha256(file)
+        reference = json.dumps(suite.references, sort_keys=True).encode()
+        digests[f"{suite.name}/{REFERENCE_FILE}"] = hashlib.sha256(reference).hexdigest()
+    return digests
 
 
 def _not_anothers(out: Path) -> None:
