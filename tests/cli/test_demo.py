@@ -34,6 +34,12 @@ def test_runs_whose_plots_would_share_a_file_are_refused_before_any_run(tmp_path
         (tmp_path / folder / "same.yaml").write_text(text)
     with pytest.raises(InputError, match=r"b/same\.yaml: --scenario: scenario '.+' is also the name of .+a/same\.yaml"):
         demo_runs([str(tmp_path / "a" / "same.yaml"), str(tmp_path / "b" / "same.yaml")], ["goal-seeking"])
+    for name, other in (("my world", "my_world"), ("Hall", "hall")):  # other names, one plot file ("Hall": any case)
+        for folder, scenario_name in (("a", name), ("b", other)):
+            (tmp_path / folder / "named.yaml").write_text(text.replace("name: example-goal", f"name: {scenario_name}"))
+        with pytest.raises(InputError, match=rf"b/named\.yaml: --scenario: scenario '{other}' is also the name of "
+                                             rf".+a/named\.yaml, as the name of a file \({other}--….png\)"):
+            demo_runs([str(tmp_path / "a" / "named.yaml"), str(tmp_path / "b" / "named.yaml")], ["goal-seeking"])
     with pytest.raises(InputError, match="fig-IV-23: --scenario: is given twice"):
         demo_runs(["fig-IV-23", "fig-IV-23"])
     with pytest.raises(InputError, match="--controllers: goal-seeking is given twice"):

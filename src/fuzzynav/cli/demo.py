@@ -68,6 +68,7 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
     out (every controller does one of the tasks the built-in scenarios hold)."""
     from fuzzynav.catalog.controllers import check_task, scenario_controllers, spec_of
     from fuzzynav.errors import InputError
+    from fuzzynav.storage import file_name_part
     from fuzzynav.world.scenario import list_scenarios
     from fuzzynav.world.scenario_file import open_scenario
 
@@ -78,16 +79,17 @@ def demo_runs(names=None, controllers=None, skipped: list | None = None) -> list
             raise InputError(error.problem, field="--controllers") from None
         if controller in controllers[:k]:
             raise InputError(f"{controller} is given twice", field="--controllers")
-    runs, named = [], {}
+    runs, named = [], {}  # the file name part of each scenario's plots (any case: some systems ignore it)
     for name in names or list_scenarios():
         scenario = open_scenario(name)
-        if named.get(scenario.name) == name:
+        plot_name = file_name_part(scenario.name).lower()
+        if named.get(plot_name) == name:
             raise InputError("is given twice", source=name, field="--scenario")
-        if scenario.name in named:  # its plots and table rows would be the other's
-            raise InputError(f"scenario {scenario.name!r} is also the name of {named[scenario.name]}: each run's plot is "
-                             "named after its scenario (give each file its own name: key)", source=name,
-                             field="--scenario")
-        named[scenario.name] = name
+        if plot_name in named:  # its plots and table rows would be the other's
+            raise InputError(f"scenario {scenario.name!r} is also the name of {named[plot_name]}, as the name of a "
+                             f"file ({file_name_part(scenario.name)}--….png): each run's plot is named after its "
+                             "scenario (give each file its own name: key)", source=name, field="--scenario")
+        named[plot_name] = name
         chosen = controllers or scenario_controllers(scenario, name)
         if not chosen and names:  # a built-in scenario without controllers is left out of the full demo
             raise InputError(f"scenario {scenario.name!r} names no controllers (no 'controllers' key): "
