@@ -3,6 +3,7 @@ reference (written out here independently), MATLAB's semantics, round trips, err
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -268,6 +269,26 @@ def test_an_outputs_default_travels_in_the_fis_file():
     X = np.array([[5.0], [0.5]])  # x = 5: no rule fires, the default answers
     np.testing.assert_allclose(again.evaluate(X), system.evaluate(X), rtol=0, atol=1e-12)
     assert system.evaluate(X)[0, 0] == 0.25
+
+
+@pytest.mark.parametrize(("edit", "refusal"), [
+    (("activation: General", "activation: Highest 1"), r"activation: the rule block's activation is Highest 1"),
+    (("activation: General", "activation: Threshold >= 0.5"), r"activation: the rule block's activation is Threshold"),
+    (("  enabled: true", "  enabled: false"), r"drg: drg is disabled \(enabled: false\)"),  # the first input
+])
+def test_what_a_fis_file_cannot_hold_is_refused_not_dropped(edit, refusal, tmp_path, capsys):
+    # written without it, the file answered otherwise than the engine it came from (the conversion said nothing)
+    assert main(["fis", "convert", "goal-seeking", "--to", "fll", "-o", str(tmp_path / "g.fll")]) == 0
+    text = (tmp_path / "g.fll").read_text()
+    assert edit[0] in text
+    (tmp_path / "e.fll").write_text(text.replace(edit[0], edit[1], 1))
+    capsys.readouterr()
+    assert main(["fis", "convert", str(tmp_path / "e.fll"), "--to", "fis", "-o", str(tmp_path / "e.fis")]) == 2
+    assert re.search(rf"e\.fll: {refusal}.*write it as fll$", capsys.readouterr().err.strip())
+    assert not (tmp_path / "e.fis").exists()
+    assert main(["fis", "convert", str(tmp_path / "e.fll"), "--to", "json", "-o", str(tmp_path / "e.json")]) == 2
+    assert capsys.readouterr().err.strip().endswith("does not hold (per-output settings, hedges, OR, several rule "
+                                                    "blocks...): write it as fll")  # not "or fis"
 
 
 def test_errors_name_file_line_and_field(tmp_path):

@@ -277,7 +277,12 @@ def _convert(args) -> int:
             said = args.to
         if said != args.to:
             raise InputError(f"the file's suffix says {said}, --to says {args.to}", field="-o")
-    _write(dumps(resolve(args.system), args.to), args.output)
+    system = resolve(args.system)
+    try:
+        text = dumps(system, args.to)
+    except InputError as error:  # what the format cannot hold: name the file that holds it
+        raise InputError(error.problem, source=error.source or args.system, field=error.field) from None
+    _write(text, args.output)
     return 0
 
 

@@ -50,8 +50,13 @@ def dumps(system: FuzzySystem | Engine, fmt: str) -> str:
         refusal = system_refusal(system)
         if refusal is not None:  # shaped as a system, refused for one value
             raise InputError(f"is a fuzzylite engine, not a fuzzy system: {refusal.problem}", field=refusal.field)
+        try:  # which of the line formats can hold it
+            to_fis(system)
+            formats = "fll or fis"
+        except InputError:
+            formats = "fll"
         raise InputError(f"{system.name or 'this engine'} uses fuzzylite features a {fmt.upper()} document does not "
-                         "hold (per-output settings, hedges, OR, several rule blocks...): write it as fll or fis",
+                         f"hold (per-output settings, hedges, OR, several rule blocks...): write it as {formats}",
                          field="--to")
     if fmt == "json":
         return json.dumps(to_document(system), indent=2, allow_nan=False) + "\n"

@@ -43,6 +43,7 @@ from fuzzynav.fuzzy.engine import Engine, model
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
 from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.io.fis_limits import refuse_what_fis_lacks
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.validation import MAX_RESOLUTION
 
@@ -347,12 +348,9 @@ def to_fis(system: FuzzySystem | Engine) -> str:
     from fuzzynav.fuzzy.engine.convert import system_to_engine
 
     engine = system_to_engine(system) if isinstance(system, FuzzySystem) else system
-    if len(engine.blocks) != 1:
-        raise InputError(".fis holds one rule block", field="rules")
+    refuse_what_fis_lacks(engine)
     block, outs = engine.blocks[0], engine.outputs
     d = outs[0].defuzzifier
-    if any(v.defuzzifier != d or v.aggregation != outs[0].aggregation for v in outs):
-        raise InputError(".fis gives every output the same defuzzifier and aggregation", field="outputs")
     integral = d is not None and d.integral
     kind = "mamdani" if integral else ("tsukamoto" if d and d.type == "Tsukamoto" else "sugeno")
     lines = ["[System]", f"Name='{engine.name}'", f"Type='{kind}'", "Version=2.0",

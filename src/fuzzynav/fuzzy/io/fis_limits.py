@@ -1,0 +1,35 @@
+"""What a MATLAB ``.fis`` file cannot hold, refused before one is written (:func:`fuzzynav.fuzzy.io.fis.to_fis`).
+
+A ``.fis`` file has one rule block that fires every rule on every variable, and one defuzzifier
+and aggregation for all its outputs. A fuzzylite engine that needs more — several blocks, a
+disabled block or variable (``enabled: false``), an activation that fires only some rules
+(fuzzylite's Highest, Lowest, Threshold, …), per-output settings — would answer otherwise once
+written without it, so it is refused, naming what it uses.
+"""
+
+from __future__ import annotations
+
+from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.fis_terms import number
+
+
+def refuse_what_fis_lacks(engine) -> None:
+    """Raise :class:`InputError` (its field the variable, ``rules``, ``activation`` or ``outputs``)
+    when ``engine`` (a :class:`~fuzzynav.fuzzy.engine.Engine`) uses what a ``.fis`` file cannot hold."""
+    if len(engine.blocks) != 1:
+        raise InputError(".fis holds one rule block", field="rules")
+    block, outs = engine.blocks[0], engine.outputs
+    if not block.enabled:
+        raise InputError("the rule block is disabled (enabled: false), which a .fis file cannot hold: write it as "
+                         "fll", field="rules")
+    if block.activation != "General":
+        activation = " ".join([block.activation, *(number(p) if isinstance(p, float) else str(p)
+                                                    for p in block.activation_params)])
+        raise InputError(f"the rule block's activation is {activation}; a .fis file applies every rule that fires "
+                         "(activation General): write it as fll", field="activation")
+    off = [v.name for v in engine.inputs + outs if not v.enabled]
+    if off:
+        raise InputError(f"{', '.join(off)} {'is' if len(off) == 1 else 'are'} disabled (enabled: false), which a "
+                         ".fis file cannot hold: write it as fll", field=off[0])
+    if any(v.defuzzifier != outs[0].defuzzifier or v.aggregation != outs[0].aggregation for v in outs):
+        raise InputError(".fis gives every output the same defuzzifier and aggregation", field="outputs")
