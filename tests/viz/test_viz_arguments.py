@@ -98,3 +98,17 @@ def test_flags_are_true_or_false_not_truthy(episode, tmp_path, call, field):
         call(trace, scenario, tmp_path)
     assert caught.value.field == field
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("draw", [
+    lambda trace, other, tmp_path: plot_episode(trace, other, tmp_path / "e.png"),
+    lambda trace, other, tmp_path: animate_episode(trace, other, tmp_path / "e.gif"),
+    lambda trace, other, tmp_path: plot_trajectory(trace, other),
+])
+def test_a_trace_is_drawn_only_on_the_scenario_it_ran_on(episode, tmp_path, draw):
+    # drawn on another world, its collision stood in empty space under its own title
+    trace, _ = episode
+    with pytest.raises(InputError, match=r"scenario: the trace was run on the goal scenario 'fig-IV-15a', not on the "
+                                         r"path scenario 'example-path'"):
+        draw(trace, load_scenario("example-path"), tmp_path)
+    assert not list(tmp_path.iterdir())

@@ -42,6 +42,17 @@ def check_scenario(scenario) -> Scenario:
     return scenario
 
 
+def check_ran_on(trace, scenario) -> tuple[Trace, Scenario]:
+    """``trace`` and ``scenario`` (:func:`check_trace`, :func:`check_scenario`), the trace run on that
+    scenario (its name and task): measured or drawn on another, its numbers and plots would be wrong."""
+    check_trace(trace), check_scenario(scenario)
+    if (trace.scenario, trace.task) != (scenario.name, scenario.task):
+        raise InputError(f"the trace was run on the {trace.task} scenario {trace.scenario!r}, not on the "
+                         f"{scenario.task} scenario {scenario.name!r}: measure or draw it with the scenario it ran "
+                         "on", field="scenario")
+    return trace, scenario
+
+
 def is_controller(value) -> bool:
     """Whether ``value`` is one controller (it has ``act`` or ``act_batch``)."""
     return callable(getattr(value, "act", None)) or callable(getattr(value, "act_batch", None))

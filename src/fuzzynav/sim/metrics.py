@@ -24,8 +24,7 @@ import math
 
 import numpy as np
 
-from fuzzynav.errors import InputError
-from fuzzynav.sim.arguments import check_scenario, check_trace
+from fuzzynav.sim.arguments import check_ran_on
 from fuzzynav.sim.trace import Trace
 from fuzzynav.world.polylines import path_length
 from fuzzynav.world.scenario import Scenario
@@ -49,12 +48,7 @@ def cross_track(positions, waypoints) -> np.ndarray:
 
 def metrics(trace: Trace, scenario: Scenario) -> dict:
     """The metrics dict of ``trace`` run on ``scenario`` (keys in the module docstring)."""
-    check_trace(trace)
-    check_scenario(scenario)
-    if (trace.scenario, trace.task) != (scenario.name, scenario.task):
-        raise InputError(f"the trace was run on the {trace.task} scenario {trace.scenario!r}, not on the "
-                         f"{scenario.task} scenario {scenario.name!r}: measure it against the scenario it ran on",
-                         field="scenario")
+    check_ran_on(trace, scenario)
     xy = trace.pose[:, :2]
     world = scenario.world
     clearance = (world.clearance(xy) if trace.obstacle_offsets is None

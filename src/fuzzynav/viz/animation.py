@@ -25,7 +25,7 @@ from PIL import Image
 
 from fuzzynav import validation
 from fuzzynav.settings import flag
-from fuzzynav.sim.arguments import check_scenario, check_trace
+from fuzzynav.sim.arguments import check_ran_on
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import atomic_write
 from fuzzynav.viz.moving import MovingArtists
@@ -91,7 +91,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     """Write the episode as a GIF of ``size`` × ``size`` pixels at ``fps`` frames per second to
     ``path``, at most ``max_frames`` frames; returns the number of frames. Bad values are refused
     before anything is drawn (:func:`check_options`)."""
-    check_trace(trace), check_scenario(scenario)
+    check_ran_on(trace, scenario)
     rays = flag(rays, "rays")
     path, fps, max_frames, size = check_options(trace, path, fps, max_frames, size)
     dpi = size / 5

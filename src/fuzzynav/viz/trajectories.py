@@ -25,7 +25,7 @@ from matplotlib.figure import Figure
 
 from fuzzynav import validation
 from fuzzynav.settings import flag
-from fuzzynav.sim.arguments import check_scenario, check_trace
+from fuzzynav.sim.arguments import check_ran_on, check_trace
 from fuzzynav.sim.trace import Trace
 from fuzzynav.storage import savefig_atomic
 from fuzzynav.viz.moving import draw_moving
@@ -130,7 +130,7 @@ def plot_trajectory(trace: Trace, scenario: Scenario, ax=None, *, rays: bool = F
     """Trajectory of ``trace`` on the world; returns the axes. The legend, below the axes, names
     each behaviour's code and meaning and what the letters mark. With ``rays``, the sensor rays
     of every ``ray_every``-th step (an integer >= 1)."""
-    check_trace(trace), check_scenario(scenario)
+    check_ran_on(trace, scenario)
     rays, markers = flag(rays, "rays"), flag(markers, "markers")
     ray_every = validation.integer(ray_every, field="ray_every", lo=1)
     if ax is None:
@@ -187,7 +187,7 @@ def plot_commands(trace: Trace, axes=None):
 def plot_episode(trace: Trace, scenario: Scenario, path=None, *, rays: bool = False) -> Figure:
     """Trajectory (left) and commands (right) in one figure; saved to ``path`` if given (PNG, or
     the format its suffix names: one matplotlib writes, :func:`figure_file`, checked first)."""
-    check_trace(trace), check_scenario(scenario)
+    check_ran_on(trace, scenario)
     rays = flag(rays, "rays")
     if path is not None:
         path = figure_file(path)
