@@ -42,7 +42,7 @@ register_controller(ControllerSpec(
     "the default navigator: the five behaviours on a lidar, steering through the gap that fits the body, "
     "aimed along a route planned for the car (hybrid A* with reverse arcs) on what it has sensed; recovery, "
     "loop escape, a speed set by the room ahead, and yielding to moving obstacles its tracks predict; what each "
-    "version added, and the options that give the earlier ones: docs/guide/controllers.md",
+    "version added, and the options that give the earlier ones: *Versions of fuzzy-5b* in docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
     "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=15))

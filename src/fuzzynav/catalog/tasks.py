@@ -59,7 +59,7 @@ _thesis_task("anfis-tracker", "trackers", "anfis-tracker", "ANFIS tracker, 1 inp
 _thesis_task("q-goal", "tabular_goal", "q-goal", "tabular Q-learning goal seeking, 13 states x 3 actions (§VI.2)")
 _thesis_task("fql-goal", "fql_goal", "fql-goal", "FQL goal seeking, 15 rules x 3, steering then speed (§VI.5.1)")
 _thesis_task("fql-goal-35", "fql_goal", "fql-goal", "FQL goal seeking, 35 rules x 5 (Figs VI.13-VI.14)")
-_thesis_task("fql-goal-traces", "fql_goal", "fql-goal", "FQL goal seeking with eligibility traces (VI.16)")
+_thesis_task("fql-goal-traces", "fql_goal", "fql-goal", "FQL goal seeking with eligibility traces (Fig VI.16)")
 _thesis_task("fql-avoid", "fql_avoid", "fql-avoid",
              "FQL obstacle avoidance, 8 rules x which side is more open, as a goal navigator (§VI.5.2)")
 _thesis_task("fql-wall", "fql_wall", "fql-wall", "wall follower of Table VI.2 optimised by FQL (§VI.5.3.2)")

@@ -20,7 +20,7 @@ from fuzzynav import progress as progress_bars, threads, validation
 from fuzzynav.catalog.controllers import CONTROLLERS, check_task
 from fuzzynav.catalog.roles import make_with_systems, replaced_files, systems_from_options
 from fuzzynav.cli import arguments, help_line
-from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, SENSORS_HELP
+from fuzzynav.cli.run import DEFAULT_CONTROLLER, PLANT_HELP, WORLDS_SENSORS_HELP
 from fuzzynav.errors import InputError
 from fuzzynav.world.generate import KINDS, check_family
 
@@ -45,7 +45,7 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     parser.add_argument("--n", type=arguments.count(validation.MAX_WORLDS), default=100,
                         help=f"number of worlds, 1 to {validation.MAX_WORLDS:,} (default 100)")
     parser.add_argument("--seed", type=arguments.seed, default=0, help="world and episode seed (default 0)")
-    parser.add_argument("--sensors", metavar="RING", default=None, help=SENSORS_HELP)
+    parser.add_argument("--sensors", metavar="RING", default=None, help=WORLDS_SENSORS_HELP)
     parser.add_argument("--plant", metavar="PLANT", default="kinematic", help=PLANT_HELP)
     parser.add_argument("--workers", type=arguments.count(validation.MAX_WORKERS), default=None, metavar="N",
                         help=f"parallel processes, 1 to {validation.MAX_WORKERS} (default: the cores this process may use); "

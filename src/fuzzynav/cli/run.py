@@ -21,9 +21,11 @@ from fuzzynav.catalog.controllers import available, check_task, scenario_control
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
-SENSORS_HELP = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
-                "over 270°); default: the scenario's, else the controller's (lidar for fuzzy-5b and its other name "
-                "fuzzy-5b-gap-robust, fuzzy-5b-gap and fuzzy-2b-gap, thesis for the others)")
+_RINGS = ("range sensors: thesis (7 rays, 30° apart), beam (the 7 with a 30° sonar cone) or lidar (271 rays "
+          "over 270°); default: {whose} (lidar for fuzzy-5b and its other name fuzzy-5b-gap-robust, fuzzy-5b-gap "
+          "and fuzzy-2b-gap, thesis for the others)")
+SENSORS_HELP = _RINGS.format(whose="the scenario's, else the controller's")
+WORLDS_SENSORS_HELP = _RINGS.format(whose="the controller's")  # evaluate: generated worlds name no sensors
 
 
 PLANT_HELP = ("what moves the robot and reads its sensors: kinematic (the thesis' model, default) or mujoco (a "

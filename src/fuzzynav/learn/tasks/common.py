@@ -240,8 +240,9 @@ class PhaseSummary(dict):
     printed by ``fuzzynav train`` as one readable line ("not converged within N episodes" for ``None``)."""
 
     def __str__(self) -> str:
-        converged = (f"not converged within {self['episodes']} episodes (the mean reward per episode did not "
-                     f"settle on a plateau; more --episodes may help)" if self["converged_at"] is None
+        converged = (f"not converged within {self['episodes']} episodes (no plateau of the mean reward per episode "
+                     "held for the criterion's whole hold before the budget ended; more --episodes may show one, "
+                     "which may begin before this run's end)" if self["converged_at"] is None
                      else f"converged at episode {self['converged_at']}")
         return (f"{self['episodes']} episodes, {converged}; success in the last training episodes "
                 f"{self['final_training_success']:.1%} (goal reached, or for wall following no collision before "
