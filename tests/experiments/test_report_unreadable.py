@@ -62,6 +62,6 @@ def test_readable_records_give_the_page_as_before(tmp_path):
     _record(tmp_path, KEY)
     page = report.write_index(tmp_path).read_text(encoding="utf-8")
     assert "unreadable" not in page
-    assert f"1 of {len(report.registry.available())} experiments in this folder; reproduced: 1 of 1; total run time" \
+    assert f"1 of {len(report.registry.available())} experiments in this folder; reproduced: 1 of 1; their run times add up to" \
         in page
     assert "quick run (short budgets), seed 0, run time 1.5 s (finished 2024-01-01 00:00 UTC)" in page

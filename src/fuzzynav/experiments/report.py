@@ -215,8 +215,9 @@ def write_index(out_dir: Path) -> Path:
 Université de Biskra, 2014). Each section puts the thesis' claim (translated) beside the figure and the numbers
 of this run, checks the claim on those numbers and gives the verdict: reproduced (every check passes), partly or
 not reproduced. Checks of this package's own targets (numbers the thesis does not give) are listed apart.
-{found}; reproduced: {held} of {len(records)}; total run time
-{sum(r["seconds"] for r, _, _ in records.values()):.0f} s.</p>
+{found}; reproduced: {held} of {len(records)}; their run times add up to
+{sum(r["seconds"] for r, _, _ in records.values()):.0f} s (run side by side in worker processes, a command takes
+less).</p>
 <table><tr><th>experiment</th><th>verdict</th><th>run time</th><th>setting</th></tr>{rows}</table>
 {sections}
 </body></html>
