@@ -35,6 +35,15 @@ def test_gif_frames_follow_the_robot_over_a_fixed_world(tmp_path):
     assert blue[1] > blue[0] + 50
 
 
+def test_a_frame_rate_a_gif_cannot_hold_is_rounded_to_the_nearest_it_can(tmp_path):
+    # a GIF's frame time is whole 10 ms: 15 fps is 66.7 ms, played as 70 (14.3 fps), not cut to 60 (16.7 fps)
+    scenario = load_scenario("fig-IV-15a")
+    trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0, max_time=1.0)
+    for fps, step in ((15, 70), (12, 80), (100, 10), (0.1, 10000)):
+        animate_episode(trace, scenario, tmp_path / "r.gif", max_frames=3, fps=fps, size=64, rays=False)
+        assert set(_frames(tmp_path / "r.gif")[1][:-1]) == {step}, fps
+
+
 def test_short_episode_keeps_every_step(tmp_path):
     scenario = load_scenario("fig-IV-15a")
     trace = run_episode(scenario, make_controller("fuzzy-2b-thesis"), seed=0, max_time=0.5)

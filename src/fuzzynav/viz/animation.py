@@ -146,7 +146,7 @@ def animate_episode(trace: Trace, scenario: Scenario, path, *, fps: float = 10, 
     # as soon as it is drawn, so the frames are held at one byte a pixel, not three
     palette = image(frames[-1]).quantize(colors=64)
     images = [image(k).quantize(palette=palette, dither=Image.Dither.NONE) for k in frames]
-    step_ms = max(10, int(round(1000 / fps)))
+    step_ms = 10 * max(1, round(100 / fps))  # a GIF's frame time is whole 10 ms: the nearest (15 fps: 70 ms, not 60)
     durations = [step_ms] * (len(images) - 1) + [max(step_ms, int(1000 * HOLD_S))]
     atomic_write(path, lambda handle: images[0].save(handle, format="GIF", save_all=True, append_images=images[1:],
                                                      duration=durations, loop=0))
