@@ -219,6 +219,19 @@ def _place(check: Checks, world: World, point, field: str, what: str, radius: fl
         check.fail(field, f"{what} ({point[0, 0]:g}, {point[0, 1]:g}) is {where} obstacles[{index[0]}] ({kind})")
 
 
+def _not_another_kind(document, source: str) -> None:
+    """A model file or a fuzzy system given where a scenario is read is named as what it is (its
+    first unknown key said nothing of it)."""
+    if not isinstance(document, dict) or "robot" in document:
+        return
+    if isinstance(document.get("kind"), str):
+        raise InputError(f"a model file (kind {document['kind']!r}), not a scenario: a model drives a scenario "
+                         "(`fuzzynav run SCENARIO --model FILE`)", source=source, field="kind")
+    if {"inputs", "outputs", "rules"} <= document.keys():
+        raise InputError("a fuzzy system, not a scenario: it stands in for a controller's rule table "
+                         "(`fuzzynav run SCENARIO --fis ROLE=FILE`; `fuzzynav fis show FILE` shows it)", source=source)
+
+
 def scenario_from_dict(document, source: str = "<scenario>", name: str | None = None,
                        robot_radius: float = DEFAULT_PARAMS.radius) -> Scenario:
     """Validate a parsed scenario document and build the :class:`Scenario`.
@@ -229,6 +242,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
     ``robot.radius`` is used for both checks.
     """
     check = Checks(source)
+    _not_another_kind(document, source)
     doc = check.mapping(document, "", TOP_KEYS, required=["robot"])
     tasks = [key for key in ("goal", "path", "target") if key in doc]
     if len(tasks) != 1:
