@@ -206,6 +206,7 @@ def tune(request: TuneRequest) -> dict:
                                n_obj=len(_columns(request)))
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
     reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
+    _check_stored_fit(path, stored, n_worlds, request.budget, reserve)
     best_x, best = space.start, math.inf
     curve = []  # (episodes, best cost so far)
     with progress.bar(total=request.budget, desc=f"tune {request.target} ({request.method})", unit="episode") as bar:
@@ -246,6 +247,19 @@ def tune(request: TuneRequest) -> dict:
         result["evaluations"] += chosen["evaluations"]
         result["episodes"] += chosen["episodes"]
     return result
+
+
+def _check_stored_fit(path, stored, n_worlds: int, budget: int, reserve: int) -> None:
+    """Refuse a checkpoint holding more training episodes than ``budget`` leaves for training
+    (after the ``reserve`` of validation episodes): replaying it would cut its generations short
+    and rewrite both the checkpoint and the result of the longer run."""
+    held = sum(len(x) for x, _ in stored) * n_worlds
+    if held > budget - reserve:
+        asked = f"{budget - reserve} training episodes ({reserve} of --budget {budget} validate)" if reserve \
+            else f"{budget}"
+        raise InputError(f"the checkpoint already holds {held} episodes, more than the {asked} this run asks "
+                         "for: resume with at least as large a --budget, or tune afresh without --resume",
+                         source=str(path), field="--budget")
 
 
 def _validate(request, space, controller, suite, generations, wall: bool) -> dict:
