@@ -11,9 +11,11 @@ interrupted run (Ctrl-C, crash) always leaves the previous checkpoint intact. It
 
 A checkpoint is checked against itself when read: ``digest``, the SHA-256 of the rest of the
 document (canonical JSON), must match, and the curve must hold exactly ``episode`` batches, each
-with as many rows in every record — an edited episode counter or curve is refused instead of
-resuming into another model (a checkpoint without a digest, written by hand or by an older
-version, gets the second check only).
+with as many rows in every record, every value one a run can give (``success`` true or false,
+``mean_reward`` finite, ``steps`` a whole number ≥ 1) — an edited episode counter or curve is
+refused instead of resuming into another model. A checkpoint without a digest (written by hand or
+by an older version) gets these checks, and its learner's episode counter must equal ``episode``
+(with a digest it may be larger: a learner that trained before :func:`train_loop` was called).
 Resuming is refused — an :class:`~fuzzynav.errors.InputError` naming the field — when the
 checkpoint belongs to another run: any setting of ``extra`` or of the learner differs, or the
 checkpoint has already done more episodes than the run asks for (:func:`check_same_run`).
@@ -93,17 +95,37 @@ def load_checkpoint(path) -> dict:
         raise InputError(f"must map {', '.join(_CURVE_FIELDS)} to lists", source=str(path), field="curve")
     for key in _CURVE_FIELDS:
         for i, row in enumerate(curve[key]):
-            if not isinstance(row, list):  # a batch's record: one value per episode of the batch
-                raise InputError(f"must be a list of the batch's episodes, got {str(row)[:60]}", source=str(path),
-                                 field=f"curve.{key}[{i}]")
-            try:
-                kind = np.asarray(row).dtype.kind
-            except ValueError:  # ragged
-                kind = "O"
-            if kind not in "biuf":
-                raise InputError(f"must hold numbers, got {str(row)[:60]}", source=str(path), field=f"curve.{key}[{i}]")
+            _check_record(key, row, str(path), f"curve.{key}[{i}]")
     _check_itself(document, str(path))
     return document
+
+
+def _check_record(key: str, row, source: str, field: str) -> None:
+    """One batch's record of curve field ``key``: a list of one value per episode of the batch
+    (a list per reward head for ``mean_reward``), each a value :func:`run_episodes` can give —
+    ``success`` true or false (or 1 or 0), ``mean_reward`` a finite number, ``steps`` a whole
+    number ≥ 1."""
+    if not isinstance(row, list) or not row:
+        raise InputError(f"must be a list of the batch's episodes, got {str(row)[:60]}", source=source, field=field)
+    try:
+        values = np.asarray(row)
+    except ValueError:  # ragged
+        values = np.asarray(None)
+    if values.dtype.kind not in "biuf":
+        raise InputError(f"must hold numbers, got {str(row)[:60]}", source=source, field=field)
+    if values.ndim not in ((1, 2) if key == "mean_reward" else (1,)):
+        raise InputError(f"must be a list of the batch's episodes, got {str(row)[:60]}", source=source, field=field)
+    flat, numbers = values.ravel(), values.ravel().astype(float)
+    if key == "success":
+        bad, want = ~np.isin(numbers, (0.0, 1.0)), "true or false"
+    elif key == "mean_reward":
+        bad, want = ~np.isfinite(numbers), "a finite number"
+    else:
+        whole = np.isfinite(numbers) & (numbers == np.round(numbers)) & (numbers >= 1) & (values.dtype.kind != "b")
+        bad, want = ~whole, "a whole number of steps ≥ 1"
+    if bad.any():
+        raise InputError(f"must be {want}, got {validation.shown(flat[np.argmax(bad)].item())}", source=source,
+                         field=field)
 
 
 def _check_itself(document: dict, source: str) -> None:
@@ -117,6 +139,11 @@ def _check_itself(document: dict, source: str) -> None:
         if len({len(row) for row in rows}) != 1:
             raise InputError("its records disagree on the number of episodes of this batch", source=source,
                              field=f"curve[{i}]")
+    counted = document["learner"].get("episode", 0)
+    if "digest" not in document and counted != episode:  # with a digest, its learner may have trained before
+        raise InputError(f"the learner counts {validation.shown(counted)} batches of episodes, but the checkpoint "
+                         f"says {episode} were done: the file was edited; train afresh without --resume",
+                         source=source, field="learner.episode")
 
 
 def _check_digest(document: dict, source: str) -> None:
