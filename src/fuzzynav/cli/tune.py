@@ -79,6 +79,8 @@ def run(args) -> int:
         raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
     if request.resume and checkpoint is not None and not checkpoint.is_file():
         print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
+    if request.out is None:  # said before the search, not after it
+        print("no --out: the tuned system will be reported, not written (and no checkpoint kept)", file=sys.stderr)
     with threads.using(args.workers), progress.quiet(not request.progress):
         result = tune(request)
     written = _write(request, result)
@@ -140,6 +142,4 @@ def _write(request, result) -> list[str]:
         plot_curve(result["curve"], request.curve, title=f"{request.target}, {request.method}",
                    start=result["start"]["training"]["cost"])
         written.append(request.curve)
-    if not written:
-        print("nothing written (no --out)", file=sys.stderr)
     return written
