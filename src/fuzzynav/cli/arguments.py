@@ -10,6 +10,7 @@ import argparse
 import math
 import os
 import re
+import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
@@ -133,8 +134,9 @@ def path(text: str) -> Path:
 def check_writable(path, field: str, *, create: bool = True) -> Path:
     """``path`` as a file this process can write at the end of a long run, checked before the run:
     not a folder, and its folder — or, with ``create`` (saves make missing folders), the nearest
-    folder above it that exists — a folder it may write in. A stream (``/dev/stdout``) passes.
-    Otherwise an InputError naming ``field``."""
+    folder above it that exists — a folder it may write in, tried by making (and removing) a
+    temporary file there (root may "access" ``/proc`` but not write there). A stream
+    (``/dev/stdout``) passes. Otherwise an InputError naming ``field``."""
     path = Path(os.path.realpath(path)) if Path(path).is_symlink() else Path(path)  # a save writes the target
     if path.is_dir():
         raise InputError("is a directory; give the file to write", source=str(path), field=field)
@@ -149,6 +151,13 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
         raise InputError(f"no folder {folder} to write it in", source=str(path), field=field)
     if not os.access(folder, os.W_OK | os.X_OK):
         raise InputError(f"cannot write in the folder {folder}", source=str(path), field=field)
+    try:
+        handle, probe = tempfile.mkstemp(dir=folder, prefix=".fuzzynav-", suffix=".tmp")
+    except OSError as error:
+        raise InputError(f"cannot write in the folder {folder} ({error.strerror or error})", source=str(path),
+                         field=field) from None
+    os.close(handle)
+    os.unlink(probe)
     return path
 
 

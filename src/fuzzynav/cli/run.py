@@ -105,6 +105,9 @@ def run(args) -> int:
     if args.plot and args.animate and Path(args.plot).resolve() == Path(args.animate).resolve():
         raise InputError(f"{args.animate} is the --plot file too: one would overwrite the other; give two names",
                          field="--animate")
+    for flag, target in (("--plot", args.plot), ("--animate", args.animate)):  # before the episode, not after
+        if target:
+            arguments.check_writable(target, flag)
     scenario = open_scenario(args.scenario)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario, args.scenario)
