@@ -163,6 +163,11 @@ def run(args) -> int:
     from fuzzynav.cli.warmup import announce, warm_up
     from fuzzynav.errors import InputError
 
+    if args.out.exists() and not args.out.is_dir():  # before the header and the compiling, not after them
+        raise InputError("is a file, not a folder (give a new or an existing folder)", source=str(args.out),
+                         field="--out")
+    for table in ("metrics.json", "metrics.md"):  # a folder of that name, a file above --out, no permission
+        arguments.check_writable(args.out / table, "--out")
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     if args.controllers:
         driven = ", ".join(args.controllers)
@@ -183,10 +188,7 @@ def run(args) -> int:
     from fuzzynav.bench.backends import pool_map
     from fuzzynav.storage import write_text_atomic
 
-    args.out.mkdir(parents=True, exist_ok=True)  # an unusable --out fails before the compiling, not after the runs
-    for table in ("metrics.json", "metrics.md"):
-        if (args.out / table).is_dir():
-            raise InputError("is a folder where the demo writes its table", source=str(args.out / table), field="--out")
+    args.out.mkdir(parents=True, exist_ok=True)
     warm_up(list(dict.fromkeys(name for _, name in runs)))
     rows: list[dict] = []
     finished: dict[int, tuple[dict, str]] = {}
