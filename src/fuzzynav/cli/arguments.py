@@ -161,6 +161,18 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
     return path
 
 
+def check_folder(folder, field: str, files=()) -> Path:
+    """``folder`` as an output folder, checked before the work that fills it (without making it):
+    not a file, and each of ``files`` in it a file this process can write (:func:`check_writable`).
+    Otherwise an InputError naming ``field``."""
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise InputError("is a file, not a folder (give a new or an existing folder)", source=str(folder), field=field)
+    for name in files:
+        check_writable(folder / name, field)
+    return folder
+
+
 def figure_path(text: str) -> str:
     """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG),
     checked by :func:`fuzzynav.viz.trajectories.figure_file`, as the Python API checks it."""

@@ -161,13 +161,8 @@ def run_one(item: tuple[str, str, Path | None]) -> tuple[dict, str]:
 
 def run(args) -> int:
     from fuzzynav.cli.warmup import announce, warm_up
-    from fuzzynav.errors import InputError
 
-    if args.out.exists() and not args.out.is_dir():  # before the header and the compiling, not after them
-        raise InputError("is a file, not a folder (give a new or an existing folder)", source=str(args.out),
-                         field="--out")
-    for table in ("metrics.json", "metrics.md"):  # a folder of that name, a file above --out, no permission
-        arguments.check_writable(args.out / table, "--out")
+    arguments.check_folder(args.out, "--out", ("metrics.json", "metrics.md"))  # before the header, not after
     what = ", ".join(args.scenario) if args.scenario else "the built-in thesis scenarios"
     if args.controllers:
         driven = ", ".join(args.controllers)

@@ -45,8 +45,7 @@ def run(args) -> int:
     from fuzzynav.world.scenario import scenario_from_dict
 
     validation.positive(args.scale, field="--scale")
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = arguments.check_folder(args.out, "--out", (REFERENCE_FILE,))  # made by the first file written
     reference_file = out / REFERENCE_FILE
     references = {}
     if reference_file.is_file():
