@@ -25,4 +25,4 @@ def test_a_table_name_taken_by_a_folder_is_refused_first(tmp_path, capsys):
     (tmp_path / "o" / "metrics.md").mkdir(parents=True)
     assert main(["demo", "--scenario", "fig-IV-12a", "--out", str(tmp_path / "o")]) == 2
     captured = capsys.readouterr()
-    assert captured.out == "" and "metrics.md: --out: is a directory" in captured.err
+    assert captured.out == "" and "metrics.md: --out: is a folder where this command writes a file" in captured.err

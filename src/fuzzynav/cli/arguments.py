@@ -163,12 +163,14 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
 
 def check_folder(folder, field: str, files=()) -> Path:
     """``folder`` as an output folder, checked before the work that fills it (without making it):
-    not a file, and each of ``files`` in it a file this process can write (:func:`check_writable`).
-    Otherwise an InputError naming ``field``."""
+    not a file, and each of ``files`` in it not a folder but a file this process can write
+    (:func:`check_writable`). Otherwise an InputError naming ``field``."""
     folder = Path(folder)
     if folder.exists() and not folder.is_dir():
         raise InputError("is a file, not a folder (give a new or an existing folder)", source=str(folder), field=field)
     for name in files:
+        if (folder / name).is_dir():
+            raise InputError("is a folder where this command writes a file", source=str(folder / name), field=field)
         check_writable(folder / name, field)
     return folder
 
