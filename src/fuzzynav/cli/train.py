@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import json
 import sys
+from functools import partial
 from pathlib import Path
 
 from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path, checkpoint_progress
+from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path
 from fuzzynav.storage import document_format
 
 PRIORS = ("none", "thesis")
@@ -90,9 +91,9 @@ def run(args) -> int:
         parallel=args.parallel,
         prior=args.prior,
         progress=progress.enabled() and not (args.quiet or args.json),
+        # said before hours of training, once every checkpoint it goes on from was checked
+        on_resume=partial(_say_where_it_resumes, out) if args.resume and args.task in PARALLEL_TASKS else None,
     )
-    if args.resume and args.task in PARALLEL_TASKS:  # said before hours of training
-        _say_where_it_resumes(out)
     result = train(request)
     if args.json:
         print(json.dumps(result, default=str))
@@ -105,13 +106,12 @@ def run(args) -> int:
     return 0
 
 
-def _say_where_it_resumes(out: Path) -> None:
-    """``--resume``: the episodes each phase's checkpoint holds (a resumed run prints the same
-    report as a fresh one), or that there is none to resume."""
-    found = [(phase, path) for phase in ("steering", "speed") if (path := checkpoint_path(out, phase)).exists()]
-    for phase, path in found:
-        print(f"--resume: the {phase} phase goes on from {path}, {checkpoint_progress(path, True)[1]} episodes "
-              "done", file=sys.stderr)
+def _say_where_it_resumes(out: Path, found: list) -> None:
+    """``--resume``: the episodes each phase's checkpoint holds, ``found`` [(phase, checkpoint,
+    episodes done)] (a resumed run prints the same report as a fresh one), or that there is none
+    to resume."""
+    for phase, path, done in found:
+        print(f"--resume: the {phase} phase goes on from {path}, {done} episodes done", file=sys.stderr)
     if not found:
         print(f"--resume: no checkpoint at {checkpoint_path(out, 'steering')}: training from the start",
               file=sys.stderr)

@@ -182,18 +182,34 @@ def check_same_run(document: dict, settings: dict, budget: int | None = None, so
                          "or train afresh without --resume", source=source, field="episodes")
 
 
+def check_resumable(path, settings: dict, budget: int | None = None, learner=None) -> dict:
+    """The checkpoint at ``path`` (:func:`load_checkpoint`), once known to be one a run of
+    ``settings`` and ``budget`` may go on from (:func:`check_same_run`) — and ``learner``, when
+    given (its settings, as :func:`restore` checks them); nothing is restored."""
+    document = load_checkpoint(path)
+    check_same_run(document, settings, budget, str(path))
+    if learner is not None:
+        _check_learner(document, learner, str(path))
+    return document
+
+
+def _check_learner(document: dict, learner, source: str) -> None:
+    """``learner`` was built with the settings of the one saved in ``document`` (its non-state fields)."""
+    saved, current = document["learner"], learner.to_dict()
+    for name in current.keys() | saved.keys():
+        if name not in _STATE_FIELDS and current.get(name) != saved.get(name):
+            raise InputError(f"the checkpoint was written with another setting ({saved.get(name)!r} "
+                             f"instead of {current.get(name)!r})", source=source, field=f"learner.{name}")
+
+
 def restore(learner, rng: np.random.Generator, document: dict, source: str = "checkpoint") -> None:
     """Put a checkpoint's learner state and RNG state into ``learner`` and ``rng`` (in place).
 
     The learner must have been built with the same settings as the one saved (its non-state
     fields must match); otherwise the checkpoint belongs to another run and is refused.
     """
-    saved, current = document["learner"], learner.to_dict()
-    for name in current.keys() | saved.keys():
-        if name not in _STATE_FIELDS and current.get(name) != saved.get(name):
-            raise InputError(f"the checkpoint was written with another setting ({saved.get(name)!r} "
-                             f"instead of {current.get(name)!r})", source=source, field=f"learner.{name}")
-    restore_state(learner, saved, source)
+    _check_learner(document, learner, source)
+    restore_state(learner, document["learner"], source)
     try:
         rng.bit_generator.state = document["rng"]
     except (TypeError, ValueError, KeyError, OverflowError) as error:
@@ -253,7 +269,7 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
     ``steps`` and ``success`` to one entry per batch (a list over its B rows). ``batch_size``
     (B) and ``desc`` only label the bar: it then counts single episodes, B per batch, starting
     from the single episodes of the curve restored (a resumed run whose earlier batches had
-    another size, e.g. the smaller last batch of ``learn.tasks.common.batch_plan``).
+    another size, e.g. the smaller last batch of ``learn.tasks.plan.batch_plan``).
     ``extra`` holds the settings that shape the run and ``budget`` the single episodes it is to
     do in all: a checkpoint of another run, or one past the budget, is refused (:func:`check_same_run`).
     """
@@ -264,8 +280,7 @@ def train_loop(env, learner, episodes: int, rng: np.random.Generator, *, checkpo
     if checkpoint is not None:
         remove_stale_temporaries(checkpoint)
     if resume and checkpoint is not None and Path(checkpoint).exists():
-        document = load_checkpoint(checkpoint)
-        check_same_run(document, extra or {}, budget, str(checkpoint))
+        document = check_resumable(checkpoint, extra or {}, budget)
         restore(learner, rng, document, str(checkpoint))
         curve = document["curve"]
         start = resumed_from = int(document["episode"])

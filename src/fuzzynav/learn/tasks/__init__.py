@@ -8,6 +8,7 @@
 :mod:`.fql_avoid`      ``fql-avoid``: FQL obstacle avoidance inside the goal navigator (§VI.5.2)
 :mod:`.fql_wall`       ``fql-wall``: the wall follower of Table VI.2 optimised by FQL (§VI.5.3.2)
 :mod:`.common`         what they share: the request, phases, budgets, convergence, curves, files
+:mod:`.plan`           a phase's batches: full ones, a smaller last one, from where its checkpoint stopped
 =====================  =======================================================================
 
 A task module exposes ``train_…(request) -> dict`` (the results ``fuzzynav train`` prints, at

@@ -22,6 +22,7 @@ the single robot's every episode, is one random world: :func:`criterion`). The r
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -37,11 +38,12 @@ from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
-from fuzzynav.learn.checkpoint import episodes_done, load_checkpoint, train_loop
+from fuzzynav.learn.checkpoint import check_resumable, episodes_done, train_loop
 from fuzzynav.learn.curves import episodes_to_converge
 from fuzzynav.learn.exploration import EpsilonGreedy
 from fuzzynav.learn.fql import FuzzyQLearner
 from fuzzynav.learn.schedules import ExponentialDecay, InverseVisits
+from fuzzynav.learn.tasks.plan import batch_plan, checkpoint_progress
 from fuzzynav.storage import save_document, savefig_atomic
 from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE
 
@@ -88,6 +90,7 @@ class TrainRequest:
     progress: bool = True
     parallel: int | None = None  # robots per batch (--parallel); None: the thesis' one robot at a time
     prior: str | None = None  # fql-avoid's initial table (--prior none | thesis); None: the task's default
+    on_resume: Callable[[list], None] | None = None  # told what a resumed run goes on from (check_resume)
 
 
 def save_model(request: TrainRequest, document: dict) -> None:
@@ -145,33 +148,17 @@ class Phase:
     convergence: dict = None  # settings of the criterion: GOAL_CONVERGENCE (default) or WORLD_CONVERGENCE
 
 
+PHASES = ("steering", "speed")  # the phases' names, in their order
+
+
 def checkpoint_path(out: Path, phase: str) -> Path:
     return Path(out).with_name(f"{Path(out).name}.{phase}.checkpoint.json")
-
-
-def batch_plan(episodes: int, batch: int, done: tuple[int, int] = (0, 0)) -> list[tuple[int, int]]:
-    """(batches to reach, episodes per batch) of a phase of ``episodes`` single episodes: full
-    batches of ``batch``, then one last batch of the remainder (fewer parallel episodes) if any.
-    ``done``: the (batches, single episodes) a resumed checkpoint has already run, whose last batch
-    may have been a smaller one — the plan covers the episodes still to run."""
-    batches, singles = done
-    full, rest = divmod(max(int(episodes) - singles, 0), int(batch))
-    plan = [(batches + n, size) for n, size in ((full, batch), (full + 1, rest)) if n and size]
-    return plan or [(batches, batch)]  # nothing left to run: the loop only restores the checkpoint
 
 
 def episode_curve(curve: dict, field: str) -> np.ndarray:
     """One field of a :func:`~fuzzynav.learn.checkpoint.train_loop` curve, one value per episode
     in order (batches of unequal size: the last one may be smaller, :func:`batch_plan`)."""
     return np.concatenate([np.ravel(np.asarray(row, dtype=float)) for row in curve[field]])
-
-
-def checkpoint_progress(path: Path, resume: bool) -> tuple[int, int]:
-    """(batches, single episodes) done by the checkpoint at ``path`` when resuming from it, else (0, 0)."""
-    if not (resume and Path(path).exists()):
-        return 0, 0
-    document = load_checkpoint(path)
-    return int(document["episode"]), episodes_done(document["curve"])
 
 
 def run_phase(phase: Phase, request, seed_offset: int) -> dict:
@@ -187,9 +174,7 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             phase.env.batch = size
             result = train_loop(phase.env, phase.learner, batches, rng, checkpoint=phase.checkpoint,
                                 checkpoint_every=every, resume=resume, progress=request.progress, batch_size=size,
-                                desc=phase.name, budget=phase.episodes,
-                                extra={"task": request.task, "phase": phase.name, "seed": int(request.seed),
-                                       "batch": batch})
+                                desc=phase.name, budget=phase.episodes, extra=run_settings(request, phase.name, batch))
             resume, continued = True, continued or result.resumed_from != result.episode
     finally:
         phase.env.batch = batch
@@ -198,6 +183,29 @@ def run_phase(phase: Phase, request, seed_offset: int) -> dict:
             "converged_at": converged_at(reward, success, batch, phase.convergence),
             "window": convergence_window(phase.convergence or GOAL_CONVERGENCE, batch)[0],
             "final_success": float(success[-min(success.size, 5 * batch):].mean())}
+
+
+def run_settings(request, phase: str, batch: int) -> dict:
+    """What a phase's checkpoint records of its run, which a resumed run must share."""
+    return {"task": request.task, "phase": phase, "seed": int(request.seed), "batch": batch}
+
+
+def check_resume(first: Phase, request) -> None:
+    """Before a resumed run trains anything, the checkpoints it will go on from must be its own:
+    the first phase's in full, the later ones' in the run's settings (their learners are built
+    when the phases before them have trained), each while the one before it is complete (else it
+    is retrained); then ``request.on_resume`` is told [(phase, checkpoint, episodes done)]."""
+    found = []
+    for name in PHASES[PHASES.index(first.name):]:
+        path, settings = checkpoint_path(request.out, name), run_settings(request, name, first.env.batch)
+        if not path.exists():
+            break
+        own = (first.episodes, first.learner) if name == first.name else ()  # a later phase's: its settings
+        found.append((name, path, episodes_done(check_resumable(path, settings, *own)["curve"])))
+        if own and found[-1][2] < first.episodes:
+            break
+    if request.on_resume is not None:
+        request.on_resume(found)
 
 
 def criterion(settings: dict, batch: int) -> dict:
@@ -294,9 +302,12 @@ def write_curve(request, phases: dict, title: str) -> None:
 
 def run_phases(phases, request) -> tuple[dict, dict]:
     """Run the phases in order; a later phase resumes only if every earlier one was already
-    complete in its checkpoint (otherwise it is retrained on the changed earlier result)."""
+    complete in its checkpoint (otherwise it is retrained on the changed earlier result); a resumed
+    run checks first what it goes on from (:func:`check_resume`)."""
     results, learners = {}, {}
     for offset, phase in enumerate(phases):
+        if offset == 0 and request.resume:
+            check_resume(phase, request)
         results[phase.name] = run_phase(phase, request, offset)
         learners[phase.name] = phase.learner
         if results[phase.name].pop("continued"):
