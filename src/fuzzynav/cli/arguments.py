@@ -154,8 +154,7 @@ def check_writable(path, field: str, *, create: bool = True) -> Path:
     try:
         handle, probe = tempfile.mkstemp(dir=folder, prefix=".fuzzynav-", suffix=".tmp")
     except OSError as error:
-        raise InputError(f"cannot write in the folder {folder} ({error.strerror or error})", source=str(path),
-                         field=field) from None
+        raise InputError(f"cannot write ({error.strerror or error})", source=str(path), field=field) from None
     os.close(handle)
     os.unlink(probe)
     return path
