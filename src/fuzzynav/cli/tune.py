@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import json
 import sys
+from dataclasses import replace
+from functools import partial
 from pathlib import Path
 
 from fuzzynav import progress, threads, validation
@@ -77,10 +79,13 @@ def run(args) -> int:
     checkpoint = path_for(request)
     if checkpoint is not None and checkpoint.is_dir():  # found now, not when the first generation is saved
         raise InputError("is a directory where tune keeps its checkpoint", source=str(checkpoint), field="--out")
+    notes = []  # said when the search starts (every check passed), not after it
     if request.resume and checkpoint is not None and not checkpoint.is_file():
-        print(f"--resume: no checkpoint at {checkpoint}: tuning from the start", file=sys.stderr)
-    if request.out is None:  # said before the search, not after it
-        print("no --out: the tuned system will be reported, not written (and no checkpoint kept)", file=sys.stderr)
+        notes.append(f"--resume: no checkpoint at {checkpoint}: tuning from the start")
+    if request.out is None:
+        notes.append("no --out: the tuned system will be reported, not written (and no checkpoint kept)")
+    if notes:
+        request = replace(request, on_start=partial(print, "\n".join(notes), file=sys.stderr))
     with threads.using(args.workers), progress.quiet(not request.progress):
         result = tune(request)
     written = _write(request, result)

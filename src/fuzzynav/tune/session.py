@@ -20,7 +20,7 @@ and resumed run ends exactly where an uninterrupted one does.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -63,6 +63,7 @@ class TuneRequest:
     # the controller's rule bases by role in place of its built-in ones: the tuned role's start and
     # the fixed others (``fuzzynav reproduce cmp-VI-tuning --fis ROLE=FILE`` passes them)
     systems: Mapping[str, Any] = field(default_factory=dict)
+    on_start: Callable[[], None] | None = None  # called once every check has passed, before the first generation
 
     @property
     def controller(self) -> str:
@@ -207,6 +208,8 @@ def tune(request: TuneRequest) -> dict:
     generations, spent, columns, n_worlds = [], 0, _columns(request), len(fitness.worlds)
     reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
     _check_stored_fit(path, stored, n_worlds, request.budget, reserve)
+    if request.on_start is not None:
+        request.on_start()
     best_x, best = space.start, math.inf
     curve = []  # (episodes, best cost so far)
     with progress.bar(total=request.budget, desc=f"tune {request.target} ({request.method})", unit="episode") as bar:
