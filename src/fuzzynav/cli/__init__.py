@@ -72,11 +72,20 @@ fuzzynav COMMAND --help              # a command's options, with examples"""),
 
 
 class _Closed(io.TextIOBase):
-    """What stands for a standard stream the command was started without (``>&-``; Python makes it
-    None, and ``print`` to None writes nothing): writing to it is an error, not a lost answer."""
+    """What stands for a standard stream the command was started without (``<&-``, ``>&-``; Python
+    makes it None, and ``print`` to None writes nothing): reading or writing it is an error, not a
+    lost answer nor an ``AttributeError``."""
 
     def __init__(self, name: str):
         self.name = name
+
+    @property
+    def buffer(self) -> _Closed:
+        """The binary stream under it (``sys.stdin.buffer``): as closed as it is."""
+        return self
+
+    def read(self, size: int | None = -1) -> str:
+        raise OSError(errno.EBADF, f"standard {self.name} is closed")
 
     def write(self, text: str) -> int:
         raise OSError(errno.EBADF, f"standard {self.name} is closed")
@@ -85,7 +94,9 @@ class _Closed(io.TextIOBase):
 def _survive_any_terminal() -> None:
     """Characters the terminal's encoding lacks (``§``, ``θ``, ``≥`` on ``PYTHONIOENCODING=ascii``)
     are written as ``\\u00a7`` escapes instead of failing with ``UnicodeEncodeError``; a closed
-    standard output refuses what is written to it (:class:`_Closed`)."""
+    standard input or output refuses what is read from or written to it (:class:`_Closed`)."""
+    if sys.stdin is None:
+        sys.stdin = _Closed("input")
     if sys.stdout is None:
         sys.stdout = _Closed("output")
     for stream in (sys.stdout, sys.stderr):
