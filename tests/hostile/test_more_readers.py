@@ -1,4 +1,8 @@
-"""More hostile inputs for the readers: a closed standard input."""
+"""More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
+command reads back.
+
+The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
+others need a process of their own."""
 
 from __future__ import annotations
 
@@ -7,6 +11,26 @@ import subprocess
 import sys
 
 import pytest
+
+from tests.validation.hostile_cases import Case
+
+from .test_hostile_corpus import test_hostile_case as run_case
+
+NESTED = "'[' * 100000 + ']' * 100000"  # Python text: JSON nested far deeper than json's recursion reaches
+
+CASES = [
+    Case("import-barn-reference-file-nested",
+         python="(d / 'o').mkdir(); (d / 'o' / 'benchmark.json').write_text('{\"scenarios\": ' + " + NESTED + " + '}')\n"
+                "import_barn(d, barn_world(d, 'world_0'))", expect="benchmark.json: nested deeper than 64 levels"),
+    Case("import-barn-reference-file-too-large",
+         python="(d / 'o').mkdir(); (d / 'o' / 'benchmark.json').write_text(' ' * (9 * 2**20) + '{}')\n"
+                "import_barn(d, barn_world(d, 'world_0'))", expect="benchmark.json: file larger than the 8 MiB limit"),
+]
+
+
+@pytest.mark.parametrize("case", CASES, ids=[case.name for case in CASES])
+def test_more_hostile_case(case, tmp_path, capsys):
+    run_case(case, tmp_path, capsys)
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="a child started without a standard input: POSIX fds")

@@ -77,7 +77,7 @@ def _count(text: str, field_name: str, spec: str, lo: int, hi: int) -> int:
     return int(text)
 
 
-def _references(file: Path) -> dict:
+def read_references(file: Path) -> dict:
     """The ``scenarios`` of a folder's ``benchmark.json``: per world a mapping, its
     ``barn_optimal_path_m`` (if any) a number > 0 (read as user input: InputError naming the entry)."""
     source = str(file)
@@ -105,7 +105,7 @@ def parse_suite(spec: str) -> Suite:
         if twice:
             raise InputError(f"{', '.join(twice)} would be one world (a world is named by its file name without "
                              "the suffix): rename one", source=spec, field="SUITE")
-        references = _references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
+        references = read_references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")
     if family not in KINDS:

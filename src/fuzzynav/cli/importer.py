@@ -39,7 +39,7 @@ fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out barn-bench""")
 def run(args) -> int:
     import yaml
 
-    from fuzzynav.bench.suites import REFERENCE_FILE
+    from fuzzynav.bench.suites import REFERENCE_FILE, read_references
     from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
     from fuzzynav.world.scenario import scenario_from_dict
@@ -47,14 +47,7 @@ def run(args) -> int:
     validation.positive(args.scale, field="--scale")
     out = arguments.check_folder(args.out, "--out", (REFERENCE_FILE,))  # made by the first file written
     reference_file = out / REFERENCE_FILE
-    references = {}
-    if reference_file.is_file():
-        try:
-            references = json.loads(reference_file.read_text(encoding="utf-8"))["scenarios"]
-        except (ValueError, KeyError, TypeError):
-            raise InputError("unreadable reference file", source=str(reference_file)) from None
-        if not isinstance(references, dict):
-            raise InputError("must be a mapping of world names", source=str(reference_file), field="scenarios")
+    references = read_references(reference_file) if reference_file.is_file() else {}  # read as bench reads it
     read: dict[str, tuple] = {}  # every world is read and checked before any file is written
     for name in args.worlds:
         path = Path(name)
