@@ -25,6 +25,18 @@ CASES = [
     Case("import-barn-reference-file-too-large",
          python="(d / 'o').mkdir(); (d / 'o' / 'benchmark.json').write_text(' ' * (9 * 2**20) + '{}')\n"
                 "import_barn(d, barn_world(d, 'world_0'))", expect="benchmark.json: file larger than the 8 MiB limit"),
+    Case("campaign-line-nested",
+         python="campaign(d, lambda out: open(out / 'runs.jsonl', 'a').write(" + NESTED + " + '\\n'))",
+         expect="runs.jsonl: line 2: nested deeper than 64 levels"),
+    Case("campaign-line-nested-100",
+         python="campaign(d, lambda out: open(out / 'runs.jsonl', 'a').write('[' * 100 + ']' * 100 + '\\n'))",
+         expect="runs.jsonl: line 2: nested deeper than 64 levels"),
+    Case("tune-checkpoint-options-nested",
+         python="tuned_then_resumed(d, lambda a: a.update(options=np.array(" + NESTED + ")))",
+         expect="a.yaml.tune.npz: options: nested deeper than 64 levels"),
+    Case("tune-checkpoint-options-not-json",
+         python="tuned_then_resumed(d, lambda a: a.update(options=np.array('{')))",
+         expect="a.yaml.tune.npz: options: invalid JSON"),
 ]
 
 

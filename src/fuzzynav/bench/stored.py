@@ -12,7 +12,6 @@ cut (an interruption while it was written): it is dropped, as the run is simply 
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 from fuzzynav import validation
@@ -59,8 +58,10 @@ def read_runs(out: Path, columns, plan_keys=None) -> list[dict]:
             continue
         where = f"line {number}"
         try:
-            row = json.loads(line)
-        except ValueError:
+            row = validation.parse_json(line, source)
+        except InputError as error:
+            if not error.problem.startswith("invalid JSON"):  # JSON past a limit (nesting, size)
+                raise InputError(error.problem, source=source, field=where) from None
             if number == len(lines):  # the last line, not ended by a newline: cut by an interruption
                 continue
             raise InputError("not a JSON object (a campaign file edited by hand? choose another --out)",

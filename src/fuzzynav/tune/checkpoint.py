@@ -45,7 +45,7 @@ def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.nda
     validation.check_npz(path, what="tuning checkpoint")
     with np.load(path, allow_pickle=False) as data:
         try:
-            options = json.loads(str(data["options"]))
+            options_text = str(data["options"])
             sizes, x, f = data["sizes"], data["x"], data["f"]
         except (KeyError, ValueError) as error:
             raise InputError(f"not a tuning checkpoint ({error})", source=str(path)) from None
@@ -53,6 +53,10 @@ def load(path: Path, request, fitness: Fitness) -> list[tuple[np.ndarray, np.nda
             raise InputError("the checkpoint does not say which training worlds it was made on (an older "
                              "fuzzynav's): tune afresh", source=str(path), field="worlds")
         worlds = str(data["worlds"])
+    try:
+        options = validation.parse_json(options_text, str(path))
+    except InputError as error:
+        raise InputError(error.problem, source=str(path), field="options") from None
     validation.mapping(options, str(path), "options")
     for key, value in request.replayed().items():
         if options.get(key) != value:
