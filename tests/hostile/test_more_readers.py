@@ -1,5 +1,5 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
-command reads back.
+command reads back, model files that cannot be read.
 
 The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
 others need a process of their own."""
@@ -17,6 +17,8 @@ from tests.validation.hostile_cases import Case
 from .test_hostile_corpus import test_hostile_case as run_case
 
 NESTED = "'[' * 100000 + ']' * 100000"  # Python text: JSON nested far deeper than json's recursion reaches
+
+FIS_COMMANDS = (("show",), ("eval", "--input", "drg=1", "--input", "theta=0"), ("convert", "--to", "json"))
 
 CASES = [
     Case("import-barn-reference-file-nested",
@@ -37,6 +39,16 @@ CASES = [
     Case("tune-checkpoint-options-not-json",
          python="tuned_then_resumed(d, lambda a: a.update(options=np.array('{')))",
          expect="a.yaml.tune.npz: options: invalid JSON"),
+    *[Case(f"fis-{argv[0]}-npz-of-objects",
+           python="np.savez(d / 'p.npz', kind=np.array('q-goal'), document=np.array([{}], dtype=object))\n"
+                  f"from fuzzynav.cli import main\nraise SystemExit(main(['fis', {argv[0]!r}, str(d / 'p.npz'), *{argv[1:]!r}]))",
+           expect="p.npz: cannot read model file: its array document.npy holds Python objects")
+      for argv in FIS_COMMANDS],
+    *[Case(f"fis-{argv[0]}-npz-of-random-bytes", {"junk.npz": bytes(range(255, 155, -1))},
+           ("fis", argv[0], "{d}/junk.npz", *argv[1:]),
+           expect="junk.npz: cannot read model file: neither an .npz archive (no zip header) nor a valid JSON")
+      for argv in FIS_COMMANDS],
+    Case("fis-show-npz-missing", argv=("fis", "show", "{d}/nothere.npz"), expect="nothere.npz: no such model file"),
 ]
 
 

@@ -57,13 +57,14 @@ def resolve(name: str) -> FuzzySystem | Engine:
     controller, sep, role = name.partition(":")
     if sep and not Path(name).exists() and controller in ROLES:
         return default_system(controller, role, field="system")
-    if is_model_file(name) and Path(name).is_file():
-        document = read_model_or_none(name)
+    npz = Path(name).suffix.lower() == ".npz"  # only a model file: why it cannot be read is the answer
+    if npz or is_model_file(name) and Path(name).is_file():
+        document = read_document(name) if npz else read_model_or_none(name)
         if document is not None and document.get("kind") == "anfis-tracker":
             from fuzzynav.learn.tasks.trackers import anfis_tracker_system
 
             return anfis_tracker_system(document, name)  # the trained ANFIS, exported
-        if document is not None and Path(name).suffix.lower() == ".npz":  # a learned rule base stored as NPZ
+        if document is not None and npz:  # a learned rule base stored as NPZ
             from fuzzynav.fuzzy.io.document import from_document
 
             return from_document(document, source=name)
