@@ -1,5 +1,5 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
-command reads back, model files that cannot be read.
+command reads back, model files that cannot be read or are not what their kind says.
 
 The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
 others need a process of their own."""
@@ -49,6 +49,14 @@ CASES = [
            expect="junk.npz: cannot read model file: neither an .npz archive (no zip header) nor a valid JSON")
       for argv in FIS_COMMANDS],
     Case("fis-show-npz-missing", argv=("fis", "show", "{d}/nothere.npz"), expect="nothere.npz: no such model file"),
+    *[Case(f"run-model-q-goal-relabelled-{kind}",
+           python=f"edited_model(d, ['q-goal', '--episodes', '2', '--quiet'], lambda doc: doc.update(kind={kind!r}), "
+                  "['run', 'fig-IV-23', '--max-time', '1', '--model'])",
+           expect=f"x.json: inputs: missing (a {kind!r} model holds a fuzzy system)")
+      for kind in ("fql-goal", "fql-avoid", "fql-wall")],
+    Case("reproduce-fis-a-model-file", {"an.json": '{"kind": "anfis-tracker"}'},
+         ("reproduce", "fig-V-7", "--quick", "--out", "{d}/r", "--fis", "tracker={d}/an.json"),
+         expect="an.json: kind: a 'anfis-tracker' model file, not a fuzzy system (`fuzzynav run --model` runs it)"),
 ]
 
 

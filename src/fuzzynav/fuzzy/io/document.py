@@ -197,9 +197,9 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
     if "inputs" not in doc and doc.get("kind") == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
         raise InputError("a training checkpoint, not a fuzzy system (`fuzzynav train ... --resume` reads it)",
                          source=source, field="kind")
-    if "inputs" not in doc and isinstance(doc.get("kind"), str):
-        raise InputError(f"a {doc['kind']!r} model file, not a fuzzy system (run it with --model)", source=source,
-                         field="kind")
+    if "inputs" not in doc and isinstance(doc.get("kind"), str):  # the command that runs it, whichever read it
+        raise InputError(f"a {doc['kind']!r} model file, not a fuzzy system (`fuzzynav run --model` runs it)",
+                         source=source, field="kind")
     inputs = [_variable(v, source, f"inputs[{i}]") for i, v in enumerate(_require(doc, "inputs", list, source, ""))]
     outputs = [_variable(v, source, f"outputs[{i}]") for i, v in enumerate(_require(doc, "outputs", list, source, ""))]
     options = {key: doc[key] for key in _OPTIONS if doc.get(key) is not None}

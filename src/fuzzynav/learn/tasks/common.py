@@ -109,6 +109,9 @@ def load_fuzzy_model(document: dict, path, build):
     """The controller of a learned fuzzy model file: ``build(system, constant_speed, name)``, with
     every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
     must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`)."""
+    if "inputs" not in document:  # another kind of model relabelled (it is already run with --model)
+        raise InputError(f"missing (a {document['kind']!r} model holds a fuzzy system)", source=str(path),
+                         field="inputs")
     system = from_document(document, source=str(path))
     check_covered(system, str(path))
     try:
