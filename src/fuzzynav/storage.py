@@ -188,11 +188,18 @@ def _read_npz(path: Path) -> dict:
 
 
 def check_model_file(path, field: str | None = None) -> Path:
-    """``path`` as a Path when it is a file; else an InputError naming it: a folder, or missing."""
+    """``path`` as a Path when it is a regular file; else an InputError naming it: a folder,
+    missing, or what :func:`~fuzzynav.validation.read_bytes` refuses to open (a named pipe, whose
+    read would wait for ever; a loop of symbolic links)."""
     path = Path(path)
     if not path.is_file():
-        raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file",
-                         source=str(path), field=field)
+        if path.is_dir() or not (path.exists() or path.is_symlink()):
+            raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file",
+                             source=str(path), field=field)
+        try:
+            validation.read_bytes(path, max_bytes=0)  # refused before a byte is read: it is not a regular file
+        except InputError as error:
+            raise InputError(error.problem, source=str(path), field=field) from None
     return path
 
 

@@ -1,5 +1,6 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
-command reads back, model files that cannot be read or are not what their kind says.
+command reads back, model files that cannot be read or are not what their kind says, special
+files named as model or scenario files.
 
 The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
 others need a process of their own."""
@@ -12,6 +13,7 @@ import sys
 
 import pytest
 
+from fuzzynav.cli import main
 from tests.validation.hostile_cases import Case
 
 from .test_hostile_corpus import test_hostile_case as run_case
@@ -72,3 +74,18 @@ def test_a_csv_read_from_a_closed_standard_input_says_so():
                              capture_output=True, preexec_fn=lambda: os.close(0), timeout=120)
     assert process.returncode == 2, process.stderr
     assert process.stderr.decode().strip() == "fuzzynav fis: error: -: cannot read file (standard input is closed)"
+
+
+SPECIAL_FILES = {"named pipe": (os.mkfifo, "is a named pipe, not a regular file"),
+                 "symbolic link loop": (lambda path: os.symlink(path.name, path), "Too many levels of symbolic links")}
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="named pipes and symbolic links: POSIX")
+@pytest.mark.parametrize("special", SPECIAL_FILES)
+@pytest.mark.parametrize("name, argv", [("f.json", ("run", "fig-IV-23", "--model", "{f}")), ("f.yaml", ("run", "{f}")),
+                                        ("f.json", ("bench", "circles:1", "--controllers", "{f}", "--out", "{d}/o"))])
+def test_a_special_file_named_as_a_model_or_scenario_is_refused_by_what_it_is(name, argv, special, tmp_path, capsys):
+    make, message = SPECIAL_FILES[special]
+    make(tmp_path / name)
+    assert main([arg.replace("{f}", str(tmp_path / name)).replace("{d}", str(tmp_path)) for arg in argv]) == 2
+    assert message in capsys.readouterr().err

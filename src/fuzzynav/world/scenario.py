@@ -363,7 +363,7 @@ def load_scenario(path_or_name) -> Scenario:
     if isinstance(path_or_name, str) and not path_or_name.strip():  # "" is the current folder to Path
         raise InputError("is empty: give a scenario file or a built-in scenario's name", field="SCENARIO")
     path = validation.file_path(path_or_name, field="scenario")
-    if not path.exists() or path.is_dir():  # a device or pipe is read, and refused by name, below
+    if not (path.exists() or path.is_symlink()) or path.is_dir():  # a device, pipe or loop of links: refused below
         builtin = BUILTIN_DIR / f"{path_or_name}.yaml"
         if path.is_dir() and not builtin.is_file():
             raise InputError("is a directory; give one scenario file (`fuzzynav bench FOLDER` runs a folder)",
