@@ -1,6 +1,6 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
 command reads back, model files that cannot be read or are not what their kind says, special
-files named as model or scenario files.
+files named as model or scenario files, options a command would silently ignore.
 
 The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
 others need a process of their own."""
@@ -59,6 +59,16 @@ CASES = [
     Case("reproduce-fis-a-model-file", {"an.json": '{"kind": "anfis-tracker"}'},
          ("reproduce", "fig-V-7", "--quick", "--out", "{d}/r", "--fis", "tracker={d}/an.json"),
          expect="an.json: kind: a 'anfis-tracker' model file, not a fuzzy system (`fuzzynav run --model` runs it)"),
+    Case("fis-plot-output-variable-without-surface",
+         argv=("fis", "plot", "goal-seeking", "--output-variable", "nope", "-o", "{d}/p.png"),
+         expect="--output-variable: chooses the output --surface draws: give --surface too"),
+    Case("run-size-without-animate", argv=("run", "fig-IV-12a", "--size", "300", "--fps", "5"),
+         expect="--size: sets the --animate GIF: give --animate FILE.gif too"),
+    Case("run-fps-without-animate", argv=("run", "fig-IV-12a", "--fps", "5"),
+         expect="--fps: sets the --animate GIF: give --animate FILE.gif too"),
+    Case("scenarios-show-empty", argv=("scenarios", "--show", ""), expect="--show: no built-in scenario ''"),
+    Case("scenarios-show-twice", argv=("scenarios", "--show", "fig-IV-12a", "--show", "fig-IV-15a"),
+         expect="--show: is given 2 times: it prints the YAML of one scenario"),
 ]
 
 

@@ -308,6 +308,8 @@ def _export_c(args) -> int:
 def _plot(args) -> int:
     from fuzzynav.fuzzy.plot import plot_surface, plot_system
 
+    if args.surface_output is not None and not args.surface:
+        raise InputError("chooses the output --surface draws: give --surface too", field="--output-variable")
     system = resolve(args.system)
     if args.surface:
         if args.surface_output and args.surface_output not in system.output_names:

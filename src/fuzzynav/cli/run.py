@@ -76,9 +76,9 @@ fuzzynav run path-n --model anfis.json --json""")
     parser.add_argument("--plot", metavar="PNG", type=arguments.figure_path, help="write the trajectory and command plots")
     parser.add_argument("--rays", action="store_true", help="draw sensor rays on the --plot")
     parser.add_argument("--animate", metavar="GIF", type=arguments.gif_path, help="write an animated GIF of the episode")
-    parser.add_argument("--size", type=arguments.whole, default=400, metavar="PX",
+    parser.add_argument("--size", type=arguments.whole, metavar="PX",
                         help="width and height of the --animate GIF in pixels (default 400)")
-    parser.add_argument("--fps", type=arguments.decimal, default=10.0, help="frames per second of the --animate GIF (default 10); the GIF samples at most 100 "
+    parser.add_argument("--fps", type=arguments.decimal, help="frames per second of the --animate GIF (default 10); the GIF samples at most 100 "
                              "steps, so an episode longer than 100 / FPS seconds plays faster than real time")
 
 
@@ -97,9 +97,12 @@ def run(args) -> int:
         raise InputError("--fis replaces a built-in controller's rule base, not a model file's", field="--fis")
     if args.rays and not args.plot:
         raise InputError("draws the sensor rays on the --plot figure: give --plot FILE too", field="--rays")
-    if not 64 <= args.size <= 4000:
+    gif = {name: value for name, value in (("size", args.size), ("fps", args.fps)) if value is not None}
+    if gif and not args.animate:
+        raise InputError("sets the --animate GIF: give --animate FILE.gif too", field=f"--{next(iter(gif))}")
+    if args.size is not None and not 64 <= args.size <= 4000:
         raise InputError(f"must be between 64 and 4000 pixels, got {args.size}", field="--size")
-    if not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
+    if args.fps is not None and not (math.isfinite(args.fps) and 0.1 <= args.fps <= 100):
         raise InputError(f"must be between 0.1 and 100 frames per second, got {args.fps}", field="--fps")
     check_plant(args.plant)
     if args.plot and args.animate and Path(args.plot).resolve() == Path(args.animate).resolve():
@@ -132,7 +135,7 @@ def run(args) -> int:
     if args.animate:
         from fuzzynav.viz.animation import animate_episode
 
-        frames = animate_episode(trace, scenario, args.animate, fps=args.fps, size=args.size)
+        frames = animate_episode(trace, scenario, args.animate, **gif)
         print(f"wrote {args.animate} ({frames} frames)", file=sys.stderr)
     if args.json:
         print(json.dumps(numbers))

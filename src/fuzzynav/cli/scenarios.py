@@ -21,7 +21,7 @@ def register(subparsers) -> None:
                                example="""
 fuzzynav scenarios
 fuzzynav scenarios --show fig-IV-15a > my-world.yaml   # a copy named my-world, to edit""")
-    parser.add_argument("--show", metavar="NAME", help="print the YAML of one built-in scenario")
+    parser.add_argument("--show", metavar="NAME", action="append", help="print the YAML of one built-in scenario")
 
 
 def copy_text(text: str, name: str) -> str:
@@ -34,12 +34,15 @@ def copy_text(text: str, name: str) -> str:
 
 def run(args) -> int:
     listing = list_scenarios()
-    if args.show:
-        if args.show not in listing:
-            close = difflib.get_close_matches(args.show, list(listing), n=3)
+    if args.show is not None:  # (given: an empty name is refused, not read as "list them all")
+        if len(args.show) > 1:
+            raise InputError(f"is given {len(args.show)} times: it prints the YAML of one scenario", field="--show")
+        name = args.show[0]
+        if name not in listing:
+            close = difflib.get_close_matches(name, list(listing), n=3)
             hint = f" (did you mean {', '.join(close)}?)" if close else ""
-            raise InputError(f"no built-in scenario {args.show!r}{hint}", field="--show")
-        print(copy_text((BUILTIN_DIR / f"{args.show}.yaml").read_text(), args.show), end="")
+            raise InputError(f"no built-in scenario {name!r}{hint}", field="--show")
+        print(copy_text((BUILTIN_DIR / f"{name}.yaml").read_text(), name), end="")
         return 0
     width = max((len(name) for name in listing), default=0)
     for name, description in listing.items():
