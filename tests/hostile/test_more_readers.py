@@ -1,9 +1,10 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
 command reads back, model files that cannot be read or are not what their kind says, special
-files named as model or scenario files, options a command would silently ignore.
+files named as model or scenario files, options a command would silently ignore, C
+file names an #include cannot hold, a model's training record out of range.
 
 The cases of :data:`CASES` run as those of ``cases.py`` do (``test_hostile_corpus.py``); the
-others need a process of their own."""
+others need a process of their own or files a case cannot write (a named pipe, a loop of links)."""
 
 from __future__ import annotations
 
@@ -20,6 +21,7 @@ from .test_hostile_corpus import test_hostile_case as run_case
 
 NESTED = "'[' * 100000 + ']' * 100000"  # Python text: JSON nested far deeper than json's recursion reaches
 
+FQL = ["fql-goal", "--episodes", "2", "--quiet"]  # a model of a fuzzy rule base with its training record
 FIS_COMMANDS = (("show",), ("eval", "--input", "drg=1", "--input", "theta=0"), ("convert", "--to", "json"))
 
 CASES = [
@@ -69,6 +71,16 @@ CASES = [
     Case("scenarios-show-empty", argv=("scenarios", "--show", ""), expect="--show: no built-in scenario ''"),
     Case("scenarios-show-twice", argv=("scenarios", "--show", "fig-IV-12a", "--show", "fig-IV-15a"),
          expect="--show: is given 2 times: it prints the YAML of one scenario"),
+    *[Case(f"fis-export-c-name-with-{what}", argv=("fis", "export-c", "goal-seeking", "-o", "{d}/q" + mark + "x.c"),
+           expect="holds a quote, a backslash or a line break, which #include \"...\" cannot hold")
+      for what, mark in (("quote", '"'), ("backslash", "\\"), ("line-break", "\n"))],
+    Case("fis-show-rules-changed-negative",
+         python=f"edited_model(d, {FQL}, lambda doc: doc['training'].update(rules_changed=-5), ['fis', 'show'])",
+         expect="x.json: training.rules_changed: must be an integer in [0, 15], got -5"),
+    *[Case(f"{run[0]}-training-not-a-mapping",
+           python=f"edited_model(d, {FQL}, lambda doc: doc.update(training='x'), {run!r})",
+           expect="x.json: training: must be a mapping, got str")
+      for run in (["fis", "show"], ["run", "fig-IV-23", "--max-time", "1", "--model"])],
 ]
 
 

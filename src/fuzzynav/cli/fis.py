@@ -199,14 +199,16 @@ def training_report(name: str) -> str | None:
     """For a model file trained by fuzzy Q-learning: how it was trained and how many rules differ
     from the initial table (the model's ``training`` record); else ``None``."""
     document = read_model_or_none(name) if is_model_file(name) and Path(name).is_file() else None
-    training = document.get("training") if isinstance(document, dict) else None
-    if not isinstance(training, dict) or "rules_changed" not in training:
+    training = validation.mapping(document.get("training", {}), name, "training") if document is not None else {}
+    if "rules_changed" not in training:
         return None
-    rules = training.get("rules_learned", len(document.get("rules", [])))
+    rules = validation.integer(training.get("rules_learned", len(document.get("rules", []))), name,
+                               "training.rules_learned", lo=0)
+    changed = validation.integer(training["rules_changed"], name, "training.rules_changed", lo=0, hi=rules)
     protocol = training.get("protocol", "?")
     if protocol == "parallel":
         protocol += f", {training.get('robots_per_batch')} robots per batch"
-    return (f"learned ({protocol} protocol, prior {training.get('prior', '?')}): {training['rules_changed']} of "
+    return (f"learned ({protocol} protocol, prior {training.get('prior', '?')}): {changed} of "
             f"{rules} rules differ from the initial table")
 
 

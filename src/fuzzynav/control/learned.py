@@ -378,8 +378,8 @@ class LearnedWallFollower(BatchController):
 def model_name(document: dict) -> str:
     """The name of a learned model's controller: its training task (``fql-goal-35``, ``q-goal``…,
     ``training.task`` as ``fuzzynav train`` writes it), else its kind — one scheme for every model."""
-    training = document.get("training", {})
-    task = training.get("task", document.get("kind")) if isinstance(training, dict) else None
+    training = validation.mapping(document.get("training", {}), field="training")
+    task = training.get("task", document.get("kind"))
     if not isinstance(task, str) or not task:
         raise InputError(f"must be the name of the training task, got {task!r}", field="training.task")
     return task

@@ -156,6 +156,9 @@ def to_c(system: FuzzySystem, name: str | None = None, fixed: str | None = None,
     are prefixed by ``name`` (default: the system's name) and the source includes ``header_file``
     (default ``<prefix>.h``)."""
     _check(system)
+    if header_file is not None and any(mark in header_file for mark in '"\\\r\n'):
+        raise InputError(f"the header's name {header_file!r} holds a quote, a backslash or a line break, which "
+                         '#include "..." cannot hold: choose another file name', field="-o")
     if fixed is not None and fixed not in FIXED_FORMATS:
         raise InputError(f"fixed-point format must be one of {', '.join(FIXED_FORMATS)}, got {fixed!r}",
                          field="--fixed")
