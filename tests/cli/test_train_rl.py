@@ -116,8 +116,11 @@ def test_a_curve_that_never_settled_reports_null_and_says_so(tmp_path, capsys):
     assert json.loads(capsys.readouterr().out)["steering"]["converged_at"] is None
     assert json.loads(out.read_text())["training"]["steering"]["converged_at"] is None
     assert train("q-goal", out, "--episodes", "100") == 0
-    line = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("steering:"))
+    lines = capsys.readouterr().out.splitlines()
+    line = next(line for line in lines if line.startswith("steering:"))
     assert "steering: 100 episodes, not converged within 100 episodes" in line and "101" not in line  # not the model path
+    notes = [line for line in lines if "no plateau of the mean reward" in line]
+    assert len(notes) == 1 and notes[0].startswith("note: success:")  # the words explained once, after the phases
 
 
 def test_the_help_states_the_phases_shares_as_the_tasks_set_them(capsys):

@@ -18,7 +18,7 @@ from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, TrainRequest, checkpoint_path
+from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, PHASE_NOTE, PhaseSummary, TrainRequest, checkpoint_path
 from fuzzynav.storage import document_format
 
 PRIORS = ("none", "thesis")
@@ -101,6 +101,8 @@ def run(args) -> int:
         from fuzzynav.cli.printing import result_lines
 
         print("\n".join(result_lines(result)))
+        if any(isinstance(value, PhaseSummary) for value in result.values()):
+            print(f"note: {PHASE_NOTE}")
         if args.curve is not None:
             print(f"learning curve: {args.curve}")
     return 0
