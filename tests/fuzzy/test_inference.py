@@ -94,7 +94,7 @@ def test_weighted_average_is_nan_where_no_rule_fires(x_var):
     assert summed.evaluate_one(1.0) == (0.0,)
 
 
-def test_firing_strengths_normalised_and_raw():
+def test_firing_strengths_normalised_and_raw(x_var):
     gs = get_system("goal-seeking")
     X = np.array([[5.75, -0.5], [0.0, 0.0]])
     raw = gs.firing_strengths(X, normalise=False)
@@ -102,6 +102,14 @@ def test_firing_strengths_normalised_and_raw():
     np.testing.assert_allclose(raw.sum(axis=1), 1.0)
     np.testing.assert_allclose(gs.firing_strengths(X), raw)
     assert np.count_nonzero(raw[1]) == 1
+    # weighted rules: raw w_r = weight_r · μ(x) sums to less than 1; normalised divides by the sum
+    y = Variable("y", (0.0, 1.0), {"a": Singleton(0.0), "b": Singleton(1.0)})
+    fs = FuzzySystem([x_var], [y], ["IF x IS L THEN y IS a WITH 0.5", "IF x IS H THEN y IS b WITH 0.8"])
+    X = np.array([[0.25], [0.0]])
+    np.testing.assert_allclose(fs.firing_strengths(X, normalise=False), [[0.375, 0.2], [0.5, 0.0]], atol=1e-15)
+    np.testing.assert_allclose(fs.firing_strengths(X), [[0.375 / 0.575, 0.2 / 0.575], [1.0, 0.0]], atol=1e-15)
+    lone = FuzzySystem([x_var], [y], ["IF x IS L THEN y IS a WITH 0.5"])  # x = 1: no rule fires, the row stays 0
+    np.testing.assert_array_equal(lone.firing_strengths(np.array([[1.0]])), [[0.0]])
 
 
 def test_fast_kernel_handles_a_subnormal_interval():
