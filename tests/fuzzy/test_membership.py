@@ -97,6 +97,10 @@ def test_fuzzify_batch_shape_and_clamp():
     var = Variable("x", (0.0, 1.0), strong_partition([0.0, 1.0], ["L", "H"]))
     mu = var.fuzzify(np.array([-1.0, 0.25, 2.0]))
     np.testing.assert_allclose(mu, [[1, 0], [0.75, 0.25], [0, 1]])
+    # closed triangles: only the clamp to the universe [0, 1] gives full membership outside it
+    closed = Variable("x", (0.0, 1.0), {"L": Triangular(-1.0, 0.0, 1.0), "H": Triangular(0.0, 1.0, 2.0)})
+    np.testing.assert_allclose(closed.fuzzify(np.array([-1.0, 0.25, 2.0])), [[1, 0], [0.75, 0.25], [0, 1]])
+    np.testing.assert_allclose(closed.fuzzify(np.array([-1.0, 0.25, 2.0]), clamp=False), [[0, 0], [0.75, 0.25], [0, 0]])
 
 
 @pytest.mark.parametrize("build, message", [
