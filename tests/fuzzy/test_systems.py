@@ -6,7 +6,16 @@ import numpy as np
 import pytest
 
 from fuzzynav.errors import InputError
-from fuzzynav.fuzzy import FuzzySystem, Singleton, Variable, check_strong_partition, parse_rule, strong_partition
+from fuzzynav.fuzzy import (
+    FuzzySystem,
+    Linear,
+    Singleton,
+    Triangular,
+    Variable,
+    check_strong_partition,
+    parse_rule,
+    strong_partition,
+)
 from fuzzynav.fuzzy.systems import SYSTEMS, TABLE_IV_1, get_system
 
 PI = math.pi
@@ -52,6 +61,17 @@ def test_inputs_are_clamped_to_the_universe():
     gs = get_system("goal-seeking")
     assert gs.evaluate_one(1e6, -10.0) == gs.evaluate_one(gs.inputs[0].universe[1], -PI)
     np.testing.assert_array_equal(gs.evaluate(np.array([[1e6, -10.0]])), [gs.evaluate_one(1e6, -10.0)])
+    # the outer sets of Table IV.1 are open shoulders, the same inside and outside the universe; on
+    # closed triangles only the clamp makes x < 0 fire L alone (y = 2) and x > 1 fire H alone (y = 5)
+    x = Variable("x", (0.0, 1.0), {"L": Triangular(-1.0, 0.0, 1.0), "H": Triangular(0.0, 1.0, 2.0)})
+    rules = ["IF x IS L THEN y IS a", "IF x IS H THEN y IS b"]
+    fast = FuzzySystem([x], [Variable("y", (0.0, 10.0), {"a": Singleton(2.0), "b": Singleton(5.0)})], rules)
+    generic = FuzzySystem([x], [Variable("y", (0.0, 10.0), {"a": Linear([0.0], 2.0), "b": Linear([0.0], 5.0)})],
+                          rules, method="ts1")
+    assert fast.fast and not generic.fast
+    for system in (fast, generic):
+        assert (system.evaluate_one(-10.0), system.evaluate_one(0.25), system.evaluate_one(1e6)) == ((2.0,), (2.75,), (5.0,))
+        np.testing.assert_array_equal(system.evaluate(np.array([[-10.0], [0.25], [1e6]])), [[2.0], [2.75], [5.0]])
     with pytest.raises(InputError, match="theta"):
         gs.evaluate(np.array([[1.0, np.nan]]))
     with pytest.raises(InputError, match="shape"):
