@@ -104,11 +104,19 @@ def test_polygon_self_intersection(points, bad):
 
 
 def test_shapes_round_trip_to_dict():
+    # every parameter written, defaults too (the wall's thickness): a dropped one would come back as its default
+    assert [shape.to_dict() for shape in MIXED.obstacles] == [
+        {"circle": {"center": [5.0, 5.0], "radius": 1.0}},
+        {"polygon": {"points": [[8.0, 8.0], [10.0, 8.0], [10.0, 10.0]]}},
+        {"wall": {"start": [2.0, 12.0], "end": [10.0, 12.0], "thickness": 0.2}},
+        {"ellipse": {"center": [14.0, 6.0], "radii": [2.0, 1.0], "angle": 0.3}},
+    ]
     for shape in MIXED.obstacles:
         (kind, params), = shape.to_dict().items()
         assert kind == shape.kind
         rebuilt = type(shape)(**params)
         assert rebuilt.to_dict() == shape.to_dict()
+        np.testing.assert_array_equal(rebuilt.packed(), shape.packed())
 
 
 def test_nearest_obstacle_is_the_exact_row_minimum():
