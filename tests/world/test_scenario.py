@@ -3,7 +3,7 @@ import pytest
 import yaml
 
 from fuzzynav.errors import InputError
-from fuzzynav.world.scenario import list_scenarios, load_scenario, scenario_from_dict
+from fuzzynav.world.scenario import BUILTIN_DIR, list_scenarios, load_scenario, scenario_from_dict
 
 
 def test_examples_load_and_round_trip(tmp_path):
@@ -17,6 +17,10 @@ def test_examples_load_and_round_trip(tmp_path):
         file.write_text(yaml.safe_dump(scenario.to_dict()))
         again = load_scenario(file)
         assert again.to_dict() == scenario.to_dict()
+        # every key of the packaged file comes back with its value (a key to_dict dropped would
+        # come back as its default on both sides of the comparison above)
+        source = yaml.safe_load((BUILTIN_DIR / f"{name}.yaml").read_text(encoding="utf-8"))
+        assert {key: again.to_dict().get(key) for key in source} == source
 
 
 def test_schema_of_architecture():
