@@ -100,6 +100,8 @@ def test_policy_round_trip_and_bad_parameters():
     for policy in (Greedy(), EpsilonGreedy(ExponentialDecay(0.5, 0.99)), Softmax(0.5), Boltzmann(2.0)):
         copy = policy_from_dict(policy.to_dict())
         assert type(copy) is type(policy) and copy.to_dict() == policy.to_dict()
+        assert copy == policy  # each parameter itself, not one dropped from both documents
+        np.testing.assert_array_equal(copy.probabilities(Q_ROW, t=50), policy.probabilities(Q_ROW, t=50))
     with pytest.raises(InputError, match="offset"):
         Softmax(0.0)
     with pytest.raises(InputError, match="tau"):
