@@ -13,13 +13,21 @@ def test_wilson_matches_published_values(k, n, low, high):
 
 
 def test_summary_rates_and_medians():
-    row = lambda outcome, time, ratio: {"suite": "s", "controller": "c", "outcome": outcome, "time_s": time,
-                                        "path_ratio": ratio, "min_clearance_m": 0.5, "steering_effort_rad": 0.1,
-                                        "barn_score": None}
-    rows = [row("reached", 10.0, 1.1), row("reached", 20.0, 1.3), row("timeout", 120.0, None),
-            row("collision", 5.0, None)]
-    (record,) = summarise(rows)
-    assert record["runs"] == 4
+    def row(outcome, time, ratio, clearance, effort, controller="c", by=None):
+        return {"suite": "s", "controller": controller, "outcome": outcome, "time_s": time, "path_ratio": ratio,
+                "min_clearance_m": clearance, "steering_effort_rad": effort, "barn_score": None, "collision_by": by}
+
+    rows = [row("reached", 10.0, 1.1, 0.5, 0.1), row("collision", 3.0, None, -0.2, 0.4, "d", "obstacle"),
+            row("reached", 20.0, 1.3, 0.7, 0.3), row("timeout", 120.0, None, 0.1, 0.2),
+            row("collision", 5.0, None, -0.1, 0.6, by="robot")]
+    record, other = summarise(rows)  # one record per suite x controller, in the order of the rows
+    assert (record["controller"], record["runs"], other["controller"], other["runs"]) == ("c", 4, "d", 1)
     assert record["reached"]["rate"] == 0.5 and record["collision"]["count"] == 1
+    assert record["collision"]["ci95"] == list(wilson(1, 4)) and record["timeout"]["ci95"] == list(wilson(1, 4))
+    assert record["collision_at_fault"] == {"count": 1, "rate": 0.25, "ci95": list(wilson(1, 4))}
+    assert other["collision_at_fault"]["count"] == 0  # run into by an obstacle: not the robot's fault
+    # time and path ratio over the runs that reached the goal; clearance and steering over every run
     assert record["median_time_s"] == 15.0 and record["median_path_ratio"] == pytest.approx(1.2)
+    assert record["median_min_clearance_m"] == pytest.approx(0.3) and record["median_steering_effort_rad"] == pytest.approx(0.25)
+    assert other["median_time_s"] is None and other["median_min_clearance_m"] == -0.2
     assert record["mean_barn_score"] is None
