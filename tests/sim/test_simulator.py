@@ -6,6 +6,7 @@ import pytest
 from fuzzynav.robot.sensors import SensorRing
 from fuzzynav.robot.tricycle import TricycleParams
 from fuzzynav.sim import BatchSimulator, Simulator, metrics, run_episode
+from fuzzynav.sim.metrics import cross_track
 from fuzzynav.world.scenario import load_scenario, scenario_from_dict
 from tests.sim.controllers import ConstantController, CountingController, HeadingController, SingleHeading
 
@@ -72,6 +73,10 @@ def test_path_waypoint_switching_and_cross_track():
         assert np.hypot(*(trace.pose[k - 1, :2] - waypoints[index[k] - 1])) > scenario.path.tolerance
     np.testing.assert_allclose(trace.target, waypoints[index])
     assert 0 < m["mean_cross_track_m"] < m["max_cross_track_m"] < 1.0
+    # the distance to the polyline's segments, not to the lines through them: (2, 4) is 2 m before the
+    # first waypoint (1.86 m from the first line), (8, 16) 2 m beyond the corner (8, 14) (0.74 m from it)
+    points = np.array([[4.0, 4.0], [2.0, 4.0], [8.0, 16.0], [10.0, 9.0], [14.0, 9.0]])
+    np.testing.assert_allclose(cross_track(points, waypoints), [0.0, 2.0, 2.0, 0.0, 0.0], atol=1e-12)
 
 
 def test_moving_target_is_captured():
