@@ -80,9 +80,10 @@ def test_model_files_load_as_controllers_and_errors_name_the_field(tmp_path):
     from fuzzynav.fuzzy.io.document import to_document
 
     path = tmp_path / "m.json"
-    save_json_atomic(path, {"kind": "fql-goal", **to_document(system), "constant_speed": 1.0})
+    save_json_atomic(path, {"kind": "fql-goal", **to_document(system), "constant_speed": 1.5})
     controller = load_controller(path)
     assert isinstance(controller, FuzzyGoalSeeker)
+    assert controller.system == system and controller.constant_speed == 1.5  # the file's, not defaults
     assert from_document(json.loads(path.read_text())) == system  # the model is an ordinary fuzzy system
     save_json_atomic(path, {"kind": "fql-goal", **to_document(system), "constant_speed": 9.0})
     with pytest.raises(InputError, match="constant_speed"):
