@@ -23,6 +23,10 @@ def test_starts_at_p0_and_velocity_is_the_derivative(motion):
 
 
 def test_shapes_of_the_courses():
+    np.testing.assert_allclose(MOTIONS[1].position(np.array([0.0, 10.0])), [[4, 12], [9, 10]])  # p0 + v t
+    # counter-clockwise round (8, 12) from p0 = (4, 12): a quarter turn (π/2 · 4 m / 0.7 m/s) later at (8, 8)
+    np.testing.assert_allclose(MOTIONS[2].position(np.pi / 2 * 4.0 / 0.7), [8, 8], atol=1e-12)
+    np.testing.assert_allclose(MOTIONS[2].velocity_at(0.0), [0, -0.7], atol=1e-12)
     circle = MOTIONS[2].position(np.linspace(0, 30, 50))
     np.testing.assert_allclose(np.hypot(*(circle - [8, 12]).T), 4.0)
     assert np.allclose(np.hypot(*MOTIONS[2].velocity_at(np.array([1.0, 7.0])).T), 0.7)
