@@ -43,7 +43,13 @@ the thesis' trend (more state–action pairs, more episodes) hides behind the pa
 ``--schedule fql`` is fuzzy Q-learning's (:data:`fuzzynav.learn.tasks.common.THESIS`: ε per
 episode, β = 1/(1 + visits) floored); ``--schedule per-state`` lets each state's ε decay with that
 state's own visits, ε_s = max(0.02, 0.3 · 0.99^visits_s), the same β — exploration that lasts
-longer in a table of more states. Prints one JSON line per size, then Spearman's ρ.
+longer in a table of more states. ``--schedule own`` is the package's tabular schedule, the one
+``fuzzynav reproduce table-VI-1`` trains with. ``--reading policy`` reads "la convergence de
+l'algorithme" (§VI.2, the sentence above Table VI.1) as the greedy policy's: it records each state's
+greedy action after every episode and reports, per size, the first episode from which the policy
+stays the same for the criterion's hold of 500 episodes (``policy_settled``) and the last episode
+that changed it (``last_change``), with Spearman's ρ of each. Prints one JSON line per size, then
+Spearman's ρ.
 
 ``fixed-start SEED``: Fig VI.1's tabular learner from the fixed start (13 states × 3, 1,500
 single episodes) with fuzzy Q-learning's schedule (``--schedule fql``, the default: what
@@ -53,6 +59,7 @@ converge as JSON.
     python benchmarks/chapter6_probes.py relative fig-VI-13 out-0 out-1 out-2 out-3 out-4
     python benchmarks/chapter6_probes.py fixed-start 0 --out probe/
     python benchmarks/chapter6_probes.py table-vi-1 0 --schedule per-state --episodes 3000 --out probe/
+    python benchmarks/chapter6_probes.py table-vi-1 0 --schedule own --reading policy --episodes 10000 --out probe/
 """
 
 from __future__ import annotations
@@ -78,7 +85,7 @@ from fuzzynav.learn.exploration import greedy_choice
 from fuzzynav.learn.extraction import rule_table
 from fuzzynav.learn.tabular import TabularLearner
 from fuzzynav.learn.tasks import tabular_goal
-from fuzzynav.learn.tasks.common import STEERING3, THESIS, Phase, TrainRequest, checkpoint_path, run_phases
+from fuzzynav.learn.tasks.common import STEERING3, Phase, TrainRequest, checkpoint_path, run_phases
 from fuzzynav.learn.tasks.fql_avoid import avoid_prior, free_rules
 from fuzzynav.learn.tasks.fql_wall import wall_parts
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -87,6 +94,7 @@ from fuzzynav.storage import save_document
 from fuzzynav.world.scenario import load_scenario
 
 RUNS = 100
+POLICY_HOLD = 500  # episodes the greedy policy must stay the same: the hold of the goal tasks' criterion
 
 
 def avoid_rules(model: str, scratch: str) -> None:
@@ -272,29 +280,58 @@ class PerStateEpsilon(TabularLearner):
         return np.where(u < epsilon, explore, greedy_choice(q, rng))
 
 
-def table_vi_1(seed: int, schedule: str, episodes: int, out: Path) -> dict:
-    """Table VI.1's four sizes under ``schedule`` (module docstring), one robot, ``episodes`` each."""
+class PolicyRecorder(TabularLearner):
+    """A tabular learner that keeps each state's greedy action after every episode (``policies``)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.policies: list[np.ndarray] = []
+
+    def end_episode(self) -> None:
+        super().end_episode()
+        self.policies.append(self.greedy()[0].copy())
+
+
+def policy_readings(policies: list, hold: int = POLICY_HOLD) -> dict:
+    """(first episode from which the greedy policy stays the same for ``hold`` episodes, None: not
+    within the run; the last episode that changed it, 0: none) of the policies after each episode."""
+    changed = [k + 1 for k in range(1, len(policies)) if not np.array_equal(policies[k], policies[k - 1])]
+    last = changed[-1] if changed else 0
+    bounds = [0, *changed, len(policies) + 1]  # a run of episodes without a change lies between two bounds
+    settled = next((a if a else 1 for a, b in zip(bounds, bounds[1:]) if b - max(a, 1) > hold), None)
+    return {"policy_settled": settled, "last_change": last}
+
+
+def table_vi_1(seed: int, schedule: str, episodes: int, out: Path, reading: str = "reward") -> dict:
+    """Table VI.1's four sizes under ``schedule`` (module docstring), one robot, ``episodes`` each;
+    ``reading="policy"`` adds the greedy policy's readings of convergence."""
     rows = []
     for n_states, n_actions in ((9, 3), (11, 3), (13, 3), (19, 5)):
         model = out / f"table-vi-1-{schedule}-{n_states}x{n_actions}-{seed}.json"
-        rows.append({"states": n_states, "actions": n_actions, "episodes": episodes,
-                     "episodes_to_converge": _tabular_run(model, seed, schedule, episodes, n_states, n_actions)})
+        converged, learner = _tabular_run(model, seed, schedule, episodes, n_states, n_actions, record=reading == "policy")
+        rows.append({"states": n_states, "actions": n_actions, "episodes": episodes, "episodes_to_converge": converged,
+                     **(policy_readings(learner.policies) if reading == "policy" else {})})
         print(json.dumps({"seed": seed, "schedule": schedule, **rows[-1]}), flush=True)
-    return {"seed": seed, "schedule": schedule, "rank_correlation": rank_correlation(rows)}
+    result = {"seed": seed, "schedule": schedule, "rank_correlation": rank_correlation(rows)}
+    if reading == "policy":
+        for key in ("policy_settled", "last_change"):
+            result[f"rank_correlation_{key}"] = rank_correlation([{**r, "episodes_to_converge": r[key]} for r in rows])
+    return result
 
 
 def _tabular_run(model: Path, seed: int, schedule: str, episodes: int, n_states: int = 13, n_actions: int = 3,
-                 fixed: bool = False) -> int | None:
-    """Episodes to converge of one tabular learner (one robot) under ``schedule``; None: not within
-    ``episodes``."""
+                 fixed: bool = False, record: bool = False) -> tuple[int | None, TabularLearner]:
+    """(episodes to converge, None: not within ``episodes``; the learner) of one tabular learner
+    (one robot) under ``schedule``; ``record``: a :class:`PolicyRecorder`."""
     request = TrainRequest(out=model, task="q-goal", episodes=episodes, seed=seed, progress=False)
-    env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed, batch=1, schedule="fql")
-    if schedule == "per-state":
-        learner = PerStateEpsilon(disc.n_states, len(steering), gamma=THESIS["gamma"], alpha=learner.alpha,
-                                  policy=learner.policy)
+    env, learner, disc, steering = tabular_goal.q_goal_parts(n_states, n_actions, fixed, batch=1,
+                                                             schedule="own" if schedule == "own" else "fql")
+    kind = PerStateEpsilon if schedule == "per-state" else PolicyRecorder if record else None
+    if kind is not None:
+        learner = kind(disc.n_states, len(steering), gamma=learner.gamma, alpha=learner.alpha, policy=learner.policy)
     result, _ = run_phases([Phase("steering", env, learner, episodes, checkpoint_path(model, "steering"))], request)
     converged = result["steering"]["converged_at"]
-    return converged if converged <= episodes else None
+    return (converged if converged <= episodes else None), learner
 
 
 def fixed_start(seed: int, schedule: str, episodes: int, out: Path) -> dict:
@@ -302,7 +339,7 @@ def fixed_start(seed: int, schedule: str, episodes: int, out: Path) -> dict:
     under ``schedule`` instead of its own."""
     model = out / f"fixed-start-{schedule}-{seed}.json"
     return {"seed": seed, "schedule": schedule, "episodes": episodes,
-            "episodes_to_converge": _tabular_run(model, seed, schedule, episodes, fixed=True)}
+            "episodes_to_converge": _tabular_run(model, seed, schedule, episodes, fixed=True)[0]}
 
 
 def main() -> None:
@@ -323,7 +360,9 @@ def main() -> None:
     relative.add_argument("dirs", nargs="+", help="the --out DIR of one reproduce run per seed")
     table = sub.add_parser("table-vi-1")
     table.add_argument("seed", type=int)
-    table.add_argument("--schedule", choices=("fql", "per-state"), default="per-state")
+    table.add_argument("--schedule", choices=("fql", "per-state", "own"), default="per-state")
+    table.add_argument("--reading", choices=("reward", "policy"), default="reward",
+                       help="policy: also the greedy policy's convergence (module docstring)")
     table.add_argument("--episodes", type=int, default=3000, help="single episodes per size")
     table.add_argument("--out", default=".", help="folder of the models and checkpoints")
     fixed = sub.add_parser("fixed-start")
@@ -334,8 +373,10 @@ def main() -> None:
     args = parser.parse_args()
     if args.probe in ("table-vi-1", "fixed-start"):
         Path(args.out).mkdir(parents=True, exist_ok=True)
-        probe = table_vi_1 if args.probe == "table-vi-1" else fixed_start
-        print(json.dumps(probe(args.seed, args.schedule, args.episodes, Path(args.out))))
+        if args.probe == "table-vi-1":
+            print(json.dumps(table_vi_1(args.seed, args.schedule, args.episodes, Path(args.out), args.reading)))
+        else:
+            print(json.dumps(fixed_start(args.seed, args.schedule, args.episodes, Path(args.out))))
     elif args.probe == "avoid-rules":
         avoid_rules(args.model, args.scratch)
     elif args.probe == "wall-corners":
