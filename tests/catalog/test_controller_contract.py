@@ -42,13 +42,15 @@ def test_built_by_its_factory_with_the_roles_ring_and_map_its_spec_states(name):
     assert isinstance(controller, MapAware) == spec.needs_map
 
 
-def _observation(ranges: float, distance: float) -> BatchObservation:
-    """Two robots, goal ahead-left, every range reading ``ranges``, the nearest obstacle ``distance`` away."""
-    angles = named_ring("thesis").angles
+def _observation(ranges, distance: float, angles=None, max_range: float = 4.0) -> BatchObservation:
+    """Two robots, goal ahead-left, the range readings ``ranges`` (one for every sensor of ``angles``, the
+    thesis ring by default), the nearest obstacle ``distance`` away."""
+    angles = named_ring("thesis").angles if angles is None else angles
     return BatchObservation(
         t=0.0, dt=0.1, pose=np.array([[5.0, 5.0, 0.0], [6.0, 4.0, 1.0]]), speed=np.array([0.5, 1.0]),
-        steering=np.zeros(2), target=np.array([[12.0, 9.0], [12.0, 9.0]]), ranges=np.full((2, len(angles)), ranges),
-        sensor_angles=angles, max_range=4.0, obstacle_distance=np.full(2, distance), obstacle_bearing=np.full(2, 0.3),
+        steering=np.zeros(2), target=np.array([[12.0, 9.0], [12.0, 9.0]]),
+        ranges=np.broadcast_to(np.asarray(ranges, dtype=float), (2, len(angles))).copy(),
+        sensor_angles=angles, max_range=max_range, obstacle_distance=np.full(2, distance), obstacle_bearing=np.full(2, 0.3),
         active=np.ones(2, dtype=bool), path=None, waypoint_index=np.zeros(2, dtype=int), target_velocity=None,
         extras={"task": "goal"})
 
@@ -68,6 +70,27 @@ def test_a_controller_that_reads_no_ranges_ignores_them(name):
             steering, speed = np.array([(c.steering, c.speed) for c in map(controller.act, map(obs.single, range(2)))]).T
         commands.append(np.concatenate([steering, speed]))
     np.testing.assert_array_equal(commands[0], commands[1])
+
+
+@pytest.mark.parametrize("name", [name for name in NAMES if CONTROLLERS[name].sensors != "none"])
+def test_a_controller_that_reads_ranges_reacts_to_them(name):
+    """The same state (the nearest obstacle 3 m away, as the map says), once with every range at the ring's
+    reach, once with the rays within ±0.3 rad of the heading reading 0.5 m: each robot's command changes."""
+    controller = _controller(name)
+    ring = (controller.sensors if isinstance(controller, BringsSensors) else None) or named_ring("thesis")
+    commands = []
+    for ahead in (ring.max_range, 0.5):
+        controller.reset(np.random.default_rng(0))
+        ranges = np.where(np.abs(ring.angles) <= 0.3, ahead, ring.max_range)
+        obs = _observation(ranges, distance=3.0, angles=ring.angles, max_range=ring.max_range)
+        if isinstance(controller, BatchController):
+            steering, speed, _ = controller.act_batch(obs)
+        else:
+            steering, speed = np.array([(c.steering, c.speed) for c in map(controller.act, map(obs.single, range(2)))]).T
+        commands.append(np.column_stack([steering, speed]))
+    for robot in range(2):
+        assert not np.allclose(commands[0][robot], commands[1][robot], rtol=0.0, atol=1e-6), (
+            f"{name}, robot {robot}: {commands[0][robot]} with nothing in range, {commands[1][robot]} with a wall ahead")
 
 
 @pytest.mark.parametrize("name", NAMES)
