@@ -26,7 +26,9 @@ def test_evaluate_model_json_matches_the_episodes_of_the_loaded_controller(q_mod
     assert result["controller"] == "q-goal" and result["model"] == str(q_model) and result["n"] == 4
     expected = [metrics(run_episode(s, load_controller(q_model), seed=3), s)
                 for s in generate_worlds("circles", 4, 3)]
-    assert [r["outcome"] for r in result["episodes"]] == [e["outcome"] for e in expected]
+    keys = ("scenario", "outcome", "time_s", "path_length_m", "min_clearance_m")
+    assert [{key: r[key] for key in keys} for r in result["episodes"]] == [{key: e[key] for key in keys}
+                                                                           for e in expected]
     assert result["success_rate"] == sum(e["outcome"] == "reached" for e in expected) / 4
     assert result["success_rate"] + result["collision_rate"] + result["timeout_rate"] == pytest.approx(1.0)
 
@@ -54,7 +56,7 @@ def test_evaluate_missing_model_file_is_an_input_error(tmp_path, capsys):
 
 
 def test_evaluate_needs_exactly_one_source(q_model):
-    with pytest.raises(InputError):
-        evaluate("fuzzy-2b", "circles", 1, model=q_model)
-    with pytest.raises(InputError):
-        evaluate(None, "circles", 1)
+    for controller, model in (("fuzzy-2b", q_model), (None, None)):  # both, or neither
+        with pytest.raises(InputError, match="give exactly one of a controller name and a model file") as error:
+            evaluate(controller, "circles", 1, model=model)
+        assert error.value.field == "controller"
