@@ -71,11 +71,19 @@ def avoid_numbers(**changes):
     ({"wall_following": "timeout"}, "after learning, along a wall to its goal (Fig VI.21)"),
     ({"evaluation": {"runs": 100, "success": 0.94, "collisions": 6}}, "collisions on the random worlds"),
     ({"initial_table": {"runs": 100, "success": 0.95, "collisions": 0}}, "success of the initial table on the same worlds"),
+    ({"evaluation": {"runs": 300, "success": 0.85, "collisions": 0}}, "success on 300 random obstacle worlds"),
 ])
 def test_fig_vi_22_fails_when_avoidance_was_not_learned(changes, failing):
     assert verdict("fig-VI-22", avoid_numbers())[0] == REPRODUCED
     state, checks = verdict("fig-VI-22", avoid_numbers(**changes))
     assert state == PARTLY and failing in [c.name for c in checks if not c.passed]
+
+
+def test_a_fixed_start_run_fails_when_its_learned_route_misses_the_goal():
+    fixed = {"converged_at": {"steering": 200}, "episodes": {"steering": 1000}, "trajectories": ["reached"]}
+    assert verdict("fig-VI-1", fixed)[0] == REPRODUCED
+    state, checks = verdict("fig-VI-1", {**fixed, "trajectories": ["collision"]})
+    assert state == PARTLY and [c.name for c in checks if not c.passed] == ["trajectory after learning"]
 
 
 def test_fig_vi_24_needs_both_navigators_to_reach_a_blocked_goal():
@@ -109,6 +117,9 @@ def test_table_vi_1_needs_the_trend_not_only_convergence():
     assert verdict("table-VI-1", {"rows": increasing, "rank_correlation": 1.0})[0] == REPRODUCED
     state, checks = verdict("table-VI-1", {"rows": scrambled, "rank_correlation": rank_correlation(scrambled)})
     assert state == PARTLY and not checks[0].passed
+    one_unconverged = rows([1000, 2000, None, 6000])  # ranked last: ρ 0.8, the trend still holds
+    state, checks = verdict("table-VI-1", {"rows": one_unconverged, "rank_correlation": rank_correlation(one_unconverged)})
+    assert state == PARTLY and [c.name for c in checks if not c.passed] == ["13 × 3: episodes to converge (thesis 6200)"]
     unconverged = rows([None, None, None, None])
     assert rank_correlation(unconverged) is None
     assert not verdict("table-VI-1", {"rows": unconverged, "rank_correlation": None})[1][0].passed
