@@ -7,7 +7,7 @@ import math
 import pytest
 
 from fuzzynav.catalog.experiments import spec
-from fuzzynav.experiments.routes import reference
+from fuzzynav.experiments.routes import change_check, reference
 from fuzzynav.fuzzy.systems import TABLE_V_1
 
 ALPHA = {"NG": -math.pi / 4, "NM": -math.pi / 8, "Z": 0.0, "PM": math.pi / 8, "PG": math.pi / 4}  # Fig V.6
@@ -83,3 +83,9 @@ def test_each_check_fails_on_the_numbers_that_contradict_it_alone(key, numbers, 
 def test_the_surface_check_names_the_cell_that_departs_from_table_v_1():
     checks = spec("fig-V-7").claim.evaluate(surface(alpha_at_peaks_rad=centre_cell(math.pi / 8)))[1]
     assert checks[-1].value == ["θ_er Z, dθ_er Z: 22.5° (Table V.1: Z)"]
+
+
+def test_a_capture_the_published_run_made_and_this_one_did_not_fails_the_change_check():
+    check = change_check("CF: capture time", None, "fig-V-29/fuzzy-tracker", "capture_time_s", "s")
+    assert not check.passed and check.target == "= the published tables' 9.6"
+    assert change_check("CF: capture time", 9.6, "fig-V-29/fuzzy-tracker", "capture_time_s", "s").passed
