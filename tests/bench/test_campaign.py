@@ -12,7 +12,10 @@ from pathlib import Path
 import pytest
 
 from fuzzynav.bench.measures import barn_score
+from fuzzynav.bench.suites import parse_suite
+from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.cli import main
+from fuzzynav.sim import metrics, run_episode
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "barn"
 FINAL = ("runs.csv", "runs.jsonl", "summary.json", "summary.md")
@@ -40,15 +43,33 @@ def test_files_rows_and_summary(reference):
     rows = [json.loads(line) for line in (reference / "runs.jsonl").read_text().splitlines()]
     assert [r["world"] for r in rows[:4]] == ["circles-5-000"] * 2 + ["circles-5-001"] * 2  # seed 0 first
     assert {r["world"][:9] for r in rows[6:]} == {"circles-6"}  # seed 1 draws its own worlds
+    assert {r["outcome"] for r in rows} >= {"reached", "collision"}  # both kinds below
     for r in rows:
         assert r["shortest_path_m"] > 0
-        if r["outcome"] == "reached":
+        if r["outcome"] == "reached":  # driven / shortest, of the successful runs only
+            assert r["path_ratio"] == pytest.approx(r["path_length_m"] / r["shortest_path_m"], rel=1e-12)
             assert r["path_ratio"] >= 1.0 - 1e-9
+        else:
+            assert r["path_ratio"] is None
     summary = json.loads((reference / "summary.json").read_text())
     assert [(s["suite"], s["controller"]) for s in summary["results"]] == [("circles:3:5", "goal-seeking"),
                                                                            ("circles:3:5", "vfh")]
     assert "failures-" in (reference / "index.html").read_text() or all(r["outcome"] == "reached" for r in rows)
     assert (reference / "cache" / "shortest").is_dir() and len(list((reference / "cache" / "shortest").iterdir())) == 6
+
+
+def test_each_row_holds_the_metrics_of_its_episode(reference):
+    """A row's numbers are those fuzzynav.sim.metrics gives the episode run alone (world, controller, seed)."""
+    suite = parse_suite("circles:3:5")
+    rows = [json.loads(line) for line in (reference / "runs.jsonl").read_text().splitlines()]
+    keys = ("outcome", "time_s", "path_length_m", "min_clearance_m", "steering_effort_rad", "steering_variation_rad",
+            "final_distance_m", "collision_by")
+    for r in rows[:4] + rows[-2:]:  # both controllers on worlds of both seeds
+        index = int(r["world"].rsplit("-", 1)[1])
+        scenario = suite.scenario(index, r["seed"])
+        assert scenario.name == r["world"]
+        numbers = metrics(run_episode(scenario, make_controller(r["controller"]), seed=r["seed"]), scenario)
+        assert {key: r[key] for key in keys} == {key: numbers[key] for key in keys}, r["world"]
 
 
 def test_existing_campaign_needs_resume(reference, tmp_path, capsys):
