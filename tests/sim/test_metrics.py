@@ -66,3 +66,26 @@ def test_metrics_of_a_constant_turn_in_closed_loop():
     end = np.array([10.0, 10.0]) + 0.1 * np.array([np.cos(heading).sum(), np.sin(heading).sum()])
     assert m["final_distance_m"] == pytest.approx(np.hypot(*(end - [15.0, 2.0])), abs=1e-9)
     assert m["final_distance_m"] > np.hypot(5.0, 8.0)  # it turned left, away from the goal below it
+
+
+def test_the_target_metrics_of_a_hand_made_pursuit():
+    """A target moving along x from (10, 5) at 1 m/s, pursued for 2 s (dt 1 s): captured or not."""
+    scenario = scenario_from_dict({"robot": {"x": 2.0, "y": 5.0}, "target": {
+        "x": 10.0, "y": 5.0, "tolerance": 0.5, "motion": {"type": "line", "velocity": [1.0, 0.0]}}},
+        source="test", name="pursuit")
+    target = np.array([[10.0, 5.0], [11.0, 5.0], [12.0, 5.0]])
+
+    def trace(outcome, last):
+        xy = np.array([[2.0, 5.0], [6.0, 5.0], last])
+        return Trace(scenario="pursuit", controller="by-hand", task="target", dt=1.0, t=np.array([0.0, 1.0, 2.0]),
+                     pose=np.column_stack([xy, np.zeros(3)]), ranges=np.full((3, 1), 4.0), target=target,
+                     waypoint_index=np.zeros(3, dtype=int), steering=np.zeros(2), speed=np.array([4.0, 4.0]),
+                     behaviour=np.array(["a", "a"]), sensor_angles=np.zeros(1), max_range=4.0, outcome=outcome,
+                     robot_radius=0.3)
+
+    caught = metrics(trace("reached", [12.0, 5.3]), scenario)  # 0.3 m from the target at t = 2 s
+    assert caught["captured"] and caught["capture_time_s"] == 2.0
+    assert caught["final_error_m"] == pytest.approx(0.3, abs=1e-12) == caught["final_distance_m"]
+    missed = metrics(trace("timeout", [9.0, 5.0]), scenario)  # 3 m behind it when the time is up
+    assert not missed["captured"] and missed["capture_time_s"] is None
+    assert missed["final_error_m"] == pytest.approx(3.0, abs=1e-12)  # not the 1 m to where the target started
