@@ -4,7 +4,8 @@ Always: ``scenario``, ``controller``, ``task``, ``outcome``, ``reached_goal`` (g
 completed or target captured), ``collision``, ``timeout``, ``time_s``, ``steps``,
 ``path_length_m`` (length of the driven polyline), ``min_clearance_m`` (smallest gap between
 the robot's footprint disc and any obstacle or the boundary; < 0 means overlap),
-``mean_speed_mps``, ``final_speed_mps`` (speed commanded at the last step: 0 before any step;
+``mean_speed_mps`` (mean of the speed V commanded at each step, signed: reversing counts
+negative; ``path_length_m / time_s`` is the distance covered per second), ``final_speed_mps`` (speed commanded at the last step: 0 before any step;
 ≤ 0.2 m/s for a robot that stops at its goal as Table IV.1's does), ``final_distance_m`` (to the
 goal / current waypoint / target), ``steering_effort_rad`` (mean |α|), ``steering_variation_rad``
 (Σ |Δα|) and ``collision_by`` (``"robot"`` or ``"obstacle"``: who moved into whom,

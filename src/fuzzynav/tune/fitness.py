@@ -139,7 +139,9 @@ def summary(out: np.ndarray, dt: np.ndarray, wall: bool = False) -> dict:
     """Success / collision / timeout rates, mean time to the goal and least clearance of one
     candidate's episode rows ``(W, N_OUT)`` (what ``fuzzynav evaluate`` reports). ``wall``: success
     is lasting the episode without collision, and the wall-following measures are added: the
-    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m), the mean speed (m/s)
+    share of steps closer than d_m, the mean distance outside [d_m, d_s] (m), the mean speed (m/s:
+    the distance covered over all the episodes per second of them, reversing counted positive; not
+    a run's ``mean_speed_mps``, the signed mean of the commanded speed, :mod:`fuzzynav.sim.metrics`)
     and the share followed: lasted at a mean speed of at least :data:`CREEP` × P (a lasted episode
     below it is the failure :func:`wall_cost` prices as a collision)."""
     outcome = out[:, OUTCOME]
