@@ -101,23 +101,40 @@ def test_every_role_exports_and_reads_back(controller, tmp_path):
 
 
 
-@pytest.mark.parametrize("controller, scenario", [("fuzzy-2b", "fig-IV-15a"), ("fuzzy-5b-rays", "fig-IV-22a"),
-                                                  ("fuzzy-5b", "fig-IV-22a"),
-                                                  ("wall-follow", "fig-VI-28")])
-def test_every_role_drives_the_compiled_navigators(controller, scenario, tmp_path):
+@pytest.mark.parametrize("controller, scenarios, edited", [
+    ("fuzzy-2b", ("fig-IV-15a",), None), ("fuzzy-5b-rays", ("fig-IV-22a", "fig-IV-23"), None),
+    ("fuzzy-5b", ("fig-IV-22a",), ("gsb",)), ("wall-follow", ("fig-VI-28",), None)])
+def test_every_role_drives_the_compiled_navigators(controller, scenarios, edited, tmp_path):
     """Each role's exported system, read back through --fis, drives the compiled navigator along
-    the built-in trajectory (so the replacement really reaches the kernels' tables)."""
-    world = load_scenario(scenario)
-    original = run_episode(world, make_controller(controller), seed=0)
+    the built-in trajectories; and each role of ``edited`` (None: every role) alone, edited so that
+    every rule concludes the next term of its output, changes one of them (so the replacement
+    really reaches the kernels' tables). `fuzzy-5b-rays` needs fig-IV-23 for its front avoider,
+    which its turning-room layer overrides wherever it fires in fig-IV-22a; `fuzzy-5b` steers round
+    obstacles by its gap finder, its three avoiders act only where no gap fits (none in these
+    worlds), and its pace overrides a speed from `vrb` below the room ahead's (docs/guide/fuzzy.md)."""
+    worlds = [load_scenario(scenario) for scenario in scenarios]
+    originals = [run_episode(world, make_controller(controller), seed=0) for world in worlds]
     options = []
     for role in ROLES[controller]:
         path = tmp_path / f"{role}.yaml"
         assert main(["fis", "convert", f"{controller}:{role}", "--to", "yaml", "-o", str(path)]) == 0
         options.append(f"{role}={path}")
-    replaced = run_episode(world, make_controller(controller, systems=systems_from_options(controller, options)),
-                           seed=0)
-    assert replaced.outcome == original.outcome
-    np.testing.assert_allclose(replaced.pose, original.pose, rtol=0, atol=1e-9)
+    for world, original in zip(worlds, originals):
+        replaced = run_episode(world, make_controller(controller, systems=systems_from_options(controller, options)),
+                               seed=0)
+        assert replaced.outcome == original.outcome
+        np.testing.assert_allclose(replaced.pose, original.pose, rtol=0, atol=1e-9)
+    for role in edited or ROLES[controller]:
+        system = load(tmp_path / f"{role}.yaml")
+        labels = {output.name: list(output.labels) for output in system.outputs}
+        rules = [str(rule).split(" THEN ")[0] + " THEN " + " AND ".join(
+            f"{name} IS {labels[name][(labels[name].index(term) + 1) % len(labels[name])]}" for name, term in rule.conclusions)
+            for rule in system.rules]
+        edited = tmp_path / f"{role}-edited.yaml"
+        save(FuzzySystem(system.inputs, system.outputs, rules, method=system.method), edited)
+        systems = systems_from_options(controller, [f"{role}={edited}"])
+        driven = [run_episode(world, make_controller(controller, systems=systems), seed=0) for world in worlds]
+        assert any(d.pose.shape != o.pose.shape or not np.allclose(d.pose, o.pose) for d, o in zip(driven, originals)), role
 
 
 def _campaign(out, *extra):
