@@ -254,8 +254,8 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
 
     world_doc = check.mapping(doc.get("world", {}), "world", ("width", "height"))
     width, height = limits.world_size(world_doc.get("width", 20.0), world_doc.get("height", 20.0), source)
-    obstacles_doc = validation.sequence(doc.get("obstacles", []) or [], source, "obstacles",
-                                        max_length=limits.MAX_OBSTACLES)
+    obstacles_doc = validation.sequence([] if doc.get("obstacles") is None else doc["obstacles"], source,
+                                        "obstacles", max_length=limits.MAX_OBSTACLES)  # 0, false, {}: refused
     entries = [_obstacle(check, o, f"obstacles[{i}]") for i, o in enumerate(obstacles_doc)]
     obstacles = tuple(shape for shape, _ in entries)
     limits.world_contents(obstacles, width, height, source)
