@@ -75,7 +75,7 @@ class FuzzySystem(VariableNames):
         self.rules = [parse_rule(r) if isinstance(r, str) else r for r in rules]
         self.method = _choice("method", method, METHODS)
         self.tnorm = _choice("tnorm", tnorm, inference.TNORMS)
-        self.defuzzifier = _choice("defuzzifier", defuzzifier or _DEFAULT_DEFUZZIFIER[method],
+        self.defuzzifier = _choice("defuzzifier", _DEFAULT_DEFUZZIFIER[method] if defuzzifier is None else defuzzifier,
                                    ("centroid",) if method == "mamdani" else ("weighted_sum", "weighted_average"))
         self.implication = _choice("implication", implication, inference.IMPLICATIONS)
         self.aggregation = _choice("aggregation", aggregation, inference.AGGREGATIONS)
