@@ -11,7 +11,6 @@ import json
 import sys
 from pathlib import Path
 
-from fuzzynav import validation
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
@@ -41,10 +40,17 @@ def run(args) -> int:
 
     from fuzzynav.bench.suites import REFERENCE_FILE, read_references
     from fuzzynav.storage import write_text_atomic
-    from fuzzynav.world.barn import barn_scenario, find_path_file, optimal_path_length, read_posts, world_index
+    from fuzzynav.world.barn import (
+        barn_scenario,
+        check_scale,
+        find_path_file,
+        optimal_path_length,
+        read_posts,
+        world_index,
+    )
     from fuzzynav.world.scenario import scenario_from_dict
 
-    validation.positive(args.scale, field="--scale")
+    check_scale(args.scale)
     out = arguments.check_folder(args.out, "--out", (REFERENCE_FILE,))  # made by the first file written
     reference_file = out / REFERENCE_FILE
     references = read_references(reference_file) if reference_file.is_file() else {}  # read as bench reads it

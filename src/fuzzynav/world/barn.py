@@ -26,6 +26,7 @@ import numpy as np
 
 from fuzzynav import validation
 from fuzzynav.errors import InputError
+from fuzzynav.world import limits
 from fuzzynav.world.polylines import path_length
 
 START = (-2.25, 3.0, 1.57)  # run.py, static worlds 0–299
@@ -123,18 +124,26 @@ def world_index(path: Path) -> int | None:
     return int(match.group(1)) if match else None
 
 
+GOAL = (START[0] + GOAL_OFFSET[0], START[1] + GOAL_OFFSET[1])
+X0, Y0 = FIELD[0] - MARGIN, FIELD[2] - MARGIN  # the world's lower-left corner, before scaling
+SIZE = (FIELD[1] + MARGIN - X0, max(FIELD[3], GOAL[1] + GOAL_TOLERANCE) + MARGIN - Y0)  # (m) at scale 1
+
+
+def check_scale(scale, field: str = "--scale") -> float:
+    """``scale`` for :func:`barn_scenario`: a finite number > 0 at which the world fits the world
+    size limit (a larger one would make every world too large, or overflow to inf)."""
+    return validation.number(scale, field=field, lo=0.0, lo_open=True, hi=limits.MAX_WORLD_SIZE / max(SIZE))
+
+
 def barn_scenario(posts: np.ndarray, name: str, scale: float = 1.0) -> dict:
     """The scenario document (module docstring) of a BARN world's ``posts`` at ``scale``."""
-    x0, y0 = FIELD[0] - MARGIN, FIELD[2] - MARGIN
-    goal = (START[0] + GOAL_OFFSET[0], START[1] + GOAL_OFFSET[1])
-    top = max(FIELD[3], goal[1] + GOAL_TOLERANCE) + MARGIN
-    move = lambda x, y: [round(float(scale * (x - x0)), 6), round(float(scale * (y - y0)), 6)]
+    move = lambda x, y: [round(float(scale * (x - X0)), 6), round(float(scale * (y - Y0)), 6)]
     return {
         "name": name,
         "description": f"BARN {name} at scale {scale:g} (posts -> circles, the challenge's start, goal and time limit)",
-        "world": {"width": round(scale * (FIELD[1] + MARGIN - x0), 6), "height": round(scale * (top - y0), 6)},
+        "world": {"width": round(scale * SIZE[0], 6), "height": round(scale * SIZE[1], 6)},
         "robot": dict(zip(("x", "y"), move(*START[:2])), theta=START[2]),
-        "goal": dict(zip(("x", "y"), move(*goal)), tolerance=round(scale * GOAL_TOLERANCE, 6)),
+        "goal": dict(zip(("x", "y"), move(*GOAL)), tolerance=round(scale * GOAL_TOLERANCE, 6)),
         "obstacles": [{"circle": {"center": move(x, y), "radius": round(float(scale * r), 6)}} for x, y, r in posts],
         "max_time": TIME_LIMIT,
     }
