@@ -158,7 +158,9 @@ class FuzzySystem(VariableNames):
         if X.ndim != 2 or X.shape[1] != len(self.inputs):
             raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
                              f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
-        if np.isnan(X.sum()):  # cheap screen; inf - inf also lands here
+        with np.errstate(over="ignore", invalid="ignore"):  # ±1e308 inputs overflow the sum to inf, quietly
+            screened = np.isnan(X.sum())  # cheap screen; inf - inf also lands here
+        if screened:
             bad = np.isnan(X).any(axis=0)
             if bad.any():
                 raise InputError("NaN input", field=", ".join(np.array(self.input_names)[bad]))
