@@ -68,6 +68,8 @@ CASES = [
          expect="--size: sets the --animate GIF: give --animate FILE.gif too"),
     Case("run-fps-without-animate", argv=("run", "fig-IV-12a", "--fps", "5"),
          expect="--fps: sets the --animate GIF: give --animate FILE.gif too"),
+    Case("reproduce-list-with-an-id", argv=("reproduce", "--list", "fig-V-28"),  # listed all, ran nothing, said nothing
+         expect="--list: lists the experiments and runs none: give the ids without --list"),
     Case("scenarios-show-empty", argv=("scenarios", "--show", ""), expect="--show: no built-in scenario ''"),
     Case("scenarios-show-twice", argv=("scenarios", "--show", "fig-IV-12a", "--show", "fig-IV-15a"),
          expect="--show: is given 2 times: it prints the YAML of one scenario"),

@@ -85,6 +85,8 @@ def run(args) -> int:
     from fuzzynav.errors import InputError
     from fuzzynav.experiments import report, rule_bases
 
+    if args.list and args.ids:
+        raise InputError("lists the experiments and runs none: give the ids without --list to run them", field="--list")
     if args.list or not args.ids:
         listing = registry.available()
         for key, text in listing.items():
