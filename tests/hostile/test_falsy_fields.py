@@ -1,8 +1,9 @@
 """Fields given a value that only looks empty — ``0``, ``false``, ``''``, ``{}``, ``[]`` — where a
 list or a choice goes. Such a value was taken for the field's absence: ``obstacles: 0`` ran a
 world without obstacles, ``defuzzifier: false`` in a fuzzy system file ran the method's default
-(a weighted average, where the file's rules were written for a weighted sum). Refused now; a
-field that is absent or ``null`` still takes its default.
+(a weighted average, where the file's rules were written for a weighted sum), and a scenario
+``name: ''`` named its runs and plots with nothing. Refused now; a field that is absent or
+``null`` still takes its default.
 
 The cases run as those of ``cases.py`` do (``test_hostile_corpus.py``)."""
 
@@ -43,6 +44,10 @@ CASES = [
            expect=f"f.yaml: defuzzifier: must be one of weighted_sum, weighted_average, got {shown}")
       for label, value, shown in (("zero", "0", "0"), ("false", "false", "False"), ("empty-text", "''", "''"),
                                   ("empty-list", "[]", "[]"))],
+    # an empty name ran as " / goal-seeking" and drew "_--goal-seeking.png"; absent, the file's stem names it
+    *[Case(f"scenario-name-{label}", {"s.yaml": SCENARIO + f"name: {value}\n"}, RUN, expect="s.yaml: name: must not be empty")
+      for label, value in (("empty", "''"), ("blank", "'  '"))],
+    Case("scenario-name-absent-is-the-file-stem", {"s.yaml": SCENARIO}, RUN, status=0, expect='"scenario": "s"'),
     Case("fuzzy-yaml-defuzzifier-weighted-sum", {"f.yaml": SYSTEM.replace("DEFUZZIFIER", "weighted_sum")}, EVAL,
          status=0, expect='{"y": 0.5}'),
     Case("fuzzy-yaml-defuzzifier-null-is-the-default", {"f.yaml": SYSTEM.replace("DEFUZZIFIER", "null")}, EVAL,

@@ -44,8 +44,8 @@ class Checks:
             self.fail(field, f"at most {maximum} points (docs/limits.md), got {len(items)}")
         return np.array([self.point(v, f"{field}[{i}]") for i, v in enumerate(items)])
 
-    def text(self, value, field: str) -> str:
-        return validation.text(value, self.source, field, max_length=1000)
+    def text(self, value, field: str, allow_empty: bool = True) -> str:
+        return validation.text(value, self.source, field, max_length=1000, allow_empty=allow_empty)
 
 
 class ShapeFields:

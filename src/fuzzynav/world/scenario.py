@@ -304,7 +304,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
             _reachable(check, world, position, target.tolerance, radius, "target", "target")
 
     return Scenario(
-        name=check.text(doc.get("name", name or "scenario"), "name"),
+        name=check.text(doc.get("name", name or "scenario"), "name", allow_empty=False),  # it names runs and plots
         world=world,
         start=start,
         goal=goal,
