@@ -236,11 +236,21 @@ def read_document(path) -> dict:
     return document
 
 
+def matches(found, expected) -> bool:
+    """``found == expected`` for whatever a document's field holds: False for a boolean standing for
+    1 or 0, and for an array of several values or none (a field of an ``.npz`` archive), whose
+    ``==`` compares value by value."""
+    try:
+        return not isinstance(found, bool) and bool(found == expected)
+    except ValueError:  # the truth of an array of several values, or of none, is ambiguous
+        return False
+
+
 def supported_version(document: dict, version: int, source=None, *, required: bool = False) -> None:
     """Refuse a ``document`` whose ``version`` is not ``version`` (a boolean is not a version);
     one without the field is of ``version`` unless it is ``required``."""
     if required and "version" not in document:
         validation.fail(f"unsupported version None (this package reads {version})", source, "version")
     found = document.get("version", version)
-    if found != version or isinstance(found, bool):
+    if not matches(found, version):
         validation.fail(f"unsupported version {validation.shown(found)} (this package reads {version})", source, "version")

@@ -1,5 +1,6 @@
 """More hostile inputs for the readers: a closed standard input, deeply nested JSON in the files a
-command reads back, model files that cannot be read or are not what their kind says, special
+command reads back, model files that cannot be read or are not what their kind says (an ``.npz``
+archive whose ``version`` or ``format`` is an array of several values or none), special
 files named as model or scenario files, options a command would silently ignore, C
 file names an #include cannot hold, a model's training record out of range.
 
@@ -52,6 +53,13 @@ CASES = [
            ("fis", argv[0], "{d}/junk.npz", *argv[1:]),
            expect="junk.npz: cannot read model file: neither an .npz archive (no zip header) nor a valid JSON")
       for argv in FIS_COMMANDS],
+    *[Case(f"fis-{argv[0]}-npz-{field}-of-{label}",  # `!=` of an array: "truth value ... ambiguous", a traceback
+           python=f"np.savez(d / 'p.npz', kind=np.array('fql-goal'), {field}=np.array({value}))\n"
+                  f"from fuzzynav.cli import main\nraise SystemExit(main(['fis', {argv[0]!r}, str(d / 'p.npz'), *{argv[1:]!r}]))",
+           expect=f"p.npz: {field}: {problem}")
+      for argv in FIS_COMMANDS
+      for field, label, value, problem in (("version", "two-values", "[1, 1]", "unsupported version array([1, 1])"),
+                                           ("format", "no-value", "[]", "format must be 'fuzzynav-fis', got array([]"))],
     Case("fis-show-npz-missing", argv=("fis", "show", "{d}/nothere.npz"), expect="nothere.npz: no such model file"),
     *[Case(f"run-model-q-goal-relabelled-{kind}",
            python=f"edited_model(d, ['q-goal', '--episodes', '2', '--quiet'], lambda doc: doc.update(kind={kind!r}), "

@@ -39,7 +39,7 @@ from fuzzynav.fuzzy.membership import make
 from fuzzynav.fuzzy.rules import parse_rule, rules_from_grid
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.fuzzy.variable import Variable
-from fuzzynav.storage import supported_version
+from fuzzynav.storage import matches, supported_version
 
 FORMAT = "fuzzynav-fis"
 VERSION = 1
@@ -190,7 +190,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
     """Build the system a document describes; errors name ``source`` and the field."""
     if not isinstance(doc, dict):
         raise InputError("a fuzzy system file holds a mapping", source=source)
-    if doc.get("format", FORMAT) != FORMAT:
+    if not matches(doc.get("format", FORMAT), FORMAT):
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
     supported_version(doc, VERSION, source)
     _check_keys(doc, _TOP_KEYS, source, "", strict=False)
