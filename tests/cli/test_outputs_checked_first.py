@@ -1,6 +1,8 @@
 """A long command refuses an output it could not write before it starts working: ``train`` and
 ``tune`` check ``--out`` and ``--curve`` (a folder, a missing folder, a folder it may not write in)
-before the first episode, with a one-line error naming the option (exit status 2)."""
+before the first episode, ``evaluate`` its ``--save-failures`` folder before the first world and
+``reproduce`` its ``--out`` folder before the first experiment (they ran every world, or the
+first experiment, then failed to write), with a one-line error naming the option (exit status 2)."""
 
 import os
 
@@ -58,3 +60,16 @@ def test_an_output_that_is_a_folder_or_in_a_read_only_folder_is_refused(tmp_path
     assert not out.exists() and not any(locked.iterdir())
     err = _refused([*command, "--out", str(out), "--curve", str(locked / "c.png")], capsys)
     assert "--curve" in err and "cannot write in the folder" in err and not out.exists()
+
+
+@pytest.mark.parametrize("command, flag", [
+    (["evaluate", "--controller", "goal-seeking", "--worlds", "circles", "--n", "2", "--quiet"], "--save-failures"),
+    (["reproduce", "fig-V-7", "--quick", "--quiet"], "--out")], ids=["evaluate", "reproduce"])
+def test_an_output_folder_it_may_not_write_in_is_refused_before_the_runs(tmp_path, capsys, monkeypatch, command, flag):
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    real = os.access
+    monkeypatch.setattr(os, "access", lambda path, mode, **kw: False if str(path) == str(locked) else real(path, mode, **kw))
+    err = _refused([*command, flag, str(locked)], capsys)
+    assert flag in err and "cannot write in the folder" in err and str(locked) in err
+    assert not any(locked.iterdir())

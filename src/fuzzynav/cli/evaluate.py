@@ -78,6 +78,7 @@ def run(args) -> int:
         # made now, so that an unwritable place fails before any run (and removed if nothing is saved)
         made = [folder for folder in (args.save_failures, *args.save_failures.parents) if not folder.exists()]
         args.save_failures.mkdir(parents=True, exist_ok=True)
+        arguments.check_writable(args.save_failures / f"{args.worlds}-{args.seed}-000.yaml", "--save-failures")
 
     def progress(i, run):
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)

@@ -106,6 +106,7 @@ def run(args) -> int:
     replaced = replaced_files(args.fis)  # absolute: the record stays true wherever it is read from
     report.not_anothers(args.out)
     args.out.mkdir(parents=True, exist_ok=True)
+    arguments.check_writable(args.out / "index.html", "--out")  # before the first experiment, not after it
     workers = min(args.workers or threads.cores(), len(ids))
     if workers > 1:  # the longest first, by an earlier run's time in --out (unknown ones first of all)
         earlier = {key: report.recorded_seconds(args.out, key, quick=args.quick) for key in ids}
