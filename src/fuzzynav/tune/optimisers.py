@@ -25,6 +25,16 @@ METHODS = ("ga", "pso", "aco", "de", "cmaes", "nsga2")
 CMA_SIGMA = 0.1  # CMA-ES's first step size, in genes (the box is [0, 1]; as SPREAD of the first populations)
 
 
+PACKAGES = {"ga": "pymoo", "pso": "pymoo", "de": "pymoo", "nsga2": "pymoo", "cmaes": "cma"}  # aco: this package's
+
+
+def check_available(method: str) -> None:
+    """The package ``method`` runs on can be imported: checked with the options, before the training
+    worlds are built (and kernels compiled) for nothing."""
+    if method in PACKAGES:
+        _needs(PACKAGES[method])
+
+
 def _needs(module: str):
     try:
         return __import__(module)

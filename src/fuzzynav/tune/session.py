@@ -31,7 +31,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.tune import checkpoint
 from fuzzynav.tune.fitness import OBJECTIVES, Fitness
-from fuzzynav.tune.optimisers import METHODS
+from fuzzynav.tune.optimisers import METHODS, check_available
 from fuzzynav.tune.space import WHAT
 
 MAX_BUDGET = 10_000_000
@@ -102,6 +102,7 @@ def check(request: TuneRequest):
     system = request.systems[role] if role in request.systems else system
     validation.choice(request.what, WHAT, field="--what")
     validation.choice(request.method, METHODS, field="--method")
+    check_available(request.method)
     validation.integer(request.population, field="--population", lo=2, hi=10_000)
     validation.integer(request.budget, field="--budget", lo=1, hi=MAX_BUDGET)
     validation.integer(request.seed, field="--seed", lo=0, hi=2**32 - 1)
