@@ -46,6 +46,7 @@ MAX_UNIVERSE_WIDTH = 1e300  # a fuzzy variable's hi - lo: MAX_RESOLUTION samples
 MAX_WORLDS = 100_000  # generated worlds of one request (``worlds generate --n``, a bench suite's COUNT, Gym n_worlds)
 MAX_SEED = 2**63 - 1  # a seed (``--seed``, ``seed=``, Gym ``world_seed``): NumPy takes non-negative seeds
 MAX_SEEDS = 10_000  # seeds of one campaign (``bench --seeds``)
+MAX_SMALL_SEED = 2**32 - 1  # the seed of scikit-learn's MLP and of the tuners: ``tune``, ``reproduce --seed``
 MAX_CAMPAIGN_RUNS = 1_000_000  # runs of one campaign: suites' worlds x seeds x controllers
 MAX_WORKERS = 1024  # parallel workers (``bench --workers``; default: the cores)
 MAX_ROBOTS = 100_000  # robots stepped together (``BatchSimulator`` n / starts, Gym ``num_envs``)

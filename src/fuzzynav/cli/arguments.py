@@ -113,6 +113,16 @@ def seed(text: str) -> int:
     return _integer(text, 0, validation.MAX_SEED)
 
 
+def small_seed(text: str) -> int:
+    """``--seed`` of runs that seed scikit-learn's MLP or a tuner (``reproduce``): at most 2**32 - 1."""
+    from fuzzynav import validation
+
+    value = seed(text)
+    if value > validation.MAX_SMALL_SEED:
+        raise argparse.ArgumentTypeError(f"must be an integer in [0, {validation.MAX_SMALL_SEED}], got {value}")
+    return value
+
+
 def count(hi: int, lo: int = 1) -> Callable[[str], int]:
     """The argument type of a count option: an integer in [lo, hi], refused by argparse (exit 2)
     before any work starts; the option's help states the limit."""

@@ -38,7 +38,8 @@ def register(subparsers) -> None:
     parser.add_argument("--out", type=arguments.path, default=Path("fuzzynav-out/reproduce"),
                         help="output folder (default: fuzzynav-out/reproduce)")
     parser.add_argument("--quick", action="store_true", help="short runs (smoke test), not the thesis' setting")
-    parser.add_argument("--seed", type=arguments.seed, default=0, help="random seed (default 0)")
+    parser.add_argument("--seed", type=arguments.small_seed, default=0,
+                        help="random seed, 0 to 2**32 - 1 (default 0)")
     parser.add_argument("--quiet", action="store_true", help="no progress bars")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="run with the rule base of ROLE replaced (gsb, oab, foa, roa, loa, vrb, wall, tracker; "

@@ -172,7 +172,7 @@ def fit_inverse_model(
     if solver not in SOLVERS:
         raise InputError(f"must be one of {', '.join(SOLVERS)}, got {solver!r}", field="solver")
     if random_state is not None:  # scikit-learn's random_state takes 32-bit seeds only
-        validation.integer(random_state, field="seed", lo=0, hi=2**32 - 1)
+        validation.integer(random_state, field="seed", lo=0, hi=validation.MAX_SMALL_SEED)
     x_mean, x_std = X.mean(axis=0), X.std(axis=0)
     x_std = np.where(x_std > 0, x_std, 1.0)
     y_mean, y_std = float(y.mean()), float(y.std()) or 1.0

@@ -105,7 +105,7 @@ def check(request: TuneRequest):
     check_available(request.method)
     validation.integer(request.population, field="--population", lo=2, hi=10_000)
     validation.integer(request.budget, field="--budget", lo=1, hi=MAX_BUDGET)
-    validation.integer(request.seed, field="--seed", lo=0, hi=2**32 - 1)
+    validation.integer(request.seed, field="--seed", lo=0, hi=validation.MAX_SMALL_SEED)
     if request.objectives and request.method != "nsga2":
         raise InputError("--objectives needs --method nsga2 (the other methods minimise one cost)", field="--objectives")
     if request.method == "nsga2":
