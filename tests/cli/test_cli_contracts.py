@@ -54,6 +54,14 @@ def test_an_empty_path_is_a_usage_error_not_the_current_folder(capsys, tmp_path,
     assert not list(tmp_path.iterdir())  # nothing written into the current folder
 
 
+@pytest.mark.parametrize("n, said", [(1, "wrote 1 scenario file to {out}/ (mixed-0-000.yaml);"),
+                                     (2, "wrote 2 scenario files to {out}/ (mixed-0-000.yaml … mixed-0-001.yaml);")])
+def test_worlds_generate_names_what_it_wrote(capsys, tmp_path, n, said):
+    # one world was "1 scenario files (mixed-0-000.yaml … mixed-0-000.yaml)"
+    assert main(["worlds", "generate", "mixed", "--n", str(n), "--out", str(tmp_path)]) == 0
+    assert said.format(out=tmp_path) in capsys.readouterr().out
+
+
 def test_evaluate_workers_out_of_range_is_a_usage_error(capsys):
     status, err = run_cli(capsys, "evaluate", "--worlds", "circles", "--n", "1", "--workers", "0")
     assert status == 2

@@ -40,6 +40,7 @@ def run(args) -> int:
     scenarios = generate_worlds(args.family, args.n, args.seed)
     for scenario in progress.bar(scenarios, desc="worlds", unit="world"):
         save_scenario(scenario, args.out / f"{scenario.name}.yaml")
-    print(f"wrote {len(scenarios)} scenario files to {args.out}/ "
-          f"({scenarios[0].name}.yaml … {scenarios[-1].name}.yaml); run one with `fuzzynav run FILE --controller NAME`")
+    names = f"{scenarios[0].name}.yaml" + (f" … {scenarios[-1].name}.yaml" if len(scenarios) > 1 else "")
+    print(f"wrote {len(scenarios)} scenario file{'s' * (len(scenarios) > 1)} to {args.out}/ ({names}); "
+          "run one with `fuzzynav run FILE --controller NAME`")
     return 0
