@@ -18,8 +18,14 @@ from fuzzynav import progress, validation
 from fuzzynav.catalog import tasks
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
-from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, PHASE_NOTE, PhaseSummary, TrainRequest, checkpoint_path
+from fuzzynav.learn.tasks.common import GOAL_CONVERGENCE, PhaseSummary, TrainRequest, checkpoint_path
 from fuzzynav.storage import document_format
+
+PHASE_NOTE = ("success: the share of the last training episodes that reached the goal (a wall follower's: "
+              "that lasted without collision), exploration still on; not converged: no plateau of the mean "
+              "reward per episode held for the criterion's whole hold before the budget ended (more --episodes "
+              "may show one, which may begin before this run's end)")
+"""What the words of a phase's line (:class:`~fuzzynav.learn.tasks.common.PhaseSummary`) mean, said once after them."""
 
 PRIORS = ("none", "thesis")
 MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)

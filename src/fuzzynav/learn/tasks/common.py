@@ -245,18 +245,11 @@ def converged_at(reward, success, batch: int, settings: dict | None = None) -> i
                                 **options)
 
 
-PHASE_NOTE = ("success: the share of the last training episodes that reached the goal (a wall follower's: "
-              "that lasted without collision), exploration still on; not converged: no plateau of the mean "
-              "reward per episode held for the criterion's whole hold before the budget ended (more --episodes "
-              "may show one, which may begin before this run's end)")
-"""What the words of a :class:`PhaseSummary` line mean, said once after the phases' lines."""
-
-
 class PhaseSummary(dict):
     """The train results of one phase: ``episodes``, ``converged_at`` (``None`` when the curve did
     not settle within the budget) and ``final_training_success``; JSON as a plain mapping, and
     printed by ``fuzzynav train`` as one readable line ("not converged within N episodes" for
-    ``None``), whose words :data:`PHASE_NOTE` explains."""
+    ``None``), whose words ``fuzzynav.cli.train.PHASE_NOTE`` explains."""
 
     def __str__(self) -> str:
         converged = (f"not converged within {self['episodes']} episodes" if self["converged_at"] is None
