@@ -59,6 +59,9 @@ def test_demo_runs_a_users_world_with_the_controllers_given(tmp_path, capsys):
     assert last.startswith("next: `") and "fuzzynav run fig-IV-23 --plot u.png`" in last
     table = (tmp_path / "out" / "metrics.md").read_text()
     assert "mean_cross_track_m" in table.splitlines()[0] and "| mine | fuzzy-2b |" in table
+    assert main(["demo", "--scenario", str(world), "--controllers", "fuzzy-2b", "--out", str(tmp_path / "one"),
+                 "--no-plots"]) == 0
+    assert "wrote 1 run: " in capsys.readouterr().out  # not "1 runs"
 
 
 def test_metrics_table_carries_each_tasks_own_columns():

@@ -173,5 +173,5 @@ def run(args) -> int:
                       **({"perturb": dict(plan.perturb)} if plan.perturb else {}),
                       **({"plant": plan.plant} if plan.plant != DEFAULT_PLANT else {})}
     write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
-    print(f"{len(rows)} runs in {out}: summary.md, summary.json, index.html", file=sys.stderr)
+    print(f"{len(rows)} run{'s' * (len(rows) != 1)} in {out}: summary.md, summary.json, index.html", file=sys.stderr)
     return 0

@@ -201,7 +201,7 @@ def run(args) -> int:
     write_text_atomic(args.out / "metrics.json", json.dumps(rows, indent=2))
     write_text_atomic(args.out / "metrics.md", markdown_table(rows))
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
-    print(f"wrote {len(rows)} runs: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
+    print(f"wrote {len(rows)} run{'s' * (len(rows) != 1)}: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
     command = command_name()
     print(f"next: `{command} run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b; "
           f"`{command} COMMAND --help` shows each command with examples; the README's tour tries them all")
