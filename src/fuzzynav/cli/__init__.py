@@ -118,8 +118,35 @@ class Terminated(KeyboardInterrupt):
     way removes its temporary file, and the command exits with 143 instead of leaving them."""
 
 
+RECEIVED: list[int] = []
+"""The signals that have asked this process to stop (SIGINT, SIGTERM), in order: a library may
+catch the exception a signal raises and fail in its place — numba's compiler, when Ctrl-C lands in
+llvmlite's ctypes callback, swallows the KeyboardInterrupt and raises ``RuntimeError: no compiled
+object yet`` — so :func:`main` ends such a failure as the interrupt, not with its traceback."""
+
+
 def _terminate(signum, frame) -> None:
+    RECEIVED.append(signum)
     raise Terminated
+
+
+def _interrupt(signum, frame) -> None:
+    RECEIVED.append(signum)
+    signal.default_int_handler(signum, frame)
+
+
+def _quiet_when_stopped(unraisable) -> None:
+    """``sys.unraisablehook``: the stop a library swallowed is not printed as a traceback ("Exception
+    ignored on calling ctypes callback function"); :func:`main` says it in one line. Anything else
+    goes to Python's own hook."""
+    if not isinstance(unraisable.exc_value, KeyboardInterrupt):
+        sys.__unraisablehook__(unraisable)
+
+
+def _stopped(signum: int) -> int:
+    """Say how the command was stopped; the exit status (128 + the signal, as a shell reports it)."""
+    print("terminated" if signum == signal.SIGTERM else "interrupted", file=sys.stderr)
+    return 128 + signum
 
 
 def _who(args) -> str:
@@ -131,6 +158,9 @@ def main(argv: list[str] | None = None) -> int:
     _survive_any_terminal()
     if argv is None:  # the process' own command (not a call from Python, whose signals are the caller's)
         signal.signal(signal.SIGTERM, _terminate)
+        if signal.getsignal(signal.SIGINT) is signal.default_int_handler:  # not where Ctrl-C is ignored
+            signal.signal(signal.SIGINT, _interrupt)
+        sys.unraisablehook = _quiet_when_stopped
         if hasattr(os, "register_at_fork"):  # a forked worker's SIGTERM ends it, from its first instruction
             os.register_at_fork(after_in_child=lambda: signal.signal(signal.SIGTERM, signal.SIG_DFL))
     words = sys.argv[1:] if argv is None else argv
@@ -159,11 +189,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{_who(args)}: error: {where}{problem}", file=sys.stderr)
         return 2
     except Terminated:
-        print("terminated", file=sys.stderr)
-        return 143
+        return _stopped(signal.SIGTERM)
     except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return 130
+        return _stopped(signal.SIGINT)
+    except Exception:
+        if not RECEIVED:
+            raise
+        return _stopped(RECEIVED[-1])  # a library failed where the signal had stopped it (RECEIVED)
     finally:
         if argv is None:
             # the process' own command, which ends here: the collections of the interpreter's shutdown
