@@ -5,8 +5,8 @@ file changed would be loaded as compiled against the old callee (a wrong answer,
 at import, :func:`clear_stale_caches` fingerprints the package's kernel sources (the files naming this
 module or numba) and, when any changed since the last check, deletes every cached kernel of the package (they are compiled again
 on first use). Installs and upgrades rewrite every file, so numba's own check suffices there; the
-guard is for working copies (an editable install being edited). Caches put elsewhere by
-``NUMBA_CACHE_DIR`` are not checked: clear that directory after editing kernels.
+guard is for working copies (an editable install being edited), wherever their caches are: beside
+the sources, or under ``NUMBA_CACHE_DIR`` when it is set (a folder per source folder, named by numba).
 
 numba's cache is not safe between processes (numba/numba#4807 on GitHub): two processes that compile two
 signatures of one kernel at once (the forked workers of ``evaluate``, ``bench`` or the demo, on a
@@ -61,18 +61,34 @@ def _fingerprint(sources: list[Path]) -> str:
     return digest.hexdigest()
 
 
-def clear_stale_caches(package: Path = PACKAGE) -> bool:
-    """Delete the numba caches under ``package`` when the sources beside them changed since the
-    last check (module docstring); returns whether it deleted them. Quiet where nothing is writable."""
+def _cache_places(package: Path, cache_dir: str) -> tuple[Path, list[Path]]:
+    """The stamp of the last check and the folders where numba keeps ``package``'s kernels: each
+    source folder's ``__pycache__``, or, under ``cache_dir`` (``NUMBA_CACHE_DIR``) when it is set,
+    the folder numba names for each source folder."""
+    if not cache_dir:
+        return package / "__pycache__" / STAMP, list(package.rglob("__pycache__"))
+    from numba.core.caching import _CacheLocator
+
+    def mirror(folder: Path) -> Path:
+        return Path(cache_dir) / _CacheLocator.get_suitable_cache_subpath(str(folder / "__init__.py"))
+
+    folders = sorted({mirror(source.parent) for source in package.rglob("*.py")})
+    return mirror(package) / STAMP, [folder for folder in folders if folder.is_dir()]
+
+
+def clear_stale_caches(package: Path = PACKAGE, cache_dir: str | None = None) -> bool:
+    """Delete the numba caches of ``package`` (beside it, or under ``cache_dir``, by default numba's
+    ``NUMBA_CACHE_DIR``) when its kernel sources changed since the last check of those caches
+    (module docstring); returns whether it deleted any. Quiet where nothing is writable."""
     try:
-        stamp = package / "__pycache__" / STAMP
+        stamp, folders = _cache_places(package, numba.config.CACHE_DIR if cache_dir is None else cache_dir)
         now = _fingerprint(_kernel_sources(package))
         if stamp.is_file() and stamp.read_text() == now:
             return False
-        cached = [f for folder in package.rglob("__pycache__") for f in folder.iterdir() if f.suffix in CACHE_SUFFIXES]
+        cached = [f for folder in folders for f in folder.iterdir() if f.suffix in CACHE_SUFFIXES]
         for old in cached:
             old.unlink(missing_ok=True)
-        stamp.parent.mkdir(exist_ok=True)
+        stamp.parent.mkdir(parents=True, exist_ok=True)
         temporary = stamp.with_name(f".{STAMP}.{os.getpid()}.tmp")
         temporary.write_text(now)
         os.replace(temporary, stamp)
