@@ -731,4 +731,14 @@ finally:
 """, expect="NUMBA_NUM_THREADS: must be a whole number of threads, at least 1, got '0'"),
 ]
 
-CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS]
+# a seventh sweep: empty names read as the current folder, ...
+SEVENTH = [
+    Case("bench-empty-suite", {"w.yaml": ROBOT + "goal: {x: 9, y: 9}\n"},
+         ("bench", "", "--controllers", "goal-seeking", "--out", "{d}/o"),
+         expect="SUITE: is empty: name a family (mixed:40) or a folder"),  # it ran the working folder's files
+    Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
+                                        "--budget", "400", "--out", "{d}/t.yaml"),
+         expect="--validation: is empty: name a family"),  # it validated on the working folder's files
+]
+
+CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH]

@@ -204,7 +204,7 @@ BAD = [
     (["fuzzy-2b:oab", "--method", "nsga2", "--objectives", "success,speed"], "--objectives"),
     (["fuzzy-2b:oab", "--method", "nsga2"], "two or more"),
     (["fuzzy-2b:oab", "--out", "tuned.docx"], "--out"),
-    (["fuzzy-2b:oab", "--worlds", "swamp:3"], "SUITE"),
+    (["fuzzy-2b:oab", "--worlds", "swamp:3"], "--worlds: 'swamp:3' is neither"),
     (["fuzzy-2b:oab", "--validation", "swamp:3"], "--validation"),
     (["fuzzy-2b:oab", "--population", "4", "--budget", "20"], "+ 16 validation episodes"),
     (["fuzzy-tracker:tracker", "--population", "4", "--budget", "64"], "fuzzy-tracker has no compiled step"),

@@ -95,6 +95,9 @@ def read_references(file: Path) -> dict:
 
 def parse_suite(spec: str) -> Suite:
     """The :class:`Suite` a SUITE argument names (module docstring); InputError otherwise."""
+    if not spec.strip():  # Path("") is the current folder: never read it unasked
+        raise InputError("is empty: name a family (mixed:40) or a folder of scenario files (. for the current one)",
+                         field="SUITE")
     path = Path(spec)
     if path.is_dir():
         files = sorted((f for f in path.iterdir() if f.suffix.lower() in SCENARIO_SUFFIXES), key=_natural)

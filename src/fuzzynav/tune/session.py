@@ -130,26 +130,20 @@ def check(request: TuneRequest):
     if request.resume and request.out is None:
         raise InputError("--resume needs --out (the checkpoint lives beside it)", field="--resume")
     SearchSpace(system, request.what)  # a system with nothing to tune fails here
-    for option, value in (("--worlds", request.worlds), ("--holdout", request.holdout)):
-        if value is not None and not str(value).strip():
-            raise InputError("is empty: name a family (mixed:40) or a folder of scenario files", field=option)
-    suite = parse_suite(request.worlds)
+    suite = _suite(request.worlds, "--worlds")
     chooser = validation_suite(request, suite)
     reserve = 0 if chooser is None else (VALIDATED + 1) * chooser.size
     if request.budget < request.population * suite.size + reserve:
         raise InputError(f"{request.budget} episodes do not cover one generation: {request.population} candidates × "
                          f"{suite.size} worlds{f' + {reserve} validation episodes' if reserve else ''} = "
                          f"{request.population * suite.size + reserve} episodes at least", field="--budget")
-    try:
-        given = parse_suite(request.holdout) if request.holdout else None
-    except InputError as error:
-        raise InputError(error.problem, source=error.source, field="--holdout") from None
+    given = None if request.holdout is None else _suite(request.holdout, "--holdout")
     if given is not None and _shared(suite, given):
         example = (f" (e.g. {suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}, the default)"
                    if suite.family else "")
         raise InputError(f"shares {_shared(suite, given)} worlds with --worlds {request.worlds}: held-out worlds are "
                          f"worlds the tuner never saw{example}", field="--holdout")
-    holdout = given if request.holdout else (
+    holdout = given if given is not None else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
     made = make_with_systems(controller, dict(request.systems))
     if not callable(getattr(made, "compiled", None)):
@@ -177,10 +171,17 @@ def validation_suite(request: TuneRequest, suite):
         return None
     if request.validation == "auto":
         return parse_suite(f"{suite.family}:{suite.count}:{suite.seed + VALIDATION_OFFSET}") if suite.family else None
+    return _suite(request.validation, "--validation")
+
+
+def _suite(spec: str, option: str):
+    """The suite ``spec`` names, its errors naming ``option``."""
+    from fuzzynav.bench.suites import parse_suite
+
     try:
-        return parse_suite(request.validation)
+        return parse_suite(spec)
     except InputError as error:
-        raise InputError(error.problem, source=error.source, field="--validation") from None
+        raise InputError(error.problem, source=error.source, field=option) from None
 
 
 def _columns(request: TuneRequest) -> list[int]:
