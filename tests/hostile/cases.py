@@ -121,6 +121,14 @@ def edited_model(d, train, edit, run):
     (d / "x.json").write_text(json.dumps(document))
     raise SystemExit(main([*run, str(d / "x.json")]))
 
+def fuzzy_model(d, kind, **keys):
+    # a learned fuzzy model of KIND holding the goal-seeking system and KEYS, run on fig-IV-23
+    from fuzzynav.cli import main
+    from fuzzynav.fuzzy.io.document import to_document
+    document = {"kind": kind, **to_document(fuzzynav.thesis_system("goal-seeking")), **keys}
+    (d / "m.json").write_text(json.dumps(document))
+    raise SystemExit(main(["run", "fig-IV-23", "--model", str(d / "m.json")]))
+
 def ascii_terminal(argv):
     # the command line with stdout and stderr encoded as ASCII; prints what it wrote
     import io, sys
@@ -739,6 +747,24 @@ SEVENTH = [
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files
+    # a typo in a hand-edited model file was read as the key's default
+    Case("anfis-model-lookahead-typo",
+         python="edited_model(d, ['anfis-tracker', '--episodes', '2'], lambda doc: doc.update(lookahed=doc.pop('lookahead')), "
+                "['run', 'path-n', '--model'])", expect="x.json: lookahed: unknown key 'lookahed' (did you mean 'lookahead'?)"),
+    Case("anfis-model-inner-unknown-key",
+         python="edited_model(d, ['anfis-tracker', '--episodes', '2'], lambda doc: doc['model'].update(premisses=[]), "
+                "['run', 'path-n', '--model'])", expect="x.json: premisses: unknown key 'premisses' (did you mean 'premises'?)"),
+    Case("neural-model-inner-unknown-key",
+         python="edited_model(d, ['neural-tracker', '--episodes', '2'], lambda doc: doc['model'].update(bias=[]), "
+                "['run', 'path-n', '--model'])", expect="x.json: bias: unknown key 'bias' (did you mean 'biases'?)"),
+    Case("fql-goal-model-speed-typo", python="fuzzy_model(d, 'fql-goal', constant_sped=0.5)",
+         expect="m.json: constant_sped: unknown key 'constant_sped' (did you mean 'constant_speed'?)"),
+    Case("fql-avoid-model-guard-typo", python="fuzzy_model(d, 'fql-avoid', turn_gaurd=True)",
+         expect="m.json: turn_gaurd: unknown key 'turn_gaurd' (did you mean 'turn_guard'?)"),
+    Case("fql-wall-model-sensing-typo", python="fuzzy_model(d, 'fql-wall', sensng='rays')",
+         expect="m.json: sensng: unknown key 'sensng' (did you mean 'sensing'?)"),
+    Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
+         status=0, expect="fig-IV-23 / fql-goal"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH]

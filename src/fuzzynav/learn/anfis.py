@@ -51,6 +51,8 @@ from fuzzynav.learn.estimator_checks import check_format, check_premises, check_
 
 _FORMAT = "fuzzynav-anfis"
 _VERSION = 1
+_KEYS = ("format", "version", "params", "n_features_in", "premises", "consequents", "input_range", "output_range",
+         "best_epoch", "history")  # of to_dict's document
 
 
 class ANFIS(RegressorMixin, BaseEstimator):
@@ -326,9 +328,7 @@ class ANFIS(RegressorMixin, BaseEstimator):
     @classmethod
     def from_dict(cls, document, source: str | None = None) -> ANFIS:
         """Rebuild a fitted estimator from :meth:`to_dict`'s document (InputError naming the field)."""
-        check_format(document, _FORMAT, _VERSION, "an ANFIS", source)
-        if "n_features_in" not in document:
-            raise InputError("missing", source=source, field="n_features_in")
+        check_format(document, _FORMAT, _VERSION, "an ANFIS", source, keys=_KEYS, required=("n_features_in",))
         n = validation.integer(document["n_features_in"], source, "n_features_in", lo=1)
         try:
             model = cls(**document["params"])

@@ -10,16 +10,20 @@ import math
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.learn import anfis_mf
 from fuzzynav.storage import supported_version
 
 
-def check_format(document, fmt: str, version: int, what: str, source: str | None = None) -> None:
-    """A fitted-model document of format ``fmt`` and ``version`` (``what``: "an ANFIS", "an MLP")."""
+def check_format(document, fmt: str, version: int, what: str, source: str | None = None, *, keys=(),
+                 required=()) -> None:
+    """A fitted-model document of format ``fmt`` and ``version`` (``what``: "an ANFIS", "an MLP")
+    whose keys are all in ``keys`` (a typo is refused, not read as its default) and hold ``required``."""
     if not isinstance(document, dict) or document.get("format") != fmt:
         raise InputError(f"not {what} document (format must be {fmt!r})", source=source, field="format")
     supported_version(document, version, source, required=True)
+    validation.known_keys(document, keys, source, required=required)
 
 
 def check_xy(X, y) -> tuple[np.ndarray, np.ndarray]:

@@ -37,6 +37,7 @@ from fuzzynav.learn.estimator_checks import check_format
 
 _FORMAT = "fuzzynav-mlp"
 _VERSION = 1
+_KEYS = ("format", "version", "activation", "output_activation", "weights", "biases", "loss_curve", "iterations")
 SOLVERS = ("lbfgs", "sgd", "adam")
 
 
@@ -115,7 +116,7 @@ class NeuralInverseModel:
     @classmethod
     def from_dict(cls, document, source: str | None = None) -> NeuralInverseModel:
         """Rebuild from :meth:`to_dict`'s document; InputError names the bad field."""
-        check_format(document, _FORMAT, _VERSION, "an MLP", source)
+        check_format(document, _FORMAT, _VERSION, "an MLP", source, keys=_KEYS)
         for key, value in (("activation", "tanh"), ("output_activation", "identity")):
             if document.get(key, value) != value:  # the only network this class evaluates
                 raise InputError(f"must be {value!r}, got {document.get(key)!r}", source=source, field=key)

@@ -79,7 +79,7 @@ def to_document(system: FuzzySystem) -> dict:
     return doc
 
 
-_TOP_KEYS = ("format", "version", "name", "description", *_OPTIONS, "inputs", "outputs", "rules")
+TOP_KEYS = ("format", "version", "name", "description", *_OPTIONS, "inputs", "outputs", "rules")
 _VARIABLE_KEYS = ("name", "universe", "terms")
 _TERM_KEYS = ("kind", "params")
 _GRID_KEYS = ("rows", "columns", "outputs", "cells", "row_labels", "column_labels", "columns_first")
@@ -193,7 +193,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
     if not matches(doc.get("format", FORMAT), FORMAT):
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
     supported_version(doc, VERSION, source)
-    _check_keys(doc, _TOP_KEYS, source, "", strict=False)
+    _check_keys(doc, TOP_KEYS, source, "", strict=False)
     if "inputs" not in doc and doc.get("kind") == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
         raise InputError("a training checkpoint, not a fuzzy system (`fuzzynav train ... --resume` reads it)",
                          source=source, field="kind")

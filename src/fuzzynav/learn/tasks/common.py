@@ -29,11 +29,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.learned import check_speed, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import STEERING_SINGLETONS
 from fuzzynav.fuzzy.coverage import check_covered
-from fuzzynav.fuzzy.io.document import from_document
+from fuzzynav.fuzzy.io.document import TOP_KEYS, from_document
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -105,10 +106,12 @@ def finish(request: TrainRequest, document: dict, phases: dict, title: str) -> d
     return {"model": str(request.out), **summarise(phases)}
 
 
-def load_fuzzy_model(document: dict, path, build):
+def load_fuzzy_model(document: dict, path, build, keys=("constant_speed",)):
     """The controller of a learned fuzzy model file: ``build(system, constant_speed, name)``, with
     every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
-    must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`)."""
+    must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`). Its keys are the
+    system's, ``kind``, ``training`` and the model's own ``keys``: a typo is refused, not read as the default."""
+    validation.known_keys(document, (*TOP_KEYS, "kind", "training", *keys), str(path))
     if "inputs" not in document:  # another kind of model relabelled (it is already run with --model)
         raise InputError(f"missing (a {document['kind']!r} model holds a fuzzy system)", source=str(path),
                          field="inputs")

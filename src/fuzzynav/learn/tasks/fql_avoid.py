@@ -254,4 +254,4 @@ def load_model(document: dict, path) -> LearnedAvoidanceNavigator:
             raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
         return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
 
-    return common.load_fuzzy_model(document, path, build)
+    return common.load_fuzzy_model(document, path, build, keys=("constant_speed", "turn_guard"))

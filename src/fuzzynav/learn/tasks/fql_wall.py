@@ -125,4 +125,4 @@ def load_model(document: dict, path) -> LearnedWallFollower:
     """Model loader of kind ``fql-wall``: the optimised rule base and how it reads its distances
     (``sensing``, default ``"modules"``)."""
     return common.load_fuzzy_model(document, path, lambda system, speed, name: LearnedWallFollower(
-        system, document.get("sensing", "modules"), name=name))
+        system, document.get("sensing", "modules"), name=name), keys=("sensing",))

@@ -136,11 +136,12 @@ def _tracker(kind: str, model, document: dict, source: str | None = None, **opti
         raise InputError(error.problem, source=error.source or source, field=error.field) from None
 
 
+TRACKER_KEYS = ("kind", "model", "input_range", "speed", "corner_radius", "lookahead", "training")  # of _document
+
+
 def _checked(document: dict, path) -> dict:
     source = str(path) if path is not None else None
-    for key in ("model", "input_range"):
-        if key not in document:
-            raise InputError("missing", source=source, field=key)
+    validation.known_keys(document, TRACKER_KEYS, source, required=("model", "input_range"))
     lo, hi = validation.numbers(document["input_range"], source, "input_range", length=2)
     if not lo < hi:
         raise InputError(f"must be [lo, hi] with lo < hi, got {document['input_range']!r}", source=source,
