@@ -763,6 +763,16 @@ SEVENTH = [
          expect="m.json: turn_gaurd: unknown key 'turn_gaurd' (did you mean 'turn_guard'?)"),
     Case("fql-wall-model-sensing-typo", python="fuzzy_model(d, 'fql-wall', sensng='rays')",
          expect="m.json: sensng: unknown key 'sensng' (did you mean 'sensing'?)"),
+    # MATLAB implies a negated Mamdani conclusion with 1 − μ(term), fuzzylite hedges the degree: the
+    # .fis reader gave fuzzylite's answer as MATLAB's, and the writer wrote what MATLAB reads otherwise
+    Case("fis-negated-mamdani-conclusion", {"t.fis": _fis().replace("2, 2 (1) : 1", "2, -1 (1) : 1")},
+         _eval("t.fis"), expect="t.fis: line 29: MATLAB reads a negated conclusion of a Mamdani output as 1 − μ"),
+    Case("fis-negated-premise-ok", {"t.fis": _fis().replace("2, 2 (1) : 1", "-1, 2 (1) : 1")}, _eval("t.fis"),
+         status=0, expect='{"v": 0.'),
+    Case("fll-negated-conclusion-to-fis", {"t.fll": _fll("then v is hi", "then v is not lo")},
+         ("fis", "convert", "{d}/t.fll", "--to", "fis", "-o", "{d}/t.fis"),
+         expect="rules: MATLAB reads a negated conclusion of a Mamdani output as 1 − μ of the term, fuzzylite as "
+                "the term at 1 − the rule's degree, and the two answer otherwise ('v is not lo'): write it as fll"),
     Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
          status=0, expect="fig-IV-23 / fql-goal"),
 ]

@@ -19,7 +19,9 @@ builds, used to compare with fuzzylite):
 - an output on which no rule fires takes the middle of its range, fuzzylite gives NaN (its
   ``Default`` when the file states one, ``nan`` included);
 - a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;
-  fuzzylite first aggregates the rules sharing an output term with it.
+  fuzzylite first aggregates the rules sharing an output term with it;
+- a negated conclusion of a Mamdani output (``-2``) implies with 1 − μ of the term, fuzzylite's with
+  the term at 1 − the rule's degree: refused, as MATLAB's is not computed here (:mod:`.fis_limits`).
 
 Neither clips inputs to their range (MATLAB warns and evaluates the value as it is), unless the
 variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's ``LockRange``,
@@ -43,7 +45,7 @@ from fuzzynav.fuzzy.engine import Engine, model
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
 from fuzzynav.fuzzy.formula import Function
-from fuzzynav.fuzzy.io.fis_limits import refuse_what_fis_lacks
+from fuzzynav.fuzzy.io.fis_limits import NEGATED_CONCLUSION, negated_conclusion, refuse_what_fis_lacks
 from fuzzynav.fuzzy.system import FuzzySystem
 from fuzzynav.validation import MAX_RESOLUTION
 
@@ -302,6 +304,9 @@ def from_fis_engine(text: str, source: str | None = None, semantics: str = "matl
     for section in (s for s in lines.sections if s["name"] == "[Rules]"):
         for _, value, line in section["items"]:
             rule, connective = _rule(value, in_vars, out_vars, lines, line)
+            if matlab and negated_conclusion(rule, outputs):  # fuzzylite's answer is semantics="fuzzylite"
+                raise lines.error(f"{NEGATED_CONCLUSION} ({negated_conclusion(rule, outputs)!r}): MATLAB's is not "
+                                  "computed here", line)
             rules.append(rule)
             connectives.add(connective)
     _check_counts(options, {"NumInputs": len(inputs), "NumOutputs": len(outputs), "NumRules": len(rules)}, lines)

@@ -4,13 +4,26 @@ A ``.fis`` file has one rule block that fires every rule on every variable, and 
 and aggregation for all its outputs. A fuzzylite engine that needs more — several blocks, a
 disabled block or variable (``enabled: false``), an activation that fires only some rules
 (fuzzylite's Highest, Lowest, Threshold, …), per-output settings — would answer otherwise once
-written without it, so it is refused, naming what it uses.
+written without it, so it is refused, naming what it uses. So is a negated conclusion of a
+Mamdani output (``then v is not hi``, code ``-2``), which the two read otherwise: MATLAB implies with
+1 − μ of the term (``fisFinalOutputMf`` of its ``fis.c``), fuzzylite with the term at 1 − the rule's
+degree (its hedges act on the degree); the reader refuses it under MATLAB's semantics too.
 """
 
 from __future__ import annotations
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.fis_terms import number
+
+NEGATED_CONCLUSION = ("MATLAB reads a negated conclusion of a Mamdani output as 1 − μ of the term, fuzzylite as "
+                      "the term at 1 − the rule's degree, and the two answer otherwise")
+
+
+def negated_conclusion(rule, outputs) -> str | None:
+    """The first conclusion of ``rule`` that is negated on an output of ``outputs`` defuzzified by
+    integration (Mamdani), where MATLAB and fuzzylite disagree (module docstring); else None."""
+    integral = {v.name for v in outputs if v.defuzzifier is not None and v.defuzzifier.integral}
+    return next((c.text() for c in rule.conclusions if c.hedges[:1] == ("not",) and c.variable in integral), None)
 
 
 def refuse_what_fis_lacks(engine) -> None:
@@ -33,3 +46,6 @@ def refuse_what_fis_lacks(engine) -> None:
                          ".fis file cannot hold: write it as fll", field=off[0])
     if any(v.defuzzifier != outs[0].defuzzifier or v.aggregation != outs[0].aggregation for v in outs):
         raise InputError(".fis gives every output the same defuzzifier and aggregation", field="outputs")
+    negated = next((text for text in (negated_conclusion(rule, outs) for rule in block.rules) if text), None)
+    if negated:
+        raise InputError(f"{NEGATED_CONCLUSION} ({negated!r}): write it as fll", field="rules")
