@@ -158,6 +158,22 @@ def test_matlab_semantics():
     assert matlab.evaluate_one(40.0) == matlab.evaluate_one(2.0)
 
 
+def test_matlab_bisector_is_the_first_sample_reaching_half_the_area():
+    """MATLAB's bisector (``defuzzBisector`` of its fis.c): the first of the 101 samples where the
+    running area reaches half of it; fuzzylite's (which this reader gave): the sample closest to
+    half. fuzzylite cannot compute MATLAB's, so it is not written as .fll."""
+    system = loads(MAMDANI.replace("DefuzzMethod='centroid'", "DefuzzMethod='bisector'"), "fis", source="tip.fis")
+    y = np.linspace(0, 30, 101)
+    low = np.maximum(np.minimum((y - 0) / 5, (15 - y) / 10), 0)
+    high = np.maximum(np.minimum((y - 10) / 15, (30 - y) / 5), 0)
+    for s in (0.5, 3.0, 4.6, 5.0, 5.5, 7.3):
+        poor, good = max(0, min(1, (6 - s) / 4)), max(0, min(1, (s - 4) / 4))
+        mu = np.maximum(np.minimum(poor, low), np.minimum(0.5 * (1 - good), high))
+        assert system.evaluate_one(s)[0] == pytest.approx(y[np.argmax(np.cumsum(mu) >= mu.sum() / 2)], abs=1e-12), s
+    with pytest.raises(InputError, match="tip: its bisector is sampled MATLAB's way"):
+        dumps(system, "fll")
+
+
 def test_round_trips(tmp_path):
     system = loads(MAMDANI, "fis", source="tip.fis")
     text = dumps(system, "fis")

@@ -18,7 +18,7 @@ import numpy as np
 
 from fuzzynav.fuzzy.engine.model import OutputVariable
 from fuzzynav.fuzzy.engine.records import Affine, Groups, Sampled, Units
-from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
+from fuzzynav.fuzzy.engine.sampled_defuzzify import reduction_of
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
@@ -181,5 +181,5 @@ def integral(var: OutputVariable, acts: Activations, sampled_terms: tuple, n: in
     out = np.empty(n)
     staged_kernels.integral(degrees, rows,
                             Units(units, unit_term, unit_implication, SNORMS.index(var.aggregation or "UnboundedSum")),
-                            Sampled(shapes, support, x, REDUCTIONS.index(var.defuzzifier.kind)), out)
+                            Sampled(shapes, support, x, reduction_of(var.defuzzifier)), out)
     return out

@@ -19,7 +19,7 @@ from fuzzynav.fuzzy.engine import defuzzify, staged_kernels
 from fuzzynav.fuzzy.engine.fuzzify_terms import HEDGE_CODES, pack_term
 from fuzzynav.fuzzy.engine.model import Proposition
 from fuzzynav.fuzzy.engine.norms import PRODUCT
-from fuzzynav.fuzzy.engine.sampled_defuzzify import REDUCTIONS
+from fuzzynav.fuzzy.engine.sampled_defuzzify import reduction_of
 from fuzzynav.fuzzy.membership import Linear, Singleton
 from fuzzynav.fuzzy.operators import SNORMS, TNORMS
 from fuzzynav.fuzzy.terms import Constant
@@ -261,7 +261,7 @@ def _pack_outputs(engine, conclusions: list, degree_row: list, products: dict) -
         support_start.append(sum(len(a) for a in support))
         points_start.append(sum(a.size for a in points))
         rows.append((kind, SNORMS.index(var.aggregation or "UnboundedSum"),
-                     REDUCTIONS.index(d.kind) if kind == INTEGRAL else 0,
+                     reduction_of(d) if kind == INTEGRAL else 0,
                      d is not None and d.kind == "WeightedSum", var.lock_previous, var.lock_range))
         limits.append((var.default, var.minimum, var.maximum))
     return (_ints(rows).reshape(-1, 6), np.array(limits, dtype=float), _ints(act_start), _ints(act_conclusion),

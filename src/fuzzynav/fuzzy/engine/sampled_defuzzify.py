@@ -2,8 +2,9 @@
 
 :func:`reduce_sampled` turns the aggregated set, sampled at the defuzzifier's points, into the
 crisp value: centroid Σ μ x / Σ μ, bisector (the samples where the running area is closest to half
-of it, averaged), mean / smallest / largest of the samples of maximum membership; NaN for an empty
-set. Used row by row by :func:`fuzzynav.fuzzy.engine.staged_kernels.integral`.
+of it, averaged; sampled MATLAB's way, the first sample where it reaches half, as MATLAB's
+``defuzzBisector``), mean / smallest / largest of the samples of maximum membership; NaN for an
+empty set. Used row by row by :func:`fuzzynav.fuzzy.engine.staged_kernels.integral`.
 """
 
 from __future__ import annotations
@@ -14,6 +15,15 @@ from fuzzynav.fuzzy.engine.centroid_lanes import lane_sums
 from fuzzynav.jit import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
+MATLAB_BISECTOR = len(REDUCTIONS)  # the reduction of a bisector on MATLAB's samples (grid linspace)
+
+
+def reduction_of(defuzzifier) -> int:
+    """The ``kind`` :func:`reduce_sampled` takes for an integral ``defuzzifier``: its index in
+    :data:`REDUCTIONS`, or :data:`MATLAB_BISECTOR` for a bisector sampled MATLAB's way."""
+    if defuzzifier.kind == "Bisector" and defuzzifier.grid == "linspace":
+        return MATLAB_BISECTOR
+    return REDUCTIONS.index(defuzzifier.kind)
 
 
 @jit
@@ -69,6 +79,18 @@ def reduce_sampled(kind, mu, x, area, lo, hi, size):
                 count += 1
                 where += x[k]
         return where / count if count > 0 else np.nan
+    if kind == MATLAB_BISECTOR:  # the first sample where the running area reaches half of it
+        total = 0.0
+        for k in range(size):
+            total += mu[k]
+        if not total > 0.0:
+            return np.nan
+        running = 0.0
+        for k in range(size):
+            running += mu[k]
+            if running >= total / 2:
+                return x[k]
+        return x[size - 1]
     nan = False
     for k in range(lo, hi):
         nan |= mu[k] != mu[k]

@@ -15,7 +15,8 @@ fuzzylite's reading of the same file (``semantics="fuzzylite"``, what fuzzylite'
 builds, used to compare with fuzzylite):
 
 - a Mamdani output is defuzzified on 101 points from end to end of its range (``linspace``),
-  fuzzylite on the midpoints of ``resolution`` cells (1000 unless the file says otherwise);
+  fuzzylite on the midpoints of ``resolution`` cells (1000 unless the file says otherwise); its
+  bisector is the first point where the running area reaches half (fuzzylite: the closest to half);
 - an output on which no rule fires takes the middle of its range, fuzzylite gives NaN (its
   ``Default`` when the file states one, ``nan`` included);
 - a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;

@@ -63,6 +63,9 @@ def _fuzzylite_grid(v: OutputVariable) -> OutputVariable:
     d = v.defuzzifier
     if d is None or d.grid != "linspace":
         return v
+    if d.kind == "Bisector":
+        raise InputError("its bisector is sampled MATLAB's way (the first sample where the running area reaches half; "
+                         "fuzzylite's: the sample closest to half), which an .fll file cannot hold", field=v.name)
     half = 0.5 * (v.maximum - v.minimum) / (d.resolution - 1)
     return replace(v, minimum=v.minimum - half, maximum=v.maximum + half, defuzzifier=replace(d, grid="midpoints"))
 
