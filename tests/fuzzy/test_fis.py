@@ -170,7 +170,27 @@ def test_matlab_bisector_is_the_first_sample_reaching_half_the_area():
         poor, good = max(0, min(1, (6 - s) / 4)), max(0, min(1, (s - 4) / 4))
         mu = np.maximum(np.minimum(poor, low), np.minimum(0.5 * (1 - good), high))
         assert system.evaluate_one(s)[0] == pytest.approx(y[np.argmax(np.cumsum(mu) >= mu.sum() / 2)], abs=1e-12), s
-    with pytest.raises(InputError, match="tip: its bisector is sampled MATLAB's way"):
+    with pytest.raises(InputError, match="tip: its Bisector is MATLAB.s"):
+        dumps(system, "fll")
+
+
+@pytest.mark.parametrize("method,pick", [("som", np.argmin), ("lom", np.argmax)])
+def test_matlab_smallest_and_largest_of_maximum_are_by_magnitude(method, pick):
+    """MATLAB's som / lom (``defuzzSmallestOfMax`` of its fis.c): the maximizing sample smallest /
+    largest in magnitude, the first on ties; fuzzylite's (which this reader gave): in value. They
+    differ on an output range below 0, and such a one is not written as .fll."""
+    text = (MAMDANI.replace("DefuzzMethod='centroid'", f"DefuzzMethod='{method}'").replace("Range=[0 30]", "Range=[-30 0]")
+            .replace("'trimf',[0 5 15]", "'trimf',[-15 -5 0]").replace("'trimf',[10 25 30]", "'trimf',[-30 -25 -10]"))
+    system = loads(text, "fis", source="tip.fis")
+    y = np.linspace(-30, 0, 101)
+    low = np.maximum(np.minimum((y + 15) / 10, -y / 5), 0)
+    high = np.maximum(np.minimum((y + 30) / 5, (-10 - y) / 15), 0)
+    for s in (0.5, 3.0, 5.5, 7.3):
+        poor, good = max(0, min(1, (6 - s) / 4)), max(0, min(1, (s - 4) / 4))
+        mu = np.maximum(np.minimum(poor, low), np.minimum(0.5 * (1 - good), high))
+        top = np.flatnonzero(mu == mu.max())
+        assert system.evaluate_one(s)[0] == pytest.approx(y[top[pick(np.abs(y[top]))]], abs=1e-12), s
+    with pytest.raises(InputError, match="is MATLAB's"):
         dumps(system, "fll")
 
 

@@ -3,8 +3,9 @@
 :func:`reduce_sampled` turns the aggregated set, sampled at the defuzzifier's points, into the
 crisp value: centroid Σ μ x / Σ μ, bisector (the samples where the running area is closest to half
 of it, averaged; sampled MATLAB's way, the first sample where it reaches half, as MATLAB's
-``defuzzBisector``), mean / smallest / largest of the samples of maximum membership; NaN for an
-empty set. Used row by row by :func:`fuzzynav.fuzzy.engine.staged_kernels.integral`.
+``defuzzBisector``), mean / smallest / largest of the samples of maximum membership (sampled
+MATLAB's way, smallest / largest in magnitude, the first on ties, as its ``defuzzSmallestOfMax``);
+NaN for an empty set. Used row by row by :func:`fuzzynav.fuzzy.engine.staged_kernels.integral`.
 """
 
 from __future__ import annotations
@@ -15,14 +16,17 @@ from fuzzynav.fuzzy.engine.centroid_lanes import lane_sums
 from fuzzynav.jit import jit
 
 REDUCTIONS = ("Centroid", "Bisector", "MeanOfMaximum", "SmallestOfMaximum", "LargestOfMaximum")
-MATLAB_BISECTOR = len(REDUCTIONS)  # the reduction of a bisector on MATLAB's samples (grid linspace)
+# the reductions MATLAB computes otherwise, on its samples (grid linspace): module docstring
+MATLAB_BISECTOR, MATLAB_SMALLEST, MATLAB_LARGEST = len(REDUCTIONS), len(REDUCTIONS) + 1, len(REDUCTIONS) + 2
+MATLAB_REDUCTIONS = {"Bisector": MATLAB_BISECTOR, "SmallestOfMaximum": MATLAB_SMALLEST,
+                     "LargestOfMaximum": MATLAB_LARGEST}
 
 
 def reduction_of(defuzzifier) -> int:
     """The ``kind`` :func:`reduce_sampled` takes for an integral ``defuzzifier``: its index in
-    :data:`REDUCTIONS`, or :data:`MATLAB_BISECTOR` for a bisector sampled MATLAB's way."""
-    if defuzzifier.kind == "Bisector" and defuzzifier.grid == "linspace":
-        return MATLAB_BISECTOR
+    :data:`REDUCTIONS`, or MATLAB's reduction of it for one sampled MATLAB's way."""
+    if defuzzifier.grid == "linspace" and defuzzifier.kind in MATLAB_REDUCTIONS:
+        return MATLAB_REDUCTIONS[defuzzifier.kind]
     return REDUCTIONS.index(defuzzifier.kind)
 
 
@@ -99,6 +103,13 @@ def reduce_sampled(kind, mu, x, area, lo, hi, size):
     top = _top(mu, lo, hi)
     if not top > 0.0:
         return np.nan
+    if kind == MATLAB_SMALLEST or kind == MATLAB_LARGEST:  # by magnitude, the first sample on ties
+        best = -1
+        for k in range(lo, hi):
+            if mu[k] == top and (best < 0 or (abs(x[k]) < abs(x[best]) if kind == MATLAB_SMALLEST
+                                              else abs(x[k]) > abs(x[best]))):
+                best = k
+        return x[best]
     if kind == 2:  # the samples of maximum membership (area: 1 there, else 0), averaged
         first, end = lo - lo % 8, hi + (-hi) % 8
         for k in range(first, end):

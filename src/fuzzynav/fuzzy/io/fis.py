@@ -14,9 +14,9 @@ weight in parentheses and the connective (1 AND, 2 OR).
 fuzzylite's reading of the same file (``semantics="fuzzylite"``, what fuzzylite's FisImporter
 builds, used to compare with fuzzylite):
 
-- a Mamdani output is defuzzified on 101 points from end to end of its range (``linspace``),
-  fuzzylite on the midpoints of ``resolution`` cells (1000 unless the file says otherwise); its
-  bisector is the first point where the running area reaches half (fuzzylite: the closest to half);
+- a Mamdani output is sampled at 101 points from end to end of its range (fuzzylite: the midpoints
+  of ``resolution`` cells, 1000 unless the file says), its bisector the first sample reaching half
+  the area, som / lom the smallest / largest in magnitude (fuzzylite: closest to half; in value);
 - an output on which no rule fires takes the middle of its range, fuzzylite gives NaN (its
   ``Default`` when the file states one, ``nan`` included);
 - a Sugeno output averages rule by rule, so a Sugeno ``AggMethod`` (ignored by MATLAB) is ignored;

@@ -63,9 +63,10 @@ def _fuzzylite_grid(v: OutputVariable) -> OutputVariable:
     d = v.defuzzifier
     if d is None or d.grid != "linspace":
         return v
-    if d.kind == "Bisector":
-        raise InputError("its bisector is sampled MATLAB's way (the first sample where the running area reaches half; "
-                         "fuzzylite's: the sample closest to half), which an .fll file cannot hold", field=v.name)
+    if d.kind == "Bisector" or (d.kind in ("SmallestOfMaximum", "LargestOfMaximum") and v.minimum < 0):
+        raise InputError(f"its {d.kind} is MATLAB's (the bisector: the first sample where the running area reaches "
+                         "half, fuzzylite's the closest to half; the smallest / largest of maximum: in magnitude, "
+                         "fuzzylite's in value), which an .fll file cannot hold", field=v.name)
     half = 0.5 * (v.maximum - v.minimum) / (d.resolution - 1)
     return replace(v, minimum=v.minimum - half, maximum=v.maximum + half, defuzzifier=replace(d, grid="midpoints"))
 
