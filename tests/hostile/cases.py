@@ -747,6 +747,17 @@ SEVENTH = [
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files
+    Case("worlds-generate-over-an-edited-world", python="""
+from fuzzynav.cli import main
+assert main(["worlds", "generate", "circles", "--n", "2", "--out", str(d / "w")]) == 0
+assert main(["worlds", "generate", "circles", "--n", "2", "--out", str(d / "w")]) == 0  # the same files: fine
+edited = (d / "w" / "circles-0-001.yaml").read_text().replace("max_time:", "max_time: 30 #")
+(d / "w" / "circles-0-001.yaml").write_text(edited)
+try:
+    raise SystemExit(main(["worlds", "generate", "circles", "--n", "2", "--out", str(d / "w")]))
+finally:
+    assert (d / "w" / "circles-0-001.yaml").read_text() == edited
+""", expect="--out: circles-0-001.yaml already there, with other content (edited?): not overwritten"),  # it was
     # a typo in a hand-edited model file was read as the key's default
     Case("anfis-model-lookahead-typo",
          python="edited_model(d, ['anfis-tracker', '--episodes', '2'], lambda doc: doc.update(lookahed=doc.pop('lookahead')), "

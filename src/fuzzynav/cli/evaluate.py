@@ -107,7 +107,7 @@ def run(args) -> int:
             folder.rmdir()
     if args.save_failures is not None:
         rerun = f"--model {args.model}" if args.model else f"--controller {args.controller}"
-        print(f"saved {len(saved)} failed worlds (scenario + plot) to {args.save_failures}/; rerun one with: "
+        print(f"saved {len(saved)} failed world{'s' * (len(saved) != 1)} (scenario + plot) to {args.save_failures}/; rerun one with: "
               f"fuzzynav run {saved[0]} {rerun} --seed {args.seed}" if saved else
               "no world failed: nothing saved")
     return 0

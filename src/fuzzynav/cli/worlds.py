@@ -3,6 +3,8 @@
 Writes ``DIR/<family>-<seed>-<i>.yaml`` for the N seeded, solvable worlds of
 :func:`fuzzynav.world.generate.generate_worlds` — the very worlds ``fuzzynav evaluate --worlds
 FAMILY --n N --seed S`` runs — so each can be opened, edited and run with ``fuzzynav run FILE``.
+A file of that name already there with other content (an edited world) is not overwritten: the
+command is refused before writing any.
 """
 
 from __future__ import annotations
@@ -33,13 +35,20 @@ fuzzynav run worlds/mixed-0-002.yaml""")
 
 def run(args) -> int:
     from fuzzynav import progress
+    from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.generate import check_kind, generate_worlds
-    from fuzzynav.world.scenario_file import save_scenario
+    from fuzzynav.world.scenario_file import scenario_yaml
 
     check_kind(args.family, "FAMILY")
     scenarios = generate_worlds(args.family, args.n, args.seed)
-    for scenario in progress.bar(scenarios, desc="worlds", unit="world"):
-        save_scenario(scenario, args.out / f"{scenario.name}.yaml")
+    texts = {args.out / f"{scenario.name}.yaml": scenario_yaml(scenario) for scenario in scenarios}
+    edited = [path.name for path, text in texts.items() if path.is_file() and path.read_bytes() != text.encode()]
+    if edited:
+        more = f" and {len(edited) - 1} more" if len(edited) > 1 else ""
+        validation.fail(f"{edited[0]}{more} already there, with other content (edited?): not overwritten; move "
+                        "them away or give another --out", args.out, "--out")
+    for path, text in progress.bar(texts.items(), desc="worlds", unit="world"):
+        write_text_atomic(path, text)
     names = f"{scenarios[0].name}.yaml" + (f" … {scenarios[-1].name}.yaml" if len(scenarios) > 1 else "")
     print(f"wrote {len(scenarios)} scenario file{'s' * (len(scenarios) > 1)} to {args.out}/ ({names}); "
           "run one with `fuzzynav run FILE --controller NAME`")
