@@ -758,6 +758,11 @@ try:
 finally:
     assert (d / "w" / "circles-0-001.yaml").read_text() == edited
 """, expect="--out: circles-0-001.yaml already there, with other content (edited?): not overwritten"),  # it was
+    Case("api-start-outside-the-world", python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, start=[-5, 1, 0])",
+         expect="starts[0]: (-5, 1) is outside the 20 x 20 m world"),  # it ran, as a collision at the start
+    Case("api-batch-second-start-outside",
+         python=f"fuzzynav.BatchSimulator({_SCENARIO}, {_CONTROLLER}, starts=[[2, 2, 0], [2, 25, 0]])",
+         expect="starts[1]: (2, 25) is outside the 20 x 20 m world"),
     # a typo in a hand-edited model file was read as the key's default
     Case("anfis-model-lookahead-typo",
          python="edited_model(d, ['anfis-tracker', '--episodes', '2'], lambda doc: doc.update(lookahed=doc.pop('lookahead')), "

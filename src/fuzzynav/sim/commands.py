@@ -93,10 +93,10 @@ def invalid_states(state, step: int, history=None) -> dict[int, tuple[int, str]]
     return found
 
 
-def check_starts(starts) -> np.ndarray:
+def check_starts(starts, world=None) -> np.ndarray:
     """Start poses given to the simulator: one pose (x, y, θ) or ``(N, 3)`` of them, N at most
     ``validation.MAX_ROBOTS``, numbers, finite (``[[5, 5], [6, 6], [7, 7]]`` is refused, not
-    read as two poses)."""
+    read as two poses), inside ``world`` when given (a start outside it ran as a collision)."""
     try:
         poses = np.asarray(starts, dtype=float)
     except (TypeError, ValueError):
@@ -108,4 +108,9 @@ def check_starts(starts) -> np.ndarray:
                          f"got an array of shape {poses.shape}", field="starts")
     if not np.isfinite(poses).all():
         raise InputError("must be finite", field="starts")
+    outside = np.flatnonzero(~world.contains(poses[:, :2])) if world is not None else ()
+    if len(outside):
+        x, y = poses[outside[0], :2]
+        raise InputError(f"({x:g}, {y:g}) is outside the {world.width:g} x {world.height:g} m world",
+                         field=f"starts[{outside[0]}]")
     return poses

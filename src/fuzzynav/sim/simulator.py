@@ -89,7 +89,7 @@ class BatchSimulator:
                  seed: int | None = None, max_time: float | None = None, record: bool = True,
                  plant: str = DEFAULT_PLANT):
         self.scenario = arguments.check_scenario(scenario)
-        self.starts = (check_starts(starts) if starts is not None
+        self.starts = (check_starts(starts, scenario.world) if starts is not None
                        else np.tile(scenario.start, (arguments.check_robots(n), 1)))
         if starts is not None and n != 1 and n != len(self.starts):
             raise InputError(f"{n} robots, but {len(self.starts)} start poses: give one or the other", field="n")
