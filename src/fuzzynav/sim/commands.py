@@ -108,9 +108,8 @@ def check_starts(starts, world=None) -> np.ndarray:
                          f"got an array of shape {poses.shape}", field="starts")
     if not np.isfinite(poses).all():
         raise InputError("must be finite", field="starts")
-    outside = np.flatnonzero(~world.contains(poses[:, :2])) if world is not None else ()
-    if len(outside):
-        x, y = poses[outside[0], :2]
-        raise InputError(f"({x:g}, {y:g}) is outside the {world.width:g} x {world.height:g} m world",
-                         field=f"starts[{outside[0]}]")
+    if world is not None and not world.contains(poses[:, :2]).all():
+        i = int(np.argmin(world.contains(poses[:, :2])))
+        raise InputError(f"({poses[i, 0]:g}, {poses[i, 1]:g}) is outside the {world.width:g} x {world.height:g} m world",
+                         field=f"starts[{i}]")
     return poses
