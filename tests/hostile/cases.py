@@ -744,6 +744,14 @@ SEVENTH = [
     Case("bench-empty-suite", {"w.yaml": ROBOT + "goal: {x: 9, y: 9}\n"},
          ("bench", "", "--controllers", "goal-seeking", "--out", "{d}/o"),
          expect="SUITE: is empty: name a family (mixed:40) or a folder"),  # it ran the working folder's files
+    Case("run-empty-model", argv=("run", "fig-IV-23", "--model", ""),
+         expect="argument --model: must be a file name of 1 to 4096 characters"),  # a TypeError traceback
+    Case("fis-convert-empty-output", argv=("fis", "convert", "goal-seeking", "--to", "fll", "-o", ""),
+         expect="argument -o/--output: must be a file name"),  # it wrote to stdout
+    Case("fis-eval-empty-csv", argv=("fis", "eval", "goal-seeking", "--csv", ""),
+         expect="argument --csv: must be a file name"),  # it said the --input values were missing
+    Case("import-barn-empty-world", argv=("import", "barn", "", "--out", "{d}/o"),
+         expect="argument WORLD.world: must be a file name"),  # it said '.: is a folder'
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files

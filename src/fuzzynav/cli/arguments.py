@@ -184,6 +184,15 @@ def check_folder(folder, field: str, files=()) -> Path:
     return folder
 
 
+def file_name(text: str) -> str:
+    """A file argument read or written as given (``--model``, ``--csv``, ``-o``, a world file): a file
+    name (:func:`fuzzynav.validation.file_path`), so an empty one is refused rather than taken for no
+    file (stdout, the default controller) or for the current folder."""
+    from fuzzynav import validation
+
+    return _file_argument(validation.file_path, text)
+
+
 def figure_path(text: str) -> str:
     """``--plot`` / ``-o`` of a figure: a file name whose suffix matplotlib can write (none = PNG),
     checked by :func:`fuzzynav.viz.trajectories.figure_file`, as the Python API checks it."""

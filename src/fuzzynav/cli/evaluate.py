@@ -38,7 +38,8 @@ fuzzynav evaluate --model fql-avoid.json --worlds circles --json""")
     source.add_argument("--controller", metavar="NAME",
                         help=f"built-in controller of goal tasks (default {DEFAULT_CONTROLLER}; "
                              f"{', '.join(sorted(n for n, spec in CONTROLLERS.items() if 'goal' in spec.tasks))})")
-    source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ, `fuzzynav train`)")
+    source.add_argument("--model", metavar="FILE", type=arguments.file_name,
+                        help="trained model file (JSON or NPZ, `fuzzynav train`)")
     parser.add_argument("--worlds", required=True, metavar="FAMILY", help=f"world family: {' | '.join(KINDS)}")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (any .yaml/.json/.fll/.fis; repeat)")

@@ -355,8 +355,8 @@ fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3
 fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
     ev.add_argument("system", help=target)
     ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
-    ev.add_argument("--csv", metavar="IN.csv", help="CSV with one column per input ('-' = stdin)")
-    ev.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
+    ev.add_argument("--csv", metavar="IN.csv", type=arguments.file_name, help="CSV with one column per input ('-' = stdin)")
+    ev.add_argument("-o", "--output", metavar="FILE", type=arguments.file_name, help="write here instead of stdout")
 
     conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML",
                             description="Write SYSTEM in another format: fuzzylite's FLL, MATLAB's .fis, JSON or "
@@ -366,7 +366,7 @@ fuzzynav fis convert tracking --to fll -o tracking.fll
 fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml""")
     conv.add_argument("system", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True, help="the format to write")
-    conv.add_argument("-o", "--output", metavar="FILE", help="write here instead of stdout")
+    conv.add_argument("-o", "--output", metavar="FILE", type=arguments.file_name, help="write here instead of stdout")
 
     export = arguments.command(sub, "export-c", _export_c,
                                help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
@@ -374,7 +374,8 @@ fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml""")
                                            "-o controller.c and controller.h beside it.",
                                example="fuzzynav fis export-c goal-seeking -o controller.c --fixed Q16.16")
     export.add_argument("system", help=target)
-    export.add_argument("-o", "--output", required=True, metavar="FILE.c", help="the .c file (the .h goes beside it)")
+    export.add_argument("-o", "--output", required=True, metavar="FILE.c", type=arguments.file_name,
+                        help="the .c file (the .h goes beside it)")
     export.add_argument("--fixed", choices=FIXED_FORMATS, help="fixed-point arithmetic (default: double)")
     export.add_argument("--name", help="prefix of the C identifiers (default: the file's stem)")
 

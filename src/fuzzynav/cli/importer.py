@@ -29,7 +29,8 @@ def register(subparsers) -> None:
                              example="""
 fuzzynav import barn BARN/world_*.world --out barn-1.5 --scale 1.5
 fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out barn-bench""")
-    barn.add_argument("worlds", nargs="+", metavar="WORLD.world", help="BARN world files (world_N.world)")
+    barn.add_argument("worlds", nargs="+", metavar="WORLD.world", type=arguments.file_name,
+                      help="BARN world files (world_N.world)")
     barn.add_argument("--out", required=True, type=arguments.path, metavar="DIR", help="folder for the scenario files")
     barn.add_argument("--scale", type=arguments.decimal, default=1.0, metavar="S",
                       help="multiply every length by S (default 1: BARN's true size)")

@@ -64,7 +64,7 @@ fuzzynav run path-n --model anfis.json --json""")
     source.add_argument("--controller", metavar="NAME",
                         help=f"built-in controller name (default: {DEFAULT_CONTROLLER} on a goal, else the first of the "
                              "scenario's own 'controllers')")
-    source.add_argument("--model", metavar="FILE", help="trained model file (JSON or NPZ)")
+    source.add_argument("--model", metavar="FILE", type=arguments.file_name, help="trained model file (JSON or NPZ)")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
                              ".fll/.fis file; repeat per role; `fuzzynav fis convert CONTROLLER:ROLE` writes a start)")
