@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from fuzzynav.errors import InputError
 from tests.sim.static_hashes import trace_digest
 
 WORLD_6 = Path(__file__).parents[1] / "data" / "barn" / "world_6-scale-1.5.yaml"  # BARN world 6, MIT
@@ -93,9 +94,11 @@ def test_navigator_learns_the_latency_in_whole_steps_of_its_robot():
     from fuzzynav.sim.simulator import BatchSimulator
 
     navigator = make_controller("fuzzy-5b")
-    BatchSimulator(scenario("fig-IV-22a", (("robot.actuation.latency", 0.26),)), navigator, seed=0)
+    BatchSimulator(scenario("fig-IV-22a", (("robot.actuation.latency", 0.3),)), navigator, seed=0)
     dt = navigator.params[PARAM.plant_dt]
-    assert navigator.params[PARAM.delay] == round(0.26 / dt) > 0
+    assert navigator.params[PARAM.delay] == round(0.3 / dt) == 3
+    with pytest.raises(InputError, match="0.26 s is not a whole number of the simulator's 0.1 s steps"):
+        scenario("fig-IV-22a", (("robot.actuation.latency", 0.26),))  # it ran as 0.3 s, without a word
     BatchSimulator(scenario("fig-IV-22a"), navigator, seed=0)
     assert navigator.params[PARAM.delay] == 0
     sparse = make_controller("fuzzy-2b")  # seven rays: a scan too sparse to move (docs/results/robustness.md)

@@ -771,6 +771,10 @@ finally:
     Case("api-batch-second-start-outside",
          python=f"fuzzynav.BatchSimulator({_SCENARIO}, {_CONTROLLER}, starts=[[2, 2, 0], [2, 25, 0]])",
          expect="starts[1]: (2, 25) is outside the 20 x 20 m world"),
+    Case("scenario-latency-between-two-steps",
+         {"s.yaml": "robot: {x: 5, y: 5, actuation: {latency: 0.05}}\ngoal: {x: 15, y: 15}\n"}, RUN,
+         expect="s.yaml: robot.actuation.latency: 0.05 s is not a whole number of the simulator's 0.1 s steps"),
+    # (it ran as no latency at all; 0.15 s ran as 0.2 s)
     # a typo in a hand-edited model file was read as the key's default
     Case("anfis-model-lookahead-typo",
          python="edited_model(d, ['anfis-tracker', '--episodes', '2'], lambda doc: doc.update(lookahed=doc.pop('lookahead')), "

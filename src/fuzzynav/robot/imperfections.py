@@ -12,7 +12,8 @@ robot:
   range); ``max_range`` caps the readings at the real sensor's reach. The nearest-obstacle distance
   the navigators are given gets the same Gaussian noise (the collision test uses the true one).
 - ``actuation``: the commands reach the wheels ``latency`` seconds late (a queue of
-  round(latency / Δt) steps, holding zero commands at the start); the applied steering angle
+  latency / Δt steps, holding zero commands at the start: a whole number of steps, else refused,
+  as 0.05 s at Δt = 0.1 s ran as no latency at all); the applied steering angle
   moves at most ``steering_rate`` rad/s and the speed at most ``acceleration`` m/s² from the
   previous applied ones; ``slip`` is the mean fraction of the commanded speed and heading rate
   lost at each step (each loss drawn uniformly in [0, 2 slip)).
@@ -38,6 +39,7 @@ from dataclasses import dataclass, fields, replace
 import numpy as np
 
 from fuzzynav import validation
+from fuzzynav.robot.tricycle import TricycleParams
 
 MAX_LATENCY = 2.0  # s
 MAX_SLIP = 0.5  # the losses, drawn in [0, 2 slip), stay below the whole command
@@ -73,7 +75,7 @@ class Imperfections:
         def limit(value):
             return math.inf if value is None else value
 
-        return np.array([self.range_sigma, self.dropout, limit(self.max_range), round(self.latency / dt),
+        return np.array([self.range_sigma, self.dropout, limit(self.max_range), delay_steps(self.latency, dt),
                          limit(self.steering_rate), limit(self.acceleration), self.slip, self.drift])
 
     def to_dict(self) -> dict:
@@ -89,14 +91,26 @@ class Imperfections:
 NONE = Imperfections()
 
 
+def delay_steps(latency: float, dt: float, source=None, field: str = "latency") -> int:
+    """``latency`` (s) as the whole number of steps of ``dt`` the commands wait; a latency between
+    two steps is refused (InputError naming ``source`` and ``field``), not rounded to one of them."""
+    steps = latency / dt
+    if abs(steps - round(steps)) > 1e-9 * max(1.0, steps):
+        validation.fail(f"{latency:g} s is not a whole number of the simulator's {dt:g} s steps (commands wait "
+                        f"whole steps): give {math.floor(steps) * dt:g} or {math.ceil(steps) * dt:g}", source, field)
+    return round(steps)
+
+
 def _value(value, source, field: str, key: str) -> float:
     """One key's value, checked against its range (InputError naming ``source`` and ``field``)."""
     bounded = {"range_sigma": (0.0, 1.0, False), "dropout": (0.0, 1.0, False), "max_range": (0.0, 1000.0, True),
                "latency": (0.0, MAX_LATENCY, False), "steering_rate": (0.0, 1000.0, True),
                "acceleration": (0.0, 1000.0, True), "slip": (0.0, MAX_SLIP, False), "drift": (0.0, MAX_DRIFT, False)}
     lo, hi, lo_open = bounded[key]
-    return validation.number(value, source, field, lo=lo, hi=hi, lo_open=lo_open,
-                             hi_open=key in ("dropout", "slip"))
+    number = validation.number(value, source, field, lo=lo, hi=hi, lo_open=lo_open, hi_open=key in ("dropout", "slip"))
+    if key == "latency":  # a scenario's robot steps by the default Δt (it has no dt key)
+        delay_steps(number, TricycleParams.dt, source, field)
+    return number
 
 
 def read(robot: dict, source) -> Imperfections:
