@@ -752,6 +752,9 @@ SEVENTH = [
          expect="argument --csv: must be a file name"),  # it said the --input values were missing
     Case("import-barn-empty-world", argv=("import", "barn", "", "--out", "{d}/o"),
          expect="argument WORLD.world: must be a file name"),  # it said '.: is a folder'
+    Case("fis-plot-empty-output-variable", argv=("fis", "plot", "goal-seeking", "--surface", "--output-variable", "",
+                                                  "-o", "{d}/s.png"),
+         expect="--output-variable: unknown output (one of alpha, v)"),  # it drew the first output
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files

@@ -314,7 +314,7 @@ def _plot(args) -> int:
         raise InputError("chooses the output --surface draws: give --surface too", field="--output-variable")
     system = resolve(args.system)
     if args.surface:
-        if args.surface_output and args.surface_output not in system.output_names:
+        if args.surface_output is not None and args.surface_output not in system.output_names:
             raise InputError(f"unknown output (one of {', '.join(system.output_names)})", field="--output-variable")
         try:
             fig = plot_surface(system, args.surface_output)
