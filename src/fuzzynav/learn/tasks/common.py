@@ -111,10 +111,10 @@ def load_fuzzy_model(document: dict, path, build, keys=("constant_speed",)):
     every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
     must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`). Its keys are the
     system's, ``kind``, ``training`` and the model's own ``keys``: a typo is refused, not read as the default."""
-    validation.known_keys(document, (*TOP_KEYS, "kind", "training", *keys), str(path))
     if "inputs" not in document:  # another kind of model relabelled (it is already run with --model)
         raise InputError(f"missing (a {document['kind']!r} model holds a fuzzy system)", source=str(path),
                          field="inputs")
+    validation.known_keys(document, (*TOP_KEYS, "kind", "training", *keys), str(path))
     system = from_document(document, source=str(path))
     check_covered(system, str(path))
     try:
