@@ -259,8 +259,9 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
     if resume:  # under the campaign's lock: a temporary file here is a killed run's (plots included)
         remove_temporaries_under(out)
     if previous and not resume:
-        raise InputError(f"already holds {len(previous)} runs: add --resume to continue them, or choose "
-                         "another --out", source=str(out), field="--out")
+        held = f"{len(previous)} runs: add --resume to continue them" if len(previous) != 1 else \
+            "1 run: add --resume to continue it"
+        raise InputError(f"already holds {held}, or choose another --out", source=str(out), field="--out")
     _keep_settings(out, plan, bool(previous))
     rows = {key(row): row for row in previous}
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
