@@ -95,7 +95,7 @@ def run(args) -> int:
         return 0
     source = f" (model {result['model']})" if result["model"] else "".join(
         f" (--fis {role}={path})" for role, path in result.get("fis", {}).items())
-    print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} worlds (seed {result['seed']}, "
+    print(f"controller {result['controller']}{source} on {result['n']} {result['worlds']} world{'s' * (result['n'] != 1)} (seed {result['seed']}, "
           f"{result['plant']} plant)")
     for key in ("success_rate", "collision_rate", "timeout_rate"):
         print(f"  {key:20s} {100 * result[key]:6.1f} %")

@@ -74,5 +74,5 @@ def run(args) -> int:
         write_text_atomic(out / f"{stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         references[stem] = entry
     write_text_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
-    print(f"{len(args.worlds)} BARN worlds -> {out}", file=sys.stderr)
+    print(f"{len(args.worlds)} BARN world{'s' * (len(args.worlds) != 1)} -> {out}", file=sys.stderr)
     return 0

@@ -255,9 +255,10 @@ class PhaseSummary(dict):
     ``None``), whose words ``fuzzynav.cli.train.PHASE_NOTE`` explains."""
 
     def __str__(self) -> str:
-        converged = (f"not converged within {self['episodes']} episodes" if self["converged_at"] is None
-                     else f"converged at episode {self['converged_at']}")
-        return (f"{self['episodes']} episodes, {converged}; success in the last training episodes "
+        episodes = f"{self['episodes']} episode{'s' * (self['episodes'] != 1)}"
+        converged = f"not converged within {episodes}" if self["converged_at"] is None else \
+            f"converged at episode {self['converged_at']}"
+        return (f"{episodes}, {converged}; success in the last training episodes "
                 f"{self['final_training_success']:.1%}")
 
 
