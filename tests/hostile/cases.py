@@ -575,6 +575,10 @@ CHECKPOINT = [
 SCENARIOS = [
     Case("scenario-3m-robot-goal-unreachable", {"s.yaml": "robot: {x: 5, y: 5, radius: 3}\ngoal: {x: 19, y: 19}\n"},
          RUN, expect="the robot (radius 3 m) cannot come closer"),
+    Case("scenario-start-within-the-goal-tolerance", {"s.yaml": ROBOT + "goal: {x: 5.1, y: 5.1, tolerance: 0.3}\n"},
+         RUN, expect="s.yaml: goal: the start (5, 5) is 0.141421 m from the goal, within its tolerance 0.3 m"),
+    Case("scenario-goal-tolerance-larger-than-the-world", {"s.yaml": ROBOT + "goal: {x: 15, y: 15, tolerance: 30}\n"},
+         RUN, expect="within its tolerance 30 m: the episode would end, reached, before its first step"),  # reached in 0 s
     Case("scenario-small-robot-goal-ok", {"s.yaml": "robot: {x: 1, y: 1, radius: 0.1}\n"
                                                     "goal: {x: 19.8, y: 19.8, tolerance: 0.1}\nmax_time: 1\n"},
          RUN, status=0, expect='"outcome": "timeout"'),

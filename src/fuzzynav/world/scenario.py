@@ -203,6 +203,15 @@ def _reachable(check: Checks, world: World, point, tolerance: float, radius: flo
                               f"obstacles[{index[0]}] keeps the robot (radius {radius:g} m) away")
 
 
+def _not_done_at_start(check: Checks, start, point, tolerance: float, field: str, what: str):
+    """A goal or target within its tolerance of the start would end the episode, reached, before
+    its first step (a tolerance of 30 for 0.3, or the start's coordinates given to it)."""
+    gap = math.hypot(point[0] - start[0], point[1] - start[1])
+    if gap <= tolerance:
+        check.fail(field, f"the start ({start[0]:g}, {start[1]:g}) is {gap:g} m from the {what}, within its tolerance "
+                          f"{tolerance:g} m: the episode would end, reached, before its first step")
+
+
 def _place(check: Checks, world: World, point, field: str, what: str, radius: float = 0.0):
     """A point must lie in the world and outside every obstacle (a disc of ``radius`` around it)."""
     point = np.asarray(point, dtype=float).reshape(1, 2)
@@ -277,6 +286,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         _place(check, world, position, "goal", "goal")
         goal = Goal(position, check.number(g.get("tolerance", DEFAULT_GOAL_TOLERANCE), "goal.tolerance", True))
         _reachable(check, world, position, goal.tolerance, radius, "goal", "goal")
+        _not_done_at_start(check, start, position, goal.tolerance, "goal", "goal")
     elif "path" in doc:
         waypoints = check.points(doc["path"], "path", 2, limits.MAX_WAYPOINTS)
         for i, waypoint in enumerate(waypoints):
@@ -302,6 +312,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
                             check.number(t.get("tolerance", DEFAULT_GOAL_TOLERANCE), "target.tolerance", True))
         if kind == "static":
             _reachable(check, world, position, target.tolerance, radius, "target", "target")
+        _not_done_at_start(check, start, position, target.tolerance, "target", "target")
 
     return Scenario(
         name=check.text(doc.get("name", name or "scenario"), "name", allow_empty=False),  # it names runs and plots
