@@ -808,6 +808,8 @@ finally:
          ("fis", "convert", "{d}/t.fll", "--to", "fis", "-o", "{d}/t.fis"),
          expect="rules: MATLAB reads a negated conclusion of a Mamdani output as 1 − μ of the term, fuzzylite as "
                 "the term at 1 − the rule's degree, and the two answer otherwise ('v is not lo'): write it as fll"),
+    Case("model-kind-in-capitals", python="fuzzy_model(d, 'FQL-goal')",
+         expect="m.json: kind: unknown model kind 'FQL-goal' (did you mean q-goal, fql-goal?)"),
     Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
          status=0, expect="fig-IV-23 / fql-goal"),
 ]

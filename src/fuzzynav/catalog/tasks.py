@@ -18,7 +18,7 @@ from pathlib import Path
 from fuzzynav import validation
 from fuzzynav.catalog.specs import TaskSpec
 from fuzzynav.errors import InputError
-from fuzzynav.lookup import Registry, load
+from fuzzynav.lookup import Registry, load, unknown
 from fuzzynav.storage import read_document
 
 
@@ -90,9 +90,8 @@ def load_controller(path, task: str | None = None):
     if kind == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
         raise InputError("a training checkpoint, not a model: `fuzzynav train TASK --out FILE --resume` goes on "
                          "from it, and FILE is the model to run", source=str(path), field="kind")
-    if kind not in loaders:
-        raise InputError(f"unknown model kind {kind!r}; known: {', '.join(sorted(loaders)) or 'none'}",
-                         source=str(path), field="kind")
+    if kind not in loaders:  # a close kind suggested (Q-goal: q-goal)
+        raise InputError(unknown(loaders, kind, what="model kind", field="kind").problem, source=str(path), field="kind")
     tasks = {spec.kind: spec.tasks for spec in TASKS.values()}.get(kind)  # None: a loader without a task spec
     if task is not None and tasks is not None and task not in tasks:
         raise InputError(f"this {kind} model cannot do a {task} task (it does: {', '.join(tasks)})",
