@@ -579,6 +579,9 @@ SCENARIOS = [
          RUN, expect="s.yaml: goal: the start (5, 5) is 0.141421 m from the goal, within its tolerance 0.3 m"),
     Case("scenario-goal-tolerance-larger-than-the-world", {"s.yaml": ROBOT + "goal: {x: 15, y: 15, tolerance: 30}\n"},
          RUN, expect="within its tolerance 30 m: the episode would end, reached, before its first step"),  # reached in 0 s
+    Case("scenario-polygon-closed-ring", {"s.yaml": "robot: {x: 1, y: 1}\ngoal: {x: 18, y: 18}\nobstacles:\n"
+                                                    "  - polygon: {points: [[5, 5], [9, 5], [9, 9], [5, 5]]}\n"},
+         RUN, expect="obstacles[0].polygon.points[3]: repeats points[0]: a polygon closes itself"),  # 'self-intersecting'
     Case("scenario-small-robot-goal-ok", {"s.yaml": "robot: {x: 1, y: 1, radius: 0.1}\n"
                                                     "goal: {x: 19.8, y: 19.8, tolerance: 0.1}\nmax_time: 1\n"},
          RUN, status=0, expect='"outcome": "timeout"'),

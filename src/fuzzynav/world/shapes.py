@@ -178,6 +178,9 @@ class Polygon(Shape):
     @classmethod
     def parse(cls, fields) -> Polygon:
         points = fields.points("points", 3, limits.MAX_POLYGON_VERTICES)
+        if len(points) > 3 and np.array_equal(points[0], points[-1]):  # a closed ring, as GeoJSON writes one
+            fields.fail(f"points[{len(points) - 1}]", "repeats points[0]: a polygon closes itself, leave the last "
+                                                     "point out")
         if polygon_self_intersects(points):
             fields.fail("points", "polygon is self-intersecting (or has repeated points / zero area)")
         return cls(points)
