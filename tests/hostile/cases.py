@@ -762,6 +762,11 @@ SEVENTH = [
     Case("fis-plot-empty-output-variable", argv=("fis", "plot", "goal-seeking", "--surface", "--output-variable", "",
                                                   "-o", "{d}/s.png"),
          expect="--output-variable: unknown output (one of alpha, v)"),  # it drew the first output
+    Case("bench-seed-is-not-seeds", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--seed", "3",
+                                          "--out", "{d}/o"),
+         expect="unrecognized arguments: --seed 3 (did you mean --seeds?)"),  # it ran --seeds 3: three world sets
+    Case("run-option-prefix", argv=("run", "fig-IV-23", "--contr", "dwa"),
+         expect="unrecognized arguments: --contr dwa (did you mean --controller?)"),  # a prefix was the option
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files

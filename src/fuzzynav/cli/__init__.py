@@ -11,6 +11,7 @@ raises :class:`~fuzzynav.errors.InputError`: its message goes to stderr and the 
 from __future__ import annotations
 
 import argparse
+import difflib
 import errno
 import gc
 import io
@@ -48,12 +49,38 @@ def help_line(module: str) -> str:
     return COMMAND_MODULES[module][1]
 
 
+class Parser(argparse.ArgumentParser):
+    """The parser of every command: options by their whole name only, as a prefix was taken for the
+    option it begins (``bench --seed 3`` ran ``--seeds 3``: three world sets, not seed 3)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **{"allow_abbrev": False, **kwargs})
+
+    def parse_args(self, args=None, namespace=None):  # type: ignore[override]
+        """As argparse's, an unknown option named with the closest one of the command as a hint."""
+        namespace, extras = self.parse_known_args(args, namespace)
+        if extras:
+            options = [o for parser in _reached(self, namespace) for a in parser._actions for o in a.option_strings]
+            word = next((extra.split("=")[0] for extra in extras if extra.startswith("-")), "")
+            close = difflib.get_close_matches(word, options, n=1, cutoff=0.7)
+            self.error(f"unrecognized arguments: {' '.join(extras)}" + (f" (did you mean {close[0]}?)" if close else ""))
+        return namespace
+
+
+def _reached(parser: argparse.ArgumentParser, namespace):
+    """``parser`` and the sub-commands' parsers ``namespace`` went through."""
+    yield parser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction) and getattr(namespace, action.dest, None) in action.choices:
+            yield from _reached(action.choices[getattr(namespace, action.dest)], namespace)
+
+
 def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     """The parser of the command line. Every sub-command's module is imported and registered, or,
     given the words ``argv`` to parse, only those of the commands ``argv`` names: the others are
     listed with their line alone (a parser without arguments argparse never reaches, since it picks
     a sub-command by its exact name), so a command does not import the modules of all the others."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(  # its sub-commands' parsers are of its class (argparse's add_subparsers)
         prog="fuzzynav",
         description="Neuro-fuzzy navigation of a simulated tricycle robot (Cherroun, 2014).",
         **arguments.with_example("""
