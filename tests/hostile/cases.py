@@ -818,6 +818,9 @@ finally:
                 "the term at 1 − the rule's degree, and the two answer otherwise ('v is not lo'): write it as fll"),
     Case("model-kind-in-capitals", python="fuzzy_model(d, 'FQL-goal')",
          expect="m.json: kind: unknown model kind 'FQL-goal' (did you mean q-goal, fql-goal?)"),
+    Case("fuzzy-json-defuzz-for-defuzzifier",
+         python="edited_system(d, lambda doc: doc.update(defuzz=doc.pop('defuzzifier')))",
+         expect="edited.json: defuzz: unknown key 'defuzz'"),  # ignored: the method's default defuzzifier ran
     Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
          status=0, expect="fig-IV-23 / fql-goal"),
 ]

@@ -88,9 +88,10 @@ _GRID_KEYS = ("rows", "columns", "outputs", "cells", "row_labels", "column_label
 def _check_keys(mapping, known, source, field, strict: bool = True) -> None:
     """Reject the keys of ``mapping`` outside ``known``, suggesting the closest one.
 
-    ``strict=False`` (top level) rejects only near misses of a known key (``tnrom``, ``methd``):
-    other top-level keys belong to the file's owner — a model file adds its ``kind`` and its
-    training record around the fuzzy system.
+    ``strict=False`` (the top level of a model file, which has a ``kind``) rejects only near misses
+    of a known key (``tnrom``, ``methd``): its other top-level keys belong to the model (its training
+    record, its speed…), which its loader checks; a plain system file is strict (``defuzz`` was
+    ignored, the default defuzzifier run).
     """
     if not isinstance(mapping, dict):
         return
@@ -193,7 +194,7 @@ def from_document(doc, source: str | None = None) -> FuzzySystem:
     if not matches(doc.get("format", FORMAT), FORMAT):
         raise InputError(f"format must be {FORMAT!r}, got {doc.get('format')!r}", source=source, field="format")
     supported_version(doc, VERSION, source)
-    _check_keys(doc, TOP_KEYS, source, "", strict=False)
+    _check_keys(doc, TOP_KEYS, source, "", strict="kind" not in doc)  # a model's own keys: its loader's
     if "inputs" not in doc and doc.get("kind") == "fuzzynav-checkpoint":  # learn.checkpoint.KIND
         raise InputError("a training checkpoint, not a fuzzy system (`fuzzynav train ... --resume` reads it)",
                          source=source, field="kind")
