@@ -47,7 +47,7 @@ def test_evaluate_model_and_controller_are_mutually_exclusive(q_model):
 
 def test_evaluate_without_a_controller_runs_the_default_navigator(capsys):
     assert main(["evaluate", "--worlds", "circles", "--n", "1"]) == 0
-    assert "controller fuzzy-5b on 1 circles worlds" in capsys.readouterr().out
+    assert "controller fuzzy-5b on 1 circles world (seed 0" in capsys.readouterr().out
 
 
 def test_evaluate_missing_model_file_is_an_input_error(tmp_path, capsys):
