@@ -767,6 +767,14 @@ SEVENTH = [
          expect="unrecognized arguments: --seed 3 (did you mean --seeds?)"),  # it ran --seeds 3: three world sets
     Case("run-option-prefix", argv=("run", "fig-IV-23", "--contr", "dwa"),
          expect="unrecognized arguments: --contr dwa (did you mean --controller?)"),  # a prefix was the option
+    Case("tune-validation-on-the-training-worlds",
+         argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "circles:2", "--budget", "400",
+               "--out", "{d}/t.yaml"),
+         expect="--validation: shares 2 worlds with --worlds circles:2:0: the result would be chosen on the worlds"),
+    Case("tune-validation-on-the-held-out-worlds",
+         argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "circles:2:7", "--holdout",
+               "circles:2:7", "--budget", "400", "--out", "{d}/t.yaml"),
+         expect="--validation: shares 2 worlds with --holdout circles:2:7: the held-out numbers would be on worlds"),
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",
                                         "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: is empty: name a family"),  # it validated on the working folder's files

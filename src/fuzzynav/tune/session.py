@@ -145,6 +145,12 @@ def check(request: TuneRequest):
                          f"worlds the tuner never saw{example}", field="--holdout")
     holdout = given if given is not None else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
+    for option, other, why in (("--worlds", suite, "the result would be chosen on the worlds it was tuned on"),
+                               ("--holdout" if given is not None else "the default --holdout", holdout,
+                                "the held-out numbers would be on worlds the choice saw")):
+        if chooser is not None and other is not None and _shared(chooser, other):
+            raise InputError(f"shares {_shared(chooser, other)} worlds with {option} {other.name}: {why}",
+                             field="--validation")
     made = make_with_systems(controller, dict(request.systems))
     if not callable(getattr(made, "compiled", None)):
         tunable = [name for name in sorted(ROLES) if callable(getattr(make_with_systems(name, {}), "compiled", None))]
