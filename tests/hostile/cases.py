@@ -829,6 +829,12 @@ finally:
     Case("fuzzy-json-defuzz-for-defuzzifier",
          python="edited_system(d, lambda doc: doc.update(defuzz=doc.pop('defuzzifier')))",
          expect="edited.json: defuzz: unknown key 'defuzz'"),  # ignored: the method's default defuzzifier ran
+    Case("fis-role-without-lock-range", python="""
+from fuzzynav.cli import main
+assert main(["fis", "convert", "goal-seeking", "--to", "fis", "-o", str(d / "g.fis")]) == 0
+(d / "g.fis").write_text((d / "g.fis").read_text().replace("% fuzzynav: LockRange=1\\n", ""))
+raise SystemExit(main(["run", "circles-0-000", "--controller", "goal-seeking", "--fis", f"gsb={d / 'g.fis'}"]))
+""", expect="this one is a fuzzylite engine, its input drg not clipped to its range"),  # it said only what a TS0 needs
     Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
          status=0, expect="fig-IV-23 / fql-goal"),
 ]

@@ -30,8 +30,11 @@ def pack(systems, names=None) -> np.ndarray:
     for system, name in zip(systems, names):
         kernel = getattr(system, "_kernel", None)
         if kernel is None or not kernel.multilinear:
+            loose = next((v.name for v in getattr(system, "inputs", ()) if getattr(v, "lock_range", True) is False), None)
+            why = (f": this one is a fuzzylite engine, its input {loose} not clipped to its range (lock-range: true "
+                   "in .fll, % fuzzynav: LockRange=1 in .fis)") if kernel is None and loose else ""
             raise InputError("needs a TS0 system with the product T-norm over piecewise-linear input terms "
-                             "(triangles, trapezoids, shoulders)", field=name)
+                             f"(triangles, trapezoids, shoulders){why}", field=name)
         n_in, n_out = len(kernel.parts), len(kernel.coef_num)
         if n_in > MAX_INPUTS or n_out > MAX_OUTPUTS:
             raise InputError(f"has {n_in} inputs and {n_out} outputs; at most {MAX_INPUTS} and {MAX_OUTPUTS} here",
