@@ -837,6 +837,11 @@ assert main(["fis", "convert", "goal-seeking", "--to", "fis", "-o", str(d / "g.f
 (d / "g.fis").write_text((d / "g.fis").read_text().replace("% fuzzynav: LockRange=1\\n", ""))
 raise SystemExit(main(["run", "circles-0-000", "--controller", "goal-seeking", "--fis", f"gsb={d / 'g.fis'}"]))
 """, expect="this one is a fuzzylite engine, its input drg not clipped to its range"),  # it said only what a TS0 needs
+    Case("fql-avoid-model-on-a-lidar", python="""
+from fuzzynav.cli import main
+assert main(["train", "fql-avoid", "--episodes", "8", "--quiet", "--out", str(d / "a.json")]) == 0
+raise SystemExit(main(["run", "fig-IV-22a", "--model", str(d / "a.json"), "--sensors", "lidar"]))
+""", expect="sensors: this controller reads the 7 range sensors of the thesis' ring (sensors thesis or beam), not 271"),
     Case("fql-goal-model-with-its-keys-ok", python="fuzzy_model(d, 'fql-goal', constant_speed=0.5, training={'task': 'fql-goal'})",
          status=0, expect="fig-IV-23 / fql-goal"),
 ]

@@ -38,7 +38,7 @@ def prior_navigator(open_side: bool, **options) -> LearnedAvoidanceNavigator:
 def test_openness_is_the_left_module_mean_minus_the_right_one():
     assert learned.openness(wall_ahead(True))[0] > 0 > learned.openness(wall_ahead(False))[0]
     assert learned.avoidance_inputs(wall_ahead(True), True).shape == (1, 4)
-    with pytest.raises(InputError, match="ranges"):
+    with pytest.raises(InputError, match="reads the 7 range sensors of the thesis. ring .sensors thesis or beam., not 5 readings"):
         learned.openness(np.ones((1, 5)))
 
 

@@ -76,9 +76,9 @@ def single_rays(ranges) -> np.ndarray:
 def _readings(ranges) -> np.ndarray:
     """``ranges`` as a contiguous float (B, 7) array, else InputError."""
     ranges = np.ascontiguousarray(ranges, dtype=float)
-    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:
-        raise InputError(f"expected readings of the {N_SENSORS}-sensor ring (B, {N_SENSORS}), got "
-                         f"{ranges.shape}", field="ranges")
+    if ranges.ndim != 2 or ranges.shape[1] != N_SENSORS:  # a lidar's 271 (`--sensors lidar`): say so
+        raise InputError(f"this controller reads the {N_SENSORS} range sensors of the thesis' ring (sensors thesis or "
+                         f"beam), not {ranges.shape[-1] if ranges.ndim == 2 else ranges.shape} readings", field="sensors")
     return ranges
 
 
