@@ -28,3 +28,17 @@ def test_two_files_of_one_name_are_refused_not_merged(tmp_path):
         (tmp_path / name).write_text(text)
     with pytest.raises(InputError, match=r"W1\.yml, w1\.yaml would be one world"):
         parse_suite(str(tmp_path))
+
+
+def test_seeds_of_a_folder_say_that_its_worlds_repeat(tmp_path, capsys):
+    """A folder's worlds are the same for every seed: a deterministic navigator repeats its run, and
+    the intervals would count the repeats as trials without a word."""
+    from fuzzynav.cli import main
+
+    (tmp_path / "w").mkdir()
+    (tmp_path / "w" / "a.yaml").write_text("robot: {x: 2, y: 2}\ngoal: {x: 6, y: 2}\nmax_time: 5\n")
+    args = ["bench", str(tmp_path / "w"), "circles:1", "--controllers", "goal-seeking", "--quiet", "--gallery", "0"]
+    assert main([*args, "--seeds", "2", "--out", str(tmp_path / "o2")]) == 0
+    assert f"note: {tmp_path / 'w'}: a folder's worlds are the same for every seed" in capsys.readouterr().err
+    assert main([*args, "--out", str(tmp_path / "o1")]) == 0
+    assert "note:" not in capsys.readouterr().err

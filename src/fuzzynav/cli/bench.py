@@ -162,6 +162,11 @@ def run(args) -> int:
     if args.backend == "ray":
         ray_address(args.ray_address)  # before the campaign's folder is made
     controllers = _controllers(args.controllers)
+    folder_specs = [spec for spec, suite in zip(args.suites, suites) if suite.family is None]
+    if folder_specs and args.seeds > 1:  # the same worlds again: only the seeded draws differ
+        print(f"note: {', '.join(folder_specs)}: a folder's worlds are the same for every seed, which changes only "
+              "the sensor noise and the controllers' random draws: a deterministic controller without noise repeats "
+              "each run, and the rates' intervals count every repeat as a trial", file=sys.stderr)
     plan = Plan(suites, controllers, args.seeds, DEFAULT_PARAMS.radius, _replacements(args.fis, controllers),
                 _perturbations(args.perturb), args.plant)
     out = Path(args.out)
