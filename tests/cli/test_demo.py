@@ -81,6 +81,10 @@ def test_the_next_hint_names_a_command_this_shell_can_type(tmp_path, monkeypatch
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(demo.shutil, "which", lambda name: None)
     assert demo.command_name() == str(Path(".venv") / "bin" / "fuzzynav")
+    elsewhere = tmp_path / "elsewhere"  # run from outside the folder that holds .venv: no ../../ path
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    assert demo.command_name() == str(bin_dir / "fuzzynav")
     monkeypatch.setattr(demo.shutil, "which", lambda name: str(bin_dir / name))
     assert demo.command_name() == "fuzzynav"
 

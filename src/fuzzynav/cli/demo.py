@@ -210,13 +210,15 @@ def run(args) -> int:
 
 def command_name() -> str:
     """How to type the command in this shell: ``fuzzynav`` when it is on the PATH, else the
-    script beside this Python (e.g. ``.venv/bin/fuzzynav`` of an environment not activated)."""
+    script beside this Python (e.g. ``.venv/bin/fuzzynav`` of an environment not activated), by
+    its path from the current folder when that path stays inside it, else by its absolute path."""
     if shutil.which("fuzzynav"):
         return "fuzzynav"
     script = Path(sys.executable).parent / "fuzzynav"
     if not (script.exists() or script.with_suffix(".exe").exists()):
         return "fuzzynav"
     try:
-        return os.path.relpath(script)
+        relative = os.path.relpath(script)
     except ValueError:  # another drive (Windows)
         return str(script)
+    return str(script.absolute()) if relative.startswith(os.pardir) else relative
