@@ -171,13 +171,13 @@ def save_document(path, document: dict) -> None:
         save_json_atomic(path, document)
 
 
-def _read_npz(path: Path) -> dict:
+def _read_npz(path: Path, what: str) -> dict:
     validation.check_npz(path)  # sizes and dtypes its headers declare, before decompressing
     try:
         with np.load(path, allow_pickle=False) as data:
             document = {key: data[key] for key in data.files}
     except Exception as error:  # corrupt data past the checked headers (zlib, CRC, truncation, ...)
-        raise InputError(f"cannot read model file: not a valid NumPy archive ({type(error).__name__}: {error})",
+        raise InputError(f"cannot read {what}: not a valid NumPy archive ({type(error).__name__}: {error})",
                          source=str(path)) from None
     if "document" in document:  # a JSON document stored in an archive (save_document)
         text = validation.text(str(document["document"]), str(path), "document", max_length=validation.MAX_MODEL_BYTES)
@@ -187,14 +187,14 @@ def _read_npz(path: Path) -> dict:
     return document
 
 
-def check_model_file(path, field: str | None = None) -> Path:
+def check_model_file(path, field: str | None = None, what: str = "model file") -> Path:
     """``path`` as a Path when it is a regular file; else an InputError naming it: a folder,
     missing, or what :func:`~fuzzynav.validation.read_bytes` refuses to open (a named pipe, whose
     read would wait for ever; a loop of symbolic links)."""
     path = Path(path)
     if not path.is_file():
         if path.is_dir() or not (path.exists() or path.is_symlink()):
-            raise InputError("is a folder, not a model file" if path.is_dir() else "no such model file",
+            raise InputError(f"is a folder, not a {what}" if path.is_dir() else f"no such {what}",
                              source=str(path), field=field)
         try:
             validation.read_bytes(path, max_bytes=0)  # refused before a byte is read: it is not a regular file
@@ -203,22 +203,23 @@ def check_model_file(path, field: str | None = None) -> Path:
     return path
 
 
-def read_document(path) -> dict:
+def read_document(path, what: str = "model file") -> dict:
     """Read a document written by :func:`save_document` (either format, whatever the name says)
-    or an archive of arrays with a ``kind``; a file that is neither is an InputError naming it.
+    or an archive of arrays with a ``kind``; a file that is neither is an InputError naming it, and
+    ``what`` it was to be ("model file", "checkpoint").
 
     Bounded before anything is decoded (:mod:`fuzzynav.validation`): a JSON file by its size,
     nesting and values; an ``.npz`` by the sizes its zip and array headers declare
     (:func:`fuzzynav.validation.check_npz`), never unpickled.
     """
-    path = check_model_file(path)
+    path = check_model_file(path, what=what)
     try:
         with path.open("rb") as handle:
             npz = handle.read(len(_NPZ_MAGIC)) == _NPZ_MAGIC
     except OSError as error:
-        raise InputError(f"cannot read model file ({error.strerror or error})", source=str(path)) from None
+        raise InputError(f"cannot read {what} ({error.strerror or error})", source=str(path)) from None
     if npz:
-        document = _read_npz(path)
+        document = _read_npz(path, what)
     else:
         data = validation.read_bytes(path, max_bytes=validation.MAX_MODEL_BYTES)
         try:
@@ -227,11 +228,11 @@ def read_document(path) -> dict:
             if not error.problem.startswith(("invalid JSON", "cannot read file")):
                 raise  # valid JSON past a limit: the error names the field
             where = f", {error.field}" if error.field else ""
-            what = "neither an .npz archive (no zip header) nor" if path.suffix.lower() == ".npz" else "not"
-            raise InputError(f"cannot read model file: {what} a valid JSON document ({error.problem}{where})",
+            kind = "neither an .npz archive (no zip header) nor" if path.suffix.lower() == ".npz" else "not"
+            raise InputError(f"cannot read {what}: {kind} a valid JSON document ({error.problem}{where})",
                              source=str(path)) from None
     if not isinstance(document, dict) or "kind" not in document:
-        raise InputError("not a fuzzynav model file (no 'kind' field)", source=str(path), field="kind")
+        raise InputError(f"not a fuzzynav {what} (no 'kind' field)", source=str(path), field="kind")
     validation.text(document["kind"], str(path), "kind", max_length=100)
     return document
 

@@ -92,11 +92,14 @@ def test_checkpoint_files_are_plain_json_and_checked(tmp_path):
     (tmp_path / "model.json").write_text(json.dumps({"kind": "fuzzy-controller"}))
     with pytest.raises(InputError, match="not a training checkpoint"):
         load_checkpoint(tmp_path / "model.json")
-    with pytest.raises(InputError, match="no such model file"):
+    with pytest.raises(InputError, match="no such checkpoint"):
         load_checkpoint(tmp_path / "missing.json")
     (tmp_path / "folder.json").mkdir()
-    with pytest.raises(InputError, match="is a folder, not a model file"):
+    with pytest.raises(InputError, match="is a folder, not a checkpoint"):
         load_checkpoint(tmp_path / "folder.json")
+    (tmp_path / "cut.json").write_text('{"kind": "fuzzynav-checkpoint", "episode":')  # a write cut short
+    with pytest.raises(InputError, match="cannot read checkpoint: not a valid JSON document"):
+        load_checkpoint(tmp_path / "cut.json")
     with pytest.raises(InputError, match="episodes"):
         train_loop(ChainEnv(3), learner, -1, rng)
 

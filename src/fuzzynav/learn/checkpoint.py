@@ -80,7 +80,7 @@ def _digest(document: dict) -> str:
 
 def load_checkpoint(path) -> dict:
     """Read a checkpoint document written by :func:`save_checkpoint`."""
-    document = read_document(path)
+    document = read_document(path, "checkpoint")
     if document["kind"] != KIND:
         raise InputError(f"not a training checkpoint (kind {document['kind']!r})", source=str(path),
                          field="kind")
