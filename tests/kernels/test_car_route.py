@@ -285,12 +285,37 @@ def test_an_analytic_expansion_stops_at_a_wall_across_the_way():
     nodes.xs[0], nodes.ys[0] = 1.0, 1.0  # facing +x
     grid = np.full((20, 80), RADIUS + SEARCH.comfort)
     goal = np.array([7.0, 1.0])
-    end, cost = car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)
+    end, cost = car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, math.inf)
     assert end == 28 and cost == pytest.approx(5.6)  # 28 straight arcs of 0.2 m: 6.6 m, within 0.5 m of the goal
     grid[:, 40] = RADIUS + SEARCH.comfort / 2  # passable by the search, but within the comfort margin
-    assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)[0] == -1
+    assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, math.inf)[0] == -1
     grid[:, 40] = 0.0  # a wall across the straight line at x = 4 m
-    assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1)[0] == -1
+    assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, math.inf)[0] == -1
+
+
+def test_an_analytic_expansion_is_cut_only_where_the_search_would_refuse_it():
+    """``shot`` gives up once the path must cost more than the spare cost it is given
+    (``car_search.dearer``); the search takes a path of cost c only when c is within that spare.
+    So a shot given exactly the cost it reaches the goal at must still reach it, from any pose,
+    with the goal at any distance (a last arc that just reaches the goal included)."""
+    rng = np.random.default_rng(11)
+    nodes = SearchNodes(np.zeros(400), np.zeros(400), np.zeros(400), np.full(400, -1), np.full(400, -1))
+    grid = np.full((200, 200), RADIUS + SEARCH.comfort)
+    reached, cut = 0, 0
+    for trial in range(400):
+        nodes.xs[0], nodes.ys[0], nodes.ths[0] = rng.uniform(5.0, 15.0, 2).tolist() + [rng.uniform(0.0, 2 * math.pi)]
+        along = SEARCH.reach + SEARCH.step * rng.integers(1, 40) * (1.0 + rng.choice([0.0, 1e-12, -1e-12]))
+        if trial % 2:  # straight ahead: the goal exactly whole arcs beyond the reach
+            goal = np.array([nodes.xs[0] + along * math.cos(nodes.ths[0]), nodes.ys[0] + along * math.sin(nodes.ths[0])])
+        else:
+            goal = rng.uniform(2.0, 18.0, 2)
+        end, cost = car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, math.inf)
+        if end < 0:
+            continue
+        assert car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, cost) == (end, cost)
+        reached += 1
+        cut += car_search.shot(grid, goal, RADIUS, SEARCH, nodes, 0, 1, cost - SEARCH.step)[0] < 0
+    assert reached > 200 and cut > reached / 2  # a spare too small mostly ends the shot early
 
 
 def test_a_target_beyond_the_largest_grid_gets_no_plan_and_no_grid():

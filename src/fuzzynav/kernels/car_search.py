@@ -25,7 +25,9 @@ With ``shot`` > 0 the search tries Dolgov et al.'s analytic expansion every ``sh
 nodes (:func:`shot`: the turn and straight line a car takes to the goal on open ground) and ends
 with it when it is clear of obstacles and costs no more than the cost-to-go of the node it starts
 from, whose key (cost so far plus cost-to-go) is the lowest of the search: no route the search
-could still find is cheaper, by the heuristic's account. The heading-blind heuristic lets a search that starts facing
+could still find is cheaper, by the heuristic's account; it stops as soon as its cost so far plus
+the distance left to the goal's reach exceeds that bound (:func:`dearer`), when it could only be
+refused. The heading-blind heuristic lets a search that starts facing
 away from its goal spread over every heading round the start; the expansion ends it once a node
 points the right way.
 """
@@ -43,6 +45,7 @@ from fuzzynav.kernels.records import SearchNodes, Wavefront
 FIRST_SLOTS = 4096  # slots of the search's hash table at the start (a power of two)
 DIRECTED = 1.0 - 1e-9  # the wavefront's octile estimate is shrunk by this (module docstring)
 DIAGONAL = 1.4142135623730951  # a diagonal move's length in cells
+TOLERANCE = 1e-6  # m, more than the rounding of an arc's end or of a path's cost (:func:`dearer`)
 
 
 @jit
@@ -79,7 +82,7 @@ def arc_cost(clear, kappa, kmax, backwards, came_by, by, settings):
 
 
 @jit
-def shot(clearance, goal, radius, settings, nodes, node, count):
+def shot(clearance, goal, radius, settings, nodes, node, count, spare):
     """(end node, cost): Dolgov et al.'s analytic expansion, on the search's own arcs. From search
     node ``node``, forward arcs, each the one whose end heading points nearest the goal — a full
     lock turn, then the straight line, the shortest path on open ground where the goal lies outside
@@ -88,18 +91,21 @@ def shot(clearance, goal, radius, settings, nodes, node, count):
     length and turn only, :func:`arc_cost` with a clearance factor of 1). The arcs are written into
     ``nodes`` (a :class:`~fuzzynav.kernels.records.SearchNodes`) from index ``count`` on; the end
     node is the one within ``reach`` of ``goal``, −1 when an arc is blocked, the arrays are full,
-    or the goal is not reached within the straight line plus a full circle."""
+    the goal is not reached within the straight line plus a full circle, or the path would cost
+    more than ``spare`` (:func:`dearer`)."""
     curvatures, cell, step, reach = settings.curvatures, settings.cell, settings.step, settings.reach
     ny, nx = clearance.shape
     kinds, samples, kmax = len(curvatures), max(2, int(math.ceil(step / (0.5 * cell)))), np.abs(curvatures).max()
+    end_sampled = step * samples / samples == step  # the last sample is then exactly the arc's end
     wanted = radius + settings.comfort
     xs, ys, ths, parents, primitives = nodes
     x, y, theta = xs[node], ys[node], ths[node]
     parent, came_by, cost = node, primitives[node], 0.0
     for k in range(int((math.hypot(goal[0] - x, goal[1] - y) + 2.0 * math.pi / kmax) / step) + 2):
-        if math.hypot(x - goal[0], y - goal[1]) <= reach:
+        distance = math.hypot(x - goal[0], y - goal[1])
+        if distance <= reach:
             return parent, cost
-        if count + k >= xs.shape[0]:
+        if count + k >= xs.shape[0] or dearer(cost, distance - reach, step, spare):
             return -1, cost
         error = math.atan2(goal[1] - y, goal[0] - x) - theta
         best, by = math.inf, 0
@@ -108,17 +114,32 @@ def shot(clearance, goal, radius, settings, nodes, node, count):
             if miss < best:
                 best, by = miss, a
         cos_theta, sin_theta = math.cos(theta), math.sin(theta)
+        ex, ey, eth = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step)
         for j in range(1, samples + 1):
-            px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step * j / samples)
+            if j == samples and end_sampled:  # the last sample is the end
+                px, py = ex, ey
+            else:
+                px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step * j / samples)
             row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
             if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < wanted:
                 return -1, cost
         cost += arc_cost(1.0, curvatures[by], kmax, False, came_by, by, settings)
-        x, y, theta = arc_from(x, y, theta, cos_theta, sin_theta, curvatures[by], step)
-        theta, came_by = turn_remainder(theta), by
+        x, y, theta, came_by = ex, ey, turn_remainder(eth), by
         xs[count + k], ys[count + k], ths[count + k] = x, y, theta
         parents[count + k], primitives[count + k], parent = parent, by, count + k
     return -1, cost
+
+
+@jit
+def dearer(cost, gap, step, spare):
+    """Would a path that has cost ``cost`` so far, and is still ``gap`` m short of the reach of
+    its goal, cost more than ``spare`` in the end, whatever arcs it adds? Each arc costs at least
+    its length ``step`` (:func:`arc_cost`, a clearance factor ≥ 1) and brings its end at most
+    ``step`` nearer, give or take ``TOLERANCE`` (rounding, an arc's end computed from sines), so
+    the rest costs at least ``gap · step / (step + TOLERANCE)``; ``TOLERANCE`` more on ``spare``
+    covers the rounding of the sums. A branch-and-bound cut (A. H. Land, A. G. Doig,
+    Econometrica 28(3), 1960): it drops no path the search would take."""
+    return cost + gap * step / (step + TOLERANCE) > spare + TOLERANCE
 
 
 @jit
@@ -285,7 +306,7 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
             return xs[:count], ys[:count], ths[:count], parents[:count], primitives[:count], node
         if settings.shot > 0 and expanded > 0 and expanded % settings.shot == 0:  # (the start's key: 0)
             end, cost = shot(clearance, goal, radius, settings, SearchNodes(xs, ys, ths, parents, primitives), node,
-                             count)
+                             count, lowest - g)
             if end >= 0 and g + cost <= lowest:  # no dearer than the node's estimate, the lowest key
                 return xs[:end + 1], ys[:end + 1], ths[:end + 1], parents[:end + 1], primitives[:end + 1], end
         expanded += 1
