@@ -318,6 +318,54 @@ def test_an_analytic_expansion_is_cut_only_where_the_search_would_refuse_it():
     assert reached > 200 and cut > reached / 2  # a spare too small mostly ends the shot early
 
 
+def _swapped(heap_f, heap_n, i, j):
+    heap_f[i], heap_f[j] = heap_f[j], heap_f[i]
+    heap_n[i], heap_n[j] = heap_n[j], heap_n[i]
+
+
+def _push_by_swaps(heap_f, heap_n, size, f, node):
+    """The textbook binary heap's push (the entry swapped up step by step), which the search's
+    order of equal keys, and so its route, was made with."""
+    i = size
+    heap_f[i], heap_n[i] = f, node
+    while i > 0 and heap_f[(i - 1) // 2] > heap_f[i]:
+        _swapped(heap_f, heap_n, i, (i - 1) // 2)
+        i = (i - 1) // 2
+    return size + 1
+
+
+def _pop_by_swaps(heap_f, heap_n, size):
+    node, size = heap_n[0], size - 1
+    heap_f[0], heap_n[0] = heap_f[size], heap_n[size]
+    i = 0
+    while True:
+        smallest = i
+        for child in (2 * i + 1, 2 * i + 2):
+            if child < size and heap_f[child] < heap_f[smallest]:
+                smallest = child
+        if smallest == i:
+            return node, size
+        _swapped(heap_f, heap_n, i, smallest)
+        i = smallest
+
+
+def test_the_heap_leaves_its_entries_where_swapping_them_would():
+    """``push`` and ``pop`` move a hole instead of swapping; the heap they leave, ties included,
+    is the textbook one's, so the search pops nodes of equal keys in the same order."""
+    rng = np.random.default_rng(2)
+    ours = np.empty(3000), np.empty(3000, np.int64)
+    textbook = np.empty(3000), np.empty(3000, np.int64)
+    size = same_size = 0
+    for node, key in enumerate(np.round(rng.uniform(0.0, 5.0, 2000), 1)):  # many equal keys
+        size = car_search.push(*ours, size, key, node)
+        same_size = _push_by_swaps(*textbook, same_size, key, node)
+        for _ in range(min(int(rng.integers(0, 3)), size)):
+            assert car_search.pop(*ours, size) == _pop_by_swaps(*textbook, same_size)
+            size = same_size = size - 1
+        assert size == same_size
+        assert np.array_equal(ours[0][:size], textbook[0][:size]) and np.array_equal(ours[1][:size], textbook[1][:size])
+
+
 def test_a_target_beyond_the_largest_grid_gets_no_plan_and_no_grid():
     """A goal farther than the largest grid (``route.MAX_CELLS``: a box of 100 m at the car
     route's 0.1 m cells) is left to the reactive layers: neither search builds the grid, whose

@@ -144,37 +144,39 @@ def dearer(cost, gap, step, spare):
 
 @jit
 def push(heap_f, heap_n, size, f, node):
-    """Add ``node`` with key ``f`` to the binary heap of ``size`` entries; returns the new size."""
+    """Add ``node`` with key ``f`` to the binary heap of ``size`` entries; returns the new size. The
+    entry is sifted up as a hole (the parents moved down, the entry written once where it stops):
+    the comparisons and the heap they leave are those of swapping it up step by step."""
     i = size
-    heap_f[i], heap_n[i] = f, node
     while i > 0:
         parent = (i - 1) // 2
-        if heap_f[parent] <= heap_f[i]:
+        if heap_f[parent] <= f:
             break
-        heap_f[parent], heap_f[i] = heap_f[i], heap_f[parent]
-        heap_n[parent], heap_n[i] = heap_n[i], heap_n[parent]
+        heap_f[i], heap_n[i] = heap_f[parent], heap_n[parent]
         i = parent
+    heap_f[i], heap_n[i] = f, node
     return size + 1
 
 
 @jit
 def pop(heap_f, heap_n, size):
-    """(node, new size): the entry of the smallest key, taken off the heap."""
+    """(node, new size): the entry of the smallest key, taken off the heap; the last entry is sifted
+    down from the root as a hole, like :func:`push`."""
     node = heap_n[0]
     size -= 1
-    heap_f[0], heap_n[0] = heap_f[size], heap_n[size]
+    f, last = heap_f[size], heap_n[size]
     i = 0
     while True:
-        left, smallest = 2 * i + 1, i
-        if left < size and heap_f[left] < heap_f[smallest]:
-            smallest = left
-        if left + 1 < size and heap_f[left + 1] < heap_f[smallest]:
+        left, smallest, low = 2 * i + 1, i, f
+        if left < size and heap_f[left] < low:
+            smallest, low = left, heap_f[left]
+        if left + 1 < size and heap_f[left + 1] < low:
             smallest = left + 1
         if smallest == i:
             break
-        heap_f[smallest], heap_f[i] = heap_f[i], heap_f[smallest]
-        heap_n[smallest], heap_n[i] = heap_n[i], heap_n[smallest]
+        heap_f[i], heap_n[i] = heap_f[smallest], heap_n[smallest]
         i = smallest
+    heap_f[i], heap_n[i] = f, last
     return node, size
 
 
