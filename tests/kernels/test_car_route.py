@@ -3,6 +3,7 @@ forward and backward arcs on the obstacle points seen so far — a plan out of a
 to turn in holds a K-turn, every pose keeps the clearance, and a blocked route point is planned
 again."""
 
+import heapq
 import math
 
 import numpy as np
@@ -104,6 +105,41 @@ def test_the_wavefront_settled_on_demand_gives_the_search_of_the_whole_cost_to_g
     settled = front.done.reshape(whole.shape)
     assert 0 < settled.sum() < np.isfinite(whole).sum()  # part of the grid settled, each cell as in the whole
     assert np.array_equal(front.cost.reshape(whole.shape)[settled], whole[settled])
+
+
+def _textbook_dijkstra(grid, cell, goal, radius, weight, comfort):
+    """The cost-to-go of ``car_route.cost_to_go`` by Python's binary heap (``heapq``, ties by cell)."""
+    ny, nx = grid.shape
+    cost, done, queue = np.full(grid.shape, np.inf), np.zeros(grid.shape, bool), [(0.0, goal)]
+    cost[goal] = 0.0
+    while queue:
+        _, (row, col) = heapq.heappop(queue)
+        if done[row, col]:
+            continue
+        done[row, col] = True
+        for dr, dc in car_search.NEIGHBOURS:
+            r, c = row + dr, col + dc
+            if 0 <= r < ny and 0 <= c < nx and grid[r, c] >= radius:
+                step = cell * (car_search.DIAGONAL if dr != 0 and dc != 0 else 1.0)
+                total = cost[row, col] + step * (1.0 + weight * max(0.0, comfort - (grid[r, c] - radius)))
+                if total < cost[r, c]:
+                    cost[r, c] = total
+                    heapq.heappush(queue, (total, (r, c)))
+    return cost
+
+
+@pytest.mark.parametrize("case", ["chamber", "posts"])
+def test_the_wavefront_gives_the_costs_of_a_textbook_dijkstra_bit_for_bit(case):
+    """The wavefront's heap (``car_search.FANOUT``) pops cells of equal keys in another order than a
+    binary heap; each cell's cost is the least over its neighbours', whatever that order, so the
+    same float."""
+    _, _, front, whole = _search_both_ways(*_case(case))
+    points, pose, goal = _case(case)
+    seen, robot = Sightings(points, len(points)), Robot(*pose, 0.0, *goal)
+    radius, low_x, low_y, nx, ny = car_route.frame(seen, robot, RADIUS, BODY, SEARCH.cell)
+    grid = car_route.clearance_grid(points, len(points), low_x, low_y, nx, ny, SEARCH.cell, radius + SEARCH.comfort)
+    target = (int((goal[1] - low_y) / SEARCH.cell), int((goal[0] - low_x) / SEARCH.cell))
+    assert np.array_equal(whole, _textbook_dijkstra(grid, SEARCH.cell, target, radius, SEARCH.weight, SEARCH.comfort))
 
 
 @pytest.mark.parametrize("case", ["chamber", "posts"])
@@ -350,17 +386,18 @@ def _pop_by_swaps(heap_f, heap_n, size):
 
 
 def test_the_heap_leaves_its_entries_where_swapping_them_would():
-    """``push`` and ``pop`` move a hole instead of swapping; the heap they leave, ties included,
-    is the textbook one's, so the search pops nodes of equal keys in the same order."""
+    """``push`` and ``pop`` move a hole instead of swapping; with two children an entry (the
+    search's heap) the heap they leave, ties included, is the textbook one's, so the search pops
+    nodes of equal keys in the same order."""
     rng = np.random.default_rng(2)
     ours = np.empty(3000), np.empty(3000, np.int64)
     textbook = np.empty(3000), np.empty(3000, np.int64)
     size = same_size = 0
     for node, key in enumerate(np.round(rng.uniform(0.0, 5.0, 2000), 1)):  # many equal keys
-        size = car_search.push(*ours, size, key, node)
+        size = car_search.push(*ours, size, key, node, 1)
         same_size = _push_by_swaps(*textbook, same_size, key, node)
         for _ in range(min(int(rng.integers(0, 3)), size)):
-            assert car_search.pop(*ours, size) == _pop_by_swaps(*textbook, same_size)
+            assert car_search.pop(*ours, size, 1) == _pop_by_swaps(*textbook, same_size)
             size = same_size = size - 1
         assert size == same_size
         assert np.array_equal(ours[0][:size], textbook[0][:size]) and np.array_equal(ours[1][:size], textbook[1][:size])
