@@ -259,8 +259,8 @@ def settle(front, target):
         row, col = here // nx, here % nx
         for dr, dc in NEIGHBOURS:
             r, c = row + dr, col + dc
-            if r < 0 or c < 0 or r >= ny or c >= nx or clearance[r, c] < radius:
-                continue
+            if r < 0 or c < 0 or r >= ny or c >= nx or done[r * nx + c] or clearance[r, c] < radius:
+                continue  # off the grid, settled (its cost final: no move lowers it) or blocked
             there = r * nx + c
             step = cell * (DIAGONAL if dr != 0 and dc != 0 else 1.0)
             total = cost[here] + step * (1.0 + weight * max(0.0, comfort - (clearance[r, c] - radius)))
