@@ -403,6 +403,33 @@ def test_the_heap_leaves_its_entries_where_swapping_them_would():
         assert np.array_equal(ours[0][:size], textbook[0][:size]) and np.array_equal(ours[1][:size], textbook[1][:size])
 
 
+def test_the_cells_an_arc_can_sample_share_the_clearance_the_search_takes_for_them():
+    """Where every cell near an arc's chord has one clearance (``car_search.uniform``), the search
+    takes it for each sample without computing them: every sample, computed as the search does,
+    must lie in a cell of that clearance, on any arc of the search's set from any pose."""
+    rng = np.random.default_rng(4)
+    grid = np.where(rng.random((60, 60)) < 0.02, 0.5, 0.6)  # rare cells of another clearance
+    kappas, step, samples, taken = SEARCH.curvatures, SEARCH.step, 4, 0
+    for _ in range(20000):
+        x, y, theta = *rng.uniform(0.5, 5.5, 2), rng.uniform(0.0, 2 * math.pi)
+        kappa, length = float(rng.choice(kappas)), step * rng.choice([-1.0, 1.0])
+        points = [car_search.arc_point(x, y, theta, kappa, length * j / samples)[:2] for j in range(1, samples + 1)]
+        shared = car_search.uniform(grid, SEARCH.cell, (x, y), points[-1], step, kappa)
+        if shared >= 0:
+            taken += 1
+            assert all(grid[int(math.floor(py / SEARCH.cell)), int(math.floor(px / SEARCH.cell))] == shared
+                       for px, py in points)
+    assert taken > 10000
+    grid[:30] = 0.5  # below y = 3 m: arcs whose chord lies just above it dip into it by their sagitta
+    for kappa in kappas[kappas > 0]:
+        sagitta = step * step * kappa / 8.0
+        for above in (0.3, 0.8, 0.95):
+            x, y, theta = 2.0, 3.0 + above * sagitta, -kappa * step / 2.0  # a chord along +x
+            points = [car_search.arc_point(x, y, theta, kappa, step * j / samples)[:2] for j in range(1, samples + 1)]
+            assert min(py for _, py in points) < 3.0  # the middle sample in the row below
+            assert car_search.uniform(grid, SEARCH.cell, (x, y), points[-1], step, kappa) == -1.0
+
+
 def test_a_target_beyond_the_largest_grid_gets_no_plan_and_no_grid():
     """A goal farther than the largest grid (``route.MAX_CELLS``: a box of 100 m at the car
     route's 0.1 m cells) is left to the reactive layers: neither search builds the grid, whose

@@ -209,6 +209,30 @@ def grown(table, best, closed):
     return keys, costs, shut
 
 
+@jit
+def uniform(clearance, cell, start, end, length, kappa):
+    """The clearance shared by every cell of ``clearance`` (of ``cell`` m) that a point of the arc
+    of ``length`` m and curvature ``kappa`` from ``start`` to ``end`` can lie in; −1 when they
+    differ or reach past the grid. The arc keeps within its sagitta, at most length²·|κ|/8, of its
+    chord, so within that of the box the chord spans (plus ``TOLERANCE`` for the rounding of each
+    end): where those cells share one clearance, the search need not compute the samples to know
+    their cost."""
+    ny, nx = clearance.shape
+    margin = length * length * abs(kappa) / 8.0 + 2.0 * TOLERANCE
+    low_row = int(math.floor((min(start[1], end[1]) - margin) / cell))
+    high_row = int(math.floor((max(start[1], end[1]) + margin) / cell))
+    low_col = int(math.floor((min(start[0], end[0]) - margin) / cell))
+    high_col = int(math.floor((max(start[0], end[0]) + margin) / cell))
+    if low_row < 0 or low_col < 0 or high_row >= ny or high_col >= nx:
+        return -1.0
+    value = clearance[low_row, low_col]
+    for row in range(low_row, high_row + 1):
+        for col in range(low_col, high_col + 1):
+            if clearance[row, col] != value:
+                return -1.0
+    return value
+
+
 NEIGHBOURS = ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1))
 
 
@@ -331,16 +355,21 @@ def search(clearance, heuristic, start, goal, radius, settings, front=None):
             if closed[at] or g + arc_cost(1.0, kappa, kmax, backwards, primitives[node], a, settings) >= best[at]:
                 continue  # the arc costs at least this (each of its points adds at least 1), so no better
             penalty, blocked = 0.0, False
+            shared = uniform(clearance, cell, (x, y), (ex, ey), step, kappa)
             for j in range(1, samples + 1):
-                if j == samples and end_sampled:  # the last sample is the end
-                    px, py = ex, ey
+                if shared >= radius:  # every sample lies in a cell of this clearance: none is computed
+                    clear = shared
                 else:
-                    px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length * j / samples)
-                row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
-                if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < radius:
-                    blocked = True
-                    break
-                penalty += 1.0 + weight * max(0.0, comfort - (clearance[row, col] - radius))
+                    if j == samples and end_sampled:  # the last sample is the end
+                        px, py = ex, ey
+                    else:
+                        px, py, _ = arc_from(x, y, theta, cos_theta, sin_theta, kappa, length * j / samples)
+                    row, col = int(math.floor(py / cell)), int(math.floor(px / cell))
+                    if row < 0 or col < 0 or row >= ny or col >= nx or clearance[row, col] < radius:
+                        blocked = True
+                        break
+                    clear = clearance[row, col]
+                penalty += 1.0 + weight * max(0.0, comfort - (clear - radius))
             if blocked:
                 continue
             row, col = int(math.floor(ey / cell)), int(math.floor(ex / cell))
