@@ -16,6 +16,8 @@ PROBE = """
 import os, signal, sys
 import fuzzynav.cli.scenarios as command
 
+signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a terminal: a test runner in the background ignores it
+
 import ctypes
 
 def swallowed_then_failed(args):

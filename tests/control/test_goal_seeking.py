@@ -24,9 +24,10 @@ class RawTable(BatchController):
         return out[:, 0], out[:, 1], np.full(len(out), "raw")
 
 
-def _open_world(goal, tolerance=0.3, max_time=60):
-    return scenario_from_dict({"robot": {"x": 10, "y": 10}, "goal": {"x": goal[0], "y": goal[1],
-                                                                     "tolerance": tolerance},
+def _open_world(goal, tolerance=0.3, max_time=60, robot=(10, 10)):
+    """The empty workspace with a goal; ``robot`` is the scenario's start (a batch's ``starts`` replace it)."""
+    return scenario_from_dict({"robot": {"x": robot[0], "y": robot[1]}, "goal": {"x": goal[0], "y": goal[1],
+                                                                                 "tolerance": tolerance},
                                "max_time": max_time})
 
 
@@ -51,14 +52,15 @@ def test_many_starts_converge_in_one_batch():
     rng = np.random.default_rng(3)
     starts = np.column_stack([rng.uniform(2, 18, 60), rng.uniform(2, 18, 60), rng.uniform(-np.pi, np.pi, 60)])
     starts = starts[np.hypot(starts[:, 0] - 10, starts[:, 1] - 10) > 1.0]
-    sim = BatchSimulator(_open_world((10, 10)), GoalSeekingController(), starts=starts, record=False).run()
+    sim = BatchSimulator(_open_world((10, 10), robot=(2, 2)), GoalSeekingController(), starts=starts, record=False).run()
     assert sim.outcomes().count("reached") == len(starts)
 
 
 def test_literal_sign_steers_away_and_the_flip_fixes_it():
     starts = np.array([[4.0, 4.0, 0.0], [16.0, 4.0, 2.0], [4.0, 16.0, -1.0], [16.0, 16.0, 3.0]])
-    literal = BatchSimulator(_open_world((10, 10)), RawTable(sign=-1.0), starts=starts, record=False).run()
-    flipped = BatchSimulator(_open_world((10, 10)), RawTable(sign=1.0), starts=starts, record=False).run()
+    world = _open_world((10, 10), robot=(2, 2))  # a goal at the scenario's own start is refused
+    literal = BatchSimulator(world, RawTable(sign=-1.0), starts=starts, record=False).run()
+    flipped = BatchSimulator(world, RawTable(sign=1.0), starts=starts, record=False).run()
     assert literal.outcomes().count("reached") == 0
     assert flipped.outcomes().count("reached") == 4
 
