@@ -37,7 +37,8 @@ except ImportError:  # Windows
 import numba
 from numba.core import event
 
-PACKAGE = Path(__file__).resolve().parent
+PACKAGE = Path(os.path.abspath(__file__)).parent  # as imported (symbolic links kept): the path numba names
+# its cache folders under NUMBA_CACHE_DIR by (the absolute path of each kernel's source file)
 STAMP = "fuzzynav-kernel-sources.stamp"  # in the package's own __pycache__
 CACHE_LOCK = "fuzzynav-kernel-cache.lock"  # one per cache folder (LockedCacheFile)
 CACHE_SUFFIXES = (".nbi", ".nbc")
@@ -52,12 +53,13 @@ def _kernel_sources(package: Path) -> list[Path]:
                   if any(name in source.read_text(encoding="utf-8", errors="replace") for name in ("fuzzynav.jit", "numba")))
 
 
-def _fingerprint(sources: list[Path]) -> str:
-    """A digest of the name, size and modification time of each of ``sources``."""
+def _fingerprint(sources: list[Path], package: Path) -> str:
+    """A digest of the name in ``package``, size and modification time of each of ``sources`` (the
+    same whichever path, through a symbolic link or not, the package is reached by)."""
     digest = hashlib.sha256()
     for source in sources:
         stat = source.stat()
-        digest.update(f"{source}|{stat.st_size}|{stat.st_mtime_ns}\n".encode())
+        digest.update(f"{source.relative_to(package).as_posix()}|{stat.st_size}|{stat.st_mtime_ns}\n".encode())
     return digest.hexdigest()
 
 
@@ -82,7 +84,7 @@ def clear_stale_caches(package: Path = PACKAGE, cache_dir: str | None = None) ->
     (module docstring); returns whether it deleted any. Quiet where nothing is writable."""
     try:
         stamp, folders = _cache_places(package, numba.config.CACHE_DIR if cache_dir is None else cache_dir)
-        now = _fingerprint(_kernel_sources(package))
+        now = _fingerprint(_kernel_sources(package), package)
         if stamp.is_file() and stamp.read_text() == now:
             return False
         cached = [f for folder in folders for f in folder.iterdir() if f.suffix in CACHE_SUFFIXES]

@@ -3,7 +3,10 @@ deletes the package's numba caches when a kernel source changed, and only then â
 or under ``NUMBA_CACHE_DIR`` when it is set."""
 
 import os
+import subprocess
+import sys
 from functools import partial
+from pathlib import Path
 
 from numba.core.caching import _CacheLocator
 
@@ -88,3 +91,37 @@ def test_caches_under_numba_cache_dir_are_checked_too(tmp_path):
     assert not any(cached.exists() for cached in caches)
     assert all(cached.exists() for cached in beside)  # the in-tree caches are checked by their own stamp
     assert jit.clear_stale_caches(package, IN_TREE) is True
+
+
+LOOKED_AT = """
+import inspect, sys
+from pathlib import Path
+from numba.core.caching import _CacheLocator
+from fuzzynav import jit
+from fuzzynav.kernels import car_search
+
+cache_dir = Path(sys.argv[1])
+numbas = cache_dir / _CacheLocator.get_suitable_cache_subpath(inspect.getfile(car_search.push.py_func))
+numbas.mkdir(parents=True, exist_ok=True)  # where numba caches car_search's kernels, imported from where it was
+print(numbas in jit._cache_places(jit.PACKAGE, str(cache_dir))[1])
+"""
+
+
+def test_under_numba_cache_dir_it_checks_the_folders_numba_names_for_a_package_reached_by_a_link(tmp_path):
+    """numba names a folder under ``NUMBA_CACHE_DIR`` by the path its kernels' module was imported
+    from, a symbolic link kept (``/tmp`` on macOS is ``/private/tmp``): the check looks there."""
+    source = Path(jit.__file__).resolve().parents[1]  # the folder holding the package
+    (tmp_path / "link").symlink_to(source, target_is_directory=True)
+    env = {**os.environ, "PYTHONPATH": str(tmp_path / "link"), "NUMBA_CACHE_DIR": str(tmp_path / "cache")}
+    done = subprocess.run([sys.executable, "-c", LOOKED_AT, str(tmp_path / "cache")], env=env, capture_output=True,
+                          text=True, check=True)
+    assert done.stdout.strip() == "True", done.stderr
+
+
+def test_the_stamp_is_the_same_whichever_path_reaches_the_package(tmp_path):
+    package = _package(tmp_path / "package")
+    (tmp_path / "link").symlink_to(package, target_is_directory=True)
+    jit.clear_stale_caches(package, IN_TREE)
+    caches = _cache(package)
+    assert jit.clear_stale_caches(tmp_path / "link", IN_TREE) is False  # the caches beside the sources: kept
+    assert all(cached.exists() for cached in caches)
