@@ -342,3 +342,13 @@ def test_errors_name_file_line_and_field(tmp_path):
     path = tmp_path / "x.fis"
     path.write_text(MAMDANI.replace("Range=[0 10]", "Range=[0 ten]"))
     assert main(["fis", "show", str(path)]) == 2
+
+
+def test_a_matlab_bisector_that_yaml_cannot_hold_is_sent_to_the_one_format_that_can(tmp_path, capsys):
+    """Its bisector is MATLAB's, which an .fll file refuses too: the refusal names .fis alone."""
+    (tmp_path / "b.fis").write_text(MAMDANI.replace("DefuzzMethod='centroid'", "DefuzzMethod='bisector'"))
+    assert main(["fis", "convert", str(tmp_path / "b.fis"), "--to", "fll", "-o", str(tmp_path / "b.fll")]) == 2
+    assert main(["fis", "convert", str(tmp_path / "b.fis"), "--to", "fis", "-o", str(tmp_path / "c.fis")]) == 0
+    capsys.readouterr()
+    assert main(["fis", "convert", str(tmp_path / "b.fis"), "--to", "yaml", "-o", str(tmp_path / "b.yaml")]) == 2
+    assert capsys.readouterr().err.strip().endswith("several rule blocks...): write it as fis")  # not "fll or fis"

@@ -50,14 +50,10 @@ def dumps(system: FuzzySystem | Engine, fmt: str) -> str:
         refusal = system_refusal(system)
         if refusal is not None:  # shaped as a system, refused for one value
             raise InputError(f"is a fuzzylite engine, not a fuzzy system: {refusal.problem}", field=refusal.field)
-        try:  # which of the line formats can hold it
-            to_fis(system)
-            formats = "fll or fis"
-        except InputError:
-            formats = "fll"
+        held = " or ".join(line for line, write in (("fll", to_fll), ("fis", to_fis)) if _holds(write, system))
         raise InputError(f"{system.name or 'this engine'} uses fuzzylite features a {fmt.upper()} document does not "
-                         f"hold (per-output settings, hedges, OR, several rule blocks...): write it as {formats}",
-                         field="--to")
+                         f"hold (per-output settings, hedges, OR, several rule blocks...): "
+                         + (f"write it as {held}" if held else "nor can an .fll or a .fis file"), field="--to")
     if fmt == "json":
         return json.dumps(to_document(system), indent=2, allow_nan=False) + "\n"
     if fmt == "yaml":
@@ -65,6 +61,16 @@ def dumps(system: FuzzySystem | Engine, fmt: str) -> str:
     if fmt == "fll":
         return to_fll(system)
     raise InputError(f"unknown format {fmt!r} (one of {', '.join(FORMATS)})", field="format")
+
+
+def _holds(write, system) -> bool:
+    """Can the line format ``write`` writes (:func:`to_fll`, :func:`to_fis`) hold ``system``, which
+    each refuses to write rather than answer otherwise (a MATLAB bisector in an .fll file)?"""
+    try:
+        write(system)
+    except InputError:
+        return False
+    return True
 
 
 def loads(text: str, fmt: str, source: str | None = None) -> FuzzySystem | Engine:
