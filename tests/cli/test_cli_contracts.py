@@ -225,3 +225,15 @@ def test_one_file_for_the_plot_and_the_animation_is_refused(tmp_path, capsys):
     target = tmp_path / "x.gif"  # the plot was written, then the animation over it: "wrote x.gif" twice
     assert main(["run", "fig-IV-12a", "--plot", str(target), "--animate", str(target)]) == 2
     assert "is the --plot file too" in capsys.readouterr().err and not target.exists()
+
+
+@pytest.mark.parametrize(("argv", "command", "hint"), [
+    (["run", "fig-IV-23", "--contoller", "fuzzy-2b"], "fuzzynav run", "--controller"),
+    (["fis", "eval", "goal-seeking", "--inpt", "drg=5"], "fuzzynav fis eval", "--input"),
+])
+def test_an_unknown_option_is_said_by_its_command_with_the_close_one(capsys, argv, command, hint):
+    """As the command's other argparse errors: its usage line and its name, not fuzzynav's."""
+    status, err = run_cli(capsys, *argv)
+    assert status == 2
+    assert err.startswith(f"usage: {command} ") and f"\n{command}: error: unrecognized arguments: " in err
+    assert err.rstrip().endswith(f"(did you mean {hint}?)")

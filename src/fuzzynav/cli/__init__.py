@@ -59,11 +59,13 @@ class Parser(argparse.ArgumentParser):
     def parse_args(self, args=None, namespace=None):  # type: ignore[override]
         """As argparse's, an unknown option named with the closest one of the command as a hint."""
         namespace, extras = self.parse_known_args(args, namespace)
-        if extras:
-            options = [o for parser in _reached(self, namespace) for a in parser._actions for o in a.option_strings]
+        if extras:  # said by the command's own parser: its usage line and name, as its other errors
+            parsers = list(_reached(self, namespace))
+            options = [o for parser in parsers for a in parser._actions for o in a.option_strings]
             word = next((extra.split("=")[0] for extra in extras if extra.startswith("-")), "")
             close = difflib.get_close_matches(word, options, n=1, cutoff=0.7)
-            self.error(f"unrecognized arguments: {' '.join(extras)}" + (f" (did you mean {close[0]}?)" if close else ""))
+            parsers[-1].error(f"unrecognized arguments: {' '.join(extras)}"
+                              + (f" (did you mean {close[0]}?)" if close else ""))
         return namespace
 
 
