@@ -97,6 +97,8 @@ def clear_stale_caches(package: Path = PACKAGE, cache_dir: str | None = None) ->
         return bool(cached)
     except OSError:  # a read-only install: numba's own check (every file rewritten by an upgrade)
         return False
+    except (ImportError, AttributeError):  # a numba whose cache locator moved (a private class): its own check
+        return False
 
 
 def jit(function=None, *, fastmath: tuple = (), nogil: bool = False):

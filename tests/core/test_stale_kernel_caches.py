@@ -125,3 +125,13 @@ def test_the_stamp_is_the_same_whichever_path_reaches_the_package(tmp_path):
     caches = _cache(package)
     assert jit.clear_stale_caches(tmp_path / "link", IN_TREE) is False  # the caches beside the sources: kept
     assert all(cached.exists() for cached in caches)
+
+
+def test_a_numba_without_its_cache_locator_leaves_the_caches_to_numba(tmp_path, monkeypatch):
+    """The folders under NUMBA_CACHE_DIR are named by a private class of numba's: should a later numba
+    move it, importing fuzzynav must not fail."""
+    import numba.core.caching
+
+    package = _package(tmp_path / "package")
+    monkeypatch.delattr(numba.core.caching, "_CacheLocator")
+    assert jit.clear_stale_caches(package, str(tmp_path / "numba-cache")) is False

@@ -51,7 +51,7 @@ def help_line(module: str) -> str:
 
 class Parser(argparse.ArgumentParser):
     """The parser of every command: options by their whole name only, as a prefix was taken for the
-    option it begins (``bench --seed 3`` ran ``--seeds 3``: three world sets, not seed 3)."""
+    option it begins (``bench --seed 3`` would be read as ``--seeds 3``)."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **{"allow_abbrev": False, **kwargs})

@@ -215,7 +215,7 @@ def uniform(clearance, cell, start, end, length, kappa):
     of ``length`` m and curvature ``kappa`` from ``start`` to ``end`` can lie in; −1 when they
     differ or reach past the grid. The arc keeps within its sagitta, at most length²·|κ|/8, of its
     chord, so within that of the box the chord spans (plus ``TOLERANCE`` for the rounding of each
-    end): where those cells share one clearance, the search need not compute the samples to know
+    end, twice): where those cells share one clearance, the search need not compute the samples to know
     their cost."""
     ny, nx = clearance.shape
     margin = length * length * abs(kappa) / 8.0 + 2.0 * TOLERANCE

@@ -12,8 +12,8 @@ robot:
   range); ``max_range`` caps the readings at the real sensor's reach. The nearest-obstacle distance
   the navigators are given gets the same Gaussian noise (the collision test uses the true one).
 - ``actuation``: the commands reach the wheels ``latency`` seconds late (a queue of
-  latency / Δt steps, holding zero commands at the start: a whole number of steps, else refused,
-  as 0.05 s at Δt = 0.1 s ran as no latency at all); the applied steering angle
+  latency / Δt steps, holding zero commands at the start: a whole number of steps, else
+  refused); the applied steering angle
   moves at most ``steering_rate`` rad/s and the speed at most ``acceleration`` m/s² from the
   previous applied ones; ``slip`` is the mean fraction of the commanded speed and heading rate
   lost at each step (each loss drawn uniformly in [0, 2 slip)).
