@@ -323,13 +323,17 @@ def load_document(path, fmt: str | None = None):
     return parse_json(content, str(path)) if fmt == "json" else parse_yaml(content, str(path))
 
 
-def known_keys(value, known, source=None, field=None, *, required=()) -> dict:
+def known_keys(value, known, source=None, field=None, *, required=(), near_misses_only: bool = False) -> dict:
     """``value``, a mapping whose keys are all in ``known`` (an unknown key is refused with the
-    closest known one as a hint) and include ``required``."""
+    closest known one as a hint) and include ``required``. ``near_misses_only``: only an unknown key
+    close to a known one is refused (a misspelling: ``tnrom``), the others are left to whoever reads
+    them (the top level of a model file, whose own keys its loader checks)."""
     mapping(value, source, field)
     for key in value:
         if key not in known:
-            close = difflib.get_close_matches(key, list(known), n=1)
+            close = difflib.get_close_matches(str(key), list(known), n=1, cutoff=0.75 if near_misses_only else 0.6)
+            if near_misses_only and not close:
+                continue
             hint = f" (did you mean {close[0]!r}?)" if close else ""
             fail(f"unknown key {shown(key)}{hint}; known: {', '.join(known)}", source,
                  f"{field}.{key}" if field else key)

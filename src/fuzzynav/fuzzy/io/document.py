@@ -30,7 +30,6 @@ Numbers are written exactly (shortest round-trip repr); infinite parameters as t
 
 from __future__ import annotations
 
-import difflib
 import math
 
 from fuzzynav import validation
@@ -93,16 +92,8 @@ def _check_keys(mapping, known, source, field, strict: bool = True) -> None:
     record, its speed…), which its loader checks; a plain system file is strict (``defuzz`` was
     ignored, the default defuzzifier run).
     """
-    if not isinstance(mapping, dict):
-        return
-    for key in mapping:
-        if key in known:
-            continue
-        close = difflib.get_close_matches(str(key), known, n=1, cutoff=0.75)
-        if strict or close:
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
-            raise InputError(f"unknown key {key!r}{hint}; known: {', '.join(known)}", source=source,
-                             field=f"{field}.{key}" if field else str(key))
+    if isinstance(mapping, dict):  # (a mapping's type is checked where it is read)
+        validation.known_keys(mapping, known, source, field or None, near_misses_only=not strict)
 
 
 def _require(mapping, key, kind, source, field):
