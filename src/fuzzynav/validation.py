@@ -324,19 +324,15 @@ def load_document(path, fmt: str | None = None):
 
 
 def known_keys(value, known, source=None, field=None, *, required=(), near_misses_only: bool = False) -> dict:
-    """``value``, a mapping whose keys are all in ``known`` (an unknown key is refused with the
-    closest known one as a hint) and include ``required``. ``near_misses_only``: only an unknown key
-    close to a known one is refused (a misspelling: ``tnrom``), the others are left to whoever reads
-    them (the top level of a model file, whose own keys its loader checks)."""
+    """``value``, a mapping whose keys are all in ``known`` (an unknown key is refused, the closest
+    known one its hint) and include ``required``; ``near_misses_only``: only misspellings of known
+    keys are refused (``tnrom``; the top level of a model file, whose loader reads its own keys)."""
     mapping(value, source, field)
-    for key in value:
-        if key not in known:
-            close = difflib.get_close_matches(str(key), list(known), n=1, cutoff=0.75 if near_misses_only else 0.6)
-            if near_misses_only and not close:
-                continue
+    for key in (key for key in value if key not in known):
+        close = difflib.get_close_matches(str(key), list(known), n=1, cutoff=0.75 if near_misses_only else 0.6)
+        if close or not near_misses_only:
             hint = f" (did you mean {close[0]!r}?)" if close else ""
-            fail(f"unknown key {shown(key)}{hint}; known: {', '.join(known)}", source,
-                 f"{field}.{key}" if field else key)
+            fail(f"unknown key {shown(key)}{hint}; known: {', '.join(known)}", source, f"{field}.{key}" if field else key)
     for key in required:
         if key not in value:
             fail("missing", source, f"{field}.{key}" if field else key)
