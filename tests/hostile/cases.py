@@ -775,6 +775,10 @@ SEVENTH = [
          argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "circles:2:7", "--holdout",
                "circles:2:7", "--budget", "400", "--out", "{d}/t.yaml"),
          expect="--validation: shares 2 worlds with --holdout circles:2:7: the held-out numbers would be on worlds"),
+    Case("tune-held-out-on-the-default-validation-worlds",  # --validation left to its default, auto
+         argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--holdout", "circles:2:500", "--budget", "400",
+               "--out", "{d}/t.yaml"),
+         expect="--holdout: shares 2 worlds with the default --validation circles:2:500: the held-out numbers"),
     Case("scenarios-show-a-generated-world", argv=("scenarios", "--show", "circles-0-002"), status=0,
          expect="# name: the file's name when absent (this is a copy of the generated world circles-0-002)"),
     Case("tune-empty-validation", argv=("tune", "goal-seeking:gsb", "--worlds", "circles:2", "--validation", "",

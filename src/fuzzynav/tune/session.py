@@ -149,6 +149,9 @@ def check(request: TuneRequest):
                                ("--holdout" if given is not None else "the default --holdout", holdout,
                                 "the held-out numbers would be on worlds the choice saw")):
         if chooser is not None and other is not None and _shared(chooser, other):
+            if request.validation == "auto":  # the option given is the other one: it is what to change
+                raise InputError(f"shares {_shared(chooser, other)} worlds with the default --validation "
+                                 f"{chooser.name}: {why}", field=option)
             raise InputError(f"shares {_shared(chooser, other)} worlds with {option} {other.name}: {why}",
                              field="--validation")
     made = make_with_systems(controller, dict(request.systems))
