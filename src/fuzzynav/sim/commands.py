@@ -108,8 +108,9 @@ def check_starts(starts, world=None) -> np.ndarray:
                          f"got an array of shape {poses.shape}", field="starts")
     if not np.isfinite(poses).all():
         raise InputError("must be finite", field="starts")
-    if world is not None and not world.contains(poses[:, :2]).all():
-        i = int(np.argmin(world.contains(poses[:, :2])))
+    outside = np.flatnonzero(~world.contains(poses[:, :2])) if world is not None else np.zeros(0, dtype=int)
+    if outside.size:
+        i = int(outside[0])
         raise InputError(f"({poses[i, 0]:g}, {poses[i, 1]:g}) is outside the {world.width:g} x {world.height:g} m world",
                          field=f"starts[{i}]")
     return poses
