@@ -850,4 +850,26 @@ raise SystemExit(main(["run", "fig-IV-22a", "--model", str(d / "a.json"), "--sen
          status=0, expect="fig-IV-23 / fql-goal"),
 ]
 
-CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH]
+# inputs that gave a silent wrong answer: an angle in degrees read as radians, a learned rule base
+# with a rule deleted (the robot stopped wherever only that rule would have fired)
+SILENT = [
+    Case("scenario-theta-in-degrees", {"s.yaml": "robot: {x: 5, y: 5, theta: 90}\ngoal: {x: 15, y: 15}\n"}, RUN,
+         expect="s.yaml: robot.theta: must be in radians, at most 2π = 6.2832 in magnitude, got 90 (if that is "
+                "degrees: 1.5708 rad)"),
+    Case("scenario-ellipse-angle-in-degrees",
+         {"s.yaml": "robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\n"
+                    "obstacles: [{ellipse: {center: [10, 10], radii: [2, 1], angle: -45}}]\n"}, RUN,
+         expect="s.yaml: obstacles[0].ellipse.angle: must be in radians, at most 2π = 6.2832 in magnitude, got -45"),
+    Case("scenario-theta-one-turn-ok", {"s.yaml": "robot: {x: 5, y: 5, theta: -6.28}\ngoal: {x: 15, y: 15}\n"}, RUN,
+         status=0, expect='"outcome": "reached"'),
+    Case("fql-avoid-model-rule-deleted",
+         python="edited_model(d, ['fql-avoid', '--episodes', '2', '--quiet'], lambda doc: doc['rules'].pop(0), "
+                "['run', 'fig-IV-22a', '--model'])",
+         expect="x.json: rules: no rule for the situation front is P and right is P and left is P and open is D: a "
+                "learned rule base has a rule for every combination of its input terms (was a rule deleted?)"),
+    Case("fql-goal-model-rule-deleted",
+         python="edited_model(d, ['fql-goal', '--episodes', '2', '--quiet'], lambda doc: doc['rules'].pop(4), "
+                "['run', 'fig-IV-23', '--model'])", expect="x.json: rules: no rule for the situation drg is P and theta is PG"),
+]
+
+CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH, *SILENT]

@@ -70,7 +70,7 @@ def test_a_full_lock_circle_at_low_speed_agrees_with_the_kinematic_model():
 def test_mujoco_ray_casting_reads_what_the_exact_rays_read(ring):
     obstacles = [{"circle": {"center": [12.5, 10.4], "radius": 0.6}},
                  {"polygon": {"points": [[8, 11], [9.5, 11.2], [9, 13], [8.5, 12]]}},
-                 {"ellipse": {"center": [9, 7.6], "radii": [1.2, 0.5], "angle": 23}},
+                 {"ellipse": {"center": [9, 7.6], "radii": [1.2, 0.5], "angle": 4.15}},
                  {"wall": {"start": [14, 6], "end": [14, 14], "thickness": 0.2}}]
     scenario = open_world(1.0, obstacles)
     sensors = named_ring(ring, max_range=6.0)

@@ -1,5 +1,5 @@
 """Coverage of an input universe by its terms: a point where every membership is 0 fires no rule,
-and a Takagi–Sugeno system then outputs 0/0 = NaN there.
+and a Takagi–Sugeno system then outputs 0/0 = NaN there; and of a learned rule grid by its rules.
 
 Between two consecutive breakpoints (term parameters) a piecewise-linear membership is linear,
 so testing the breakpoints and the midpoints between them finds every gap of triangles,
@@ -8,6 +8,7 @@ trapezoids and ramps exactly; smooth terms (Gaussian, bell, sigmoid) are positiv
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -36,3 +37,37 @@ def check_covered(system, source=None) -> None:
         if gap is not None:
             raise InputError(f"no term covers {variable.name} = {gap:g} (every membership is 0 there, so no rule "
                              "fires and the output would be NaN)", source=source, field=f"inputs.{variable.name}")
+
+
+MAX_SITUATIONS = 100_000  # combinations of input terms a rule grid is checked over
+
+
+def uncovered_situation(system, free: tuple[dict, ...] = ()) -> dict | None:
+    """The first combination of input terms (one term of each input, ``name -> label``) that no
+    rule of positive weight covers, or None; a rule without a premise on an input covers every
+    term of it. ``free`` lists partial combinations another behaviour handles (e.g. the avoider's
+    "nothing near", which is goal seeking), left out."""
+    premises, weights = system.compiled.premises, system.compiled.weights
+    sizes = [len(v.terms) for v in system.inputs]
+    if math.prod(sizes) > MAX_SITUATIONS:
+        raise InputError(f"a rule grid of {math.prod(sizes):,} combinations of input terms, more than the "
+                         f"{MAX_SITUATIONS:,} a learned rule base may have", field="inputs")
+    live = premises[weights > 0]
+    for combination in itertools.product(*(range(n) for n in sizes)):
+        labels = {v.name: v.labels[i] for v, i in zip(system.inputs, combination)}
+        if any(all(labels[name] == label for name, label in part.items()) for part in free):
+            continue
+        if not ((live < 0) | (live == np.array(combination))).all(axis=1).any():
+            return labels
+    return None
+
+
+def check_rules_cover(system, source=None, free: tuple[dict, ...] = ()) -> None:
+    """Refuse a learned rule base with a combination of input terms that no rule covers
+    (:func:`uncovered_situation`): there it would fire no rule, and the robot would stop or
+    drift rather than do what it learned."""
+    labels = uncovered_situation(system, free)
+    if labels is not None:
+        situation = " and ".join(f"{name} is {label}" for name, label in labels.items())
+        raise InputError(f"no rule for the situation {situation}: a learned rule base has a rule for every "
+                         "combination of its input terms (was a rule deleted?)", source=source, field="rules")

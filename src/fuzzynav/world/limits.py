@@ -7,13 +7,15 @@ naming the field. The table of every limit of fuzzynav is ``docs/limits.md``.
 
 from __future__ import annotations
 
+import math
+
 from fuzzynav import validation
 
 MAX_WORLD_SIZE = 10_000.0  # m: world width and height
 MAX_COORDINATE = 100_000.0  # m: |x| and |y| of any point of a scenario
 MIN_LENGTH = 1e-3  # m: smallest radius, semi-axis, wall thickness and tolerance
 MAX_LENGTH = 100_000.0  # m: largest radius, semi-axis, wall thickness and tolerance
-MAX_ANGLE = 1_000.0  # rad: |angle| of a pose or an ellipse
+MAX_ANGLE = math.tau  # rad: |angle| of a pose or an ellipse (a larger one is most likely in degrees)
 MAX_OBSTACLES = 2_000
 MAX_POLYGON_VERTICES = 1_000
 MAX_TOTAL_VERTICES = 20_000  # polygon vertices the kernels hold (4 per wall), over the whole world
@@ -36,8 +38,13 @@ def length(value, source=None, field=None) -> float:
 
 
 def angle(value, source=None, field=None) -> float:
-    """An angle (rad): finite, at most :data:`MAX_ANGLE` in magnitude."""
-    return validation.number(value, source, field, lo=-MAX_ANGLE, hi=MAX_ANGLE)
+    """An angle (rad): finite, at most :data:`MAX_ANGLE` (2π) in magnitude — beyond one turn it
+    is most likely degrees (``theta: 90``), which are refused with their value in radians."""
+    result = validation.number(value, source, field)
+    if abs(result) > MAX_ANGLE:
+        validation.fail(f"must be in radians, at most 2π = {MAX_ANGLE:.4f} in magnitude, got {validation.shown(value)}"
+                        f" (if that is degrees: {math.radians(result):.4f} rad)", source, field)
+    return result
 
 
 def world_size(width, height, source=None, field: str = "world") -> tuple[float, float]:

@@ -33,7 +33,7 @@ from fuzzynav import validation
 from fuzzynav.control.learned import check_speed, model_name
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.constants import STEERING_SINGLETONS
-from fuzzynav.fuzzy.coverage import check_covered
+from fuzzynav.fuzzy.coverage import check_covered, check_rules_cover
 from fuzzynav.fuzzy.io.document import TOP_KEYS, from_document
 from fuzzynav.fuzzy.membership import Singleton
 from fuzzynav.fuzzy.rules import Rule
@@ -62,9 +62,8 @@ MAX_STEPS = 300  # 30 s per episode
 GOAL_CONVERGENCE = {"window": 50, "hold": 500, "target": 0.95}  # learn.curves.episodes_to_converge
 WORLD_CONVERGENCE = {"worlds": 10, "hold_worlds": 15, "target": None, "clustered": True,  # one random world per batch
                      "one_robot": {"window": 100, "hold": 500, "noise": 2.0, "target": None}}
-# "one_robot": the thesis' protocol (convergence_window); the thesis' own reading of its curves is "from
-# episode k the mean reinforcement is constant" (§VI.5.1, Fig VI.8: "à partir de l'épisode 180, la valeur
-# moyenne des renforcements est constante"), which these settings make a test the first window can fail
+# "one_robot": the thesis' protocol; its reading of its curves, "à partir de l'épisode 180, la valeur moyenne
+# des renforcements est constante" (§VI.5.1, Fig VI.8), made a test that the first window can fail
 
 STEERING3 = {label: STEERING_SINGLETONS[label] for label in ("NG", "Z", "PG")}  # eq VI.12
 STEERING5 = {label: STEERING_SINGLETONS[label] for label in ("NG", "NM", "Z", "PM", "PG")}  # eq VI.15
@@ -106,17 +105,18 @@ def finish(request: TrainRequest, document: dict, phases: dict, title: str) -> d
     return {"model": str(request.out), **summarise(phases)}
 
 
-def load_fuzzy_model(document: dict, path, build, keys=("constant_speed",)):
-    """The controller of a learned fuzzy model file: ``build(system, constant_speed, name)``, with
-    every error naming the file (the system is the file's ``fuzzynav-fis`` document; its input terms
-    must cover their universes, :func:`~fuzzynav.fuzzy.coverage.check_covered`). Its keys are the
-    system's, ``kind``, ``training`` and the model's own ``keys``: a typo is refused, not read as the default."""
+def load_fuzzy_model(document: dict, path, build, keys=("constant_speed",), free: tuple[dict, ...] = ()):
+    """The controller of a learned fuzzy model file, ``build(system, constant_speed, name)``, every
+    error naming the file. The system is the file's ``fuzzynav-fis`` document: its terms cover their
+    universes and its rules every combination of terms but the ``free`` ones (:mod:`~fuzzynav.fuzzy.coverage`).
+    Its keys are the system's, ``kind``, ``training`` and the model's ``keys``: a typo is refused."""
     if "inputs" not in document:  # another kind of model relabelled (it is already run with --model)
         raise InputError(f"missing (a {document['kind']!r} model holds a fuzzy system)", source=str(path),
                          field="inputs")
     validation.known_keys(document, (*TOP_KEYS, "kind", "training", *keys), str(path))
     system = from_document(document, source=str(path))
     check_covered(system, str(path))
+    check_rules_cover(system, str(path), free)
     try:
         return build(system, check_speed(document.get("constant_speed", 1.0), "constant_speed"), model_name(document))
     except InputError as error:

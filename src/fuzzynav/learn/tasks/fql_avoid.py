@@ -92,6 +92,9 @@ def avoid_inputs(open_side: bool = AVOID_OPEN) -> list[Variable]:
     return distances + [open_variable()] if open_side else distances
 
 
+FREE = {"front": "L", "right": "L", "left": "L"}  # the situation without rules: goal seeking (free_rules)
+
+
 def free_rules(open_side: bool = AVOID_OPEN) -> np.ndarray:
     """Indices of the "front, right and left far" rules in the grid (front slowest): the last
     one, or the last two with the openness input — goal seeking in the navigator (Table IV.1)."""
@@ -254,4 +257,4 @@ def load_model(document: dict, path) -> LearnedAvoidanceNavigator:
             raise InputError(f"must be true or false, got {guard!r}", field="turn_guard")
         return LearnedAvoidanceNavigator(system, constant_speed=speed, name=name, turn_guard=guard)
 
-    return common.load_fuzzy_model(document, path, build, keys=("constant_speed", "turn_guard"))
+    return common.load_fuzzy_model(document, path, build, keys=("constant_speed", "turn_guard"), free=(FREE,))
