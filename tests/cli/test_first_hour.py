@@ -44,6 +44,17 @@ def test_save_failures_writes_worlds_that_rerun_to_the_same_outcome(tmp_path, ca
         assert scenario.controllers == ("goal-seeking",)
         again = metrics(run_episode(scenario, make_controller("goal-seeking"), seed=0), scenario)
         assert (again["outcome"], again["time_s"]) == (run["outcome"], run["time_s"])
+    # a second run saves the same files again, but never over a world edited since
+    assert main(["evaluate", "--controller", "goal-seeking", "--worlds", "mixed", "--n", "3", "--quiet",
+                 "--save-failures", str(out)]) == 0
+    edited = out / f"{failed[0]['scenario']}.yaml"
+    edited.write_text(edited.read_text() + "# my change\n")
+    capsys.readouterr()
+    assert main(["evaluate", "--controller", "goal-seeking", "--worlds", "mixed", "--n", "3", "--quiet",
+                 "--save-failures", str(out)]) == 2
+    assert (f"--save-failures: {edited.name} already there, with other content (edited?): not overwritten"
+            in capsys.readouterr().err)
+    assert edited.read_text().endswith("# my change\n")
 
 
 def test_demo_runs_a_users_world_with_the_controllers_given(tmp_path, capsys):
@@ -218,4 +229,18 @@ def test_a_thesis_figure_run_without_a_controller_says_which_it_names(capsys):
     assert out.startswith("fig-IV-12a / fuzzy-5b:")
     assert "note: fig-IV-12a names its own controllers (goal-seeking" in err and "--controller NAME" in err
     assert main(["run", "fig-IV-12a", "--controller", "goal-seeking", "--max-time", "0.2"]) == 0
+    assert "note:" not in capsys.readouterr().err
+
+
+def test_a_file_named_like_a_built_in_scenario_says_which_it_runs(tmp_path, monkeypatch, capsys):
+    """A file ``fig-IV-12a`` (or ``mixed-0-002``) in the folder hides the scenario of that name, and
+    the run's line is labelled alike: the run says it is the file."""
+    monkeypatch.chdir(tmp_path)
+    for name in ("fig-IV-12a", "mixed-0-002"):
+        (tmp_path / name).write_text("robot: {x: 2, y: 2}\ngoal: {x: 5, y: 5}\n")
+        assert main(["run", name, "--controller", "goal-seeking", "--max-time", "0.2"]) == 0
+        err = capsys.readouterr().err
+        assert f"note: {name} is the file {tmp_path / name}, not the built-in scenario or generated world" in err
+    (tmp_path / "mine").write_text("robot: {x: 2, y: 2}\ngoal: {x: 5, y: 5}\n")
+    assert main(["run", "mine", "--controller", "goal-seeking", "--max-time", "0.2"]) == 0
     assert "note:" not in capsys.readouterr().err

@@ -48,6 +48,18 @@ def save_failure(folder: str | Path, scenario, trace, controllers: tuple[str, ..
     return path
 
 
+def _keep_edited_failures(folder: Path, worlds: str, seed: int, n: int, named: tuple[str, ...]) -> None:
+    """Before any run: refuse a ``folder`` holding the file of one of these worlds with other
+    content than a failure there would be saved with (:func:`save_failure`): an edited world."""
+    from fuzzynav.world.scenario_file import refuse_overwriting_edits, scenario_yaml
+
+    prefix = f"{worlds}-{seed}-"
+    indices = [int(path.stem[len(prefix):]) for path in folder.glob(f"{prefix}*.yaml") if path.stem[len(prefix):].isdigit()]
+    texts = {folder / f"{world.name}.yaml": scenario_yaml(world, named)
+             for world in (generate_world(worlds, seed, i) for i in sorted(indices) if i < n)}
+    refuse_overwriting_edits(texts, folder, "save_failures")
+
+
 _JOB: dict = {}
 """What every world of the current :func:`evaluate` shares (set in each worker by :func:`_share`)."""
 
@@ -118,8 +130,11 @@ def evaluate(controller: str | None = None, worlds: str = "mixed", n: int = 100,
     build = controller_maker(controller, model=model, systems=systems, options=options)
     controller = build.name
     n, seed = check_family(worlds, n, seed)
+    named: tuple[str, ...] = () if model is not None else (controller,)
     job = {"build": build, "worlds": worlds, "seed": seed, "ring": None if sensors is None else named_ring(sensors), "plant": plant,
-           "save_failures": save_failures, "named": () if model is not None else (controller,)}
+           "save_failures": save_failures, "named": named}
+    if save_failures is not None:
+        _keep_edited_failures(Path(save_failures), worlds, seed, n, named)
     runs: list = [None] * n
     reached_so_far = 0
     bar = progress_bars.bar(total=n, desc=f"{controller} on {worlds} worlds", unit="world", leave=False)

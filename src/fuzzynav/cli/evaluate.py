@@ -85,9 +85,14 @@ def run(args) -> int:
         print(f"[{i + 1}/{args.n}] {run['scenario']}: {run['outcome']} in {run['time_s']:.1f} s", file=sys.stderr)
 
     with progress_bars.quiet(args.quiet or args.json or args.progress):
-        result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
-                          model=args.model, systems=systems, save_failures=args.save_failures,
-                          sensors=args.sensors, plant=args.plant, workers=args.workers or threads.cores())
+        try:
+            result = evaluate(args.controller, args.worlds, args.n, args.seed, progress if args.progress else None,
+                              model=args.model, systems=systems, save_failures=args.save_failures,
+                              sensors=args.sensors, plant=args.plant, workers=args.workers or threads.cores())
+        except InputError as error:  # the library's name of the option, as the command line spells it
+            if error.field != "save_failures":
+                raise
+            raise InputError(error.problem, source=error.source, field="--save-failures") from None
     if args.fis:
         result["fis"] = replaced_files(args.fis)
     if args.json:

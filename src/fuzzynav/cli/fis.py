@@ -355,7 +355,8 @@ fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3
 fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
     ev.add_argument("system", help=target)
     ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
-    ev.add_argument("--csv", metavar="IN.csv", type=arguments.file_name, help="CSV with one column per input ('-' = stdin)")
+    ev.add_argument("--csv", metavar="IN.csv", type=arguments.file_name, help="CSV with one column per input ('-' = stdin; other columns, "
+                    "an output's name included, are left out: the answer has the inputs' columns, then the outputs')")
     ev.add_argument("-o", "--output", metavar="FILE", type=arguments.file_name, help="write here instead of stdout")
 
     conv = arguments.command(sub, "convert", _convert, help="write the system as FLL, MATLAB .fis, JSON or YAML",

@@ -87,7 +87,7 @@ def run(args) -> int:
     from fuzzynav.robot.sensors import named_ring
     from fuzzynav.sim import metrics, run_episode
     from fuzzynav.sim.plants import check_plant
-    from fuzzynav.world.scenario_file import open_scenario
+    from fuzzynav.world.scenario_file import open_scenario, shadows_a_name
 
     if args.max_time is not None:
         from fuzzynav.world.limits import MAX_TIME
@@ -112,6 +112,10 @@ def run(args) -> int:
         if target:
             arguments.check_writable(target, flag)
     scenario = open_scenario(args.scenario)
+    if shadows_a_name(args.scenario):
+        print(f"note: {args.scenario} is the file {Path(args.scenario).resolve()}, not the built-in scenario or "
+              "generated world of that name (rename the file, or run from another folder, to run that one)",
+              file=sys.stderr)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario, args.scenario)
         if scenario.task == "goal" and scenario.controllers:

@@ -37,16 +37,12 @@ def run(args) -> int:
     from fuzzynav import progress
     from fuzzynav.storage import write_text_atomic
     from fuzzynav.world.generate import check_kind, generate_worlds
-    from fuzzynav.world.scenario_file import scenario_yaml
+    from fuzzynav.world.scenario_file import refuse_overwriting_edits, scenario_yaml
 
     check_kind(args.family, "FAMILY")
     scenarios = generate_worlds(args.family, args.n, args.seed)
     texts = {args.out / f"{scenario.name}.yaml": scenario_yaml(scenario) for scenario in scenarios}
-    edited = [path.name for path, text in texts.items() if path.is_file() and path.read_bytes() != text.encode()]
-    if edited:
-        more = f" and {len(edited) - 1} more" if len(edited) > 1 else ""
-        validation.fail(f"{edited[0]}{more} already there, with other content (edited?): not overwritten; move "
-                        "them away or give another --out", args.out, "--out")
+    refuse_overwriting_edits(texts, args.out, "--out")
     for path, text in progress.bar(texts.items(), desc="worlds", unit="world"):
         write_text_atomic(path, text)
     names = f"{scenarios[0].name}.yaml" + (f" … {scenarios[-1].name}.yaml" if len(scenarios) > 1 else "")

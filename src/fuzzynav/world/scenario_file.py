@@ -15,7 +15,7 @@ import yaml
 from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.storage import write_text_atomic
-from fuzzynav.world.scenario import Scenario, load_scenario
+from fuzzynav.world.scenario import BUILTIN_DIR, Scenario, load_scenario
 
 MAX_CONTROLLER_NAME = 100  # characters of a controller name (as load_scenario reads them)
 
@@ -71,3 +71,23 @@ def open_scenario(name_or_path) -> Scenario:
         if world is None:
             raise
         return world
+
+
+def shadows_a_name(name_or_path) -> bool:
+    """Whether ``name_or_path`` is a file (which :func:`open_scenario` opens) that has the name of
+    a built-in scenario or of a generated world, which it hides: the runs would be labelled alike."""
+    if not Path(str(name_or_path)).is_file():
+        return False
+    from fuzzynav.world.generate import generated_world
+
+    return (BUILTIN_DIR / f"{name_or_path}.yaml").is_file() or generated_world(str(name_or_path)) is not None
+
+
+def refuse_overwriting_edits(texts: dict, source, field: str) -> None:
+    """Refuse to write the scenario files ``texts`` (path -> text) when one of them is already there
+    with other content (edited by hand, most likely): nothing is overwritten, nothing written."""
+    edited = [path.name for path, text in texts.items() if path.is_file() and path.read_bytes() != text.encode()]
+    if edited:
+        more = f" and {len(edited) - 1} more" if len(edited) > 1 else ""
+        validation.fail(f"{edited[0]}{more} already there, with other content (edited?): not overwritten; move "
+                        f"{'them' if more else 'it'} away or choose another folder", source, field)
