@@ -21,7 +21,6 @@ given, is reported, not faked. ``python benchmarks/anfis_bench.py [--json] [--re
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import os
@@ -32,6 +31,8 @@ import time
 import warnings
 
 import numpy as np
+
+from fuzzynav.cli import Parser
 
 GOALS = {"test_rmse_rad": 1e-4, "train_s": 0.1, "predict_us": 5.0}
 PEER_PYTHON_VARIABLE = "FUZZYNAV_ANFIS_PEER_PYTHON"  # the peers' interpreter, unless --peer-python
@@ -149,7 +150,7 @@ def bench_peer(peer: str, python: str, data, repeats: int) -> dict:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
     parser.add_argument("--repeats", type=int, default=5, help="fits per contender (median time); peers use 3 / 1")
     parser.add_argument("--peer-python", default=os.environ.get(PEER_PYTHON_VARIABLE),

@@ -7,18 +7,18 @@ Reports outcomes, the planner used and the median time to the goal. Run:
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 from collections import Counter
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import Parser
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.dead_ends import dead_ends
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=40)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--controller", default="astar-pp")

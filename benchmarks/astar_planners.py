@@ -17,13 +17,13 @@ prints their outcome counts, median time of the successes and smallest clearance
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import time
 from collections import Counter
 
 from fuzzynav.bench.suites import parse_suite
+from fuzzynav.cli import Parser
 from fuzzynav.control.classic.astar_pp import AStarPurePursuit, plan_path
 from fuzzynav.sim import metrics, run_episode
 
@@ -75,7 +75,7 @@ def measure(spec: str, seed: int, episodes: bool) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("suites", nargs="+")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--episodes", action="store_true", help="also run an episode with each planner")

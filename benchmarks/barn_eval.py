@@ -18,11 +18,12 @@ Usage (the BARN folder holds ``world_N.world`` and ``path_N.npy``, e.g. a copy o
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import time
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 
 def scenario(world_file: Path, scale: float, max_speed: float | None = None):
@@ -69,7 +70,7 @@ def world_range(text: str) -> list[int]:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--barn", type=Path, required=True, help="folder of world_N.world and path_N.npy")
     parser.add_argument("--worlds", default="0-149", help="range of world indices, e.g. 150-299")
     parser.add_argument("--scale", type=float, default=1.0)

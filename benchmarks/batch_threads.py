@@ -10,7 +10,6 @@ states after every pair of chunks are checked equal.
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import sys
@@ -18,6 +17,8 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from fuzzynav.cli import Parser
 
 sys.path.insert(0, str(Path(__file__).parent))
 
@@ -46,7 +47,7 @@ def chunk(sim: BatchSimulator, count: int, steps: int) -> tuple[float, float]:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--controller", default="fuzzy-5b")
     parser.add_argument("--robots", type=int, nargs="+", default=[64, 1024])
     parser.add_argument("--steps", type=int, default=10, help="steps per timed chunk")

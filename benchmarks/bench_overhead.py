@@ -18,7 +18,6 @@ processes (wall time, the one that matters for a 10,000-run campaign), into a te
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import tempfile
@@ -28,6 +27,7 @@ from pathlib import Path
 from fuzzynav.bench.campaign import Plan, run_campaign
 from fuzzynav.bench.suites import parse_suite
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import Parser
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.generate import generate_world
@@ -56,7 +56,7 @@ def runner(family: str, count: int, seed: int, controllers: list[str], workers: 
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--family", default="mixed")
     parser.add_argument("--worlds", type=int, default=20)
     parser.add_argument("--controllers", default="fuzzy-5b-rays,dwa")

@@ -64,7 +64,6 @@ converge as JSON.
 
 from __future__ import annotations
 
-import argparse
 import itertools
 import json
 import multiprocessing
@@ -75,6 +74,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.catalog.tasks import load_controller
+from fuzzynav.cli import Parser
 from fuzzynav.control.learned import LearnedWallFollower
 from fuzzynav.experiments import chapter6_worlds
 from fuzzynav.experiments.chapter6 import rank_correlation
@@ -343,7 +343,7 @@ def fixed_start(seed: int, schedule: str, episodes: int, out: Path) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="probe", required=True)
     avoid = sub.add_parser("avoid-rules")
     avoid.add_argument("model")

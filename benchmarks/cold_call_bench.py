@@ -13,7 +13,6 @@ engines pay it, and it weighs most on the fastest calls (README, "Speed on fuzzy
 
 from __future__ import annotations
 
-import argparse
 import functools
 import statistics
 import sys
@@ -22,6 +21,7 @@ import time
 import numba
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.io.fll import from_fll_engine
 
@@ -32,7 +32,7 @@ def _inputs(engine, n: int, rng) -> np.ndarray:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("fll", help="an FLL engine (e.g. one of fuzzylite's examples)")
     parser.add_argument("--repeats", type=int, default=21, help="samples of each timing (default 21)")
     args = parser.parse_args(argv)

@@ -15,11 +15,12 @@ machine compare; run two checkouts alternately to compare them. Run:
 
 from __future__ import annotations
 
-import argparse
 import json
 import sys
 import time
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 
 def parts(n: int) -> dict:
@@ -74,7 +75,7 @@ def rate(n: int, steps: int) -> float:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--parts", action="store_true", help="split an evaluate run's CPU time")
     parser.add_argument("--n", type=int, default=100, help="worlds of --parts")
     parser.add_argument("--robots", type=int, nargs="*", default=[], help="robot counts to rate")

@@ -11,11 +11,11 @@ sample, over 200 samples, called from compiled code (as the kernel does).
 
 from __future__ import annotations
 
-import argparse
 import time
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.fuzzy.engine import fuzzify_terms, vmath
 from fuzzynav.fuzzy.engine.sampled_defuzzify import centroid_sums
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Sigmoid
@@ -44,7 +44,7 @@ def _centroid_loop(mu, x, rounds):
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--values", type=int, default=10_000)
     args = parser.parse_args(argv)
     n, repeats = args.values, max(1, 2_000_000 // args.values)

@@ -29,7 +29,6 @@ is not evaluated by the fused kernel (``Engine.fallback``: why), and the count i
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 import importlib
 import importlib.metadata
@@ -43,6 +42,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.fuzzy.io import to_fll
 from fuzzynav.fuzzy.systems import goal_seeking
 
@@ -268,7 +268,7 @@ def _print_examples(rows: dict, clock: str, calls: int) -> None:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--only", choices=list(PEERS), action="append", help="time only these")
     parser.add_argument("--fll-python", default=DEFAULT_FLL_PYTHON,

@@ -23,7 +23,6 @@ written back as ``.fis`` and read again (bit-for-bit the same outputs).
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import os
@@ -33,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine
 from fuzzynav.fuzzy.io import from_fll, to_fll
@@ -157,7 +157,7 @@ def check_fis(path: Path) -> dict:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--examples", action="append", metavar="DIR",
                         help="folder of fuzzylite example engines (repeat; default $FUZZYNAV_FLL_EXAMPLES, ':'-separated)")
     parser.add_argument("--fis", action="store_true", help="survey the .fis files instead (against their .fll twins)")

@@ -11,12 +11,12 @@ machine load). One step of the vector environment moves every robot one decision
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 
 import gymnasium
 
+from fuzzynav.cli import Parser
 from fuzzynav.gym import FuzzynavEnv, FuzzynavVectorEnv
 
 CASES = {
@@ -52,7 +52,7 @@ def measure(task: str, options: dict, robots: int, steps: int, rounds: int) -> t
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--robots", type=int, default=64)
     parser.add_argument("--steps", type=int, default=200, help="vector steps per round")
     parser.add_argument("--rounds", type=int, default=5)

@@ -12,13 +12,13 @@ Run:  python benchmarks/learn_core.py [--batches 1,16,256]
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import time
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.fuzzy.constants import STEERING_SINGLETONS
 from fuzzynav.fuzzy.systems import goal_seeking
 from fuzzynav.learn.exploration import EpsilonGreedy
@@ -50,7 +50,7 @@ def median_time(function) -> float:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--batches", default="1,16,256", help="parallel episodes B, comma-separated")
     batches = [int(b) for b in parser.parse_args(argv).batches.split(",")]
     rng = np.random.default_rng(0)

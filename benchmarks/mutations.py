@@ -31,7 +31,6 @@ figures show (:func:`fuzzynav.experiments.routes.published_entries`) in
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import tempfile
@@ -40,6 +39,7 @@ from pathlib import Path
 import yaml
 
 from fuzzynav.catalog import experiments as registry
+from fuzzynav.cli import Parser
 from fuzzynav.experiments import learned_models, routes, rule_bases
 from fuzzynav.fuzzy.io.files import dumps
 
@@ -225,7 +225,7 @@ def learning_table(roles, every_cell: bool, out: Path) -> None:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     roles = [*REACHES, *LEARNED_REACHES]
     parser.add_argument("--roles", nargs="*", default=roles, choices=roles,
                         help="fuzzy roles (rule tables) and learned trackers (their models) to mutate")

@@ -22,7 +22,6 @@ Run:
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import sys
@@ -30,6 +29,8 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from fuzzynav.cli import Parser
 
 sys.path.insert(0, str(Path(__file__).parent))
 
@@ -127,7 +128,7 @@ def timed(part, arguments, repeats: int, steps: int) -> float:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=4000, help="steps recorded and replayed")
     parser.add_argument("--repeats", type=int, default=3, help="timed runs of each part (the median)")
     parser.add_argument("--json", action="store_true", help="print only one JSON object")

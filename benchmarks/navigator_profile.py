@@ -22,11 +22,12 @@ route plan into its parts (CPU time), which the builds cannot separate. World:
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import sys
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 sys.path.insert(0, str(Path(__file__).parent))
 
@@ -242,7 +243,7 @@ def search_steps(steps: int) -> dict:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--robots", type=int, nargs="+", default=[1, 64, 1024])
     parser.add_argument("--steps", type=int, default=400, help="steps per timed chunk (one robot; batches: /n·64)")
     parser.add_argument("--json", action="store_true", help="print only one JSON object")

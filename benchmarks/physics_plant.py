@@ -22,7 +22,6 @@ Usage::
 
 from __future__ import annotations
 
-import argparse
 import csv
 import math
 import statistics
@@ -31,6 +30,8 @@ from collections import Counter
 from pathlib import Path
 
 import numpy as np
+
+from fuzzynav.cli import Parser
 
 MANOEUVRES = ((0.0, 0.5), (0.0, 2.0), (0.2, 0.5), (0.2, 1.0), (0.2, 2.0), (math.pi / 4, 0.25), (math.pi / 4, 0.5),
               (math.pi / 4, 1.0), (math.pi / 4, 2.0))
@@ -107,7 +108,7 @@ def cost(scenarios: list[str]) -> None:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
     commands.add_parser("manoeuvres", help="constant commands on both plants")
     pair = commands.add_parser("compare", help="two bench folders, paired run by run")

@@ -32,7 +32,6 @@ Run:  python benchmarks/rl_bench.py [--tasks fql-goal,q-goal-9] [--seeds 5] [--e
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import statistics
@@ -42,6 +41,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from fuzzynav.catalog.tasks import load_controller, trainer
+from fuzzynav.cli import Parser
 from fuzzynav.experiments import evaluation as evaluations
 from fuzzynav.learn import envs
 from fuzzynav.learn.tasks import common, fql_avoid, fql_goal, fql_wall, tabular_goal
@@ -163,7 +163,7 @@ def run_task(task: str, seed: int, episodes: int | None, folder: Path, double: b
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--tasks", default=",".join(TASKS), help=f"comma-separated, of {', '.join(THESIS)}")
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--episodes", type=int, default=None, help="episodes per task (default: the task's)")

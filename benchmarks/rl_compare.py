@@ -32,7 +32,6 @@ table of the README::
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import time
@@ -40,6 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.gym import FuzzynavEnv, FuzzynavVectorEnv
 from fuzzynav.gym.evaluate import success_rate
 from fuzzynav.gym.fql_agent import FQLAgent
@@ -194,7 +194,7 @@ def plot(results: dict, path: Path) -> None:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tasks", nargs="+", default=["goal", "avoid"], choices=sorted(TRAIN_OPTIONS))
     parser.add_argument("--algos", nargs="+", default=["fql", "fql-none", "ppo", "sac", "dqn"],
                         choices=["fql", "fql-none", "ppo", "sac", "dqn"],

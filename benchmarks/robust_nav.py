@@ -20,12 +20,12 @@ markdown row per variant (success, collision and timeout rates)::
 
 from __future__ import annotations
 
-import argparse
 import json
 
 import numpy as np
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import Parser
 from fuzzynav.control.batched import LAYERS
 from fuzzynav.sim import run_episode
 from fuzzynav.world.generate import generate_worlds
@@ -68,7 +68,7 @@ def print_run(r: dict) -> None:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--controller", nargs="+", default=["fuzzy-5b-rays"])
     parser.add_argument("--family", nargs="+", default=["mixed", "dense", "utrap"])
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1, 2, 3, 4])

@@ -18,10 +18,11 @@ Usage::
 
 from __future__ import annotations
 
-import argparse
 import json
 import multiprocessing
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 SWEEPS = {  # the ranges: noise 0–5 cm, latency 0–0.3 s, slip 0–20 %, drift 0–5 %
     "robot.sensor_noise.range_sigma": (0.01, 0.02, 0.05),
@@ -119,7 +120,7 @@ def plot(rows: list[dict], suite: str, navigators: list[str], out: Path) -> None
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("suites", nargs="+", help="folder of scenario files or FAMILY:COUNT[:SEED]")
     parser.add_argument("--navigators", required=True, help="comma-separated controller names")
     parser.add_argument("--out", required=True)

@@ -21,13 +21,13 @@ route on what it has seen (none expected: the families are solvable).
 
 from __future__ import annotations
 
-import argparse
 import math
 import statistics
 import sys
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.robot.sensors import LIDAR_ANGLES
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
 from fuzzynav.world.generate import generate_world
@@ -105,7 +105,7 @@ def explore(scenario, cell: float, margin: float, reach: float) -> tuple[float, 
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = Parser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--family", default="office")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--n", type=int, default=40)

@@ -17,11 +17,12 @@ Exit status 0 when every file matches, 1 otherwise.
 
 from __future__ import annotations
 
-import argparse
 import json
 import subprocess
 import sys
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 # task -> extra arguments of `fuzzynav train` (small budgets, the default seed 0 and seed 3)
 TRAININGS = {
@@ -83,7 +84,7 @@ def compare(base: Path, new: Path) -> list[str]:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--base", required=True, help="fuzzynav executable of the reference installation")
     parser.add_argument("--new", required=True, help="fuzzynav executable of the installation under test")
     parser.add_argument("--out", type=Path, required=True, help="directory for both runs (base/, new/)")

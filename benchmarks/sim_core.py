@@ -26,7 +26,6 @@ use it. Without IR-SIM the ratios are reported as unavailable. Run:
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import os
@@ -40,6 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import Parser
 from fuzzynav.control.batched import ConstantCommand
 from fuzzynav.kernels.angles import wrap_angle
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS
@@ -196,7 +196,7 @@ def ratio(mine, peer, k: int) -> float:
 
 
 def main(argv=None) -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print only one JSON object")
     parser.add_argument("--controller", metavar="NAME", help="a registered controller timed besides the constant "
                                                              "command (e.g. fuzzy-5b-thesis)")

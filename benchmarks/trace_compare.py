@@ -16,12 +16,13 @@ whose outcome, length or labels differ, and exits 1 when any pose differs by mor
 
 from __future__ import annotations
 
-import argparse
 import json
 import sys
 import time
 
 import numpy as np
+
+from fuzzynav.cli import Parser
 
 NAVIGATORS = ("goal-seeking", "fuzzy-2b-thesis", "fuzzy-5b-thesis", "wall-follow")
 TRACKERS = ("fuzzy-tracker", "pure-pursuit", "stanley")
@@ -85,7 +86,7 @@ def compare(old_path: str, new_path: str, tol: float) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--record", metavar="FILE", help="run every episode and store the traces (.npz)")
     parser.add_argument("--compare", nargs=2, metavar=("OLD", "NEW"), help="compare two recordings")
     parser.add_argument("--worlds", type=int, default=100, help="mixed worlds (seed 0) per navigator (default 100)")

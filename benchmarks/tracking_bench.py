@@ -20,12 +20,12 @@ Wall time per episode is the median of ``--repeats`` runs. ``--json`` prints one
 
 from __future__ import annotations
 
-import argparse
 import json
 import statistics
 import time
 
 from fuzzynav.catalog.controllers import make_controller
+from fuzzynav.cli import Parser
 from fuzzynav.sim import metrics, run_episode
 from fuzzynav.world.scenario import load_scenario
 
@@ -72,7 +72,7 @@ def table(repeats: int) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()

@@ -14,7 +14,6 @@ Run:  python benchmarks/train_time.py [--task fql-avoid] [--seeds 5] [--peer-src
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import resource
@@ -23,6 +22,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from fuzzynav.cli import Parser
 
 
 def train(task: str, seed: int, out: Path, src: str | None, episodes: int | None = None) -> dict:
@@ -40,7 +41,7 @@ def train(task: str, seed: int, out: Path, src: str | None, episodes: int | None
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--task", default="fql-avoid")
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--peer-src", default=os.environ.get("FUZZYNAV_PEER_SRC") or None,

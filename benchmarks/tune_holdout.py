@@ -17,14 +17,13 @@ test), and both mean times over the worlds both reach.
 
 from __future__ import annotations
 
-import argparse
-
 import numpy as np
 
 import fuzzynav.tune.space as space_module
 from fuzzynav.bench.suites import parse_suite
 from fuzzynav.catalog.controllers import make_controller
 from fuzzynav.catalog.roles import default_system
+from fuzzynav.cli import Parser
 from fuzzynav.fuzzy.io import load
 from fuzzynav.kernels.step import REACHED
 from fuzzynav.tune.episodes import OUTCOME, STEPS
@@ -33,7 +32,7 @@ from fuzzynav.tune.space import SearchSpace
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--target", default="fuzzy-2b:oab")
     parser.add_argument("--suites", nargs="+", required=True)
     parser.add_argument("--neighbours", type=int, default=0)

@@ -10,7 +10,6 @@ tuning's first generation holds; the outcomes are checked equal.
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 
@@ -18,6 +17,7 @@ import numpy as np
 
 from fuzzynav import threads
 from fuzzynav.catalog.roles import make_with_systems
+from fuzzynav.cli import Parser
 from fuzzynav.sim import BatchSimulator
 from fuzzynav.tune.episodes import OUTCOME, STEPS
 from fuzzynav.tune.fitness import Fitness
@@ -26,7 +26,7 @@ from fuzzynav.tune.space import SearchSpace
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--target", default="fuzzy-2b:oab")
     parser.add_argument("--worlds", default="mixed:40")
     parser.add_argument("--population", type=int, default=10)

@@ -14,13 +14,13 @@ prints the tables of earlier ``OUT.json`` files, their seeds side by side (the h
 
 from __future__ import annotations
 
-import argparse
 import json
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
+from fuzzynav.cli import Parser
 from fuzzynav.experiments.tuning import METHODS, TASKS, cmp_vi_tuning, held_out_wall, task_suite
 
 
@@ -107,7 +107,7 @@ def rescored(results: dict) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(description=__doc__.splitlines()[0])
     parser.add_argument("--tasks", nargs="+", default=list(TASKS), choices=list(TASKS))
     parser.add_argument("--seeds", type=int, default=5, help="how many seeds (default 5)")
     parser.add_argument("--first-seed", type=int, default=0, help="the first seed (default 0)")
