@@ -48,12 +48,8 @@ def uncovered_situation(system, free: tuple[dict, ...] = ()) -> dict | None:
     term of it. ``free`` lists partial combinations another behaviour handles (e.g. the avoider's
     "nothing near", which is goal seeking), left out."""
     premises, weights = system.compiled.premises, system.compiled.weights
-    sizes = [len(v.terms) for v in system.inputs]
-    if math.prod(sizes) > MAX_SITUATIONS:
-        raise InputError(f"a rule grid of {math.prod(sizes):,} combinations of input terms, more than the "
-                         f"{MAX_SITUATIONS:,} a learned rule base may have", field="inputs")
     live = premises[weights > 0]
-    for combination in itertools.product(*(range(n) for n in sizes)):
+    for combination in itertools.product(*(range(len(v.terms)) for v in system.inputs)):
         labels = {v.name: v.labels[i] for v, i in zip(system.inputs, combination)}
         if any(all(labels[name] == label for name, label in part.items()) for part in free):
             continue
@@ -66,6 +62,10 @@ def check_rules_cover(system, source=None, free: tuple[dict, ...] = ()) -> None:
     """Refuse a learned rule base with a combination of input terms that no rule covers
     (:func:`uncovered_situation`): there it would fire no rule, and the robot would stop or
     drift rather than do what it learned."""
+    size = math.prod(len(v.terms) for v in system.inputs)
+    if size > MAX_SITUATIONS:
+        raise InputError(f"a rule grid of {size:,} combinations of input terms, more than the {MAX_SITUATIONS:,} "
+                         "a learned rule base may have", source=source, field="inputs")
     labels = uncovered_situation(system, free)
     if labels is not None:
         situation = " and ".join(f"{name} is {label}" for name, label in labels.items())
