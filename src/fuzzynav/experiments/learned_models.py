@@ -12,38 +12,21 @@ targets or stopped early).
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
-from contextlib import contextmanager
-from contextvars import ContextVar
-from types import MappingProxyType
-
 import numpy as np
 
-from fuzzynav.errors import InputError
+from fuzzynav.experiments.stand_ins import StandIns
 from fuzzynav.learn.tasks import trackers
 
 KINDS = ("neural-tracker", "anfis-tracker")
 _LOADERS = {"neural-tracker": trackers.load_neural_tracker, "anfis-tracker": trackers.load_anfis_tracker}
-_REPLACED: ContextVar[Mapping] = ContextVar("replaced_learned_models", default=MappingProxyType({}))
-
-
-@contextmanager
-def replaced(documents: Mapping[str, dict]) -> Iterator[None]:
-    """Run the experiments inside with ``documents`` ({kind: model document}) in place of the trained models."""
-    unknown = sorted(set(documents) - set(KINDS))
-    if unknown:
-        raise InputError(f"unknown learned tracker(s) {', '.join(unknown)} (kinds: {', '.join(KINDS)})",
-                         field="models")
-    token = _REPLACED.set(dict(documents))
-    try:
-        yield
-    finally:
-        _REPLACED.reset(token)
+_STAND_INS = StandIns("replaced_learned_models", KINDS, "learned tracker(s)", "kinds", "models")
+replaced = _STAND_INS.replaced
+"""``with replaced({kind: model document}):`` the experiments inside run those documents' models."""
 
 
 def replacement(kind: str) -> dict | None:
     """The model document that replaces ``kind``'s trained model now, or None."""
-    return _REPLACED.get().get(kind)
+    return _STAND_INS.current().get(kind)
 
 
 def tracker(kind: str, seed: int, **options):

@@ -11,33 +11,22 @@ replacement of each role it has, so a claim can be checked against an edited tab
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
-from types import MappingProxyType
 
 from fuzzynav.catalog.roles import ROLES, check_fits, parse_option
 from fuzzynav.errors import InputError
+from fuzzynav.experiments.stand_ins import StandIns
 from fuzzynav.fuzzy.systems import get_system
 
 # role -> the built-in system it defaults to (every role of every fuzzy controller)
 ROLE_SYSTEMS: dict[str, str] = {role: system for roles in ROLES.values() for role, system in roles.items()}
 
-_REPLACED: ContextVar[Mapping] = ContextVar("replaced_rule_bases", default=MappingProxyType({}))
+_STAND_INS = StandIns("replaced_rule_bases", ROLE_SYSTEMS, "role(s)", "roles", "--fis")
 _READ: ContextVar[set | None] = ContextVar("rule_bases_read", default=None)
-
-
-@contextmanager
-def replaced(systems: Mapping) -> Iterator[None]:
-    """Run the experiments inside with ``systems`` ({role: fuzzy system}) in place of the defaults."""
-    unknown = sorted(set(systems) - set(ROLE_SYSTEMS))
-    if unknown:
-        raise InputError(f"unknown role(s) {', '.join(unknown)} (roles: {', '.join(ROLE_SYSTEMS)})", field="--fis")
-    token = _REPLACED.set(dict(systems))
-    try:
-        yield
-    finally:
-        _REPLACED.reset(token)
+replaced = _STAND_INS.replaced
+"""``with replaced({role: fuzzy system}):`` the experiments inside run those systems in place of the defaults."""
 
 
 @contextmanager
@@ -61,18 +50,18 @@ def _looked_up(roles) -> None:
 def system(role: str):
     """The system of ``role`` the experiments run now: the replacement, else the built-in one."""
     _looked_up((role,))
-    return _REPLACED.get().get(role) or get_system(ROLE_SYSTEMS[role])
+    return _STAND_INS.current().get(role) or get_system(ROLE_SYSTEMS[role])
 
 
 def active() -> dict:
     """The replaced roles now in force ({role: system name}), empty for the published tables."""
-    return {role: getattr(s, "name", role) for role, s in _REPLACED.get().items()}
+    return {role: getattr(s, "name", role) for role, s in _STAND_INS.current().items()}
 
 
 def systems_for(name: str) -> dict:
     """The replacements in force for the roles of controller ``name`` ({role: system})."""
     _looked_up(ROLES.get(name, {}))
-    return {role: s for role, s in _REPLACED.get().items() if role in ROLES.get(name, {})}
+    return {role: s for role, s in _STAND_INS.current().items() if role in ROLES.get(name, {})}
 
 
 def controller(name: str, **options):

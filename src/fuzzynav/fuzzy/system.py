@@ -154,10 +154,7 @@ class FuzzySystem(VariableNames):
     # ------------------------------------------------------------------ evaluation
     def _checked(self, X) -> np.ndarray:
         """``X`` as a float array (N, n_in), NaN-free (InputError otherwise), not yet clamped."""
-        X = validation.float_array(X, field="inputs")
-        if X.ndim != 2 or X.shape[1] != len(self.inputs):
-            raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
-                             f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
+        X = self.input_matrix(X)
         with np.errstate(over="ignore", invalid="ignore"):  # ±1e308 inputs overflow the sum to inf, quietly
             screened = np.isnan(X.sum())  # cheap screen; inf - inf also lands here
         if screened:

@@ -15,7 +15,7 @@ import numpy as np
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import MembershipFunction
-from fuzzynav.validation import MAX_UNIVERSE_WIDTH
+from fuzzynav.validation import MAX_UNIVERSE_WIDTH, float_array
 
 
 class Variable:
@@ -96,6 +96,14 @@ class VariableNames:
     @property
     def output_names(self) -> list[str]:
         return [v.name for v in self.outputs]
+
+    def input_matrix(self, X) -> np.ndarray:
+        """``X`` as a float array of shape (N, number of inputs); an InputError naming the inputs otherwise."""
+        X = float_array(X, field="inputs")
+        if X.ndim != 2 or X.shape[1] != len(self.inputs):
+            raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
+                             f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
+        return X
 
     def check_unique_names(self) -> None:
         """InputError naming the variables that share a name."""

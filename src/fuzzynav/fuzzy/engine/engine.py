@@ -123,16 +123,9 @@ class Engine(VariableNames):
                              field=f"{where}: {rule.text()}")
 
     # ------------------------------------------------------------------ evaluation
-    def _checked(self, X) -> np.ndarray:
-        X = validation.float_array(X, field="inputs")
-        if X.ndim != 2 or X.shape[1] != len(self.inputs):
-            raise InputError(f"expected an array of shape (N, {len(self.inputs)}) "
-                             f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
-        return X
-
     def _values(self, X) -> tuple[np.ndarray, dict]:
         """Input values as rows (n_inputs, N), clipped where locked, and every variable's value by name."""
-        X = self._checked(X)
+        X = self.input_matrix(X)
         columns = np.array(X.T, order="C")  # (n_inputs, N): one contiguous row per input
         values = {}
         for i, var in enumerate(self.inputs):
@@ -159,7 +152,7 @@ class Engine(VariableNames):
 
     def evaluate(self, X) -> np.ndarray:
         """Outputs for a batch of inputs: X (N, n_in) -> (N, n_out), columns in ``output_names``."""
-        X = self._checked(X)
+        X = self.input_matrix(X)
         n = X.shape[0]
         if self.fallback is None:
             literals, _, in_numpy, evaluate_fused = self._packed  # in_numpy: propositions NumPy fuzzifies
