@@ -172,9 +172,12 @@ def _quiet_when_stopped(unraisable) -> None:
         sys.__unraisablehook__(unraisable)
 
 
-def _stopped(signum: int) -> int:
-    """Say how the command was stopped; the exit status (128 + the signal, as a shell reports it)."""
-    print("terminated" if signum == signal.SIGTERM else "interrupted", file=sys.stderr)
+def _stopped(signum: int, args) -> int:
+    """Say how the command was stopped, and how to go on where the command says
+    (``when_stopped``); the exit status (128 + the signal, as a shell reports it)."""
+    hint = getattr(args, "when_stopped", None)
+    print(("terminated" if signum == signal.SIGTERM else "interrupted") + (f": {hint}" if hint else ""),
+          file=sys.stderr)
     return 128 + signum
 
 
@@ -218,13 +221,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{_who(args)}: error: {where}{problem}", file=sys.stderr)
         return 2
     except Terminated:
-        return _stopped(signal.SIGTERM)
+        return _stopped(signal.SIGTERM, args)
     except KeyboardInterrupt:
-        return _stopped(signal.SIGINT)
+        return _stopped(signal.SIGINT, args)
     except Exception:
         if not RECEIVED:
             raise
-        return _stopped(RECEIVED[-1])  # a library failed where the signal had stopped it (RECEIVED)
+        return _stopped(RECEIVED[-1], args)  # a library failed where the signal had stopped it (RECEIVED)
     finally:
         if argv is None:
             # the process' own command, which ends here: the collections of the interpreter's shutdown

@@ -46,13 +46,14 @@ def with_example(example: str, epilog: str = "") -> dict:
 
 
 def command(subparsers, name: str, run: Callable[[argparse.Namespace], int], *, example: str,
-            **texts) -> argparse.ArgumentParser:
+            when_stopped: str | None = None, **texts) -> argparse.ArgumentParser:
     """The parser of sub-command ``name`` (``texts``: ``help``, ``description``, ``epilog`` of
     ``add_parser``), which runs ``run(args) -> exit status``, its ``--help`` ending with
-    ``example`` (:func:`with_example`); the caller adds its arguments."""
+    ``example`` (:func:`with_example`); the caller adds its arguments. ``when_stopped`` is said
+    after "interrupted" when Ctrl-C stops the command (how to go on; ``run`` may change it)."""
     epilog = texts.pop("epilog", "")
     parser = subparsers.add_parser(name, **texts, **with_example(example, epilog))
-    parser.set_defaults(func=run)
+    parser.set_defaults(func=run, when_stopped=when_stopped)
     return parser
 
 

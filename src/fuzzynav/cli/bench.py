@@ -35,7 +35,8 @@ fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out bench-barn   # a folder
 
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "bench", run, help=help_line("bench"),
-                               description=__doc__.split("\n\n")[1], example=EXAMPLES)
+                               description=__doc__.split("\n\n")[1], example=EXAMPLES,
+                               when_stopped="the runs done are kept; the same command with --resume goes on")
     parser.add_argument("suites", nargs="+", metavar="SUITE",
                         help="folder of scenario files, or FAMILY[:COUNT[:SEED]] with FAMILY circles|mixed|dense|utrap|dynamic|dynabarn|office|maze|forest, "
                              f"COUNT 1 to {validation.MAX_WORLDS:,}, SEED 0 to 2**63-1")

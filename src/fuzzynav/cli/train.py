@@ -31,6 +31,7 @@ PRIORS = ("none", "thesis")
 MAX_PARALLEL = 1000  # robots per batch of --parallel (a batch of 1,000 already fills a core for seconds)
 # the reinforcement-learning tasks: --parallel, and --resume from checkpoints (the trackers train in one pass)
 PARALLEL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces", "fql-avoid", "fql-wall")
+CHECKPOINT_EVERY = 100  # episodes: the checkpoints of a reinforcement-learning run when none is asked
 # tasks whose convergence is read on windows of episodes (learn.curves): a batch must divide them
 GOAL_TASKS = ("q-goal", "fql-goal", "fql-goal-35", "fql-goal-traces")
 
@@ -53,7 +54,9 @@ fuzzynav train fql-goal --episodes 6000 --out fql.npz --resume   # 3000 more, to
     parser.add_argument("--out", type=arguments.path, help="model file to write, .json or .npz (default TASK.json)")
     parser.add_argument("--resume", action="store_true", help="continue from the checkpoint of --out")
     parser.add_argument("--checkpoint-every", type=arguments.whole, metavar="K",
-                        help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,}")
+                        help=f"write a checkpoint every K episodes, 1 to {validation.MAX_EPISODES:,} (reinforcement "
+                             f"learning: default {CHECKPOINT_EVERY}, so that --resume goes on after Ctrl-C; the "
+                             "trackers train in one go)")
     parser.add_argument("--curve", type=arguments.figure_path, help="write the learning curve plot (PNG; any "
                         "suffix matplotlib writes, checked before training)")
     parser.add_argument("--parallel", type=arguments.count(MAX_PARALLEL), metavar="N",
@@ -82,6 +85,9 @@ def run(args) -> int:
     if args.prior is not None and args.task != "fql-avoid":
         raise InputError(f"only for fql-avoid, not {args.task}", field="--prior")
     out = args.out or Path(f"{args.task}.json")
+    if args.task in PARALLEL_TASKS:
+        args.when_stopped = (f"the same command with --resume goes on from the last checkpoint "
+                             f"({checkpoint_path(out, 'PHASE').name.replace('PHASE', '…')})")
     for flag, target in (("--out", out), ("--curve", args.curve)):  # refused before any training
         if target is not None:
             arguments.check_writable(target, flag)
@@ -92,7 +98,7 @@ def run(args) -> int:
         episodes=args.episodes,
         seed=args.seed,
         resume=args.resume,
-        checkpoint_every=args.checkpoint_every,
+        checkpoint_every=args.checkpoint_every or (CHECKPOINT_EVERY if args.task in PARALLEL_TASKS else None),
         curve=None if args.curve is None else Path(args.curve),
         parallel=args.parallel,
         prior=args.prior,

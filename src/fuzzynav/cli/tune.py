@@ -32,7 +32,8 @@ fuzzynav evaluate --controller fuzzy-2b --fis oab=oab.yaml --worlds mixed --n 10
 def register(subparsers) -> None:
     parser = arguments.command(subparsers, "tune", run,
                                help=help_line("tune"),
-                               description=__doc__.split("\n\n")[1], example=EXAMPLES)
+                               description=__doc__.split("\n\n")[1], example=EXAMPLES,
+                               when_stopped="the same command with --resume goes on from the last generation saved")
     parser.add_argument("target", metavar="CONTROLLER:ROLE",
                         help="e.g. fuzzy-2b:oab, fuzzy-2b:gsb, goal-seeking:gsb, wall-follow:wall, fuzzy-5b:gsb")
     parser.add_argument("--worlds", required=True, metavar="SUITE",
