@@ -203,7 +203,8 @@ def run(args) -> int:
     plots = "" if args.no_plots else f", {len(rows)} plots {args.out}/<scenario>--<controller>.png"
     print(f"wrote {len(rows)} run{'s' * (len(rows) != 1)}: {args.out / 'metrics.md'}, {args.out / 'metrics.json'}{plots}")
     command = command_name()
-    print(f"next: `{command} run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b; "
+    print(f"next: `{command} run fig-IV-23 --plot u.png` drives the default navigator, fuzzy-5b (its first run "
+          "compiles its kernels, about half a minute once); "
           f"`{command} COMMAND --help` shows each command with examples; the README's tour tries them all")
     return 0
 

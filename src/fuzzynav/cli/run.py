@@ -2,8 +2,8 @@
 
 SCENARIO is a scenario file or a built-in name (``fuzzynav scenarios``). Without ``--controller``
 or ``--model`` it runs :func:`default_controller`: the default navigator ``fuzzy-5b`` on a goal,
-else the first controller the scenario lists in its ``controllers`` key (a goal scenario that
-lists its own gets a note naming them). Prints a one-line summary, or with ``--json`` exactly one
+else the first controller the scenario lists in its ``controllers`` key, else the fuzzy tracker
+``fuzzy-tracker`` (a goal scenario that lists its own gets a note naming them). Prints a one-line summary, or with ``--json`` exactly one
 JSON object with the metrics of :func:`fuzzynav.sim.metrics.metrics` (and ``fis``: {role: file}
 when ``--fis`` replaced a rule base). Exit status 0 whenever the episode ran (reached, collided
 or timed out), 2 for bad input (message on stderr).
@@ -32,18 +32,18 @@ PLANT_HELP = ("what moves the robot and reads its sensors: kinematic (the thesis
               "rigid-body tricycle in the MuJoCo physics engine; the optional extra 'physics'; docs/physics.md)")
 
 DEFAULT_CONTROLLER = "fuzzy-5b"  # the default navigator (docs/guide/controllers.md)
+DEFAULT_TRACKER = "fuzzy-tracker"  # the thesis' fuzzy tracker CF (Table V.1): paths and moving targets
 
 
 def default_controller(scenario, source: str) -> str:
     """The controller run when none is named: :data:`DEFAULT_CONTROLLER` on a goal task, else the
-    first of the scenario's own ``controllers`` (a tracker for a path, a pursuer for a target;
-    ``source``: the scenario as the user named it, for an error)."""
+    first of the scenario's own ``controllers`` (a tracker for a path, a pursuer for a target),
+    else :data:`DEFAULT_TRACKER` (``source``: the scenario as the user named it, for an error)."""
     if scenario.task == "goal":
         return DEFAULT_CONTROLLER
     if scenario.controllers:
         return scenario_controllers(scenario, source)[0]
-    raise InputError(f"scenario {scenario.name!r} is a {scenario.task} task and lists no controllers: name one, "
-                     "e.g. --controller fuzzy-tracker", field="--controller")
+    return DEFAULT_TRACKER
 
 
 def register(subparsers) -> None:
@@ -63,7 +63,7 @@ fuzzynav run path-n --model anfis.json --json""")
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--controller", metavar="NAME",
                         help=f"built-in controller name (default: {DEFAULT_CONTROLLER} on a goal, else the first of the "
-                             "scenario's own 'controllers')")
+                             f"scenario's own 'controllers', else {DEFAULT_TRACKER})")
     source.add_argument("--model", metavar="FILE", type=arguments.file_name, help="trained model file (JSON or NPZ)")
     parser.add_argument("--fis", action="append", metavar="ROLE=FILE",
                         help="replace the controller's fuzzy system for ROLE (e.g. gsb=my-gsb.yaml; any .yaml/.json/"
@@ -118,7 +118,7 @@ def run(args) -> int:
               file=sys.stderr)
     if args.model is None and args.controller is None:
         args.controller = default_controller(scenario, args.scenario)
-        if scenario.task == "goal" and scenario.controllers:
+        if scenario.task == "goal" and scenario.controllers and args.controller not in scenario.controllers:
             print(f"note: {scenario.name} names its own controllers ({', '.join(scenario.controllers)}); this runs "
                   f"the default {args.controller}: --controller NAME runs one of them", file=sys.stderr)
     if args.model:
@@ -145,7 +145,7 @@ def run(args) -> int:
         print(json.dumps(numbers))
     else:
         print(f"{numbers['scenario']} / {numbers['controller']}: {numbers['outcome']} after "
-              f"{numbers['time_s']:.1f} s, path {numbers['path_length_m']:.2f} m, "
+              f"{numbers['time_s']:.1f} s simulated, path {numbers['path_length_m']:.2f} m, "
               f"min clearance {numbers['min_clearance_m']:.2f} m"
               + "".join(f", --fis {role}={path}" for role, path in numbers.get("fis", {}).items()))
     return 0
