@@ -232,6 +232,24 @@ def test_a_thesis_figure_run_without_a_controller_says_which_it_names(capsys):
     assert "note:" not in capsys.readouterr().err
 
 
+def test_no_note_when_the_default_is_among_the_scenarios_own(tmp_path, capsys):
+    world = tmp_path / "opt.yaml"
+    world.write_text("controllers: [fuzzy-2b, fuzzy-5b]\nrobot: {x: 2, y: 2}\ngoal: {x: 5, y: 5}\n")
+    assert main(["run", str(world), "--max-time", "0.2"]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("opt / fuzzy-5b:") and "note:" not in err
+
+
+def test_a_path_or_target_scenario_naming_no_controller_runs_the_fuzzy_tracker(tmp_path, capsys):
+    (tmp_path / "zig.yaml").write_text("robot: {x: 2, y: 2, theta: 0.5}\npath: [[3, 3], [8, 5], [12, 10]]\n")
+    (tmp_path / "chase.yaml").write_text("robot: {x: 2, y: 2}\n"
+                                         "target: {x: 10, y: 10, motion: {type: line, velocity: [0.3, 0]}}\n")
+    for name in ("zig", "chase"):
+        assert main(["run", str(tmp_path / f"{name}.yaml")]) == 0
+        out, err = capsys.readouterr()
+        assert out.startswith(f"{name} / fuzzy-tracker: reached after ") and "s simulated" in out and "note:" not in err
+
+
 def test_a_file_named_like_a_built_in_scenario_says_which_it_runs(tmp_path, monkeypatch, capsys):
     """A file ``fig-IV-12a`` (or ``mixed-0-002``) in the folder hides the scenario of that name, and
     the run's line is labelled alike: the run says it is the file."""

@@ -132,3 +132,32 @@ def test_the_help_states_the_phases_shares_as_the_tasks_set_them(capsys):
     shares = {0.25: "a quarter", 0.5: "a half"}
     quarter, half = shares[common.SPEED_SHARE], shares[fql_avoid.AVOID_SPEED_SHARE]
     assert f"speed phase {quarter} (fql-goal, fql-goal-35, fql-wall) or {half} (fql-avoid)" in text
+
+
+def test_reinforcement_learning_checkpoints_every_100_episodes_unless_told(tmp_path, monkeypatch):
+    """A Ctrl-C'd run must leave a checkpoint for --resume without --checkpoint-every."""
+    from fuzzynav.learn import checkpoint
+
+    saved = []
+    real = checkpoint.save_checkpoint
+    monkeypatch.setattr(checkpoint, "save_checkpoint",
+                        lambda path, learner, rng, episode, *rest: (saved.append(episode), real(path, learner, rng, episode, *rest)))
+    assert train("q-goal", tmp_path / "q.json", "--episodes", "250") == 0
+    assert saved == [100, 200, 250]
+    saved.clear()
+    assert train("q-goal", tmp_path / "r.json", "--episodes", "250", "--checkpoint-every", "120") == 0
+    assert saved == [120, 240, 250]
+
+
+def test_a_stopped_training_says_how_to_go_on(tmp_path, monkeypatch, capsys):
+    from fuzzynav.catalog import tasks
+
+    def stopped(request):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(tasks, "trainer", lambda task: stopped)
+    assert train("fql-goal", tmp_path / "m.json") == 130
+    assert capsys.readouterr().err.strip() == ("interrupted: the same command with --resume goes on from the last "
+                                               "checkpoint (m.json.….checkpoint.json)")
+    assert main(["train", "anfis-tracker", "--out", str(tmp_path / "a.json"), "--quiet"]) == 130  # trains in one go
+    assert capsys.readouterr().err.strip() == "interrupted"
