@@ -77,7 +77,17 @@ def test_existing_campaign_needs_resume(reference, tmp_path, capsys):
     shutil.copytree(reference, copy)
     assert _bench(copy) == 2
     assert "--resume" in capsys.readouterr().err
+    capsys.readouterr()
     assert _bench(copy, "--resume") == 0  # nothing left to run: the same files
+    out, err = capsys.readouterr()
+    assert f"--resume: 12 runs already in {copy}, 0 to run" in err
+    lines = out.splitlines()  # the rates on the terminal, a line per suite and controller
+    assert lines[0].split() == ["suite", "controller", "runs", "success", "collision", "timeout", "median", "time"]
+    summary = json.loads((reference / "summary.json").read_text())["results"]
+    assert len(lines) == 1 + len(summary)
+    for line, record in zip(lines[1:], summary):
+        assert line.split()[:3] == [record["suite"], record["controller"], str(record["runs"])]
+        assert f"{100 * record['reached']['rate']:.1f} %" in line
     for name in FINAL:
         assert (copy / name).read_bytes() == (reference / name).read_bytes(), name
 

@@ -30,6 +30,7 @@ import csv
 import hashlib
 import io
 import json
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -267,6 +268,8 @@ def _run(plan: Plan, out: Path, resume: bool, backend: str, workers: int, addres
     _write_all(out, list(rows.values()))  # drop a line cut by an interruption
     cells = plan.cells(set(rows), str(out / "cache"))
     total = sum(len(cell.controllers) for cell in cells)
+    if resume:
+        print(f"--resume: {len(rows)} run{'s' * (len(rows) != 1)} already in {out}, {total} to run", file=sys.stderr)
     with quiet_progress(not progress or not total):  # a bar only on a terminal, as every command's
         bar = progress_bar(total=total, unit="run")
     with open(out / "runs.jsonl", "a", encoding="utf-8") as jsonl, open(out / "runs.csv", "a", encoding="utf-8") as table:

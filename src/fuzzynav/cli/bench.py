@@ -178,6 +178,23 @@ def run(args) -> int:
                       **({"fis": dict(plan.fis)} if plan.fis else {}),
                       **({"perturb": dict(plan.perturb)} if plan.perturb else {}),
                       **({"plant": plan.plant} if plan.plant != DEFAULT_PLANT else {})}
-    write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
-    print(f"{len(rows)} run{'s' * (len(rows) != 1)} in {out}: summary.md, summary.json, index.html", file=sys.stderr)
+    summary = write_reports(plan, rows, out, gallery=args.gallery, arguments=arguments_used)
+    print("\n".join(_table(summary["results"])))
+    print(f"{len(rows)} run{'s' * (len(rows) != 1)} in {out}: summary.md (with 95 % intervals and more), summary.json, "
+          "index.html", file=sys.stderr)
     return 0
+
+
+def _table(records: list[dict]) -> list[str]:
+    """The campaign's rates in a few columns, a line per suite and controller (summary.md has them all)."""
+    width = max([len("controller")] + [len(r["controller"]) for r in records])
+    suite = max([len("suite")] + [len(r["suite"]) for r in records])
+    lines = [f"{'suite':<{suite}}  {'controller':<{width}}  {'runs':>5}  {'success':>8}  {'collision':>9}  "
+             f"{'timeout':>8}  {'median time':>11}"]
+    for r in records:
+        time_s = "–" if r["median_time_s"] is None else f"{r['median_time_s']:.1f} s"
+        lines.append(f"{r['suite']:<{suite}}  {r['controller']:<{width}}  {r['runs']:>5}  "
+                     + "  ".join(f"{100 * r[o]['rate']:>{w - 2}.1f} %" for o, w in (("reached", 8), ("collision", 9),
+                                                                                 ("timeout", 8)))
+                     + f"  {time_s:>11}")
+    return lines
