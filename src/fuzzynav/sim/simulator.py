@@ -371,9 +371,9 @@ class BatchSimulator:
 class Simulator:
     """One robot, one episode: ``Simulator(scenario, controller, ...).run() -> Trace``."""
 
-    def __init__(self, scenario: Scenario, controller: Controller, *,
-                 robot_params: TricycleParams | None = None, sensors: SensorRing | None = None,
-                 seed: int | None = None, max_time: float | None = None, start=None, plant: str = DEFAULT_PLANT):
+    def __init__(self, scenario: Scenario, controller: Controller, *, robot_params: TricycleParams | None = None,
+                 sensors: SensorRing | None = None, seed: int | None = None, max_time: float | None = None, start=None,
+                 plant: str = DEFAULT_PLANT):
         if start is not None and np.ndim(np.asarray(start, dtype=object)) > 1:
             raise InputError("one robot takes one start pose (x, y, θ); BatchSimulator runs several", field="start")
         self._batch = BatchSimulator(scenario, controller, starts=start, robot_params=robot_params,
@@ -385,6 +385,16 @@ class Simulator:
         return self._batch.run().trace(0)
 
 
-def run_episode(scenario: Scenario, controller: Controller, **options) -> Trace:
-    """``Simulator(scenario, controller, **options).run()``."""
-    return Simulator(scenario, controller, **options).run()
+def run_episode(scenario: Scenario, controller: Controller, *, robot_params: TricycleParams | None = None,
+                sensors: SensorRing | None = None, seed: int | None = None, max_time: float | None = None,
+                start=None, plant: str = DEFAULT_PLANT) -> Trace:
+    """One episode of ``controller`` on ``scenario``, to its end (:class:`Simulator`): its :class:`Trace`.
+
+    :param robot_params: the robot's limits (default: the scenario's robot)
+    :param sensors: the range ring (default: the scenario's ``sensors``, else the controller's)
+    :param seed: seeds the sensor noise and the controller's random draws
+    :param max_time: simulated seconds before a timeout (default: the scenario's ``max_time``)
+    :param start: a start pose (x, y, θ) in place of the scenario's
+    :param plant: what moves the robot, ``kinematic`` (the thesis' model) or ``mujoco``"""
+    return Simulator(scenario, controller, robot_params=robot_params, sensors=sensors, seed=seed, max_time=max_time,
+                     start=start, plant=plant).run()
