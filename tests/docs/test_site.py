@@ -75,3 +75,20 @@ def test_every_results_page_says_its_machine_date_and_command(site):
         head = page.read_text(encoding="utf-8")[:1500]
         assert "**Machine:**" in head and "**Date:**" in head and "**Reproduce:**" in head, page.name
         assert (site / "results" / page.stem / "index.html").is_file()
+
+
+def test_the_home_page_is_the_site_root():
+    """``mkdocs serve`` opens ``/`` and the site title links there: the home page is docs/index.md."""
+    config = yaml.safe_load((ROOT / "mkdocs.yml").read_text(encoding="utf-8"))
+    assert config["nav"][0] == {"Home": "index.md"}
+    assert (DOCS / "index.md").is_file()
+
+
+@pytest.mark.slow
+def test_the_built_site_has_the_user_guide_at_its_root(site):
+    home = (site / "index.html").read_text(encoding="utf-8")
+    assert "fuzzynav user guide" in home
+    page = Tags()
+    page.feed(home)
+    for link in ("guide/getting-started/", "guide/scenarios/", "dynamic/", "guide/api/"):
+        assert link in page.links, link
