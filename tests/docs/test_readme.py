@@ -80,3 +80,6 @@ def test_the_first_screen_says_what_it_is_shows_it_and_installs_it():
             in screen)
     assert "python3 -m venv .venv && .venv/bin/pip install -e '.[test]' && .venv/bin/python -m pytest -q" in screen
     assert "cold" in screen and "warm" in screen  # the first run's compile time, both ways
+    prose = " ".join(screen.split())
+    assert len(re.findall(r"\d s (?:\*\*)?cold", prose)) == 1, "one current cold figure; the rest in first-run.md"
+    assert "(docs/results/first-run.md)" in prose
