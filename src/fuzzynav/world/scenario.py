@@ -1,4 +1,4 @@
-"""Scenario files: world, robot start and task, validated (schema in docs/ARCHITECTURE.md).
+"""Scenario files: world, robot start and task, validated (every key: docs/guide/scenarios.md).
 
 ```yaml
 name: fig-IV-15a                      # optional (default: the file name)
