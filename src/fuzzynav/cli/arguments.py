@@ -11,6 +11,7 @@ import math
 import os
 import re
 import tempfile
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -24,9 +25,24 @@ def plain(text: str) -> str:
     return re.sub(r"`{1,2}([^`]+)`{1,2}", r"'\1'", text)
 
 
+class _Wrapper(textwrap.TextWrapper):
+    """textwrap's wrapper that may also break a brace list after one of its commas
+    (``robot.actuation.{latency,steering_rate,`` / ``acceleration,slip}``) and a list of choices
+    after one of its bars (``circles|mixed|``), but never inside a word: a word longer than the line
+    overflows it."""
+
+    def __init__(self, width: int):
+        super().__init__(width, break_long_words=False)
+
+    def _split(self, text):
+        breaks = r"(?<=,)(?=[^\s{}]*\})|(?<=\|)(?=\w)"  # after a comma inside braces, after a bar
+        return [piece for chunk in super()._split(text) for piece in re.split(breaks, chunk) if piece]
+
+
 class ExampleFormatter(argparse.HelpFormatter):
     """argparse's formatter on plain text (:func:`plain`), except that a text whose first line is a
-    heading (ends with ``:``, as the ``examples:`` epilog) keeps its lines as written."""
+    heading (ends with ``:``, as the ``examples:`` epilog) keeps its lines as written, and that the
+    help of an option breaks no word (:class:`_Wrapper`)."""
 
     def _fill_text(self, text, width, indent):
         if text.split("\n", 1)[0].endswith(":"):
@@ -34,7 +50,7 @@ class ExampleFormatter(argparse.HelpFormatter):
         return super()._fill_text(plain(text), width, indent)
 
     def _split_lines(self, text, width):
-        return super()._split_lines(plain(text), width)
+        return _Wrapper(width).wrap(self._whitespace_matcher.sub(" ", plain(text)).strip())
 
 
 def with_example(example: str, epilog: str = "") -> dict:
