@@ -35,7 +35,7 @@ COMMAND_MODULES: dict[str, tuple[str, str]] = {
     "scenarios": ("scenarios", "list the built-in scenarios"),
     "train": ("train", "train a learning controller (ANFIS, MLP, Q-learning, fuzzy Q-learning)"),
     "reproduce": ("reproduce", "reproduce a figure or table of the thesis"),
-    "fis": ("fis", "show, evaluate, convert or plot a fuzzy system"),
+    "fis": ("fis", "show, evaluate, convert, plot or export (C) a fuzzy system"),
     "evaluate": ("evaluate", "run a controller over N generated worlds"),
     "worlds": ("worlds", "write generated worlds as scenario files"),
     "bench": ("bench", "run navigators against each other on suites of worlds"),

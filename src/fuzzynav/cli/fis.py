@@ -343,17 +343,22 @@ def register(subparsers) -> None:
     target = ("built-in name (" + ", ".join(SYSTEMS) + "), CONTROLLER:ROLE, a .json/.yaml/.fll/.fis file, or a model "
               "file of `fuzzynav train` holding a rule base (.json/.npz)")
 
-    show = arguments.command(sub, "show", _show, help="variables, terms and rule table", example="""
+    show = arguments.command(sub, "show", _show, help="variables, terms and rule table",
+                             description="Print SYSTEM's inputs and outputs with their terms, then its rules (as "
+                                         "a grid when two inputs' rules fill the table, as in the thesis).",
+                             example="""
 fuzzynav fis show goal-seeking               # Table IV.1 as a rule grid
 fuzzynav fis show fuzzy-5b:foa
 fuzzynav fis show gsb.fis""")
-    show.add_argument("system", help=target)
+    show.add_argument("system", metavar="SYSTEM", help=target)
 
     ev = arguments.command(sub, "eval", _eval, help="evaluate for one input (--input) or a CSV table (--csv)",
+                          description="Evaluate SYSTEM: the outputs for the --input values as one JSON object, or "
+                                      "a --csv table's rows with their outputs as CSV (to stdout, or -o FILE).",
                           example="""
 fuzzynav fis eval goal-seeking --input drg=5 --input theta=0.3
 fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
-    ev.add_argument("system", help=target)
+    ev.add_argument("system", metavar="SYSTEM", help=target)
     ev.add_argument("--input", action="append", metavar="NAME=VALUE", help="one input value (repeat per input)")
     ev.add_argument("--csv", metavar="IN.csv", type=arguments.file_name, help="CSV with one column per input ('-' = stdin; other columns, "
                     "an output's name included, are left out: the answer has the inputs' columns, then the outputs')")
@@ -365,27 +370,31 @@ fuzzynav fis eval goal-seeking --csv inputs.csv -o outputs.csv""")
                             example="""
 fuzzynav fis convert tracking --to fll -o tracking.fll
 fuzzynav fis convert fuzzy-5b-thesis:foa --to yaml -o foa.yaml""")
-    conv.add_argument("system", help=target)
+    conv.add_argument("system", metavar="SYSTEM", help=target)
     conv.add_argument("--to", choices=FORMATS, required=True, help="the format to write")
     conv.add_argument("-o", "--output", metavar="FILE", type=arguments.file_name, help="write here instead of stdout")
+
+    plot = arguments.command(sub, "plot", _plot,
+                             help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)",
+                             description="Draw the membership functions of SYSTEM's variables (Figs IV.5-IV.8), "
+                                         "or with --surface the control surface of a two-input system (Fig V.7).",
+                             example="""
+fuzzynav fis plot goal-seeking -o terms.png
+fuzzynav fis plot tracking --surface -o surface.png""")
+    plot.add_argument("system", metavar="SYSTEM", help=target)
+    plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
+    plot.add_argument("--output-variable", dest="surface_output", metavar="NAME", help="the output --surface draws "
+                      "(default: the first)")
+    plot.add_argument("-o", "--output", required=True, metavar="FILE.png", type=arguments.figure_path,
+                      help="the figure to write (PNG; any suffix matplotlib writes)")
 
     export = arguments.command(sub, "export-c", _export_c,
                                help="C99 evaluator of a TS0 / TS1 / Mamdani system (double or Q16.16)",
                                description="Write SYSTEM as a dependency-free C99 function (no heap): "
                                            "-o controller.c and controller.h beside it.",
                                example="fuzzynav fis export-c goal-seeking -o controller.c --fixed Q16.16")
-    export.add_argument("system", help=target)
+    export.add_argument("system", metavar="SYSTEM", help=target)
     export.add_argument("-o", "--output", required=True, metavar="FILE.c", type=arguments.file_name,
                         help="the .c file (the .h goes beside it)")
     export.add_argument("--fixed", choices=FIXED_FORMATS, help="fixed-point arithmetic (default: double)")
     export.add_argument("--name", help="prefix of the C identifiers (default: the file's stem)")
-
-    plot = arguments.command(sub, "plot", _plot,
-                             help="membership functions (Figs IV.5-IV.8) or control surface (Fig V.7)",
-                             example="""
-fuzzynav fis plot goal-seeking -o terms.png
-fuzzynav fis plot tracking --surface -o surface.png""")
-    plot.add_argument("system", help=target)
-    plot.add_argument("--surface", action="store_true", help="control surface of a two-input system")
-    plot.add_argument("--output-variable", dest="surface_output", help="output drawn by --surface")
-    plot.add_argument("-o", "--output", required=True, metavar="FILE.png", type=arguments.figure_path)
