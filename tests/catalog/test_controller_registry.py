@@ -34,6 +34,7 @@ def test_a_name_or_alias_taken_twice_is_refused():
     ({"sensors": "sonar"}, "sensors must be one of"),
     ({"citation": ""}, "give a description and a citation"),
     ({"version": 0}, "version must be an integer >= 1"),
+    ({"brief": "x" * 61}, "brief must be at most 60 characters"),
 ])
 def test_a_spec_checks_its_fields(fields, message):
     good = {"name": "x", "factory": "m:f", "description": "d", "citation": "c", "tasks": ("goal",)}
@@ -96,3 +97,9 @@ def test_a_controller_that_cannot_do_the_task_is_refused(argv, message, capsys, 
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1
     assert not (tmp_path / "out").exists()
+
+
+def test_a_long_description_without_a_brief_is_cut_after_a_word():
+    spec = ControllerSpec("x", "m:f", "a very long description " * 5 + "; and more", "c", ("goal",))
+    assert spec.short == "a very long description a very long description a very…"  # 55 + 1 characters
+    assert ControllerSpec("x", "m:f", "short; and more", "c", ("goal",)).short == "short"

@@ -97,6 +97,8 @@ def test_run_help_lists_every_controller(capsys):
         main(["run", "--help"])
     text = capsys.readouterr().out
     assert all(name in text for name in available())
+    listing = text.split("controllers (--controller NAME", 1)[1].split("\nexamples:")[0].strip().splitlines()[1:]
+    assert len(listing) == len(available()) and max(map(len, listing)) <= 85  # one short line each
 
 
 def test_progress_bars_only_on_a_terminal(monkeypatch):

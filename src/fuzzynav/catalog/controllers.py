@@ -45,41 +45,48 @@ register_controller(ControllerSpec(
     "version added, and the options that give the earlier ones: *Versions of fuzzy-5b* in docs/guide/controllers.md",
     "thesis §IV.7; Dolgov et al. 2008; Fox et al. 1997; Smith 1957; Koenig & Likhachev 2002; Elfes 1989; "
     "Fiorini & Shiller 1998; Agrawal & Sreenath 2017", GOAL,
-    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=15))
+    "lidar", roles=FIVE, aliases=("fuzzy-5b-gap-robust",), version=15,
+    brief="the default navigator: five behaviours, lidar, planned route"))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield", "fuzzynav.control.yielding:make",
     "fuzzy-5b under a fuzzy yield / evade layer on the time to collision with moving obstacles, read from two "
-    "lidar scans (for dynamic worlds)", "this package; time to collision after Lee 1976", GOAL, "lidar"))
+    "lidar scans (for dynamic worlds)", "this package; time to collision after Lee 1976", GOAL, "lidar",
+    brief="fuzzy-5b under a fuzzy yield / evade layer (dynamic worlds)"))
 register_controller(ControllerSpec(
     "fuzzy-5b-yield-tracks", "fuzzynav.control.yielding:make_tracked",
     "fuzzy-5b-yield that also tracks moving obstacles over successive scans and predicts them out of view "
     "(time to collision by velocity obstacles, for threats abeam and behind), round the default fuzzy-5b; "
     "version 1 ran round fuzzy-5b at the thesis' speeds, remembering moving obstacles wherever seen",
-    "this package; Fiorini & Shiller 1998", GOAL, "lidar", version=2))
+    "this package; Fiorini & Shiller 1998", GOAL, "lidar", version=2,
+    brief="fuzzy-5b-yield that also tracks moving obstacles"))
 register_controller(ControllerSpec(
     "fuzzy-5b-rays", "fuzzynav.control.robust:fuzzy_5b",
     "fuzzy-5b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors: "
-    "version 1 of fuzzy-5b", "thesis §IV.7; Lumelsky & Stepanov 1987", GOAL, "rays", roles=FIVE))
+    "version 1 of fuzzy-5b", "thesis §IV.7; Lumelsky & Stepanov 1987", GOAL, "rays", roles=FIVE,
+    brief="fuzzy-5b-thesis with recovery and loop escape, 7 rays"))
 register_controller(ControllerSpec(
     "fuzzy-2b", "fuzzynav.control.robust:fuzzy_2b",
     "fuzzy-2b-thesis with recovery (backing out) and loop escape (boundary following), on the 7 range sensors",
-    "thesis Table IV.2, Fig IV.9; Lumelsky & Stepanov 1987", GOAL, "rays", roles=TWO))
+    "thesis Table IV.2, Fig IV.9; Lumelsky & Stepanov 1987", GOAL, "rays", roles=TWO,
+    brief="fuzzy-2b-thesis with recovery and loop escape, 7 rays"))
 register_controller(ControllerSpec(
     "fuzzy-2b-thesis", "fuzzynav.control.robust:fuzzy_2b_thesis",
     "goal seeking + obstacle avoidance by distance and angle of the nearest obstacle, switched, as published",
-    "thesis Table IV.2, Fig IV.9", GOAL, "rays", roles=TWO))
+    "thesis Table IV.2, Fig IV.9", GOAL, "rays", roles=TWO, brief="goal seeking + obstacle avoidance, as published"))
 register_controller(ControllerSpec(
     "fuzzy-5b-thesis", "fuzzynav.control.robust:fuzzy_5b_thesis",
     "the five behaviours GSB, FOA, ROA, LOA, VRB with the supervisor of Fig IV.16, as published",
-    "thesis §IV.7", GOAL, "rays", roles=FIVE))
+    "thesis §IV.7", GOAL, "rays", roles=FIVE, brief="the five behaviours and their supervisor, as published"))
 register_controller(ControllerSpec(
     "fuzzy-2b-layered", "fuzzynav.control.robust:fuzzy_2b_layered",
     "fuzzy-2b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
-    "thesis Table IV.2, Fig IV.9; this package's layers", GOAL, "rays", roles=TWO))
+    "thesis Table IV.2, Fig IV.9; this package's layers", GOAL, "rays", roles=TWO,
+    brief="fuzzy-2b-thesis with this package's layers"))
 register_controller(ControllerSpec(
     "fuzzy-5b-layered", "fuzzynav.control.robust:fuzzy_5b_layered",
     "fuzzy-5b-thesis with this package's layers: anti-orbit guard, turning room, safety stop and hysteresis",
-    "thesis §IV.7; this package's layers", GOAL, "rays", roles=FIVE))
+    "thesis §IV.7; this package's layers", GOAL, "rays", roles=FIVE,
+    brief="fuzzy-5b-thesis with this package's layers"))
 register_controller(ControllerSpec(
     "goal-seeking-guarded", "fuzzynav.control.goal_seeking:make_guarded",
     "goal-seeking with this package's anti-orbit guard", "thesis Table IV.1; this package's layer", GOAL,
@@ -87,11 +94,13 @@ register_controller(ControllerSpec(
 register_controller(ControllerSpec(
     "fuzzy-2b-gap", "fuzzynav.control.avoidance:make_gap",
     "fuzzy-2b-thesis on a lidar, steering through the widest gap that fits; no recovery, no route (opt-in)",
-    "thesis Table IV.2", GOAL, "lidar", roles=TWO))
+    "thesis Table IV.2", GOAL, "lidar", roles=TWO,
+    brief="fuzzy-2b-thesis on a lidar, through the widest gap that fits"))
 register_controller(ControllerSpec(
     "fuzzy-5b-gap", "fuzzynav.control.five_behaviours:make_gap",
     "fuzzy-5b-thesis on a lidar, steering through the widest gap that fits; no recovery, no route "
-    "(the core of fuzzy-5b)", "thesis §IV.7", GOAL, "lidar", roles=FIVE))
+    "(the core of fuzzy-5b)", "thesis §IV.7", GOAL, "lidar", roles=FIVE,
+    brief="fuzzy-5b-thesis on a lidar, through the widest gap that fits"))
 register_controller(ControllerSpec(
     "wall-follow", "fuzzynav.control.wall_following:make", "hand-made fuzzy wall follower",
     "thesis Table VI.2", GOAL, "rays", goal_directed=False, roles={"wall": "wall-follow"}))
@@ -115,7 +124,8 @@ register_controller(ControllerSpec(
     "dwa-tracks", "fuzzynav.control.classic.dwa:make_tracked",
     "dwa on a lidar, each arc checked against the moving obstacles tracked over successive scans, moved along "
     "their predicted tracks over the arc's time (the tracker of fuzzy-5b-yield-tracks)",
-    "Fox, Burgard & Thrun 1997; Fiorini & Shiller 1998", GOAL, "lidar"))
+    "Fox, Burgard & Thrun 1997; Fiorini & Shiller 1998", GOAL, "lidar",
+    brief="dwa on a lidar, its arcs checked against tracked obstacles"))
 register_controller(ControllerSpec(
     "apf", "fuzzynav.control.classic.apf:make", "artificial potential field on the 7 range sensors",
     "Khatib 1986", GOAL, "rays"))
@@ -126,19 +136,26 @@ register_controller(ControllerSpec(
     "vfh-tracks", "fuzzynav.control.classic.vfh:make_tracked",
     "vfh on a lidar, its histogram also holding the moving obstacles tracked over successive scans at their "
     "predicted places over the next 1.5 s (the tracker of fuzzy-5b-yield-tracks)",
-    "Borenstein & Koren 1991; Ulrich & Borenstein 1998", GOAL, "lidar"))
+    "Borenstein & Koren 1991; Ulrich & Borenstein 1998", GOAL, "lidar",
+    brief="vfh on a lidar, its histogram holding tracked obstacles"))
 register_controller(ControllerSpec(
     "astar-pp", "fuzzynav.control.classic.astar_pp:make",
     "MAP-AWARE reference: hybrid A* on the inflated map (backward arcs where no forward path exists) + pure "
     "pursuit, planning again from its pose when it leaves the plan; where no arc ahead is clear it backs off, or "
     "takes the clearest only while it stays off the map, or stands (knows the whole map); version 2 drove the "
     "clearest arc ahead there, version 1 planned once",
-    "Dolgov et al. 2008; Coulter 1992; Kuwata et al. 2009", GOAL, needs_map=True, version=3))
+    "Dolgov et al. 2008; Coulter 1992; Kuwata et al. 2009", GOAL, needs_map=True, version=3,
+    brief="MAP-AWARE reference: hybrid A* on the map + pure pursuit"))
 
 
 def available() -> dict[str, str]:
     """Names of the registered controllers with their one-line descriptions (and sources)."""
     return {name: CONTROLLERS[name].summary for name in sorted(CONTROLLERS)}
+
+
+def briefs() -> dict[str, str]:
+    """Names of the registered controllers with their short line (``fuzzynav run --help``)."""
+    return {name: CONTROLLERS[name].short for name in sorted(CONTROLLERS)}
 
 
 def spec_of(name: str) -> ControllerSpec:

@@ -25,6 +25,7 @@ SENSES = {
     "rays": "7 range sensors",
     "lidar": "a lidar, 271 beams over 270° (which it brings)",
 }
+BRIEF = 60  # characters of a controller's line in ``fuzzynav run --help`` (with its name, within 85 columns)
 _NAME = re.compile(r"^[a-z0-9][a-z0-9-]*$")
 _TARGET = re.compile(r"^[A-Za-z_][\w.]*:[A-Za-z_]\w*$")
 
@@ -61,7 +62,9 @@ class ControllerSpec:
     - ``roles``: ``{role: built-in fuzzy system}`` of the rule bases ``--fis ROLE=FILE`` may replace;
     - ``aliases``: other names it answers to (a name is never re-pointed: the old behaviour keeps
       its own name, an alias keeps an old name working); ``version``: bumped when the behaviour
-      under this name changes, so recorded numbers say which one they measured.
+      under this name changes, so recorded numbers say which one they measured;
+    - ``brief``: its line in ``fuzzynav run --help``, at most :data:`BRIEF` characters, when the
+      description is longer (:attr:`short`).
     """
 
     name: str
@@ -75,6 +78,7 @@ class ControllerSpec:
     roles: Mapping[str, str] = field(default_factory=dict)
     aliases: tuple[str, ...] = ()
     version: int = 1
+    brief: str = ""
 
     def __post_init__(self):
         _check_name(self.name, "controller name")
@@ -89,14 +93,23 @@ class ControllerSpec:
                              f"got {self.sensors!r}")
         if not isinstance(self.version, int) or self.version < 1:
             raise ValueError(f"controller {self.name}: version must be an integer >= 1, got {self.version!r}")
+        if not isinstance(self.brief, str) or len(self.brief) > BRIEF:
+            raise ValueError(f"controller {self.name}: brief must be at most {BRIEF} characters, got {self.brief!r}")
         object.__setattr__(self, "tasks", tuple(self.tasks))
         object.__setattr__(self, "aliases", tuple(self.aliases))
         object.__setattr__(self, "roles", MappingProxyType(dict(self.roles)))
 
     @property
     def summary(self) -> str:
-        """The one-line description with its source (``fuzzynav run --help``)."""
+        """The description with its source (:func:`fuzzynav.list_controllers`)."""
         return f"{self.description} ({self.citation})"
+
+    @property
+    def short(self) -> str:
+        """Its line in ``fuzzynav run --help``: ``brief``, else the description up to its first
+        ``;``, cut after a word (``…``) to :data:`BRIEF` characters."""
+        text = self.brief or self.description.split(";")[0].strip()
+        return text if len(text) <= BRIEF else text[:BRIEF - 1].rsplit(" ", 1)[0].rstrip(",:") + "…"
 
 
 @dataclass(frozen=True)

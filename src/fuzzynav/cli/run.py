@@ -17,7 +17,7 @@ import sys
 from pathlib import Path
 
 from fuzzynav import validation
-from fuzzynav.catalog.controllers import available, check_task, scenario_controllers
+from fuzzynav.catalog.controllers import briefs, check_task, scenario_controllers
 from fuzzynav.cli import arguments, help_line
 from fuzzynav.errors import InputError
 
@@ -47,13 +47,13 @@ def default_controller(scenario, source: str) -> str:
 
 
 def register(subparsers) -> None:
-    width = max(map(len, available()))
+    width = max(map(len, briefs()))
     parser = arguments.command(subparsers, "run", run,
                                help=help_line("run"),
                                description="Run one episode of a controller on a scenario file or built-in scenario "
                                            "(`fuzzynav scenarios` lists the built-ins).",
-                               epilog="controllers (--controller NAME):\n"
-                               + "\n".join(f"  {name:{width}s}  {text}" for name, text in available().items()),
+                               epilog="controllers (--controller NAME; in full: docs/guide/controllers.md):\n"
+                               + "\n".join(f"  {name:{width}s}  {text}" for name, text in briefs().items()),
                                example="""
 fuzzynav run fig-IV-23                                # the default navigator, fuzzy-5b
 fuzzynav run my-world.yaml --controller dwa --plot dwa.png --animate dwa.gif
