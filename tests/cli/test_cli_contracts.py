@@ -127,7 +127,7 @@ def test_a_command_started_without_standard_output_says_so_instead_of_losing_its
     process = subprocess.run([sys.executable, "-m", "fuzzynav", "fis", "show", "goal-seeking"], stdin=subprocess.DEVNULL,
                              stderr=subprocess.PIPE, preexec_fn=lambda: os.close(1), timeout=120)
     assert process.returncode == 2
-    assert process.stderr.decode().strip() == "fuzzynav fis: error: standard output is closed"
+    assert process.stderr.decode().strip() == "fuzzynav fis show: error: standard output is closed"
 
 
 def test_closed_stdout_pipe_ends_quietly():
@@ -237,3 +237,16 @@ def test_an_unknown_option_is_said_by_its_command_with_the_close_one(capsys, arg
     assert status == 2
     assert err.startswith(f"usage: {command} ") and f"\n{command}: error: unrecognized arguments: " in err
     assert err.rstrip().endswith(f"(did you mean {hint}?)")
+
+
+@pytest.mark.parametrize(("argv", "command"), [
+    (["fis", "eval", "goal-seeking", "--input", "nope=1"], "fuzzynav fis eval"),
+    (["fis", "show", "no-such-system"], "fuzzynav fis show"),
+    (["import", "barn", "missing.world", "--out", "barn"], "fuzzynav import barn"),
+    (["run", "no-such-scenario"], "fuzzynav run"),
+])
+def test_an_error_of_a_sub_command_is_said_by_its_own_name(capsys, tmp_path, monkeypatch, argv, command):
+    """As argparse's errors are: ``fuzzynav fis eval: error: …``, not ``fuzzynav fis: error: …``."""
+    monkeypatch.chdir(tmp_path)
+    status, err = run_cli(capsys, *argv)
+    assert status == 2 and err.startswith(f"{command}: error: "), err

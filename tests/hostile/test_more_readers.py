@@ -105,7 +105,7 @@ def test_a_csv_read_from_a_closed_standard_input_says_so():
     process = subprocess.run([sys.executable, "-m", "fuzzynav", "fis", "eval", "goal-seeking", "--csv", "-"],
                              capture_output=True, preexec_fn=lambda: os.close(0), timeout=120)
     assert process.returncode == 2, process.stderr
-    assert process.stderr.decode().strip() == "fuzzynav fis: error: -: cannot read file (standard input is closed)"
+    assert process.stderr.decode().strip() == "fuzzynav fis eval: error: -: cannot read file (standard input is closed)"
 
 
 SPECIAL_FILES = {"named pipe": (os.mkfifo, "is a named pipe, not a regular file"),

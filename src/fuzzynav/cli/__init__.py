@@ -181,9 +181,10 @@ def _stopped(signum: int, args) -> int:
     return 128 + signum
 
 
-def _who(args) -> str:
-    """``fuzzynav COMMAND``, the start of an error line (``fuzzynav`` before the command is read)."""
-    return f"fuzzynav {args.command}" if getattr(args, "command", None) else "fuzzynav"
+def _who(parser, args) -> str:
+    """The start of an error line: the name of the deepest (sub-)command ``args`` reached
+    (``fuzzynav fis eval``, as argparse's own errors say it; ``fuzzynav`` before it is read)."""
+    return list(_reached(parser, args))[-1].prog if parser is not None and args is not None else "fuzzynav"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -196,7 +197,7 @@ def main(argv: list[str] | None = None) -> int:
         if hasattr(os, "register_at_fork"):  # a forked worker's SIGTERM ends it, from its first instruction
             os.register_at_fork(after_in_child=lambda: signal.signal(signal.SIGTERM, signal.SIG_DFL))
     words = sys.argv[1:] if argv is None else argv
-    args = None
+    parser = args = None
     try:
         _check_numba_threads()
         parser = build_parser(words)  # (imports the command: Ctrl-C may come here too)
@@ -206,7 +207,7 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         return int(args.func(args) or 0)
     except InputError as error:
-        print(f"{_who(args)}: error: {error}", file=sys.stderr)
+        print(f"{_who(parser, args)}: error: {error}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         # the reader of stdout went away (``fuzzynav fis show ... | head``): quietly, no traceback
@@ -218,7 +219,7 @@ def main(argv: list[str] | None = None) -> int:
         problem = error.strerror or error
         if isinstance(error, FileExistsError) and error.filename and os.path.isfile(error.filename):
             problem = "is a file, not a folder (give a new or an existing folder)"
-        print(f"{_who(args)}: error: {where}{problem}", file=sys.stderr)
+        print(f"{_who(parser, args)}: error: {where}{problem}", file=sys.stderr)
         return 2
     except Terminated:
         return _stopped(signal.SIGTERM, args)

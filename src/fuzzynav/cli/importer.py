@@ -66,7 +66,7 @@ def run(args) -> int:
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
         if path_file is None:
-            print(f"fuzzynav import: {path}: no path_N.npy found, no BARN score for it", file=sys.stderr)
+            print(f"fuzzynav import barn: {path}: no path_N.npy found, no BARN score for it", file=sys.stderr)
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         read[path.stem] = (path, document, entry)
