@@ -10,7 +10,7 @@ working tree), then compares every model file and every reproduce ``<id>.json`` 
 
 Paths inside the run's directory are compared relative to it; fields that measure wall time (any key ending in ``_seconds``, a checkpoint's ``saved_at`` and the
 ``digest`` that covers it, and an
-experiment record's ``seconds`` and ``finished``, ``reproduce <id>/run.json``) are removed
+experiment record's ``seconds`` and ``finished``, ``reproduce <id>/run.json``, and a tuning row's ``wall_s``) are removed
 before comparing, since they differ between any two runs; everything else must be identical.
 Exit status 0 when every file matches, 1 otherwise.
 """
@@ -52,8 +52,8 @@ def run(fuzzynav: str, out: Path) -> None:
 
 
 # a checkpoint's save time and its digest (which covers the save time; the rest is compared); an
-# experiment record's run time and end
-WALL_CLOCK = ("saved_at", "digest", "seconds", "finished")
+# experiment record's run time and end; a tuning row's wall time
+WALL_CLOCK = ("saved_at", "digest", "seconds", "finished", "wall_s")
 
 
 def _without_timings(value):
