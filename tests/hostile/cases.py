@@ -872,4 +872,12 @@ SILENT = [
                 "['run', 'fig-IV-23', '--model'])", expect="x.json: rules: no rule for the situation drg is P and theta is PG"),
 ]
 
-CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH, *SILENT]
+EIGHTH = [
+    # an engine (.fll) took a Linear term of an input, then evaluating it raised numpy's ValueError
+    Case("fll-linear-input-term", {"t.fll": _fll("term: lo Triangle 0 0 1\n  term: hi Triangle 0 1 1\nOutput",
+                                                 "term: lo Linear 2 0\n  term: hi Triangle 0 1 1\nOutput")},
+         _eval("t.fll"), expect="t.fll: x.lo: a linear term concludes a ts1 rule; it cannot describe an input"),
+]
+
+CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,
+         *SILENT, *EIGHTH]

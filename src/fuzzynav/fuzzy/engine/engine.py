@@ -71,6 +71,11 @@ class Engine(VariableNames):
         for var in self.inputs + self.outputs:
             if not var.minimum <= var.maximum:
                 raise InputError(f"range [{var.minimum}, {var.maximum}] is empty", field=f"{var.name}.range")
+        for var in self.inputs:  # (as FuzzySystem says it) Linear reads the input vector, not a degree of x
+            for label, mf in var.terms.items():
+                if isinstance(mf.term if isinstance(mf, Scaled) else mf, Linear):
+                    raise InputError("a linear term concludes a ts1 rule; it cannot describe an input",
+                                     field=f"{var.name}.{label}")
         for var in self.outputs:
             for label, mf in var.terms.items():
                 base = mf.term if isinstance(mf, Scaled) else mf
