@@ -877,6 +877,11 @@ EIGHTH = [
     Case("fll-linear-input-term", {"t.fll": _fll("term: lo Triangle 0 0 1\n  term: hi Triangle 0 1 1\nOutput",
                                                  "term: lo Linear 2 0\n  term: hi Triangle 0 1 1\nOutput")},
          _eval("t.fll"), expect="t.fll: x.lo: a linear term concludes a ts1 rule; it cannot describe an input"),
+    # numpy's interpolation overflowed between them: a warning on stderr and μ = 0 (the points say 0.5)
+    Case("fll-discrete-points-1e308-apart", {"t.fll": _fll("term: lo Triangle 0 0 1\n  term: hi Triangle 0 1 1\nOutput",
+                                                           "term: lo Discrete -1e308 1 1e308 0\n  term: hi Triangle 0 1 1\n"
+                                                           "Output")},
+         _eval("t.fll"), expect="t.fll: x.lo: discrete points must lie at most 1e+300 apart, got x from -1e+308 to 1e+308"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

@@ -99,12 +99,13 @@ class Trapezoidal(MembershipFunction):
         x = np.asarray(x, dtype=float)
         a, b, c, d = self._edges()
         mu = np.ones_like(x)
-        if b > -math.inf:
-            rise = (x - a) / (b - a) if b > a else np.where(x < a, 0.0, 1.0)
-            mu = np.minimum(mu, rise)
-        if c < math.inf:
-            fall = (d - x) / (d - c) if d > c else np.where(x > d, 0.0, 1.0)
-            mu = np.minimum(mu, fall)
+        with np.errstate(over="ignore"):  # an edge of 1e-320 m: a slope of inf, clipped to 1 below
+            if b > -math.inf:
+                rise = (x - a) / (b - a) if b > a else np.where(x < a, 0.0, 1.0)
+                mu = np.minimum(mu, rise)
+            if c < math.inf:
+                fall = (d - x) / (d - c) if d > c else np.where(x > d, 0.0, 1.0)
+                mu = np.minimum(mu, fall)
         return np.clip(mu, 0.0, 1.0)
 
     def breakpoints(self) -> tuple[float, ...]:
@@ -175,8 +176,9 @@ class Gaussian(MembershipFunction):
         return (self.sigma, self.mean)
 
     def __call__(self, x):
-        z = (np.asarray(x, dtype=float) - self.mean) / self.sigma
-        return np.exp(-0.5 * z * z)
+        with np.errstate(over="ignore"):  # a sigma of 1e-300: z overflows to inf, μ to 0
+            z = (np.asarray(x, dtype=float) - self.mean) / self.sigma
+            return np.exp(-0.5 * z * z)
 
 
 class Bell(MembershipFunction):
@@ -194,8 +196,9 @@ class Bell(MembershipFunction):
         return (self.a, self.b, self.c)
 
     def __call__(self, x):
-        z = np.abs((np.asarray(x, dtype=float) - self.c) / self.a)
-        return 1.0 / (1.0 + z ** (2.0 * self.b))
+        with np.errstate(over="ignore"):  # a tiny a or a huge b: z ** 2b overflows to inf, μ to 0
+            z = np.abs((np.asarray(x, dtype=float) - self.c) / self.a)
+            return 1.0 / (1.0 + z ** (2.0 * self.b))
 
 
 class Sigmoid(MembershipFunction):
@@ -213,7 +216,8 @@ class Sigmoid(MembershipFunction):
         return (self.a, self.c)
 
     def __call__(self, x):
-        z = -self.a * (np.asarray(x, dtype=float) - self.c)
+        with np.errstate(over="ignore"):  # a slope of 1e308: z overflows to ±inf, clipped
+            z = -self.a * (np.asarray(x, dtype=float) - self.c)
         return 1.0 / (1.0 + np.exp(np.clip(z, -700.0, 700.0)))
 
     def inverse(self, y):

@@ -122,7 +122,8 @@ class Spike(_Params):
             raise ValueError("spike needs a width != 0")
 
     def __call__(self, x):
-        return np.exp(-np.abs(10.0 / self.width * (_x(x) - self.center)))
+        with np.errstate(over="ignore", divide="ignore"):  # a width of 1e-320: 1 at the centre, 0 elsewhere
+            return np.exp(-10.0 * np.abs(_x(x) - self.center) / abs(self.width))
 
 
 class Arc(_Params):
@@ -214,8 +215,9 @@ class GaussianProduct(_Params):
 
     def __call__(self, x):
         x = _x(x)
-        a = np.where(x < self.mean_a, np.exp(-((x - self.mean_a) ** 2) / (2.0 * self.sd_a ** 2)), 1.0)
-        b = np.where(x > self.mean_b, np.exp(-((x - self.mean_b) ** 2) / (2.0 * self.sd_b ** 2)), 1.0)
+        with np.errstate(over="ignore", divide="ignore"):  # an sd of 1e-300: its square is 0, μ 0 off the mean
+            a = np.where(x < self.mean_a, np.exp(-((x - self.mean_a) ** 2) / (2.0 * self.sd_a ** 2)), 1.0)
+            b = np.where(x > self.mean_b, np.exp(-((x - self.mean_b) ** 2) / (2.0 * self.sd_b ** 2)), 1.0)
         return a * b
 
 

@@ -7,7 +7,8 @@ An engine read from ``.fll``, ``.fis``, JSON or YAML (or built in Python) must h
   bisector, maxima) of positive width (a ``Range=[4 4]`` output has no point to sample);
 - rule weights finite in [0, 1] (fuzzylite's and MATLAB's range: a weight of −2 would turn a
   rule's conclusion round);
-- term heights finite in [0, 1], a ``Discrete`` term's points finite with x non-decreasing;
+- term heights finite in [0, 1], a ``Discrete`` term's points finite with x non-decreasing, at
+  most ``MAX_UNIVERSE_WIDTH`` apart (as a range: NumPy's interpolation overflows beyond);
 - activation parameters as fuzzylite reads them: ``First``/``Last``/``Highest``/``Lowest`` a
   count of at least 1, a threshold finite in [0, 1], a ``Threshold`` comparator one of
   ``< <= == != >= >``;
@@ -81,6 +82,9 @@ def _check_term(term, field: str) -> None:
     if isinstance(term, Discrete):
         if not (np.isfinite(term.x).all() and np.isfinite(term.y).all()):
             raise InputError("discrete points must be finite", field=field)
+        if term.x.size and float(term.x.max()) - float(term.x.min()) > MAX_UNIVERSE_WIDTH:  # (interpolation overflows)
+            raise InputError(f"discrete points must lie at most {MAX_UNIVERSE_WIDTH:g} apart, got x from "
+                             f"{term.x.min():g} to {term.x.max():g}", field=field)
         if (np.diff(term.x) < 0).any():
             raise InputError(f"discrete points must be given by increasing x, got x = {term.x.tolist()}", field=field)
 
