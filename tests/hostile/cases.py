@@ -882,6 +882,27 @@ EIGHTH = [
                                                            "term: lo Discrete -1e308 1 1e308 0\n  term: hi Triangle 0 1 1\n"
                                                            "Output")},
          _eval("t.fll"), expect="t.fll: x.lo: discrete points must lie at most 1e+300 apart, got x from -1e+308 to 1e+308"),
+    # public classes and functions given the wrong types: TypeError, ValueError or matplotlib's errors
+    Case("api-variable-universe-of-text", python="fuzzynav.Variable('x', 'ab', {})",
+         expect="x.universe: universe must be two numbers (lo, hi), got 'ab'"),
+    Case("api-variable-universe-of-three", python="fuzzynav.Variable('x', (0, 1, 2), {})",
+         expect="x.universe: universe must be two numbers (lo, hi), got (0, 1, 2)"),
+    Case("api-variable-terms-a-list", python="fuzzynav.Variable('x', (0, 1), [1])",
+         expect="x: terms must be a mapping of labels to membership functions, got [1]"),
+    Case("api-rule-premises-none", python="fuzzynav.Rule(None, (('v', 'F'),))",
+         expect="premises: must be (variable, term) pairs, got None"),
+    Case("api-rule-conclusion-triple", python="fuzzynav.Rule((('drg', 'Z'),), (('v', 'F', 'G'),))",
+         expect="conclusions: must be (variable, term) pairs, got (('v', 'F', 'G'),)"),
+    Case("api-rule-weight-text", python="fuzzynav.Rule((('drg', 'Z'),), (('v', 'F'),), '0.5')",  # read as 0.5
+         expect="IF drg IS Z THEN v IS F WITH '0.5': rule weight must be a number in [0, 1], got '0.5'"),
+    Case("api-learning-curve-text", python="fuzzynav.plot_learning_curve('abc')",
+         expect="curve: must be an array of numbers, got 'abc'"),
+    Case("api-learning-curve-nan", python="fuzzynav.plot_learning_curve([1.0, float('nan')])",  # drawn with a gap
+         expect="curve: must be finite numbers (no NaN or infinity)"),
+    Case("api-learning-curve-1e308", python="fuzzynav.plot_learning_curve([1e308, -1e308, 1e308])",
+         expect="curve: a learning curve's values must lie within ±1e+15, got 1e+308"),
+    Case("api-learning-curve-into-a-text-file", python="fuzzynav.plot_learning_curve([1, 2], path=d / 'c.txt')",
+         expect="c.txt': matplotlib cannot write '.txt' files"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

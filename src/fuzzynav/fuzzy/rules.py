@@ -12,8 +12,10 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from numbers import Real
 
 from fuzzynav.errors import InputError
+from fuzzynav.validation import shown
 
 
 @dataclass(frozen=True)
@@ -25,8 +27,15 @@ class Rule:
     weight: float = 1.0
 
     def __post_init__(self):
-        object.__setattr__(self, "premises", tuple((str(v), str(t)) for v, t in self.premises))
-        object.__setattr__(self, "conclusions", tuple((str(v), str(t)) for v, t in self.conclusions))
+        for name in ("premises", "conclusions"):
+            try:
+                pairs = tuple((str(v), str(t)) for v, t in getattr(self, name))
+            except (TypeError, ValueError):  # None, a string, a triple
+                raise InputError(f"must be (variable, term) pairs, got {shown(getattr(self, name))}",
+                                 field=name) from None
+            object.__setattr__(self, name, pairs)
+        if isinstance(self.weight, bool) or not isinstance(self.weight, Real):  # "0.5" and True were read as numbers
+            raise InputError(f"rule weight must be a number in [0, 1], got {shown(self.weight)}", field=self.text())
         weight = float(self.weight)
         if not (0.0 <= weight <= 1.0) or math.isnan(weight):
             raise InputError(f"rule weight must be in [0, 1], got {self.weight!r}", field=self.text())

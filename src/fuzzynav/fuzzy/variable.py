@@ -15,7 +15,7 @@ import numpy as np
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import MembershipFunction
-from fuzzynav.validation import MAX_UNIVERSE_WIDTH, float_array
+from fuzzynav.validation import MAX_UNIVERSE_WIDTH, float_array, shown
 
 
 class Variable:
@@ -27,10 +27,17 @@ class Variable:
     def __init__(self, name: str, universe: tuple[float, float], terms: Mapping[str, MembershipFunction]):
         if not name or not str(name).isidentifier():
             raise InputError(f"variable name must be an identifier, got {name!r}", field="name")
-        lo, hi = (float(v) for v in universe)
+        try:
+            lo, hi = (float(v) for v in universe)
+        except (TypeError, ValueError):  # not two numbers: None, "ab", (0, 1, 2)
+            raise InputError(f"universe must be two numbers (lo, hi), got {shown(universe)}",
+                             field=f"{name}.universe") from None
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi and hi - lo <= MAX_UNIVERSE_WIDTH):
             raise InputError(f"universe must be finite with lo < hi (and hi - lo <= {MAX_UNIVERSE_WIDTH:g}), got "
                              f"{tuple(universe)!r}", field=f"{name}.universe")
+        if not isinstance(terms, Mapping):
+            raise InputError(f"terms must be a mapping of labels to membership functions, got {shown(terms)}",
+                             field=name)
         if not terms:
             raise InputError("variable has no terms", field=name)
         for label, mf in terms.items():

@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from fuzzynav import validation  # noqa: E402
 from fuzzynav.errors import InputError  # noqa: E402
 from fuzzynav.learn.curves import episodes_to_converge, moving_average  # noqa: E402
 from fuzzynav.storage import savefig_atomic
@@ -26,12 +27,19 @@ def plot_learning_curve(curve, *, window: int = 50, tolerance: float = 0.05, lab
                         title: str = "Mean reinforcement per episode", ylabel: str = "mean reinforcement",
                         mark_convergence: bool = True, converged_at: int | None = None, ax=None, path=None):
     """Plot a learning curve (episodes,) or (episodes, seeds); save to ``path`` if given."""
-    values = np.asarray(curve, dtype=float)
+    if path is not None:  # checked before drawing, as train --curve is
+        from fuzzynav.viz.trajectories import figure_file
+
+        path = figure_file(path)
+    values = validation.finite_array(curve, field="curve")  # text, None or NaN: refused, not drawn
     if values.ndim == 1:
         values = values[:, None]
     if values.ndim != 2 or values.shape[0] == 0:
         raise InputError(f"a learning curve must be (episodes,) or (episodes, seeds), got {values.shape}",
                          field="curve")
+    if np.abs(values).max() > validation.MAX_MAGNITUDE:  # matplotlib's axis of ±1e308 overflows
+        raise InputError(f"a learning curve's values must lie within ±{validation.MAX_MAGNITUDE:g}, got "
+                         f"{validation.shown(float(np.abs(values).max()))}", field="curve")
     figure = ax.figure if ax is not None else plt.figure(figsize=(6.4, 4.0))
     ax = ax if ax is not None else figure.add_subplot(111)
     episodes = np.arange(1, values.shape[0] + 1)
