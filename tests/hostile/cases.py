@@ -903,6 +903,12 @@ EIGHTH = [
          expect="curve: a learning curve's values must lie within ±1e+15, got 1e+308"),
     Case("api-learning-curve-into-a-text-file", python="fuzzynav.plot_learning_curve([1, 2], path=d / 'c.txt')",
          expect="c.txt': matplotlib cannot write '.txt' files"),
+    # a name of control characters: its ESC reached the terminal as a command (run's summary line),
+    # matplotlib warned "Glyph 0 missing" on stderr for a NUL, a line break split the summary
+    *[Case(f"scenario-name-with-{label}", {"s.yaml": ROBOT + "goal: {x: 15, y: 15}\nname: " + name + "\n"}, RUN,
+           expect=f"s.yaml: name: must not hold control characters, got {char}")
+      for label, name, char in (("an-escape", '"\\e[31mred"', "'\\x1b'"), ("a-nul", '"a\\0b"', "'\\x00'"),
+                                ("a-line-break", '"a\\nb"', "'\\n'"))],
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

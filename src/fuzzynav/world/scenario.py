@@ -315,7 +315,7 @@ def scenario_from_dict(document, source: str = "<scenario>", name: str | None = 
         _not_done_at_start(check, start, position, target.tolerance, "target", "target")
 
     return Scenario(
-        name=check.text(doc.get("name", name or "scenario"), "name", allow_empty=False),  # it names runs and plots
+        name=check.label(doc.get("name", name or "scenario"), "name"),  # it names runs and plots
         world=world,
         start=start,
         goal=goal,
