@@ -164,14 +164,18 @@ def float_array(value, source=None, field=None) -> np.ndarray:
         fail(f"must be numbers, got {type(value).__name__} {shown(value)}", source, field)
 
 
-def text(value, source=None, field=None, *, max_length: int = MAX_STRING, allow_empty: bool = True) -> str:
-    """``value`` as a string of at most ``max_length`` characters (non-empty unless ``allow_empty``)."""
+def text(value, source=None, field=None, *, max_length: int = MAX_STRING, allow_empty: bool = True,
+         one_line: bool = False) -> str:
+    """``value`` as a string of at most ``max_length`` characters (non-empty unless ``allow_empty``;
+    ``one_line``: a name printed and plotted, no control character: ESC, NUL, a line break)."""
     if not isinstance(value, str):
         fail(f"must be a string, got {type(value).__name__} {shown(value)}", source, field)
     if len(value) > max_length:
         fail(f"must be at most {max_length} characters, got {len(value)}", source, field)
     if not allow_empty and not value.strip():
         fail("must not be empty", source, field)
+    if one_line and any(ord(c) < 32 or 127 <= ord(c) < 160 for c in value):  # Unicode's control characters, Cc
+        fail(f"must not hold control characters, got {shown(value)}", source, field)
     return value
 
 
@@ -333,9 +337,8 @@ def known_keys(value, known, source=None, field=None, *, required=(), near_misse
         if close or not near_misses_only:
             hint = f" (did you mean {close[0]!r}?)" if close else ""
             fail(f"unknown key {shown(key)}{hint}; known: {', '.join(known)}", source, f"{field}.{key}" if field else key)
-    for key in required:
-        if key not in value:
-            fail("missing", source, f"{field}.{key}" if field else key)
+    for key in (key for key in required if key not in value):
+        fail("missing", source, f"{field}.{key}" if field else key)
     return value
 
 
@@ -358,15 +361,12 @@ def check_npz(path, *, max_bytes: int = MAX_NPZ_BYTES, what: str = "model file")
                 with archive.open(info) as member, warnings.catch_warnings():
                     warnings.simplefilter("ignore")  # the header of hostile bytes may hold odd escapes
                     version = np.lib.format.read_magic(member)
-                    header = (np.lib.format.read_array_header_1_0 if version == (1, 0)
-                              else np.lib.format.read_array_header_2_0)(member, max_header_size=10_000)
-                shape, _, dtype = header
+                    shape, _, dtype = (np.lib.format.read_array_header_1_0 if version == (1, 0)
+                                       else np.lib.format.read_array_header_2_0)(member, max_header_size=10_000)
                 if dtype.hasobject:
                     fail(f"cannot read {what}: its array {info.filename} holds Python objects, which fuzzynav never loads",
                          source)
-                declared = dtype.itemsize
-                for n in shape:
-                    declared *= n
+                declared = dtype.itemsize * math.prod(shape)  # Python ints: no wrap-round
                 if declared > max_bytes:
                     fail(f"declares an array of {declared} bytes, more than the {max_bytes // 2**20} MiB limit",
                          source, info.filename)

@@ -115,7 +115,7 @@ def test_a_ramp_narrower_than_the_fixed_point_step_is_a_step_and_names_stay_in_c
                                                        "hi": Triangular(0.1, 0.100002, 1.0)})
     y = Variable("y", (0.0, 1.0), {"s": Triangular(0.0, 0.0, 1.0), "b": Triangular(0.0, 1.0, 1.0)})
     rules = ["IF x IS lo THEN y IS s", "IF x IS hi THEN y IS b"]
-    system = FuzzySystem([x], [y], rules, method="mamdani", name="t */ int oops = ; /*\nline")
+    system = FuzzySystem([x], [y], rules, method="mamdani", name="t */ int oops = ; /*")  # (a line break: refused)
     X = np.array([[0.05], [0.5], [0.9], [0.1000005]])
     for fixed in (None, "Q16.16"):
         ours, flags = _run(_compile(system, fixed, tmp_path), X, 1, fixed)  # compiled with -Werror

@@ -903,12 +903,29 @@ EIGHTH = [
          expect="curve: a learning curve's values must lie within ±1e+15, got 1e+308"),
     Case("api-learning-curve-into-a-text-file", python="fuzzynav.plot_learning_curve([1, 2], path=d / 'c.txt')",
          expect="c.txt': matplotlib cannot write '.txt' files"),
-    # a name of control characters: its ESC reached the terminal as a command (run's summary line),
-    # matplotlib warned "Glyph 0 missing" on stderr for a NUL, a line break split the summary
+    # a name of control characters: its ESC reached the terminal as a command (run's summary line,
+    # fis show), matplotlib warned "Glyph 0 missing" on stderr for a NUL, a line break split the line
     *[Case(f"scenario-name-with-{label}", {"s.yaml": ROBOT + "goal: {x: 15, y: 15}\nname: " + name + "\n"}, RUN,
-           expect=f"s.yaml: name: must not hold control characters, got {char}")
-      for label, name, char in (("an-escape", '"\\e[31mred"', "'\\x1b'"), ("a-nul", '"a\\0b"', "'\\x00'"),
-                                ("a-line-break", '"a\\nb"', "'\\n'"))],
+           expect=f"s.yaml: name: must not hold control characters, got {shown}")
+      for label, name, shown in (("an-escape", '"\\e[31mred"', "'\\x1b[31mred'"), ("a-nul", '"a\\0b"', "'a\\x00b'"),
+                                 ("a-line-break", '"a\\nb"', "'a\\nb'"))],
+    Case("fll-engine-name-with-an-escape", {"t.fll": _fll("Engine: t", "Engine: t\x1b[2J")}, _eval("t.fll"),
+         expect="t.fll: line 1: must not hold control characters, got 'Engine: t\\x1b[2J'"),
+    Case("fll-variable-name-with-an-escape", {"t.fll": _fll("InputVariable: x\n", "InputVariable: x\x1b[2J\n")},
+         _eval("t.fll"), expect="t.fll: line 2: must not hold control characters, got 'InputVariable: x\\x1b[2J'"),
+    Case("fll-term-label-with-a-bell", {"t.fll": _fll("term: hi Triangle 0 1 1\nOutput", "term: h\x07i Triangle 0 1 1\nOutput")},
+         _eval("t.fll"), expect="t.fll: line 6: must not hold control characters, got '  term: h\\x07i Triangle 0 1 1'"),
+    Case("api-engine-variable-name-with-an-escape", python="""
+from fuzzynav.fuzzy.io import to_fll
+from fuzzynav.fuzzy.io.fll import from_fll_engine
+engine = from_fll_engine(to_fll(fuzzynav.thesis_system('goal-seeking')))
+engine.inputs[0].name = 'drg\\x1b[2J'  # an engine built in Python, as no file can now give it
+type(engine)(engine.inputs, engine.outputs, engine.blocks)""",
+         expect="variables: must not hold control characters, got 'drg\\x1b[2J'"),
+    Case("fis-name-with-an-escape", {"t.fis": _fis().replace("Name='t'", "Name='t\x1b[2J'")}, _eval("t.fis"),
+         expect="t.fis: line 2: must not hold control characters, got \"Name='t\\x1b[2J'\""),
+    Case("fuzzy-json-name-with-an-escape", python="edited_system(d, lambda doc: doc.update(name='gs\\x1b[2J'))",
+         expect="edited.json: name: must not hold control characters, got 'gs\\x1b[2J'"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

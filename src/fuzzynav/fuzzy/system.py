@@ -80,7 +80,7 @@ class FuzzySystem(VariableNames):
         self.implication = _choice("implication", implication, inference.IMPLICATIONS)
         self.aggregation = _choice("aggregation", aggregation, inference.AGGREGATIONS)
         self.resolution = validation.integer(resolution, field="resolution", lo=2, hi=validation.MAX_RESOLUTION)
-        self.name = name
+        self.name = validation.text(name, field="name", one_line=True)  # printed by fis show, plotted
         self.description = description
         self._check_variables()
         self.compiled = self._compile()

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.membership import MembershipFunction
 from fuzzynav.validation import MAX_UNIVERSE_WIDTH, float_array, shown
@@ -113,7 +114,12 @@ class VariableNames:
         return X
 
     def check_unique_names(self) -> None:
-        """InputError naming the variables that share a name."""
+        """InputError naming the variables that share a name, or a name or term label holding a
+        control character (``fis show`` prints them: an ESC would reach the terminal)."""
+        for var in self.inputs + self.outputs:
+            validation.text(var.name, field="variables", one_line=True)
+            for label in var.terms:
+                validation.text(label, field=f"{var.name} terms", one_line=True)
         names = self.input_names + self.output_names
         dupes = sorted({n for n in names if names.count(n) > 1})
         if dupes:

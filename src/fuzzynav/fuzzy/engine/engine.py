@@ -51,7 +51,7 @@ class Engine(VariableNames):
         self.inputs = list(inputs)
         self.outputs = list(outputs)
         self.blocks = list(blocks)
-        self.name = name
+        self.name = validation.text(name, field="name", one_line=True)  # printed by fis show, plotted
         self.description = description
         self._check()
         self._programs = [_program(block, {v.name for v in self.outputs}) for block in self.blocks]

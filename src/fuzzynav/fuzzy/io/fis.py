@@ -30,10 +30,9 @@ variable says ``LockRange=1``. Beside MATLAB's keys the writer puts fuzzylite's 
 would refuse a key (an input's ``LockRange``, a ``Default`` of NaN) — writes it in a comment,
 ``% fuzzynav: LockRange=1``, which MATLAB and fuzzylite skip and this reader takes as the key; so
 are the samples of an integral defuzzifier other than MATLAB's (``% fuzzynav: Resolution=1000``,
-``% fuzzynav: Grid=midpoints`` in ``[System]``). So a
-system written as ``.fis`` reads back answering as before everywhere (outside the ranges too), and
-the file stays one the other two read. Errors raise :class:`InputError` naming the file, the line
-and the field.
+``% fuzzynav: Grid=midpoints`` in ``[System]``). So a system written as ``.fis`` reads back
+answering as before everywhere (outside the ranges too), and the file stays one the other two
+read. Errors raise :class:`InputError` naming the file, the line and the field.
 """
 
 from __future__ import annotations
@@ -41,6 +40,7 @@ from __future__ import annotations
 import math
 import re
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine, model
 from fuzzynav.fuzzy.engine.convert import engine_to_system
@@ -48,7 +48,6 @@ from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
 from fuzzynav.fuzzy.formula import Function
 from fuzzynav.fuzzy.io.fis_limits import NEGATED_CONCLUSION, negated_conclusion, refuse_what_fis_lacks
 from fuzzynav.fuzzy.system import FuzzySystem
-from fuzzynav.validation import MAX_RESOLUTION
 
 MATLAB_POINTS = 101  # evalfis' default number of output samples
 ANNOTATION = re.compile(r"\s*%\s*fuzzynav:\s*(\S.*)")  # "% fuzzynav: Key=value": a key in a comment
@@ -80,7 +79,8 @@ class _Lines:
     def __init__(self, text: str, source):
         self.source = source
         self.sections: list[dict] = []
-        for line_number, raw in enumerate(text.splitlines(), start=1):
+        for line_number, raw in enumerate(text.splitlines(), start=1):  # names are printed: no ESC, NUL...
+            validation.text(raw.replace("\t", " "), source, f"line {line_number}", one_line=True)
             noted = ANNOTATION.fullmatch(raw)  # a key of this package's, in a comment other readers skip
             line = noted.group(1).strip() if noted else raw.split("%", 1)[0].split("#", 1)[0].strip()
             if not line:
@@ -231,8 +231,8 @@ def _system_options(section: dict, lines: _Lines) -> dict:
         elif key == "Name":
             options[key] = value
         elif key == "Resolution":  # written in a comment (module docstring): the samples of an integral output
-            if not (value.isascii() and value.isdigit() and 1 <= int(value) <= MAX_RESOLUTION):
-                raise lines.error(f"must be a whole number of samples in [1, {MAX_RESOLUTION}], got {value!r}", line,
+            if not (value.isascii() and value.isdigit() and 1 <= int(value) <= validation.MAX_RESOLUTION):
+                raise lines.error(f"must be a whole number of samples in [1, {validation.MAX_RESOLUTION}], got {value!r}", line,
                                   key)
             options[key] = int(value)
         elif key == "Grid":

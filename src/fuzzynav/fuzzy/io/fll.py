@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVariable, RuleBlock, parse_engine_rule
 from fuzzynav.fuzzy.engine.convert import engine_to_system, system_to_engine
@@ -29,7 +30,6 @@ from fuzzynav.fuzzy.fll_terms import num, term_from_fll, term_to_fll
 from fuzzynav.fuzzy.membership import Linear
 from fuzzynav.fuzzy.operators import ACTIVATIONS
 from fuzzynav.fuzzy.system import FuzzySystem
-from fuzzynav.validation import MAX_RESOLUTION
 
 _SECTION_KEYS = {  # the keys fuzzylite's FllImporter accepts in each section
     "Engine": {"description"},
@@ -124,8 +124,9 @@ class _Reader:
             if len(words) > 2:
                 raise self.error(f"{kind} takes at most a resolution, got {value!r}", line)
             resolution = self.number(words[1], line, "resolution") if len(words) > 1 else 1000
-            if not math.isfinite(resolution) or resolution != int(resolution) or not 1 <= resolution <= MAX_RESOLUTION:
-                raise self.error(f"resolution must be an integer in [1, {MAX_RESOLUTION}], got {words[1]!r}", line)
+            most = validation.MAX_RESOLUTION
+            if not math.isfinite(resolution) or resolution != int(resolution) or not 1 <= resolution <= most:
+                raise self.error(f"resolution must be an integer in [1, {most}], got {words[1]!r}", line)
             return Defuzzifier(kind, int(resolution))
         if kind in WEIGHTED:
             kind_type = words[1] if len(words) > 1 else "Automatic"
@@ -157,7 +158,8 @@ class _Reader:
 
 def _sections(text: str, reader: _Reader) -> list[dict]:
     sections: list[dict] = []
-    for number, raw in enumerate(text.splitlines(), start=1):
+    for number, raw in enumerate(text.splitlines(), start=1):  # its names are printed: no ESC, NUL... (tabs indent)
+        validation.text(raw.replace("\t", " "), reader.source, f"line {number}", one_line=True)
         line = raw.split("#", 1)[0].rstrip()
         if not line.strip():
             continue
