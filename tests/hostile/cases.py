@@ -926,6 +926,9 @@ type(engine)(engine.inputs, engine.outputs, engine.blocks)""",
          expect="t.fis: line 2: must not hold control characters, got \"Name='t\\x1b[2J'\""),
     Case("fuzzy-json-name-with-an-escape", python="edited_system(d, lambda doc: doc.update(name='gs\\x1b[2J'))",
          expect="edited.json: name: must not hold control characters, got 'gs\\x1b[2J'"),
+    Case("bench-ray-address-empty", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--backend", "ray",
+                                          "--ray-address", "", "--out", "{d}/b"),  # started a local Ray instead
+         expect="--ray-address: is empty: give HOST:PORT, ray://HOST:PORT, auto or local, or leave it out"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

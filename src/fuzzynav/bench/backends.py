@@ -197,6 +197,9 @@ def ray_address(address: str | None) -> str | None:
     (a local instance); refused, before any run, when Ray would misread it or wait on it: the
     forms are ``auto``, ``local``, ``HOST:PORT`` and ``ray://HOST:PORT``, and a HOST:PORT must
     answer within 5 s (Ray itself keeps retrying an address nobody answers at)."""
+    if address is not None and not address.strip():  # was read as none: $RAY_ADDRESS or a local instance
+        raise InputError("is empty: give HOST:PORT, ray://HOST:PORT, auto or local, or leave it out",
+                         field="--ray-address")
     field = "--ray-address" if address else "RAY_ADDRESS"
     address = address or os.environ.get("RAY_ADDRESS") or None
     if address is None or address in ("auto", "local"):
