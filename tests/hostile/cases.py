@@ -922,6 +922,10 @@ engine = from_fll_engine(to_fll(fuzzynav.thesis_system('goal-seeking')))
 engine.inputs[0].name = 'drg\\x1b[2J'  # an engine built in Python, as no file can now give it
 type(engine)(engine.inputs, engine.outputs, engine.blocks)""",
          expect="variables: must not hold control characters, got 'drg\\x1b[2J'"),
+    Case("fll-discrete-term-on-a-line-of-200000-characters-ok",  # (a line is checked for control characters only)
+         {"t.fll": _fll("term: lo Triangle 0 0 1\n  term: hi Triangle 0 1 1\nOutput",
+                        "term: lo Discrete " + " ".join(f"{i / 20000:.6f} {1 - i / 20000:.6f}" for i in range(20001))
+                        + "\n  term: hi Triangle 0 1 1\nOutput")}, _eval("t.fll"), status=0, expect='{"v": 0.'),
     Case("fis-name-with-an-escape", {"t.fis": _fis().replace("Name='t'", "Name='t\x1b[2J'")}, _eval("t.fis"),
          expect="t.fis: line 2: must not hold control characters, got \"Name='t\\x1b[2J'\""),
     Case("fuzzy-json-name-with-an-escape", python="edited_system(d, lambda doc: doc.update(name='gs\\x1b[2J'))",

@@ -80,7 +80,7 @@ class _Lines:
         self.source = source
         self.sections: list[dict] = []
         for line_number, raw in enumerate(text.splitlines(), start=1):  # names are printed: no ESC, NUL...
-            validation.text(raw.replace("\t", " "), source, f"line {line_number}", one_line=True)
+            validation.text(raw.replace("\t", " "), source, f"line {line_number}", max_length=len(raw), one_line=True)
             noted = ANNOTATION.fullmatch(raw)  # a key of this package's, in a comment other readers skip
             line = noted.group(1).strip() if noted else raw.split("%", 1)[0].split("#", 1)[0].strip()
             if not line:

@@ -159,7 +159,7 @@ class _Reader:
 def _sections(text: str, reader: _Reader) -> list[dict]:
     sections: list[dict] = []
     for number, raw in enumerate(text.splitlines(), start=1):  # its names are printed: no ESC, NUL... (tabs indent)
-        validation.text(raw.replace("\t", " "), reader.source, f"line {number}", one_line=True)
+        validation.text(raw.replace("\t", " "), reader.source, f"line {number}", max_length=len(raw), one_line=True)
         line = raw.split("#", 1)[0].rstrip()
         if not line.strip():
             continue
