@@ -933,6 +933,14 @@ type(engine)(engine.inputs, engine.outputs, engine.blocks)""",
     Case("bench-ray-address-empty", argv=("bench", "circles:1", "--controllers", "goal-seeking", "--backend", "ray",
                                           "--ray-address", "", "--out", "{d}/b"),  # started a local Ray instead
          expect="--ray-address: is empty: give HOST:PORT, ray://HOST:PORT, auto or local, or leave it out"),
+    # fis eval refused the NaN, fis plot --surface drew it as a hole without a word
+    Case("fis-plot-surface-of-nan-answers", python="""
+from fuzzynav.cli import main
+from fuzzynav.fuzzy.io import to_fll
+text = to_fll(fuzzynav.thesis_system('goal-seeking')).replace('term: P Triangle 0.1 3.5 8.0', 'term: P Function alpha')
+(d / 'g.fll').write_text(text)
+raise SystemExit(main(['fis', 'plot', str(d / 'g.fll'), '--surface', '-o', str(d / 'p.png')]))""",
+         expect="g.fll: --surface: alpha: no finite answer for drg=0.0, theta=-3.141592653589793: alpha = nan"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

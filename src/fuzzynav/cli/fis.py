@@ -220,18 +220,6 @@ def _show(args) -> int:
     return 0
 
 
-def _finite(system, X, Y, source: str) -> None:
-    """Refuse an answer that is not a finite number: NaN (no rule fired and the output has no
-    default, or a term evaluated to NaN) or ±inf (a Function term overflowing or dividing by zero)."""
-    bad = ~np.isfinite(Y)
-    if bad.any():
-        row, column = (int(i) for i in np.argwhere(bad)[0])
-        inputs = ", ".join(f"{name}={float(x)!r}" for name, x in zip(system.input_names, X[row]))
-        raise InputError(f"no finite answer for {inputs}: {system.output_names[column]} = {float(Y[row, column])!r} "
-                         "(no rule fired and the output has no finite default, or a term's formula gives a "
-                         "non-finite value)", source=source, field=system.output_names[column])
-
-
 def _naming_the_system(action):
     """``action`` whose :class:`InputError` without a source (a term's formula giving inf, say)
     names the system or file it was asked of."""
@@ -254,7 +242,7 @@ def _eval(args) -> int:
             raise InputError("give either --input or --csv", field="--csv")
         X = _read_csv(system, args.csv)
         Y = system.evaluate(X)
-        _finite(system, X, Y, args.system)
+        system.check_finite(X, Y)
         buffer = io.StringIO()
         writer = csv.writer(buffer, lineterminator="\n")
         writer.writerow(system.input_names + system.output_names)
@@ -264,7 +252,7 @@ def _eval(args) -> int:
         return 0
     X = _parse_inputs(system, args.input or [])
     y = system.evaluate(X)
-    _finite(system, X, y, args.system)
+    system.check_finite(X, y)
     result = {name: float(v) for name, v in zip(system.output_names, y[0])}
     _write(json.dumps(result) + "\n", args.output)
     return 0

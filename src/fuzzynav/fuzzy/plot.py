@@ -84,8 +84,10 @@ def surface(system: FuzzySystem, output: str | None = None, n: int = 61):
     o = system.output_names.index(output) if output else 0
     (a, b), (c, d) = system.inputs[0].universe, system.inputs[1].universe
     x1, x2 = np.meshgrid(np.linspace(a, b, n), np.linspace(c, d, n))
-    y = system.evaluate(np.column_stack([x1.ravel(), x2.ravel()]))[:, o].reshape(x1.shape)
-    return x1, x2, y
+    X = np.column_stack([x1.ravel(), x2.ravel()])
+    y = system.evaluate(X)[:, o:o + 1]
+    system.check_finite(X, y, [system.output_names[o]])  # NaN or inf: a hole in the surface, drawn without a word
+    return x1, x2, y.reshape(x1.shape)
 
 
 def plot_surface(system: FuzzySystem, output: str | None = None, n: int = 61):

@@ -113,6 +113,19 @@ class VariableNames:
                              f"({', '.join(self.input_names)}), got {X.shape}", field="inputs")
         return X
 
+    def check_finite(self, X, Y, outputs=None) -> None:
+        """Refuse an answer ``Y`` (columns: ``outputs``, default all) to the inputs ``X`` that is not
+        a finite number: NaN (no rule fired and the output has no default, or a term evaluated to
+        NaN) or ±inf (a Function term overflowing or dividing by zero)."""
+        names = self.output_names if outputs is None else list(outputs)
+        bad = ~np.isfinite(Y)
+        if bad.any():
+            row, column = (int(i) for i in np.argwhere(bad)[0])
+            inputs = ", ".join(f"{name}={float(x)!r}" for name, x in zip(self.input_names, X[row]))
+            raise InputError(f"no finite answer for {inputs}: {names[column]} = {float(Y[row, column])!r} (no rule "
+                             "fired and the output has no finite default, or a term's formula gives a non-finite "
+                             "value)", field=names[column])
+
     def check_unique_names(self) -> None:
         """InputError naming the variables that share a name, or a name or term label holding a
         control character (``fis show`` prints them: an ESC would reach the terminal)."""
