@@ -180,8 +180,17 @@ def _read_npz(path: Path, what: str) -> dict:
         raise InputError(f"cannot read {what}: not a valid NumPy archive ({type(error).__name__}: {error})",
                          source=str(path)) from None
     if "document" in document:  # a JSON document stored in an archive (save_document)
-        text = validation.text(str(document["document"]), str(path), "document", max_length=validation.MAX_MODEL_BYTES)
-        return validation.parse_json(text, str(path))
+        stored, kind = document["document"], document.get("kind")
+        if stored.dtype.kind != "U" or stored.ndim != 0:  # str() of another array is no JSON: say what it is
+            raise InputError(f"must be one text (a 0-d unicode array, as fuzzynav writes it), got an array of "
+                             f"{stored.dtype} of shape {stored.shape}", source=str(path), field="document")
+        text = validation.text(str(stored), str(path), "document", max_length=validation.MAX_MODEL_BYTES)
+        parsed = validation.parse_json(text, str(path))
+        if kind is not None and isinstance(parsed, dict) and str(kind) != parsed.get("kind"):  # (an edited archive)
+            raise InputError(f"the archive's kind {validation.shown(str(kind))} is not its document's "
+                             f"{parsed.get('kind')!r} (an edited archive? its document is what would run)",
+                             source=str(path), field="kind")
+        return parsed
     if "kind" in document:
         document["kind"] = str(document["kind"]) if document["kind"].dtype.kind == "U" else document["kind"]
     return document

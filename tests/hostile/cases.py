@@ -941,6 +941,19 @@ text = to_fll(fuzzynav.thesis_system('goal-seeking')).replace('term: P Triangle 
 (d / 'g.fll').write_text(text)
 raise SystemExit(main(['fis', 'plot', str(d / 'g.fll'), '--surface', '-o', str(d / 'p.png')]))""",
          expect="g.fll: --surface: alpha: no finite answer for drg=0.0, theta=-3.141592653589793: alpha = nan"),
+    # an .npz model whose kind array was edited ran as its document's kind, silently; a document of
+    # bytes or a number was read by its str(): "line 1, column 1: invalid JSON"
+    Case("npz-model-kind-edited", python="""
+from fuzzynav.cli import main
+assert main(['train', 'q-goal', '--episodes', '2', '--quiet', '--out', str(d / 'm.npz')]) == 0
+with np.load(d / 'm.npz') as data:
+    np.savez(d / 'x.npz', kind=np.array('fql-goal'), document=data['document'])
+raise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.npz')]))""",
+         expect="x.npz: kind: the archive's kind 'fql-goal' is not its document's 'q-goal' (an edited archive?"),
+    Case("npz-model-document-of-bytes",
+         python="np.savez(d / 'x.npz', kind=np.array('q-goal'), document=np.array(b'{}'))\n"
+                "from fuzzynav.cli import main\nraise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.npz')]))",
+         expect="x.npz: document: must be one text (a 0-d unicode array, as fuzzynav writes it), got an array of |S2"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,
