@@ -954,6 +954,23 @@ raise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.npz')]))""",
          python="np.savez(d / 'x.npz', kind=np.array('q-goal'), document=np.array(b'{}'))\n"
                 "from fuzzynav.cli import main\nraise SystemExit(main(['run', 'fig-IV-23', '--model', str(d / 'x.npz')]))",
          expect="x.npz: document: must be one text (a 0-d unicode array, as fuzzynav writes it), got an array of |S2"),
+    # held-out worlds in a folder were compared with a family's (or another folder's) by path only:
+    # the worlds `worlds generate` wrote, or a copy of a training file, were taken as unseen ones
+    Case("tune-held-out-folder-of-the-training-family", python="""
+from fuzzynav.cli import main
+assert main(['worlds', 'generate', 'circles', '--n', '2', '--out', str(d / 'w')]) == 0
+raise SystemExit(main(['tune', 'goal-seeking:gsb', '--worlds', 'circles:2', '--holdout', str(d / 'w'),
+                       '--budget', '400', '--out', str(d / 't.yaml')]))""",
+         expect="--holdout: shares 2 worlds with --worlds circles:2: held-out worlds are worlds the tuner never saw"),
+    Case("tune-held-out-folder-of-a-copy", python="""
+import shutil
+from fuzzynav.cli import main
+assert main(['worlds', 'generate', 'circles', '--n', '2', '--out', str(d / 'w')]) == 0
+(d / 'h').mkdir()
+shutil.copy(d / 'w' / 'circles-0-001.yaml', d / 'h' / 'mine.yaml')
+raise SystemExit(main(['tune', 'goal-seeking:gsb', '--worlds', str(d / 'w'), '--holdout', str(d / 'h'),
+                       '--validation', 'none', '--budget', '400', '--out', str(d / 't.yaml')]))""",
+         expect="--holdout: shares 1 world with --worlds"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

@@ -141,7 +141,7 @@ def check(request: TuneRequest):
     if given is not None and _shared(suite, given):
         example = (f" (e.g. {suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}, the default)"
                    if suite.family else "")
-        raise InputError(f"shares {_shared(suite, given)} worlds with --worlds {request.worlds}: held-out worlds are "
+        raise InputError(f"shares {_worlds(_shared(suite, given))} with --worlds {request.worlds}: held-out worlds are "
                          f"worlds the tuner never saw{example}", field="--holdout")
     holdout = given if given is not None else (
         parse_suite(f"{suite.family}:{suite.count}:{suite.seed + HOLDOUT_OFFSET}") if suite.family else None)
@@ -150,9 +150,9 @@ def check(request: TuneRequest):
                                 "the held-out numbers would be on worlds the choice saw")):
         if chooser is not None and other is not None and _shared(chooser, other):
             if request.validation == "auto":  # the option given is the other one: it is what to change
-                raise InputError(f"shares {_shared(chooser, other)} worlds with the default --validation "
+                raise InputError(f"shares {_worlds(_shared(chooser, other))} with the default --validation "
                                  f"{chooser.name}: {why}", field=option)
-            raise InputError(f"shares {_shared(chooser, other)} worlds with {option} {other.name}: {why}",
+            raise InputError(f"shares {_worlds(_shared(chooser, other))} with {option} {other.name}: {why}",
                              field="--validation")
     made = make_with_systems(controller, dict(request.systems))
     if not callable(getattr(made, "compiled", None)):
@@ -162,14 +162,24 @@ def check(request: TuneRequest):
     return made, system, suite, holdout
 
 
+def _worlds(n: int) -> str:
+    return f"{n} world{'s' * (n != 1)}"
+
+
 def _shared(a, b) -> int:
     """How many worlds suites ``a`` and ``b`` both hold: a family's worlds are numbered from 0 for
-    each seed; a folder's are its files."""
+    each seed; a folder's are its files, compared by content (a copy is the same world), and a file
+    of a folder is a family's world when it is one as ``fuzzynav worlds generate`` writes it."""
     if a.family is not None and b.family is not None:
         return min(a.count, b.count) if (a.family, a.seed) == (b.family, b.seed) else 0
     if a.family is None and b.family is None:
-        return len({Path(f).resolve() for f in a.files} & {Path(f).resolve() for f in b.files})
-    return 0
+        return len({Path(f).read_bytes() for f in a.files} & {Path(f).read_bytes() for f in b.files})
+    from fuzzynav.world.scenario_file import scenario_yaml
+
+    family, folder = (a, b) if a.family is not None else (b, a)
+    index = {family.world_name(i, 0): i for i in range(family.count)}  # its file names: circles-0-007
+    named = [(Path(f), index[Path(f).stem]) for f in folder.files if Path(f).stem in index]
+    return sum(path.read_bytes() == scenario_yaml(family.scenario(i, 0)).encode() for path, i in named)
 
 
 def validation_suite(request: TuneRequest, suite):
