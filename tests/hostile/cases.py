@@ -971,6 +971,19 @@ shutil.copy(d / 'w' / 'circles-0-001.yaml', d / 'h' / 'mine.yaml')
 raise SystemExit(main(['tune', 'goal-seeking:gsb', '--worlds', str(d / 'w'), '--holdout', str(d / 'h'),
                        '--validation', 'none', '--budget', '400', '--out', str(d / 't.yaml')]))""",
          expect="--holdout: shares 1 world with --worlds"),
+    # import barn overwrote an edited world_0.yaml of its --out (worlds generate refuses to)
+    Case("import-barn-over-an-edited-world", python="""
+from fuzzynav.cli import main
+w = barn_world(d, 'world_0')
+assert main(['import', 'barn', str(w), '--out', str(d / 'o')]) == 0
+(d / 'o' / 'world_0.yaml').write_text((d / 'o' / 'world_0.yaml').read_text() + '# mine\\n')
+import_barn(d, w)""", expect="o: --out: world_0.yaml already there, with other content than an import of"),
+    Case("import-barn-again-at-another-scale-ok", python="""
+from fuzzynav.cli import main
+w = barn_world(d, 'world_0')
+assert main(['import', 'barn', str(w), '--out', str(d / 'o'), '--scale', '1.5']) == 0
+assert main(['import', 'barn', str(w), '--out', str(d / 'o')]) == 0
+print((d / 'o' / 'benchmark.json').read_text())""", status=0, expect='"scale": 1.0'),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

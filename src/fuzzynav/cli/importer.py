@@ -3,6 +3,8 @@
 Writes ``DIR/world_N.yaml`` for each world (:mod:`fuzzynav.world.barn`) and ``DIR/benchmark.json``
 with BARN's optimal path length of each (read from ``path_N.npy`` beside the world file or in
 ``path_files/``; without it the BARN score is not computed), so ``fuzzynav bench DIR`` runs them.
+A scenario file already in DIR that is not an import of its world (an edited one) is not
+overwritten: the command is refused before writing any.
 """
 
 from __future__ import annotations
@@ -61,7 +63,8 @@ def run(args) -> int:
         if path.stem in read:
             raise InputError(f"given twice ({read[path.stem][0]} and {path}): both would be written to "
                              f"{out / path.stem}.yaml", source=path.stem)
-        document = barn_scenario(read_posts(path), path.stem, args.scale)
+        posts = read_posts(path)
+        document = barn_scenario(posts, path.stem, args.scale)
         scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
@@ -70,6 +73,18 @@ def run(args) -> int:
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         read[path.stem] = (path, document, entry)
+        target, earlier = out / f"{path.stem}.yaml", references.get(path.stem, {}).get("scale")
+        if target.is_file():  # an edited world is left alone (as `worlds generate` does); an import is redone
+            texts = [yaml.safe_dump(document, sort_keys=False)]
+            if isinstance(earlier, (int, float)) and not isinstance(earlier, bool) and earlier != args.scale:
+                try:
+                    texts.append(yaml.safe_dump(barn_scenario(posts, path.stem, earlier), sort_keys=False))
+                except InputError:  # a scale no import takes: the file is no earlier import's
+                    pass
+            if target.read_bytes() not in [text.encode() for text in texts]:
+                raise InputError(f"{target.name} already there, with other content than an import of {path} "
+                                 "(edited?): not overwritten; move it away or give another --out",
+                                 source=str(out), field="--out")
     for stem, (_, document, entry) in read.items():
         write_text_atomic(out / f"{stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         references[stem] = entry
