@@ -984,6 +984,20 @@ w = barn_world(d, 'world_0')
 assert main(['import', 'barn', str(w), '--out', str(d / 'o'), '--scale', '1.5']) == 0
 assert main(['import', 'barn', str(w), '--out', str(d / 'o')]) == 0
 print((d / 'o' / 'benchmark.json').read_text())""", status=0, expect='"scale": 1.0'),
+    # FQLAgent's own arguments: total_steps=-5 or NaN trained nothing without a word, '100' ended in a
+    # TypeError; predict() of three columns read a goal task's two, of NaN answered NaN
+    *[Case(f"gym-fql-agent-{label}", python=f"""
+from fuzzynav.gym.fql_agent import FQLAgent
+env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mode='vector_entry_point')
+{code}""", expect=expect) for label, code, expect in (
+        ("total-steps-negative", "FQLAgent('goal').learn(env, -5)",
+         "total_steps: must be an integer in [0, 9007199254740992], got -5"),
+        ("total-steps-nan", "FQLAgent('goal').learn(env, float('nan'))", "total_steps: must be an integer, got float nan"),
+        ("tolerance-negative", "FQLAgent('goal', tolerance=-1)", "tolerance: must be >= 0, got -1"),
+        ("predict-three-columns", "FQLAgent('goal').learn(env, 20).predict(np.zeros((1, 3)))",
+         "obs: must be observations of shape (B, 2) of the environment learned on, got shape (1, 3)"),
+        ("predict-nan", "FQLAgent('goal').learn(env, 20).predict([[float('nan'), 0.0]])",
+         "obs: must be finite numbers (no NaN or infinity)"))],
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

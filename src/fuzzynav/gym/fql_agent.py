@@ -37,6 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from fuzzynav import validation
 from fuzzynav.control.learned import single_rays
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import FuzzySystem
@@ -130,6 +131,7 @@ class FQLAgent:
                  tolerance: float = TOLERANCE, prior: str = "thesis"):
         if task not in DESIGNS and task != "avoid":
             raise InputError(f"unknown task {task!r} (known: {', '.join(TASKS)})", field="task")
+        tolerance = validation.number(tolerance, field="tolerance", lo=0.0)  # (-1 was taken: no tie ever)
         self.task, self.gamma, self.lam, self.tolerance = task, gamma, lam, tolerance
         self.prior = prior  # avoid: the initial table, "thesis" (a-priori conclusions) or "none" (q = 0 only)
         self.epsilon = epsilon if epsilon is not None else batch_schedules(1)[1]  # the batch learner's decay
@@ -157,7 +159,13 @@ class FQLAgent:
 
         if not isinstance(env, FuzzynavVectorEnv) or env.episodes.task.name != self.task or env.episodes.discrete:
             raise InputError(f"needs a continuous-action vector environment of task {self.task!r}", field="env")
+        total_steps = validation.count(total_steps, field="total_steps", lo=0, hi=validation.MAX_INTEGER)  # (-5 ran none)
+        seed = validation.seed(seed, field="seed")
+        if callback is not None and not callable(callback):
+            raise InputError(f"must be a function callback(agent, steps) or None, got {validation.shown(callback)}",
+                             field="callback")
         batch = env.num_envs
+        self.observations_ = env.single_observation_space.shape  # what predict() reads
         self.learning_ = self._setup(batch, total_steps, env.episodes.task.head_names)
         rng = np.random.default_rng(seed)
         obs, _ = env.reset(seed=seed)
@@ -181,7 +189,12 @@ class FQLAgent:
 
     def predict(self, obs) -> np.ndarray:
         """Greedy actions of the extracted controller for observations (B, n_obs) → (B, n_act)."""
-        return self._trained("predict").predict(obs)
+        learning = self._trained("predict")
+        obs = validation.finite_array(obs, field="obs", ndim=2)  # NaN answered NaN, text a ValueError
+        if obs.shape[1:] != self.observations_:  # three columns of a goal task's two: the first two were read
+            raise InputError(f"must be observations of shape (B, {self.observations_[0]}) of the environment learned "
+                             f"on, got shape {obs.shape}", field="obs")
+        return learning.predict(obs)
 
     def rule_base(self) -> FuzzySystem:
         """The learned controller as a TS0 system over the design's inputs (§VI.4); for obstacle
