@@ -998,6 +998,21 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
          "obs: must be observations of shape (B, 2) of the environment learned on, got shape (1, 3)"),
         ("predict-nan", "FQLAgent('goal').learn(env, 20).predict([[float('nan'), 0.0]])",
          "obs: must be finite numbers (no NaN or infinity)"))],
+    # a scenario's own robot, imperfections or sensor ring were ignored by the Gymnasium environments:
+    # the episode ran the default robot, noise-free, on the thesis' rays
+    *[Case(f"gym-scenario-with-{label}", {"s.yaml": "robot: {x: 2, y: 2" + robot + "}\ngoal: {x: 15, y: 15}\n" + more},
+           python="gymnasium.make('fuzzynav/GoalSeeking-v0', scenario=str(d / 's.yaml')).reset(seed=0)", expect=expect)
+      for label, robot, more, expect in (
+          ("its-own-robot", ", radius: 1.0", "", "s.yaml: scenario: 's' has a robot of its own (radius 1 m), not the "
+                                                 "environment's params: pass params=scenario.robot"),
+          ("sensor-noise", ", sensor_noise: {range_sigma: 0.1}", "",
+           "s.yaml: scenario: 's' sets the robot's imperfections (range_sigma=0.1): the Gymnasium environments read "
+           "noise-free sensors"),
+          ("a-lidar", "", "sensors: lidar\n", "s.yaml: scenario: 's' names the lidar sensor ring"))],
+    Case("gym-scenario-with-its-own-robot-and-params-ok", {"s.yaml": "robot: {x: 2, y: 2, radius: 1.0}\ngoal: {x: 15, y: 15}\n"},
+         python="s = fuzzynav.load_scenario(str(d / 's.yaml'))\n"
+                "env = gymnasium.make('fuzzynav/GoalSeeking-v0', scenario=s, params=s.robot)\nenv.reset(seed=0)\n"
+                "print(env.unwrapped.episodes.batch.params.radius)", status=0, expect="1.0"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

@@ -29,7 +29,9 @@ class FuzzynavEnv(gymnasium.Env):
     ``"random-obstacles"``, ``"wall-course"``, ``"random-paths"``), ``max_steps``,
     ``decision_steps`` (steps Δt = 0.1 s per action), ``render_mode``. Counts are bounded and
     actions checked (:class:`~fuzzynav.gym.episodes.Episodes`, :mod:`fuzzynav.gym.actions`):
-    a NaN, infinite, mis-shaped or out-of-range discrete action is an ``InputError``.
+    a NaN, infinite, mis-shaped or out-of-range discrete action is an ``InputError``; so is a
+    scenario whose robot is not ``params`` (default the thesis' robot), or that sets the robot's
+    imperfections or another sensor ring (:func:`~fuzzynav.gym.sources.check_robot`).
     """
 
     metadata = {"render_modes": list(RENDER_MODES), "render_fps": 10}

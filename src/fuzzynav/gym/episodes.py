@@ -21,7 +21,7 @@ from fuzzynav import validation
 from fuzzynav.errors import InputError
 from fuzzynav.gym.actions import check_actions
 from fuzzynav.gym.core import RobotBatch
-from fuzzynav.gym.sources import ScenarioSource, check_task, make_source
+from fuzzynav.gym.sources import ScenarioSource, check_robot, check_task, make_source
 from fuzzynav.gym.tasks import REWARDS, TASKS, dense_reward
 from fuzzynav.robot.tricycle import DEFAULT_PARAMS, TricycleParams
 
@@ -135,8 +135,9 @@ class Episodes:
             if len(scenarios) != len(rows):
                 raise InputError(f"{len(scenarios)} scenarios for {len(rows)} environments", field="scenarios")
             scenarios = [ScenarioSource(s).scenarios[0] for s in scenarios]
-        for scenario in scenarios:
+        for scenario in scenarios:  # (its robot, imperfections or sensor ring were ignored)
             check_task(self.task, scenario)
+            check_robot(self.params, scenario)
         self.batch.start(rows, scenarios)
         self.steps[rows] = 0
 

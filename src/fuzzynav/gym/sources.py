@@ -23,9 +23,10 @@ import numpy as np
 
 from fuzzynav.errors import InputError
 from fuzzynav.learn.envs.layouts import EMPTY, RandomGoal, RandomObstacles, WallCourse
+from fuzzynav.robot.imperfections import describe
 from fuzzynav.sim.paths import path_scenario
 from fuzzynav.world.generate import KINDS, check_kind, random_world
-from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE, Goal, Scenario, load_scenario
+from fuzzynav.world.scenario import DEFAULT_GOAL_TOLERANCE, ROBOT_KEYS, ROBOT_UNITS, Goal, Scenario, load_scenario
 
 LAYOUTS = {"random-goal": RandomGoal, "random-obstacles": RandomObstacles, "wall-course": WallCourse}
 
@@ -143,3 +144,22 @@ def check_task(task, source_scenario: Scenario) -> None:
     if wanted is not None and kind != wanted:
         raise InputError(f"the {task.name} task needs a scenario with a {wanted}, "
                          f"{source_scenario.name!r} has a {kind} task", field="scenario")
+
+
+def check_robot(params, scenario: Scenario) -> None:
+    """The environments drive their own robot (``params``) with exact actuation and read the
+    thesis' noise-free sensors: a scenario that says otherwise is refused (InputError), not run
+    with what it says ignored."""
+    other = [f"{key} {getattr(scenario.robot, key):g} {ROBOT_UNITS[key]}" for key in ROBOT_KEYS
+             if getattr(scenario.robot, key) != getattr(params, key)]
+    if other:
+        raise InputError(f"{scenario.name!r} has a robot of its own ({', '.join(other)}), not the environment's "
+                         "params: pass params=scenario.robot (of fuzzynav.load_scenario), or leave the robot's "
+                         "keys out of the scenario", source=scenario.source, field="scenario")
+    if not scenario.imperfections.off:
+        raise InputError(f"{scenario.name!r} sets the robot's imperfections ({describe(scenario.imperfections)}): "
+                         "the Gymnasium environments read noise-free sensors and drive exact actuation",
+                         source=scenario.source, field="scenario")
+    if scenario.sensors not in (None, "thesis"):
+        raise InputError(f"{scenario.name!r} names the {scenario.sensors} sensor ring: the Gymnasium environments "
+                         "read the thesis' 7 rays", source=scenario.source, field="scenario")
