@@ -13,7 +13,7 @@ memory and layer state; the layers' obstacle-point slots are sized up front (:da
 a job that would outgrow them stops with :data:`OVERFLOW` and is run again with twice the room.
 
 Noisy sensors, moving targets and moving obstacles are simulated by the Python loop only; :class:`Worlds` refuses
-them.
+them, and a world that sets the robot's imperfections (``sensor_noise``, ``actuation``, ``odometry``).
 """
 
 from __future__ import annotations
@@ -147,6 +147,11 @@ class Worlds:
             ring = default_ring(scenario, controller)
             if ring.noise_std > 0:
                 raise InputError("tuning simulates noise-free sensors only", source=where, field="sensors")
+            if not scenario.imperfections.off:  # they were ignored: the perfect robot was tuned on, and measured
+                from fuzzynav.robot.imperfections import describe
+
+                raise InputError(f"tuning simulates the perfect robot; this world sets its imperfections "
+                                 f"({describe(scenario.imperfections)})", source=where, field="robot")
             if scenario.task == "target":
                 raise InputError("tuning runs goal and path tasks, not moving targets", source=where,
                                  field="task")
