@@ -1020,6 +1020,9 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
          ("tune", "goal-seeking:gsb", "--worlds", "{d}/w", "--budget", "2", "--population", "2", "--validation", "none"),
          expect="a.yaml: robot: tuning simulates the perfect robot; this world sets its imperfections (latency=1, "
                 "slip=0.4)"),
+    Case("tune-one-world-says-1-world", {"w/a.yaml": "robot: {x: 2, y: 2, theta: 0.78}\ngoal: {x: 15, y: 12}\n"},
+         ("tune", "goal-seeking:gsb", "--worlds", "{d}/w", "--budget", "2", "--population", "2", "--validation", "none",
+          "--quiet"), status=0, expect="mean time 16.00 s over 1 world\n"),  # said "over 1 worlds"
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

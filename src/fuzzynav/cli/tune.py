@@ -116,16 +116,20 @@ def run(args) -> int:
     return 0
 
 
+def _worlds(n: int) -> str:
+    return f"{n} world{'s' * (n != 1)}"
+
+
 def _line(numbers: dict) -> str:
     if "off_band_m" in numbers:  # wall following
         return (f"lasted {100 * numbers['success_rate']:5.1f} % (at >= P/2: {100 * numbers['followed_rate']:5.1f} %), "
                 f"collisions {numbers['collisions']}, closer than d_m "
                 f"{100 * numbers['too_close_share']:4.1f} % of steps, outside [d_m, d_s] {numbers['off_band_m']:.2f} m, "
-                f"speed {numbers['mean_speed_mps']:.2f} m/s over {numbers['worlds']} worlds")
+                f"speed {numbers['mean_speed_mps']:.2f} m/s over {_worlds(numbers['worlds'])}")
     time = numbers["mean_time_s"]
     return (f"success {100 * numbers['success_rate']:5.1f} %, collisions {numbers['collisions']}, "
             f"timeouts {100 * numbers['timeout_rate']:4.1f} %, mean time {'n/a' if time is None else f'{time:.2f} s'}"
-            f" over {numbers['worlds']} worlds")
+            f" over {_worlds(numbers['worlds'])}")
 
 
 def _write(request, result) -> list[str]:
