@@ -977,7 +977,7 @@ from fuzzynav.cli import main
 w = barn_world(d, 'world_0')
 assert main(['import', 'barn', str(w), '--out', str(d / 'o')]) == 0
 (d / 'o' / 'world_0.yaml').write_text((d / 'o' / 'world_0.yaml').read_text() + '# mine\\n')
-import_barn(d, w)""", expect="o: --out: world_0.yaml already there, with other content than an import of"),
+import_barn(d, w)""", expect="o: --out: world_0.yaml already there, with other content (edited?): not overwritten"),
     Case("import-barn-again-at-another-scale-ok", python="""
 from fuzzynav.cli import main
 w = barn_world(d, 'world_0')

@@ -52,6 +52,7 @@ def run(args) -> int:
         world_index,
     )
     from fuzzynav.world.scenario import scenario_from_dict
+    from fuzzynav.world.scenario_file import refuse_overwriting_edits
 
     check_scale(args.scale)
     out = arguments.check_folder(args.out, "--out", (REFERENCE_FILE,))  # made by the first file written
@@ -63,8 +64,7 @@ def run(args) -> int:
         if path.stem in read:
             raise InputError(f"given twice ({read[path.stem][0]} and {path}): both would be written to "
                              f"{out / path.stem}.yaml", source=path.stem)
-        posts = read_posts(path)
-        document = barn_scenario(posts, path.stem, args.scale)
+        document = barn_scenario(read_posts(path), path.stem, args.scale)
         scenario_from_dict(document, source=str(path))  # the start must fit the robot, and so on
         entry = {"barn_world": world_index(path), "scale": args.scale}
         path_file = find_path_file(path)
@@ -73,18 +73,18 @@ def run(args) -> int:
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         read[path.stem] = (path, document, entry)
-        target, earlier = out / f"{path.stem}.yaml", references.get(path.stem, {}).get("scale")
-        if target.is_file():  # an edited world is left alone (as `worlds generate` does); an import is redone
-            texts = [yaml.safe_dump(document, sort_keys=False)]
-            if isinstance(earlier, (int, float)) and not isinstance(earlier, bool) and earlier != args.scale:
-                try:
-                    texts.append(yaml.safe_dump(barn_scenario(posts, path.stem, earlier), sort_keys=False))
-                except InputError:  # a scale no import takes: the file is no earlier import's
-                    pass
-            if target.read_bytes() not in [text.encode() for text in texts]:
-                raise InputError(f"{target.name} already there, with other content than an import of {path} "
-                                 "(edited?): not overwritten; move it away or give another --out",
-                                 source=str(out), field="--out")
+    texts = {}  # what each file will hold; one already there otherwise is an edit, left alone (worlds generate)
+    for stem, (path, document, _) in read.items():
+        target, earlier = out / f"{stem}.yaml", references.get(stem, {}).get("scale")
+        if isinstance(earlier, (int, float)) and not isinstance(earlier, bool) and earlier != args.scale \
+                and target.is_file():  # an import at another scale is redone, not taken for an edit
+            try:
+                if target.read_text() == yaml.safe_dump(barn_scenario(read_posts(path), stem, earlier), sort_keys=False):
+                    continue
+            except (InputError, UnicodeDecodeError):  # a scale no import takes, a file of no text: not an import
+                pass
+        texts[target] = yaml.safe_dump(document, sort_keys=False)
+    refuse_overwriting_edits(texts, out, "--out")
     for stem, (_, document, entry) in read.items():
         write_text_atomic(out / f"{stem}.yaml", yaml.safe_dump(document, sort_keys=False))
         references[stem] = entry
