@@ -130,7 +130,7 @@ def test_fll_round_trip(name):
     (("conjunction: Minimum", "conjunction: Average"), r"unknown conjunction 'Average'"),
     (("activation: General", "activation: Highest two"), r"line 24: bad parameters for Highest"),
     (("WeightedSum TakagiSugeno", "WeightedSum Mamdani"), r"line 13: WeightedSum type must be one of"),
-    (("term: up Ramp 0.0 1.0", "term: up Ramp 0.0 one"), r"line 6: term up: could not convert"),
+    (("term: up Ramp 0.0 1.0", "term: up Ramp 0.0 one"), r"line 6: term up: 'one' is not a number"),
 ])
 def test_errors_name_the_line(change, message):
     text = ONE_INPUT.format(rules="  rule: if x is up and x is down then y is one\n", lock="false", out_lock="false",

@@ -1023,6 +1023,20 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
     Case("tune-one-world-says-1-world", {"w/a.yaml": "robot: {x: 2, y: 2, theta: 0.78}\ngoal: {x: 15, y: 12}\n"},
          ("tune", "goal-seeking:gsb", "--worlds", "{d}/w", "--budget", "2", "--population", "2", "--validation", "none",
           "--quiet"), status=0, expect="mean time 16.00 s over 1 world\n"),  # said "over 1 worlds"
+    # numbers of a .fll file (and rule weights) were read by Python's float: '1_0' as 10, '٢' as 2,
+    # where fuzzylite, the .fis reader and the command line refuse them; a .fis '٢٨' was read as 28
+    Case("fll-term-breakpoint-with-an-underscore", {"t.fll": _fll("term: hi Triangle 0 1 1\nOutput",
+                                                                   "term: hi Triangle 0 1_0 1\nOutput")},
+         _eval("t.fll"), expect="t.fll: line 6: term hi: '1_0' is not a number"),
+    Case("fll-range-of-arabic-indic-digits", {"t.fll": _fll("range: 0.000 1.000", "range: 0.000 \u0661")},
+         _eval("t.fll"), expect="t.fll: line 4: range must be a number, got '\u0661'"),
+    Case("fll-rule-weight-with-an-underscore", {"t.fll": _fll("then v is hi\n", "then v is hi with 0_1\n")},
+         _eval("t.fll"), expect="rule weight '0_1' is not a number"),
+    Case("fuzzy-json-rule-weight-with-an-underscore",
+         python="edited_system(d, lambda doc: doc.update(rules=[doc['rules'][0] + ' WITH 0_1'] + doc['rules'][1:]))",
+         expect="edited.json: rules[0]: rule weight '0_1' is not a number"),
+    Case("fis-range-of-arabic-indic-digits", {"t.fis": _fis("[0 \u0661]")}, _eval("t.fis"),
+         expect="Range must be [lo hi], got '[0 \u0661]'"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

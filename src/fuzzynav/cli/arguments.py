@@ -7,7 +7,6 @@ A bad value is an argparse error: usage and message on stderr, exit status 2, no
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import re
 import tempfile
@@ -82,20 +81,15 @@ def names(text: str) -> list[str]:
     return found
 
 
-_DECIMAL = re.compile(r"\s*[+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf|infinity|nan)\s*", re.IGNORECASE | re.ASCII)
 _INTEGER = re.compile(r"\s*[+-]?\d+\s*", re.ASCII)
 
 
 def decimal(text: str) -> float:
-    """A number written in ASCII decimal (Python's ``float`` also reads ``1_000`` and other
-    scripts' digits, ``٣``); ValueError otherwise, or when a finite literal overflows to infinity.
-    The type of every option and value that is a number."""
-    if not isinstance(text, str) or not _DECIMAL.fullmatch(text):
-        raise ValueError(f"{text!r} is not a number")
-    value = float(text)
-    if math.isinf(value) and "inf" not in text.lower():
-        raise ValueError(f"{text.strip()} is too large for a float")
-    return value
+    """The type of every option and value that is a number: :func:`fuzzynav.fuzzy.formula.decimal`
+    (ASCII decimal; ValueError otherwise), which the fuzzy-system readers share."""
+    from fuzzynav.fuzzy.formula import decimal as ascii_decimal
+
+    return ascii_decimal(text)
 
 
 def whole(text: str) -> int:

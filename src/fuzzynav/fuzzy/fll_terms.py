@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
-from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.formula import Function, decimal
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Linear, Ramp, Sigmoid, Singleton, Trapezoidal, Triangular
 
 if TYPE_CHECKING:  # annotations only
@@ -76,7 +76,7 @@ def term_from_fll(value: str, source, line: int) -> tuple[str, MembershipFunctio
         if kind == "Function":
             return label, Function(value.split(None, 2)[2] if len(parts) > 2 else "")
         arity, build = _TERMS[kind][:2] if kind in _TERMS else (0, None)
-        return label, extra.from_numbers(kind.lower(), [float(x) for x in raw], build, arity)
+        return label, extra.from_numbers(kind.lower(), [decimal(x) for x in raw], build, arity)
     except ValueError as error:
         raise InputError(f"term {label}: {error}", source=source, field=where) from None
 

@@ -10,6 +10,7 @@ passed to Python's ``eval``.
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -30,7 +31,21 @@ _INFIX = {  # operator: (precedence, function); higher binds tighter
     "*": (4, np.multiply), "/": (4, np.divide), "%": (4, np.fmod), "^": (5, np.float_power),
     "**": (5, np.float_power),
 }
-_TOKEN = re.compile(r"\s*(\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|\*\*|[A-Za-z_][A-Za-z0-9_.]*|[-+*/%^(),!~])")
+_TOKEN = re.compile(r"\s*(\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|\*\*|[A-Za-z_][A-Za-z0-9_.]*|[-+*/%^(),!~])",
+                    re.ASCII)  # (a digit of another script, ٢, was read as one)
+_DECIMAL = re.compile(r"\s*[+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf|infinity|nan)\s*", re.IGNORECASE | re.ASCII)
+
+
+def decimal(text: str) -> float:
+    """A number written in ASCII decimal (Python's ``float`` also reads ``1_000`` and other
+    scripts' digits, ``٣``); ValueError otherwise, or when a finite literal overflows to infinity.
+    How the command line reads a number, and the ``.fll`` reader (fuzzylite refuses the others)."""
+    if not isinstance(text, str) or not _DECIMAL.fullmatch(text):
+        raise ValueError(f"{text!r} is not a number")
+    value = float(text)
+    if math.isinf(value) and "inf" not in text.lower():
+        raise ValueError(f"{text.strip()} is too large for a float")
+    return value
 
 
 def _tokens(text: str) -> list[str]:

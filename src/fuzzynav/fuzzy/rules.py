@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from numbers import Real
 
 from fuzzynav.errors import InputError
+from fuzzynav.fuzzy.formula import decimal
 from fuzzynav.validation import shown
 
 
@@ -93,7 +94,7 @@ def parse_rule(text: str) -> Rule:
         if w != len(tail) - 2:
             raise InputError(f"WITH must be followed by exactly one weight at the end of {text!r}")
         try:
-            weight = float(tail[-1])
+            weight = decimal(tail[-1])  # ('0_1' was read as 1)
         except ValueError:
             raise InputError(f"rule weight {tail[-1]!r} is not a number in {text!r}") from None
         tail = tail[:w]

@@ -11,6 +11,7 @@ file and line.
 from __future__ import annotations
 
 from fuzzynav.fuzzy.engine.model import EngineRule, Operator, Proposition
+from fuzzynav.fuzzy.formula import decimal
 from fuzzynav.fuzzy.operators import HEDGES
 from fuzzynav.validation import MAX_DEPTH
 
@@ -91,7 +92,7 @@ def parse_engine_rule(text: str, inputs: dict[str, list[str]], outputs: dict[str
     tail = words[then + 1:]
     if len(tail) >= 2 and tail[-2].lower() == "with":
         try:
-            weight = float(tail[-1])
+            weight = decimal(tail[-1])  # ('0_1' was read as 1)
         except ValueError:
             raise ValueError(f"rule weight {tail[-1]!r} is not a number") from None
         tail = tail[:-2]

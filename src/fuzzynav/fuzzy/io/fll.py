@@ -27,6 +27,7 @@ from fuzzynav.fuzzy.engine import Defuzzifier, Engine, InputVariable, OutputVari
 from fuzzynav.fuzzy.engine.convert import engine_to_system, system_to_engine
 from fuzzynav.fuzzy.engine.model import INTEGRAL, WEIGHTED, WEIGHTED_TYPES
 from fuzzynav.fuzzy.fll_terms import num, term_from_fll, term_to_fll
+from fuzzynav.fuzzy.formula import decimal
 from fuzzynav.fuzzy.membership import Linear
 from fuzzynav.fuzzy.operators import ACTIVATIONS
 from fuzzynav.fuzzy.system import FuzzySystem
@@ -111,7 +112,7 @@ class _Reader:
 
     def number(self, value: str, line, what: str) -> float:
         try:
-            return float(value)
+            return decimal(value)  # as fuzzylite: '2_8' and '٢' are no numbers (float read 28 and 2)
         except ValueError:
             raise self.error(f"{what} must be a number, got {value!r}", line) from None
 
@@ -144,11 +145,11 @@ class _Reader:
             raise self.error(f"unknown activation {kind!r} (one of {', '.join(ACTIVATIONS)})", line)
         try:
             if kind in ("First", "Last"):
-                return kind, (int(params[0]), float(params[1])) if params else (1, 0.0)
+                return kind, (int(params[0]), decimal(params[1])) if params else (1, 0.0)
             if kind in ("Highest", "Lowest"):
                 return kind, (int(params[0]),) if params else (1,)
             if kind == "Threshold":
-                return kind, (params[0], float(params[1])) if params else (">", 0.0)
+                return kind, (params[0], decimal(params[1])) if params else (">", 0.0)
         except (ValueError, IndexError):
             raise self.error(f"bad parameters for {kind}: {' '.join(params)!r}", line) from None
         if params:
