@@ -1037,6 +1037,9 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
          expect="edited.json: rules[0]: rule weight '0_1' is not a number"),
     Case("fis-range-of-arabic-indic-digits", {"t.fis": _fis("[0 \u0661]")}, _eval("t.fis"),
          expect="Range must be [lo hi], got '[0 \u0661]'"),
+    Case("fis-mf-parameter-with-an-underscore", {"t.fis": _fis().replace("MF2='hi':'trimf',[0 1 1]\n\n[Output1]",
+                                                                          "MF2='hi':'trimf',[0 1_0 1_0]\n\n[Output1]")},
+         _eval("t.fis"), expect="t.fis: line 18: hi: '1_0' is not a number"),  # read as [0 10 10]
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

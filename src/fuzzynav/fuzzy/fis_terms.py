@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy import terms as extra
-from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.formula import Function, decimal
 from fuzzynav.fuzzy.membership import Bell, Gaussian, Linear, Ramp, Sigmoid, Singleton, Trapezoidal, Triangular
 
 if TYPE_CHECKING:  # annotations only
@@ -99,7 +99,7 @@ def term_from_fis(value: str, source, line: int) -> tuple[str, MembershipFunctio
     try:
         if kind == "function":
             return label, Function(raw)
-        p = [float(x) for x in raw.replace(",", " ").split()]
+        p = [decimal(x) for x in raw.replace(",", " ").split()]  # ('1_0' was read as 10)
         if kind in _MATLAB and len(p) > _MFS[kind][1] and not any(p[_MFS[kind][1]:]):
             p = p[:_MFS[kind][1]]  # older MATLAB files pad every parameter list with zeros to the same length
         if kind not in _MFS and kind not in ("constant", "linear", "discretemf"):

@@ -45,7 +45,7 @@ from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.engine import Engine, model
 from fuzzynav.fuzzy.engine.convert import engine_to_system
 from fuzzynav.fuzzy.fis_terms import number, term_from_fis, term_to_fis
-from fuzzynav.fuzzy.formula import Function
+from fuzzynav.fuzzy.formula import Function, decimal
 from fuzzynav.fuzzy.io.fis_limits import NEGATED_CONCLUSION, negated_conclusion, refuse_what_fis_lacks
 from fuzzynav.fuzzy.system import FuzzySystem
 
@@ -152,7 +152,7 @@ def _variable(section: dict, lines: _Lines, output: bool, matlab: bool):
             order.append(label)
         elif key in ("Enabled", "Default", "LockPrevious", "LockRange") and (output or key in ("Enabled", "LockRange")):
             try:
-                number = float(value)
+                number = decimal(value)
             except ValueError:
                 raise lines.error(f"{key} must be a number, got {value!r}", line, key) from None
             if key == "Default":
@@ -189,12 +189,12 @@ def _proposition(code: float, var, order: list, lines: _Lines, line) -> model.Pr
 
 
 def _rule(text: str, inputs, outputs, lines: _Lines, line) -> tuple[model.EngineRule, int]:
-    match = re.fullmatch(r"([-\d.\s]+),([-\d.\s]+)\(\s*([-\d.eE+]+)\s*\)\s*:\s*(\d)", text)
+    match = re.fullmatch(r"([-\d.\s]+),([-\d.\s]+)\(\s*([-\d.eE+]+)\s*\)\s*:\s*(\d)", text, re.ASCII)
     if not match:
         raise lines.error(f"a rule reads 'i1 i2 ..., o1 ... (weight) : 1|2', got {text!r}", line)
     try:
-        ins, outs = ([float(v) for v in group.split()] for group in match.group(1, 2))
-        weight = float(match.group(3))
+        ins, outs = ([decimal(v) for v in group.split()] for group in match.group(1, 2))
+        weight = decimal(match.group(3))
     except ValueError as error:
         raise lines.error(f"rule codes and weight are numbers: {error}", line) from None
     if len(ins) != len(inputs) or len(outs) != len(outputs):
