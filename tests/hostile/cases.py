@@ -1040,6 +1040,14 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
     Case("fis-mf-parameter-with-an-underscore", {"t.fis": _fis().replace("MF2='hi':'trimf',[0 1 1]\n\n[Output1]",
                                                                           "MF2='hi':'trimf',[0 1_0 1_0]\n\n[Output1]")},
          _eval("t.fis"), expect="t.fis: line 18: hi: '1_0' is not a number"),  # read as [0 10 10]
+    # written to .fis, read back renamed: the variable x-y as xy, the system a%b as a (% begins a comment)
+    Case("fll-variable-name-to-fis-read-back-otherwise",
+         {"t.fll": _FLL.replace("InputVariable: x\n", "InputVariable: x-y\n").replace("if x is", "if x-y is")},
+         ("fis", "convert", "{d}/t.fll", "--to", "fis", "-o", "{d}/t.fis"),
+         expect="t.fll: x-y: the variable name 'x-y' would read back otherwise from a .fis file"),
+    Case("fll-engine-name-to-fis-read-back-otherwise", {"t.fll": _fll("Engine: t\n", "Engine: t%2\n")},
+         ("fis", "convert", "{d}/t.fll", "--to", "fis", "-o", "{d}/t.fis"),
+         expect="t.fll: name: the name 't%2' would read back otherwise from a .fis file"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

@@ -7,10 +7,14 @@ disabled block or variable (``enabled: false``), an activation that fires only s
 written without it, so it is refused, naming what it uses. So is a negated conclusion of a
 Mamdani output (``then v is not hi``, code ``-2``), which the two read otherwise: MATLAB implies with
 1 − μ of the term (``fisFinalOutputMf`` of its ``fis.c``), fuzzylite with the term at 1 − the rule's
-degree (its hedges act on the degree); the reader refuses it under MATLAB's semantics too.
+degree (its hedges act on the degree); the reader refuses it under MATLAB's semantics too. So is a
+name the reader would read otherwise: a variable's or a term's of other characters than letters,
+digits and ``_``, a system's holding ``%`` or ``#`` (a comment begins there).
 """
 
 from __future__ import annotations
+
+import re
 
 from fuzzynav.errors import InputError
 from fuzzynav.fuzzy.fis_terms import number
@@ -49,3 +53,10 @@ def refuse_what_fis_lacks(engine) -> None:
     negated = next((text for text in (negated_conclusion(rule, outs) for rule in block.rules) if text), None)
     if negated:
         raise InputError(f"{NEGATED_CONCLUSION} ({negated!r}): write it as fll", field="rules")
+    lost = [(f"name {engine.name!r}", "name")] if re.search(r"[%#]", engine.name) else []  # a comment from there
+    for v in engine.inputs + outs:  # the reader keeps a name's letters, digits and _ only
+        lost += [(f"variable name {v.name!r}", v.name)] if re.search(r"\W", v.name) else []
+        lost += [(f"term name {label!r}", f"{v.name}.{label}") for label in v.terms if re.search(r"\W", label)]
+    if lost:
+        raise InputError(f"the {lost[0][0]} would read back otherwise from a .fis file (its reader keeps a name's "
+                         "letters, digits and _, and % or # begins a comment): write it as fll", field=lost[0][1])
