@@ -1048,6 +1048,19 @@ env = gymnasium.make_vec('fuzzynav/GoalSeeking-v0', num_envs=2, vectorization_mo
     Case("fll-engine-name-to-fis-read-back-otherwise", {"t.fll": _fll("Engine: t\n", "Engine: t%2\n")},
          ("fis", "convert", "{d}/t.fll", "--to", "fis", "-o", "{d}/t.fis"),
          expect="t.fll: name: the name 't%2' would read back otherwise from a .fis file"),
+    # a folder, world file or model file named with an ESC: bench printed it to the terminal in its
+    # table, and matplotlib warned "Glyph 27 missing" on stderr for each plot
+    Case("bench-folder-name-with-an-escape", {"w\x1b[31m/a.yaml": "robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nname: a\n"},
+         ("bench", "{d}/w\x1b[31m", "--controllers", "goal-seeking", "--out", "{d}/b"),
+         expect="SUITE: must not hold control characters, got 'w\\x1b[31m'"),
+    Case("bench-world-file-name-with-an-escape", {"w/a\x1b[2J.yaml": "robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\nname: a\n"},
+         ("bench", "{d}/w", "--controllers", "goal-seeking", "--out", "{d}/b"),
+         expect="SUITE: must not hold control characters, got 'a\\x1b[2J'"),
+    Case("bench-model-file-name-with-an-escape", python="""
+from fuzzynav.cli import main
+assert main(['train', 'q-goal', '--episodes', '2', '--quiet', '--out', str(d / 'm\\x1b[1m.json')]) == 0
+raise SystemExit(main(['bench', 'circles:1', '--controllers', str(d / 'm\\x1b[1m.json'), '--out', str(d / 'b')]))""",
+         expect="--controllers: must not hold control characters, got 'm\\x1b[1m'"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

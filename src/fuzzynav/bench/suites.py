@@ -108,6 +108,8 @@ def parse_suite(spec: str) -> Suite:
         if twice:
             raise InputError(f"{', '.join(twice)} would be one world (a world is named by its file name without "
                              "the suffix): rename one", source=spec, field="SUITE")
+        for label in (path.resolve().name, *(f.stem for f in files)):  # they name the runs, the table, the plots
+            validation.text(label, None, "SUITE", one_line=True)
         references = read_references(path / REFERENCE_FILE) if (path / REFERENCE_FILE).is_file() else {}
         return Suite(name=path.resolve().name, files=tuple(str(f) for f in files), references=references)
     family, *rest = spec.split(":")

@@ -90,6 +90,8 @@ def _controllers(text: str) -> tuple[tuple[str, str], ...]:
             raise InputError(error.problem, field="--controllers") from None
         pairs.append((Path(spec).stem if is_model_file(spec) else spec, spec))
     labels = [label for label, _ in pairs]
+    for label in labels:  # a model file's name labels rows, the table on the terminal and the plots
+        validation.text(label, None, "--controllers", one_line=True)
     if len(set(labels)) != len(labels):
         raise InputError(f"controller labels repeat ({', '.join(labels)})", field="--controllers")
     return tuple(pairs)
