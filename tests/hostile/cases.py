@@ -1061,6 +1061,10 @@ from fuzzynav.cli import main
 assert main(['train', 'q-goal', '--episodes', '2', '--quiet', '--out', str(d / 'm\\x1b[1m.json')]) == 0
 raise SystemExit(main(['bench', 'circles:1', '--controllers', str(d / 'm\\x1b[1m.json'), '--out', str(d / 'b')]))""",
          expect="--controllers: must not hold control characters, got 'm\\x1b[1m'"),
+    Case("fis-show-training-protocol-with-an-escape",  # printed on the terminal as it was
+         python="edited_model(d, ['fql-goal', '--episodes', '2', '--quiet'], "
+                "lambda doc: doc['training'].update(protocol='\\x1b[2J'), ['fis', 'show'])",
+         expect="x.json: training.protocol: must not hold control characters, got '\\x1b[2J'"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

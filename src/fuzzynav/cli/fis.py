@@ -205,11 +205,12 @@ def training_report(name: str) -> str | None:
     rules = validation.integer(training.get("rules_learned", len(document.get("rules", []))), name,
                                "training.rules_learned", lo=0)
     changed = validation.integer(training["rules_changed"], name, "training.rules_changed", lo=0, hi=rules)
-    protocol = training.get("protocol", "?")
+    protocol, prior = (validation.text(training.get(key, "?"), name, f"training.{key}", max_length=100, one_line=True)
+                       for key in ("protocol", "prior"))  # printed: an ESC of an edited file reached the terminal
     if protocol == "parallel":
-        protocol += f", {training.get('robots_per_batch')} robots per batch"
-    return (f"learned ({protocol} protocol, prior {training.get('prior', '?')}): {changed} of "
-            f"{rules} rules differ from the initial table")
+        robots = validation.integer(training.get("robots_per_batch"), name, "training.robots_per_batch", lo=1)
+        protocol += f", {robots} robots per batch"
+    return f"learned ({protocol} protocol, prior {prior}): {changed} of {rules} rules differ from the initial table"
 
 
 def _show(args) -> int:
