@@ -7,15 +7,21 @@ the field and what is wrong; the command line prints it on stderr and exits with
 from __future__ import annotations
 
 
+def escaped(text) -> str:
+    """``text`` with its control characters written as escapes (``\\x1b``): a file or an argument
+    named with an ESC reached the terminal as a command when the message named it."""
+    return "".join(repr(c)[1:-1] if ord(c) < 32 or 127 <= ord(c) < 160 else c for c in str(text))
+
+
 class InputError(ValueError):
     """Bad user input: the message names the source, the field and the problem."""
 
     def __init__(self, message: str, *, source: str | None = None, field: str | None = None):
         parts = []
         if source:
-            parts.append(str(source))
+            parts.append(escaped(source))
         if field:
-            parts.append(str(field))
+            parts.append(escaped(field))
         prefix = ": ".join(parts)
         super().__init__(f"{prefix}: {message}" if prefix else message)
         self.source = source

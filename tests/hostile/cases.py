@@ -1065,6 +1065,11 @@ raise SystemExit(main(['bench', 'circles:1', '--controllers', str(d / 'm\\x1b[1m
          python="edited_model(d, ['fql-goal', '--episodes', '2', '--quiet'], "
                 "lambda doc: doc['training'].update(protocol='\\x1b[2J'), ['fis', 'show'])",
          expect="x.json: training.protocol: must not hold control characters, got '\\x1b[2J'"),
+    # an argument or a file named with an ESC was printed as it is in the error naming it
+    Case("run-scenario-argument-with-an-escape", argv=("run", "fig\x1b[2J"),
+         expect="fig\\x1b[2J: SCENARIO: no such scenario file or built-in scenario"),
+    Case("fis-eval-input-with-an-escape", argv=("fis", "eval", "goal-seeking", "--input", "d\x1b[2Jrg=1"),
+         expect="goal-seeking: --input d\\x1b[2Jrg=1: expected NAME=VALUE"),
 ]
 
 CASES = [*GYM, *API, *COUNTS, *FUZZY, *CAMPAIGN, *CHECKPOINT, *SCENARIOS, *ASCII, *NAMES_AND_IMPORTS, *SEVENTH,

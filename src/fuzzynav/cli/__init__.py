@@ -24,7 +24,7 @@ from importlib import import_module
 
 from fuzzynav import __version__
 from fuzzynav.cli import arguments
-from fuzzynav.errors import InputError
+from fuzzynav.errors import InputError, escaped
 
 # Sub-command modules, in the order ``fuzzynav --help`` lists them: module -> (command, its line in
 # that list). The lines are kept here so that listing the commands imports none of their modules.
@@ -215,7 +215,7 @@ def main(argv: list[str] | None = None) -> int:
         return 141
     except OSError as error:
         # a file named on the command line cannot be read or written (missing folder, permission, ...)
-        where = f"{error.filename}: " if error.filename else ""
+        where = f"{escaped(error.filename)}: " if error.filename else ""
         problem = error.strerror or error
         if isinstance(error, FileExistsError) and error.filename and os.path.isfile(error.filename):
             problem = "is a file, not a folder (give a new or an existing folder)"
