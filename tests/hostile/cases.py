@@ -860,6 +860,9 @@ SILENT = [
          {"s.yaml": "robot: {x: 2, y: 2}\ngoal: {x: 15, y: 15}\n"
                     "obstacles: [{ellipse: {center: [10, 10], radii: [2, 1], angle: -45}}]\n"}, RUN,
          expect="s.yaml: obstacles[0].ellipse.angle: must be in radians, at most 2π = 6.2832 in magnitude, got -45"),
+    Case("api-start-heading-in-degrees",
+         python=f"fuzzynav.run_episode({_SCENARIO}, {_CONTROLLER}, start=[2, 2, 90])",
+         expect="starts[0].theta: must be in radians, at most 2π = 6.2832 in magnitude, got 90.0 (if that is degrees"),
     Case("scenario-theta-one-turn-ok", {"s.yaml": "robot: {x: 5, y: 5, theta: -6.28}\ngoal: {x: 15, y: 15}\n"}, RUN,
          status=0, expect='"outcome": "reached"'),
     Case("fql-avoid-model-rule-deleted",

@@ -17,6 +17,7 @@ import numpy as np
 from fuzzynav import validation
 from fuzzynav.errors import CommandError, InputError
 from fuzzynav.kernels import step as step_kernel
+from fuzzynav.world import limits
 
 INVALID_COMMAND = 4  # outcome code beside the kernel's RUNNING, REACHED, COLLISION, TIMEOUT (0-3)
 
@@ -96,7 +97,8 @@ def invalid_states(state, step: int, history=None) -> dict[int, tuple[int, str]]
 def check_starts(starts, world=None) -> np.ndarray:
     """Start poses given to the simulator: one pose (x, y, θ) or ``(N, 3)`` of them, N at most
     ``validation.MAX_ROBOTS``, numbers, finite (``[[5, 5], [6, 6], [7, 7]]`` is refused, not
-    read as two poses), inside ``world`` when given (a start outside it ran as a collision)."""
+    read as two poses), headings in radians (:func:`fuzzynav.world.limits.angle`), inside ``world``
+    when given (a start outside it ran as a collision)."""
     try:
         poses = np.asarray(starts, dtype=float)
     except (TypeError, ValueError):
@@ -108,6 +110,9 @@ def check_starts(starts, world=None) -> np.ndarray:
                          f"got an array of shape {poses.shape}", field="starts")
     if not np.isfinite(poses).all():
         raise InputError("must be finite", field="starts")
+    turned = np.flatnonzero(np.abs(poses[:, 2]) > limits.MAX_ANGLE)
+    if turned.size:  # a heading in degrees, as a scenario file's theta
+        limits.angle(float(poses[turned[0], 2]), field=f"starts[{int(turned[0])}].theta")
     outside = np.flatnonzero(~world.contains(poses[:, :2])) if world is not None else np.zeros(0, dtype=int)
     if outside.size:
         i = int(outside[0])
