@@ -38,6 +38,21 @@ fuzzynav bench barn-1.5 --controllers fuzzy-5b,dwa --out barn-bench""")
                       help="multiply every length by S (default 1: BARN's true size)")
 
 
+def _imported_at(target: Path, posts: Path, stem: str, earlier, scale: float) -> bool:
+    """Whether ``target`` holds what importing the BARN world ``posts`` at the ``earlier`` scale of
+    the folder's reference file wrote, that scale being another than ``scale``."""
+    import yaml
+
+    from fuzzynav.world.barn import barn_scenario, read_posts
+
+    if not isinstance(earlier, (int, float)) or isinstance(earlier, bool) or earlier == scale or not target.is_file():
+        return False
+    try:
+        return target.read_text() == yaml.safe_dump(barn_scenario(read_posts(posts), stem, earlier), sort_keys=False)
+    except (InputError, UnicodeDecodeError):  # a scale no import takes, a file of no text: not an import
+        return False
+
+
 def run(args) -> int:
     import yaml
 
@@ -73,20 +88,14 @@ def run(args) -> int:
         else:
             entry["barn_optimal_path_m"] = round(args.scale * optimal_path_length(path_file), 6)
         read[path.stem] = (path, document, entry)
-    texts = {}  # what each file will hold; one already there otherwise is an edit, left alone (worlds generate)
-    for stem, (path, document, _) in read.items():
-        target, earlier = out / f"{stem}.yaml", references.get(stem, {}).get("scale")
-        if isinstance(earlier, (int, float)) and not isinstance(earlier, bool) and earlier != args.scale \
-                and target.is_file():  # an import at another scale is redone, not taken for an edit
-            try:
-                if target.read_text() == yaml.safe_dump(barn_scenario(read_posts(path), stem, earlier), sort_keys=False):
-                    continue
-            except (InputError, UnicodeDecodeError):  # a scale no import takes, a file of no text: not an import
-                pass
-        texts[target] = yaml.safe_dump(document, sort_keys=False)
-    refuse_overwriting_edits(texts, out, "--out")
-    for stem, (_, document, entry) in read.items():
-        write_text_atomic(out / f"{stem}.yaml", yaml.safe_dump(document, sort_keys=False))
+    # what each file will hold; one already there otherwise is an edit, left alone (as worlds generate
+    # leaves it), unless an import at another scale wrote it: that is redone
+    texts = {stem: yaml.safe_dump(document, sort_keys=False) for stem, (_, document, _) in read.items()}
+    refuse_overwriting_edits({out / f"{stem}.yaml": text for stem, text in texts.items()
+                              if not _imported_at(out / f"{stem}.yaml", read[stem][0], stem,
+                                                  references.get(stem, {}).get("scale"), args.scale)}, out, "--out")
+    for stem, (_, _, entry) in read.items():
+        write_text_atomic(out / f"{stem}.yaml", texts[stem])
         references[stem] = entry
     write_text_atomic(reference_file, json.dumps({"source": "BARN", "scenarios": references}, indent=1, sort_keys=True) + "\n")
     print(f"{len(args.worlds)} BARN world{'s' * (len(args.worlds) != 1)} -> {out}", file=sys.stderr)
