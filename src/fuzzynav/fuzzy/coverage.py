@@ -60,8 +60,8 @@ def uncovered_situation(system, free: tuple[dict, ...] = ()) -> dict | None:
 
 def check_rules_cover(system, source=None, free: tuple[dict, ...] = ()) -> None:
     """Refuse a learned rule base with a combination of input terms that no rule covers
-    (:func:`uncovered_situation`): there it would fire no rule, and the robot would stop or
-    drift rather than do what it learned."""
+    (:func:`uncovered_situation`; the learned TS0 tables of §VI.4 fill their grid): there no rule
+    would fire, and the output would be the empty sum, not anything learned."""
     size = math.prod(len(v.terms) for v in system.inputs)
     if size > MAX_SITUATIONS:
         raise InputError(f"a rule grid of {size:,} combinations of input terms, more than the {MAX_SITUATIONS:,} "
